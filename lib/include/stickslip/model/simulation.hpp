@@ -1,0 +1,80 @@
+// Event-driven simulation of the nonsmooth oscillator under Coulomb's law (Pascal 2014,
+// eqs. 2-4, 11): the result types shared by every simulator, and the exact simulator that
+// advances the closed-form flows (flows.hpp) from event to event.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/model/flows.hpp"
+#include "stickslip/model/parameters.hpp"
+#include "stickslip/numerics/sinusoid_sum.hpp"
+
+namespace stickslip {
+
+// A stop is x2' reaching zero in a slip; a stick exit is |s| reaching eta u_r in a stick.
+enum class EventKind { kStop, kStickExit };
+const char* ToString(EventKind kind);  // "stop", "stick-exit"
+
+// Why a segment ended: at an event, or at the end of the simulated interval.
+enum class SegmentEnd { kStop, kStickExit, kHorizon };
+const char* ToString(SegmentEnd end);  // "stop", "stick-exit", "horizon"
+
+// One interval of motion in a single mode. Times are absolute (forcing cos(omega t + phi)).
+struct Segment {
+  Mode mode = Mode::kStick;
+  double t_start = 0.0;
+  double t_end = 0.0;
+  State start = State::Zero();
+  State end = State::Zero();
+  SegmentEnd end_reason = SegmentEnd::kHorizon;
+};
+
+// A switching event between two segments. At a stop, mode_after tells the outcome: the reverse
+// slip (a normal stop), a stick, or the same slip (an abnormal stop, x2' = x2'' = 0, which needs
+// u_r = u_s: ERRATA).
+struct Event {
+  double t = 0.0;
+  EventKind kind = EventKind::kStop;
+  Mode mode_before = Mode::kStick;
+  Mode mode_after = Mode::kStick;
+  State state = State::Zero();
+  bool IsAbnormalStop() const { return kind == EventKind::kStop && mode_before == mode_after; }
+};
+
+struct TimeSample {
+  double t = 0.0;
+  State state = State::Zero();
+};
+
+struct SimulationOptions {
+  double duration = 0.0;      // simulated time from t = 0, > 0
+  double sample_step = 0.0;   // > 0: also record the state every sample_step (for CSV output)
+  int max_events = 1000000;   // a guard against chattering; reaching it is reported
+  ZeroSearchOptions zeros;    // event location accuracy (time tolerance 1e-13)
+};
+
+struct SimulationResult {
+  Parameters parameters;
+  double phi = 0.0;  // forcing phase at t = 0
+  std::vector<Segment> segments;
+  std::vector<Event> events;
+  std::vector<TimeSample> samples;  // filled when sample_step > 0
+  bool completed = true;            // false if max_events stopped the simulation
+  std::string message;              // why it stopped early, if it did
+};
+
+// Initial mode from a state: the sign of x2', or Coulomb's law at rest when x2' = 0.
+Mode InitialMode(const State& x0, double phi, const Parameters& p);
+
+// The exact event-driven simulator. Every stop and stick exit is located to
+// options.zeros.time_tolerance by bracketing root finding on the closed form; no event between
+// two samples can be missed (zeros are excluded only by a bound on |f''|, see
+// sinusoid_sum.hpp). Preconditions: Validate(p) passed, x0 finite, duration > 0.
+SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
+                               const SimulationOptions& options);
+
+// The state at time t (t_start <= t <= t_end of a segment of `result`) from the closed form.
+State StateAt(const SimulationResult& result, double t);
+
+}  // namespace stickslip

@@ -1,0 +1,69 @@
+#include "stickslip/model/parameters.hpp"
+
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/model/modal.hpp"
+
+namespace stickslip {
+namespace {
+
+Parameters Valid() { return {0.3, 4.0, 0.6, 0.1, 0.2996}; }
+
+TEST(ParameterValidation, AcceptsThePaperExample) { EXPECT_FALSE(Validate(Valid()).has_value()); }
+
+TEST(ParameterValidation, AcceptsEqualFrictionLevels) {
+  Parameters p = Valid();
+  p.u_r = p.u_s;
+  EXPECT_FALSE(Validate(p).has_value());
+}
+
+struct BadCase {
+  ParameterId field;
+  double value;
+};
+
+class ParameterValidationRejects : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(ParameterValidationRejects, NamesTheFieldAndTheValidRange) {
+  Parameters p = Valid();
+  p[GetParam().field] = GetParam().value;
+  const auto invalid = Validate(p);
+  ASSERT_TRUE(invalid.has_value());
+  EXPECT_EQ(invalid->field, ToString(GetParam().field));
+  EXPECT_NE(invalid->Message().find(ToString(GetParam().field)), std::string::npos);
+  EXPECT_NE(invalid->Message().find("valid range"), std::string::npos);
+}
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+INSTANTIATE_TEST_SUITE_P(
+    OutOfRange, ParameterValidationRejects,
+    ::testing::Values(BadCase{ParameterId::kChi, 0.0}, BadCase{ParameterId::kChi, 1.0},
+                      BadCase{ParameterId::kChi, -0.2}, BadCase{ParameterId::kEta, 0.0},
+                      BadCase{ParameterId::kOmega, -1.0}, BadCase{ParameterId::kOmega, 0.0},
+                      BadCase{ParameterId::kSlidingFriction, 0.0},
+                      BadCase{ParameterId::kStaticFriction, 0.05},
+                      BadCase{ParameterId::kEta, kNaN}, BadCase{ParameterId::kOmega, kInf},
+                      BadCase{ParameterId::kStaticFriction, kNaN}));
+
+TEST(ParameterValidation, RejectsForcingAtEachNaturalFrequency) {
+  Parameters p = Valid();
+  const auto [w1, w2] = NaturalFrequencies(p.chi, p.eta);
+  for (double w : {w1, w2}) {
+    p.omega = w;
+    const auto invalid = Validate(p);
+    ASSERT_TRUE(invalid.has_value());
+    EXPECT_EQ(invalid->field, "omega");
+  }
+}
+
+TEST(ParameterIds, RoundTripThroughTheirNames) {
+  for (ParameterId id : kAllParameters) EXPECT_EQ(ParameterFromString(ToString(id)), id);
+  EXPECT_FALSE(ParameterFromString("mu").has_value());
+}
+
+}  // namespace
+}  // namespace stickslip

@@ -1,0 +1,101 @@
+#include "stickslip/numerics/sinusoid_sum.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+namespace stickslip {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(SinusoidSumZeros, FindsEveryZeroOfCosineInOrder) {
+  const SinusoidSum f(0.0, 0.0, {{1.0, 1.0, 0.0}});  // cos t
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 10.0, 100);
+  ASSERT_EQ(zeros.size(), 3u);  // pi/2, 3pi/2, 5pi/2 (< 10)
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(zeros[k].t, kPi / 2 + k * kPi, 1e-13);
+    EXPECT_EQ(zeros[k].kind, ZeroKind::kCrossing);
+  }
+}
+
+TEST(SinusoidSumZeros, SeparatesTwoZerosCloserThanAnySamplingStep) {
+  // cos(t - 5) - cos(1e-3) has zeros at 5 -+ 1e-3 and is positive in between: a sampler with
+  // a step above 2e-3 sees no sign change at all. (The slope there is 1e-3, so rounding of the
+  // coefficients moves the zeros by ~1e-13.)
+  const double delta = 1e-3;
+  const SinusoidSum f(-std::cos(delta), 0.0, {{1.0, std::cos(5.0), std::sin(5.0)}});
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 6.0, 100);
+  ASSERT_EQ(zeros.size(), 2u);
+  EXPECT_NEAR(zeros[0].t, 5.0 - delta, 1e-12);
+  EXPECT_NEAR(zeros[1].t, 5.0 + delta, 1e-12);
+}
+
+TEST(SinusoidSumZeros, ReportsADoubleZeroAsATouch) {
+  const SinusoidSum f(1.0, 0.0, {{1.0, -1.0, 0.0}});  // 1 - cos t >= 0, zero at 2 pi
+  const std::vector<Zero> zeros = Zeros(f, 0.5, 7.0, 100);
+  ASSERT_EQ(zeros.size(), 1u);
+  EXPECT_EQ(zeros[0].kind, ZeroKind::kTouch);
+  EXPECT_NEAR(zeros[0].t, 2 * kPi, 1e-12);
+}
+
+TEST(SinusoidSumZeros, SkipsTheZeroAtTheStartOfTheInterval) {
+  const SinusoidSum f(0.0, 0.0, {{2.0, 0.0, 1.0}});  // sin 2t: zeros at 0, pi/2, pi
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 3.5, 100);
+  ASSERT_EQ(zeros.size(), 2u);
+  EXPECT_NEAR(zeros[0].t, kPi / 2, 1e-13);
+  EXPECT_NEAR(zeros[1].t, kPi, 1e-13);
+}
+
+TEST(SinusoidSumZeros, SkipsAStartingZeroWithZeroSlope) {
+  // 1 - cos t starts with f = f' = 0 and next vanishes at 2 pi.
+  const SinusoidSum f(1.0, 0.0, {{1.0, -1.0, 0.0}});
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 7.0, 100);
+  ASSERT_EQ(zeros.size(), 1u);
+  EXPECT_NEAR(zeros[0].t, 2 * kPi, 1e-12);
+}
+
+TEST(SinusoidSumZeros, HandlesIncommensurateFrequenciesAndDrift) {
+  // f = 0.3 + 0.05 t + cos(sqrt2 t) - 0.7 sin(t/3): compare with a fine scan for sign changes.
+  const SinusoidSum f(0.3, 0.05, {{std::sqrt(2.0), 1.0, 0.0}, {1.0 / 3.0, 0.0, -0.7}});
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 40.0, 1000);
+  std::vector<double> scanned;
+  const int n = 400000;
+  for (int i = 0; i < n; ++i) {
+    const double a = 40.0 * i / n;
+    const double b = 40.0 * (i + 1) / n;
+    if (f(a) * f(b) < 0.0) scanned.push_back(a);
+  }
+  ASSERT_EQ(zeros.size(), scanned.size());
+  for (std::size_t k = 0; k < zeros.size(); ++k) {
+    EXPECT_NEAR(zeros[k].t, scanned[k], 40.0 / n);
+    EXPECT_LT(std::abs(f(zeros[k].t)), 1e-12);
+  }
+}
+
+TEST(SinusoidSumMinimum, FindsTheInteriorMinimum) {
+  const SinusoidSum f(0.0, 0.0, {{1.0, 0.0, 1.0}});  // sin t
+  const Extremum m = Minimum(f, 0.0, 2 * kPi);
+  EXPECT_NEAR(m.t, 1.5 * kPi, 1e-10);
+  EXPECT_NEAR(m.value, -1.0, 1e-15);
+}
+
+TEST(SinusoidSumMinimum, ReturnsAnEndPointWhenTheFunctionIsMonotone) {
+  const SinusoidSum f(0.0, 0.0, {{1.0, 0.0, 1.0}});
+  const Extremum m = Minimum(f, 0.1, 1.0);
+  EXPECT_DOUBLE_EQ(m.t, 0.1);
+  EXPECT_DOUBLE_EQ(m.value, std::sin(0.1));
+}
+
+TEST(SinusoidSum, DerivativeMatchesFiniteDifferences) {
+  const SinusoidSum f(0.3, 0.05, {{std::sqrt(2.0), 1.0, 0.4}, {0.7, -0.2, -0.7}});
+  const SinusoidSum df = f.Derivative();
+  for (double t : {0.0, 1.3, 7.9}) {
+    const double h = 1e-5;
+    EXPECT_NEAR(df(t), (f(t + h) - f(t - h)) / (2 * h), 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace stickslip

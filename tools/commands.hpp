@@ -1,0 +1,19 @@
+// The subcommands of the stickslip program. Each Add* function declares a subcommand's options
+// on `app` and returns it with the action to run when it was given; the action returns the
+// process exit code (cli_common.hpp) and throws InputError for bad input.
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace stickslip::cli {
+
+struct Command {
+  CLI::App* subcommand = nullptr;
+  std::function<int()> run;
+};
+
+Command AddSimulateCommand(CLI::App& app);
+
+}  // namespace stickslip::cli

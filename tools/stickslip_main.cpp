@@ -1,0 +1,47 @@
+// The stickslip command-line program: one subcommand per job (commands.hpp).
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace stickslip::cli;
+  CLI::App app(
+      "stickslip: periodic orbits of the two-degree-of-freedom dry-friction oscillator of "
+      "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276.\n"
+      "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence.",
+      "stickslip");
+  app.require_subcommand(1);
+  const std::vector<Command> commands = {AddSimulateCommand(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string message = e.what();
+    if (message == "A subcommand is required" && argc > 1) {
+      message = fmt::format("command '{}' is unknown: valid commands simulate", argv[1]);
+    }
+    fmt::print(stderr, "error: {}\n", message);
+    return kExitBadInput;
+  }
+  try {
+    for (const Command& command : commands) {
+      if (command.subcommand->parsed()) return command.run();
+    }
+  } catch (const InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitFailure;
+  }
+  return kExitFailure;
+}
