@@ -39,11 +39,11 @@ constexpr std::array<SetKey, 10> kSetKeys = {{
     {"omega", "forcing frequency (scaled time)", "omega > 0, not a natural frequency"},
     {"u_s", "sliding friction level", "u_s > 0"},
     {"u_r", "static friction level", "u_r >= u_s"},
-    {"x10", "initial x1", "finite"},
-    {"x20", "initial x2", "finite"},
-    {"v10", "initial x1'", "finite"},
-    {"v20", "initial x2'", "finite"},
-    {"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", "finite"},
+    {"x10", "initial x1", "any finite number"},
+    {"x20", "initial x2", "any finite number"},
+    {"v10", "initial x1'", "any finite number"},
+    {"v20", "initial x2'", "any finite number"},
+    {"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", "any finite number"},
 }};
 
 }  // namespace

@@ -1,0 +1,146 @@
+// The exact event-driven simulator: the paper's section 4.1 orbit, event location accuracy,
+// and Coulomb's decisions at constructed tangencies (abnormal stop, onset of a stick) and at a
+// near-tangency whose two stops are too close for any sampling to see.
+#include "stickslip/model/simulation.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/model/events.hpp"
+#include "stickslip/model/paper_examples.hpp"
+
+namespace stickslip {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+SimulationResult SimulatePeriods(const PaperExample& e, double periods) {
+  SimulationOptions options;
+  options.duration = periods * 2.0 * kPi / e.parameters.omega;
+  return SimulateExact(e.parameters, e.initial_state, e.phi, options);
+}
+
+// Section 4.1: stops at t = pi/omega and 2 pi/omega, and x(pi/omega) = -x(0) (the orbit is
+// symmetric about the origin). The paper prints 4-5 digits and u_r = 0.2996 sits on the
+// boundary between nonsticking and sticking orbits (ERRATA), hence 1e-3.
+TEST(PaperSection41, StopsAtHalfAndFullPeriodWithOppositeStates) {
+  const PaperExample& e = *FindPaperExample("paper-4.1");
+  const SimulationResult r = SimulatePeriods(e, 1.0 + 1e-6);
+  const double half = kPi / e.parameters.omega;
+  ASSERT_GE(r.events.size(), 2u);
+  EXPECT_NEAR(r.events[0].t, half, 1e-3);
+  // x2 starts at its maximum (f > 0, eq. 12): slip with x2' < 0, then overshooting.
+  EXPECT_STREQ(ToString(r.events[0].mode_before), "slip-");
+  EXPECT_STREQ(ToString(r.events[0].mode_after), "slip+");
+  EXPECT_NEAR(r.events[1].t, 2 * half, 1e-3);
+  EXPECT_STREQ(ToString(r.events[1].mode_after), "slip-");
+  EXPECT_LT((r.events[0].state + e.initial_state).lpNorm<Eigen::Infinity>(), 1e-3);
+  EXPECT_LT((r.events[1].state - e.initial_state).lpNorm<Eigen::Infinity>(), 1e-3);
+}
+
+// Every stop is a zero of x2' and every stick exit a zero of G or G1, recomputed from the
+// segment's start with the flow: the residual divided by the slope bounds the time error.
+TEST(ExactSimulator, LocatesEveryEventToTheTimeTolerance) {
+  for (const PaperExample& e : PaperExamples()) {
+    const SimulationResult r = SimulatePeriods(e, 3.0);
+    const Parameters& p = e.parameters;
+    for (const Segment& s : r.segments) {
+      if (s.end_reason == SegmentEnd::kHorizon) continue;
+      const double elapsed = s.t_end - s.t_start;
+      const double phase = p.omega * s.t_start + e.phi;
+      const State x = Flow(s.mode, s.start, phase, elapsed, p);
+      const double end_phase = phase + p.omega * elapsed;
+      double value, slope;
+      if (s.mode == Mode::kStick) {
+        const double force = StickForce(x, end_phase, p);
+        value = std::abs(force) - p.eta * p.u_r;
+        slope = std::abs(-p.chi * p.eta * x(2) + p.omega * std::sin(end_phase));
+      } else {
+        value = x(3);
+        slope = std::abs(Acceleration(s.mode, x, end_phase, p)(1));
+      }
+      if (slope < 1e-6) continue;  // a tangency: located on the extremum instead
+      EXPECT_LT(std::abs(value) / slope, 1e-12) << e.name << " segment ending at " << s.t_end;
+    }
+  }
+}
+
+// A state where x2' = 0 and x2'' = 0 with x2''' > 0 in slip+: x2' touches zero and goes on
+// positive. Flowed back by one time unit it gives a start whose first event is that touch.
+struct Tangency {
+  Parameters p;
+  State start;
+  double phi;
+};
+
+Tangency ConstructTangency(double u_r, double dip) {
+  Tangency t;
+  t.p = {0.3, 4.0, 0.6, 0.1, u_r};
+  const double psi = 2.0;  // forcing phase at the tangency
+  State xc;
+  xc(0) = 0.4;
+  xc(2) = 0.8;  // x2''' = chi eta x1' - omega sin(psi) = 0.96 - 0.546 > 0
+  // x2'' = -chi eta (x2 - x1) - eta u_s + cos(psi) = 0 in slip+ (eq. 2, 8).
+  xc(1) = xc(0) + (std::cos(psi) - t.p.eta * t.p.u_s) / (t.p.chi * t.p.eta);
+  xc(3) = -dip;
+  t.phi = psi - t.p.omega * 1.0;
+  t.start = Flow(Mode::kSlipPositive, xc, psi, -1.0, t.p);
+  return t;
+}
+
+TEST(ExactSimulator, ClassifiesAnExactTangencyAsAnAbnormalStopWhenFrictionLevelsAreEqual) {
+  const Tangency c = ConstructTangency(/*u_r=*/0.1, /*dip=*/0.0);
+  ASSERT_GT(c.start(3), 0.0);
+  SimulationOptions options;
+  options.duration = 1.5;
+  const SimulationResult r = SimulateExact(c.p, c.start, c.phi, options);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_NEAR(r.events[0].t, 1.0, 1e-9);
+  EXPECT_TRUE(r.events[0].IsAbnormalStop());
+  EXPECT_STREQ(ToString(r.events[0].mode_after), "slip+");
+}
+
+TEST(ExactSimulator, StartsAStickWhereVelocityTouchesZeroBelowTheStaticLevel) {
+  // Same touch with u_r > u_s: the force there is eta u_s < eta u_r, so m2 sticks (eq. 4).
+  const Tangency c = ConstructTangency(/*u_r=*/0.2, /*dip=*/0.0);
+  SimulationOptions options;
+  options.duration = 1.5;
+  const SimulationResult r = SimulateExact(c.p, c.start, c.phi, options);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_NEAR(r.events[0].t, 1.0, 1e-9);
+  EXPECT_STREQ(ToString(r.events[0].kind), "stop");
+  EXPECT_STREQ(ToString(r.events[0].mode_after), "stick");
+}
+
+TEST(ExactSimulator, FindsTheFirstOfTwoStopsCloserThanAnySamplingStep) {
+  // x2' dips to -1e-9 at t = 1: its zeros are ~1e-4 apart on either side.
+  const Tangency c = ConstructTangency(/*u_r=*/0.2, /*dip=*/1e-9);
+  SimulationOptions options;
+  options.duration = 1.5;
+  const SimulationResult r = SimulateExact(c.p, c.start, c.phi, options);
+  ASSERT_FALSE(r.events.empty());
+  const double jerk = c.p.chi * c.p.eta * 0.8 - c.p.omega * std::sin(2.0);
+  const double half_gap = std::sqrt(2.0 * 1e-9 / jerk);
+  EXPECT_NEAR(r.events[0].t, 1.0 - half_gap, 1e-6);
+  EXPECT_STREQ(ToString(r.events[0].mode_after), "stick");
+}
+
+TEST(ExactSimulator, SegmentsJoinUpAndSamplesFollowTheFlow) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SimulationOptions options;
+  options.duration = 2 * 2.0 * kPi / e.parameters.omega;
+  options.sample_step = 0.05;
+  const SimulationResult r = SimulateExact(e.parameters, e.initial_state, e.phi, options);
+  ASSERT_TRUE(r.completed);
+  for (std::size_t i = 1; i < r.segments.size(); ++i) {
+    EXPECT_EQ(r.segments[i].t_start, r.segments[i - 1].t_end);
+    EXPECT_EQ(r.segments[i].start, r.segments[i - 1].end);
+  }
+  EXPECT_DOUBLE_EQ(r.segments.back().t_end, options.duration);
+  EXPECT_EQ(r.samples.size(), static_cast<std::size_t>(std::floor(options.duration / 0.05)) + 1);
+}
+
+}  // namespace
+}  // namespace stickslip

@@ -56,6 +56,15 @@ TEST(SinusoidSumZeros, SkipsAStartingZeroWithZeroSlope) {
   EXPECT_NEAR(zeros[0].t, 2 * kPi, 1e-12);
 }
 
+TEST(SinusoidSumZeros, FindsAZeroSoonAfterAStartingZeroWhenCurvatureOpposesSlope) {
+  // f = 5 - sin t - 5 cos t: f(0) = 0, f'(0) = -1, f''(0) = 5, so f turns back and vanishes again
+  // at 2 atan(0.2) (found by an independent review: a curvature-based skip once jumped it).
+  const SinusoidSum f(5.0, 0.0, {{1.0, -5.0, -1.0}});
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 3.0, 5);
+  ASSERT_FALSE(zeros.empty());
+  EXPECT_NEAR(zeros[0].t, 2.0 * std::atan(0.2), 1e-13);
+}
+
 TEST(SinusoidSumZeros, HandlesIncommensurateFrequenciesAndDrift) {
   // f = 0.3 + 0.05 t + cos(sqrt2 t) - 0.7 sin(t/3): compare with a fine scan for sign changes.
   const SinusoidSum f(0.3, 0.05, {{std::sqrt(2.0), 1.0, 0.0}, {1.0 / 3.0, 0.0, -0.7}});

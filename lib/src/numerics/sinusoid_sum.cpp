@@ -138,14 +138,26 @@ class ZeroFinder {
   }
 
   // Length of a neighbourhood (a, a + length] in which f has no zero, given that f(a) is at
-  // zero level: from Taylor's bound with the first derivative of f at a that is not zero.
+  // zero level, from Taylor's bounds:
+  //   |f(a+h)| >= |f'| h - m2 h^2/2                      > 0 for h <= |f'|/m2;
+  //   |f(a+h)| >= |f' h + f'' h^2/2| - m3 h^3/6 and, when f' and f'' have the same sign,
+  //            >= |f''| h^2/2 - m3 h^3/6                 > 0 for h <= |f''|/m3.
+  // With opposite signs f returns to zero near 2|f'|/|f''|: only the first bound holds. An f'
+  // at rounding level counts as zero, so that a rounding error cannot fake a zero at once.
   double ExclusionAfterZero(double a) const {
-    const double d1 = std::abs(df_(a));
-    const double d2 = std::abs(d2f_(a));
-    // |f(a+h)| >= d1 h - m2 h^2/2 - |f(a)| and >= d2 h^2/2 - m3 h^3/6 - |f'(a)| h - |f(a)|.
-    const double by_slope = m2_ > 0.0 ? d1 / m2_ : std::numeric_limits<double>::infinity();
-    const double by_curvature = m3_ > 0.0 ? d2 / m3_ : std::numeric_limits<double>::infinity();
-    return std::max({by_slope, by_curvature, options_.time_tolerance});
+    const double d1 = df_(a);
+    const double d2 = d2f_(a);
+    const double inf = std::numeric_limits<double>::infinity();
+    const double by_slope = m2_ > 0.0 ? std::abs(d1) / m2_ : inf;
+    const double by_curvature = m3_ > 0.0 ? std::abs(d2) / m3_ : inf;
+    const bool slope_is_rounding = std::abs(d1) <= options_.touch_tolerance * f_.DerivativeBound(1);
+    double length = by_slope;
+    if (slope_is_rounding) {
+      length = by_curvature;
+    } else if (d1 * d2 >= 0.0) {
+      length = std::max(by_slope, by_curvature);
+    }
+    return std::max(length, options_.time_tolerance);
   }
 
   bool AtZeroLevel(double t) const { return std::abs(f_(t)) <= touch_level_; }

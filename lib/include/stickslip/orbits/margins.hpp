@@ -1,0 +1,52 @@
+// Admissibility margins of a periodic orbit: every inequality its signature needs to be a motion
+// of the system, each as a signed number (positive = admissible) with where it is attained.
+// The smallest margin is the distance to the nearest change of orbit type; the continuation
+// engine watches all of them.
+//
+// Per listed segment i (names carry the 1-based segment number):
+//   duration:i       d_i > 0
+//   velocity:i       slip: the smallest interior local minimum of sign(x2') x2' (zeros of x2''
+//                    by root finding); +inf when there is none
+//   stop-slope:i     slip ending at a stop: -sign(x2') x2'' at the stop (the slip decelerates)
+//   reversal:i       stop with reversal: s - eta u_r (into slip-) or -s - eta u_r (into slip+)
+//                    (f > 0 of eq. 12, f1 < 0 of eq. 14)
+//   stick-entry:i    stop into a stick: eta u_r - |s| (eq. 30)
+//   abnormal-stop:i  abnormal stop: sign(x2') x2''' (x2' touches zero and keeps its sign, eq. 23)
+//   G:i, G1:i        stick: the minimum of G and G1 over the stick (eq. 35, 39, 49, 51); for
+//                    the constraint that ends the stick, its start and interior minima
+//   exit-slope:i     stick: the slope with which s reaches +-eta u_r (it must leave the band)
+// An interior extremum can only be born at a segment end, where the matching slope margin passes
+// through zero; so a change of orbit type is always a sign change of some margin.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/orbits/orbit.hpp"
+
+namespace stickslip {
+
+enum class MarginKind {
+  kDuration,         // a phase shrinking to zero
+  kSlipVelocity,     // x2' touching zero inside a slip: a new stop
+  kStopSlope,        // transversality at a stop
+  kStopForce,        // the force condition at a stop
+  kStickConstraint,  // G or G1 grazing zero inside a stick
+  kExitSlope,        // transversality at a stick exit
+};
+const char* ToString(MarginKind kind);
+
+struct Margin {
+  std::string name;  // "G:3", ...
+  MarginKind kind = MarginKind::kDuration;
+  int segment = 0;     // 0-based listed segment
+  double value = 0.0;  // > 0 admissible
+  double t = 0.0;      // where it is attained, time from the orbit's origin
+};
+
+std::vector<Margin> AdmissibilityMargins(const Orbit& orbit);
+
+// The margin with the smallest value (the first on ties).
+const Margin& SmallestMargin(const std::vector<Margin>& margins);
+
+}  // namespace stickslip

@@ -1,0 +1,56 @@
+// A periodic orbit of a given signature, and the layout of its variables.
+//
+// Variables (in this order, "full variable vector"): x10, x20, v10 (x2'0 = 0 because the time
+// origin is a stop), phi, the segment durations d1..dn of the listed segments, and the
+// parameters chi, eta, omega, u_s, u_r. Which of them are unknowns is the solver's choice.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stickslip/model/flows.hpp"
+#include "stickslip/model/parameters.hpp"
+#include "stickslip/orbits/signature.hpp"
+
+namespace stickslip {
+
+struct Orbit {
+  Signature signature;
+  Parameters parameters;
+  double x10 = 0.0;
+  double x20 = 0.0;
+  double v10 = 0.0;
+  double phi = 0.0;
+  std::vector<double> durations;  // one per listed segment
+
+  State InitialState() const { return State(x10, x20, v10, 0.0); }
+  // k 2 pi/omega: the time after which the orbit repeats.
+  double Period() const;
+  // Start times of the listed segments, and the end of the last one (n + 1 values).
+  std::vector<double> SegmentTimes() const;
+  // Start state of each listed segment and the state at the end of the last one (n + 1), by the
+  // closed-form flows.
+  std::vector<State> SegmentStates() const;
+};
+
+// Index arithmetic on the full variable vector of an n-segment signature.
+namespace orbit_variables {
+inline constexpr int kX10 = 0;
+inline constexpr int kX20 = 1;
+inline constexpr int kV10 = 2;
+inline constexpr int kPhi = 3;
+inline int Duration(int i) { return 4 + i; }  // i = 0..n-1
+inline int Parameter(int n, ParameterId id) { return 4 + n + static_cast<int>(id); }
+inline int Count(int n) { return 4 + n + kParameterCount; }
+// "x10", "x20", "v10", "phi", "d1".."dn", "chi", "eta", "omega", "u_s", "u_r".
+std::string Name(int n, int index);
+std::optional<int> IndexOf(int n, std::string_view name);
+Eigen::VectorXd Pack(const Orbit& orbit);
+Orbit Unpack(const Signature& signature, const Eigen::VectorXd& variables);
+}  // namespace orbit_variables
+
+}  // namespace stickslip

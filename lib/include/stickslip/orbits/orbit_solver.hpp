@@ -1,0 +1,53 @@
+// Solving for a periodic orbit: the choice of unknowns (which variables are free, which fixed)
+// and Newton's method on the periodicity equations in single or multiple shooting.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stickslip/numerics/newton.hpp"
+#include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/periodicity.hpp"
+
+namespace stickslip {
+
+// Which variables of the full vector are unknowns. By default x10, x20, v10, phi and every
+// duration; `release` adds parameters (or any variable), `fix` removes variables.
+struct UnknownChoice {
+  std::vector<std::string> release;  // variable names, e.g. "u_r"
+  std::vector<std::string> fix;      // variable names, e.g. "phi", "d2"
+  bool tie_static_friction = false;  // u_r follows u_s (u_r = u_s); u_r may not be released
+};
+
+// The free variable indices of a choice for a signature, or an error message naming the bad
+// name or the counts when the system would not be square.
+struct FreeVariables {
+  std::vector<int> indices;
+  std::string error;  // empty when valid
+};
+FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& choice);
+
+enum class ShootingChoice { kAuto, kSingle, kMultiple };
+const char* ToString(ShootingChoice s);  // "auto", "single", "multiple"
+
+struct OrbitSolverOptions {
+  // kAuto picks single shooting up to max_single_shooting_segments listed segments, multiple
+  // shooting beyond (where long products of flow Jacobians lose accuracy).
+  ShootingChoice shooting = ShootingChoice::kAuto;
+  int max_single_shooting_segments = 6;
+  LinearSolverType sparse_solver = LinearSolverType::kKlu;  // for multiple shooting
+  NewtonOptions newton;
+};
+
+struct OrbitSolution {
+  Orbit orbit;  // the last Newton iterate: the orbit when summary.Converged()
+  NewtonSummary summary;
+  Shooting shooting = Shooting::kSingle;
+};
+
+// Throws std::invalid_argument if `free` does not make the system square.
+OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
+                         bool tie_static_friction, const OrbitSolverOptions& options = {});
+
+}  // namespace stickslip

@@ -1,0 +1,89 @@
+// The periodicity equations of an orbit signature (Pascal 2014, eqs. 12-54 generalised to any
+// signature) and the orbit as a square system for Newton.
+//
+// Equations, for n listed segments:
+//  - the end condition of each segment i: x2' = 0 at a stop (eq. 14, 16, 30), and also
+//    x2'' = 0 at an abnormal stop (eq. 18, 23); s - eta u_r = 0 at an exit into slip-, or
+//    s + eta u_r = 0 at an exit into slip+ (eq. 32, 37, 48, 50): n + (abnormal stops) equations;
+//  - periodicity of x1, x2, x1' at the end of the listed segments (eq. 19-21, 34, 38, 53), or
+//    antiperiodicity X(Theta/2) = -X(0) (eq. 22, 47): 3 equations. x2' needs none: the end
+//    condition of the last segment already gives x2' = 0 = x2'0;
+//  - the durations sum to the covered time k 2 pi/omega (half of it when antisymmetric): 1.
+// So m = n + 4 (+1 per abnormal stop) equations. The unknowns are x10, x20, x1'0, phi and the n
+// durations: n + 4, square. (The paper counts n + 3 because it eliminates the last duration with
+// the sum.) Releasing a parameter must be paid for by fixing an unknown, and an abnormal stop
+// needs a released parameter (u_s = u_r in section 4.2).
+//
+// Multiple shooting adds the start state of each segment after the first as 4 unknowns, with 4
+// continuity equations each; the Jacobian is then block sparse.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stickslip/numerics/newton.hpp"
+#include "stickslip/orbits/orbit.hpp"
+
+namespace stickslip {
+
+enum class Shooting { kSingle, kMultiple };
+const char* ToString(Shooting s);  // "single", "multiple"
+
+class PeriodicityEquations {
+ public:
+  PeriodicityEquations(Signature signature, Shooting shooting);
+
+  int EquationCount() const;
+  // The full variable vector (orbit.hpp) followed, for multiple shooting, by the start state of
+  // segments 2..n.
+  int VariableCount() const;
+  // Residual and exact Jacobian (EquationCount x VariableCount) from the flow derivatives.
+  void Evaluate(const Eigen::VectorXd& variables, Eigen::VectorXd* residual,
+                Eigen::MatrixXd* jacobian) const;
+  // The variables of an orbit: its full vector and, for multiple shooting, the segment start
+  // states obtained by flowing.
+  Eigen::VectorXd Variables(const Orbit& orbit) const;
+
+  const Signature& signature() const { return signature_; }
+  Shooting shooting() const { return shooting_; }
+  // Names of the equations, for messages: "end:1", "periodicity:x1", "period", "continuity:2:x1".
+  std::vector<std::string> EquationNames() const;
+
+ private:
+  Signature signature_;
+  Shooting shooting_;
+};
+
+// The orbit as a system in chosen unknowns: the full variables listed in `free` (in that order),
+// then the multiple-shooting states; every other variable is held at the reference orbit's
+// value. With tie_static_friction, u_r follows u_s (u_r = u_s, needed by abnormal stops).
+class OrbitSystem final : public NonlinearSystem {
+ public:
+  OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie_static_friction,
+              Shooting shooting);
+
+  int EquationCount() const override { return equations_.EquationCount(); }
+  int UnknownCount() const override;
+  // Dense Jacobian for single shooting, sparse for multiple shooting.
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual,
+                JacobianMatrix* jacobian) const override;
+  std::optional<std::string> DomainError(const Eigen::VectorXd& u) const override;
+
+  Eigen::VectorXd Unknowns(const Orbit& orbit) const;
+  Orbit ToOrbit(const Eigen::VectorXd& u) const;
+  const std::vector<int>& free() const { return free_; }
+  const PeriodicityEquations& equations() const { return equations_; }
+
+ private:
+  Eigen::VectorXd Variables(const Eigen::VectorXd& u) const;
+
+  PeriodicityEquations equations_;
+  Eigen::VectorXd reference_;
+  std::vector<int> free_;
+  bool tie_static_friction_;
+};
+
+}  // namespace stickslip

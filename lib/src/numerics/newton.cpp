@@ -1,0 +1,121 @@
+#include "stickslip/numerics/newton.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace stickslip {
+
+const char* ToString(NewtonTermination t) {
+  switch (t) {
+    case NewtonTermination::kConverged: return "converged";
+    case NewtonTermination::kMaxIterations: return "max-iterations";
+    case NewtonTermination::kSingularJacobian: return "singular-jacobian";
+    case NewtonTermination::kDiverged: return "diverged";
+    case NewtonTermination::kLeftDomain: return "left-domain";
+    case NewtonTermination::kLineSearchFailed: break;
+  }
+  return "line-search-failed";
+}
+
+std::string NewtonSummary::BriefReport() const {
+  return fmt::format("{} after {} iteration(s), residual {:.3e}, condition {:.3e}{}{}",
+                     ToString(termination), iterations,
+                     residual_norms.empty() ? 0.0 : residual_norms.back(), condition_number,
+                     message.empty() ? "" : ": ", message);
+}
+
+namespace {
+
+double MaxNorm(const Eigen::VectorXd& v) { return v.size() ? v.lpNorm<Eigen::Infinity>() : 0.0; }
+
+}  // namespace
+
+NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& guess,
+                         const NewtonOptions& options) {
+  if (system.EquationCount() != system.UnknownCount() || guess.size() != system.UnknownCount()) {
+    throw std::invalid_argument(fmt::format(
+        "Newton needs a square system and a guess of its size: {} equations, {} unknowns, guess {}",
+        system.EquationCount(), system.UnknownCount(), guess.size()));
+  }
+  NewtonResult result{guess, {}};
+  NewtonSummary& summary = result.summary;
+  auto finish = [&](NewtonTermination t, std::string message, const JacobianMatrix* jacobian) {
+    summary.termination = t;
+    summary.message = std::move(message);
+    if (options.estimate_condition && jacobian != nullptr) {
+      summary.condition_number = ConditionNumber(*jacobian);
+    }
+    return result;
+  };
+  if (auto error = system.DomainError(result.solution)) {
+    return finish(NewtonTermination::kLeftDomain, *error, nullptr);
+  }
+  const std::unique_ptr<LinearSolver> solver = LinearSolver::Create(options.linear_solver);
+  Eigen::VectorXd residual;
+  JacobianMatrix jacobian;
+  system.Evaluate(result.solution, &residual, &jacobian);
+  double norm = MaxNorm(residual);
+  summary.residual_norms.push_back(norm);
+  const double start_norm = norm;
+  while (true) {
+    if (!std::isfinite(norm)) {
+      return finish(NewtonTermination::kDiverged, "the residual is not finite", nullptr);
+    }
+    if (norm <= options.residual_tolerance) {
+      return finish(NewtonTermination::kConverged, "", &jacobian);
+    }
+    if (summary.iterations >= options.max_iterations) {
+      return finish(NewtonTermination::kMaxIterations,
+                    fmt::format("no convergence in {} iterations", options.max_iterations),
+                    &jacobian);
+    }
+    if (!solver->Factorize(jacobian)) {
+      return finish(NewtonTermination::kSingularJacobian,
+                    "the Jacobian is singular to working precision", &jacobian);
+    }
+    const Eigen::VectorXd step = -solver->Solve(residual);
+    // Backtracking: the largest fraction 1, 1/2, ... that lowers max|F|.
+    double damping = 1.0;
+    Eigen::VectorXd trial;
+    Eigen::VectorXd trial_residual;
+    double trial_norm = 0.0;
+    std::optional<std::string> domain_error;
+    while (true) {
+      trial = result.solution + damping * step;
+      domain_error = system.DomainError(trial);
+      if (!domain_error) {
+        system.Evaluate(trial, &trial_residual, nullptr);
+        trial_norm = MaxNorm(trial_residual);
+        if (std::isfinite(trial_norm) && trial_norm < norm) break;
+      }
+      damping *= 0.5;
+      if (damping < options.min_damping) break;
+    }
+    ++summary.iterations;
+    if (damping < options.min_damping) {
+      if (domain_error) return finish(NewtonTermination::kLeftDomain, *domain_error, &jacobian);
+      const bool at_floor = norm <= options.stagnation_residual &&
+                            MaxNorm(step) <= 1e3 * options.step_tolerance * (1.0 + MaxNorm(result.solution));
+      if (at_floor) return finish(NewtonTermination::kConverged, "at the rounding floor", &jacobian);
+      return finish(NewtonTermination::kLineSearchFailed,
+                    fmt::format("no step along the Newton direction lowers |F| = {:.3e}", norm),
+                    &jacobian);
+    }
+    result.solution = trial;
+    system.Evaluate(result.solution, &residual, &jacobian);
+    norm = MaxNorm(residual);
+    summary.residual_norms.push_back(norm);
+    if (norm > options.divergence_factor * std::max(start_norm, 1.0)) {
+      return finish(NewtonTermination::kDiverged,
+                    fmt::format("|F| grew from {:.3e} to {:.3e}", start_norm, norm), nullptr);
+    }
+    if (MaxNorm(damping * step) <= options.step_tolerance * (1.0 + MaxNorm(result.solution)) &&
+        norm <= options.stagnation_residual) {
+      return finish(NewtonTermination::kConverged, "step below tolerance", &jacobian);
+    }
+  }
+}
+
+}  // namespace stickslip

@@ -1,0 +1,67 @@
+#include "stickslip/orbits/orbit.hpp"
+
+#include <numbers>
+
+#include <fmt/format.h>
+
+namespace stickslip {
+
+double Orbit::Period() const {
+  return signature.period_multiple() * 2.0 * std::numbers::pi / parameters.omega;
+}
+
+std::vector<double> Orbit::SegmentTimes() const {
+  std::vector<double> times = {0.0};
+  for (double d : durations) times.push_back(times.back() + d);
+  return times;
+}
+
+std::vector<State> Orbit::SegmentStates() const {
+  std::vector<State> states = {InitialState()};
+  double phase = phi;
+  for (int i = 0; i < signature.size(); ++i) {
+    states.push_back(Flow(signature.segments()[i], states.back(), phase, durations[i], parameters));
+    phase += parameters.omega * durations[i];
+  }
+  return states;
+}
+
+namespace orbit_variables {
+
+std::string Name(int n, int index) {
+  static constexpr const char* kLeading[] = {"x10", "x20", "v10", "phi"};
+  if (index < 4) return kLeading[index];
+  if (index < 4 + n) return fmt::format("d{}", index - 3);
+  return ToString(kAllParameters[index - 4 - n]);
+}
+
+std::optional<int> IndexOf(int n, std::string_view name) {
+  for (int i = 0; i < Count(n); ++i) {
+    if (Name(n, i) == name) return i;
+  }
+  return std::nullopt;
+}
+
+Eigen::VectorXd Pack(const Orbit& orbit) {
+  const int n = orbit.signature.size();
+  Eigen::VectorXd v(Count(n));
+  v(kX10) = orbit.x10;
+  v(kX20) = orbit.x20;
+  v(kV10) = orbit.v10;
+  v(kPhi) = orbit.phi;
+  for (int i = 0; i < n; ++i) v(Duration(i)) = orbit.durations[i];
+  for (ParameterId id : kAllParameters) v(Parameter(n, id)) = orbit.parameters[id];
+  return v;
+}
+
+Orbit Unpack(const Signature& signature, const Eigen::VectorXd& v) {
+  const int n = signature.size();
+  Orbit orbit{signature, {}, v(kX10), v(kX20), v(kV10), v(kPhi), {}};
+  for (int i = 0; i < n; ++i) orbit.durations.push_back(v(Duration(i)));
+  for (ParameterId id : kAllParameters) orbit.parameters[id] = v(Parameter(n, id));
+  return orbit;
+}
+
+}  // namespace orbit_variables
+
+}  // namespace stickslip

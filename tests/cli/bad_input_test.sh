@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Every bad input gets a one-line error naming the field, its value and the valid range, exit
+# code 2, and leaves no output file behind (an existing one is not truncated).
+set -u
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+expect_rejected() {  # expect_rejected <field> <expected text> <args...>
+  local field=$1 text=$2
+  shift 2
+  local out="$work/out.csv"
+  printf 'keep\n' > "$work/existing.csv"
+  "$bin" simulate "$@" --csv "$out" > "$work/stdout" 2> "$work/stderr"
+  local code=$?
+  local lines
+  lines=$(wc -l < "$work/stderr")
+  local problem=""
+  [ "$code" -eq 2 ] || problem+=" exit code $code (want 2);"
+  [ "$lines" -eq 1 ] || problem+=" $lines stderr lines (want 1);"
+  grep -q -- "$field" "$work/stderr" || problem+=" message does not name '$field';"
+  grep -q -- "$text" "$work/stderr" || problem+=" message lacks '$text';"
+  [ ! -e "$out" ] || problem+=" output file was created;"
+  "$bin" simulate "$@" --csv "$work/existing.csv" > /dev/null 2>&1
+  [ "$(cat "$work/existing.csv")" = "keep" ] || problem+=" existing file was changed;"
+  if [ -n "$problem" ]; then
+    echo "FAIL [$*]:$problem"
+    sed 's/^/    stderr: /' "$work/stderr"
+    failures=$((failures + 1))
+  else
+    echo "ok   [$*]: $(cat "$work/stderr")"
+  fi
+}
+
+p=(--preset paper-4.1)
+expect_rejected chi "0 < chi < 1" "${p[@]}" --set chi=1.5
+expect_rejected chi "0 < chi < 1" "${p[@]}" --set chi=0
+expect_rejected eta "eta > 0" "${p[@]}" --set eta=-1
+expect_rejected eta "eta > 0" "${p[@]}" --set eta=0
+expect_rejected omega "omega > 0" "${p[@]}" --set omega=0
+expect_rejected u_s "u_s > 0" "${p[@]}" --set u_s=0
+expect_rejected u_r "u_r >= u_s" "${p[@]}" --set u_r=0.05
+expect_rejected omega "finite number" "${p[@]}" --set omega=nan
+expect_rejected x10 "finite number" "${p[@]}" --set x10=inf
+expect_rejected phi "finite number" "${p[@]}" --set phi=1e999
+expect_rejected eta "finite number" "${p[@]}" --set eta=4x
+expect_rejected omega "natural frequencies" --preset paper-4.1 --set omega=0.7012301668996977
+expect_rejected periods "periods" "${p[@]}" --periods -1
+expect_rejected periods "periods" "${p[@]}" --periods two
+expect_rejected preset "paper-4.1" --preset paper-9
+expect_rejected "--set" "valid keys" "${p[@]}" --set mu=3
+expect_rejected chi "missing" --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3
+
+# An unknown subcommand also exits 2 with one line.
+"$bin" simulat > /dev/null 2> "$work/stderr"
+code=$?
+if [ "$code" -ne 2 ] || ! grep -q "simulat" "$work/stderr"; then
+  echo "FAIL unknown command: exit $code, stderr: $(cat "$work/stderr")"
+  failures=$((failures + 1))
+fi
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs the whole test suite with ctest.
+#   tools/test.sh             Release build in build/release
+#   tools/test.sh --sanitize  AddressSanitizer + UndefinedBehaviorSanitizer build in build/asan
+set -euo pipefail
+source "$(dirname "$0")/setup.sh"
+stickslip_install_packages
+if [ "${1:-}" = "--sanitize" ]; then
+  dir="$STICKSLIP_ROOT/build/asan"
+  stickslip_build "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTICKSLIP_SANITIZE=ON \
+    -DSTICKSLIP_BUILD_BENCHMARKS=OFF
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+else
+  dir="$STICKSLIP_ROOT/build/release"
+  stickslip_build "$dir" -DCMAKE_BUILD_TYPE=Release
+fi
+ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"
