@@ -105,15 +105,17 @@ class ZeroFinder {
         // side of it.
         const double te = Bracketed(df_, iv.l, iv.r, dl, dr, options_.time_tolerance);
         const double fe = f_(te);
-        if (iv.fl * fe < 0.0) {
+        // An extremum within the touch level of zero is one double zero, not two crossings a
+        // rounding error apart.
+        if (std::abs(fe) <= touch_level_) {
+          out->push_back({te, ZeroKind::kTouch});
+        } else if (iv.fl * fe < 0.0) {
           out->push_back({Bracketed(f_, iv.l, te, iv.fl, fe, options_.time_tolerance),
                           ZeroKind::kCrossing});
           if (fe * iv.fr <= 0.0 && static_cast<int>(out->size()) < max_count) {
             out->push_back({Bracketed(f_, te, iv.r, fe, iv.fr, options_.time_tolerance),
                             ZeroKind::kCrossing});
           }
-        } else if (std::abs(fe) <= touch_level_) {
-          out->push_back({te, ZeroKind::kTouch});
         } else if (fe * iv.fr <= 0.0) {
           out->push_back({Bracketed(f_, te, iv.r, fe, iv.fr, options_.time_tolerance),
                           ZeroKind::kCrossing});

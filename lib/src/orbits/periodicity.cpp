@@ -123,7 +123,9 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
       case SegmentEndKind::kAbnormalStop:
         add_equation({x(3), Eigen::Vector4d::UnitW()});
         add_equation(Differentiate(
-            [mode](const auto& s, const auto& ph, const auto& q) { return Acceleration(mode, s, ph, q)(1); },
+            [mode](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
+              return Acceleration(mode, s, ph, q)(1);
+            },
             x, phase, p));
         break;
       case SegmentEndKind::kReversal:
@@ -132,12 +134,16 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
         break;
       case SegmentEndKind::kExitToNegative:  // s = +eta u_r: G1 = 0
         add_equation(Differentiate(
-            [](const auto& s, const auto& ph, const auto& q) { return -StickConstraintG1(s, ph, q); },
+            [](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
+              return -StickConstraintG1(s, ph, q);
+            },
             x, phase, p));
         break;
       case SegmentEndKind::kExitToPositive:  // s = -eta u_r: G = 0
         add_equation(Differentiate(
-            [](const auto& s, const auto& ph, const auto& q) { return StickConstraintG(s, ph, q); },
+            [](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
+              return StickConstraintG(s, ph, q);
+            },
             x, phase, p));
         break;
     }

@@ -3,6 +3,8 @@
 #pragma once
 
 // <Eigen/Core> must precede the unsupported AutoDiff module.
+#include <type_traits>
+
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
@@ -17,6 +19,12 @@ struct LocalGradient {
   Eigen::Matrix<double, 1, kParameterCount> d_parameters =
       Eigen::Matrix<double, 1, kParameterCount>::Zero();
 };
+
+// The scalar type of a generic lambda's argument. Such lambdas must return Scalar<...>
+// explicitly: an `auto` return of an AutoDiff expression would dangle (it references
+// temporaries that die with the lambda).
+template <typename Argument>
+using Scalar = std::decay_t<Argument>;
 
 // f is called as f(state, phase, parameters) with an automatic-differentiation scalar.
 template <typename Function>
