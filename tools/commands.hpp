@@ -15,5 +15,6 @@ struct Command {
 };
 
 Command AddSimulateCommand(CLI::App& app);
+Command AddSolveCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

@@ -31,7 +31,7 @@ class NonlinearSystem {
 
 struct NewtonOptions {
   int max_iterations = 30;
-  double residual_tolerance = 1e-11;  // converged when max|F| <= this
+  double residual_tolerance = 1e-12;  // converged when max|F| <= this
   double step_tolerance = 1e-13;      // ... or when the step is this small relative to |u| and
   double stagnation_residual = 1e-8;  //     max|F| is below this (rounding floor reached)
   double min_damping = 1.0 / 1024.0;  // smallest step fraction of the backtracking line search

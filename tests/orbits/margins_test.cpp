@@ -1,0 +1,118 @@
+// Admissibility margins against dense sampling of the closed-form flow (an independent way to
+// find a minimum, since the margins use root finding on derivatives).
+#include "stickslip/orbits/margins.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/model/events.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
+#include "stickslip/orbits/paper_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+const Margin& Find(const std::vector<Margin>& margins, const std::string& name) {
+  return *std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.name == name; });
+}
+
+struct Sampled {
+  double t = 0.0;
+  double value = std::numeric_limits<double>::infinity();
+};
+
+// Minimum of f over [a, b] on a grid of `count` intervals.
+template <typename F>
+Sampled SampledMinimum(F&& f, double a, double b, int count) {
+  Sampled best;
+  for (int k = 0; k <= count; ++k) {
+    const double t = a + (b - a) * k / count;
+    const double value = f(t);
+    if (value < best.value) best = {t, value};
+  }
+  return best;
+}
+
+Orbit SolvedPreset(const char* name) {
+  const PaperPreset& preset = *FindPaperPreset(name);
+  const Orbit guess = preset.Guess();
+  const FreeVariables free = ResolveUnknowns(guess.signature, preset.unknowns);
+  return SolveOrbit(guess, free.indices, preset.unknowns.tie_static_friction).orbit;
+}
+
+// The stick constraints over the stick of an orbit, sampled from the flow.
+void ExpectStickConstraintMinima(const Orbit& o, int stick) {
+  const std::vector<State> states = o.SegmentStates();
+  const std::vector<double> times = o.SegmentTimes();
+  const Parameters& p = o.parameters;
+  const double phase0 = o.phi + p.omega * times[stick];
+  auto at = [&](double s) { return Flow(Mode::kStick, states[stick], phase0, s, p); };
+  const double d = o.durations[stick];
+  const Sampled g = SampledMinimum(
+      [&](double s) { return StickConstraintG(at(s), phase0 + p.omega * s, p); }, 0.0, d, 200000);
+  const Sampled g1 = SampledMinimum(
+      [&](double s) { return StickConstraintG1(at(s), phase0 + p.omega * s, p); }, 0.0, d, 200000);
+  const std::vector<Margin> margins = AdmissibilityMargins(o);
+  const std::string suffix = ":" + std::to_string(stick + 1);
+  // The grid step is 1.4e-5: the sampled minimum lies above the true one by at most
+  // |G''| h^2/8 < 1e-9, and the true one is never above it.
+  const Margin& mg = Find(margins, "G" + suffix);
+  const Margin& mg1 = Find(margins, "G1" + suffix);
+  // For the constraint that ends the stick, the exit end (where it is zero) is excluded.
+  if (g.t < d) {
+    EXPECT_NEAR(mg.value, g.value, 1e-8);
+    EXPECT_LE(mg.value, g.value + 1e-12);
+    EXPECT_NEAR(mg.t - times[stick], g.t, 1e-4);
+  }
+  if (g1.t < d) EXPECT_NEAR(mg1.value, g1.value, 1e-8);
+}
+
+TEST(StickConstraintMargins, AreTheTrueMinimaOverTheStick) {
+  ExpectStickConstraintMinima(SolvedPreset("paper-5.1"), 2);
+  ExpectStickConstraintMinima(SolvedPreset("paper-5.2"), 2);  // the negative interior minimum
+  ExpectStickConstraintMinima(SolvedPreset("paper-6"), 1);
+}
+
+// A hand-made slip+ segment that runs past its first stop: x2' goes negative inside and comes
+// back up, so the velocity margin is that negative interior minimum (a new stop is born).
+TEST(SlipVelocityMargin, IsTheInteriorMinimumOfTheSignedVelocity) {
+  const Parameters p{0.3, 4.0, 0.6, 0.1, 0.2};
+  // At rest with s = chi eta (x2 - x1) - cos(phi) = -2.2 < -eta u_r: a slip with x2' > 0.
+  Orbit o{*Signature::Parse("slip+ slip-", nullptr), p, 1.0, 0.0, 0.0, 0.0, {0.0, 1.0}};
+  auto v2 = [&](double t) { return Flow(Mode::kSlipPositive, o.InitialState(), o.phi, t, p)(3); };
+  // The first interior local minimum of x2' on a fine grid.
+  const double h = 1e-4;
+  double t_min = -1.0;
+  for (double t = 0.05; t < 30.0; t += h) {
+    if (v2(t) < v2(t - h) && v2(t) < v2(t + h)) {
+      t_min = t;
+      break;
+    }
+  }
+  ASSERT_GT(t_min, 0.0);
+  o.durations[0] = t_min + 0.3;
+  const Margin& m = Find(AdmissibilityMargins(o), "velocity:1");
+  const Sampled sampled = SampledMinimum(v2, t_min - h, t_min + h, 2000);
+  EXPECT_NEAR(m.value, sampled.value, 1e-10);
+  EXPECT_NEAR(m.t, sampled.t, 1e-6);
+  EXPECT_EQ(m.kind, MarginKind::kSlipVelocity);
+}
+
+TEST(Margins, SmallestIsTheDistanceToTheNearestChangeOfType) {
+  // Section 4.1 sits on the boundary between nonsticking and sticking orbits (ERRATA): its
+  // smallest margin is the force at the stop, barely above eta u_r.
+  const Orbit o = SolvedPreset("paper-4.1");
+  const Margin& smallest = SmallestMargin(AdmissibilityMargins(o));
+  EXPECT_EQ(smallest.name, "reversal:1");
+  EXPECT_GT(smallest.value, 0.0);
+  EXPECT_LT(smallest.value, 1e-3);
+  // Reproduce it from the stop state: -s - eta u_r before the slip+ half.
+  const State stop = o.SegmentStates()[1];
+  const double phase = o.phi + o.parameters.omega * o.durations[0];
+  EXPECT_NEAR(smallest.value, -StickForce(stop, phase, o.parameters) - o.parameters.eta * o.parameters.u_r, 1e-14);
+}
+
+}  // namespace
+}  // namespace stickslip
