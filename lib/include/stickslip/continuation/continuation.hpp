@@ -1,0 +1,121 @@
+// Pseudo-arclength continuation (Keller) of any smooth problem F(u) = 0, F: R^(n+1) -> R^n with
+// its Jacobian, one of whose unknowns is the continuation parameter lambda. It knows nothing of
+// friction: the orbit problem is one NonlinearSystem among possible others.
+//
+//   Continuation cont(problem, &monitor, options, start);
+//   while (cont.Step()) { observe(cont.branch().points.back()); }   // or: cont.Run()
+//
+// Tangent predictor from the bordered Jacobian [J; t_prev^T] t = e, Newton corrector on
+// [F(u); t.(u - u_pred)] = 0, orientation kept across folds (t.t_prev > 0), adaptive step size
+// (step_size.hpp). Special points are detected by a sign change of a test function between two
+// accepted points and located on the branch itself by a bracketing root finder in arclength
+// (TOMS 748; bisection for the sign of a determinant): LP (fold: the lambda component of the
+// tangent), BP (branch point: the sign of det [J; t^T]), UZ (user values), EP (ends), and every
+// test function of the Monitor.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stickslip/continuation/monitor.hpp"
+#include "stickslip/continuation/step_size.hpp"
+#include "stickslip/numerics/newton.hpp"
+
+namespace stickslip {
+
+// UZ: a user value of any unknown.
+struct UserValue {
+  int index = 0;       // which unknown
+  double value = 0.0;
+  std::string name;    // for the report, e.g. "omega=0.6"
+};
+
+struct ContinuationOptions {
+  int parameter_index = -1;  // the unknown that is lambda; required
+  int direction = 1;         // +1: start towards increasing lambda, -1: decreasing
+  double lambda_min = -std::numeric_limits<double>::infinity();  // the branch ends at these
+  double lambda_max = std::numeric_limits<double>::infinity();   // bounds (located, EP)
+  int max_points = 500;      // accepted points, the start included
+  StepSizeOptions step;
+  NewtonOptions corrector = [] {
+    NewtonOptions o;
+    o.max_iterations = 10;
+    o.estimate_condition = false;
+    return o;
+  }();
+  bool detect_folds = true;
+  bool detect_branch_points = true;
+  std::vector<UserValue> user_values;
+  // By default the branch ends at the first terminal test function leaving its admissible
+  // (positive) side; with this set it goes on and flags the points beyond as inadmissible.
+  bool continue_past_terminal = false;
+  double locate_tolerance = 1e-11;  // final arclength bracket of a located special point
+
+  bool IsValid(std::string* error) const;
+};
+
+enum class BranchEnd {
+  kRunning,
+  kMaxPoints,
+  kParameterBound,
+  kStepTooSmall,
+  kTerminalEvent,
+  kStartFailed,
+};
+const char* ToString(BranchEnd end);
+
+struct BranchPoint {
+  Eigen::VectorXd u;       // every unknown, lambda included
+  double lambda = 0.0;
+  double ds = 0.0;         // the step that reached it (0 for the start and located points)
+  int newton_iterations = 0;
+  Eigen::VectorXd tests;   // the monitor's test functions
+  std::string label;       // special-point type, "" for a regular point
+  bool admissible = true;  // every terminal test function positive
+};
+
+struct SpecialPoint {
+  std::string type;           // "LP", "BP", "UZ", "EP" or a monitor type ("GR", ...)
+  std::string test_function;  // which function changed sign, or why the branch ended
+  int point = 0;              // index into Branch::points
+  double lambda = 0.0;
+  Eigen::VectorXd u;
+  Eigen::VectorXd tests;
+  double test_value = 0.0;    // the function that changed sign, at the located point
+  bool located = true;        // false if the corrector failed inside the bracket
+  double bracket = 0.0;       // final arclength bracket width
+};
+
+struct Branch {
+  std::vector<BranchPoint> points;
+  std::vector<SpecialPoint> special_points;
+  std::vector<TestFunctionInfo> test_functions;  // the monitor's
+  BranchEnd end = BranchEnd::kRunning;
+  std::string end_message;
+};
+
+class Continuation {
+ public:
+  // `monitor` may be null. `start` need not lie exactly on the branch: it is corrected at its
+  // lambda first. Throws std::invalid_argument on invalid options or sizes.
+  Continuation(const NonlinearSystem& problem, const Monitor* monitor, ContinuationOptions options,
+               Eigen::VectorXd start);
+  ~Continuation();
+
+  // Computes the next accepted point (the corrected start on the first call), with every
+  // special point located on the way. Returns false once the branch has ended.
+  bool Step();
+  Branch Run();
+  const Branch& branch() const { return branch_; }
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+  Branch branch_;
+};
+
+}  // namespace stickslip

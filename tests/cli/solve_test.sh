@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# stickslip solve: JSON shape and values for a preset, the paper's own choices through
+# --free/--fix, and every kind of bad input with its message and exit code.
+set -u
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+"$bin" solve --preset paper-5.1 --json > "$work/s.json" || fail "paper-5.1 exit $?"
+/usr/bin/python3 - "$work/s.json" <<'PY' || failures=$((failures + 1))
+import json, sys
+o = json.load(open(sys.argv[1]))
+for key in ("signature", "parameters", "phi", "x10", "x20", "v10", "segments", "converged",
+            "residual_norm", "margins", "verification"):
+    assert key in o, key
+assert o["signature"] == "slip- slip+ stick slip+"
+assert set(o["parameters"]) == {"chi", "eta", "omega", "u_s", "u_r"}
+assert o["converged"] is True and o["residual_norm"] < 1e-11
+assert [s["mode"] for s in o["segments"]] == ["slip-", "slip+", "stick", "slip+"]
+assert abs(o["segments"][1]["duration"] - 2) < 2e-4 and abs(o["segments"][3]["duration"] - 3) < 2e-4
+assert min(v for v in o["margins"].values() if v is not None) > 0
+assert o["verification"]["passed"] is True
+print("solve json ok")
+PY
+
+# Section 5.2 with phi = pi/2 held and u_r released (the paper's choice, ERRATA: u_r = 0.478).
+"$bin" solve --preset paper-5.2 --fix phi=1.5707963267948966 --free u_r --json > "$work/52.json" ||
+  fail "paper-5.2 --fix phi --free u_r exit $?"
+/usr/bin/python3 -c "
+import json, sys
+o = json.load(open('$work/52.json'))
+assert abs(o['parameters']['u_r'] - 0.478) < 1e-3, o['parameters']
+assert o['phi'] == 1.5707963267948966
+print('paper choice ok')" || failures=$((failures + 1))
+
+# A signature given by hand, from the section 6 printed values.
+"$bin" solve --signature "slip- stick slip- / antisymmetric" --set chi=0.7 --set eta=3.8 \
+  --set omega=0.5711986642890533 --set u_s=0.06 --set u_r=1.4041 --set x10=2.8901 \
+  --set x20=5.1306 --set v10=-0.8108 --set phi=3 --guess d1=2.175 --guess d2=1.56 \
+  --guess d3=1.765 > /dev/null || fail "hand-made signature exit $?"
+
+expect_error() {  # expect_error <code> <text> <args...>
+  local code=$1 text=$2
+  shift 2
+  "$bin" solve "$@" > /dev/null 2> "$work/err"
+  local got=$?
+  if [ "$got" -ne "$code" ] || ! grep -q -- "$text" "$work/err" || [ "$(wc -l < "$work/err")" -ne 1 ]; then
+    fail "[$*]: exit $got (want $code), stderr: $(cat "$work/err")"
+  else
+    echo "ok   [$*]: $(cat "$work/err")"
+  fi
+}
+expect_error 2 "preset = 'paper-7'" --preset paper-7
+expect_error 2 "token 2 'stik'" --signature "slip- stik" --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3
+expect_error 2 "not square" --preset paper-5.1 --free u_r
+expect_error 2 "free = 'mu'" --preset paper-5.1 --free mu --fix phi
+expect_error 2 "d1 = 0" --signature "slip- slip+" --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3 --set x10=1
+expect_error 2 "exactly one" --preset paper-5.1 --signature "slip-"
+expect_error 3 "did not converge" --preset paper-5.1 --guess d1=0.01 --guess x10=40 --guess phi=5
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,192 @@
+// The continuation engine alone, on problems with known answers.
+#include "stickslip/continuation/continuation.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace stickslip {
+namespace {
+
+// F(x, lambda) with u = (x, lambda) and an analytic Jacobian.
+class ScalarProblem : public NonlinearSystem {
+ public:
+  int EquationCount() const override { return 1; }
+  int UnknownCount() const override { return 2; }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* r, JacobianMatrix* j) const override {
+    r->resize(1);
+    (*r)(0) = F(u(0), u(1));
+    if (j) {
+      Eigen::MatrixXd m(1, 2);
+      m << Fx(u(0), u(1)), Fl(u(0), u(1));
+      *j = m;
+    }
+  }
+  virtual double F(double x, double l) const = 0;
+  virtual double Fx(double x, double l) const = 0;
+  virtual double Fl(double x, double l) const = 0;
+};
+
+struct Circle : ScalarProblem {  // x^2 + lambda^2 = 1: folds at lambda = -1 and 1
+  double F(double x, double l) const override { return x * x + l * l - 1.0; }
+  double Fx(double x, double) const override { return 2 * x; }
+  double Fl(double, double l) const override { return 2 * l; }
+};
+
+struct Cubic : ScalarProblem {  // lambda = x - x^3/3: folds at (x, lambda) = (+-1, +-2/3)
+  double F(double x, double l) const override { return x * x * x / 3.0 - x + l; }
+  double Fx(double x, double) const override { return x * x - 1.0; }
+  double Fl(double, double) const override { return 1.0; }
+};
+
+struct Pitchfork : ScalarProblem {  // x (lambda - x^2) = 0: branch point at the origin
+  double F(double x, double l) const override { return x * (l - x * x); }
+  double Fx(double x, double l) const override { return l - 3 * x * x; }
+  double Fl(double x, double) const override { return x; }
+};
+
+ContinuationOptions Options(double ds = 0.05) {
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  o.step.ds = ds;
+  o.step.ds_max = 0.2;
+  o.max_points = 400;
+  return o;
+}
+
+std::vector<SpecialPoint> OfType(const Branch& b, const std::string& type) {
+  std::vector<SpecialPoint> out;
+  for (const SpecialPoint& s : b.special_points) {
+    if (s.type == type) out.push_back(s);
+  }
+  return out;
+}
+
+TEST(PseudoArclength, LocatesBothFoldsOfTheCircle) {
+  const Circle circle;
+  ContinuationOptions o = Options();
+  o.max_points = 200;
+  const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  const auto folds = OfType(b, "LP");
+  ASSERT_GE(folds.size(), 2u);
+  EXPECT_NEAR(folds[0].lambda, 1.0, 1e-10);
+  EXPECT_NEAR(folds[0].u(0), 0.0, 1e-9);
+  EXPECT_NEAR(folds[1].lambda, -1.0, 1e-10);
+  for (const BranchPoint& p : b.points) EXPECT_NEAR(p.u.squaredNorm(), 1.0, 1e-10);
+}
+
+TEST(PseudoArclength, LocatesTheFoldOfACubicInEitherDirection) {
+  const Cubic cubic;
+  for (int direction : {1, -1}) {
+    ContinuationOptions o = Options();
+    o.direction = direction;
+    o.lambda_min = -2.0;
+    o.lambda_max = 2.0;
+    const Branch b = Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+    // From the origin lambda rises to the fold at x = 1, then falls for ever (or the mirror).
+    const auto folds = OfType(b, "LP");
+    ASSERT_EQ(folds.size(), 1u);
+    EXPECT_NEAR(folds[0].lambda, direction * 2.0 / 3.0, 1e-10);
+    EXPECT_NEAR(folds[0].u(0), direction * 1.0, 1e-5);  // lambda is quadratic in x there
+    EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+    EXPECT_NEAR(b.points.back().lambda, -direction * 2.0, 1e-10);
+  }
+}
+
+TEST(PseudoArclength, LocatesThePitchforkBranchPoint) {
+  const Pitchfork pitchfork;
+  ContinuationOptions o = Options(0.07);
+  o.lambda_min = -1.0;
+  o.lambda_max = 1.0;
+  const Branch b = Continuation(pitchfork, nullptr, o, Eigen::Vector2d(0.0, -0.5)).Run();
+  const auto bps = OfType(b, "BP");
+  ASSERT_EQ(bps.size(), 1u);
+  EXPECT_NEAR(bps[0].lambda, 0.0, 1e-10);
+  EXPECT_TRUE(OfType(b, "LP").empty());
+}
+
+TEST(PseudoArclength, LocatesUserValuesAndEndsAtTheParameterBound) {
+  const Cubic cubic;
+  ContinuationOptions o = Options();
+  o.lambda_max = 0.5;
+  o.user_values = {{1, 0.25, "lambda=0.25"}, {0, 0.1, "x=0.1"}};
+  const Branch b = Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+  const auto uz = OfType(b, "UZ");
+  ASSERT_EQ(uz.size(), 2u);
+  EXPECT_NEAR(uz[0].u(0), 0.1, 1e-10);
+  EXPECT_NEAR(uz[1].lambda, 0.25, 1e-10);
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+  EXPECT_NEAR(b.points.back().lambda, 0.5, 1e-10);
+  EXPECT_EQ(b.points.back().label, "EP");
+}
+
+// A fold of curvature 100: lambda = -50 x^2. Long steps overshoot it and fail, short ones pass.
+struct SharpFold : ScalarProblem {
+  double F(double x, double l) const override { return l + 50.0 * x * x; }
+  double Fx(double x, double) const override { return 100.0 * x; }
+  double Fl(double, double) const override { return 1.0; }
+};
+
+TEST(StepSize, ShrinksWhereTheCorrectorFailsAndRecoversAfter) {
+  const SharpFold fold;
+  ContinuationOptions o = Options(0.2);
+  o.step.ds_max = 0.4;
+  o.corrector.max_iterations = 4;
+  o.lambda_min = -1.5;
+  o.detect_folds = false;
+  o.detect_branch_points = false;
+  const Branch b = Continuation(fold, nullptr, o, Eigen::Vector2d(-std::sqrt(1.0 / 50.0), -1.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+  double smallest = 1.0;
+  std::size_t where = 0;
+  for (std::size_t i = 1; i < b.points.size(); ++i) {
+    if (b.points[i].ds > 0.0 && b.points[i].ds < smallest) {
+      smallest = b.points[i].ds;
+      where = i;
+    }
+  }
+  EXPECT_LT(smallest, 0.2 / 4);  // shrank at the fold
+  EXPECT_LT(std::abs(b.points[where].lambda), 0.1);
+  double largest_after = 0.0;
+  for (std::size_t i = where; i < b.points.size(); ++i) largest_after = std::max(largest_after, b.points[i].ds);
+  EXPECT_GT(largest_after, 4 * smallest);  // and grew again after it
+  for (const BranchPoint& p : b.points) EXPECT_NEAR(fold.F(p.u(0), p.u(1)), 0.0, 1e-10);
+  EXPECT_GT(b.points.back().u(0), 0.0);  // went round the fold
+  EXPECT_NEAR(b.points.back().lambda, -1.5, 1e-10);
+}
+
+TEST(StepSizeController, GrowsAfterFastStepsHalvesOnFailureAndRespectsDsMax) {
+  StepSizeOptions options;
+  options.ds = 0.1;
+  options.ds_max = 0.2;
+  const auto c = StepSizeController::Create(options);
+  EXPECT_DOUBLE_EQ(c->OnAccepted(0.1, 2), 0.15);
+  EXPECT_DOUBLE_EQ(c->OnAccepted(0.15, 1), 0.2);
+  EXPECT_LT(c->OnAccepted(0.1, 6), 0.1);
+  EXPECT_DOUBLE_EQ(c->OnRejected(0.1), 0.05);
+}
+
+TEST(Continuation, CanBeSteppedOnePointAtATime) {
+  const Circle circle;
+  ContinuationOptions o = Options();
+  o.max_points = 10;
+  Continuation c(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0));
+  int steps = 0;
+  while (c.Step()) {
+    ++steps;
+    EXPECT_EQ(static_cast<int>(c.branch().points.size()), steps);
+  }
+  EXPECT_EQ(c.branch().end, BranchEnd::kMaxPoints);
+  EXPECT_EQ(static_cast<int>(c.branch().points.size()), 10);
+}
+
+TEST(ContinuationOptions, RejectInconsistentStepBounds) {
+  ContinuationOptions o = Options();
+  o.step.ds_min = 1.0;
+  std::string error;
+  EXPECT_FALSE(o.IsValid(&error));
+  EXPECT_NE(error.find("ds_min"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace stickslip
