@@ -16,5 +16,8 @@ struct Command {
 
 Command AddSimulateCommand(CLI::App& app);
 Command AddSolveCommand(CLI::App& app);
+Command AddRunCommand(CLI::App& app);
+Command AddContinueCommand(CLI::App& app);
+Command AddCheckCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

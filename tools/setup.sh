@@ -5,7 +5,7 @@
 STICKSLIP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 STICKSLIP_PACKAGES=(
   cmake ninja-build g++
-  libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev
+  libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev
   libgtest-dev libbenchmark-dev
 )
 

@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
       "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence.",
       "stickslip");
   app.require_subcommand(1);
-  const std::vector<Command> commands = {AddSimulateCommand(app), AddSolveCommand(app)};
+  const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddCheckCommand(app),
+                                         AddSolveCommand(app), AddSimulateCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands simulate, solve", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

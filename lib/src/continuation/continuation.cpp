@@ -147,6 +147,7 @@ struct Continuation::State {
   Eigen::VectorXd tangent;  // unit tangent there, oriented along the branch
   int det_sign = 0;         // sign of det [J; t^T] there
   double ds = 0.0;
+  std::string last_failure;  // why the corrector last failed, for the end message
   bool started = false;
   bool ended = false;
 
@@ -200,7 +201,10 @@ struct Continuation::State {
   std::optional<Sample> Corrected(double s) {
     const BorderedSystem bordered(problem, tangent, u, s);
     NewtonResult r = SolveNewton(bordered, u + s * tangent, options.corrector);
-    if (!r.summary.Converged()) return std::nullopt;
+    if (!r.summary.Converged()) {
+      last_failure = r.summary.BriefReport();
+      return std::nullopt;
+    }
     Sample sample;
     sample.u = std::move(r.solution);
     sample.iterations = r.summary.iterations;
@@ -280,18 +284,34 @@ bool Continuation::Step() {
     return true;
   }
 
-  // Predictor-corrector with step-size control.
+  // Predictor-corrector with step-size control. A step that would cross a parameter bound is
+  // shortened to end on it, so that a bound at the edge of the problem's domain can be reached.
   std::optional<State::Sample> next;
+  double ds = st.ds;
+  bool on_bound = false;
   while (true) {
-    if (st.ds < o.step.ds_min) {
+    if (ds < o.step.ds_min) {
       return end(BranchEnd::kStepTooSmall,
-                 fmt::format("the corrector failed down to ds = {:.3e} < ds_min = {:.3e}", st.ds, o.step.ds_min));
+                 fmt::format("the corrector failed down to ds = {:.3e} < ds_min = {:.3e} at {} = {:.12g}; last "
+                             "failure: {}",
+                             ds, o.step.ds_min, "lambda", st.Lambda(st.u), st.last_failure));
     }
-    next = st.Corrected(st.ds);
-    if (next) break;
-    st.ds = st.steps->OnRejected(st.ds);
+    const double rate = st.tangent(o.parameter_index);
+    const double bound = rate > 0.0 ? o.lambda_max : o.lambda_min;
+    const double to_bound = rate != 0.0 ? (bound - st.Lambda(st.u)) / rate : ds;
+    on_bound = to_bound > 0.0 && to_bound <= ds;
+    next = st.Corrected(on_bound ? to_bound : ds);
+    if (next) {
+      if (on_bound) {
+        ds = to_bound;
+        // The corrector keeps lambda on the bound only to second order in the step.
+        on_bound = std::abs(st.Lambda(next->u) - bound) <= 1e-10 * (1.0 + std::abs(bound));
+      }
+      break;
+    }
+    ds = st.steps->OnRejected(ds);
+    st.ds = ds;
   }
-  const double ds = st.ds;
   const Eigen::VectorXd tests_a = st.Tests(st.u);
   const State::Sample a{st.u, st.tangent, st.det_sign, tests_a, 0};
   const State::Sample& b = *next;
@@ -369,8 +389,10 @@ bool Continuation::Step() {
     } catch (const CorrectorFailure&) {
       ok = false;
     }
+    if (gb == 0.0) lo = hi = ds;
     const double s_star = ok ? (e.sign_only ? hi : 0.5 * (lo + hi)) : ds * ga / (ga - gb);
-    std::optional<State::Sample> p = ok ? st.Corrected(s_star) : std::nullopt;
+    std::optional<State::Sample> p = ok ? (s_star == ds ? std::optional<State::Sample>(b) : st.Corrected(s_star))
+                                        : std::nullopt;
     if (!p) {
       ok = false;
       p = b;
@@ -398,6 +420,7 @@ bool Continuation::Step() {
 
   push(b, ds, "");
   st.u = b.u;
+  if (on_bound) return end(BranchEnd::kParameterBound, fmt::format("reached the bound lambda = {}", st.Lambda(b.u)));
   st.tangent = b.tangent;
   st.det_sign = b.det_sign;
   st.ds = st.steps->OnAccepted(ds, b.iterations);

@@ -1,0 +1,85 @@
+// Run files: the declarative description of one continuation run, in TOML
+// (continuation-scripts/*.toml). Every key is checked: unknown keys, missing keys and wrong
+// types are errors naming the file, the line and the key.
+//
+//   output = "paper-5.1-omega-up"      # results/<output>/
+//   [start]
+//   preset = "paper-5.1"               # or signature = "slip- slip+ stick slip+"
+//   set = { u_r = 0.5 }                # model data and start: chi eta omega u_s u_r x10 x20 v10 phi
+//   guess = { d1 = 3.2 }               # any orbit variable
+//   restart = { run = "paper-5.1-omega-up", label = "LP1" }   # start from a labelled point
+//   [unknowns]
+//   free = ["u_r"]                     # released variables
+//   fix = ["phi"]                      # held variables
+//   tie_u_r = false                    # u_r = u_s
+//   [continuation]
+//   parameter = "omega"
+//   direction = "up"                   # or "down"
+//   range = [0.3, 1.0]
+//   ds = 0.01                          # optional: ds_min, ds_max, max_points, shooting,
+//   user_values = [0.6]                # linear_solver, detect_folds, detect_branch_points,
+//                                      # continue_past_type_changes, user_values_of
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace stickslip {
+
+class RunFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+using NamedValues = std::vector<std::pair<std::string, double>>;
+
+struct RunFile {
+  std::string path;
+  // "path:line:column" of every key present, by its dotted name ("start.preset").
+  std::map<std::string, std::string> locations;
+  std::string Location(const std::string& key) const {
+    const auto it = locations.find(key);
+    return it == locations.end() ? path : it->second;
+  }
+  std::string output;
+  // [start]
+  std::string preset;
+  std::string signature;
+  NamedValues set;
+  NamedValues guess;
+  std::string restart_run;
+  std::string restart_label;
+  // [unknowns]
+  std::vector<std::string> free;
+  std::vector<std::string> fix;
+  bool tie_u_r = false;
+  // [continuation]
+  std::string parameter;
+  int direction = 1;
+  double range_min = 0.0;
+  double range_max = 0.0;
+  double ds = 0.01;
+  double ds_min = 1e-8;
+  double ds_max = 0.05;
+  int max_points = 2000;
+  std::string shooting = "auto";
+  std::string linear_solver = "klu";
+  bool detect_folds = true;
+  bool detect_branch_points = true;
+  bool continue_past_type_changes = false;
+  NamedValues user_values;  // (variable, value); the continuation parameter's from user_values
+};
+
+// Largest run file accepted (a guard against feeding the parser arbitrary data).
+inline constexpr std::size_t kMaxRunFileBytes = 64 * 1024;
+
+// Throws RunFileError "<path>:<line>:<column>: <what>" on any problem.
+RunFile ParseRunFile(std::string_view content, std::string_view path);
+RunFile ReadRunFile(const std::filesystem::path& path);
+
+}  // namespace stickslip

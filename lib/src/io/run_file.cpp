@@ -1,0 +1,319 @@
+// The only translation unit that includes toml++. Debian's toml++ 3.3.0 aborts on some malformed
+// input through its internal asserts, and with NDEBUG turns them into optimiser assumptions
+// (undefined behaviour); here they are no-ops, and the input is screened before parsing.
+#ifdef NDEBUG
+#undef NDEBUG
+#endif
+#define TOML_ASSERT(expr) static_cast<void>(0)
+#include <toml++/toml.h>
+
+#include "stickslip/io/run_file.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace stickslip {
+
+namespace {
+
+// Rejects what toml++ 3.3.0 mishandles: C0 control characters (but tab, newline, carriage
+// return), DEL, non-ASCII bytes outside comments, and arrays nested deeper than two levels.
+void Screen(std::string_view content, std::string_view path) {
+  if (content.size() > kMaxRunFileBytes) {
+    throw RunFileError(fmt::format("{}: run file is {} bytes: valid size <= {} bytes", path,
+                                   content.size(), kMaxRunFileBytes));
+  }
+  int line = 1, column = 0, depth = 0;
+  bool comment = false;
+  char quote = 0;
+  for (std::size_t i = 0; i < content.size(); ++i) {
+    const auto c = static_cast<unsigned char>(content[i]);
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+      comment = false;
+      if (quote == '"' || quote == '\'') quote = 0;  // single-line strings end (toml++ reports)
+      continue;
+    }
+    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+      throw RunFileError(fmt::format("{}:{}:{}: control character 0x{:02x} is not allowed", path, line, column, c));
+    }
+    if (c >= 0x80 && !comment) {
+      throw RunFileError(fmt::format("{}:{}:{}: non-ASCII byte 0x{:02x} outside a comment: valid only in comments",
+                                     path, line, column, c));
+    }
+    if (comment) continue;
+    if (quote != 0) {
+      if (c == '\\' && quote == '"') ++i, ++column;
+      else if (c == static_cast<unsigned char>(quote)) quote = 0;
+      continue;
+    }
+    if (c == '#') comment = true;
+    else if (c == '"' || c == '\'') quote = static_cast<char>(c);
+    else if (c == '[') {
+      // "[[" at the start of a line is an array-of-tables header, not nesting.
+      if (++depth > 2 && !(column == 1 || (column == 2 && content[i - 1] == '['))) {
+        throw RunFileError(fmt::format("{}:{}:{}: arrays nest at most two levels deep", path, line, column));
+      }
+    } else if (c == ']') {
+      depth = std::max(0, depth - 1);
+    }
+  }
+}
+
+std::string Where(std::string_view path, const toml::node& node) {
+  const toml::source_position p = node.source().begin;
+  return fmt::format("{}:{}:{}", path, p.line, p.column);
+}
+
+// Reads the keys of one table, checking each is known and of the right type.
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string prefix, std::string_view path, RunFile* run)
+      : table_(table), prefix_(std::move(prefix)), path_(path), run_(run) {}
+
+  const toml::node* Get(std::string_view key) {
+    known_.insert(std::string(key));
+    const toml::node* node = table_.get(key);
+    if (node) run_->locations[prefix_ + std::string(key)] = Where(path_, *node);
+    return node;
+  }
+  [[noreturn]] void Fail(const toml::node& node, std::string_view key, std::string_view what) const {
+    throw RunFileError(fmt::format("{}: key '{}{}' {}", Where(path_, node), prefix_, key, what));
+  }
+  [[noreturn]] void Missing(std::string_view key, std::string_view what) const {
+    throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}", Where(path_, table_), prefix_, key, what));
+  }
+
+  void String(std::string_view key, std::string* out, bool required = false) {
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Missing(key, "give a string");
+      return;
+    }
+    if (!n->is_string()) Fail(*n, key, fmt::format("must be a string, got {}", toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
+    *out = n->as_string()->get();
+  }
+  void Number(std::string_view key, double* out, bool required = false) {
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Missing(key, "give a number");
+      return;
+    }
+    if (!n->is_number()) Fail(*n, key, fmt::format("must be a number, got {}", toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
+    *out = n->value<double>().value();
+    if (!std::isfinite(*out)) Fail(*n, key, "must be finite");
+  }
+  void Integer(std::string_view key, int* out) {
+    const toml::node* n = Get(key);
+    if (!n) return;
+    if (!n->is_integer()) Fail(*n, key, "must be an integer");
+    const std::int64_t v = n->as_integer()->get();
+    if (v < 1 || v > 1000000) Fail(*n, key, fmt::format("= {} is invalid: valid range 1 to 1000000", v));
+    *out = static_cast<int>(v);
+  }
+  void Boolean(std::string_view key, bool* out) {
+    const toml::node* n = Get(key);
+    if (!n) return;
+    if (!n->is_boolean()) Fail(*n, key, "must be true or false");
+    *out = n->as_boolean()->get();
+  }
+  void Strings(std::string_view key, std::vector<std::string>* out) {
+    const toml::node* n = Get(key);
+    if (!n) return;
+    if (!n->is_array()) Fail(*n, key, "must be an array of strings");
+    for (const toml::node& e : *n->as_array()) {
+      if (!e.is_string()) Fail(e, key, "must be an array of strings");
+      out->push_back(e.as_string()->get());
+    }
+  }
+  void Numbers(std::string_view key, std::vector<double>* out) {
+    const toml::node* n = Get(key);
+    if (!n) return;
+    if (!n->is_array()) Fail(*n, key, "must be an array of numbers");
+    for (const toml::node& e : *n->as_array()) {
+      if (!e.is_number()) Fail(e, key, "must be an array of numbers");
+      out->push_back(e.value<double>().value());
+      if (!std::isfinite(out->back())) Fail(e, key, "must hold finite numbers");
+    }
+  }
+  // A table of name = number.
+  void Values(std::string_view key, NamedValues* out) {
+    const toml::node* n = Get(key);
+    if (!n) return;
+    if (!n->is_table()) Fail(*n, key, "must be a table of name = number");
+    for (const auto& [name, value] : *n->as_table()) {
+      if (!value.is_number()) Fail(value, fmt::format("{}.{}", key, name.str()), "must be a number");
+      out->emplace_back(std::string(name.str()), value.value<double>().value());
+      if (!std::isfinite(out->back().second)) Fail(value, fmt::format("{}.{}", key, name.str()), "must be finite");
+    }
+  }
+  const toml::table* Table(std::string_view key, bool required) {
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Missing(key, "give a table");
+      return nullptr;
+    }
+    if (!n->is_table()) Fail(*n, key, "must be a table");
+    return n->as_table();
+  }
+  // Unknown keys, with the nearest known one suggested.
+  void RejectUnknown() const {
+    for (const auto& [key, value] : table_) {
+      const std::string name(key.str());
+      if (known_.count(name)) continue;
+      std::string suggestion;
+      std::size_t best = 3;
+      for (const std::string& k : known_) {
+        const std::size_t d = Distance(name, k);
+        if (d < best) best = d, suggestion = k;
+      }
+      Fail(value, name, suggestion.empty() ? std::string("is unknown")
+                                           : fmt::format("is unknown: did you mean '{}{}'?", prefix_, suggestion));
+    }
+  }
+
+ private:
+  static std::size_t Distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+        diagonal = up;
+      }
+    }
+    return row[b.size()];
+  }
+
+  const toml::table& table_;
+  std::string prefix_;
+  std::string_view path_;
+  RunFile* run_;
+  std::set<std::string> known_;
+};
+
+}  // namespace
+
+RunFile ParseRunFile(std::string_view content, std::string_view path) {
+  Screen(content, path);
+  toml::table root;
+  try {
+    root = toml::parse(content, path);
+  } catch (const toml::parse_error& e) {
+    const auto& p = e.source().begin;
+    throw RunFileError(fmt::format("{}:{}:{}: {}", path, p.line, p.column, e.description()));
+  }
+  RunFile run;
+  run.path = std::string(path);
+  TableReader top(root, "", path, &run);
+  top.String("output", &run.output, true);
+
+  const toml::table* start = top.Table("start", true);
+  TableReader s(*start, "start.", path, &run);
+  s.String("preset", &run.preset);
+  s.String("signature", &run.signature);
+  s.Values("set", &run.set);
+  s.Values("guess", &run.guess);
+  if (const toml::table* restart = s.Table("restart", false)) {
+    TableReader r(*restart, "start.restart.", path, &run);
+    r.String("run", &run.restart_run, true);
+    r.String("label", &run.restart_label, true);
+    r.RejectUnknown();
+  }
+  if (run.preset.empty() == run.signature.empty() && run.restart_run.empty()) {
+    throw RunFileError(fmt::format("{}: key 'start.preset' or 'start.signature': give exactly one of them",
+                                   Where(path, *start)));
+  }
+  s.RejectUnknown();
+
+  if (const toml::table* unknowns = top.Table("unknowns", false)) {
+    TableReader u(*unknowns, "unknowns.", path, &run);
+    u.Strings("free", &run.free);
+    u.Strings("fix", &run.fix);
+    u.Boolean("tie_u_r", &run.tie_u_r);
+    u.RejectUnknown();
+  }
+
+  const toml::table* continuation = top.Table("continuation", true);
+  TableReader c(*continuation, "continuation.", path, &run);
+  c.String("parameter", &run.parameter, true);
+  std::string direction;
+  c.String("direction", &direction, true);
+  if (direction != "up" && direction != "down") {
+    c.Fail(*c.Get("direction"), "direction", fmt::format("= '{}' is invalid: valid \"up\" or \"down\"", direction));
+  }
+  run.direction = direction == "up" ? 1 : -1;
+  std::vector<double> range;
+  c.Numbers("range", &range);
+  if (!c.Get("range")) c.Missing("range", "give [min, max]");
+  if (range.size() != 2 || !(range[0] < range[1])) {
+    c.Fail(*c.Get("range"), "range", "must be [min, max] with min < max");
+  }
+  run.range_min = range[0];
+  run.range_max = range[1];
+  c.Number("ds", &run.ds);
+  c.Number("ds_min", &run.ds_min);
+  c.Number("ds_max", &run.ds_max);
+  c.Integer("max_points", &run.max_points);
+  c.String("shooting", &run.shooting);
+  c.String("linear_solver", &run.linear_solver);
+  c.Boolean("detect_folds", &run.detect_folds);
+  c.Boolean("detect_branch_points", &run.detect_branch_points);
+  c.Boolean("continue_past_type_changes", &run.continue_past_type_changes);
+  std::vector<double> user_values;
+  c.Numbers("user_values", &user_values);
+  for (double v : user_values) run.user_values.emplace_back(run.parameter, v);
+  if (const toml::table* others = c.Table("user_values_of", false)) {
+    for (const auto& [name, value] : *others) {
+      if (!value.is_array()) c.Fail(value, fmt::format("user_values_of.{}", name.str()), "must be an array of numbers");
+      for (const toml::node& e : *value.as_array()) {
+        if (!e.is_number()) c.Fail(e, fmt::format("user_values_of.{}", name.str()), "must be an array of numbers");
+        run.user_values.emplace_back(std::string(name.str()), e.value<double>().value());
+      }
+    }
+  }
+  auto check_positive = [&](std::string_view key, double v) {
+    if (!(v > 0.0)) c.Fail(*c.Get(key), key, fmt::format("= {} is invalid: valid range > 0", v));
+  };
+  if (c.Get("ds")) check_positive("ds", run.ds);
+  if (c.Get("ds_min")) check_positive("ds_min", run.ds_min);
+  if (c.Get("ds_max")) check_positive("ds_max", run.ds_max);
+  if (!(run.ds_min <= run.ds && run.ds <= run.ds_max)) {
+    throw RunFileError(fmt::format("{}: keys 'continuation.ds_min' <= 'continuation.ds' <= 'continuation.ds_max' "
+                                   "must hold: got {} <= {} <= {}", Where(path, *continuation), run.ds_min, run.ds, run.ds_max));
+  }
+  auto check_member = [&](std::string_view key, const std::string& value, std::vector<std::string> allowed) {
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
+      c.Fail(*c.Get(key), key, fmt::format("= '{}' is invalid: valid {}", value, fmt::join(allowed, ", ")));
+    }
+  };
+  check_member("shooting", run.shooting, {"auto", "single", "multiple"});
+  check_member("linear_solver", run.linear_solver, {"klu", "umfpack", "dense"});
+  c.RejectUnknown();
+  top.RejectUnknown();
+  return run;
+}
+
+RunFile ReadRunFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RunFileError(fmt::format("{}: cannot read the run file", path.string()));
+  std::string content;
+  char buffer[4096];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    content.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (content.size() > kMaxRunFileBytes) break;
+  }
+  return ParseRunFile(content, path.string());
+}
+
+}  // namespace stickslip
