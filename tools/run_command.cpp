@@ -55,7 +55,7 @@ std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path&
 std::string Report(const RunFile& run, const OrbitBranch& b) {
   std::string special;
   for (const SpecialPoint& s : b.branch.special_points) {
-    if (s.type == "EP") continue;
+    if (s.test_function == "start" || s.test_function == ToString(b.branch.end)) continue;
     special += fmt::format(" {}({}={:.10g})", s.type, run.parameter, s.lambda);
   }
   return fmt::format("{}: {} points; {}: {};{}", run.output, b.branch.points.size(), ToString(b.branch.end),

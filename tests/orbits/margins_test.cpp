@@ -66,7 +66,9 @@ void ExpectStickConstraintMinima(const Orbit& o, int stick) {
     EXPECT_LE(mg.value, g.value + 1e-12);
     EXPECT_NEAR(mg.t - times[stick], g.t, 1e-4);
   }
-  if (g1.t < d) EXPECT_NEAR(mg1.value, g1.value, 1e-8);
+  if (g1.t < d) {
+    EXPECT_NEAR(mg1.value, g1.value, 1e-8);
+  }
 }
 
 TEST(StickConstraintMargins, AreTheTrueMinimaOverTheStick) {

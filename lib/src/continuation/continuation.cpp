@@ -197,10 +197,14 @@ struct Continuation::State {
     return true;
   }
 
-  // The point at arclength s from the last accepted point along its tangent.
-  std::optional<Sample> Corrected(double s) {
+  // The point at arclength s from the last accepted point along its tangent. Locating an event
+  // may need points near a singular one (a branch point), where Newton converges slowly: it
+  // is allowed more iterations than a step, which could shrink instead.
+  std::optional<Sample> Corrected(double s, bool locating = false) {
     const BorderedSystem bordered(problem, tangent, u, s);
-    NewtonResult r = SolveNewton(bordered, u + s * tangent, options.corrector);
+    NewtonOptions newton = options.corrector;
+    if (locating) newton.max_iterations = std::max(newton.max_iterations, 50);
+    NewtonResult r = SolveNewton(bordered, u + s * tangent, newton);
     if (!r.summary.Converged()) {
       last_failure = r.summary.BriefReport();
       return std::nullopt;
@@ -323,17 +327,23 @@ bool Continuation::Step() {
     bool sign_only = false;
     bool terminal = false;  // ends the branch when crossing out of admissibility
     bool bound = false;     // a parameter bound
+    double noise = 0.0;     // a sign change between values both below this is noise
+    int priority = 0;       // order of events located at the same point
   };
   std::vector<Event> events;
   const int lambda_index = o.parameter_index;
   if (o.detect_folds) {
-    events.push_back({"LP", "tangent:lambda", [lambda_index](const State::Sample& s) { return s.tangent(lambda_index); }});
+    // Where the branch runs at constant lambda, the fold function is rounding noise around zero.
+    events.push_back({"LP", "tangent:lambda", [lambda_index](const State::Sample& s) { return s.tangent(lambda_index); },
+                      false, false, false, 1e-8, 1});
   }
   if (o.detect_branch_points) {
-    events.push_back({"BP", "det-bordered", [](const State::Sample& s) { return double(s.det_sign); }, true});
+    events.push_back({"BP", "det-bordered", [](const State::Sample& s) { return double(s.det_sign); }, true, false,
+                      false, 0.0, 2});
   }
   for (const UserValue& uz : o.user_values) {
-    events.push_back({"UZ", uz.name, [uz](const State::Sample& s) { return s.u(uz.index) - uz.value; }});
+    events.push_back({"UZ", uz.name, [uz](const State::Sample& s) { return s.u(uz.index) - uz.value; }, false, false,
+                      false, 0.0, 3});
   }
   for (int k = 0; k < static_cast<int>(branch_.test_functions.size()); ++k) {
     const TestFunctionInfo& info = branch_.test_functions[k];
@@ -341,9 +351,9 @@ bool Continuation::Step() {
                       info.terminal && !o.continue_past_terminal});
   }
   events.push_back({"EP", "lambda_max", [&o, lambda_index](const State::Sample& s) { return o.lambda_max - s.u(lambda_index); },
-                    false, false, true});
+                    false, false, true, 0.0, 4});
   events.push_back({"EP", "lambda_min", [&o, lambda_index](const State::Sample& s) { return s.u(lambda_index) - o.lambda_min; },
-                    false, false, true});
+                    false, false, true, 0.0, 4});
 
   struct Located {
     double s;
@@ -359,8 +369,9 @@ bool Continuation::Step() {
     const double gb = e.g(b);
     if (!std::isfinite(ga) || !std::isfinite(gb) || ga * gb > 0.0 || (ga == 0.0 && gb == 0.0)) continue;
     if (ga == 0.0) continue;  // counted at the previous step
+    if (std::max(std::abs(ga), std::abs(gb)) < e.noise) continue;
     auto g_at = [&](double s) {
-      std::optional<State::Sample> p = st.Corrected(s);
+      std::optional<State::Sample> p = st.Corrected(s, /*locating=*/true);
       if (!p) throw CorrectorFailure{};
       return e.g(*p);
     };
@@ -391,31 +402,43 @@ bool Continuation::Step() {
     }
     if (gb == 0.0) lo = hi = ds;
     const double s_star = ok ? (e.sign_only ? hi : 0.5 * (lo + hi)) : ds * ga / (ga - gb);
-    std::optional<State::Sample> p = ok ? (s_star == ds ? std::optional<State::Sample>(b) : st.Corrected(s_star))
-                                        : std::nullopt;
+    std::optional<State::Sample> p =
+        ok ? (s_star == ds ? std::optional<State::Sample>(b) : st.Corrected(s_star, /*locating=*/true)) : std::nullopt;
     if (!p) {
       ok = false;
       p = b;
     }
     located.push_back({s_star, &e, *p, e.g(*p), ok, hi - lo});
   }
+  // In arclength order; events within a few location tolerances of each other are one point
+  // (a fold where a stop degenerates, say) and come in a fixed order, whatever the step size.
   std::sort(located.begin(), located.end(), [](const Located& x, const Located& y) { return x.s < y.s; });
-
-  for (const Located& l : located) {
-    const Event& e = *l.event;
-    push(l.sample, 0.0, e.type);
-    const int index = static_cast<int>(branch_.points.size()) - 1;
-    branch_.special_points.push_back({e.type, e.name, index, st.Lambda(l.sample.u), l.sample.u, l.sample.tests,
-                                      l.value, l.located, l.bracket});
-    if (e.bound) {
+  const double same_point = 10.0 * o.locate_tolerance;
+  for (std::size_t first = 0; first < located.size();) {
+    std::size_t last = first + 1;
+    while (last < located.size() && located[last].s - located[last - 1].s <= same_point) ++last;
+    std::stable_sort(located.begin() + static_cast<long>(first), located.begin() + static_cast<long>(last),
+                     [](const Located& x, const Located& y) { return x.event->priority < y.event->priority; });
+    std::optional<std::pair<BranchEnd, std::string>> ending;
+    for (std::size_t k = first; k < last; ++k) {
+      const Located& l = located[k];
+      const Event& e = *l.event;
+      push(l.sample, 0.0, e.type);
+      const int index = static_cast<int>(branch_.points.size()) - 1;
+      branch_.special_points.push_back({e.type, e.name, index, st.Lambda(l.sample.u), l.sample.u, l.sample.tests,
+                                        l.value, l.located, l.bracket});
       st.u = l.sample.u;
-      return end(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, st.Lambda(l.sample.u)));
+      if (ending) continue;
+      if (e.bound) {
+        ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, st.Lambda(l.sample.u)));
+      } else if (e.terminal && e.g(a) > 0.0) {
+        // A terminal function ends the branch only when it leaves the admissible (positive) side.
+        ending.emplace(BranchEnd::kTerminalEvent,
+                       fmt::format("{} ({}) left its admissible side", e.name, e.type));
+      }
     }
-    // A terminal function ends the branch only when it leaves the admissible (positive) side.
-    if (e.terminal && e.g(a) > 0.0) {
-      st.u = l.sample.u;
-      return end(BranchEnd::kTerminalEvent, fmt::format("{} ({}) changed sign: the orbit type changes", e.name, e.type));
-    }
+    if (ending) return end(ending->first, ending->second);
+    first = last;
   }
 
   push(b, ds, "");

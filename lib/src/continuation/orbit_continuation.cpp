@@ -15,6 +15,7 @@ std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode) {
     case MarginKind::kSlipVelocity:
     case MarginKind::kStopSlope: return "NS";
     case MarginKind::kStopForce: return "SK";
+    case MarginKind::kFrictionLevel: return "EP";
     case MarginKind::kStickConstraint:
     case MarginKind::kExitSlope: break;
   }

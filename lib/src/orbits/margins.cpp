@@ -18,9 +18,10 @@ const char* ToString(MarginKind kind) {
     case MarginKind::kStopSlope: return "stop-slope";
     case MarginKind::kStopForce: return "stop-force";
     case MarginKind::kStickConstraint: return "stick-constraint";
-    case MarginKind::kExitSlope: break;
+    case MarginKind::kExitSlope: return "exit-slope";
+    case MarginKind::kFrictionLevel: break;
   }
-  return "exit-slope";
+  return "friction-level";
 }
 
 namespace {
@@ -107,6 +108,7 @@ std::vector<Margin> AdmissibilityMargins(const Orbit& orbit) {
     const double slope = force.Derivative()(d);
     add("exit-slope", MarginKind::kExitSlope, i, exit_negative ? slope : -slope, times[i + 1]);
   }
+  margins.push_back({"sliding-friction", MarginKind::kFrictionLevel, 0, p.u_s, 0.0});
   return margins;
 }
 

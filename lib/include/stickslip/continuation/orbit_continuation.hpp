@@ -8,6 +8,7 @@
 //   NS  x2' touching zero inside a slip (velocity:i), or at its end (stop-slope:i): a new stop
 //   SK  the force condition at a stop crossing its threshold (reversal:i, stick-entry:i,
 //       abnormal-stop:i)
+//   EP  the sliding friction level u_s reaching zero: the end of the physical family
 #pragma once
 
 #include <functional>

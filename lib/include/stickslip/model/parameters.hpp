@@ -62,4 +62,9 @@ struct InvalidInput {
 // (eq. 56) where the forced amplitude Q of eq. (7) is singular. Returns the first violation.
 std::optional<InvalidInput> Validate(const Parameters& p);
 
+// Only what the closed-form flows need: finite values, chi in (0,1), eta > 0, omega > 0 away
+// from omega1, omega2. The friction levels enter the equations linearly and stay meaningful
+// to the solvers beyond their physical range, where the admissibility margins take over.
+std::optional<InvalidInput> ValidateClosedForm(const Parameters& p);
+
 }  // namespace stickslip

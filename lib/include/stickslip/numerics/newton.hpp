@@ -33,7 +33,8 @@ struct NewtonOptions {
   int max_iterations = 30;
   double residual_tolerance = 1e-12;  // converged when max|F| <= this
   double step_tolerance = 1e-13;      // ... or when the step is this small relative to |u| and
-  double stagnation_residual = 1e-8;  //     max|F| is below this (rounding floor reached)
+  double stagnation_residual = 1e-9;  //     max|F| is below this, or no step lowers a max|F|
+                                      //     below this (the rounding floor near a singularity)
   double min_damping = 1.0 / 1024.0;  // smallest step fraction of the backtracking line search
   double divergence_factor = 1e8;     // |F| grown by this factor over the start means divergence
   LinearSolverType linear_solver = LinearSolverType::kDenseLu;

@@ -15,6 +15,8 @@
 //   G:i, G1:i        stick: the minimum of G and G1 over the stick (eq. 35, 39, 49, 51); for
 //                    the constraint that ends the stick, its start and interior minima
 //   exit-slope:i     stick: the slope with which s reaches +-eta u_r (it must leave the band)
+// and, for the orbit as a whole,
+//   sliding-friction u_s > 0 (eq. 4): where a branch reaches u_s = 0 the family ends
 // An interior extremum can only be born at a segment end, where the matching slope margin passes
 // through zero; so a change of orbit type is always a sign change of some margin.
 #pragma once
@@ -33,13 +35,14 @@ enum class MarginKind {
   kStopForce,        // the force condition at a stop
   kStickConstraint,  // G or G1 grazing zero inside a stick
   kExitSlope,        // transversality at a stick exit
+  kFrictionLevel,    // the sliding friction level itself
 };
 const char* ToString(MarginKind kind);
 
 struct Margin {
   std::string name;  // "G:3", ...
   MarginKind kind = MarginKind::kDuration;
-  int segment = 0;     // 0-based listed segment
+  int segment = 0;     // 0-based listed segment (0 for kFrictionLevel)
   double value = 0.0;  // > 0 admissible
   double t = 0.0;      // where it is attained, time from the orbit's origin
 };

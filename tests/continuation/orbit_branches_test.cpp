@@ -1,0 +1,157 @@
+// Every run file of continuation-scripts/: the branch passes through the paper's orbit, every
+// special point is verified independently (the margin that changed sign is zero there, and the
+// exact simulator started from the located orbit shows the degeneracy), and the located
+// parameter values do not depend on the step size.
+#include <filesystem>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/io/run.hpp"
+#include "stickslip/model/events.hpp"
+#include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/paper_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> RunFiles() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(STICKSLIP_SOURCE_DIR) / "continuation-scripts")) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+OrbitBranch Continue(const std::string& file, double ds_scale = 1.0) {
+  const RunFile run = ReadRunFile(file);
+  OrbitContinuationSetup setup = MakeSetup(run, fs::path(STICKSLIP_SOURCE_DIR) / "results");
+  setup.options.step.ds *= ds_scale;
+  setup.options.step.ds_max *= ds_scale;
+  setup.options.max_points = static_cast<int>(setup.options.max_points / ds_scale);
+  return ContinueOrbit(setup);
+}
+
+class PaperBranch : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PaperBranch, StartsOnThePaperOrbitWhenTheRunKeepsThePresetUnknowns) {
+  const RunFile run = ReadRunFile(GetParam());
+  if (!run.free.empty() || !run.fix.empty()) GTEST_SKIP() << "the run solves for other unknowns";
+  const PaperPreset& preset = *FindPaperPreset(run.preset);
+  const Orbit guess = preset.Guess();
+  const OrbitSolution solved = SolveOrbit(guess, ResolveUnknowns(guess.signature, preset.unknowns).indices,
+                                          preset.unknowns.tie_static_friction);
+  const OrbitBranch b = Continue(GetParam());
+  const Eigen::VectorXd a = orbit_variables::Pack(b.orbits.front());
+  EXPECT_LT((a - orbit_variables::Pack(solved.orbit)).lpNorm<Eigen::Infinity>(), 1e-9);
+}
+
+// The degeneracy a margin's zero means, measured on a simulation of the located orbit.
+void ExpectSimulatorShows(const Orbit& o, const Margin& m) {
+  const Parameters& p = o.parameters;
+  SimulationOptions options;
+  options.duration = o.Period() * (1 + 1e-9);
+  const SimulationResult r = SimulateExact(p, o.InitialState(), o.phi, options);
+  const std::vector<double> times = o.SegmentTimes();
+  const double t_end = times[m.segment + 1];
+  // The simulated event nearest to the end of the margin's segment.
+  const Event* nearest = nullptr;
+  for (const Event& e : r.events) {
+    if (!nearest || std::abs(e.t - t_end) < std::abs(nearest->t - t_end)) nearest = &e;
+  }
+  ASSERT_NE(nearest, nullptr);
+  const double phase = p.omega * nearest->t + o.phi;
+  const double threshold = p.eta * p.u_r;
+  switch (m.kind) {
+    case MarginKind::kStopForce: {  // the force at the stop is on the threshold
+      ASSERT_NEAR(nearest->t, t_end, 1e-6);
+      EXPECT_NEAR(std::abs(StickForce(nearest->state, phase, p)), threshold, 1e-7) << m.name;
+      break;
+    }
+    case MarginKind::kStopSlope: {  // x2'' = 0 at the stop: the new stop is born there
+      ASSERT_NEAR(nearest->t, t_end, 1e-4);
+      EXPECT_NEAR(Acceleration(o.signature.segments()[m.segment], nearest->state, phase, p)(1), 0.0, 1e-6) << m.name;
+      break;
+    }
+    case MarginKind::kExitSlope: {  // s reaches the threshold tangentially
+      const State x = StateAt(r, t_end);
+      const double ph = p.omega * t_end + o.phi;
+      EXPECT_NEAR(std::abs(StickForce(x, ph, p)), threshold, 1e-7) << m.name;
+      EXPECT_NEAR(-p.chi * p.eta * x(2) + p.omega * std::sin(ph), 0.0, 1e-6) << m.name;
+      break;
+    }
+    case MarginKind::kStickConstraint: {  // G or G1 grazes zero inside the stick
+      const State x = StateAt(r, m.t);
+      const double ph = p.omega * m.t + o.phi;
+      EXPECT_NEAR(threshold - std::abs(StickForce(x, ph, p)), 0.0, 1e-8) << m.name;
+      EXPECT_NEAR(-p.chi * p.eta * x(2) + p.omega * std::sin(ph), 0.0, 1e-4) << m.name;  // an extremum
+      break;
+    }
+    case MarginKind::kSlipVelocity: {  // x2' touches zero inside the slip
+      const State x = StateAt(r, m.t);
+      EXPECT_NEAR(x(3), 0.0, 1e-8) << m.name;
+      break;
+    }
+    case MarginKind::kDuration:
+      EXPECT_NEAR(o.durations[m.segment], 0.0, 1e-9) << m.name;
+      break;
+    case MarginKind::kFrictionLevel:
+      EXPECT_NEAR(p.u_s, 0.0, 1e-10) << m.name;
+      break;
+  }
+}
+
+TEST_P(PaperBranch, EverySpecialPointIsVerifiedIndependently) {
+  const OrbitBranch b = Continue(GetParam());
+  for (const SpecialPoint& s : b.branch.special_points) {
+    const Orbit& o = b.orbits[s.point];
+    EXPECT_TRUE(s.located) << s.type << " " << s.test_function;
+    if (s.type == "EP" || s.type == "UZ") continue;
+    if (s.type == "LP") {
+      EXPECT_LT(std::abs(s.test_value), 1e-9);
+      continue;
+    }
+    if (s.type == "BP") continue;
+    // An orbit-type change: the named margin is zero at the located orbit.
+    const std::string name = s.test_function.substr(std::string("margin:").size());
+    const std::vector<Margin> margins = AdmissibilityMargins(o);
+    const auto m = std::find_if(margins.begin(), margins.end(), [&](const Margin& x) { return x.name == name; });
+    ASSERT_NE(m, margins.end()) << name;
+    EXPECT_LT(std::abs(m->value), 1e-9) << GetParam() << " " << s.type << " " << name;
+    ExpectSimulatorShows(o, *m);
+  }
+}
+
+TEST_P(PaperBranch, LocatesSpecialPointsIndependentlyOfTheStepSize) {
+  const OrbitBranch coarse = Continue(GetParam(), 1.0);
+  const OrbitBranch fine = Continue(GetParam(), 0.37);
+  auto located = [](const OrbitBranch& b) {
+    std::vector<const SpecialPoint*> out;
+    for (const SpecialPoint& s : b.branch.special_points) {
+      if (s.type != "EP") out.push_back(&s);
+    }
+    return out;
+  };
+  const auto a = located(coarse);
+  const auto c = located(fine);
+  ASSERT_EQ(a.size(), c.size()) << GetParam();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i]->type, c[i]->type);
+    EXPECT_NEAR(a[i]->lambda, c[i]->lambda, 1e-9) << GetParam() << " " << a[i]->type;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(RunFiles, PaperBranch, ::testing::ValuesIn(RunFiles()),
+                         [](const ::testing::TestParamInfo<std::string>& file) {
+                           std::string name = fs::path(file.param).stem().string();
+                           std::string out;
+                           for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           return out;
+                         });
+
+}  // namespace
+}  // namespace stickslip
