@@ -7,6 +7,7 @@ STICKSLIP_PACKAGES=(
   cmake ninja-build g++
   libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev
   libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev
 )
 
 stickslip_install_packages() {

@@ -134,7 +134,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
     }
   }
   const FreeVariables free = ResolveUnknowns(orbit.signature, unknowns);
-  if (!free.error.empty()) throw fail("unknowns", "make a system that is not square: " + free.error);
+  if (!free.error.empty()) throw fail("unknowns", "is invalid: " + free.error);
 
   OrbitContinuationSetup setup{orbit, unknowns, run.parameter, ShootingChoice::kAuto, LinearSolverType::kKlu, {}};
   const std::optional<int> parameter = ov::IndexOf(n, run.parameter);

@@ -46,4 +46,14 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
 State IntegrateMode(Mode mode, const State& start, double phase, double s, const Parameters& p,
                     const OdeintOptions& odeint = {});
 
+// The flow of one mode and its first derivatives by integrating the variational equations with
+// Boost.Odeint (state, 4x4 transition matrix, sensitivities to the phase and the five
+// parameters: 44 equations) — the reference for FlowWithDerivatives, and the Odeint path of the
+// continuation benchmark. Only the FlowDerivatives type is shared with flows.hpp: the vector
+// field and its derivatives are written out here. d_elapsed is the vector field at the end
+// point; the u_r column of d_parameters is zero (u_r enters no mode's equations).
+// Throws std::invalid_argument if s < 0 or s is not finite, or if `odeint` is invalid.
+FlowDerivatives IntegrateModeWithDerivatives(Mode mode, const State& start, double phase, double s,
+                                             const Parameters& p, const OdeintOptions& odeint = {});
+
 }  // namespace stickslip

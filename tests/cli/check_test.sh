@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# stickslip check passes on the stored results and fails, naming the value, on a perturbed copy.
+set -euo pipefail
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+root=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+run="$root/continuation-scripts/paper-5.1-omega-up.toml"
+cp -r "$root/results" "$work/results"
+"$bin" check --results "$work/results" "$run"
+
+# Move the located fold by a relative 1e-6 (far above the 1e-8 tolerance).
+file="$work/results/paper-5.1-omega-up/special-points.csv"
+/usr/bin/python3 - "$file" <<'PY'
+import sys
+path = sys.argv[1]
+lines = open(path).read().splitlines()
+header = lines[0].split(",")
+omega = header.index("omega")
+for i, line in enumerate(lines[1:], 1):
+    fields = line.split(",")
+    if fields[1].startswith("LP"):
+        fields[omega] = repr(float(fields[omega]) * (1 + 1e-6))
+        lines[i] = ",".join(fields)
+        break
+else:
+    sys.exit("no LP in " + path)
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+if "$bin" check --results "$work/results" "$run" > "$work/out"; then
+  echo "FAIL: check passed on a perturbed file"
+  exit 1
+fi
+cat "$work/out"
+grep -q "special-points.csv *LP[0-9]* *omega" "$work/out"
+echo "check fails on the perturbed fold, as it must"

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Run-file errors name the file, the line and the key and exit with code 2; a run that fails
+# leaves results/ untouched.
+set -u
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+mkdir -p "$work/results/keep"
+echo "stored" > "$work/results/keep/branch.csv"
+
+good='output = "t"
+[start]
+preset = "paper-5.1"
+[continuation]
+parameter = "omega"
+direction = "up"
+range = [0.3, 0.9]'
+
+expect() {  # expect <code> <pattern> <run file text>
+  local code=$1 pattern=$2
+  printf '%s\n' "$3" > "$work/r.toml"
+  "$bin" run --results "$work/results" "$work/r.toml" > /dev/null 2> "$work/err"
+  local got=$?
+  if [ "$got" -ne "$code" ] || ! grep -q -- "$pattern" "$work/err" || [ -e "$work/results/t" ] ||
+     [ "$(cat "$work/results/keep/branch.csv")" != "stored" ]; then
+    echo "FAIL (want $code, /$pattern/): exit $got: $(cat "$work/err")"
+    failures=$((failures + 1))
+  else
+    echo "ok   $(cat "$work/err")"
+  fi
+}
+
+expect 2 "r.toml:4:9: key 'start.prest' is unknown: did you mean 'start.preset'" "${good/preset = \"paper-5.1\"/preset = \"paper-5.1\"
+prest = 1}"
+expect 2 "r.toml:6:13: key 'continuation.direction' must be a string" "${good/direction = \"up\"/direction = 1}"
+expect 2 "key 'start.preset' or 'start.signature': give exactly one" "${good/preset = \"paper-5.1\"/}"
+expect 2 "key 'start' is missing" 'output = "t"
+[continuation]
+parameter = "omega"
+direction = "up"
+range = [0.3, 0.9]'
+expect 2 "key 'continuation.range' = \[0.7, 0.9\] excludes the start, omega = 0.57" "${good/0.3, 0.9/0.7, 0.9}"
+expect 2 "key 'output' is missing" "${good/output = \"t\"/}"
+expect 2 "key 'start.preset' = 'paper-9' is unknown" "${good/paper-5.1/paper-9}"
+expect 2 "key 'unknowns' is invalid: the system is not square" "$good
+[unknowns]
+free = [\"u_r\"]"
+expect 2 "non-ASCII byte" "${good/up/üp}"
+expect 2 "control character" "$(printf '%s\001' "$good")"
+expect 2 "nest at most two levels" "$good
+x = [[[1]]]"
+expect 2 "r.toml:1:" 'output = "t'
+# A start that does not converge fails the run (exit 3) and writes nothing.
+expect 3 "does not converge" "$good
+[start.guess]
+x10 = 40.0
+d1 = 0.01"
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
