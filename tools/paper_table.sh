@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Writes results/paper-table.md: every value the paper prints for its five examples beside
 # stickslip's solution, for the paper's data held and for the paper's own choice of fixed
-# values. Usage: tools/paper_table.sh [path to the stickslip program]
+# values; and copies it into README.md between the paper-table markers.
+# Usage: tools/paper_table.sh [path to the stickslip program]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$root/build/release/tools/stickslip}
@@ -21,4 +22,5 @@ trap 'rm -f "$tmp"' EXIT
 } > "$tmp"
 mv "$tmp" "$out"
 trap - EXIT
-echo "wrote $out"
+/usr/bin/python3 "$root/tools/splice_readme.py" paper-table "$out"
+echo "wrote $out and the README's paper table"

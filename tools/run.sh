@@ -9,3 +9,4 @@ bin="$STICKSLIP_ROOT/build/release/tools/stickslip"
 cd "$STICKSLIP_ROOT"
 "$bin" run --results results continuation-scripts/*.toml
 tools/paper_table.sh "$bin"
+/usr/bin/python3 tools/summarize_runs.py results

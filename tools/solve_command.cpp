@@ -56,7 +56,7 @@ std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margi
                      ToString(s.shooting));
   for (std::size_t i = 0; i < margins.size(); ++i) {
     const double value = margins[i].value;
-    out += fmt::format("{}\"{}\": {}", i ? ", " : "", margins[i].name,
+    out += fmt::format("{}\"{}\": {}", i ? ", " : "", margins[i].Name(),
                        std::isfinite(value) ? fmt::format("{}", value) : std::string("null"));
   }
   auto sequence = [](const std::vector<Mode>& modes) {
@@ -188,10 +188,10 @@ int RunSolve(const SolveArgs& args) {
   }
   fmt::print("margins (positive = admissible; the smallest is the distance to a change of type)\n");
   for (const Margin& m : margins) {
-    fmt::print("  {:<16} {:>14.6g}  at t = {:.6g}\n", m.name, m.value, m.t);
+    fmt::print("  {:<16} {:>14.6g}  at t = {:.6g}\n", m.Name(), m.value, m.t);
   }
   const Margin& smallest = SmallestMargin(margins);
-  fmt::print("smallest   {} = {:.6g}: {}\n", smallest.name, smallest.value,
+  fmt::print("smallest   {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
              smallest.value > 0 ? "admissible" : "NOT a motion of the system");
   fmt::print("verification {}\n{}", verification.Passed() ? "passed" : "FAILED", verification.Report());
   return kExitOk;

@@ -69,38 +69,38 @@ void ExpectSimulatorShows(const Orbit& o, const Margin& m) {
   switch (m.kind) {
     case MarginKind::kStopForce: {  // the force at the stop is on the threshold
       ASSERT_NEAR(nearest->t, t_end, 1e-6);
-      EXPECT_NEAR(std::abs(StickForce(nearest->state, phase, p)), threshold, 1e-7) << m.name;
+      EXPECT_NEAR(std::abs(StickForce(nearest->state, phase, p)), threshold, 1e-7) << m.Name();
       break;
     }
     case MarginKind::kStopSlope: {  // x2'' = 0 at the stop: the new stop is born there
       ASSERT_NEAR(nearest->t, t_end, 1e-4);
-      EXPECT_NEAR(Acceleration(o.signature.segments()[m.segment], nearest->state, phase, p)(1), 0.0, 1e-6) << m.name;
+      EXPECT_NEAR(Acceleration(o.signature.segments()[m.segment], nearest->state, phase, p)(1), 0.0, 1e-6) << m.Name();
       break;
     }
     case MarginKind::kExitSlope: {  // s reaches the threshold tangentially
       const State x = StateAt(r, t_end);
       const double ph = p.omega * t_end + o.phi;
-      EXPECT_NEAR(std::abs(StickForce(x, ph, p)), threshold, 1e-7) << m.name;
-      EXPECT_NEAR(-p.chi * p.eta * x(2) + p.omega * std::sin(ph), 0.0, 1e-6) << m.name;
+      EXPECT_NEAR(std::abs(StickForce(x, ph, p)), threshold, 1e-7) << m.Name();
+      EXPECT_NEAR(-p.chi * p.eta * x(2) + p.omega * std::sin(ph), 0.0, 1e-6) << m.Name();
       break;
     }
     case MarginKind::kStickConstraint: {  // G or G1 grazes zero inside the stick
       const State x = StateAt(r, m.t);
       const double ph = p.omega * m.t + o.phi;
-      EXPECT_NEAR(threshold - std::abs(StickForce(x, ph, p)), 0.0, 1e-8) << m.name;
-      EXPECT_NEAR(-p.chi * p.eta * x(2) + p.omega * std::sin(ph), 0.0, 1e-4) << m.name;  // an extremum
+      EXPECT_NEAR(threshold - std::abs(StickForce(x, ph, p)), 0.0, 1e-8) << m.Name();
+      EXPECT_NEAR(-p.chi * p.eta * x(2) + p.omega * std::sin(ph), 0.0, 1e-4) << m.Name();  // an extremum
       break;
     }
     case MarginKind::kSlipVelocity: {  // x2' touches zero inside the slip
       const State x = StateAt(r, m.t);
-      EXPECT_NEAR(x(3), 0.0, 1e-8) << m.name;
+      EXPECT_NEAR(x(3), 0.0, 1e-8) << m.Name();
       break;
     }
     case MarginKind::kDuration:
-      EXPECT_NEAR(o.durations[m.segment], 0.0, 1e-9) << m.name;
+      EXPECT_NEAR(o.durations[m.segment], 0.0, 1e-9) << m.Name();
       break;
     case MarginKind::kFrictionLevel:
-      EXPECT_NEAR(p.u_s, 0.0, 1e-10) << m.name;
+      EXPECT_NEAR(p.u_s, 0.0, 1e-10) << m.Name();
       break;
   }
 }
@@ -119,7 +119,7 @@ TEST_P(PaperBranch, EverySpecialPointIsVerifiedIndependently) {
     // An orbit-type change: the named margin is zero at the located orbit.
     const std::string name = s.test_function.substr(std::string("margin:").size());
     const std::vector<Margin> margins = AdmissibilityMargins(o);
-    const auto m = std::find_if(margins.begin(), margins.end(), [&](const Margin& x) { return x.name == name; });
+    const auto m = std::find_if(margins.begin(), margins.end(), [&](const Margin& x) { return x.Name() == name; });
     ASSERT_NE(m, margins.end()) << name;
     EXPECT_LT(std::abs(m->value), 1e-9) << GetParam() << " " << s.type << " " << name;
     ExpectSimulatorShows(o, *m);

@@ -15,7 +15,7 @@ namespace stickslip {
 namespace {
 
 const Margin& Find(const std::vector<Margin>& margins, const std::string& name) {
-  return *std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.name == name; });
+  return *std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == name; });
 }
 
 struct Sampled {
@@ -107,7 +107,7 @@ TEST(Margins, SmallestIsTheDistanceToTheNearestChangeOfType) {
   // smallest margin is the force at the stop, barely above eta u_r.
   const Orbit o = SolvedPreset("paper-4.1");
   const Margin& smallest = SmallestMargin(AdmissibilityMargins(o));
-  EXPECT_EQ(smallest.name, "reversal:1");
+  EXPECT_EQ(smallest.Name(), "reversal:1");
   EXPECT_GT(smallest.value, 0.0);
   EXPECT_LT(smallest.value, 1e-3);
   // Reproduce it from the stop state: -s - eta u_r before the slip+ half.

@@ -118,7 +118,7 @@ TEST(PaperOrbits, Section52AtThePrintedDataLeavesItsStickWhereGIsNegative) {
   const Orbit o = Solve("paper-5.2", false);
   const std::vector<Margin> margins = AdmissibilityMargins(o);
   const Margin& smallest = SmallestMargin(margins);
-  EXPECT_EQ(smallest.name, "G:3");
+  EXPECT_EQ(smallest.Name(), "G:3");
   EXPECT_NEAR(smallest.value, -0.007, 1e-3);
   const Verification v = VerifyOrbit(o);
   EXPECT_FALSE(v.Passed());

@@ -146,6 +146,7 @@ struct Continuation::State {
   Eigen::VectorXd u;        // last accepted point
   Eigen::VectorXd tangent;  // unit tangent there, oriented along the branch
   int det_sign = 0;         // sign of det [J; t^T] there
+  Eigen::VectorXd tests;    // the monitor's values there
   double ds = 0.0;
   std::string last_failure;  // why the corrector last failed, for the end message
   bool started = false;
@@ -278,7 +279,8 @@ bool Continuation::Step() {
     // The tangent must point towards the requested direction of lambda.
     if (st.tangent(o.parameter_index) * o.direction < 0.0) st.tangent = -st.tangent;
     st.ds = st.steps->Initial();
-    State::Sample s{st.u, st.tangent, st.det_sign, st.Tests(st.u), r.summary.iterations};
+    st.tests = st.Tests(st.u);
+    State::Sample s{st.u, st.tangent, st.det_sign, st.tests, r.summary.iterations};
     push(s, 0.0, "EP");
     branch_.special_points.push_back({"EP", "start", 0, st.Lambda(st.u), st.u, s.tests, 0.0, true, 0.0});
     if (st.Lambda(st.u) < o.lambda_min || st.Lambda(st.u) > o.lambda_max) {
@@ -316,8 +318,7 @@ bool Continuation::Step() {
     ds = st.steps->OnRejected(ds);
     st.ds = ds;
   }
-  const Eigen::VectorXd tests_a = st.Tests(st.u);
-  const State::Sample a{st.u, st.tangent, st.det_sign, tests_a, 0};
+  const State::Sample a{st.u, st.tangent, st.det_sign, st.tests, 0};
   const State::Sample& b = *next;
 
   // Every test function whose sign differs between a and b.
@@ -427,7 +428,6 @@ bool Continuation::Step() {
       const int index = static_cast<int>(branch_.points.size()) - 1;
       branch_.special_points.push_back({e.type, e.name, index, st.Lambda(l.sample.u), l.sample.u, l.sample.tests,
                                         l.value, l.located, l.bracket});
-      st.u = l.sample.u;
       if (ending) continue;
       if (e.bound) {
         ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, st.Lambda(l.sample.u)));
@@ -437,12 +437,16 @@ bool Continuation::Step() {
                        fmt::format("{} ({}) left its admissible side", e.name, e.type));
       }
     }
-    if (ending) return end(ending->first, ending->second);
+    if (ending) {
+      st.u = branch_.points.back().u;
+      return end(ending->first, ending->second);
+    }
     first = last;
   }
 
   push(b, ds, "");
   st.u = b.u;
+  st.tests = b.tests;
   if (on_bound) return end(BranchEnd::kParameterBound, fmt::format("reached the bound lambda = {}", st.Lambda(b.u)));
   st.tangent = b.tangent;
   st.det_sign = b.det_sign;

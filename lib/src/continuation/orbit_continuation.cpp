@@ -25,7 +25,8 @@ std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode) {
 OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : system_(system) {
   // The margins' names and kinds depend on the signature only.
   for (const Margin& m : AdmissibilityMargins(start)) {
-    info_.push_back({"margin:" + m.name, OrbitTypeChangeCode(m, start.signature.segments()[m.segment]), true});
+    const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
+    info_.push_back({"margin:" + m.Name(), OrbitTypeChangeCode(m, mode), true});
   }
 }
 
@@ -58,7 +59,7 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
                         (setup.shooting == ShootingChoice::kAuto && n > OrbitSolverOptions{}.max_single_shooting_segments);
   OrbitContinuationProblem problem;
   problem.system = std::make_unique<OrbitSystem>(setup.start, unknowns, setup.unknowns.tie_static_friction,
-                                                 multiple ? Shooting::kMultiple : Shooting::kSingle);
+                                                 multiple ? Shooting::kMultiple : Shooting::kSingle, setup.flow);
   problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start);
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.indices.size());

@@ -136,7 +136,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   const FreeVariables free = ResolveUnknowns(orbit.signature, unknowns);
   if (!free.error.empty()) throw fail("unknowns", "is invalid: " + free.error);
 
-  OrbitContinuationSetup setup{orbit, unknowns, run.parameter, ShootingChoice::kAuto, LinearSolverType::kKlu, {}};
+  OrbitContinuationSetup setup{orbit, unknowns, run.parameter, ShootingChoice::kAuto, LinearSolverType::kKlu, {}, {}};
   const std::optional<int> parameter = ov::IndexOf(n, run.parameter);
   if (!parameter) throw fail("continuation.parameter", fmt::format("= '{}' is not a variable", run.parameter));
   if (std::find(free.indices.begin(), free.indices.end(), *parameter) != free.indices.end()) {

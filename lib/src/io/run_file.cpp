@@ -1,9 +1,11 @@
-// The only translation unit that includes toml++. Debian's toml++ 3.3.0 aborts on some malformed
-// input through its internal asserts, and with NDEBUG turns them into optimiser assumptions
-// (undefined behaviour); here they are no-ops, and the input is screened before parsing.
+// The only translation unit that includes toml++, compiled header-only here (not Debian's shared
+// library). Debian's toml++ 3.3.0 aborts on some malformed input through its internal asserts,
+// and with NDEBUG turns them into optimiser assumptions (undefined behaviour); here they are
+// no-ops, and the input is screened before parsing.
 #ifdef NDEBUG
 #undef NDEBUG
 #endif
+#define TOML_HEADER_ONLY 1
 #define TOML_ASSERT(expr) static_cast<void>(0)
 #include <toml++/toml.h>
 

@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include <cmath>
+
 namespace stickslip {
 
 const char* ToString(Mode mode) {
@@ -31,41 +33,39 @@ int SlipDirection(Mode mode) {
   return 0;
 }
 
-namespace {
-
-// Seed directions: start state (4), elapsed time, phase, the five parameters.
-constexpr int kDirections = 4 + 1 + 1 + kParameterCount;
-constexpr int kElapsedSeed = 4;
-constexpr int kPhaseSeed = 5;
-constexpr int kFirstParameterSeed = 6;
-using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kDirections, 1>>;
-
-Dual Seeded(double value, int direction) {
-  return Dual(value, kDirections, direction);
-}
-
-}  // namespace
-
 FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                     const Parameters& p) {
-  StateT<Dual> start_dual;
-  for (int i = 0; i < 4; ++i) start_dual(i) = Seeded(start(i), i);
+  // The parameters enter Q, d0, omega_j and Lambda in nested ways: forward-mode automatic
+  // differentiation with one direction per parameter.
+  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kParameterCount, 1>>;
   BasicParameters<Dual> p_dual;
   for (int k = 0; k < kParameterCount; ++k) {
     const ParameterId id = kAllParameters[k];
-    p_dual[id] = Seeded(p[id], kFirstParameterSeed + k);
+    p_dual[id] = Dual(p[id], kParameterCount, k);
   }
-  const StateT<Dual> end = Flow(mode, start_dual, Seeded(phase, kPhaseSeed),
-                                Seeded(s, kElapsedSeed), p_dual);
+  const StateT<Dual> end = Flow(mode, StateT<Dual>(start.cast<Dual>()), Dual(phase), Dual(s), p_dual);
   FlowDerivatives out;
   for (int i = 0; i < 4; ++i) {
     out.state(i) = end(i).value();
-    const auto& d = end(i).derivatives();
-    out.d_start.row(i) = d.head<4>().transpose();
-    out.d_elapsed(i) = d(kElapsedSeed);
-    out.d_phase(i) = d(kPhaseSeed);
-    out.d_parameters.row(i) = d.segment<kParameterCount>(kFirstParameterSeed).transpose();
+    out.d_parameters.row(i) = end(i).derivatives().transpose();
   }
+  // The flow is affine in the start state, X(s) = H(s) (X0 - ...) + ...: its derivative is the
+  // transition matrix H(s) of a slip (eq. 5, 55) or Gamma(s) of a stick (eq. 10, 58).
+  out.d_start = mode == Mode::kStick ? StickTransition(p.chi, s) : SlipTransition(p.chi, p.eta, s);
+  // The phase enters through F only: dX/dpsi = dF(s)/dpsi - H(s) dF(0)/dpsi (eq. 5); a stick
+  // does not feel the forcing (eq. 9).
+  out.d_phase.setZero();
+  if (mode != Mode::kStick) {
+    const Eigen::Vector2d q = ForcedAmplitude(p.chi, p.eta, p.omega);
+    auto d_forcing = [&](double t) {
+      State f;
+      f << -q * std::sin(p.omega * t + phase), -p.omega * q * std::cos(p.omega * t + phase);
+      return f;
+    };
+    out.d_phase = d_forcing(s) - out.d_start * d_forcing(0.0);
+  }
+  // The time derivative is the vector field at the end (eq. 2, 9).
+  out.d_elapsed << out.state.tail<2>(), Acceleration(mode, out.state, phase + p.omega * s, p);
   return out;
 }
 

@@ -58,7 +58,6 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
   system.Evaluate(result.solution, &residual, &jacobian);
   double norm = MaxNorm(residual);
   summary.residual_norms.push_back(norm);
-  const double start_norm = norm;
   while (true) {
     if (!std::isfinite(norm)) {
       return finish(NewtonTermination::kDiverged, "the residual is not finite", nullptr);
@@ -106,17 +105,20 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
                     &jacobian);
     }
     result.solution = trial;
-    system.Evaluate(result.solution, &residual, &jacobian);
-    norm = MaxNorm(residual);
+    residual = trial_residual;
+    norm = trial_norm;
     summary.residual_norms.push_back(norm);
-    if (norm > options.divergence_factor * std::max(start_norm, 1.0)) {
-      return finish(NewtonTermination::kDiverged,
-                    fmt::format("|F| grew from {:.3e} to {:.3e}", start_norm, norm), nullptr);
+    const bool step_below_tolerance =
+        MaxNorm(damping * step) <= options.step_tolerance * (1.0 + MaxNorm(result.solution)) &&
+        norm <= options.stagnation_residual;
+    if (norm <= options.residual_tolerance || step_below_tolerance) {
+      // The Jacobian at the root is needed only for its condition number.
+      const bool condition = options.estimate_condition;
+      if (condition) system.Evaluate(result.solution, &residual, &jacobian);
+      return finish(NewtonTermination::kConverged, step_below_tolerance ? "step below tolerance" : "",
+                    condition ? &jacobian : nullptr);
     }
-    if (MaxNorm(damping * step) <= options.step_tolerance * (1.0 + MaxNorm(result.solution)) &&
-        norm <= options.stagnation_residual) {
-      return finish(NewtonTermination::kConverged, "step below tolerance", &jacobian);
-    }
+    system.Evaluate(result.solution, &residual, &jacobian);
   }
 }
 

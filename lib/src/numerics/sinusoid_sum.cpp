@@ -18,6 +18,19 @@ double SinusoidSum::operator()(double t) const {
   return value;
 }
 
+SinusoidSum::Jet SinusoidSum::JetAt(double t) const {
+  Jet jet{constant_ + slope_ * t, slope_, 0.0};
+  for (const Sinusoid& s : terms_) {
+    const double c = std::cos(s.frequency * t);
+    const double n = std::sin(s.frequency * t);
+    const double even = s.cos_coefficient * c + s.sin_coefficient * n;
+    jet.value += even;
+    jet.slope += s.frequency * (s.sin_coefficient * c - s.cos_coefficient * n);
+    jet.curvature -= s.frequency * s.frequency * even;
+  }
+  return jet;
+}
+
 SinusoidSum SinusoidSum::Affine(double k, double c) const {
   std::vector<Sinusoid> terms = terms_;
   for (Sinusoid& s : terms) {
@@ -39,8 +52,9 @@ SinusoidSum SinusoidSum::Derivative() const {
 double SinusoidSum::DerivativeBound(int order) const {
   double bound = order == 1 ? std::abs(slope_) : 0.0;
   for (const Sinusoid& s : terms_) {
-    bound += std::hypot(s.cos_coefficient, s.sin_coefficient) *
-             std::pow(std::abs(s.frequency), order);
+    double power = 1.0;
+    for (int k = 0; k < order; ++k) power *= std::abs(s.frequency);
+    bound += std::hypot(s.cos_coefficient, s.sin_coefficient) * power;
   }
   return bound;
 }
@@ -75,67 +89,66 @@ bool ProvablyOneSigned(double gl, double gr, double h, double m2) {
 class ZeroFinder {
  public:
   ZeroFinder(const SinusoidSum& f, const ZeroSearchOptions& options)
-      : f_(f), df_(f.Derivative()), d2f_(df_.Derivative()), options_(options),
-        m2_(f.DerivativeBound(2)), m3_(f.DerivativeBound(3)),
+      : f_(f), df_(f.Derivative()), options_(options), m2_(f.DerivativeBound(2)),
+        m3_(f.DerivativeBound(3)), m4_(f.DerivativeBound(4)),
         touch_level_(options.touch_tolerance * std::max(f.Scale(), 1e-300)) {}
 
   // Zeros of f in [l, r] with f(l) != 0, appended to `out` in increasing order.
   void Search(double l, double r, int max_count, std::vector<Zero>* out) const {
-    struct Interval {
-      double l, r, fl, fr;
+    struct End {
+      double t;
+      SinusoidSum::Jet f;
     };
-    std::vector<Interval> stack = {{l, r, f_(l), f_(r)}};
+    struct Interval {
+      End l, r;
+    };
+    std::vector<Interval> stack = {{{l, f_.JetAt(l)}, {r, f_.JetAt(r)}}};
     while (!stack.empty() && static_cast<int>(out->size()) < max_count) {
       const Interval iv = stack.back();
       stack.pop_back();
-      const double h = iv.r - iv.l;
-      if (ProvablyOneSigned(iv.fl, iv.fr, h, m2_)) continue;
-      const double dl = df_(iv.l);
-      const double dr = df_(iv.r);
+      const double h = iv.r.t - iv.l.t;
+      const double fl = iv.l.f.value, fr = iv.r.f.value;
+      if (ProvablyOneSigned(fl, fr, h, m2_)) continue;
+      const double dl = iv.l.f.slope, dr = iv.r.f.slope;
       if (ProvablyOneSigned(dl, dr, h, m3_)) {
         // f is monotone here: at most one zero, a crossing.
-        if (iv.fl * iv.fr <= 0.0) {
-          out->push_back({Bracketed(f_, iv.l, iv.r, iv.fl, iv.fr, options_.time_tolerance),
-                          ZeroKind::kCrossing});
+        if (fl * fr <= 0.0) {
+          out->push_back({Bracketed(f_, iv.l.t, iv.r.t, fl, fr, options_.time_tolerance), ZeroKind::kCrossing});
         }
         continue;
       }
-      if (dl * dr < 0.0 && ProvablyOneSigned(d2f_(iv.l), d2f_(iv.r), h, f_.DerivativeBound(4))) {
+      if (dl * dr < 0.0 && ProvablyOneSigned(iv.l.f.curvature, iv.r.f.curvature, h, m4_)) {
         // f' is monotone with one zero: f has one interior extremum, so f is monotone on each
         // side of it.
-        const double te = Bracketed(df_, iv.l, iv.r, dl, dr, options_.time_tolerance);
+        const double te = Bracketed(df_, iv.l.t, iv.r.t, dl, dr, options_.time_tolerance);
         const double fe = f_(te);
         // An extremum within the touch level of zero is one double zero, not two crossings a
         // rounding error apart.
         if (std::abs(fe) <= touch_level_) {
           out->push_back({te, ZeroKind::kTouch});
-        } else if (iv.fl * fe < 0.0) {
-          out->push_back({Bracketed(f_, iv.l, te, iv.fl, fe, options_.time_tolerance),
-                          ZeroKind::kCrossing});
-          if (fe * iv.fr <= 0.0 && static_cast<int>(out->size()) < max_count) {
-            out->push_back({Bracketed(f_, te, iv.r, fe, iv.fr, options_.time_tolerance),
-                            ZeroKind::kCrossing});
+        } else if (fl * fe < 0.0) {
+          out->push_back({Bracketed(f_, iv.l.t, te, fl, fe, options_.time_tolerance), ZeroKind::kCrossing});
+          if (fe * fr <= 0.0 && static_cast<int>(out->size()) < max_count) {
+            out->push_back({Bracketed(f_, te, iv.r.t, fe, fr, options_.time_tolerance), ZeroKind::kCrossing});
           }
-        } else if (fe * iv.fr <= 0.0) {
-          out->push_back({Bracketed(f_, te, iv.r, fe, iv.fr, options_.time_tolerance),
-                          ZeroKind::kCrossing});
+        } else if (fe * fr <= 0.0) {
+          out->push_back({Bracketed(f_, te, iv.r.t, fe, fr, options_.time_tolerance), ZeroKind::kCrossing});
         }
         continue;
       }
+      const double tm = 0.5 * (iv.l.t + iv.r.t);
       if (h <= options_.time_tolerance) {
         // Degenerate (f, f' and f'' all near zero): report a touch if f is at zero level.
-        const double tm = 0.5 * (iv.l + iv.r);
-        if (iv.fl * iv.fr <= 0.0) {
+        if (fl * fr <= 0.0) {
           out->push_back({tm, ZeroKind::kCrossing});
         } else if (std::abs(f_(tm)) <= touch_level_) {
           out->push_back({tm, ZeroKind::kTouch});
         }
         continue;
       }
-      const double tm = 0.5 * (iv.l + iv.r);
-      const double fm = f_(tm);
-      stack.push_back({tm, iv.r, fm, iv.fr});  // right half after the left one
-      stack.push_back({iv.l, tm, iv.fl, fm});
+      const End middle{tm, f_.JetAt(tm)};
+      stack.push_back({middle, iv.r});  // right half after the left one
+      stack.push_back({iv.l, middle});
     }
   }
 
@@ -147,8 +160,9 @@ class ZeroFinder {
   // With opposite signs f returns to zero near 2|f'|/|f''|: only the first bound holds. An f'
   // at rounding level counts as zero, so that a rounding error cannot fake a zero at once.
   double ExclusionAfterZero(double a) const {
-    const double d1 = df_(a);
-    const double d2 = d2f_(a);
+    const SinusoidSum::Jet jet = f_.JetAt(a);
+    const double d1 = jet.slope;
+    const double d2 = jet.curvature;
     const double inf = std::numeric_limits<double>::infinity();
     const double by_slope = m2_ > 0.0 ? std::abs(d1) / m2_ : inf;
     const double by_curvature = m3_ > 0.0 ? std::abs(d2) / m3_ : inf;
@@ -167,10 +181,10 @@ class ZeroFinder {
  private:
   const SinusoidSum& f_;
   SinusoidSum df_;
-  SinusoidSum d2f_;
   ZeroSearchOptions options_;
   double m2_;
   double m3_;
+  double m4_;
   double touch_level_;
 };
 

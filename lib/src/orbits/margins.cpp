@@ -46,24 +46,31 @@ Extremum InteriorMinimum(const SinusoidSum& f, double d) {
 
 }  // namespace
 
+std::string Margin::Name() const {
+  return segment < 0 ? std::string(base) : fmt::format("{}:{}", base, segment + 1);
+}
+
 std::vector<Margin> AdmissibilityMargins(const Orbit& orbit) {
   const Parameters& p = orbit.parameters;
   const Signature& signature = orbit.signature;
-  const std::vector<State> states = orbit.SegmentStates();
-  const std::vector<double> times = orbit.SegmentTimes();
   const double threshold = p.eta * p.u_r;
   std::vector<Margin> margins;
+  margins.reserve(5 * signature.size() + 1);
   auto add = [&](const char* name, MarginKind kind, int i, double value, double t) {
-    margins.push_back({fmt::format("{}:{}", name, i + 1), kind, i, value, t});
+    margins.push_back({name, kind, i, value, t});
   };
 
+  State start = orbit.InitialState();
+  std::vector<double> times = {0.0};
   for (int i = 0; i < signature.size(); ++i) {
     const Mode mode = signature.segments()[i];
     const double d = orbit.durations[i];
+    times.push_back(times[i] + d);
     const double phase = orbit.phi + p.omega * times[i];
     const double end_phase = phase + p.omega * d;
-    const State& end = states[i + 1];
-    const ModeMotion<double> motion = MotionInMode(mode, states[i], phase, p);
+    const ModeMotion<double> motion = MotionInMode(mode, start, phase, p);
+    const State end = motion.StateAt(d);
+    start = end;
     add("duration", MarginKind::kDuration, i, d, times[i]);
 
     if (mode != Mode::kStick) {
@@ -108,7 +115,7 @@ std::vector<Margin> AdmissibilityMargins(const Orbit& orbit) {
     const double slope = force.Derivative()(d);
     add("exit-slope", MarginKind::kExitSlope, i, exit_negative ? slope : -slope, times[i + 1]);
   }
-  margins.push_back({"sliding-friction", MarginKind::kFrictionLevel, 0, p.u_s, 0.0});
+  margins.push_back({"sliding-friction", MarginKind::kFrictionLevel, -1, p.u_s, 0.0});
   return margins;
 }
 

@@ -31,8 +31,8 @@ int ShootingStates(const Signature& signature, Shooting shooting) {
 
 }  // namespace
 
-PeriodicityEquations::PeriodicityEquations(Signature signature, Shooting shooting)
-    : signature_(std::move(signature)), shooting_(shooting) {}
+PeriodicityEquations::PeriodicityEquations(Signature signature, Shooting shooting, FlowEvaluator flow)
+    : signature_(std::move(signature)), shooting_(shooting), flow_(flow) {}
 
 int PeriodicityEquations::EquationCount() const {
   return signature_.size() + AbnormalStops(signature_) + 4 + ShootingStates(signature_, shooting_);
@@ -106,45 +106,49 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
       dx.block<4, 4>(0, state_column) = Eigen::Matrix4d::Identity();
     }
     const double d = orbit.durations[i];
-    const FlowDerivatives f = FlowWithDerivatives(mode, x, phase, d, p);
     if (jacobian) {
+      const FlowDerivatives f = flow_.derivatives(mode, x, phase, d, p);
       Eigen::Matrix<double, 4, Eigen::Dynamic> next = f.d_start * dx + f.d_phase * dphase;
       next.col(ov::Duration(i)) += f.d_elapsed;
       next.middleCols(first_parameter, kParameterCount) += f.d_parameters;
       dx = next;
+      x = f.state;
+    } else {
+      x = flow_.state(mode, x, phase, d, p);
     }
-    x = f.state;
     dphase(ov::Duration(i)) += p.omega;
     dphase(omega_column) += d;
     phase += p.omega * d;
 
-    // End condition of segment i.
+    // End condition of segment i; gradients by automatic differentiation only for a Jacobian.
+    auto end_condition = [&](auto&& f) {
+      if (jacobian) {
+        add_equation(Differentiate(f, x, phase, p));
+      } else {
+        (*residual)(row++) = f(x, phase, p);
+      }
+    };
+    auto velocity = [](const auto& s, const auto&, const auto&) -> Scalar<decltype(s(3))> { return s(3); };
     switch (signature_.EndKind(i)) {
       case SegmentEndKind::kAbnormalStop:
-        add_equation({x(3), Eigen::Vector4d::UnitW()});
-        add_equation(Differentiate(
-            [mode](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
-              return Acceleration(mode, s, ph, q)(1);
-            },
-            x, phase, p));
+        end_condition(velocity);
+        end_condition([mode](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
+          return Acceleration(mode, s, ph, q)(1);
+        });
         break;
       case SegmentEndKind::kReversal:
       case SegmentEndKind::kStickEntry:
-        add_equation({x(3), Eigen::Vector4d::UnitW()});
+        end_condition(velocity);
         break;
       case SegmentEndKind::kExitToNegative:  // s = +eta u_r: G1 = 0
-        add_equation(Differentiate(
-            [](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
-              return -StickConstraintG1(s, ph, q);
-            },
-            x, phase, p));
+        end_condition([](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
+          return -StickConstraintG1(s, ph, q);
+        });
         break;
       case SegmentEndKind::kExitToPositive:  // s = -eta u_r: G = 0
-        add_equation(Differentiate(
-            [](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
-              return StickConstraintG(s, ph, q);
-            },
-            x, phase, p));
+        end_condition([](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
+          return StickConstraintG(s, ph, q);
+        });
         break;
     }
   }
@@ -183,8 +187,8 @@ Eigen::VectorXd PeriodicityEquations::Variables(const Orbit& orbit) const {
 }
 
 OrbitSystem::OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie_static_friction,
-                         Shooting shooting)
-    : equations_(reference.signature, shooting), reference_(equations_.Variables(reference)),
+                         Shooting shooting, FlowEvaluator flow)
+    : equations_(reference.signature, shooting, flow), reference_(equations_.Variables(reference)),
       free_(std::move(free)), tie_static_friction_(tie_static_friction) {
   const int n = reference.signature.size();
   for (int index : free_) {

@@ -46,6 +46,7 @@ struct OrbitContinuationSetup {
   ShootingChoice shooting = ShootingChoice::kAuto;
   LinearSolverType sparse_solver = LinearSolverType::kKlu;
   ContinuationOptions options;  // parameter_index is set here
+  FlowEvaluator flow;  // the closed form; the benchmark compares Odeint
 };
 
 struct OrbitBranch {

@@ -36,7 +36,6 @@ struct NewtonOptions {
   double stagnation_residual = 1e-9;  //     max|F| is below this, or no step lowers a max|F|
                                       //     below this (the rounding floor near a singularity)
   double min_damping = 1.0 / 1024.0;  // smallest step fraction of the backtracking line search
-  double divergence_factor = 1e8;     // |F| grown by this factor over the start means divergence
   LinearSolverType linear_solver = LinearSolverType::kDenseLu;
   bool estimate_condition = true;     // condition number of the final Jacobian (an SVD)
 };
@@ -45,7 +44,7 @@ enum class NewtonTermination {
   kConverged,
   kMaxIterations,
   kSingularJacobian,
-  kDiverged,          // non-finite or exploding residual
+  kDiverged,          // a non-finite residual
   kLeftDomain,        // an iterate left the system's domain
   kLineSearchFailed,  // no damped step reduced |F|
 };

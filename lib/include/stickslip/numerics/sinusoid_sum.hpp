@@ -22,6 +22,11 @@ class SinusoidSum {
       : constant_(constant), slope_(slope), terms_(std::move(terms)) {}
 
   double operator()(double t) const;
+  // f(t), f'(t), f''(t) at the cost of one sine and cosine per term.
+  struct Jet {
+    double value, slope, curvature;
+  };
+  Jet JetAt(double t) const;
   // k f + c, for the constraints G = s + eta u_r and G1 = -s + eta u_r.
   SinusoidSum Affine(double k, double c) const;
   SinusoidSum Derivative() const;

@@ -40,11 +40,14 @@ enum class MarginKind {
 const char* ToString(MarginKind kind);
 
 struct Margin {
-  std::string name;  // "G:3", ...
+  const char* base = "";  // "G", "duration", ...: the name without the segment number
   MarginKind kind = MarginKind::kDuration;
-  int segment = 0;     // 0-based listed segment (0 for kFrictionLevel)
+  int segment = 0;     // 0-based listed segment (-1 for the orbit as a whole)
   double value = 0.0;  // > 0 admissible
   double t = 0.0;      // where it is attained, time from the orbit's origin
+  // "G:3" (1-based segment), or the base alone for the orbit as a whole. Formatted on demand:
+  // the continuation evaluates margins at every point and needs only the values.
+  std::string Name() const;
 };
 
 std::vector<Margin> AdmissibilityMargins(const Orbit& orbit);

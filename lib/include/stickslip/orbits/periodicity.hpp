@@ -32,9 +32,16 @@ namespace stickslip {
 enum class Shooting { kSingle, kMultiple };
 const char* ToString(Shooting s);  // "single", "multiple"
 
+// How the equations evaluate one mode's flow, alone (for residuals) and with its derivatives
+// (for Jacobians): the closed form by default; the benchmark swaps in a numerical integration.
+struct FlowEvaluator {
+  State (*state)(Mode, const State&, const double& phase, const double& s, const Parameters&) = &Flow<double>;
+  FlowDerivatives (*derivatives)(Mode, const State&, double phase, double s, const Parameters&) = &FlowWithDerivatives;
+};
+
 class PeriodicityEquations {
  public:
-  PeriodicityEquations(Signature signature, Shooting shooting);
+  PeriodicityEquations(Signature signature, Shooting shooting, FlowEvaluator flow = {});
 
   int EquationCount() const;
   // The full variable vector (orbit.hpp) followed, for multiple shooting, by the start state of
@@ -55,6 +62,7 @@ class PeriodicityEquations {
  private:
   Signature signature_;
   Shooting shooting_;
+  FlowEvaluator flow_;
 };
 
 // The orbit as a system in chosen unknowns: the full variables listed in `free` (in that order),
@@ -63,7 +71,7 @@ class PeriodicityEquations {
 class OrbitSystem final : public NonlinearSystem {
  public:
   OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie_static_friction,
-              Shooting shooting);
+              Shooting shooting, FlowEvaluator flow = {});
 
   int EquationCount() const override { return equations_.EquationCount(); }
   int UnknownCount() const override;

@@ -1,0 +1,67 @@
+// Time per accepted continuation point for each paper family, event monitoring (every
+// admissibility margin, folds, branch points) included: with the closed-form flows, and with the
+// same branch's flows and derivatives integrated by Boost.Odeint (variational equations, the
+// same 1e-12 tolerances as the cross-check simulator).
+//
+//   build/release/tests/continuation_benchmark --benchmark_repetitions=5 \
+//       --benchmark_report_aggregates_only=true
+//
+// The counter us_per_point is the figure the README reports (median over the repetitions).
+#include <filesystem>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/io/run.hpp"
+#include "stickslip/model/odeint_simulator.hpp"
+
+namespace stickslip {
+namespace {
+
+State OdeintState(Mode mode, const State& start, const double& phase, const double& s, const Parameters& p) {
+  return IntegrateMode(mode, start, phase, s, p);
+}
+FlowDerivatives OdeintDerivatives(Mode mode, const State& start, double phase, double s, const Parameters& p) {
+  return IntegrateModeWithDerivatives(mode, start, phase, s, p);
+}
+constexpr FlowEvaluator kClosedForm{};
+constexpr FlowEvaluator kOdeint{&OdeintState, &OdeintDerivatives};
+
+// The first `points` points of a family's omega run (the run files of continuation-scripts/).
+OrbitContinuationSetup Family(const std::string& run_file, int points, FlowEvaluator flow) {
+  const std::filesystem::path source(STICKSLIP_SOURCE_DIR);
+  OrbitContinuationSetup setup = MakeSetup(ReadRunFile(source / "continuation-scripts" / run_file), source / "results");
+  setup.options.max_points = points;
+  setup.flow = flow;
+  return setup;
+}
+
+void PerPoint(benchmark::State& state, const std::string& run_file, FlowEvaluator flow) {
+  const OrbitContinuationSetup setup = Family(run_file, static_cast<int>(state.range(0)), flow);
+  double points = 0;
+  for (auto _ : state) {
+    const OrbitBranch branch = ContinueOrbit(setup);
+    points += static_cast<double>(branch.branch.points.size());
+    benchmark::DoNotOptimize(branch.branch.points.back().lambda);
+  }
+  // Elapsed time per 1e-6 points: microseconds per accepted point.
+  state.counters["us_per_point"] = benchmark::Counter(points * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// 20 points: the start of each branch, before any of them ends (the shortest, section 4.2
+// downwards, has 6 points and is not used).
+#define STICKSLIP_FAMILY(name, file)                                                             \
+  BENCHMARK_CAPTURE(PerPoint, closed_form_##name, file, kClosedForm)->Arg(20)->Unit(benchmark::kMicrosecond); \
+  BENCHMARK_CAPTURE(PerPoint, odeint_##name, file, kOdeint)->Arg(20)->Unit(benchmark::kMicrosecond);
+
+STICKSLIP_FAMILY(paper_4_1, "paper-4.1-omega-up.toml")
+STICKSLIP_FAMILY(paper_4_2, "paper-4.2-omega-up.toml")
+STICKSLIP_FAMILY(paper_5_1, "paper-5.1-omega-up.toml")
+STICKSLIP_FAMILY(paper_5_2, "paper-5.2-omega-down.toml")
+STICKSLIP_FAMILY(paper_6, "paper-6-omega-up.toml")
+
+}  // namespace
+}  // namespace stickslip
+
+BENCHMARK_MAIN();
