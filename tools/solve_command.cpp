@@ -75,12 +75,6 @@ std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margi
   return out;
 }
 
-// The value of a printed quantity in the solved orbit.
-double Quantity(const Orbit& o, std::string_view variable) {
-  if (variable == "period") return o.Period();
-  if (variable == "half-period") return 0.5 * o.Period();
-  return ov::Pack(o)(*ov::IndexOf(o.signature.size(), variable));
-}
 
 std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std::string& choice) {
   std::string out = fmt::format("#### {} ({}, {}): {}\n\n| paper | printed | stickslip | difference |\n|---|---|---|---|\n",
@@ -88,7 +82,7 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
                                 o.signature.ToString());
   for (const PrintedValue& v : preset.printed) {
     const double printed = std::stod(std::string(v.text));
-    const double computed = Quantity(o, v.variable);
+    const double computed = PrintedQuantity(o, v.variable);
     out += fmt::format("| {} | {} | {:.6f} | {:+.1e} |\n", v.paper_name, v.text, computed, computed - printed);
   }
   return out;

@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_names.hpp"
+
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/modal.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
@@ -154,18 +156,10 @@ TEST_P(FlowDerivativesAgainstOdeint, IsTheIdentityAtZeroDuration) {
   }
 }
 
-std::string ModeName(const ::testing::TestParamInfo<Mode>& info) {
-  switch (info.param) {
-    case Mode::kSlipNegative: return "SlipNegative";
-    case Mode::kSlipPositive: return "SlipPositive";
-    case Mode::kStick: break;
-  }
-  return "Stick";
-}
 
 INSTANTIATE_TEST_SUITE_P(AllModes, FlowDerivativesAgainstOdeint,
                          ::testing::Values(Mode::kSlipNegative, Mode::kSlipPositive, Mode::kStick),
-                         ModeName);
+                         ModeTestName);
 
 TEST(OdeintVariationalReference, RejectsANegativeOrNonFiniteDuration) {
   const Parameters p{0.3, 4.0, 0.6, 0.1, 0.2996};

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_names.hpp"
+
 namespace stickslip {
 namespace {
 
@@ -88,13 +90,7 @@ TEST(FlowDerivatives, StaticFrictionDoesNotEnterAnyFlow) {
 
 INSTANTIATE_TEST_SUITE_P(EveryMode, FlowDerivativesTest,
                          ::testing::Values(Mode::kSlipNegative, Mode::kSlipPositive, Mode::kStick),
-                         [](const ::testing::TestParamInfo<Mode>& mode) {
-                           switch (mode.param) {
-                             case Mode::kSlipNegative: return std::string("SlipNegative");
-                             case Mode::kSlipPositive: return std::string("SlipPositive");
-                             default: return std::string("Stick");
-                           }
-                         });
+                         ModeTestName);
 
 }  // namespace
 }  // namespace stickslip

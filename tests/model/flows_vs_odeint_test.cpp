@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_names.hpp"
+
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/parameters.hpp"
@@ -112,18 +114,10 @@ TEST(OdeintReference, DistinguishesTheFrictionSignAndThePhase) {
   }
 }
 
-std::string ModeName(const ::testing::TestParamInfo<Mode>& info) {
-  switch (info.param) {
-    case Mode::kSlipNegative: return "SlipNegative";
-    case Mode::kSlipPositive: return "SlipPositive";
-    case Mode::kStick: break;
-  }
-  return "Stick";
-}
 
 INSTANTIATE_TEST_SUITE_P(AllModes, FlowsAgainstOdeint,
                          ::testing::Values(Mode::kSlipNegative, Mode::kSlipPositive, Mode::kStick),
-                         ModeName);
+                         ModeTestName);
 
 }  // namespace
 }  // namespace stickslip

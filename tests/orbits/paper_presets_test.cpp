@@ -27,17 +27,12 @@ Orbit Solve(const char* name, bool paper_choice) {
   return s.orbit;
 }
 
-double Quantity(const Orbit& o, std::string_view variable) {
-  if (variable == "period") return o.Period();
-  if (variable == "half-period") return 0.5 * o.Period();
-  return ov::Pack(o)(*ov::IndexOf(o.signature.size(), variable));
-}
 
 void ExpectPrintedValues(const char* name, const Orbit& o, double tolerance,
                          std::string_view except = "") {
   for (const PrintedValue& v : FindPaperPreset(name)->printed) {
     if (v.paper_name == except) continue;
-    EXPECT_NEAR(Quantity(o, v.variable), std::stod(std::string(v.text)), tolerance)
+    EXPECT_NEAR(PrintedQuantity(o, v.variable), std::stod(std::string(v.text)), tolerance)
         << name << " " << v.paper_name;
   }
 }

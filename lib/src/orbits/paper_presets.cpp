@@ -91,6 +91,14 @@ const std::vector<PaperPreset>& Presets() {
 
 }  // namespace
 
+double PrintedQuantity(const Orbit& orbit, std::string_view variable) {
+  if (variable == "period") return orbit.Period();
+  if (variable == "half-period") return 0.5 * orbit.Period();
+  const std::optional<int> index = orbit_variables::IndexOf(orbit.signature.size(), variable);
+  if (!index) throw std::invalid_argument(std::string("no orbit variable ") + std::string(variable));
+  return orbit_variables::Pack(orbit)(*index);
+}
+
 std::span<const PaperPreset> PaperPresets() { return Presets(); }
 
 const PaperPreset* FindPaperPreset(std::string_view name) {

@@ -34,6 +34,10 @@ struct PaperPreset {
   Orbit Guess() const;  // the printed values as an orbit
 };
 
+// The value in `orbit` of a printed quantity's variable ("period", "half-period", or any orbit
+// variable name).
+double PrintedQuantity(const Orbit& orbit, std::string_view variable);
+
 std::span<const PaperPreset> PaperPresets();
 const PaperPreset* FindPaperPreset(std::string_view name);
 
