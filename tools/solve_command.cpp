@@ -13,6 +13,7 @@
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
+#include "stickslip/orbits/stability.hpp"
 #include "stickslip/orbits/verification.hpp"
 
 namespace stickslip::cli {
@@ -35,6 +36,15 @@ struct SolveArgs {
   bool json = false;
   bool compare_paper = false;
 };
+
+std::string MultipliersJson(const Stability& stability) {
+  std::string out;
+  for (const std::complex<double>& mu : stability.multipliers) {
+    out += fmt::format("{}[{}, {}]", out.empty() ? "" : ", ", mu.real(), mu.imag());
+  }
+  return fmt::format("\"multipliers\": [{}], \"stable\": {}, \"multipliers_one_sided\": {}", out,
+                     stability.stable, stability.one_sided);
+}
 
 std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margin>& margins,
                  const Verification& v) {
@@ -64,8 +74,9 @@ std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margi
     for (Mode m : modes) text += fmt::format("{}\"{}\"", text.empty() ? "" : ", ", ToString(m));
     return "[" + text + "]";
   };
+  out += fmt::format("}}, {}", MultipliersJson(StabilityOf(o)));
   out += fmt::format(
-      "}}, \"verification\": {{\"passed\": {}, \"expected\": {}, \"exact\": {{\"events\": {}, "
+      ", \"verification\": {{\"passed\": {}, \"expected\": {}, \"exact\": {{\"events\": {}, "
       "\"sequence_matches\": {}, \"max_mismatch\": {}, \"max_event_time_difference\": {}}}, "
       "\"odeint\": {{\"events\": {}, \"sequence_matches\": {}, \"max_mismatch\": {}, "
       "\"max_event_time_difference\": {}}}}}}}\n",
@@ -184,9 +195,16 @@ int RunSolve(const SolveArgs& args) {
   for (const Margin& m : margins) {
     fmt::print("  {:<16} {:>14.6g}  at t = {:.6g}\n", m.Name(), m.value, m.t);
   }
-  const Margin& smallest = SmallestMargin(margins);
+  const Margin smallest = SmallestMargin(margins);
   fmt::print("smallest   {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
              smallest.value > 0 ? "admissible" : "NOT a motion of the system");
+  const Stability stability = StabilityOf(orbit);
+  fmt::print("floquet multipliers (monodromy with saltation matrices){}:\n",
+             stability.one_sided ? ", one-sided at the abnormal stops" : "");
+  for (const std::complex<double>& mu : stability.multipliers) {
+    fmt::print("  {:>+14.8f} {:+.8f}i  |mu| = {:.8f}\n", mu.real(), mu.imag(), std::abs(mu));
+  }
+  fmt::print("stability  {}\n", stability.stable ? "stable" : "unstable");
   fmt::print("verification {}\n{}", verification.Passed() ? "passed" : "FAILED", verification.Report());
   return kExitOk;
 }

@@ -12,6 +12,7 @@
 #include "stickslip/model/events.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
+#include "stickslip/orbits/stability.hpp"
 
 namespace stickslip {
 namespace {
@@ -113,6 +114,29 @@ TEST_P(PaperBranch, EverySpecialPointIsVerifiedIndependently) {
     if (s.type == "EP" || s.type == "UZ") continue;
     if (s.type == "LP") {
       EXPECT_LT(std::abs(s.test_value), 1e-9);
+      // A fold of a periodic orbit has a Floquet multiplier +1: det(M - I) = 0. Unless the fold
+      // is where a stop degenerates (x2'' = 0 there, another special point at the same place):
+      // the saltation matrix has a pole there and the multipliers are not defined.
+      const bool at_type_change = std::any_of(b.branch.special_points.begin(), b.branch.special_points.end(),
+                                              [&](const SpecialPoint& other) {
+                                                return &other != &s && other.type != "EP" && other.type != "LP" &&
+                                                       std::abs(other.lambda - s.lambda) < 1e-8;
+                                              });
+      if (!at_type_change) {
+        EXPECT_LT(std::abs(StabilityOf(o).fold_test), 1e-6) << GetParam() << " LP";
+      }
+      continue;
+    }
+    if (s.type == "PD" || s.type == "TR") {
+      const Stability stability = StabilityOf(o);
+      const auto on_circle = std::find_if(stability.multipliers.begin(), stability.multipliers.end(),
+                                          [](const auto& mu) { return std::abs(std::abs(mu) - 1.0) < 1e-6; });
+      ASSERT_NE(on_circle, stability.multipliers.end()) << GetParam() << " " << s.type;
+      if (s.type == "PD") {
+        EXPECT_LT(std::abs(*on_circle + 1.0), 1e-6);
+      } else {
+        EXPECT_GT(std::abs(on_circle->imag()), 1e-6);
+      }
       continue;
     }
     if (s.type == "BP") continue;

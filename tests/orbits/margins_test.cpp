@@ -14,7 +14,7 @@
 namespace stickslip {
 namespace {
 
-const Margin& Find(const std::vector<Margin>& margins, const std::string& name) {
+Margin Find(const std::vector<Margin>& margins, const std::string& name) {
   return *std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == name; });
 }
 
@@ -58,8 +58,8 @@ void ExpectStickConstraintMinima(const Orbit& o, int stick) {
   const std::string suffix = ":" + std::to_string(stick + 1);
   // The grid step is 1.4e-5: the sampled minimum lies above the true one by at most
   // |G''| h^2/8 < 1e-9, and the true one is never above it.
-  const Margin& mg = Find(margins, "G" + suffix);
-  const Margin& mg1 = Find(margins, "G1" + suffix);
+  const Margin mg = Find(margins, "G" + suffix);
+  const Margin mg1 = Find(margins, "G1" + suffix);
   // For the constraint that ends the stick, the exit end (where it is zero) is excluded.
   if (g.t < d) {
     EXPECT_NEAR(mg.value, g.value, 1e-8);
@@ -95,7 +95,7 @@ TEST(SlipVelocityMargin, IsTheInteriorMinimumOfTheSignedVelocity) {
   }
   ASSERT_GT(t_min, 0.0);
   o.durations[0] = t_min + 0.3;
-  const Margin& m = Find(AdmissibilityMargins(o), "velocity:1");
+  const Margin m = Find(AdmissibilityMargins(o), "velocity:1");
   const Sampled sampled = SampledMinimum(v2, t_min - h, t_min + h, 2000);
   EXPECT_NEAR(m.value, sampled.value, 1e-10);
   EXPECT_NEAR(m.t, sampled.t, 1e-6);
@@ -106,7 +106,7 @@ TEST(Margins, SmallestIsTheDistanceToTheNearestChangeOfType) {
   // Section 4.1 sits on the boundary between nonsticking and sticking orbits (ERRATA): its
   // smallest margin is the force at the stop, barely above eta u_r.
   const Orbit o = SolvedPreset("paper-4.1");
-  const Margin& smallest = SmallestMargin(AdmissibilityMargins(o));
+  const Margin smallest = SmallestMargin(AdmissibilityMargins(o));
   EXPECT_EQ(smallest.Name(), "reversal:1");
   EXPECT_GT(smallest.value, 0.0);
   EXPECT_LT(smallest.value, 1e-3);

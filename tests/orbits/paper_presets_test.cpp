@@ -112,7 +112,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(PaperOrbits, Section52AtThePrintedDataLeavesItsStickWhereGIsNegative) {
   const Orbit o = Solve("paper-5.2", false);
   const std::vector<Margin> margins = AdmissibilityMargins(o);
-  const Margin& smallest = SmallestMargin(margins);
+  const Margin smallest = SmallestMargin(margins);
   EXPECT_EQ(smallest.Name(), "G:3");
   EXPECT_NEAR(smallest.value, -0.007, 1e-3);
   const Verification v = VerifyOrbit(o);

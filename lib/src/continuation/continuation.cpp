@@ -191,9 +191,9 @@ struct Continuation::State {
     return monitor ? monitor->Evaluate(x) : Eigen::VectorXd();
   }
 
-  bool Admissible(const Eigen::VectorXd& tests, const std::vector<TestFunctionInfo>& info) const {
-    for (int k = 0; k < tests.size(); ++k) {
-      if (info[k].terminal && std::isfinite(tests(k)) && tests(k) <= 0.0) return false;
+  bool Admissible(const Eigen::VectorXd& values, const std::vector<TestFunctionInfo>& info) const {
+    for (int k = 0; k < values.size(); ++k) {
+      if (info[k].terminal && std::isfinite(values(k)) && values(k) <= 0.0) return false;
     }
     return true;
   }
@@ -348,6 +348,7 @@ bool Continuation::Step() {
   }
   for (int k = 0; k < static_cast<int>(branch_.test_functions.size()); ++k) {
     const TestFunctionInfo& info = branch_.test_functions[k];
+    if (!info.detect) continue;
     events.push_back({info.type, info.name, [k](const State::Sample& s) { return s.tests(k); }, false,
                       info.terminal && !o.continue_past_terminal});
   }
@@ -409,7 +410,11 @@ bool Continuation::Step() {
       ok = false;
       p = b;
     }
-    located.push_back({s_star, &e, *p, e.g(*p), ok, hi - lo});
+    const double value = e.g(*p);
+    // A sign change through a pole (a test function that blows up, as a saltation matrix does
+    // where an event becomes tangent) is no zero: the located value is large, not small.
+    if (ok && !e.sign_only && std::abs(value) > std::max(std::abs(ga), std::abs(gb))) continue;
+    located.push_back({s_star, &e, *p, value, ok, hi - lo});
   }
   // In arclength order; events within a few location tolerances of each other are one point
   // (a fold where a stop degenerates, say) and come in a fixed order, whatever the step size.

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/orbits/stability.hpp"
+
 namespace stickslip {
 
 namespace ov = orbit_variables;
@@ -28,12 +30,32 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : syst
     const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
     info_.push_back({"margin:" + m.Name(), OrbitTypeChangeCode(m, mode), true});
   }
+  // Stability: recorded at every point; the multipliers through -1 and the unit circle are events.
+  for (int k = 1; k <= 4; ++k) {
+    info_.push_back({fmt::format("floquet:mu{}_re", k), "", false, false});
+    info_.push_back({fmt::format("floquet:mu{}_im", k), "", false, false});
+  }
+  info_.push_back({"stable", "", false, false});
+  info_.push_back({"floquet:det(M-I)", "", false, false});  // zero at a fold (LP)
+  info_.push_back({"floquet:det(M+I)", "PD", false, true});
+  info_.push_back({"floquet:torus", "TR", false, true});
 }
 
 Eigen::VectorXd OrbitMonitor::Evaluate(const Eigen::VectorXd& u) const {
-  const std::vector<Margin> margins = AdmissibilityMargins(system_.ToOrbit(u));
-  Eigen::VectorXd values(static_cast<int>(margins.size()));
-  for (std::size_t k = 0; k < margins.size(); ++k) values(static_cast<int>(k)) = margins[k].value;
+  const Orbit orbit = system_.ToOrbit(u);
+  const std::vector<Margin> margins = AdmissibilityMargins(orbit);
+  const Stability stability = StabilityOf(orbit);
+  Eigen::VectorXd values(static_cast<int>(info_.size()));
+  int k = 0;
+  for (const Margin& m : margins) values(k++) = m.value;
+  for (const std::complex<double>& mu : stability.multipliers) {
+    values(k++) = mu.real();
+    values(k++) = mu.imag();
+  }
+  values(k++) = stability.stable ? 1.0 : 0.0;
+  values(k++) = stability.fold_test;
+  values(k++) = stability.flip_test;
+  values(k++) = stability.torus_test;
   return values;
 }
 

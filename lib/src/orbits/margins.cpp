@@ -119,7 +119,7 @@ std::vector<Margin> AdmissibilityMargins(const Orbit& orbit) {
   return margins;
 }
 
-const Margin& SmallestMargin(const std::vector<Margin>& margins) {
+Margin SmallestMargin(const std::vector<Margin>& margins) {
   return *std::min_element(margins.begin(), margins.end(),
                            [](const Margin& a, const Margin& b) { return a.value < b.value; });
 }

@@ -14,6 +14,7 @@ struct TestFunctionInfo {
   std::string name;       // e.g. "G:3"
   std::string type;       // special-point code reported at a sign change, e.g. "GR"
   bool terminal = false;  // the branch ends there unless told to continue past such points
+  bool detect = true;     // false: a value recorded at every point, never an event
 };
 
 class Monitor {

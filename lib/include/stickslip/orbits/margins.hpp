@@ -52,7 +52,8 @@ struct Margin {
 
 std::vector<Margin> AdmissibilityMargins(const Orbit& orbit);
 
-// The margin with the smallest value (the first on ties).
-const Margin& SmallestMargin(const std::vector<Margin>& margins);
+// The margin with the smallest value (the first on ties), by value: callers often pass a
+// temporary vector.
+Margin SmallestMargin(const std::vector<Margin>& margins);
 
 }  // namespace stickslip
