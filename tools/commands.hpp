@@ -19,5 +19,6 @@ Command AddSolveCommand(CLI::App& app);
 Command AddRunCommand(CLI::App& app);
 Command AddContinueCommand(CLI::App& app);
 Command AddCheckCommand(CLI::App& app);
+Command AddSweepCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
-# run file of continuation-scripts/ into results/, and regenerates results/paper-table.md.
+# run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
+# and regenerates the tables (results/paper-table.md, results/runs.md) and figures.
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 stickslip_install_packages
@@ -8,5 +9,10 @@ stickslip_build "$STICKSLIP_ROOT/build/release" -DCMAKE_BUILD_TYPE=Release
 bin="$STICKSLIP_ROOT/build/release/tools/stickslip"
 cd "$STICKSLIP_ROOT"
 "$bin" run --results results continuation-scripts/*.toml
+# Brute-force diagrams over the forcing frequency, beside the continued branches.
+mkdir -p results/sweeps
+"$bin" sweep --preset paper-4.1 --from 0.55 --to 0.69 --steps 56 --output results/sweeps/paper-4.1-omega.csv
+"$bin" sweep --preset paper-5.1 --from 0.55 --to 0.6 --steps 50 --output results/sweeps/paper-5.1-omega.csv
+"$bin" sweep --preset paper-6 --from 0.54 --to 0.58 --steps 40 --output results/sweeps/paper-6-omega.csv
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/summarize_runs.py results

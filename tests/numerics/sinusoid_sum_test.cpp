@@ -65,6 +65,14 @@ TEST(SinusoidSumZeros, FindsAZeroSoonAfterAStartingZeroWhenCurvatureOpposesSlope
   EXPECT_NEAR(zeros[0].t, 2.0 * std::atan(0.2), 1e-13);
 }
 
+TEST(SinusoidSumZeros, ReportsAZeroThatIsDueAtOnce) {
+  // f(0) = 3e-12, within the touch level, and decreasing: the zero 3e-12 later is not skipped.
+  const SinusoidSum f(3e-12, 0.0, {{1.0, 0.0, -1.0}});  // 3e-12 - sin t
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 1.0, 5);
+  ASSERT_EQ(zeros.size(), 1u);
+  EXPECT_NEAR(zeros[0].t, 3e-12, 1e-15);
+}
+
 TEST(SinusoidSumZeros, HandlesIncommensurateFrequenciesAndDrift) {
   // f = 0.3 + 0.05 t + cos(sqrt2 t) - 0.7 sin(t/3): compare with a fine scan for sign changes.
   const SinusoidSum f(0.3, 0.05, {{std::sqrt(2.0), 1.0, 0.0}, {1.0 / 3.0, 0.0, -0.7}});

@@ -24,10 +24,21 @@ const char* ToString(SegmentEnd end) {
   return "horizon";
 }
 
+namespace {
+
+// An x2' within rounding of zero is a state at rest: a sampled state at a stop carries ~1e-15,
+// and a slip started from it would miss the stop that is due at once.
+bool AtRest(const State& x) { return std::abs(x(3)) <= 1e-12 * (1.0 + x.head<3>().lpNorm<Eigen::Infinity>()); }
+
+}  // namespace
+
 Mode InitialMode(const State& x0, double phi, const Parameters& p) {
-  if (x0(3) < 0.0) return Mode::kSlipNegative;
-  if (x0(3) > 0.0) return Mode::kSlipPositive;
-  return ModeFromRest(x0, phi, p);
+  if (AtRest(x0)) {
+    State rest = x0;
+    rest(3) = 0.0;
+    return ModeFromRest(rest, phi, p);
+  }
+  return x0(3) < 0.0 ? Mode::kSlipNegative : Mode::kSlipPositive;
 }
 
 namespace {
@@ -103,7 +114,7 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
   double t = 0.0;
   State x = x0;
   Mode mode = InitialMode(x0, phi, p);
-  if (mode == Mode::kStick) x(3) = 0.0;
+  if (AtRest(x0)) x(3) = 0.0;
   while (true) {
     const double phase = p.omega * t + phi;
     const double horizon = options.duration - t;

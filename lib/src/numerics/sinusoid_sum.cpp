@@ -197,6 +197,13 @@ std::vector<Zero> Zeros(const SinusoidSum& f, double a, double b, int max_count,
   const ZeroFinder finder(f, options);
   double start = a;
   if (finder.AtZeroLevel(a)) {
+    // At the touch level but above rounding, and heading for zero (f f' < 0): the zero is due
+    // at once, not behind us (a state sampled a hair before a stop).
+    const SinusoidSum::Jet jet = f.JetAt(a);
+    if (jet.value * jet.slope < 0.0 && std::abs(jet.value) > 1e-13 * f.Scale()) {
+      zeros.push_back({std::min(b, a - jet.value / jet.slope), ZeroKind::kCrossing});
+      return zeros;
+    }
     start = a + finder.ExclusionAfterZero(a);
     if (start >= b) return zeros;
   }

@@ -64,7 +64,8 @@ struct SimulationResult {
   std::string message;              // why it stopped early, if it did
 };
 
-// Initial mode from a state: the sign of x2', or Coulomb's law at rest when x2' = 0.
+// Initial mode from a state: the sign of x2', or Coulomb's law at rest when x2' = 0 (to
+// rounding: |x2'| <= 1e-12 (1 + |(x1, x2, x1')|)).
 Mode InitialMode(const State& x0, double phi, const Parameters& p);
 
 // The exact event-driven simulator. Every stop and stick exit is located to

@@ -58,8 +58,9 @@ struct ZeroSearchOptions {
 };
 
 // The zeros of f in (a, b], in increasing order, at most max_count of them. A zero at a itself
-// (f(a) = 0, as for x2' at the start of a slip) is not reported; the neighbourhood where the
-// Taylor bound proves f has no other zero is skipped. Every zero of f in (a, b] whose
+// (f(a) = 0 to the touch level, as for x2' at the start of a slip, and f moving away from zero)
+// is not reported; the neighbourhood where the Taylor bound proves f has no other zero is
+// skipped. If f(a) is at the touch level but moving towards zero, that zero is reported at once. Every zero of f in (a, b] whose
 // multiplicity is odd is found; a zero of even multiplicity is found as a touch when the
 // extremum lies within touch_tolerance of zero.
 std::vector<Zero> Zeros(const SinusoidSum& f, double a, double b, int max_count,
