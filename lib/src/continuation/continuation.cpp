@@ -177,12 +177,13 @@ struct Continuation::State {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(x.size());
     rhs(x.size() - 1) = 1.0;
     *t = solver->Solve(rhs);
+    // With A = [J; r^T] and A t~ = e (so r.t~ = 1), the rank-one update to B = [J; t^T],
+    // t = t~/|t~|, gives det B = det A (1 + (t - r).t~) = det A |t~|: one factorisation serves.
+    *sign = solver->DeterminantSign();
     *t /= t->norm();
-    if (t->dot(reference) < 0.0) *t = -*t;
-    if (!solver->Factorize(AppendRow(j, *t))) {
-      *sign = 0;
-    } else {
-      *sign = solver->DeterminantSign();
+    if (t->dot(reference) < 0.0) {
+      *t = -*t;
+      *sign = -*sign;
     }
     return true;
   }

@@ -33,6 +33,10 @@ int SlipDirection(Mode mode) {
   return 0;
 }
 
+Eigen::Matrix4d TransitionMatrix(Mode mode, double s, const Parameters& p) {
+  return mode == Mode::kStick ? StickTransition(p.chi, s) : SlipTransition(p.chi, p.eta, s);
+}
+
 FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                     const Parameters& p) {
   // The parameters enter Q, d0, omega_j and Lambda in nested ways: forward-mode automatic
@@ -49,9 +53,7 @@ FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase,
     out.state(i) = end(i).value();
     out.d_parameters.row(i) = end(i).derivatives().transpose();
   }
-  // The flow is affine in the start state, X(s) = H(s) (X0 - ...) + ...: its derivative is the
-  // transition matrix H(s) of a slip (eq. 5, 55) or Gamma(s) of a stick (eq. 10, 58).
-  out.d_start = mode == Mode::kStick ? StickTransition(p.chi, s) : SlipTransition(p.chi, p.eta, s);
+  out.d_start = TransitionMatrix(mode, s, p);
   // The phase enters through F only: dX/dpsi = dF(s)/dpsi - H(s) dF(0)/dpsi (eq. 5); a stick
   // does not feel the forcing (eq. 9).
   out.d_phase.setZero();

@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "stickslip/model/events.hpp"
-#include "stickslip/model/local_derivatives.hpp"
 
 namespace stickslip {
 
@@ -16,6 +15,42 @@ namespace ov = orbit_variables;
 const char* ToString(Shooting s) { return s == Shooting::kSingle ? "single" : "multiple"; }
 
 namespace {
+
+// A scalar equation and its gradient with respect to the state at the segment end, the forcing
+// phase there and the five parameters.
+struct LocalGradient {
+  double value = 0.0;
+  Eigen::Vector4d d_state = Eigen::Vector4d::Zero();
+  double d_phase = 0.0;
+  Eigen::Matrix<double, 1, kParameterCount> d_parameters = Eigen::Matrix<double, 1, kParameterCount>::Zero();
+};
+
+// The end conditions with their exact gradients, written out (they are linear in the state).
+// x2' = 0 at a stop (eq. 14, 16, 30).
+LocalGradient StopVelocity(const State& x) { return {x(3), Eigen::Vector4d::UnitW()}; }
+
+// x2'' = -chi eta (x2 - x1) + eta u + cos(psi), u = -sign(x2') u_s (eq. 2): zero at an abnormal
+// stop (eq. 18, 23).
+LocalGradient SlipAcceleration(Mode mode, const State& x, double phase, const Parameters& p) {
+  const double u = -SlipDirection(mode) * p.u_s;
+  LocalGradient g;
+  g.value = Acceleration(mode, x, phase, p)(1);
+  g.d_state << p.chi * p.eta, -p.chi * p.eta, 0.0, 0.0;
+  g.d_phase = -std::sin(phase);
+  g.d_parameters << -p.eta * (x(1) - x(0)), -p.chi * (x(1) - x(0)) + u, 0.0, -SlipDirection(mode) * p.eta, 0.0;
+  return g;
+}
+
+// s - side eta u_r with s = chi eta (x2 - x1) - cos(psi): zero at a stick exit into slip- (side
+// +1, G1 = 0) or slip+ (side -1, G = 0) (eq. 11, 32, 35, 37).
+LocalGradient StickExit(const State& x, double phase, const Parameters& p, double side) {
+  LocalGradient g;
+  g.value = StickForce(x, phase, p) - side * p.eta * p.u_r;
+  g.d_state << -p.chi * p.eta, p.chi * p.eta, 0.0, 0.0;
+  g.d_phase = std::sin(phase);
+  g.d_parameters << p.eta * (x(1) - x(0)), p.chi * (x(1) - x(0)) - side * p.u_r, 0.0, 0.0, -side * p.eta;
+  return g;
+}
 
 int AbnormalStops(const Signature& signature) {
   int count = 0;
@@ -120,35 +155,21 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
     dphase(omega_column) += d;
     phase += p.omega * d;
 
-    // End condition of segment i; gradients by automatic differentiation only for a Jacobian.
-    auto end_condition = [&](auto&& f) {
-      if (jacobian) {
-        add_equation(Differentiate(f, x, phase, p));
-      } else {
-        (*residual)(row++) = f(x, phase, p);
-      }
-    };
-    auto velocity = [](const auto& s, const auto&, const auto&) -> Scalar<decltype(s(3))> { return s(3); };
+    // End condition of segment i.
     switch (signature_.EndKind(i)) {
       case SegmentEndKind::kAbnormalStop:
-        end_condition(velocity);
-        end_condition([mode](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
-          return Acceleration(mode, s, ph, q)(1);
-        });
+        add_equation(StopVelocity(x));
+        add_equation(SlipAcceleration(mode, x, phase, p));
         break;
       case SegmentEndKind::kReversal:
       case SegmentEndKind::kStickEntry:
-        end_condition(velocity);
+        add_equation(StopVelocity(x));
         break;
-      case SegmentEndKind::kExitToNegative:  // s = +eta u_r: G1 = 0
-        end_condition([](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
-          return -StickConstraintG1(s, ph, q);
-        });
+      case SegmentEndKind::kExitToNegative:
+        add_equation(StickExit(x, phase, p, +1.0));
         break;
-      case SegmentEndKind::kExitToPositive:  // s = -eta u_r: G = 0
-        end_condition([](const auto& s, const auto& ph, const auto& q) -> Scalar<decltype(ph)> {
-          return StickConstraintG(s, ph, q);
-        });
+      case SegmentEndKind::kExitToPositive:
+        add_equation(StickExit(x, phase, p, -1.0));
         break;
     }
   }

@@ -39,12 +39,11 @@ Stability StabilityOf(const Orbit& orbit) {
   double phase = orbit.phi;
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   for (std::size_t i = 0; i < modes.size(); ++i) {
-    const FlowDerivatives f = FlowWithDerivatives(modes[i], x, phase, durations[i], p);
-    x = f.state;
+    x = Flow(modes[i], x, phase, durations[i], p);
     phase += p.omega * durations[i];
     const Mode next = modes[(i + 1) % modes.size()];
     result.one_sided = result.one_sided || next == modes[i];
-    m = SaltationMatrix(modes[i], next, x, phase, p) * f.d_start * m;
+    m = SaltationMatrix(modes[i], next, x, phase, p) * TransitionMatrix(modes[i], durations[i], p) * m;
   }
   result.monodromy = m;
   const Eigen::EigenSolver<Eigen::Matrix4d> eigen(m, /*computeEigenvectors=*/false);

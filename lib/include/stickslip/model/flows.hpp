@@ -139,6 +139,10 @@ struct FlowDerivatives {
 FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                     const Parameters& p);
 
+// dX(s)/dX(0): the flow is affine in the start state, with the transition matrix H(s) of a slip
+// (eq. 5, 55) or Gamma(s) of a stick (eq. 10, 58) as its linear part.
+Eigen::Matrix4d TransitionMatrix(Mode mode, double s, const Parameters& p);
+
 // Right-hand side of eq. (2) in a mode, at a state and forcing phase: the accelerations
 // (x1'', x2''). In a stick x2'' = 0 (eq. 9).
 template <typename T>
