@@ -41,6 +41,7 @@ class PaperBranch : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PaperBranch, StartsOnThePaperOrbitWhenTheRunKeepsThePresetUnknowns) {
   const RunFile run = ReadRunFile(GetParam());
+  if (run.preset.empty()) GTEST_SKIP() << "the run restarts from an earlier run's point";
   if (!run.free.empty() || !run.fix.empty()) GTEST_SKIP() << "the run solves for other unknowns";
   const PaperPreset& preset = *FindPaperPreset(run.preset);
   const Orbit guess = preset.Guess();
@@ -148,6 +149,20 @@ TEST_P(PaperBranch, EverySpecialPointIsVerifiedIndependently) {
     EXPECT_LT(std::abs(m->value), 1e-9) << GetParam() << " " << s.type << " " << name;
     ExpectSimulatorShows(o, *m);
   }
+}
+
+TEST(RestartedBranch, StartsOnTheLabelledPointOfTheEarlierRun) {
+  const fs::path source(STICKSLIP_SOURCE_DIR);
+  const OrbitBranch earlier = Continue((source / "continuation-scripts" / "paper-5.1-omega-up.toml").string());
+  const OrbitBranch restarted = Continue((source / "continuation-scripts" / "paper-5.1-u_r-from-uz.toml").string());
+  // UZ5 is the second UZ point (omega = 0.58 after the fold).
+  std::vector<const SpecialPoint*> uz;
+  for (const SpecialPoint& s : earlier.branch.special_points) {
+    if (s.type == "UZ") uz.push_back(&s);
+  }
+  ASSERT_EQ(uz.size(), 2u);
+  const Eigen::VectorXd expected = orbit_variables::Pack(earlier.orbits[uz[1]->point]);
+  EXPECT_LT((orbit_variables::Pack(restarted.orbits.front()) - expected).lpNorm<Eigen::Infinity>(), 1e-9);
 }
 
 TEST_P(PaperBranch, LocatesSpecialPointsIndependentlyOfTheStepSize) {
