@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/random_flow_cases.hpp"
 #include "support/test_names.hpp"
 
 #include "stickslip/model/flows.hpp"
@@ -35,37 +36,10 @@ constexpr int kCasesPerMode = 200;
 constexpr double kResonanceGap = 0.05;
 constexpr double kMaxDuration = 12.0;
 
-struct FlowCase {
-  State start;
-  double phase = 0.0;
-  double s = 0.0;
-  Parameters p;
-};
-
-// Random valid parameters at least kResonanceGap from both natural frequencies, a start state
-// in [-2, 2]^4 (x2' too in a stick: eq. (9) lets x2 drift, and the closed form carries that
-// drift, so d/dx2'(0) is exercised), a phase in [0, 2 pi), s in [0, kMaxDuration].
-std::vector<FlowCase> RandomCases(int count, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
-  std::vector<FlowCase> cases;
-  while (static_cast<int>(cases.size()) < count) {
-    FlowCase c;
-    c.p = {in(0.1, 0.9), in(0.5, 5.0), in(0.2, 2.0), in(0.01, 0.5), 0.0};
-    c.p.u_r = c.p.u_s * in(1.0, 3.0);
-    if (Validate(c.p)) continue;
-    const auto [omega1, omega2] = NaturalFrequencies(c.p.chi, c.p.eta);
-    if (std::abs(c.p.omega - omega1) <= kResonanceGap ||
-        std::abs(c.p.omega - omega2) <= kResonanceGap) {
-      continue;
-    }
-    for (int i = 0; i < 4; ++i) c.start(i) = in(-2.0, 2.0);  // one draw each, in order
-    c.phase = in(0.0, 2.0 * std::numbers::pi);
-    c.s = in(0.0, kMaxDuration);
-    cases.push_back(c);
-  }
-  return cases;
+// x2' in a stick too: eq. (9) lets x2 drift, and the closed form carries that drift, so
+// d/dx2'(0) is exercised.
+std::vector<FlowCase> RandomCases(Mode mode, int count, unsigned seed) {
+  return RandomFlowCases(mode, count, seed, {kResonanceGap, kMaxDuration, false});
 }
 
 enum Block { kState, kStart, kElapsed, kPhase, kParameters, kBlockCount };
@@ -102,7 +76,7 @@ class FlowDerivativesAgainstOdeint : public ::testing::TestWithParam<Mode> {};
 TEST_P(FlowDerivativesAgainstOdeint, MatchesTheVariationalEquationsInEveryBlock) {
   const Mode mode = GetParam();
   std::array<double, kBlockCount> worst{};
-  for (const FlowCase& c : RandomCases(kCasesPerMode, SeedFor(mode, 77014u))) {
+  for (const FlowCase& c : RandomCases(mode, kCasesPerMode, SeedFor(mode, 77014u))) {
     const FlowDerivatives closed = FlowWithDerivatives(mode, c.start, c.phase, c.s, c.p);
     const FlowDerivatives numeric = IntegrateModeWithDerivatives(mode, c.start, c.phase, c.s, c.p);
     const std::array<double, kBlockCount> difference = BlockDifferences(closed, numeric);
@@ -125,7 +99,7 @@ TEST_P(FlowDerivativesAgainstOdeint, DetectsAPerturbationOfTheStiffnessRatio) {
   const Mode mode = GetParam();
   int detected = 0;
   int long_enough = 0;
-  for (const FlowCase& c : RandomCases(50, SeedFor(mode, 4031u))) {
+  for (const FlowCase& c : RandomCases(mode, 50, SeedFor(mode, 4031u))) {
     if (c.s < 1.0) continue;
     ++long_enough;
     Parameters perturbed = c.p;
@@ -139,7 +113,7 @@ TEST_P(FlowDerivativesAgainstOdeint, DetectsAPerturbationOfTheStiffnessRatio) {
 
 TEST_P(FlowDerivativesAgainstOdeint, IsTheIdentityAtZeroDuration) {
   const Mode mode = GetParam();
-  for (FlowCase c : RandomCases(10, SeedFor(mode, 11u))) {
+  for (FlowCase c : RandomCases(mode, 10, SeedFor(mode, 11u))) {
     c.s = 0.0;
     const FlowDerivatives numeric = IntegrateModeWithDerivatives(mode, c.start, c.phase, c.s, c.p);
     EXPECT_EQ(numeric.state, c.start);

@@ -6,34 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include "support/random_flow_cases.hpp"
 #include "support/test_names.hpp"
 
 namespace stickslip {
 namespace {
 
-struct FlowCase {
-  Mode mode;
-  State start;
-  double phase;
-  double s;
-  Parameters p;
-};
-
 std::vector<FlowCase> RandomCases(Mode mode, int count) {
-  std::mt19937 rng(static_cast<unsigned>(7 + static_cast<int>(mode)));
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<FlowCase> cases;
-  while (static_cast<int>(cases.size()) < count) {
-    Parameters p{0.1 + 0.8 * u(rng), 0.5 + 4.5 * u(rng), 0.2 + 1.8 * u(rng), 0.01 + 0.4 * u(rng), 0.0};
-    p.u_r = p.u_s * (1.0 + 2.0 * u(rng));
-    if (Validate(p)) continue;
-    // Keep away from resonance, where Q and its derivatives blow up and differences lose digits.
-    const auto [w1, w2] = NaturalFrequencies(p.chi, p.eta);
-    if (std::abs(p.omega - w1) < 0.05 || std::abs(p.omega - w2) < 0.05) continue;
-    State x(4 * u(rng) - 2, 4 * u(rng) - 2, 4 * u(rng) - 2, mode == Mode::kStick ? 0.0 : 4 * u(rng) - 2);
-    cases.push_back({mode, x, 6.28 * u(rng), 12.0 * u(rng), p});
-  }
-  return cases;
+  return RandomFlowCases(mode, count, 7u + static_cast<unsigned>(mode));
 }
 
 class FlowDerivativesTest : public ::testing::TestWithParam<Mode> {};

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/random_flow_cases.hpp"
 #include "support/test_names.hpp"
 
 #include "stickslip/model/flows.hpp"
@@ -26,32 +27,9 @@ namespace {
 constexpr double kTolerance = 1e-10;
 constexpr int kCasesPerMode = 200;
 
-struct FlowCase {
-  State start;
-  double phase = 0.0;
-  double s = 0.0;
-  Parameters p;
-};
-
-// Random valid parameters (Validate rejects omega at a natural frequency), a start state in
-// [-2, 2]^4 (x2' = 0 in a stick, as in every real stick), a phase in [0, 2 pi), s in [0, 15].
 std::vector<FlowCase> RandomCases(Mode mode, int count, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
-  std::vector<FlowCase> cases;
-  while (static_cast<int>(cases.size()) < count) {
-    FlowCase c;
-    c.p = {in(0.1, 0.9), in(0.5, 5.0), in(0.2, 2.0), in(0.01, 0.5), 0.0};
-    c.p.u_r = c.p.u_s * in(1.0, 3.0);
-    if (Validate(c.p)) continue;
-    for (int i = 0; i < 4; ++i) c.start(i) = in(-2.0, 2.0);  // one draw each, in order
-    if (mode == Mode::kStick) c.start(3) = 0.0;
-    c.phase = in(0.0, 2.0 * std::numbers::pi);
-    c.s = in(0.0, 15.0);
-    cases.push_back(c);
-  }
-  return cases;
+  // Validate alone keeps omega off the natural frequencies; durations up to 15.
+  return RandomFlowCases(mode, count, seed, {0.0, 15.0, true});
 }
 
 // |a - b|_inf relative to the size of the motion, max(1, |start|_inf, |b|_inf).
