@@ -20,5 +20,6 @@ Command AddRunCommand(CLI::App& app);
 Command AddContinueCommand(CLI::App& app);
 Command AddCheckCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
+Command AddExportCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

@@ -8,6 +8,7 @@ STICKSLIP_PACKAGES=(
   libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev
   libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev
+  auto-07p python3-numpy python3-matplotlib
 )
 
 stickslip_install_packages() {

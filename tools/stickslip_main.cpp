@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
       "stickslip");
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddCheckCommand(app),
-                                         AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app)};
+                                         AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app),
+                                         AddExportCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep, export", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

@@ -26,6 +26,29 @@ std::vector<State> Orbit::SegmentStates() const {
   return states;
 }
 
+std::vector<State> Orbit::Sample(int count) const {
+  std::vector<Mode> modes = signature.FullPeriod();
+  std::vector<double> spans = durations;
+  if (signature.antisymmetric()) spans.insert(spans.end(), durations.begin(), durations.end());
+  std::vector<State> samples;
+  State start = InitialState();
+  double t0 = 0.0;
+  double phase = phi;
+  std::size_t segment = 0;
+  const double period = Period();
+  for (int k = 0; k < count; ++k) {
+    const double t = period * k / (count - 1);
+    while (segment + 1 < modes.size() && t > t0 + spans[segment]) {
+      start = Flow(modes[segment], start, phase, spans[segment], parameters);
+      t0 += spans[segment];
+      phase += parameters.omega * spans[segment];
+      ++segment;
+    }
+    samples.push_back(Flow(modes[segment], start, phase, t - t0, parameters));
+  }
+  return samples;
+}
+
 namespace orbit_variables {
 
 std::string Name(int n, int index) {

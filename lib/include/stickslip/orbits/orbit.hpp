@@ -35,6 +35,10 @@ struct Orbit {
   // Start state of each listed segment and the state at the end of the last one (n + 1), by the
   // closed-form flows.
   std::vector<State> SegmentStates() const;
+  // The state at `count` >= 2 equally spaced times over one whole period (the listed segments,
+  // then their mirror images for an antisymmetric orbit), from the closed-form flows of the
+  // orbit's own segments: it follows the orbit even where it is not a motion of the system.
+  std::vector<State> Sample(int count) const;
 };
 
 // Index arithmetic on the full variable vector of an n-segment signature.

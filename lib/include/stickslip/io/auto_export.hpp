@@ -1,0 +1,25 @@
+// Export of a run's results to AUTO-07p's bifurcation (b.) and solution (s.) files, so that
+// AUTO's own tools (its Python parsers, @pp, plotting) read stickslip's branches.
+//
+// b.: one line per branch point, "BR PT TY LAB" and then the continuation parameter, x10, x20,
+// v10, phi, d1..dn. PT is negative where the orbit is stable, as AUTO marks it. TY uses AUTO's
+// codes: LP 2, BP 1, UZ -4, EP 9, PD 7, TR 8. stickslip's orbit-type changes (GR, T0, S0, NS, SK)
+// have no AUTO code and are written as user points (-4); their type stays in special-points.csv.
+// s.: for each labelled point, the orbit over one period at `samples` times (t scaled to
+// [0, 1], U = x1, x2, x1', x2'), PAR(1..5) = chi, eta, omega, u_s, u_r and PAR(11) = the period.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace stickslip {
+
+struct AutoFiles {
+  std::string b;
+  std::string s;
+};
+
+// Reads results/<run>/branch.csv and summary.json. Throws std::runtime_error naming the file.
+AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples = 101);
+
+}  // namespace stickslip

@@ -1,0 +1,57 @@
+// stickslip export --auto: a run's results as AUTO-07p's b. and s. files.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/auto_export.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+struct ExportArgs {
+  std::string directory;
+  bool auto07p = false;
+  int samples = 101;
+};
+
+int RunExport(const ExportArgs& args) {
+  namespace fs = std::filesystem;
+  if (!args.auto07p) throw InputError("format is missing: valid --auto");
+  const fs::path dir(args.directory);
+  if (!fs::is_regular_file(dir / "branch.csv") || !fs::is_regular_file(dir / "summary.json")) {
+    throw InputError(fmt::format("results directory = '{}' is invalid: valid a directory results/<run>/ with branch.csv "
+                                 "and summary.json",
+                                 args.directory));
+  }
+  if (args.samples < 2 || args.samples > 100000) {
+    throw InputError(fmt::format("samples = {} is invalid: valid range 2 <= samples <= 100000", args.samples));
+  }
+  const AutoFiles files = ExportAuto(dir, args.samples);
+  const std::string run = fs::absolute(dir).lexically_normal().filename().string().empty()
+                              ? fs::absolute(dir).lexically_normal().parent_path().filename().string()
+                              : fs::absolute(dir).lexically_normal().filename().string();
+  WriteFileAtomically(dir / ("b." + run), files.b);
+  WriteFileAtomically(dir / ("s." + run), files.s);
+  fmt::print("wrote {} and {}\n", (dir / ("b." + run)).string(), (dir / ("s." + run)).string());
+  return kExitOk;
+}
+
+}  // namespace
+
+Command AddExportCommand(CLI::App& app) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "export", "Export a run's results (results/<run>/) as AUTO-07p's b.<run> and s.<run> files, beside them.");
+  cmd->add_option("directory", args->directory, "results/<run>/ of a continuation run")->required();
+  cmd->add_flag("--auto", args->auto07p, "AUTO-07p's bifurcation (b.) and solution (s.) files");
+  cmd->add_option("--samples", args->samples, "orbit samples per labelled solution (2 to 1e5)")->capture_default_str();
+  return {cmd, [args] { return RunExport(*args); }};
+}
+
+}  // namespace stickslip::cli
