@@ -15,4 +15,5 @@ mkdir -p results/sweeps
 "$bin" sweep --preset paper-5.1 --from 0.55 --to 0.6 --steps 50 --output results/sweeps/paper-5.1-omega.csv
 "$bin" sweep --preset paper-6 --from 0.54 --to 0.58 --steps 40 --output results/sweeps/paper-6-omega.csv
 tools/paper_table.sh "$bin"
+/usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results

@@ -54,7 +54,7 @@ int RunSweep(const SweepArgs& args) {
     if (const auto invalid = Validate(p)) throw InputError(invalid->Message());
   }
   const std::vector<SweepPoint> points = Sweep(input.parameters, input.initial_state, input.phi, options);
-  WriteFileAtomically(args.output, SweepCsv(points, *parameter));
+  WriteFileAtomically(args.output, SweepCsv(points, *parameter, input.phi));
   int periodic = 0;
   for (const SweepPoint& p : points) periodic += p.period > 0;
   fmt::print("sweep {} from {} to {} and back: {} points, {} periodic; written to {}\n", args.parameter,
@@ -82,7 +82,7 @@ Command AddSweepCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--periods", args->periods, "forcing periods recorded per point (1 to 1e5)")->capture_default_str();
   cmd->add_option("--output", args->output,
-                  "CSV file: direction,step,<parameter>,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period")
+                  "CSV file: direction,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period")
       ->required();
   return {cmd, [args] { return RunSweep(*args); }};
 }

@@ -69,13 +69,14 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const State& start, double
   return up;
 }
 
-std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter) {
-  std::string out = fmt::format("direction,step,{},k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period\n",
-                                ToString(parameter));
+std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section) {
+  std::string out = fmt::format(
+      "direction,step,{},section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period\n", ToString(parameter));
   for (const SweepPoint& p : points) {
     for (std::size_t k = 0; k < p.section.size(); ++k) {
       const State& x = p.section[k];
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", p.direction > 0 ? "up" : "down", p.step, p.value, k,
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", p.direction > 0 ? "up" : "down", p.step, p.value,
+                         phi_section, k,
                          x(0), x(1), x(2), x(3), p.stops_per_period, p.sticks_per_period, p.period);
     }
   }

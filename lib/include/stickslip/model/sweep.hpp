@@ -40,8 +40,8 @@ struct SweepPoint {
 std::vector<SweepPoint> Sweep(const Parameters& base, const State& start, double phi_section,
                               const SweepOptions& options);
 
-// One CSV row per recorded section point: direction, step, <parameter>, k, x1, x2, v1, v2,
-// stops_per_period, sticks_per_period, period. Deterministic: shortest round-trip numbers.
-std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter);
+// One CSV row per recorded section point: direction, step, <parameter>, section_phase, k, x1, x2,
+// v1, v2, stops_per_period, sticks_per_period, period. Deterministic: shortest round-trip numbers.
+std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section);
 
 }  // namespace stickslip

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Smoke test of the figures: tools/plot_figures.py runs on a copy of the shipped results and
+# writes every expected PNG, non-empty, 800 x 600 pixels. (What they show is checked by eye; the
+# README embeds them.)
+set -euo pipefail
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+root=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cp -r "$root/results" "$work/results"
+rm -rf "$work/results/figures"
+/usr/bin/python3 "$root/tools/plot_figures.py" --stickslip "$bin" --results "$work/results" > /dev/null
+/usr/bin/python3 - "$work/results" <<'PY'
+import os, sys
+import matplotlib.image as image
+results = sys.argv[1]
+expected = [f"paper-{p}-phase.png" for p in ("4.1", "4.2", "5.1", "5.2", "6")]
+expected += [f"paper-{p}-velocity.png" for p in ("4.1", "4.2", "5.1", "5.2", "6")]
+expected += [f"paper-{p}-constraints.png" for p in ("5.1", "5.2", "6")]
+expected += [f"{run}-bifurcation.png" for run in sorted(os.listdir(results))
+             if os.path.isfile(os.path.join(results, run, "summary.json"))]
+for name in expected:
+    path = os.path.join(results, "figures", name)
+    assert os.path.getsize(path) > 10000, name
+    height, width = image.imread(path).shape[:2]
+    assert (width, height) == (800, 600), (name, width, height)
+print(f"{len(expected)} figures, all 800 x 600")
+PY

@@ -1,0 +1,184 @@
+#!/usr/bin/python3
+"""Figures from stickslip's output, as PNG files in <results>/figures/.
+
+For each paper example: the phase portraits (x1, x1') and (x2, x2') with the overshooting part
+(x2' > 0) drawn heavy (the paper's Figs. 2, 3, 4, 7, 10), x2'(t) (Figs. 5, 8, 11) and, for the
+sticking orbits, the stick constraints G and G1 over the stick (Figs. 6, 9, 12).
+For each continuation run in <results>/: a bifurcation diagram over the continuation parameter,
+x20 and the durations, stable solid and unstable dashed, special points marked and labelled, and
+the brute-force sweep of the family (results/sweeps/) overlaid.
+
+Usage: /usr/bin/python3 tools/plot_figures.py [--stickslip PROGRAM] [--results DIR]
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SIZE = (8, 6)  # inches, at 100 dpi: 800 x 600 pixels
+STYLE = {"slip-": dict(color="black", lw=0.8), "slip+": dict(color="black", lw=2.6),
+         "stick": dict(color="0.6", lw=1.6)}
+
+
+def save(figure, path):
+    """Writes the PNG whole or not at all, without volatile metadata."""
+    temporary = path + ".tmp.png"
+    figure.savefig(temporary, dpi=100, metadata={"Software": None})
+    plt.close(figure)
+    os.replace(temporary, path)
+    print("wrote", path)
+
+
+def runs_of(rows, key):
+    """Consecutive pieces of rows with the same value of key, the boundary row repeated."""
+    pieces, current = [], []
+    for row in rows:
+        if current and row[key] != current[-1][key]:
+            current.append(row)
+            pieces.append(current)
+            current = [row]
+        else:
+            current.append(row)
+    if current:
+        pieces.append(current)
+    return pieces
+
+
+def paper_figures(program, preset, paper_choice, out):
+    solve = [program, "solve", "--preset", preset, "--json"] + (["--paper-choice"] if paper_choice else [])
+    orbit = json.loads(subprocess.run(solve, check=True, capture_output=True, text=True).stdout)
+    p = orbit["parameters"]
+    with tempfile.TemporaryDirectory() as work:
+        series = os.path.join(work, "series.csv")
+        keys = {"chi": p["chi"], "eta": p["eta"], "omega": p["omega"], "u_s": p["u_s"], "u_r": p["u_r"],
+                "x10": orbit["x10"], "x20": orbit["x20"], "v10": orbit["v10"], "v20": 0.0, "phi": orbit["phi"]}
+        command = [program, "simulate", "--periods", "1", "--samples-per-period", "2000", "--csv", series]
+        for key, value in keys.items():
+            command += ["--set", f"{key}={value!r}"]
+        subprocess.run(command, check=True, capture_output=True)
+        rows = [{k: (v if k == "mode" else float(v)) for k, v in r.items()} for r in csv.DictReader(open(series))]
+    title = f"{preset}" + (" (paper's choice: phi held, u_r solved)" if paper_choice else "")
+    figure, axes = plt.subplots(1, 2, figsize=SIZE)
+    for piece in runs_of(rows, "mode"):
+        mode = piece[1]["mode"] if len(piece) > 1 else piece[0]["mode"]
+        axes[0].plot([r["x1"] for r in piece], [r["v1"] for r in piece], **STYLE[mode])
+        axes[1].plot([r["x2"] for r in piece], [r["v2"] for r in piece], **STYLE[mode])
+    for ax, name in zip(axes, ("1", "2")):
+        ax.set_xlabel(f"x{name}")
+        ax.set_ylabel(f"x{name}'")
+        ax.grid(alpha=0.3)
+    figure.suptitle(f"Phase portraits, {title}\nheavy: x2' > 0 (overshooting), thin: x2' < 0, grey: stick")
+    save(figure, os.path.join(out, f"{preset}-phase.png"))
+
+    figure, ax = plt.subplots(figsize=SIZE)
+    for piece in runs_of(rows, "mode"):
+        mode = piece[1]["mode"] if len(piece) > 1 else piece[0]["mode"]
+        ax.plot([r["t"] for r in piece], [r["v2"] for r in piece], **STYLE[mode])
+    ax.axhline(0.0, color="0.8", lw=0.8)
+    ax.set_xlabel("t (scaled time)")
+    ax.set_ylabel("x2'")
+    ax.set_title(f"x2'(t) over one period, {title}")
+    save(figure, os.path.join(out, f"{preset}-velocity.png"))
+
+    sticks = [piece for piece in runs_of(rows, "mode") if piece[0]["mode"] == "stick" or
+              (len(piece) > 1 and piece[1]["mode"] == "stick")]
+    if not sticks:
+        return
+    stick = sticks[0]
+    t0 = stick[0]["t"]
+    chi, eta, omega, u_r, phi = p["chi"], p["eta"], p["omega"], p["u_r"], orbit["phi"]
+    force = [chi * eta * (r["x2"] - r["x1"]) - math.cos(omega * r["t"] + phi) for r in stick]
+    figure, ax = plt.subplots(figsize=SIZE)
+    ax.plot([r["t"] - t0 for r in stick], [s + eta * u_r for s in force], label="G = chi eta (x2 - x1) - cos + eta u_r")
+    ax.plot([r["t"] - t0 for r in stick], [-s + eta * u_r for s in force], label="G1 = -chi eta (x2 - x1) + cos + eta u_r")
+    ax.axhline(0.0, color="black", lw=0.8)
+    ax.set_xlabel("time since the stick began")
+    ax.set_ylabel("constraint (eq. 35)")
+    ax.set_title(f"Stick constraints, {title}")
+    ax.legend()
+    save(figure, os.path.join(out, f"{preset}-constraints.png"))
+
+
+def section_x2(program, row, phase):
+    """x2 of the continued orbit at forcing phase `phase`: the orbit simulated from its origin
+    until omega t + phi reaches that phase (less than one period)."""
+    omega, phi = float(row["omega"]), float(row["phi"])
+    t = ((phase - phi) % (2 * math.pi)) / omega
+    with tempfile.TemporaryDirectory() as work:
+        series = os.path.join(work, "s.csv")
+        command = [program, "simulate", "--periods", repr(max(t * omega / (2 * math.pi), 1e-9)),
+                   "--samples-per-period", "1", "--csv", series, "--set", "v20=0"]
+        for key in ("chi", "eta", "omega", "u_s", "u_r", "x10", "x20", "v10", "phi"):
+            command += ["--set", f"{key}={row[key]}"]
+        subprocess.run(command, check=True, capture_output=True)
+        rows = list(csv.DictReader(open(series)))
+    return float(rows[-1]["x2"])
+
+
+def bifurcation_figure(program, results, run, out):
+    directory = os.path.join(results, run)
+    summary = json.load(open(os.path.join(directory, "summary.json")))
+    parameter = summary["parameter"]
+    rows = list(csv.DictReader(open(os.path.join(directory, "branch.csv"))))
+    special = list(csv.DictReader(open(os.path.join(directory, "special-points.csv"))))
+    durations = [c for c in rows[0] if c.startswith("d") and c[1:].isdigit()]
+    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=SIZE)
+    for index, piece in enumerate(runs_of(rows, "stable")):
+        style = "-" if piece[0]["stable"] == "1" else "--"
+        xs = [float(r[parameter]) for r in piece]
+        top.plot(xs, [float(r["x20"]) for r in piece], style, color="C0", label="x20 (orbit origin)" if index == 0 else None)
+        for k, d in enumerate(durations):
+            bottom.plot(xs, [float(r[d]) for r in piece], style, color=f"C{k + 1}", label=d if index == 0 else None)
+    for row in special:
+        if row["test_function"] in ("start", summary["termination"]):
+            continue
+        x = float(row[parameter])
+        top.plot(x, float(row["x20"]), "o", color="red", ms=4)
+        top.annotate(row["label"], (x, float(row["x20"])), textcoords="offset points", xytext=(4, 4), fontsize=8)
+    family = run.split("-")[0] + "-" + run.split("-")[1]
+    sweep = os.path.join(results, "sweeps", f"{family}-{parameter}.csv")
+    if os.path.isfile(sweep):
+        # Compare like with like: x2 at the sweep's section phase, for the brute-force motions
+        # that repeat every period and for every fifth admissible point of the branch.
+        points = [r for r in csv.DictReader(open(sweep)) if r["period"] == "1"]
+        phase = float(points[0]["section_phase"]) if points else 0.0
+        chosen = [r for r in rows[::5] if r["admissible"] == "1"]
+        top.plot([float(r[parameter]) for r in chosen], [section_x2(program, r, phase) for r in chosen], "x",
+                 color="C0", ms=5, label=f"orbit: x2 at forcing phase {phase:g}")
+        top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".", color="0.4", ms=3,
+                 label=f"brute force: x2 at forcing phase {phase:g} (period 1)")
+    top.legend(fontsize=8)
+    top.set_ylabel("x20")
+    bottom.set_ylabel("segment durations")
+    bottom.set_xlabel(parameter)
+    bottom.legend(fontsize=8)
+    top.set_title(f"{run}: {summary['signature']} (solid stable, dashed unstable)")
+    save(figure, os.path.join(out, f"{run}-bifurcation.png"))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--stickslip", default=os.path.join(ROOT, "build", "release", "tools", "stickslip"))
+    parser.add_argument("--results", default=os.path.join(ROOT, "results"))
+    args = parser.parse_args()
+    out = os.path.join(args.results, "figures")
+    os.makedirs(out, exist_ok=True)
+    for preset in ("paper-4.1", "paper-4.2", "paper-5.1", "paper-6"):
+        paper_figures(args.stickslip, preset, False, out)
+    paper_figures(args.stickslip, "paper-5.2", True, out)  # at the printed data it is no motion
+    for run in sorted(os.listdir(args.results)):
+        if os.path.isfile(os.path.join(args.results, run, "summary.json")):
+            bifurcation_figure(args.stickslip, args.results, run, out)
+
+
+if __name__ == "__main__":
+    main()
