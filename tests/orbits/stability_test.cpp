@@ -3,8 +3,10 @@
 #include "stickslip/orbits/stability.hpp"
 
 #include <algorithm>
+#include <random>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
@@ -65,10 +67,9 @@ TEST_P(FloquetMultipliers, EqualThoseOfTheFiniteDifferencePeriodMap) {
 }
 
 // Section 5.2 is taken with phi = pi/2 held (the paper's choice), since at the printed data the
-// orbit is not a motion of the system and the simulator leaves it. Section 4.2 is not here: its
-// four abnormal stops are grazings of x2' = 0, every coordinate perturbation makes one of them
-// dip and stick for an instant, and the period map has no derivative to compare with (see
-// AreOneSidedAtAbnormalStops).
+// orbit is not a motion of the system and the simulator leaves it. Section 4.2 is checked below
+// with one-sided differences: every coordinate perturbation makes one of its four abnormal stops
+// dip and stick for an instant, so central differences do not apply.
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, FloquetMultipliers,
                          ::testing::Values(std::pair{"paper-4.1", false}, std::pair{"paper-5.1", false},
                                            std::pair{"paper-5.2", true}, std::pair{"paper-6", false}),
@@ -77,6 +78,45 @@ INSTANTIATE_TEST_SUITE_P(PaperOrbits, FloquetMultipliers,
                            std::replace(s.begin(), s.end(), '.', '_');
                            return s;
                          });
+
+// Section 4.2: its abnormal stops are grazings, and the period map is differentiable only on the
+// side where every perturbed x2' stays off zero (on the other it sticks for an instant). Forward
+// differences along random directions on that side (no stick in the perturbed motion) give the
+// one-sided Jacobian, J = [J d_k][d_k]^+, whose eigenvalues the reported multipliers must be.
+TEST(FloquetMultipliers, EqualThoseOfTheOneSidedPeriodMapAtAbnormalStops) {
+  const Orbit o = Solved("paper-4.2", false);
+  const Stability s = StabilityOf(o);
+  ASSERT_TRUE(s.one_sided);
+  const double t = 0.5 * o.durations[0];
+  const Parameters& p = o.parameters;
+  const State x = Flow(o.signature.segments()[0], o.InitialState(), o.phi, t, p);
+  SimulationOptions options;
+  options.duration = o.Period();
+  auto map = [&](const State& start) { return SimulateExact(p, start, o.phi + p.omega * t, options); };
+  const State reference = map(x).segments.back().end;
+  std::mt19937 rng(42);
+  std::normal_distribution<double> normal;
+  const double h = 1e-8;
+  Eigen::MatrixXd directions(4, 0), images(4, 0);
+  for (int trial = 0; trial < 400 && directions.cols() < 12; ++trial) {
+    State d(normal(rng), normal(rng), normal(rng), normal(rng));
+    d.normalize();
+    const SimulationResult r = map(x + h * d);
+    if (std::any_of(r.segments.begin(), r.segments.end(), [](const Segment& g) { return g.mode == Mode::kStick; })) {
+      continue;
+    }
+    directions.conservativeResize(4, directions.cols() + 1);
+    images.conservativeResize(4, images.cols() + 1);
+    directions.col(directions.cols() - 1) = d;
+    images.col(images.cols() - 1) = (r.segments.back().end - reference) / h;
+  }
+  ASSERT_GE(directions.cols(), 4) << "no side without sticks found";
+  const Eigen::Matrix4d j = images * directions.transpose() * (directions * directions.transpose()).inverse();
+  const std::vector<std::complex<double>> fd = Sorted(j);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_LT(std::abs(s.multipliers[k] - fd[k]), 1e-6) << "multiplier " << k << ": " << s.multipliers[k] << " vs " << fd[k];
+  }
+}
 
 TEST(FloquetMultipliers, IncludeZeroForAStickingOrbit) {
   // During a stick the perturbation of x2' is annihilated (the saltation matrix at the entry).
