@@ -109,19 +109,22 @@ def paper_figures(program, preset, paper_choice, out):
 
 
 def section_x2(program, row, phase):
-    """x2 of the continued orbit at forcing phase `phase`: the orbit simulated from its origin
-    until omega t + phi reaches that phase (less than one period)."""
+    """x2 of the continued orbit at forcing phase `phase`: one period simulated from its origin,
+    finely sampled, and interpolated at the time where omega t + phi reaches that phase."""
     omega, phi = float(row["omega"]), float(row["phi"])
     t = ((phase - phi) % (2 * math.pi)) / omega
     with tempfile.TemporaryDirectory() as work:
         series = os.path.join(work, "s.csv")
-        command = [program, "simulate", "--periods", repr(max(t * omega / (2 * math.pi), 1e-9)),
-                   "--samples-per-period", "1", "--csv", series, "--set", "v20=0"]
+        command = [program, "simulate", "--periods", "1", "--samples-per-period", "4000", "--csv", series,
+                   "--set", "v20=0"]
         for key in ("chi", "eta", "omega", "u_s", "u_r", "x10", "x20", "v10", "phi"):
             command += ["--set", f"{key}={row[key]}"]
         subprocess.run(command, check=True, capture_output=True)
-        rows = list(csv.DictReader(open(series)))
-    return float(rows[-1]["x2"])
+        samples = [(float(r["t"]), float(r["x2"])) for r in csv.DictReader(open(series))]
+    for (t0, x0), (t1, x1) in zip(samples, samples[1:]):
+        if t0 <= t <= t1:
+            return x0 + (x1 - x0) * (t - t0) / (t1 - t0)
+    return samples[-1][1]
 
 
 def bifurcation_figure(program, results, run, out):
