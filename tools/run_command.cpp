@@ -160,6 +160,12 @@ int RunContinue(ContinueArgs args) {
     throw InputError(fmt::format("ds = {} is invalid: valid 0 < ds-min ({}) <= ds <= ds-max ({})", run.ds, run.ds_min, run.ds_max));
   }
   if (run.preset.empty() == run.signature.empty()) throw InputError("preset/signature: give exactly one of --preset or --signature");
+  if (run.max_points < 1 || run.max_points > 1000000) {
+    throw InputError(fmt::format("max-points = {} is invalid: valid range 1 <= max-points <= 1000000", run.max_points));
+  }
+  if (run.output.empty() || run.output.find('/') != std::string::npos || run.output.find("..") != std::string::npos) {
+    throw InputError(fmt::format("output = '{}' is invalid: valid a name without '/' or '..'", run.output));
+  }
   std::optional<Executed> e = Execute(run, args.results);
   if (!e) return kExitNoConvergence;
   WriteRunFiles(args.results, run.output, e->files);

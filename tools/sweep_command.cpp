@@ -71,7 +71,7 @@ Command AddSweepCommand(CLI::App& app) {
       "Brute-force bifurcation diagram: step a parameter from --from to --to and back, each point "
       "starting from the last state, simulate --transients forcing periods out and record the "
       "stroboscopic section (the state at forcing phase phi) over --periods periods, with stops and "
-      "sticks per period and the period of the motion. The two directions run in parallel.");
+      "sticks per period and the period of the motion.");
   cmd->add_option("--preset", args->preset, "paper example for the data and the first start");
   cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();

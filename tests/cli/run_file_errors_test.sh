@@ -51,6 +51,10 @@ expect 2 "control character" "$(printf '%s\001' "$good")"
 expect 2 "nest at most two levels" "$good
 x = [[[1]]]"
 expect 2 "r.toml:1:" 'output = "t'
+expect 2 "key 'continuation.parameter' = 'u_r' is tied to u_s" "${good/omega/u_r}
+[unknowns]
+tie_u_r = true"
+expect 2 "key 'output' = '../t' is invalid" "${good/output = \"t\"/output = \"..\/t\"}"
 # A start that does not converge fails the run (exit 3) and writes nothing.
 expect 3 "does not converge" "$good
 [start.guess]

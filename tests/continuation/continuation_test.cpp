@@ -155,6 +155,16 @@ TEST(StepSize, ShrinksWhereTheCorrectorFailsAndRecoversAfter) {
   EXPECT_NEAR(b.points.back().lambda, -1.5, 1e-10);
 }
 
+TEST(PseudoArclength, EndsAtOnceWhenItStartsOnTheBoundItHeadsFor) {
+  const Cubic cubic;
+  ContinuationOptions o = Options();
+  o.lambda_min = 0.0;  // the start, lambda = 0, heading down
+  o.direction = -1;
+  const Branch b = Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+  EXPECT_EQ(b.points.size(), 1u);
+}
+
 TEST(StepSizeController, GrowsAfterFastStepsHalvesOnFailureAndRespectsDsMax) {
   StepSizeOptions options;
   options.ds = 0.1;

@@ -29,7 +29,6 @@ double SettledDistance(const Orbit& o, double offset) {
   options.steps = 1;
   options.transient_periods = 300;
   options.recorded_periods = 4;
-  options.parallel = false;
   State start = o.InitialState();
   start(0) += offset;
   const std::vector<SweepPoint> points = Sweep(o.parameters, start, o.phi, options);

@@ -51,6 +51,8 @@ TEST(Signature, ParseErrorsSayWhereAndWhy) {
   EXPECT_NE(error.find("no segment"), std::string::npos) << error;
   EXPECT_FALSE(Signature::Parse("slip- / symmetric", &error));
   EXPECT_NE(error.find("option 'symmetric'"), std::string::npos) << error;
+  EXPECT_FALSE(Signature::Parse("slip- / antisymmetric period 2", &error));
+  EXPECT_NE(error.find("odd"), std::string::npos) << error;
   EXPECT_FALSE(Signature::Parse("slip- / period 0", &error));
   EXPECT_NE(error.find("period"), std::string::npos) << error;
 }

@@ -177,14 +177,11 @@ struct Continuation::State {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(x.size());
     rhs(x.size() - 1) = 1.0;
     *t = solver->Solve(rhs);
-    // With A = [J; r^T] and A t~ = e (so r.t~ = 1), the rank-one update to B = [J; t^T],
-    // t = t~/|t~|, gives det B = det A (1 + (t - r).t~) = det A |t~|: one factorisation serves.
+    // With A = [J; r^T] and A t~ = e (so r.t~ = 1: t keeps the orientation of r), the rank-one
+    // update to B = [J; t^T], t = t~/|t~|, gives det B = det A (1 + (t - r).t~) = det A |t~|: one
+    // factorisation serves.
     *sign = solver->DeterminantSign();
     *t /= t->norm();
-    if (t->dot(reference) < 0.0) {
-      *t = -*t;
-      *sign = -*sign;
-    }
     return true;
   }
 
@@ -277,8 +274,6 @@ bool Continuation::Step() {
     if (!st.Tangent(st.u, axis, &st.tangent, &st.det_sign)) {
       return end(BranchEnd::kStartFailed, "the bordered Jacobian is singular at the start point");
     }
-    // The tangent must point towards the requested direction of lambda.
-    if (st.tangent(o.parameter_index) * o.direction < 0.0) st.tangent = -st.tangent;
     st.ds = st.steps->Initial();
     st.tests = st.Tests(st.u);
     State::Sample s{st.u, st.tangent, st.det_sign, st.tests, r.summary.iterations};
@@ -306,7 +301,11 @@ bool Continuation::Step() {
     const double rate = st.tangent(o.parameter_index);
     const double bound = rate > 0.0 ? o.lambda_max : o.lambda_min;
     const double to_bound = rate != 0.0 ? (bound - st.Lambda(st.u)) / rate : ds;
-    on_bound = to_bound > 0.0 && to_bound <= ds;
+    // Standing on the bound and heading out of the range (a start on a range end): done.
+    if (rate != 0.0 && to_bound <= 0.0) {
+      return end(BranchEnd::kParameterBound, fmt::format("at the bound lambda = {}", st.Lambda(st.u)));
+    }
+    on_bound = to_bound <= ds;
     next = st.Corrected(on_bound ? to_bound : ds);
     if (next) {
       if (on_bound) {

@@ -139,6 +139,9 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   OrbitContinuationSetup setup{orbit, unknowns, run.parameter, ShootingChoice::kAuto, LinearSolverType::kKlu, {}, {}};
   const std::optional<int> parameter = ov::IndexOf(n, run.parameter);
   if (!parameter) throw fail("continuation.parameter", fmt::format("= '{}' is not a variable", run.parameter));
+  if (unknowns.tie_static_friction && run.parameter == "u_r") {
+    throw fail("continuation.parameter", "= 'u_r' is tied to u_s (tie_u_r): continue in u_s");
+  }
   if (std::find(free.indices.begin(), free.indices.end(), *parameter) != free.indices.end()) {
     throw fail("continuation.parameter", fmt::format("= '{}' is an unknown already: continue in a held variable", run.parameter));
   }

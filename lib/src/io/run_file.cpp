@@ -219,6 +219,9 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   run.path = std::string(path);
   TableReader top(root, "", path, &run);
   top.String("output", &run.output, true);
+  if (run.output.empty() || run.output.find('/') != std::string::npos || run.output.find("..") != std::string::npos) {
+    top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid a name without '/' or '..'", run.output));
+  }
 
   const toml::table* start = top.Table("start", true);
   TableReader s(*start, "start.", path, &run);

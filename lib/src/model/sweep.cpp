@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -56,15 +55,10 @@ std::vector<SweepPoint> SweepDirection(const Parameters& base, const State& star
 
 std::vector<SweepPoint> Sweep(const Parameters& base, const State& start, double phi_section,
                               const SweepOptions& options) {
-  std::vector<SweepPoint> up, down;
-  if (options.parallel) {
-    std::thread worker([&] { down = SweepDirection(base, start, phi_section, options, -1); });
-    up = SweepDirection(base, start, phi_section, options, 1);
-    worker.join();
-  } else {
-    up = SweepDirection(base, start, phi_section, options, 1);
-    down = SweepDirection(base, start, phi_section, options, -1);
-  }
+  std::vector<SweepPoint> up = SweepDirection(base, start, phi_section, options, 1);
+  // Down from where the upward sweep ended: the hysteresis a brute-force diagram must show.
+  const State turn = up.back().section.empty() ? start : up.back().section.back();
+  std::vector<SweepPoint> down = SweepDirection(base, turn, phi_section, options, -1);
   up.insert(up.end(), down.begin(), down.end());
   return up;
 }

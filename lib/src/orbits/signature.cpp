@@ -53,6 +53,9 @@ Signature::Signature(std::vector<Mode> segments, bool antisymmetric, int period_
     throw std::invalid_argument("invalid signature: " + problem);
   }
   if (period_multiple_ < 1) throw std::invalid_argument("invalid signature: period multiple < 1");
+  if (antisymmetric_ && period_multiple_ % 2 == 0) {
+    throw std::invalid_argument("invalid signature: antisymmetric needs an odd period multiple");
+  }
 }
 
 std::optional<Signature> Signature::Parse(std::string_view text, std::string* error) {
@@ -97,6 +100,13 @@ std::optional<Signature> Signature::Parse(std::string_view text, std::string* er
   }
   if (const std::string problem = SequenceProblem(segments, antisymmetric); !problem.empty()) {
     *error = fmt::format("signature '{}': {}", text, problem);
+    return std::nullopt;
+  }
+  // X(t + k pi/omega) = -X(t) needs the forcing to change sign over half the period: k odd.
+  if (antisymmetric && period_multiple % 2 == 0) {
+    *error = fmt::format("signature '{}': 'antisymmetric' needs an odd 'period K' (the forcing must change sign "
+                         "over half the period), got {}",
+                         text, period_multiple);
     return std::nullopt;
   }
   return Signature(std::move(segments), antisymmetric, period_multiple);

@@ -20,9 +20,6 @@ struct SweepOptions {
   int transient_periods = 200;  // forcing periods simulated and discarded at each point
   int recorded_periods = 20;    // forcing periods recorded at each point
   double periodicity_tolerance = 1e-6;  // section points this close repeat
-  // The two directions are independent chains and run in two threads; within a direction each
-  // point needs the previous one's state.
-  bool parallel = true;
 };
 
 struct SweepPoint {
@@ -35,8 +32,9 @@ struct SweepPoint {
   int period = 0;  // smallest p with section[k + p] == section[k] (to tolerance); 0 if none
 };
 
-// `start` is the state at forcing phase `phi_section` (time 0) for the first point of each
-// direction. Precondition: Validate passes at every swept value.
+// `start` is the state at forcing phase `phi_section` (time 0) for the first upward point; the
+// downward sweep starts from where the upward one ended. Every point needs the previous one's
+// state, so the sweep is sequential. Precondition: Validate passes at every swept value.
 std::vector<SweepPoint> Sweep(const Parameters& base, const State& start, double phi_section,
                               const SweepOptions& options);
 
