@@ -26,10 +26,15 @@ std::vector<State> Orbit::SegmentStates() const {
   return states;
 }
 
+std::vector<double> Orbit::FullPeriodDurations() const {
+  std::vector<double> full = durations;
+  if (signature.antisymmetric()) full.insert(full.end(), durations.begin(), durations.end());
+  return full;
+}
+
 std::vector<State> Orbit::Sample(int count) const {
-  std::vector<Mode> modes = signature.FullPeriod();
-  std::vector<double> spans = durations;
-  if (signature.antisymmetric()) spans.insert(spans.end(), durations.begin(), durations.end());
+  const std::vector<Mode> modes = signature.FullPeriod();
+  const std::vector<double> spans = FullPeriodDurations();
   std::vector<State> samples;
   State start = InitialState();
   double t0 = 0.0;

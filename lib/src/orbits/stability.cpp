@@ -32,8 +32,7 @@ Stability StabilityOf(const Orbit& orbit) {
   // The whole period: the listed segments, then their mirror images for an antisymmetric orbit,
   // flowed from the actual states (the symmetry is not assumed).
   std::vector<Mode> modes = signature.FullPeriod();
-  std::vector<double> durations = orbit.durations;
-  if (signature.antisymmetric()) durations.insert(durations.end(), orbit.durations.begin(), orbit.durations.end());
+  const std::vector<double> durations = orbit.FullPeriodDurations();
   Stability result;
   State x = orbit.InitialState();
   double phase = orbit.phi;

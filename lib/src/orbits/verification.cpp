@@ -90,8 +90,7 @@ Verification VerifyOrbit(const Orbit& orbit) {
   Verification v;
   // The full period: the listed segments, mirrored when antisymmetric.
   v.expected = orbit.signature.FullPeriod();
-  std::vector<double> durations = orbit.durations;
-  if (orbit.signature.antisymmetric()) durations.insert(durations.end(), orbit.durations.begin(), orbit.durations.end());
+  const std::vector<double> durations = orbit.FullPeriodDurations();
   std::vector<double> event_times;
   double t = 0.0;
   for (double d : durations) event_times.push_back(t += d);
