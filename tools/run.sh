@@ -9,11 +9,12 @@ stickslip_build "$STICKSLIP_ROOT/build/release" -DCMAKE_BUILD_TYPE=Release
 bin="$STICKSLIP_ROOT/build/release/tools/stickslip"
 cd "$STICKSLIP_ROOT"
 "$bin" run --results results continuation-scripts/*.toml
-# Brute-force diagrams over the forcing frequency, beside the continued branches.
+# Brute-force diagrams over the forcing frequency, beside the continued branches: four chains
+# (the preset state and three scattered around it), in parallel.
 mkdir -p results/sweeps
-"$bin" sweep --preset paper-4.1 --from 0.55 --to 0.69 --steps 56 --output results/sweeps/paper-4.1-omega.csv
-"$bin" sweep --preset paper-5.1 --from 0.55 --to 0.6 --steps 50 --output results/sweeps/paper-5.1-omega.csv
-"$bin" sweep --preset paper-6 --from 0.54 --to 0.58 --steps 40 --output results/sweeps/paper-6-omega.csv
+"$bin" sweep --preset paper-4.1 --from 0.55 --to 0.69 --steps 56 --chains 4 --output results/sweeps/paper-4.1-omega.csv
+"$bin" sweep --preset paper-5.1 --from 0.55 --to 0.6 --steps 50 --chains 4 --output results/sweeps/paper-5.1-omega.csv
+"$bin" sweep --preset paper-6 --from 0.54 --to 0.58 --steps 40 --chains 4 --output results/sweeps/paper-6-omega.csv
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results

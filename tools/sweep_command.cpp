@@ -1,5 +1,5 @@
 // stickslip sweep: a brute-force bifurcation diagram by simulation, a parameter stepped up and
-// then down.
+// then down from one or several starting states, the chains in parallel.
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/model/sweep.hpp"
+#include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip::cli {
 
@@ -23,6 +24,11 @@ struct SweepArgs {
   std::string steps = "40";
   std::string transients = "500";
   std::string periods = "20";
+  std::string start = "chained";
+  std::string chains = "4";
+  std::string scatter = "1";
+  std::string seed = "1";
+  std::string threads = "0";
   std::string output;
 };
 
@@ -48,17 +54,34 @@ int RunSweep(const SweepArgs& args) {
   options.steps = Count("steps", args.steps, 1, 100000);
   options.transient_periods = Count("transients", args.transients, 0, 1000000);
   options.recorded_periods = Count("periods", args.periods, 1, 100000);
-  for (double value : {options.from, options.to}) {
+  if (args.start == "chained") {
+    options.start = SweepStart::kChained;
+  } else if (args.start == "fixed") {
+    options.start = SweepStart::kFixed;
+  } else {
+    throw InputError(fmt::format("start = '{}' is unknown: valid chained, fixed", args.start));
+  }
+  const int chains = Count("chains", args.chains, 1, 10000);
+  const double scatter = ParseNumber("scatter", args.scatter, "0 <= scatter <= 1e6");
+  if (!(scatter >= 0.0 && scatter <= 1e6)) {
+    throw InputError(fmt::format("scatter = {} is invalid: valid range 0 <= scatter <= 1e6", args.scatter));
+  }
+  const int seed = Count("seed", args.seed, 0, 1000000000);
+  options.threads = Count("threads", args.threads, 0, 1024);
+  for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
     Parameters p = input.parameters;
     p[*parameter] = value;
-    if (const auto invalid = Validate(p)) throw InputError(invalid->Message());
+    if (const auto invalid = Validate(p)) throw InputError(fmt::format("{}: {}", field, invalid->Message()));
   }
-  const std::vector<SweepPoint> points = Sweep(input.parameters, input.initial_state, input.phi, options);
+  const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
+  const std::vector<SweepPoint> points = Sweep(input.parameters, starts, input.phi, options);
   WriteFileAtomically(args.output, SweepCsv(points, *parameter, input.phi));
   int periodic = 0;
   for (const SweepPoint& p : points) periodic += p.period > 0;
-  fmt::print("sweep {} from {} to {} and back: {} points, {} periodic; written to {}\n", args.parameter,
-             options.from, options.to, points.size(), periodic, args.output);
+  const int items = options.start == SweepStart::kChained ? chains : chains * (options.steps + 1);
+  fmt::print("sweep {} from {} to {}{} ({}), {} chain(s) on {} thread(s): {} points, {} periodic; written to {}\n",
+             args.parameter, options.from, options.to, options.start == SweepStart::kChained ? " and back" : "",
+             args.start, chains, WorkerCount(options.threads, items), points.size(), periodic, args.output);
   return kExitOk;
 }
 
@@ -71,7 +94,9 @@ Command AddSweepCommand(CLI::App& app) {
       "Brute-force bifurcation diagram: step a parameter from --from to --to and back, each point "
       "starting from the last state, simulate --transients forcing periods out and record the "
       "stroboscopic section (the state at forcing phase phi) over --periods periods, with stops and "
-      "sticks per period and the period of the motion.");
+      "sticks per period and the period of the motion. --chains independent chains start from the "
+      "preset's (or --set) state and from states scattered around it, and run in parallel; the "
+      "output does not depend on --threads.");
   cmd->add_option("--preset", args->preset, "paper example for the data and the first start");
   cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
@@ -81,8 +106,19 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_option("--transients", args->transients, "forcing periods discarded per point (0 to 1e6)")
       ->capture_default_str();
   cmd->add_option("--periods", args->periods, "forcing periods recorded per point (1 to 1e5)")->capture_default_str();
+  cmd->add_option("--start", args->start,
+                  "chained: up then down, each point from the last state; fixed: every point from its "
+                  "chain's start, one pass")
+      ->capture_default_str();
+  cmd->add_option("--chains", args->chains, "starting states, the first the given one (1 to 1e4)")
+      ->capture_default_str();
+  cmd->add_option("--scatter", args->scatter,
+                  "half-width of the box around the given state that the other starts are drawn from (0 to 1e6)")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed of the scattered starts (0 to 1e9)")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "threads (0: every core; 0 to 1024)")->capture_default_str();
   cmd->add_option("--output", args->output,
-                  "CSV file: direction,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period")
+                  "CSV file: chain,pass,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period")
       ->required();
   return {cmd, [args] { return RunSweep(*args); }};
 }

@@ -7,6 +7,9 @@
 //       --benchmark_report_aggregates_only=true
 //
 // The counter us_per_point is the figure the README reports (median over the repetitions).
+//
+// Also the brute-force sweep's wall time on 1 thread and on every core, for the parallel
+// speed-up of its chains.
 #include <filesystem>
 #include <string>
 
@@ -15,6 +18,9 @@
 #include "stickslip/continuation/orbit_continuation.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/sweep.hpp"
+#include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip {
 namespace {
@@ -60,6 +66,25 @@ STICKSLIP_FAMILY(paper_4_2, "paper-4.2-omega-up.toml")
 STICKSLIP_FAMILY(paper_5_1, "paper-5.1-omega-up.toml")
 STICKSLIP_FAMILY(paper_5_2, "paper-5.2-omega-down.toml")
 STICKSLIP_FAMILY(paper_6, "paper-6-omega-up.toml")
+
+// Section 5.1 over omega, four chains (the command line's default) up and down, on range(0)
+// threads (0: every core).
+void SweepWallTime(benchmark::State& state) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SweepOptions options;
+  options.from = 0.55;
+  options.to = 0.6;
+  options.steps = 10;
+  options.transient_periods = 100;
+  options.recorded_periods = 10;
+  options.threads = static_cast<int>(state.range(0));
+  const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 4, 1);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(Sweep(e.parameters, starts, e.phi, options).back().section.back());
+  }
+  state.counters["workers"] = WorkerCount(options.threads, static_cast<int>(starts.size()));
+}
+BENCHMARK(SweepWallTime)->ArgName("threads")->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace stickslip

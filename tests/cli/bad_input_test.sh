@@ -7,12 +7,16 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 
+# The subcommand under test and its output option; the sweep cases below change them.
+command=simulate
+output_flag=--csv
+
 expect_rejected() {  # expect_rejected <field> <expected text> <args...>
   local field=$1 text=$2
   shift 2
   local out="$work/out.csv"
   printf 'keep\n' > "$work/existing.csv"
-  "$bin" simulate "$@" --csv "$out" > "$work/stdout" 2> "$work/stderr"
+  "$bin" "$command" "$@" "$output_flag" "$out" > "$work/stdout" 2> "$work/stderr"
   local code=$?
   local lines
   lines=$(wc -l < "$work/stderr")
@@ -22,14 +26,14 @@ expect_rejected() {  # expect_rejected <field> <expected text> <args...>
   grep -q -- "$field" "$work/stderr" || problem+=" message does not name '$field';"
   grep -q -- "$text" "$work/stderr" || problem+=" message lacks '$text';"
   [ ! -e "$out" ] || problem+=" output file was created;"
-  "$bin" simulate "$@" --csv "$work/existing.csv" > /dev/null 2>&1
+  "$bin" "$command" "$@" "$output_flag" "$work/existing.csv" > /dev/null 2>&1
   [ "$(cat "$work/existing.csv")" = "keep" ] || problem+=" existing file was changed;"
   if [ -n "$problem" ]; then
-    echo "FAIL [$*]:$problem"
+    echo "FAIL [$command $*]:$problem"
     sed 's/^/    stderr: /' "$work/stderr"
     failures=$((failures + 1))
   else
-    echo "ok   [$*]: $(cat "$work/stderr")"
+    echo "ok   [$command $*]: $(cat "$work/stderr")"
   fi
 }
 
@@ -51,6 +55,21 @@ expect_rejected periods "periods" "${p[@]}" --periods two
 expect_rejected preset "paper-4.1" --preset paper-9
 expect_rejected "--set" "valid keys" "${p[@]}" --set mu=3
 expect_rejected chi "missing" --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3
+
+command=sweep
+output_flag=--output
+w=(--preset paper-4.1 --from 0.55 --to 0.6 --steps 2 --transients 1 --periods 1)
+expect_rejected start "chained, fixed" "${w[@]}" --start both
+expect_rejected chains "1 <= chains <= 10000" "${w[@]}" --chains 0
+expect_rejected chains "1 <= chains <= 10000" "${w[@]}" --chains 2.5
+expect_rejected scatter "0 <= scatter <= 1e6" "${w[@]}" --scatter -1
+expect_rejected scatter "0 <= scatter <= 1e6" "${w[@]}" --scatter 1e7
+expect_rejected seed "0 <= seed" "${w[@]}" --seed -3
+expect_rejected threads "0 <= threads <= 1024" "${w[@]}" --threads -1
+expect_rejected steps "1 <= steps" --preset paper-4.1 --from 0.55 --to 0.6 --steps 0
+expect_rejected "from: omega = -0.1" "omega > 0" --preset paper-4.1 --from -0.1 --to 0.6
+expect_rejected "to: u_r = 0.05" "u_r >= u_s" --preset paper-4.1 --parameter u_r --from 0.3 --to 0.05
+expect_rejected parameter "chi, eta, omega" "${w[@]}" --parameter mu
 
 # An unknown subcommand also exits 2 with one line.
 "$bin" simulat > /dev/null 2> "$work/stderr"

@@ -31,7 +31,7 @@ double SettledDistance(const Orbit& o, double offset) {
   options.recorded_periods = 4;
   State start = o.InitialState();
   start(0) += offset;
-  const std::vector<SweepPoint> points = Sweep(o.parameters, start, o.phi, options);
+  const std::vector<SweepPoint> points = Sweep(o.parameters, {start}, o.phi, options);
   double distance = 0.0;
   for (const State& x : points.front().section) {
     distance = std::max(distance, (x - o.InitialState()).lpNorm<Eigen::Infinity>());

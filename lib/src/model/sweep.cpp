@@ -2,76 +2,137 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip {
 
 namespace {
 
-std::vector<SweepPoint> SweepDirection(const Parameters& base, const State& start, double phi_section,
-                                       const SweepOptions& o, int direction) {
+double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
+  const double fraction = static_cast<double>(step) / o.steps;
+  return pass == SweepPass::kDown ? o.to - fraction * (o.to - o.from) : o.from + fraction * (o.to - o.from);
+}
+
+// One point: transients from `start`, then the recorded section. Time 0 is a section time (the
+// forcing phase there is phi_section, as at every multiple of the period).
+SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_section, const SweepOptions& o,
+                         int chain, SweepPass pass, int step) {
+  Parameters p = base;
+  p[o.parameter] = ValueAt(o, pass, step);
+  const double period = 2.0 * std::numbers::pi / p.omega;
+  SimulationOptions transient;
+  transient.duration = o.transient_periods * period;
+  const State settled = SimulateExact(p, start, phi_section, transient).segments.back().end;
+  SimulationOptions record;
+  record.duration = o.recorded_periods * period;
+  record.sample_step = period;
+  const SimulationResult r = SimulateExact(p, settled, phi_section, record);
+  SweepPoint point{chain, pass, step, p[o.parameter], {}, 0.0, 0.0, 0};
+  for (std::size_t k = 1; k < r.samples.size(); ++k) point.section.push_back(r.samples[k].state);
+  if (point.section.empty()) point.section.push_back(r.segments.back().end);
+  for (const Event& e : r.events) {
+    point.stops_per_period += e.kind == EventKind::kStop;
+    point.sticks_per_period += e.mode_after == Mode::kStick;
+  }
+  point.stops_per_period /= o.recorded_periods;
+  point.sticks_per_period /= o.recorded_periods;
+  const int n = static_cast<int>(point.section.size());
+  for (int candidate = 1; candidate <= n / 2 && point.period == 0; ++candidate) {
+    bool repeats = true;
+    for (int k = 0; k + candidate < n && repeats; ++k) {
+      repeats = (point.section[k + candidate] - point.section[k]).lpNorm<Eigen::Infinity>() <= o.periodicity_tolerance;
+    }
+    if (repeats) point.period = candidate;
+  }
+  return point;
+}
+
+// A chain's up pass and then its down pass, each point from the last section state before it.
+std::vector<SweepPoint> ChainedPasses(const Parameters& base, const State& start, double phi_section,
+                                      const SweepOptions& o, int chain) {
   std::vector<SweepPoint> points;
   State x = start;
-  for (int step = 0; step <= o.steps; ++step) {
-    const double fraction = static_cast<double>(step) / o.steps;
-    Parameters p = base;
-    p[o.parameter] = direction > 0 ? o.from + fraction * (o.to - o.from) : o.to - fraction * (o.to - o.from);
-    const double period = 2.0 * std::numbers::pi / p.omega;
-    // Time 0 is a section time: the forcing phase there is phi_section, as at every multiple of
-    // the period, so the last section state starts the next point.
-    SimulationOptions transient;
-    transient.duration = o.transient_periods * period;
-    x = SimulateExact(p, x, phi_section, transient).segments.back().end;
-    SimulationOptions record;
-    record.duration = o.recorded_periods * period;
-    record.sample_step = period;
-    const SimulationResult r = SimulateExact(p, x, phi_section, record);
-    SweepPoint point{direction, step, p[o.parameter], {}, 0.0, 0.0, 0};
-    for (std::size_t k = 1; k < r.samples.size(); ++k) point.section.push_back(r.samples[k].state);
-    for (const Event& e : r.events) {
-      point.stops_per_period += e.kind == EventKind::kStop;
-      point.sticks_per_period += e.mode_after == Mode::kStick;
+  for (SweepPass pass : {SweepPass::kUp, SweepPass::kDown}) {
+    for (int step = 0; step <= o.steps; ++step) {
+      points.push_back(SimulatePoint(base, x, phi_section, o, chain, pass, step));
+      x = points.back().section.back();
     }
-    point.stops_per_period /= o.recorded_periods;
-    point.sticks_per_period /= o.recorded_periods;
-    const int n = static_cast<int>(point.section.size());
-    for (int candidate = 1; candidate <= n / 2 && point.period == 0; ++candidate) {
-      bool repeats = true;
-      for (int k = 0; k + candidate < n && repeats; ++k) {
-        repeats = (point.section[k + candidate] - point.section[k]).lpNorm<Eigen::Infinity>() <= o.periodicity_tolerance;
-      }
-      if (repeats) point.period = candidate;
-    }
-    x = point.section.empty() ? x : point.section.back();
-    points.push_back(std::move(point));
   }
   return points;
 }
 
 }  // namespace
 
-std::vector<SweepPoint> Sweep(const Parameters& base, const State& start, double phi_section,
+std::string ToString(SweepPass pass) {
+  switch (pass) {
+    case SweepPass::kUp: return "up";
+    case SweepPass::kDown: return "down";
+    case SweepPass::kFixed: return "fixed";
+  }
+  return "?";
+}
+
+std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options) {
-  std::vector<SweepPoint> up = SweepDirection(base, start, phi_section, options, 1);
-  // Down from where the upward sweep ended: the hysteresis a brute-force diagram must show.
-  const State turn = up.back().section.empty() ? start : up.back().section.back();
-  std::vector<SweepPoint> down = SweepDirection(base, turn, phi_section, options, -1);
-  up.insert(up.end(), down.begin(), down.end());
-  return up;
+  if (starts.empty()) throw std::invalid_argument("Sweep: no starting state");
+  const int chains = static_cast<int>(starts.size());
+  const int per_chain = options.steps + 1;
+  // Each work item fills its own slot; the slots are joined in index order, so the output is the
+  // same for any number of threads.
+  const bool chained = options.start == SweepStart::kChained;
+  const int items = chained ? chains : chains * per_chain;
+  std::vector<std::vector<SweepPoint>> slots(items);
+  ParallelFor(items, options.threads, [&](int i) {
+    if (chained) {
+      slots[i] = ChainedPasses(base, starts[i], phi_section, options, i);
+    } else {
+      const int chain = i / per_chain;
+      slots[i] = {SimulatePoint(base, starts[chain], phi_section, options, chain, SweepPass::kFixed, i % per_chain)};
+    }
+  });
+  std::vector<SweepPoint> points;
+  for (std::vector<SweepPoint>& slot : slots) {
+    for (SweepPoint& p : slot) points.push_back(std::move(p));
+  }
+  return points;
+}
+
+std::vector<State> ScatteredStarts(const State& centre, double half_width, int count, std::uint64_t seed) {
+  // splitmix64 (Steele, Lea and Flood 2014): fixed arithmetic, unlike the standard library's
+  // distributions, whose output is left to the implementation.
+  auto next = [&seed] {
+    std::uint64_t z = (seed += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  };
+  std::vector<State> starts;
+  if (count > 0) starts.push_back(centre);
+  for (int c = 1; c < count; ++c) {
+    State x = centre;
+    for (int i = 0; i < 4; ++i) {
+      const double unit = static_cast<double>(next() >> 11) * 0x1.0p-53;  // [0, 1), 53 random bits
+      x(i) += half_width * (2.0 * unit - 1.0);
+    }
+    starts.push_back(x);
+  }
+  return starts;
 }
 
 std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section) {
   std::string out = fmt::format(
-      "direction,step,{},section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period\n", ToString(parameter));
+      "chain,pass,step,{},section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period\n",
+      ToString(parameter));
   for (const SweepPoint& p : points) {
     for (std::size_t k = 0; k < p.section.size(); ++k) {
       const State& x = p.section[k];
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", p.direction > 0 ? "up" : "down", p.step, p.value,
-                         phi_section, k,
-                         x(0), x(1), x(2), x(3), p.stops_per_period, p.sticks_per_period, p.period);
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", p.chain, ToString(p.pass), p.step, p.value,
+                         phi_section, k, x(0), x(1), x(2), x(3), p.stops_per_period, p.sticks_per_period, p.period);
     }
   }
   return out;

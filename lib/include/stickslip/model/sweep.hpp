@@ -1,9 +1,9 @@
-// Brute-force bifurcation diagram: a parameter stepped up and then down, each point started
-// from the last state of the previous one, transients simulated out with the exact simulator,
-// and the stroboscopic section (the state at the forcing phase phi_section, once per forcing
-// period) recorded.
+// Brute-force bifurcation diagram: a parameter stepped over a range, transients simulated out
+// with the exact simulator, and the stroboscopic section (the state at the forcing phase
+// phi_section, once per forcing period) recorded, from one or several starting states (chains).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,19 +12,36 @@
 
 namespace stickslip {
 
-struct SweepOptions {
-  ParameterId parameter = ParameterId::kOmega;
-  double from = 0.0;           // first value of the upward sweep (the downward one ends there)
-  double to = 0.0;             // last value of the upward sweep
-  int steps = 50;              // intervals between from and to (>= 1)
-  int transient_periods = 200;  // forcing periods simulated and discarded at each point
-  int recorded_periods = 20;    // forcing periods recorded at each point
-  double periodicity_tolerance = 1e-6;  // section points this close repeat
+// How each point of a chain starts.
+enum class SweepStart {
+  // Up from `from` to `to` and then back down, each point from the last state of the one
+  // before (the down pass from where the up pass ended): the attractor followed as the
+  // parameter moves, so hysteresis and coexisting motions show. Chains run in parallel.
+  kChained,
+  // Every point from its chain's starting state, in one pass: no memory between points, so
+  // every (chain, point) runs in parallel.
+  kFixed,
 };
 
+struct SweepOptions {
+  ParameterId parameter = ParameterId::kOmega;
+  double from = 0.0;           // first value of the up (or only) pass
+  double to = 0.0;             // last value of the up (or only) pass
+  int steps = 50;              // intervals between from and to (>= 1)
+  int transient_periods = 200;  // forcing periods simulated and discarded at each point
+  int recorded_periods = 20;    // forcing periods recorded at each point (>= 1)
+  double periodicity_tolerance = 1e-6;  // section points this close repeat
+  SweepStart start = SweepStart::kChained;
+  int threads = 0;  // 0: every hardware thread. The result does not depend on it.
+};
+
+enum class SweepPass { kUp, kDown, kFixed };
+std::string ToString(SweepPass pass);  // "up", "down", "fixed"
+
 struct SweepPoint {
-  int direction = 1;  // +1 upward, -1 downward
-  int step = 0;       // index along the direction
+  int chain = 0;  // index of the starting state
+  SweepPass pass = SweepPass::kUp;
+  int step = 0;        // index along the pass
   double value = 0.0;  // the parameter
   std::vector<State> section;  // recorded_periods states at phase phi_section
   double stops_per_period = 0.0;
@@ -32,14 +49,21 @@ struct SweepPoint {
   int period = 0;  // smallest p with section[k + p] == section[k] (to tolerance); 0 if none
 };
 
-// `start` is the state at forcing phase `phi_section` (time 0) for the first upward point; the
-// downward sweep starts from where the upward one ended. Every point needs the previous one's
-// state, so the sweep is sequential. Precondition: Validate passes at every swept value.
-std::vector<SweepPoint> Sweep(const Parameters& base, const State& start, double phi_section,
+// One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
+// (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
+// step, whatever the number of threads. Preconditions: starts is not empty, and Validate passes
+// at every swept value.
+std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options);
 
-// One CSV row per recorded section point: direction, step, <parameter>, section_phase, k, x1, x2,
-// v1, v2, stops_per_period, sticks_per_period, period. Deterministic: shortest round-trip numbers.
+// `count` starting states: `centre` first, then states drawn uniformly from the box
+// |x - centre|_inf <= half_width by a splitmix64 generator seeded with `seed` (the same numbers
+// on every platform, so a sweep is reproduced by its command line).
+std::vector<State> ScatteredStarts(const State& centre, double half_width, int count, std::uint64_t seed);
+
+// One CSV row per recorded section point: chain, pass, step, <parameter>, section_phase, k, x1,
+// x2, v1, v2, stops_per_period, sticks_per_period, period. Deterministic: shortest round-trip
+// numbers.
 std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section);
 
 }  // namespace stickslip

@@ -1,0 +1,168 @@
+// The brute-force sweep: its section states against the independent Odeint simulator, the
+// chaining of points (the down pass from where the up pass ended), chains independent of each
+// other, and an output that does not depend on the number of threads.
+#include "stickslip/model/sweep.hpp"
+
+#include <cstdint>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/paper_examples.hpp"
+
+namespace stickslip {
+namespace {
+
+// Odeint over `periods` forcing periods of p from x0 at phase phi: the state at the end.
+State OdeintAfter(const Parameters& p, const State& x0, double phi, int periods) {
+  SimulationOptions options;
+  options.duration = periods * 2.0 * std::numbers::pi / p.omega;
+  const SimulationResult r = SimulateOdeint(p, x0, phi, options);
+  EXPECT_TRUE(r.completed) << r.message;
+  return r.segments.back().end;
+}
+
+SweepOptions ShortSweep(SweepStart start) {
+  SweepOptions o;
+  o.from = 0.56;
+  o.to = 0.6;
+  o.steps = 2;
+  o.transient_periods = 2;
+  o.recorded_periods = 2;
+  o.start = start;
+  return o;
+}
+
+Parameters WithOmega(Parameters p, double omega) {
+  p.omega = omega;
+  return p;
+}
+
+// Section 5.1: stops and sticks in every period, so the section states pass through every kind
+// of event. Odeint tolerance 1e-10 over four periods: 1e-7.
+TEST(Sweep, SectionStatesAreTheStatesAtTheForcingPhaseEveryPeriod) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  const SweepOptions o = ShortSweep(SweepStart::kChained);
+  const std::vector<SweepPoint> points = Sweep(e.parameters, {e.initial_state}, e.phi, o);
+  ASSERT_EQ(points.size(), 6u);
+  const SweepPoint& first = points.front();
+  EXPECT_EQ(first.pass, SweepPass::kUp);
+  EXPECT_DOUBLE_EQ(first.value, 0.56);
+  ASSERT_EQ(first.section.size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    const State expected = OdeintAfter(WithOmega(e.parameters, 0.56), e.initial_state, e.phi, 2 + k + 1);
+    EXPECT_LT((first.section[k] - expected).lpNorm<Eigen::Infinity>(), 1e-7) << "k = " << k;
+  }
+}
+
+TEST(Sweep, EachPointStartsFromThePreviousOneAndTheDownPassFromTheUpPassEnd) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  const SweepOptions o = ShortSweep(SweepStart::kChained);
+  const std::vector<SweepPoint> points = Sweep(e.parameters, {e.initial_state}, e.phi, o);
+  ASSERT_EQ(points.size(), 6u);
+  const double expected_values[] = {0.56, 0.58, 0.6, 0.6, 0.58, 0.56};
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    EXPECT_EQ(points[i].pass, i < 3 ? SweepPass::kUp : SweepPass::kDown);
+    EXPECT_NEAR(points[i].value, expected_values[i], 1e-15);
+    const State expected =
+        OdeintAfter(WithOmega(e.parameters, points[i].value), points[i - 1].section.back(), e.phi, 3);
+    EXPECT_LT((points[i].section.front() - expected).lpNorm<Eigen::Infinity>(), 1e-7) << "point " << i;
+  }
+}
+
+TEST(Sweep, FixedStartsEveryPointFromItsChainStart) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  const std::vector<State> starts = ScatteredStarts(e.initial_state, 0.5, 2, 7);
+  const std::vector<SweepPoint> points = Sweep(e.parameters, starts, e.phi, ShortSweep(SweepStart::kFixed));
+  ASSERT_EQ(points.size(), 6u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_EQ(points[i].pass, SweepPass::kFixed);
+    EXPECT_EQ(points[i].chain, static_cast<int>(i / 3));
+    EXPECT_EQ(points[i].step, static_cast<int>(i % 3));
+    const State expected = OdeintAfter(WithOmega(e.parameters, points[i].value), starts[points[i].chain], e.phi, 3);
+    EXPECT_LT((points[i].section.front() - expected).lpNorm<Eigen::Infinity>(), 1e-7) << "point " << i;
+  }
+}
+
+TEST(Sweep, ChainsDoNotInfluenceEachOther) {
+  const PaperExample& e = *FindPaperExample("paper-6");
+  const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 3, 11);
+  SweepOptions o = ShortSweep(SweepStart::kChained);
+  o.threads = 3;
+  const std::vector<SweepPoint> together = Sweep(e.parameters, starts, e.phi, o);
+  ASSERT_EQ(together.size(), 18u);
+  for (int chain = 0; chain < 3; ++chain) {
+    const std::vector<SweepPoint> alone = Sweep(e.parameters, {starts[chain]}, e.phi, o);
+    for (std::size_t i = 0; i < alone.size(); ++i) {
+      const SweepPoint& p = together[chain * alone.size() + i];
+      EXPECT_EQ(p.chain, chain);
+      EXPECT_EQ(p.section, alone[i].section) << "chain " << chain << ", point " << i;
+    }
+  }
+}
+
+TEST(Sweep, OutputDoesNotDependOnTheNumberOfThreads) {
+  const PaperExample& e = *FindPaperExample("paper-5.2");
+  const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 5, 3);
+  for (SweepStart start : {SweepStart::kChained, SweepStart::kFixed}) {
+    SweepOptions o = ShortSweep(start);
+    o.threads = 1;
+    const std::string serial = SweepCsv(Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi);
+    for (int threads : {2, 3, 8}) {
+      o.threads = threads;
+      EXPECT_EQ(SweepCsv(Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi), serial) << threads << " threads";
+    }
+  }
+}
+
+// Started on the section 4.1 orbit at its own data: period 1, two stops (reversals) and no
+// stick per period, as the paper describes it.
+TEST(Sweep, RecognisesThePeriodOneMotionOfSection41) {
+  const PaperExample& e = *FindPaperExample("paper-4.1");
+  SweepOptions o;
+  o.from = o.to = e.parameters.omega;
+  o.steps = 1;
+  o.transient_periods = 50;
+  o.recorded_periods = 6;
+  const SweepPoint p = Sweep(e.parameters, {e.initial_state}, e.phi, o).front();
+  EXPECT_EQ(p.period, 1);
+  EXPECT_DOUBLE_EQ(p.stops_per_period, 2.0);
+  EXPECT_DOUBLE_EQ(p.sticks_per_period, 0.0);
+}
+
+TEST(Sweep, RejectsAnEmptyListOfStarts) {
+  const PaperExample& e = *FindPaperExample("paper-4.1");
+  EXPECT_THROW(Sweep(e.parameters, {}, e.phi, ShortSweep(SweepStart::kChained)), std::invalid_argument);
+}
+
+// splitmix64's published test values (Vigna's reference implementation): seed 0 gives
+// 0xe220a8397b1dcdaf first; seed 1234567 gives 6457827717110365317 and 3203168211198807973.
+TEST(ScatteredStarts, DrawsFromSplitmix64InTheBoxAroundTheCentre) {
+  const State centre(1.0, -2.0, 0.5, 0.0);
+  auto unit = [](std::uint64_t v) { return static_cast<double>(v >> 11) * 0x1.0p-53; };
+  const std::vector<State> zero = ScatteredStarts(centre, 2.0, 2, 0);
+  ASSERT_EQ(zero.size(), 2u);
+  EXPECT_EQ(zero[0], centre);
+  EXPECT_DOUBLE_EQ(zero[1](0), centre(0) + 2.0 * (2.0 * unit(0xe220a8397b1dcdafULL) - 1.0));
+  const std::vector<State> other = ScatteredStarts(centre, 2.0, 2, 1234567);
+  EXPECT_DOUBLE_EQ(other[1](0), centre(0) + 2.0 * (2.0 * unit(6457827717110365317ULL) - 1.0));
+  EXPECT_DOUBLE_EQ(other[1](1), centre(1) + 2.0 * (2.0 * unit(3203168211198807973ULL) - 1.0));
+
+  const std::vector<State> many = ScatteredStarts(centre, 0.25, 400, 5);
+  ASSERT_EQ(many.size(), 400u);
+  Eigen::Vector4d lowest = Eigen::Vector4d::Constant(1.0), highest = Eigen::Vector4d::Constant(-1.0);
+  for (const State& x : many) {
+    const Eigen::Vector4d offset = (x - centre) / 0.25;
+    EXPECT_LE(offset.lpNorm<Eigen::Infinity>(), 1.0);
+    lowest = lowest.cwiseMin(offset);
+    highest = highest.cwiseMax(offset);
+  }
+  // Uniform over the box: 399 draws reach within 0.1 of every face (a miss has odds 0.95^399).
+  EXPECT_LT(lowest.maxCoeff(), -0.9);
+  EXPECT_GT(highest.minCoeff(), 0.9);
+  EXPECT_EQ(ScatteredStarts(centre, 0.25, 400, 5), many);
+}
+
+}  // namespace
+}  // namespace stickslip
