@@ -51,6 +51,14 @@ expect 2 "control character" "$(printf '%s\001' "$good")"
 expect 2 "nest at most two levels" "$good
 x = [[[1]]]"
 expect 2 "r.toml:1:" 'output = "t'
+# Found by the fuzzer: a multi-line literal string hid a '#' from the screen, and the non-ASCII
+# character after it (U+FEBF) reached toml++'s __builtin_unreachable.
+expect 2 "r.toml:1:5: multi-line strings" "$(printf "a = '''/''a ''.''.0= t'# s''''\xef\xba\xbf\"\"x0\n \ng g ")"
+expect 2 "r.toml:1:10: multi-line strings" 'output = """t"""'
+# Found by the fuzzer: integers a double cannot hold exactly (beyond 2^53) are numbers too.
+expect 2 "key 'continuation.range' = \\[9007199254740992, 1e+16\\] excludes the start" "${good/0.3, 0.9/9007199254740993, 1e16}"
+expect 2 "key 'continuation.user_values_of.x' must be an array of numbers" "$good
+user_values_of = {u_r = [9007199254740993], x = 1}"
 expect 2 "key 'continuation.parameter' = 'u_r' is tied to u_s" "${good/omega/u_r}
 [unknowns]
 tie_u_r = true"

@@ -24,7 +24,9 @@ namespace stickslip {
 namespace {
 
 // Rejects what toml++ 3.3.0 mishandles: C0 control characters (but tab, newline, carriage
-// return), DEL, non-ASCII bytes outside comments, and arrays nested deeper than two levels.
+// return), DEL, non-ASCII bytes outside comments (its whitespace test reaches
+// __builtin_unreachable on some, U+FEBF for one), and arrays nested deeper than two levels; and
+// multi-line strings, so that the screen knows exactly where comments are.
 void Screen(std::string_view content, std::string_view path) {
   if (content.size() > kMaxRunFileBytes) {
     throw RunFileError(fmt::format("{}: run file is {} bytes: valid size <= {} bytes", path,
@@ -57,7 +59,15 @@ void Screen(std::string_view content, std::string_view path) {
       continue;
     }
     if (c == '#') comment = true;
-    else if (c == '"' || c == '\'') quote = static_cast<char>(c);
+    else if (c == '"' || c == '\'') {
+      // Multi-line strings would need the screen to follow toml++'s rules for runs of quotes;
+      // a run file has no use for them, so they are refused.
+      if (content.substr(i, 3) == std::string(3, static_cast<char>(c))) {
+        throw RunFileError(fmt::format("{}:{}:{}: multi-line strings ({}) are not allowed: valid single-line strings",
+                                       path, line, column, content.substr(i, 3)));
+      }
+      quote = static_cast<char>(c);
+    }
     else if (c == '[') {
       // "[[" at the start of a line is an array-of-tables header, not nesting.
       if (++depth > 2 && !(column == 1 || (column == 2 && content[i - 1] == '['))) {
@@ -67,6 +77,13 @@ void Screen(std::string_view content, std::string_view path) {
       depth = std::max(0, depth - 1);
     }
   }
+}
+
+// A number node's value. toml++'s value<double>() is empty for an integer that a double cannot
+// hold exactly (beyond 2^53), so integers are converted here, to the nearest double.
+double NumberValue(const toml::node& node) {
+  if (const auto* integer = node.as_integer()) return static_cast<double>(integer->get());
+  return node.as_floating_point()->get();
 }
 
 std::string Where(std::string_view path, const toml::node& node) {
@@ -109,7 +126,7 @@ class TableReader {
       return;
     }
     if (!n->is_number()) Fail(*n, key, fmt::format("must be a number, got {}", toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
-    *out = n->value<double>().value();
+    *out = NumberValue(*n);
     if (!std::isfinite(*out)) Fail(*n, key, "must be finite");
   }
   void Integer(std::string_view key, int* out) {
@@ -141,7 +158,7 @@ class TableReader {
     if (!n->is_array()) Fail(*n, key, "must be an array of numbers");
     for (const toml::node& e : *n->as_array()) {
       if (!e.is_number()) Fail(e, key, "must be an array of numbers");
-      out->push_back(e.value<double>().value());
+      out->push_back(NumberValue(e));
       if (!std::isfinite(out->back())) Fail(e, key, "must hold finite numbers");
     }
   }
@@ -152,7 +169,7 @@ class TableReader {
     if (!n->is_table()) Fail(*n, key, "must be a table of name = number");
     for (const auto& [name, value] : *n->as_table()) {
       if (!value.is_number()) Fail(value, fmt::format("{}.{}", key, name.str()), "must be a number");
-      out->emplace_back(std::string(name.str()), value.value<double>().value());
+      out->emplace_back(std::string(name.str()), NumberValue(value));
       if (!std::isfinite(out->back().second)) Fail(value, fmt::format("{}.{}", key, name.str()), "must be finite");
     }
   }
@@ -279,12 +296,11 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   c.Numbers("user_values", &user_values);
   for (double v : user_values) run.user_values.emplace_back(run.parameter, v);
   if (const toml::table* others = c.Table("user_values_of", false)) {
+    TableReader o(*others, "continuation.user_values_of.", path, &run);
     for (const auto& [name, value] : *others) {
-      if (!value.is_array()) c.Fail(value, fmt::format("user_values_of.{}", name.str()), "must be an array of numbers");
-      for (const toml::node& e : *value.as_array()) {
-        if (!e.is_number()) c.Fail(e, fmt::format("user_values_of.{}", name.str()), "must be an array of numbers");
-        run.user_values.emplace_back(std::string(name.str()), e.value<double>().value());
-      }
+      std::vector<double> values;
+      o.Numbers(name.str(), &values);
+      for (double v : values) run.user_values.emplace_back(std::string(name.str()), v);
     }
   }
   auto check_positive = [&](std::string_view key, double v) {
