@@ -22,6 +22,7 @@ namespace {
 struct Executed {
   OrbitBranch branch;
   RunFiles files;
+  double seconds = 0.0;  // wall time of the continuation, reported on stdout (not in the files)
 };
 
 // Runs one run file in memory. A start that does not converge is a failed run: exit code 3,
@@ -48,18 +49,19 @@ std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path&
     fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
     return std::nullopt;
   }
-  RunFiles files = FormatRunFiles(run, branch, seconds);
-  return Executed{std::move(branch), std::move(files)};
+  RunFiles files = FormatRunFiles(run, branch);
+  return Executed{std::move(branch), std::move(files), seconds};
 }
 
-std::string Report(const RunFile& run, const OrbitBranch& b) {
+std::string Report(const RunFile& run, const Executed& e) {
+  const OrbitBranch& b = e.branch;
   std::string special;
   for (const SpecialPoint& s : b.branch.special_points) {
     if (s.test_function == "start" || s.test_function == ToString(b.branch.end)) continue;
     special += fmt::format(" {}({}={:.10g})", s.type, run.parameter, s.lambda);
   }
-  return fmt::format("{}: {} points; {}: {};{}", run.output, b.branch.points.size(), ToString(b.branch.end),
-                     b.branch.end_message, special.empty() ? " no special points" : special);
+  return fmt::format("{}: {} points in {:.3f} s; {}: {};{}", run.output, b.branch.points.size(), e.seconds,
+                     ToString(b.branch.end), b.branch.end_message, special.empty() ? " no special points" : special);
 }
 
 RunFile Read(const std::string& path) {
@@ -87,7 +89,7 @@ int RunRuns(const RunArgs& args) {
       continue;
     }
     WriteRunFiles(args.results, run.output, e->files);
-    fmt::print("{}\n", Report(run, e->branch));
+    fmt::print("{}\n", Report(run, *e));
   }
   return code;
 }
@@ -169,7 +171,7 @@ int RunContinue(ContinueArgs args) {
   std::optional<Executed> e = Execute(run, args.results);
   if (!e) return kExitNoConvergence;
   WriteRunFiles(args.results, run.output, e->files);
-  fmt::print("{}\n", Report(run, e->branch));
+  fmt::print("{}\n", Report(run, *e));
   return kExitOk;
 }
 

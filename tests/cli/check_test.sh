@@ -34,3 +34,43 @@ fi
 cat "$work/out"
 grep -q "special-points.csv *LP[0-9]* *omega" "$work/out"
 echo "check fails on the perturbed fold, as it must"
+
+# Edits one column of one labelled row of a fresh copy of the stored results:
+# perturb <label prefix> <column> <python expression of the stored text v>.
+perturb() {
+  rm -rf "$work/results" && cp -r "$root/results" "$work/results"
+  /usr/bin/python3 - "$work/results/paper-5.1-omega-up/special-points.csv" "$@" <<'PY'
+import sys
+path, prefix, column, expression = sys.argv[1:]
+lines = open(path).read().splitlines()
+k = lines[0].split(",").index(column)
+for i, line in enumerate(lines[1:], 1):
+    fields = line.split(",")
+    if fields[1].startswith(prefix):
+        fields[k] = str(eval(expression, {"v": fields[k]}))
+        lines[i] = ",".join(fields)
+        break
+else:
+    sys.exit(f"no {prefix} in {path}")
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+}
+
+# A multiplier moved by 1e-5 (tolerance 1e-6), and the stability of a point whose multipliers are
+# clear of the unit circle flipped: both are reported.
+expect_difference() {  # expect_difference <pattern of the reported line>
+  if "$bin" check --results "$work/results" "$run" > "$work/out"; then
+    echo "FAIL: check passed, expected a difference matching '$1'"
+    exit 1
+  fi
+  grep -q "$1" "$work/out"
+}
+perturb EP floquet:mu1_re "float(v) + 1e-5"
+expect_difference "EP1 *multiplier"
+perturb EP stable "1 - int(v)"
+expect_difference "EP1 *stable"
+# At the torus point the multipliers are on the unit circle and rounding decides the flag: it is
+# not compared there.
+perturb TR stable "1 - int(v)"
+"$bin" check --results "$work/results" "$run" > /dev/null
+echo "check compares multipliers, and the stability flag where it is decided"

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <string_view>
+#include <utility>
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace stickslip {
 
@@ -14,6 +18,33 @@ namespace {
 bool IsSolutionColumn(const std::string& c) {
   static const std::set<std::string> fixed = {"chi", "eta", "omega", "u_s", "u_r", "phi", "x10", "x20", "v10"};
   return fixed.count(c) || (c.size() > 1 && c[0] == 'd' && std::all_of(c.begin() + 1, c.end(), ::isdigit));
+}
+
+bool StartsWith(const std::string& text, std::string_view prefix) { return text.rfind(prefix, 0) == 0; }
+
+// The Floquet multipliers of a row, sorted by real and then imaginary part: their order in the
+// file is the eigensolver's, which need not survive a change of build.
+std::vector<std::complex<double>> Multipliers(const std::vector<std::string>& header, const std::vector<std::string>& row) {
+  std::vector<std::complex<double>> mu;
+  for (std::size_t k = 0; k + 1 < header.size(); ++k) {
+    if (StartsWith(header[k], "floquet:mu") && header[k].ends_with("_re")) {
+      mu.emplace_back(std::stod(row[k]), std::stod(row[k + 1]));
+    }
+  }
+  std::sort(mu.begin(), mu.end(), [](auto a, auto b) { return std::pair(a.real(), a.imag()) < std::pair(b.real(), b.imag()); });
+  return mu;
+}
+
+// A flag is compared only where the stored row is clearly on one side of its boundary: at a
+// grazing or a fold the flag of the located point itself is decided by rounding.
+bool MarginsClearOfZero(const std::vector<std::string>& header, const std::vector<std::string>& row, double clearance) {
+  for (std::size_t k = 0; k < header.size(); ++k) {
+    if (StartsWith(header[k], "margin:") && !(std::abs(std::stod(row[k])) > clearance)) return false;
+  }
+  return true;
+}
+bool MultipliersClearOfUnitCircle(const std::vector<std::complex<double>>& mu, double clearance) {
+  return std::all_of(mu.begin(), mu.end(), [&](auto m) { return std::abs(std::abs(m) - 1.0) > clearance; });
 }
 
 void CompareTables(const std::string& file, const CsvTable& stored, const CsvTable& fresh, bool labelled_only,
@@ -35,13 +66,26 @@ void CompareTables(const std::string& file, const CsvTable& stored, const CsvTab
   if (a.size() != b.size()) {
     out->push_back({file, "rows", "count", std::to_string(a.size()), std::to_string(b.size())});
   }
+  const std::vector<std::string>& header = stored.header;
   for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
     const auto& r = *a[i];
     const auto& s = *b[i];
     const std::string where = r[1].empty() ? fmt::format("row {}", i + 1) : r[1];
+    const std::vector<std::complex<double>> mu = Multipliers(header, r);
+    const std::vector<std::complex<double>> fresh_mu = Multipliers(header, s);
+    for (std::size_t k = 0; k < mu.size(); ++k) {
+      if (!(std::abs(mu[k] - fresh_mu[k]) <= tol.multiplier * std::max(1.0, std::abs(mu[k])))) {
+        auto text = [](std::complex<double> m) { return fmt::format("{}{:+}i", m.real(), m.imag()); };
+        out->push_back({file, where, fmt::format("multiplier {}", k + 1), text(mu[k]), text(fresh_mu[k])});
+      }
+    }
     for (std::size_t k = 0; k < r.size(); ++k) {
-      const std::string& column = stored.header[k];
-      if (column == "label" || column == "type" || column == "test_function") {
+      const std::string& column = header[k];
+      const bool compared_exactly =
+          column == "label" || column == "type" || column == "test_function" || column == "located" ||
+          (column == "admissible" && MarginsClearOfZero(header, r, tol.flag_clearance)) ||
+          (column == "stable" && MultipliersClearOfUnitCircle(mu, tol.flag_clearance));
+      if (compared_exactly) {
         if (r[k] != s[k]) out->push_back({file, where, column, r[k], s[k]});
         continue;
       }

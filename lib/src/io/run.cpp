@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/json.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
 
 #ifndef STICKSLIP_VERSION
@@ -208,7 +209,7 @@ std::string Row(const OrbitBranch& b, int i, const std::string& label) {
 
 }  // namespace
 
-RunFiles FormatRunFiles(const RunFile& run, const OrbitBranch& b, double wall_time_seconds) {
+RunFiles FormatRunFiles(const RunFile& run, const OrbitBranch& b) {
   // AUTO-style labels: the type and a running number, in branch order.
   std::vector<std::string> labels(b.branch.points.size());
   int counter = 0;
@@ -230,12 +231,12 @@ RunFiles FormatRunFiles(const RunFile& run, const OrbitBranch& b, double wall_ti
   std::string count_text;
   for (const auto& [type, count] : counts) count_text += fmt::format("{}\"{}\": {}", count_text.empty() ? "" : ", ", type, count);
   files.summary_json = fmt::format(
-      "{{\n  \"run_file\": \"{}\",\n  \"stickslip_version\": \"{}\",\n  \"output\": \"{}\",\n  \"signature\": \"{}\",\n"
-      "  \"parameter\": \"{}\",\n  \"shooting\": \"{}\",\n  \"points\": {},\n  \"special_points\": {{{}}},\n"
-      "  \"termination\": \"{}\",\n  \"message\": \"{}\",\n  \"wall_time_seconds\": {:.3f}\n}}\n",
-      run.path, STICKSLIP_VERSION, run.output, b.orbits.front().signature.ToString(), run.parameter,
-      ToString(b.shooting), b.branch.points.size(), count_text, ToString(b.branch.end), b.branch.end_message,
-      wall_time_seconds);
+      "{{\n  \"run_file\": {},\n  \"stickslip_version\": {},\n  \"output\": {},\n  \"signature\": {},\n"
+      "  \"parameter\": {},\n  \"shooting\": {},\n  \"points\": {},\n  \"special_points\": {{{}}},\n"
+      "  \"termination\": {},\n  \"message\": {}\n}}\n",
+      JsonString(run.path), JsonString(STICKSLIP_VERSION), JsonString(run.output),
+      JsonString(b.orbits.front().signature.ToString()), JsonString(run.parameter), JsonString(ToString(b.shooting)),
+      b.branch.points.size(), count_text, JsonString(ToString(b.branch.end)), JsonString(b.branch.end_message));
   return files;
 }
 

@@ -1,6 +1,9 @@
 // Regression checks: a fresh run's special points and labelled branch points against the files
-// stored in results/. Special points must agree in type and order, the continuation parameter
-// to a relative 1e-8 and every other variable of the solution to 1e-7.
+// stored in results/. Special points must agree in type, order, test function and `located`;
+// the continuation parameter to a relative 1e-8, every other variable of the solution to 1e-7
+// and the Floquet multipliers to 1e-6. The `stable` and `admissible` flags must agree wherever
+// the stored point is clear of their boundary (multipliers off the unit circle, margins off
+// zero, by flag_clearance); on the boundary, at a TR or a grazing, rounding decides them.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +17,8 @@ namespace stickslip {
 struct CheckTolerances {
   double parameter_relative = 1e-8;
   double solution = 1e-7;  // absolute, scaled by max(1, |value|)
+  double multiplier = 1e-6;  // absolute, scaled by max(1, |mu|); as a set sorted by (re, im)
+  double flag_clearance = 1e-6;
 };
 
 struct Difference {

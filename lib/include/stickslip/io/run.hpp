@@ -26,7 +26,9 @@ struct RunFiles {
   std::string special_points_csv;
   std::string summary_json;
 };
-RunFiles FormatRunFiles(const RunFile& run, const OrbitBranch& branch, double wall_time_seconds);
+// The files depend on the run file and the branch only (no time, no host), so the same run file
+// gives byte-identical files on the same build.
+RunFiles FormatRunFiles(const RunFile& run, const OrbitBranch& branch);
 
 // Writes the three files into results_root/<output>/ as a whole: into a temporary directory
 // first, which then replaces the old one.
