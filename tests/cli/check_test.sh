@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# stickslip check passes on the stored results and fails, naming the value, on a perturbed copy.
+# stickslip check passes on the stored results and fails, naming the value, on a perturbed copy;
+# a run's files are byte-identical between runs.
 set -euo pipefail
 bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
 root=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}
@@ -8,6 +9,11 @@ trap 'rm -rf "$work"' EXIT
 run="$root/continuation-scripts/paper-5.1-omega-up.toml"
 cp -r "$root/results" "$work/results"
 "$bin" check --results "$work/results" "$run"
+
+# The same run file gives byte-identical files, summary.json included (no time, no host in them).
+(cd "$root" && "$bin" run --results "$work/first" continuation-scripts/paper-5.1-omega-up.toml > /dev/null)
+(cd "$root" && "$bin" run --results "$work/second" continuation-scripts/paper-5.1-omega-up.toml > /dev/null)
+diff -r "$work/first" "$work/second"
 
 # Move the located fold by a relative 1e-6 (far above the 1e-8 tolerance).
 file="$work/results/paper-5.1-omega-up/special-points.csv"

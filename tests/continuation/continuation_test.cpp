@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 namespace stickslip {
@@ -153,6 +155,25 @@ TEST(StepSize, ShrinksWhereTheCorrectorFailsAndRecoversAfter) {
   for (const BranchPoint& p : b.points) EXPECT_NEAR(fold.F(p.u(0), p.u(1)), 0.0, 1e-10);
   EXPECT_GT(b.points.back().u(0), 0.0);  // went round the fold
   EXPECT_NEAR(b.points.back().lambda, -1.5, 1e-10);
+}
+
+// However the last step meets the bound (clipped onto it, or crossing it), the branch ends on
+// it exactly, with the bound as a located EP, and the same special points either way.
+TEST(PseudoArclength, EndsExactlyOnTheBoundWhateverTheStepSize) {
+  const Cubic cubic;
+  for (double ds : {0.013, 0.02, 0.05, 0.07, 0.1, 0.15}) {
+    ContinuationOptions o = Options(ds);
+    o.lambda_max = 0.5;
+    o.detect_folds = false;
+    const Branch b = Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+    EXPECT_EQ(b.end, BranchEnd::kParameterBound) << "ds = " << ds;
+    EXPECT_EQ(b.points.back().lambda, 0.5) << "ds = " << ds;
+    EXPECT_NEAR(cubic.F(b.points.back().u(0), 0.5), 0.0, 1e-12);
+    const auto ep = OfType(b, "EP");
+    EXPECT_TRUE(std::any_of(ep.begin(), ep.end(), [&](const SpecialPoint& s) {
+      return s.test_function == "lambda_max" && s.point == static_cast<int>(b.points.size()) - 1;
+    })) << "ds = " << ds << ": " << b.end_message;
+  }
 }
 
 TEST(PseudoArclength, EndsAtOnceWhenItStartsOnTheBoundItHeadsFor) {

@@ -64,10 +64,21 @@ JacobianMatrix AppendRow(const JacobianMatrix& j, const Eigen::VectorXd& row) {
 }
 
 JacobianMatrix RemoveColumn(const JacobianMatrix& j, int column) {
-  Eigen::MatrixXd dense = ToDense(j);
-  Eigen::MatrixXd m(dense.rows(), dense.cols() - 1);
-  m << dense.leftCols(column), dense.rightCols(dense.cols() - column - 1);
-  if (std::holds_alternative<SparseMatrix>(j)) return SparseMatrix(m.sparseView());
+  if (const auto* dense = std::get_if<Eigen::MatrixXd>(&j)) {
+    Eigen::MatrixXd m(dense->rows(), dense->cols() - 1);
+    m << dense->leftCols(column), dense->rightCols(dense->cols() - column - 1);
+    return m;
+  }
+  const SparseMatrix& s = std::get<SparseMatrix>(j);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int k = 0; k < s.outerSize(); ++k) {
+    if (k == column) continue;
+    for (SparseMatrix::InnerIterator it(s, k); it; ++it) {
+      triplets.emplace_back(it.row(), k < column ? k : k - 1, it.value());
+    }
+  }
+  SparseMatrix m(s.rows(), s.cols() - 1);
+  m.setFromTriplets(triplets.begin(), triplets.end());
   return m;
 }
 
@@ -215,6 +226,22 @@ struct Continuation::State {
     sample.tests = Tests(sample.u);
     return sample;
   }
+
+  // A corrected point within rounding of a parameter bound, moved onto it exactly (Newton with
+  // the parameter held at the bound), so that the bound is reached as a located event.
+  std::optional<Sample> OnBound(const Sample& near, double bound) {
+    Eigen::VectorXd target = near.u;
+    target(options.parameter_index) = bound;
+    const FixedParameterSystem fixed(problem, target, options.parameter_index);
+    NewtonResult r = SolveNewton(fixed, fixed.Reduce(target), options.corrector);
+    if (!r.summary.Converged()) return std::nullopt;
+    Sample sample;
+    sample.u = fixed.Expand(r.solution);
+    sample.iterations = near.iterations + r.summary.iterations;
+    if (!Tangent(sample.u, tangent, &sample.tangent, &sample.det_sign)) return std::nullopt;
+    sample.tests = Tests(sample.u);
+    return sample;
+  }
 };
 
 Continuation::Continuation(const NonlinearSystem& problem, const Monitor* monitor,
@@ -310,8 +337,13 @@ bool Continuation::Step() {
     if (next) {
       if (on_bound) {
         ds = to_bound;
-        // The corrector keeps lambda on the bound only to second order in the step.
+        // The corrector keeps lambda on the bound only to second order in the step; where it
+        // lands within rounding of it, the point is put on it, and the bound event below
+        // records it. If that fails, the branch still ends on the corrected point.
         on_bound = std::abs(st.Lambda(next->u) - bound) <= 1e-10 * (1.0 + std::abs(bound));
+        if (on_bound) {
+          if (std::optional<State::Sample> exact = st.OnBound(*next, bound)) next = std::move(exact);
+        }
       }
       break;
     }

@@ -77,15 +77,14 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
     throw std::invalid_argument("parameter = 'u_r' is tied to u_s: continue in u_s");
   }
   unknowns.push_back(*parameter);
-  const bool multiple = setup.shooting == ShootingChoice::kMultiple ||
-                        (setup.shooting == ShootingChoice::kAuto && n > OrbitSolverOptions{}.max_single_shooting_segments);
+  const Shooting shooting = ResolveShooting(setup.shooting, n);
   OrbitContinuationProblem problem;
   problem.system = std::make_unique<OrbitSystem>(setup.start, unknowns, setup.unknowns.tie_static_friction,
-                                                 multiple ? Shooting::kMultiple : Shooting::kSingle, setup.flow);
+                                                 shooting, setup.flow);
   problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start);
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.indices.size());
-  if (multiple && problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
+  if (shooting == Shooting::kMultiple && problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
     problem.options.corrector.linear_solver = setup.sparse_solver;
   }
   problem.start = problem.system->Unknowns(setup.start);

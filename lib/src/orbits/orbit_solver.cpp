@@ -49,20 +49,23 @@ FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& c
   return {free, {}};
 }
 
+Shooting ResolveShooting(ShootingChoice choice, int listed_segments, int max_single_shooting_segments) {
+  const bool multiple = choice == ShootingChoice::kMultiple ||
+                        (choice == ShootingChoice::kAuto && listed_segments > max_single_shooting_segments);
+  return multiple ? Shooting::kMultiple : Shooting::kSingle;
+}
+
 OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
                          bool tie_static_friction, const OrbitSolverOptions& options) {
-  const bool multiple =
-      options.shooting == ShootingChoice::kMultiple ||
-      (options.shooting == ShootingChoice::kAuto &&
-       guess.signature.size() > options.max_single_shooting_segments);
-  const Shooting shooting = multiple ? Shooting::kMultiple : Shooting::kSingle;
+  const Shooting shooting =
+      ResolveShooting(options.shooting, guess.signature.size(), options.max_single_shooting_segments);
   const OrbitSystem system(guess, free, tie_static_friction, shooting);
   if (system.EquationCount() != system.UnknownCount()) {
     throw std::invalid_argument(fmt::format("orbit system is not square: {} equations, {} unknowns",
                                             system.EquationCount(), system.UnknownCount()));
   }
   NewtonOptions newton = options.newton;
-  if (multiple && newton.linear_solver == LinearSolverType::kDenseLu) {
+  if (shooting == Shooting::kMultiple && newton.linear_solver == LinearSolverType::kDenseLu) {
     newton.linear_solver = options.sparse_solver;
   }
   NewtonResult result = SolveNewton(system, system.Unknowns(guess), newton);

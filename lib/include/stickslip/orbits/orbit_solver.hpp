@@ -31,11 +31,15 @@ FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& c
 enum class ShootingChoice { kAuto, kSingle, kMultiple };
 const char* ToString(ShootingChoice s);  // "auto", "single", "multiple"
 
+// kAuto picks single shooting up to max_single_shooting_segments listed segments, multiple
+// shooting beyond (where long products of flow Jacobians lose accuracy).
+inline constexpr int kMaxSingleShootingSegments = 6;
+Shooting ResolveShooting(ShootingChoice choice, int listed_segments,
+                         int max_single_shooting_segments = kMaxSingleShootingSegments);
+
 struct OrbitSolverOptions {
-  // kAuto picks single shooting up to max_single_shooting_segments listed segments, multiple
-  // shooting beyond (where long products of flow Jacobians lose accuracy).
-  ShootingChoice shooting = ShootingChoice::kAuto;
-  int max_single_shooting_segments = 6;
+  ShootingChoice shooting = ShootingChoice::kAuto;  // see ResolveShooting
+  int max_single_shooting_segments = kMaxSingleShootingSegments;
   LinearSolverType sparse_solver = LinearSolverType::kKlu;  // for multiple shooting
   NewtonOptions newton;
 };
