@@ -1,4 +1,5 @@
 #include "cli_common.hpp"
+#include "commands.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,8 +7,10 @@
 #include <cmath>
 #include <optional>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "stickslip/io/run.hpp"
 #include "stickslip/model/paper_examples.hpp"
 
 namespace stickslip::cli {
@@ -56,10 +59,39 @@ std::string SetKeysHelp() {
   return help;
 }
 
-ModelInput ResolveModelInput(const std::string& preset,
+ModelInput ResolveModelInput(const std::string& preset, const std::vector<std::string>& assignments) {
+  return ResolveModelInput(preset, "", "", assignments);
+}
+
+ModelInput ResolveModelInput(const std::string& preset, const std::string& point, const std::string& results,
                              const std::vector<std::string>& assignments) {
   ModelInput input;
   std::array<bool, kParameterCount> given{};
+  if (!preset.empty() && !point.empty()) {
+    throw InputError(fmt::format("preset = '{}' and point = '{}': give at most one of them", preset, point));
+  }
+  if (!point.empty()) {
+    const auto colon = point.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == point.size()) {
+      throw InputError(fmt::format("point = '{}' is invalid: valid RUN:LABEL, a labelled point of results/RUN", point));
+    }
+    LabelledPoint labelled;
+    try {
+      labelled = ReadLabelledPoint(results, point.substr(0, colon), point.substr(colon + 1));
+    } catch (const std::exception& e) {
+      throw InputError(fmt::format("point = '{}' cannot be used: {}", point, e.what()));
+    }
+    auto column = [&](std::string_view name) {
+      for (const auto& [key, text] : labelled.columns) {
+        if (key == name) return ParseNumber(name, text, "a finite number");
+      }
+      throw InputError(fmt::format("point = '{}' has no column {}", point, name));
+    };
+    for (ParameterId id : kAllParameters) input.parameters[id] = column(ToString(id));
+    input.initial_state = State(column("x10"), column("x20"), column("v10"), 0.0);
+    input.phi = column("phi");
+    given.fill(true);
+  }
   if (!preset.empty()) {
     const PaperExample* example = FindPaperExample(preset);
     if (example == nullptr) {
@@ -109,6 +141,14 @@ ModelInput ResolveModelInput(const std::string& preset,
   }
   if (const auto invalid = Validate(input.parameters)) throw InputError(invalid->Message());
   return input;
+}
+
+void AddPointOptions(CLI::App& cmd, std::string* point, std::string* results) {
+  cmd.add_option("--point", *point,
+                 "start from a labelled point of a continuation run instead of a preset: its data, "
+                 "its orbit's initial state and phase (RUN:LABEL, e.g. paper-5.1-omega-up:TR2)")
+      ->type_name("RUN:LABEL");
+  cmd.add_option("--results", *results, "where the runs of --point are stored")->capture_default_str();
 }
 
 std::string DescribeParameters(const Parameters& p) {

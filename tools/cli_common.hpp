@@ -45,6 +45,12 @@ std::string SetKeysHelp();
 // (Validate) and that the state is finite. Throws InputError.
 ModelInput ResolveModelInput(const std::string& preset, const std::vector<std::string>& assignments);
 
+// The same, starting instead (if `point` is not empty) from a labelled point "RUN:LABEL" of a
+// continuation run stored under `results`: its data, its orbit's initial state (x2' = 0 there)
+// and phase. At most one of `preset` and `point`.
+ModelInput ResolveModelInput(const std::string& preset, const std::string& point, const std::string& results,
+                             const std::vector<std::string>& assignments);
+
 // "chi=0.3 eta=4 omega=0.6 u_s=0.1 u_r=0.2996", numbers in shortest round-trip form.
 std::string DescribeParameters(const Parameters& p);
 

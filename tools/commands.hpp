@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,10 @@ struct Command {
   CLI::App* subcommand = nullptr;
   std::function<int()> run;
 };
+
+// --point RUN:LABEL and --results DIR: start from a labelled point of a stored continuation run
+// (ResolveModelInput), for the commands that simulate.
+void AddPointOptions(CLI::App& cmd, std::string* point, std::string* results);
 
 Command AddSimulateCommand(CLI::App& app);
 Command AddSolveCommand(CLI::App& app);

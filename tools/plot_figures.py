@@ -12,6 +12,7 @@ Usage: /usr/bin/python3 tools/plot_figures.py [--stickslip PROGRAM] [--results D
 """
 import argparse
 import csv
+import glob
 import json
 import math
 import os
@@ -148,18 +149,28 @@ def bifurcation_figure(program, results, run, out):
         top.plot(x, float(row["x20"]), "o", color="red", ms=4)
         top.annotate(row["label"], (x, float(row["x20"])), textcoords="offset points", xytext=(4, 4), fontsize=8)
     family = run.split("-")[0] + "-" + run.split("-")[1]
-    sweep = os.path.join(results, "sweeps", f"{family}-{parameter}.csv")
-    if os.path.isfile(sweep):
+    # Every sweep of the family over this parameter: sweeps/<family>-<parameter>[-<what>].csv.
+    sweeps = (glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}.csv")) +
+              sorted(glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}-*.csv"))))
+    phases_drawn = set()
+    for number, sweep in enumerate(sweeps):
         # Compare like with like: x2 at the sweep's section phase, for the brute-force motions
         # that repeat every period and for every fifth admissible point of the branch.
         points = [r for r in csv.DictReader(open(sweep)) if r["period"] == "1"]
-        phase = float(points[0]["section_phase"]) if points else 0.0
-        chosen = [r for r in rows[::5] if r["admissible"] == "1"]
-        top.plot([float(r[parameter]) for r in chosen], [section_x2(program, r, phase) for r in chosen], "x",
-                 color="C0", ms=5, label=f"orbit: x2 at forcing phase {phase:g}")
-        top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".", color="0.4", ms=3,
-                 label=f"brute force: x2 at forcing phase {phase:g} (period 1)")
-    top.legend(fontsize=8)
+        if not points:
+            continue
+        phase = float(points[0]["section_phase"])
+        if phase not in phases_drawn:
+            phases_drawn.add(phase)
+            chosen = [r for r in rows[::5] if r["admissible"] == "1"]
+            top.plot([float(r[parameter]) for r in chosen], [section_x2(program, r, phase) for r in chosen],
+                     "x" if len(phases_drawn) == 1 else "+", color="C0" if len(phases_drawn) == 1 else "C3", ms=5,
+                     label=f"orbit: x2 at forcing phase {phase:.4g}")
+        name = os.path.splitext(os.path.basename(sweep))[0]
+        top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".",
+                 color="0.4" if number == 0 else "C3", ms=3 if number == 0 else 4,
+                 label=f"brute force {name}: x2 at phase {phase:.4g} (period 1)")
+    top.legend(fontsize=7, loc="best")
     top.set_ylabel("x20")
     bottom.set_ylabel("segment durations")
     bottom.set_xlabel(parameter)

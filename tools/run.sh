@@ -15,6 +15,10 @@ mkdir -p results/sweeps
 "$bin" sweep --preset paper-4.1 --from 0.55 --to 0.69 --steps 56 --chains 4 --output results/sweeps/paper-4.1-omega.csv
 "$bin" sweep --preset paper-5.1 --from 0.55 --to 0.6 --steps 50 --chains 4 --output results/sweeps/paper-5.1-omega.csv
 "$bin" sweep --preset paper-6 --from 0.54 --to 0.58 --steps 40 --chains 4 --output results/sweeps/paper-6-omega.csv
+# Section 5.1's stable stretch (TR to LP) coexists with other motions that the chains above
+# fall into; a chain started on the continued orbit at TR2 follows it.
+"$bin" sweep --point paper-5.1-omega-up:TR2 --from 0.5785 --to 0.5865 --steps 16 --chains 1 \
+  --output results/sweeps/paper-5.1-omega-from-TR2.csv
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results

@@ -19,6 +19,8 @@ namespace {
 
 struct SimulateArgs {
   std::string preset;
+  std::string point;  // RUN:LABEL
+  std::string results = "results";
   std::vector<std::string> assignments;
   std::string periods = "2";
   std::string method = "exact";
@@ -68,7 +70,7 @@ std::string SamplesCsv(const SimulationResult& result) {
 }
 
 int RunSimulate(const SimulateArgs& args) {
-  const ModelInput input = ResolveModelInput(args.preset, args.assignments);
+  const ModelInput input = ResolveModelInput(args.preset, args.point, args.results, args.assignments);
   const double periods = ParseNumber("periods", args.periods, "0 < periods <= 1e6");
   if (!(periods > 0.0 && periods <= 1e6)) {
     throw InputError(fmt::format("periods = {} is invalid: valid range 0 < periods <= 1e6", periods));
@@ -121,6 +123,7 @@ Command AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--preset", args->preset,
                   "start from a paper example's printed data and initial state: paper-4.1, "
                   "paper-4.2, paper-5.1, paper-5.2, paper-6");
+  AddPointOptions(*cmd, &args->point, &args->results);
   cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
   cmd->add_option("--periods", args->periods,
                   "simulated time in forcing periods 2 pi/omega (0 < periods <= 1e6)")

@@ -18,6 +18,8 @@ namespace {
 
 struct SweepArgs {
   std::string preset;
+  std::string point;  // RUN:LABEL
+  std::string results = "results";
   std::vector<std::string> assignments;
   std::string parameter = "omega";
   std::string from, to;
@@ -42,7 +44,7 @@ int Count(const char* field, const std::string& text, int low, int high) {
 }
 
 int RunSweep(const SweepArgs& args) {
-  const ModelInput input = ResolveModelInput(args.preset, args.assignments);
+  const ModelInput input = ResolveModelInput(args.preset, args.point, args.results, args.assignments);
   const std::optional<ParameterId> parameter = ParameterFromString(args.parameter);
   if (!parameter) {
     throw InputError(fmt::format("parameter = '{}' is unknown: valid chi, eta, omega, u_s, u_r", args.parameter));
@@ -98,6 +100,7 @@ Command AddSweepCommand(CLI::App& app) {
       "preset's (or --set) state and from states scattered around it, and run in parallel; the "
       "output does not depend on --threads.");
   cmd->add_option("--preset", args->preset, "paper example for the data and the first start");
+  AddPointOptions(*cmd, &args->point, &args->results);
   cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
   cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->required();

@@ -33,3 +33,22 @@ echo "csv ok: $rows rows, deterministic"
 
 "$bin" simulate --preset paper-4.1 | grep -q "stop"
 echo "table ok"
+
+# --point: a labelled point of a stored run. Started on the continued section 5.1 orbit at TR2,
+# the motion's events fall at the cumulative segment durations d1, d1 + d2, ... of that orbit.
+root=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}
+"$bin" simulate --point paper-5.1-omega-up:TR2 --results "$root/results" --periods 1 --json > "$work/point.json"
+/usr/bin/python3 - "$work/point.json" "$root/results/paper-5.1-omega-up/special-points.csv" <<'PY'
+import csv, json, sys
+events = json.load(open(sys.argv[1]))["events"]
+row = next(r for r in csv.DictReader(open(sys.argv[2])) if r["label"] == "TR2")
+ends, total = [], 0.0
+for k in range(1, 5):
+    total += float(row[f"d{k}"])
+    ends.append(total)
+times = [e["t"] for e in events]
+assert len(times) >= 3, times
+for t, end in zip(times, ends):
+    assert abs(t - end) < 1e-8, (times, ends)
+print("point ok:", len(times), "events at the orbit's segment ends")
+PY

@@ -61,7 +61,7 @@ LabelledPoint ReadLabelledPoint(const std::filesystem::path& results_root, const
   std::vector<std::string> labels;
   for (const auto& row : table.rows) {
     if (row.size() != table.header.size()) continue;
-    labels.push_back(row[1]);
+    if (labels.empty() || labels.back() != row[1]) labels.push_back(row[1]);  // an end repeats its label
     if (row[1] != label) continue;
     for (std::size_t k = 0; k < row.size(); ++k) point.columns.emplace_back(table.header[k], row[k]);
     return point;
