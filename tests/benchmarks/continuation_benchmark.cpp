@@ -71,13 +71,8 @@ STICKSLIP_FAMILY(paper_6, "paper-6-omega-up.toml")
 // threads (0: every core).
 void SweepWallTime(benchmark::State& state) {
   const PaperExample& e = *FindPaperExample("paper-5.1");
-  SweepOptions options;
-  options.from = 0.55;
-  options.to = 0.6;
-  options.steps = 10;
-  options.transient_periods = 100;
-  options.recorded_periods = 10;
-  options.threads = static_cast<int>(state.range(0));
+  const SweepOptions options{.from = 0.55, .to = 0.6, .steps = 10, .transient_periods = 100, .recorded_periods = 10,
+                             .threads = static_cast<int>(state.range(0))};
   const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 4, 1);
   for (auto _ : state) {
     benchmark::DoNotOptimize(Sweep(e.parameters, starts, e.phi, options).back().section.back());

@@ -24,14 +24,7 @@ State OdeintAfter(const Parameters& p, const State& x0, double phi, int periods)
 }
 
 SweepOptions ShortSweep(SweepStart start) {
-  SweepOptions o;
-  o.from = 0.56;
-  o.to = 0.6;
-  o.steps = 2;
-  o.transient_periods = 2;
-  o.recorded_periods = 2;
-  o.start = start;
-  return o;
+  return {.from = 0.56, .to = 0.6, .steps = 2, .transient_periods = 2, .recorded_periods = 2, .start = start};
 }
 
 Parameters WithOmega(Parameters p, double omega) {
