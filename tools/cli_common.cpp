@@ -59,6 +59,13 @@ std::string SetKeysHelp() {
   return help;
 }
 
+std::string ValidRange(ParameterId id) {
+  for (const SetKey& k : kSetKeys) {
+    if (k.key == ToString(id)) return std::string(k.valid_range);
+  }
+  return "a finite number";
+}
+
 ModelInput ResolveModelInput(const std::string& preset, const std::vector<std::string>& assignments) {
   return ResolveModelInput(preset, "", "", assignments);
 }

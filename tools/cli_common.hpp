@@ -25,7 +25,7 @@ class InputError : public std::runtime_error {
 };
 
 // A decimal number, the whole text, finite; otherwise InputError
-// "<field> = '<text>' is not a number: valid range <valid_range>".
+// "<field> = '<text>' is not a finite number: valid range <valid_range>".
 double ParseNumber(std::string_view field, std::string_view text, std::string_view valid_range);
 
 // The physical data and the initial state and phase: the keys chi, eta, omega, u_s, u_r, x10,
@@ -39,6 +39,9 @@ struct ModelInput {
 
 // The help text of --set, listing every key with its meaning and valid range.
 std::string SetKeysHelp();
+
+// A parameter's valid range as the messages print it, e.g. "0 < chi < 1".
+std::string ValidRange(ParameterId id);
 
 // Starts from the preset's printed values (if `preset` is not empty), applies every
 // "key=value" of `assignments`, checks that the parameters were all given and are valid

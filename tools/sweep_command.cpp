@@ -51,8 +51,8 @@ int RunSweep(const SweepArgs& args) {
   }
   SweepOptions options;
   options.parameter = *parameter;
-  options.from = ParseNumber("from", args.from, "a valid value of the parameter");
-  options.to = ParseNumber("to", args.to, "a valid value of the parameter");
+  options.from = ParseNumber("from", args.from, ValidRange(*parameter));
+  options.to = ParseNumber("to", args.to, ValidRange(*parameter));
   options.steps = Count("steps", args.steps, 1, 100000);
   options.transient_periods = Count("transients", args.transients, 0, 1000000);
   options.recorded_periods = Count("periods", args.periods, 1, 100000);
@@ -93,18 +93,19 @@ Command AddSweepCommand(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "Brute-force bifurcation diagram: step a parameter from --from to --to and back, each point "
-      "starting from the last state, simulate --transients forcing periods out and record the "
-      "stroboscopic section (the state at forcing phase phi) over --periods periods, with stops and "
-      "sticks per period and the period of the motion. --chains independent chains start from the "
-      "preset's (or --set) state and from states scattered around it, and run in parallel; the "
-      "output does not depend on --threads.");
+      "Brute-force bifurcation diagram: step a parameter from --from to --to, simulate --transients "
+      "forcing periods out and record the stroboscopic section (the state at forcing phase phi) over "
+      "--periods periods, with stops and sticks per period and the period of the motion. With "
+      "--start chained (the default) each point starts from the last state and the sweep comes back "
+      "down from --to; with --start fixed every point starts from its chain's start, in one pass. "
+      "--chains independent chains start from the preset's (or --set, or --point) state and from "
+      "states scattered around it, and run in parallel; the output does not depend on --threads.");
   cmd->add_option("--preset", args->preset, "paper example for the data and the first start");
   AddPointOptions(*cmd, &args->point, &args->results);
   cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
   cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->required();
-  cmd->add_option("--to", args->to, "last value of the upward sweep")->required();
+  cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->required();
   cmd->add_option("--steps", args->steps, "intervals between --from and --to (1 to 1e5)")->capture_default_str();
   cmd->add_option("--transients", args->transients, "forcing periods discarded per point (0 to 1e6)")
       ->capture_default_str();

@@ -9,8 +9,10 @@
 // The counter us_per_point is the figure the README reports (median over the repetitions).
 //
 // Also the brute-force sweep's wall time on 1 thread and on every core, for the parallel
-// speed-up of its chains.
+// speed-up of its chains, and the exact simulator's cost per forcing period over a short and a
+// long run.
 #include <filesystem>
+#include <numbers>
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -19,6 +21,7 @@
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/simulation.hpp"
 #include "stickslip/model/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
@@ -67,11 +70,11 @@ STICKSLIP_FAMILY(paper_5_1, "paper-5.1-omega-up.toml")
 STICKSLIP_FAMILY(paper_5_2, "paper-5.2-omega-down.toml")
 STICKSLIP_FAMILY(paper_6, "paper-6-omega-up.toml")
 
-// Section 5.1 over omega, four chains (the command line's default) up and down, on range(0)
-// threads (0: every core).
+// Section 5.1 over omega with the command line's defaults (four chains up and down, 500
+// transient and 20 recorded periods per point), on range(0) threads (0: every core).
 void SweepWallTime(benchmark::State& state) {
   const PaperExample& e = *FindPaperExample("paper-5.1");
-  const SweepOptions options{.from = 0.55, .to = 0.6, .steps = 10, .transient_periods = 100, .recorded_periods = 10,
+  const SweepOptions options{.from = 0.55, .to = 0.6, .steps = 10, .transient_periods = 500, .recorded_periods = 20,
                              .threads = static_cast<int>(state.range(0))};
   const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 4, 1);
   for (auto _ : state) {
@@ -80,6 +83,21 @@ void SweepWallTime(benchmark::State& state) {
   state.counters["workers"] = WorkerCount(options.threads, static_cast<int>(starts.size()));
 }
 BENCHMARK(SweepWallTime)->ArgName("threads")->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// The exact simulator over range(0) forcing periods of section 5.1's motion: the cost per period
+// must not grow with the duration (each event's search looks only as far as the event).
+void SimulationPerPeriod(benchmark::State& state) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SimulationOptions options;
+  options.duration = static_cast<double>(state.range(0)) * 2.0 * std::numbers::pi / e.parameters.omega;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(SimulateExact(e.parameters, e.initial_state, e.phi, options).events.size());
+  }
+  state.counters["us_per_period"] = benchmark::Counter(static_cast<double>(state.range(0)) * 1e-6,
+                                                       benchmark::Counter::kIsIterationInvariantRate |
+                                                           benchmark::Counter::kInvert);
+}
+BENCHMARK(SimulationPerPeriod)->ArgName("periods")->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace stickslip

@@ -59,6 +59,7 @@ expect_rejected point "valid RUN:LABEL" --point paper-5.1-omega-up
 expect_rejected point "valid labels EP1" --point paper-5.1-omega-up:XX9 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "cannot read" --point no-such-run:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "at most one" --point paper-5.1-omega-up:TR2 --preset paper-5.1
+expect_rejected point "without '/' or '..'" --point a/b:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 
 command=sweep
 output_flag=--output
@@ -74,6 +75,8 @@ expect_rejected steps "1 <= steps" --preset paper-4.1 --from 0.55 --to 0.6 --ste
 expect_rejected "from: omega = -0.1" "omega > 0" --preset paper-4.1 --from -0.1 --to 0.6
 expect_rejected "to: u_r = 0.05" "u_r >= u_s" --preset paper-4.1 --parameter u_r --from 0.3 --to 0.05
 expect_rejected parameter "chi, eta, omega" "${w[@]}" --parameter mu
+expect_rejected "from = 'abc'" "valid range 0 < chi < 1" --preset paper-4.1 --parameter chi --from abc --to 0.3
+expect_rejected point "run '../results' is invalid" --point ../results:EP1 --from 0.55 --to 0.6
 
 # An unknown subcommand also exits 2 with one line.
 "$bin" simulat > /dev/null 2> "$work/stderr"

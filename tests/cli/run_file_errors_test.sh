@@ -48,6 +48,10 @@ expect 2 "key 'unknowns' is invalid: the system is not square" "$good
 free = [\"u_r\"]"
 expect 2 "non-ASCII byte" "${good/up/üp}"
 expect 2 "control character" "$(printf '%s\001' "$good")"
+expect 2 "key 'start.restart.run' = '../x' is invalid: valid a run name" "${good/preset = \"paper-5.1\"/restart = { run = \"..\/x\", label = \"EP1\" \}}"
+# The byte after a backslash in a string is checked like any other.
+expect 2 "r.toml:1:12: control character 0x01" "$(printf 'output = "\\\001t"')"
+expect 2 "r.toml:1:12: non-ASCII byte 0xc3" "$(printf 'output = "\\\303\274t"')"
 expect 2 "nest at most two levels" "$good
 x = [[[1]]]"
 expect 2 "r.toml:1:" 'output = "t'

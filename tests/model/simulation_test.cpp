@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/events.hpp"
+#include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 
 namespace stickslip {
@@ -140,6 +141,46 @@ TEST(ExactSimulator, SegmentsJoinUpAndSamplesFollowTheFlow) {
   }
   EXPECT_DOUBLE_EQ(r.segments.back().t_end, options.duration);
   EXPECT_EQ(r.samples.size(), static_cast<std::size_t>(std::floor(options.duration / 0.05)) + 1);
+}
+
+// Time is in whole forcing periods in a sweep's section: N T, sampled every T, must give N + 1
+// samples whatever rounding does to N T / T.
+TEST(ExactSimulator, SamplesTheEndOfADurationOfWholeSampleSteps) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  int checked = 0;
+  for (double omega = 0.5; omega < 0.6; omega += 1e-3) {
+    Parameters p = e.parameters;
+    p.omega = omega;
+    const double period = 2.0 * kPi / omega;
+    SimulationOptions options;
+    options.duration = 3 * period;
+    options.sample_step = period;
+    const SimulationResult r = SimulateExact(p, e.initial_state, e.phi, options);
+    ASSERT_EQ(r.samples.size(), 4u) << "omega = " << omega;
+    EXPECT_EQ(r.samples.back().t, options.duration);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 100);
+}
+
+// A stick whose force beats slowly toward the static level (forcing near the stick frequency 1,
+// starting out of phase with the free motion of x1) exits after more than five forcing periods:
+// found where the independent Odeint integration finds it, and so is every event after it.
+TEST(ExactSimulator, FindsAStickExitManyForcingPeriodsIntoTheStick) {
+  const Parameters p{0.3, 2.0, 0.95, 0.1, 0.55};
+  const State rest(0.5, 0.0, 0.0, 0.0);
+  SimulationOptions options;
+  options.duration = 200.0;
+  const SimulationResult exact = SimulateExact(p, rest, kPi, options);
+  const SimulationResult odeint = SimulateOdeint(p, rest, kPi, options);
+  ASSERT_GE(exact.events.size(), 10u);
+  EXPECT_EQ(exact.events[0].kind, EventKind::kStickExit);
+  EXPECT_GT(exact.events[0].t, 5.0 * 2.0 * kPi / p.omega);
+  ASSERT_EQ(exact.events.size(), odeint.events.size());
+  for (std::size_t i = 0; i < exact.events.size(); ++i) {
+    EXPECT_EQ(exact.events[i].mode_after, odeint.events[i].mode_after) << "event " << i;
+    EXPECT_NEAR(exact.events[i].t, odeint.events[i].t, 1e-8) << "event " << i;
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <numbers>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -124,9 +125,27 @@ TEST(Sweep, RecognisesThePeriodOneMotionOfSection41) {
   EXPECT_DOUBLE_EQ(p.sticks_per_period, 0.0);
 }
 
-TEST(Sweep, RejectsAnEmptyListOfStarts) {
+TEST(Sweep, RejectsNoStartsAndCountsOutOfRange) {
   const PaperExample& e = *FindPaperExample("paper-4.1");
   EXPECT_THROW(Sweep(e.parameters, {}, e.phi, ShortSweep(SweepStart::kChained)), std::invalid_argument);
+  for (auto [steps, transients, recorded] : {std::tuple{0, 2, 2}, {2, -1, 2}, {2, 2, 0}}) {
+    SweepOptions o = ShortSweep(SweepStart::kFixed);
+    o.steps = steps;
+    o.transient_periods = transients;
+    o.recorded_periods = recorded;
+    EXPECT_THROW(Sweep(e.parameters, {e.initial_state}, e.phi, o), std::invalid_argument)
+        << steps << " " << transients << " " << recorded;
+  }
+}
+
+// No transients: the first section state is the state one forcing period after the start.
+TEST(Sweep, RecordsFromTheStartWithoutTransients) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SweepOptions o = ShortSweep(SweepStart::kFixed);
+  o.transient_periods = 0;
+  const SweepPoint first = Sweep(e.parameters, {e.initial_state}, e.phi, o).front();
+  const State expected = OdeintAfter(WithOmega(e.parameters, 0.56), e.initial_state, e.phi, 1);
+  EXPECT_LT((first.section.front() - expected).lpNorm<Eigen::Infinity>(), 1e-7);
 }
 
 // splitmix64's published test values (Vigna's reference implementation): seed 0 gives

@@ -1,6 +1,7 @@
 #include "stickslip/numerics/parallel_for.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -24,14 +25,16 @@ TEST(ParallelFor, RunsOnTheRequestedNumberOfThreads) {
   std::mutex mutex;
   std::set<std::thread::id> seen;
   std::atomic<int> arrived{0};
-  // Every item waits until three have started: only three threads can get there.
+  // Every item waits until three have started: only three threads can get there (within a
+  // deadline, so that a failure shows as a failed expectation rather than a hung test).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   ParallelFor(3, 3, [&](int) {
     {
       const std::lock_guard lock(mutex);
       seen.insert(std::this_thread::get_id());
     }
     ++arrived;
-    while (arrived < 3) std::this_thread::yield();
+    while (arrived < 3 && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
   });
   EXPECT_EQ(seen.size(), 3u);
   EXPECT_EQ(WorkerCount(8, 3), 3);

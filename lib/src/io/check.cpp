@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <string_view>
 #include <utility>
 #include <set>
@@ -22,8 +23,7 @@ bool IsSolutionColumn(const std::string& c) {
 
 bool StartsWith(const std::string& text, std::string_view prefix) { return text.rfind(prefix, 0) == 0; }
 
-// The Floquet multipliers of a row, sorted by real and then imaginary part: their order in the
-// file is the eigensolver's, which need not survive a change of build.
+// The Floquet multipliers of a row, in the file's order (the eigensolver's).
 std::vector<std::complex<double>> Multipliers(const std::vector<std::string>& header, const std::vector<std::string>& row) {
   std::vector<std::complex<double>> mu;
   for (std::size_t k = 0; k + 1 < header.size(); ++k) {
@@ -31,8 +31,31 @@ std::vector<std::complex<double>> Multipliers(const std::vector<std::string>& he
       mu.emplace_back(std::stod(row[k]), std::stod(row[k + 1]));
     }
   }
-  std::sort(mu.begin(), mu.end(), [](auto a, auto b) { return std::pair(a.real(), a.imag()) < std::pair(b.real(), b.imag()); });
   return mu;
+}
+
+// Two NaNs agree: a value that could not be computed in both runs is no difference.
+double Distance(std::complex<double> a, std::complex<double> b) {
+  const bool nan_a = std::isnan(a.real()) || std::isnan(a.imag());
+  const bool nan_b = std::isnan(b.real()) || std::isnan(b.imag());
+  if (nan_a || nan_b) return nan_a && nan_b ? 0.0 : std::numeric_limits<double>::infinity();
+  return std::abs(a - b);
+}
+
+// `fresh` reordered so that each multiplier of `stored` faces the nearest one not yet taken:
+// the eigensolver's order need not survive a change of build, and sorting would pair the wrong
+// members of a conjugate pair whose real parts differ by rounding.
+std::vector<std::complex<double>> Matched(const std::vector<std::complex<double>>& stored,
+                                          std::vector<std::complex<double>> fresh) {
+  std::vector<std::complex<double>> matched;
+  for (std::complex<double> m : stored) {
+    if (fresh.empty()) break;
+    const auto nearest = std::min_element(fresh.begin(), fresh.end(),
+                                          [&](auto a, auto b) { return Distance(m, a) < Distance(m, b); });
+    matched.push_back(*nearest);
+    fresh.erase(nearest);
+  }
+  return matched;
 }
 
 // A flag is compared only where the stored row is clearly on one side of its boundary: at a
@@ -72,9 +95,9 @@ void CompareTables(const std::string& file, const CsvTable& stored, const CsvTab
     const auto& s = *b[i];
     const std::string where = r[1].empty() ? fmt::format("row {}", i + 1) : r[1];
     const std::vector<std::complex<double>> mu = Multipliers(header, r);
-    const std::vector<std::complex<double>> fresh_mu = Multipliers(header, s);
+    const std::vector<std::complex<double>> fresh_mu = Matched(mu, Multipliers(header, s));
     for (std::size_t k = 0; k < mu.size(); ++k) {
-      if (!(std::abs(mu[k] - fresh_mu[k]) <= tol.multiplier * std::max(1.0, std::abs(mu[k])))) {
+      if (!(Distance(mu[k], fresh_mu[k]) <= tol.multiplier * std::max(1.0, std::abs(mu[k])))) {
         auto text = [](std::complex<double> m) { return fmt::format("{}{:+}i", m.real(), m.imag()); };
         out->push_back({file, where, fmt::format("multiplier {}", k + 1), text(mu[k]), text(fresh_mu[k])});
       }
@@ -94,7 +117,7 @@ void CompareTables(const std::string& file, const CsvTable& stored, const CsvTab
       const double y = std::stod(s[k]);
       const double limit = column == parameter ? tol.parameter_relative * std::max(std::abs(x), 1e-300)
                                                : tol.solution * std::max(1.0, std::abs(x));
-      if (!(std::abs(x - y) <= limit)) out->push_back({file, where, column, r[k], s[k]});
+      if (!(Distance(x, y) <= limit)) out->push_back({file, where, column, r[k], s[k]});
     }
   }
 }

@@ -33,7 +33,7 @@ void Screen(std::string_view content, std::string_view path) {
                                    content.size(), kMaxRunFileBytes));
   }
   int line = 1, column = 0, depth = 0;
-  bool comment = false;
+  bool comment = false, escaped = false;
   char quote = 0;
   for (std::size_t i = 0; i < content.size(); ++i) {
     const auto c = static_cast<unsigned char>(content[i]);
@@ -42,6 +42,7 @@ void Screen(std::string_view content, std::string_view path) {
       ++line;
       column = 0;
       comment = false;
+      escaped = false;
       if (quote == '"' || quote == '\'') quote = 0;  // single-line strings end (toml++ reports)
       continue;
     }
@@ -54,7 +55,9 @@ void Screen(std::string_view content, std::string_view path) {
     }
     if (comment) continue;
     if (quote != 0) {
-      if (c == '\\' && quote == '"') ++i, ++column;
+      // The byte after a backslash is escaped but was checked above like any other.
+      if (escaped) escaped = false;
+      else if (c == '\\' && quote == '"') escaped = true;
       else if (c == static_cast<unsigned char>(quote)) quote = 0;
       continue;
     }
@@ -223,6 +226,10 @@ class TableReader {
 
 }  // namespace
 
+bool IsRunName(std::string_view name) {
+  return !name.empty() && name.find('/') == std::string_view::npos && name.find("..") == std::string_view::npos;
+}
+
 RunFile ParseRunFile(std::string_view content, std::string_view path) {
   Screen(content, path);
   toml::table root;
@@ -236,7 +243,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   run.path = std::string(path);
   TableReader top(root, "", path, &run);
   top.String("output", &run.output, true);
-  if (run.output.empty() || run.output.find('/') != std::string::npos || run.output.find("..") != std::string::npos) {
+  if (!IsRunName(run.output)) {
     top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid a name without '/' or '..'", run.output));
   }
 
@@ -249,6 +256,9 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   if (const toml::table* restart = s.Table("restart", false)) {
     TableReader r(*restart, "start.restart.", path, &run);
     r.String("run", &run.restart_run, true);
+    if (!IsRunName(run.restart_run)) {
+      r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid a run name without '/' or '..'", run.restart_run));
+    }
     r.String("label", &run.restart_label, true);
     r.RejectUnknown();
   }

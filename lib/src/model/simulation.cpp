@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
@@ -77,18 +78,22 @@ std::optional<SegmentEndpoint> SlipEnd(Mode mode, const ModeMotion<double>& moti
 }
 
 // In a stick: the first time G (exit into slip+) or G1 (exit into slip-) crosses zero
-// (eq. 11, 35). A touch leaves the constraint satisfied and the stick goes on.
+// (eq. 11, 35). A touch leaves the constraint satisfied and the stick goes on. The search runs
+// one forcing period at a time: a constraint that never crosses would otherwise be searched to
+// the horizon at every stick, which makes a long simulation quadratic in its duration.
 std::optional<SegmentEndpoint> StickEnd(const ModeMotion<double>& motion, double phase,
                                         double horizon, const Parameters& p,
                                         const ZeroSearchOptions& zeros) {
   const SinusoidSum force = StickForceAlong(motion, phase, p);
   const double threshold = p.eta * p.u_r;
+  const SinusoidSum g = force.Affine(1.0, threshold);    // G = s + eta u_r
+  const SinusoidSum g1 = force.Affine(-1.0, threshold);  // G1 = -s + eta u_r
+  const double window = 2.0 * std::numbers::pi / p.omega;
   std::optional<SegmentEndpoint> end;
-  auto first_crossing = [&](const SinusoidSum& constraint, Mode next) {
-    double from = 0.0;
+  auto first_crossing = [&](const SinusoidSum& constraint, Mode next, double from, double to) {
     // Touches are rare; look past each one.
-    while (from < horizon) {
-      const std::vector<Zero> found = Zeros(constraint, from, horizon, 1, zeros);
+    while (from < to) {
+      const std::vector<Zero> found = Zeros(constraint, from, to, 1, zeros);
       if (found.empty()) return;
       if (found.front().kind == ZeroKind::kCrossing) {
         if (!end || found.front().t < end->elapsed) {
@@ -99,8 +104,11 @@ std::optional<SegmentEndpoint> StickEnd(const ModeMotion<double>& motion, double
       from = found.front().t;
     }
   };
-  first_crossing(force.Affine(1.0, threshold), Mode::kSlipPositive);   // G = s + eta u_r
-  first_crossing(force.Affine(-1.0, threshold), Mode::kSlipNegative);  // G1 = -s + eta u_r
+  for (double from = 0.0; from < horizon && !end; from += window) {
+    const double to = std::min(horizon, from + window);
+    first_crossing(g, Mode::kSlipPositive, from, to);
+    first_crossing(g1, Mode::kSlipNegative, from, to);
+  }
   return end;
 }
 
@@ -148,7 +156,9 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     }
   }
   if (options.sample_step > 0.0) {
-    const auto count = static_cast<long>(std::floor(options.duration / options.sample_step));
+    // A duration meant as a whole number of sample steps may come out a rounding error short of
+    // it (N T / T < N): its last sample still belongs in.
+    const auto count = static_cast<long>(std::floor(options.duration / options.sample_step * (1.0 + 1e-12)));
     for (long k = 0; k <= count; ++k) {
       const double ts = std::min(static_cast<double>(k) * options.sample_step, options.duration);
       if (ts > result.segments.back().t_end) break;

@@ -18,6 +18,19 @@ double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
   return pass == SweepPass::kDown ? o.to - fraction * (o.to - o.from) : o.from + fraction * (o.to - o.from);
 }
 
+// The simulation of one point, or an error naming the point.
+SimulationResult SimulateOrThrow(const Parameters& p, const State& x0, double phi, double duration,
+                                 const SweepOptions& o, int chain, SweepPass pass, int step) {
+  SimulationOptions options;
+  options.duration = duration;
+  SimulationResult r = SimulateExact(p, x0, phi, options);
+  if (!r.completed) {
+    throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
+                                         ToString(pass), step, ToString(o.parameter), p[o.parameter], r.message));
+  }
+  return r;
+}
+
 // One point: transients from `start`, then the recorded section. Time 0 is a section time (the
 // forcing phase there is phi_section, as at every multiple of the period).
 SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_section, const SweepOptions& o,
@@ -25,16 +38,18 @@ SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_
   Parameters p = base;
   p[o.parameter] = ValueAt(o, pass, step);
   const double period = 2.0 * std::numbers::pi / p.omega;
-  SimulationOptions transient;
-  transient.duration = o.transient_periods * period;
-  const State settled = SimulateExact(p, start, phi_section, transient).segments.back().end;
-  SimulationOptions record;
-  record.duration = o.recorded_periods * period;
-  record.sample_step = period;
-  const SimulationResult r = SimulateExact(p, settled, phi_section, record);
+  State settled = start;
+  if (o.transient_periods > 0) {
+    settled = SimulateOrThrow(p, start, phi_section, o.transient_periods * period, o, chain, pass, step)
+                  .segments.back()
+                  .end;
+  }
+  const SimulationResult r =
+      SimulateOrThrow(p, settled, phi_section, o.recorded_periods * period, o, chain, pass, step);
   SweepPoint point{chain, pass, step, p[o.parameter], {}, 0.0, 0.0, 0};
-  for (std::size_t k = 1; k < r.samples.size(); ++k) point.section.push_back(r.samples[k].state);
-  if (point.section.empty()) point.section.push_back(r.segments.back().end);
+  // The k-th section time, k T, lies within rounding of the end for k = recorded_periods.
+  const double end = r.segments.back().t_end;
+  for (int k = 1; k <= o.recorded_periods; ++k) point.section.push_back(StateAt(r, std::min(k * period, end)));
   for (const Event& e : r.events) {
     point.stops_per_period += e.kind == EventKind::kStop;
     point.sticks_per_period += e.mode_after == Mode::kStick;
@@ -80,6 +95,15 @@ std::string ToString(SweepPass pass) {
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options) {
   if (starts.empty()) throw std::invalid_argument("Sweep: no starting state");
+  if (options.steps < 1) throw std::invalid_argument(fmt::format("Sweep: steps = {}, must be >= 1", options.steps));
+  if (options.transient_periods < 0) {
+    throw std::invalid_argument(
+        fmt::format("Sweep: transient_periods = {}, must be >= 0", options.transient_periods));
+  }
+  if (options.recorded_periods < 1) {
+    throw std::invalid_argument(
+        fmt::format("Sweep: recorded_periods = {}, must be >= 1", options.recorded_periods));
+  }
   const int chains = static_cast<int>(starts.size());
   const int per_chain = options.steps + 1;
   // Each work item fills its own slot; the slots are joined in index order, so the output is the

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -33,7 +34,13 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& body) {
   const int workers = WorkerCount(threads, count);
   {
     std::vector<std::jthread> pool;
-    for (int w = 1; w < workers; ++w) pool.emplace_back(work);
+    for (int w = 1; w < workers; ++w) {
+      try {
+        pool.emplace_back(work);
+      } catch (const std::system_error&) {
+        break;  // no more threads to be had: the ones running do the work, with the same result
+      }
+    }
     work();  // the calling thread is one of the workers
   }  // jthreads join here
   if (first_failure) std::rethrow_exception(first_failure);

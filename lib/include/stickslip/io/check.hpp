@@ -17,7 +17,7 @@ namespace stickslip {
 struct CheckTolerances {
   double parameter_relative = 1e-8;
   double solution = 1e-7;  // absolute, scaled by max(1, |value|)
-  double multiplier = 1e-6;  // absolute, scaled by max(1, |mu|); as a set sorted by (re, im)
+  double multiplier = 1e-6;  // absolute, scaled by max(1, |mu|); each stored one against the nearest fresh one
   double flag_clearance = 1e-6;
 };
 

@@ -4,10 +4,10 @@
 //   branch.csv          one row per point: pt, label, chi, eta, omega, u_s, u_r, phi, x10, x20,
 //                       v10, d1..dn, margin:<name>..., admissible, newton_iterations, step_size
 //   special-points.csv  the labelled points: the same columns plus type and test_function
-//   summary.json        run file, version, signature, counts, termination, wall time
+//   summary.json        run file, version, signature, counts, termination
 // Labels are the special-point type and a running number (EP1, LP2, GR3, ...), as AUTO's.
-// Numbers are written in shortest round-trip form: the two CSV files are byte-identical from
-// run to run; wall time lives in summary.json only.
+// Numbers are written in shortest round-trip form, and no time or host is recorded: the files
+// are byte-identical from run to run.
 #pragma once
 
 #include <filesystem>
@@ -35,7 +35,8 @@ RunFiles FormatRunFiles(const RunFile& run, const OrbitBranch& branch);
 void WriteRunFiles(const std::filesystem::path& results_root, const std::string& output, const RunFiles& files);
 
 // The CSV row of the labelled point `label` in results_root/<run>/special-points.csv, as
-// (column, text) pairs, and the signature from its summary.json. Throws std::runtime_error.
+// (column, text) pairs, and the signature from its summary.json. Throws std::runtime_error,
+// also when `run` is not a run name (IsRunName).
 struct LabelledPoint {
   std::string signature;
   std::vector<std::pair<std::string, std::string>> columns;

@@ -75,6 +75,10 @@ struct RunFile {
   NamedValues user_values;  // (variable, value); the continuation parameter's from user_values
 };
 
+// A run's name is the folder of its results under the results root: one path component, so
+// not empty, without '/' and without "..".
+bool IsRunName(std::string_view name);
+
 // Largest run file accepted (a guard against feeding the parser arbitrary data).
 inline constexpr std::size_t kMaxRunFileBytes = 64 * 1024;
 

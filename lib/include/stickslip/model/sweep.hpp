@@ -16,7 +16,9 @@ namespace stickslip {
 enum class SweepStart {
   // Up from `from` to `to` and then back down, each point from the last state of the one
   // before (the down pass from where the up pass ended): the attractor followed as the
-  // parameter moves, so hysteresis and coexisting motions show. Chains run in parallel.
+  // parameter moves, so hysteresis and coexisting motions show. `to` is simulated twice, last
+  // of the up pass and first of the down pass (from the up pass's end): the two agree once the
+  // motion has settled. Chains run in parallel.
   kChained,
   // Every point from its chain's starting state, in one pass: no memory between points, so
   // every (chain, point) runs in parallel.
@@ -28,7 +30,7 @@ struct SweepOptions {
   double from = 0.0;           // first value of the up (or only) pass
   double to = 0.0;             // last value of the up (or only) pass
   int steps = 50;              // intervals between from and to (>= 1)
-  int transient_periods = 200;  // forcing periods simulated and discarded at each point
+  int transient_periods = 200;  // forcing periods simulated and discarded at each point (>= 0)
   int recorded_periods = 20;    // forcing periods recorded at each point (>= 1)
   double periodicity_tolerance = 1e-6;  // section points this close repeat
   SweepStart start = SweepStart::kChained;
@@ -51,8 +53,9 @@ struct SweepPoint {
 
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
 // (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
-// step, whatever the number of threads. Preconditions: starts is not empty, and Validate passes
-// at every swept value.
+// step, whatever the number of threads. Precondition: Validate passes at every swept value.
+// Throws std::invalid_argument for no starts or options out of range, and std::runtime_error
+// naming the point when a simulation stops early (max_events: chattering).
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options);
 

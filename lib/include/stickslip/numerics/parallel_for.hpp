@@ -13,6 +13,7 @@ int WorkerCount(int requested, int count);
 // take the next index from a shared counter. body must write its result only to a slot of its
 // own index, so the outcome does not depend on the number of threads. If a call throws, no new
 // item is started and the first exception (in time) is rethrown once every thread has stopped.
+// When the system refuses a thread, the threads already running share the work.
 void ParallelFor(int count, int threads, const std::function<void(int)>& body);
 
 }  // namespace stickslip
