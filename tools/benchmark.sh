@@ -35,7 +35,7 @@ for key in sorted(k for k in median if k.startswith("closed_form_")):
 lines += ["", "Targets: at most 20 µs per point with the closed form; closed form at least 100x faster than Odeint."]
 serial, (cores, parallel) = sweep["threads:1"][1], sweep["threads:0"]
 lines += ["", "Brute-force sweep (§5.1 over ω, 4 chains up and down, 11 values, 500 + 20 periods each: the "
-          "command line's defaults), median wall time:", "",
+          "command line's default chains and periods), median wall time:", "",
           "| threads | wall time (ms) | speed-up |", "|---|---|---|",
           f"| 1 | {serial:.0f} | 1.00x |",
           f"| {cores} (every core) | {parallel:.0f} | {serial / parallel:.2f}x |",

@@ -165,8 +165,8 @@ int RunContinue(ContinueArgs args) {
   if (run.max_points < 1 || run.max_points > 1000000) {
     throw InputError(fmt::format("max-points = {} is invalid: valid range 1 <= max-points <= 1000000", run.max_points));
   }
-  if (run.output.empty() || run.output.find('/') != std::string::npos || run.output.find("..") != std::string::npos) {
-    throw InputError(fmt::format("output = '{}' is invalid: valid a name without '/' or '..'", run.output));
+  if (!IsRunName(run.output)) {
+    throw InputError(fmt::format("output = '{}' is invalid: valid {}", run.output, kRunNameRule));
   }
   std::optional<Executed> e = Execute(run, args.results);
   if (!e) return kExitNoConvergence;

@@ -70,8 +70,8 @@ STICKSLIP_FAMILY(paper_5_1, "paper-5.1-omega-up.toml")
 STICKSLIP_FAMILY(paper_5_2, "paper-5.2-omega-down.toml")
 STICKSLIP_FAMILY(paper_6, "paper-6-omega-up.toml")
 
-// Section 5.1 over omega with the command line's defaults (four chains up and down, 500
-// transient and 20 recorded periods per point), on range(0) threads (0: every core).
+// Section 5.1 over omega, 11 values, with the command line's default chains (four, up and down)
+// and periods (500 transient and 20 recorded per point), on range(0) threads (0: every core).
 void SweepWallTime(benchmark::State& state) {
   const PaperExample& e = *FindPaperExample("paper-5.1");
   const SweepOptions options{.from = 0.55, .to = 0.6, .steps = 10, .transient_periods = 500, .recorded_periods = 20,
@@ -85,7 +85,8 @@ void SweepWallTime(benchmark::State& state) {
 BENCHMARK(SweepWallTime)->ArgName("threads")->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // The exact simulator over range(0) forcing periods of section 5.1's motion: the cost per period
-// must not grow with the duration (each event's search looks only as far as the event).
+// must not grow with the duration (a stick's exit is searched with a reach doubled from one
+// period, not to the end of the run).
 void SimulationPerPeriod(benchmark::State& state) {
   const PaperExample& e = *FindPaperExample("paper-5.1");
   SimulationOptions options;

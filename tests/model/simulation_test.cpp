@@ -183,5 +183,64 @@ TEST(ExactSimulator, FindsAStickExitManyForcingPeriodsIntoTheStick) {
   }
 }
 
+// A stick from rest with x1 off its stick equilibrium chi x2 by -0.2: the stick force s (eq. 11)
+// beats the free motion of x1 (frequency 1) against the forcing (omega = 0.6). The search for
+// the stick's exit first reaches one forcing period T ahead; a grazing or a crossing of G just
+// behind that reach must come out as a search that went on past it would find it.
+struct BeatingStick {
+  Parameters p{0.3, 2.0, 0.6, 0.1, 1.0};
+  State start = State(0.3 * -1.0 - 0.2, -1.0, 0.0, 0.0);
+  double period = 2.0 * kPi / 0.6;
+  SinusoidSum Force(double phi) const { return StickForceAlong(MotionInMode(Mode::kStick, start, phi, p), phi, p); }
+  // The phase that puts the minimum of s near T at T + 1e-7.
+  double PhaseWithForceMinimumJustAfterOnePeriod() const {
+    double phi = 0.3;
+    for (int i = 0; i < 60; ++i) phi += p.omega * (Minimum(Force(phi), period - 1.0, period + 1.0).t - (period + 1e-7));
+    return phi;
+  }
+};
+
+TEST(ExactSimulator, SticksOnThroughAGrazingJustAfterTheFirstForcingPeriod) {
+  BeatingStick c;
+  const double phi = c.PhaseWithForceMinimumJustAfterOnePeriod();
+  const SinusoidSum s = c.Force(phi);
+  const double low = Minimum(s, c.period - 1.0, c.period + 1.0).value;
+  // G = s + eta u_r grazes zero from above, 5e-12 of its scale away: a touch, the stick goes on.
+  c.p.u_r = (-low + 5e-12 * s.Affine(1.0, -low).Scale()) / c.p.eta;
+  c.p.u_s = 0.5 * c.p.u_r;
+  const SinusoidSum g = s.Affine(1.0, c.p.eta * c.p.u_r);
+  const SinusoidSum g1 = s.Affine(-1.0, c.p.eta * c.p.u_r);
+  ASSERT_NEAR(Minimum(g, c.period - 1.0, c.period + 1.0).t, c.period + 1e-7, 1e-9);
+  ASSERT_GT(Minimum(g, 0.0, 2.0 * c.period - 1.0).value, 0.0);
+  ASSERT_GT(Minimum(g1, 0.0, 2.0 * c.period - 1.0).value, 0.0);
+  SimulationOptions options;
+  options.duration = 3.0 * c.period;
+  const SimulationResult r = SimulateExact(c.p, c.start, phi, options);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_GT(r.events[0].t, 2.0 * c.period - 1.0);
+}
+
+TEST(ExactSimulator, FindsAStickExitJustAfterTheFirstForcingPeriod) {
+  BeatingStick c;
+  const double phi = c.PhaseWithForceMinimumJustAfterOnePeriod() - c.p.omega * 0.5;
+  const SinusoidSum s = c.Force(phi);
+  const double exit = c.period + 3e-14;
+  // G = s + eta u_r falls through zero 3e-14 after T: at T it is within rounding of zero.
+  c.p.u_r = -s(exit) / c.p.eta;
+  c.p.u_s = 0.5 * c.p.u_r;
+  const SinusoidSum g = s.Affine(1.0, c.p.eta * c.p.u_r);
+  const SinusoidSum g1 = s.Affine(-1.0, c.p.eta * c.p.u_r);
+  ASSERT_LT(g.JetAt(c.period).slope, -0.1);
+  ASSERT_GT(Minimum(g, 0.0, c.period - 1e-6).value, 0.0);
+  ASSERT_GT(Minimum(g1, 0.0, c.period + 1.0).value, 0.0);
+  SimulationOptions options;
+  options.duration = 3.0 * c.period;
+  const SimulationResult r = SimulateExact(c.p, c.start, phi, options);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events[0].kind, EventKind::kStickExit);
+  EXPECT_EQ(r.events[0].mode_after, Mode::kSlipPositive);
+  EXPECT_NEAR(r.events[0].t, exit, 1e-12);
+}
+
 }  // namespace
 }  // namespace stickslip

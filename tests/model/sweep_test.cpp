@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <numbers>
+#include <string>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -135,6 +136,22 @@ TEST(Sweep, RejectsNoStartsAndCountsOutOfRange) {
     o.recorded_periods = recorded;
     EXPECT_THROW(Sweep(e.parameters, {e.initial_state}, e.phi, o), std::invalid_argument)
         << steps << " " << transients << " " << recorded;
+  }
+}
+
+// A simulation cut short by the event guard fails the whole sweep, naming the point, instead of
+// recording a motion that was not simulated to the end.
+TEST(Sweep, ReportsASimulationStoppedByTheEventGuardWithItsPoint) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SweepOptions o = ShortSweep(SweepStart::kChained);
+  o.max_events_per_simulation = 3;  // section 5.1 has four events per period
+  try {
+    Sweep(e.parameters, {e.initial_state}, e.phi, o);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("chain 0, up pass, step 0 (omega = 0.56)"), std::string::npos) << message;
+    EXPECT_NE(message.find("max_events"), std::string::npos) << message;
   }
 }
 

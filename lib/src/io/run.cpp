@@ -51,7 +51,7 @@ CsvTable ParseCsv(const std::string& text) {
 LabelledPoint ReadLabelledPoint(const std::filesystem::path& results_root, const std::string& run,
                                 const std::string& label) {
   if (!IsRunName(run)) {
-    throw std::runtime_error(fmt::format("run '{}' is invalid: valid a run name without '/' or '..'", run));
+    throw std::runtime_error(fmt::format("run '{}' is invalid: valid {}", run, kRunNameRule));
   }
   const std::filesystem::path dir = results_root / run;
   const CsvTable table = ParseCsv(ReadTextFile(dir / "special-points.csv"));

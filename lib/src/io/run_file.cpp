@@ -227,7 +227,7 @@ class TableReader {
 }  // namespace
 
 bool IsRunName(std::string_view name) {
-  return !name.empty() && name.find('/') == std::string_view::npos && name.find("..") == std::string_view::npos;
+  return !name.empty() && name != "." && name.find('/') == std::string_view::npos && name.find("..") == std::string_view::npos;
 }
 
 RunFile ParseRunFile(std::string_view content, std::string_view path) {
@@ -244,7 +244,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   TableReader top(root, "", path, &run);
   top.String("output", &run.output, true);
   if (!IsRunName(run.output)) {
-    top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid a name without '/' or '..'", run.output));
+    top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));
   }
 
   const toml::table* start = top.Table("start", true);
@@ -257,7 +257,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
     TableReader r(*restart, "start.restart.", path, &run);
     r.String("run", &run.restart_run, true);
     if (!IsRunName(run.restart_run)) {
-      r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid a run name without '/' or '..'", run.restart_run));
+      r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid {}", run.restart_run, kRunNameRule));
     }
     r.String("label", &run.restart_label, true);
     r.RejectUnknown();

@@ -23,6 +23,7 @@ SimulationResult SimulateOrThrow(const Parameters& p, const State& x0, double ph
                                  const SweepOptions& o, int chain, SweepPass pass, int step) {
   SimulationOptions options;
   options.duration = duration;
+  options.max_events = o.max_events_per_simulation;
   SimulationResult r = SimulateExact(p, x0, phi, options);
   if (!r.completed) {
     throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
@@ -47,9 +48,7 @@ SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_
   const SimulationResult r =
       SimulateOrThrow(p, settled, phi_section, o.recorded_periods * period, o, chain, pass, step);
   SweepPoint point{chain, pass, step, p[o.parameter], {}, 0.0, 0.0, 0};
-  // The k-th section time, k T, lies within rounding of the end for k = recorded_periods.
-  const double end = r.segments.back().t_end;
-  for (int k = 1; k <= o.recorded_periods; ++k) point.section.push_back(StateAt(r, std::min(k * period, end)));
+  for (int k = 1; k <= o.recorded_periods; ++k) point.section.push_back(StateAt(r, k * period));
   for (const Event& e : r.events) {
     point.stops_per_period += e.kind == EventKind::kStop;
     point.sticks_per_period += e.mode_after == Mode::kStick;

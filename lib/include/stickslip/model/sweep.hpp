@@ -34,6 +34,9 @@ struct SweepOptions {
   int recorded_periods = 20;    // forcing periods recorded at each point (>= 1)
   double periodicity_tolerance = 1e-6;  // section points this close repeat
   SweepStart start = SweepStart::kChained;
+  // The simulator's guard against chattering, per simulation; reaching it fails the sweep with
+  // an error naming the point, rather than recording a motion cut short.
+  int max_events_per_simulation = 1000000;
   int threads = 0;  // 0: every hardware thread. The result does not depend on it.
 };
 
@@ -55,7 +58,7 @@ struct SweepPoint {
 // (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
 // step, whatever the number of threads. Precondition: Validate passes at every swept value.
 // Throws std::invalid_argument for no starts or options out of range, and std::runtime_error
-// naming the point when a simulation stops early (max_events: chattering).
+// naming the point when a simulation stops early (max_events_per_simulation).
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options);
 
