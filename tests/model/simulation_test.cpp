@@ -189,8 +189,8 @@ TEST(ExactSimulator, FindsAStickExitManyForcingPeriodsIntoTheStick) {
 // behind that reach must come out as a search that went on past it would find it.
 struct BeatingStick {
   Parameters p{0.3, 2.0, 0.6, 0.1, 1.0};
-  State start = State(0.3 * -1.0 - 0.2, -1.0, 0.0, 0.0);
-  double period = 2.0 * kPi / 0.6;
+  State start = State(p.chi * -1.0 - 0.2, -1.0, 0.0, 0.0);
+  double period = 2.0 * kPi / p.omega;
   SinusoidSum Force(double phi) const { return StickForceAlong(MotionInMode(Mode::kStick, start, phi, p), phi, p); }
   // The phase that puts the minimum of s near T at T + 1e-7.
   double PhaseWithForceMinimumJustAfterOnePeriod() const {
