@@ -146,7 +146,7 @@ ModelInput ResolveModelInput(const std::string& preset, const std::string& point
                                    kSetKeys[static_cast<std::size_t>(id)].valid_range));
     }
   }
-  if (const auto invalid = Validate(input.parameters)) throw InputError(invalid->Message());
+  if (const auto invalid = Validate(input.parameters)) throw InputError(invalid->what());
   return input;
 }
 

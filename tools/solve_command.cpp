@@ -156,7 +156,7 @@ int RunSolve(const SolveArgs& args) {
                                    i + 1, guess.durations[i], i + 1, i + 1));
     }
   }
-  if (const auto invalid = Validate(guess.parameters)) throw InputError(invalid->Message());
+  if (const auto invalid = Validate(guess.parameters)) throw InputError(invalid->what());
   const FreeVariables free = ResolveUnknowns(guess.signature, choice);
   if (!free.error.empty()) throw InputError(free.error);
 

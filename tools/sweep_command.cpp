@@ -73,7 +73,7 @@ int RunSweep(const SweepArgs& args) {
   for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
     Parameters p = input.parameters;
     p[*parameter] = value;
-    if (const auto invalid = Validate(p)) throw InputError(fmt::format("{}: {}", field, invalid->Message()));
+    if (const auto invalid = Validate(p)) throw InputError(fmt::format("{}: {}", field, invalid->what()));
   }
   const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
   const std::vector<SweepPoint> points = Sweep(input.parameters, starts, input.phi, options);

@@ -31,9 +31,9 @@ TEST_P(ParameterValidationRejects, NamesTheFieldAndTheValidRange) {
   p[GetParam().field] = GetParam().value;
   const auto invalid = Validate(p);
   ASSERT_TRUE(invalid.has_value());
-  EXPECT_EQ(invalid->field, ToString(GetParam().field));
-  EXPECT_NE(invalid->Message().find(ToString(GetParam().field)), std::string::npos);
-  EXPECT_NE(invalid->Message().find("valid range"), std::string::npos);
+  EXPECT_EQ(invalid->field(), ToString(GetParam().field));
+  EXPECT_NE(std::string(invalid->what()).find(ToString(GetParam().field)), std::string::npos);
+  EXPECT_NE(std::string(invalid->what()).find("valid range"), std::string::npos);
 }
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -56,7 +56,7 @@ TEST(ParameterValidation, RejectsForcingAtEachNaturalFrequency) {
     p.omega = w;
     const auto invalid = Validate(p);
     ASSERT_TRUE(invalid.has_value());
-    EXPECT_EQ(invalid->field, "omega");
+    EXPECT_EQ(invalid->field(), "omega");
   }
 }
 

@@ -131,7 +131,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   unknowns.fix.insert(unknowns.fix.end(), run.fix.begin(), run.fix.end());
   unknowns.tie_static_friction = unknowns.tie_static_friction || run.tie_u_r;
   if (unknowns.tie_static_friction) orbit.parameters.u_r = orbit.parameters.u_s;
-  if (const auto invalid = Validate(orbit.parameters)) throw fail("start", "gives invalid data: " + invalid->Message());
+  if (const auto invalid = Validate(orbit.parameters)) throw fail("start", std::string("gives invalid data: ") + invalid->what());
   for (int i = 0; i < n; ++i) {
     if (!(orbit.durations[i] > 0.0)) {
       throw fail("start.guess", fmt::format("misses d{} (> 0): give the duration of segment {}", i + 1, i + 1));

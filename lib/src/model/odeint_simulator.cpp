@@ -340,7 +340,7 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
     result.message = std::move(message);
     return result;
   };
-  if (const auto invalid = Validate(p)) return fail(invalid->Message());
+  if (const auto invalid = Validate(p)) return fail(invalid->what());
   if (!x0.allFinite() || !std::isfinite(phi)) return fail("x0 and phi must be finite");
   if (!(std::isfinite(options.duration) && options.duration > 0.0)) {
     return fail(fmt::format("duration = {} is invalid: must be finite and > 0", options.duration));

@@ -262,7 +262,7 @@ void OrbitSystem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual,
 
 std::optional<std::string> OrbitSystem::DomainError(const Eigen::VectorXd& u) const {
   const Orbit orbit = ToOrbit(u);
-  if (const auto invalid = ValidateClosedForm(orbit.parameters)) return invalid->Message();
+  if (const auto invalid = ValidateClosedForm(orbit.parameters)) return invalid->what();
   return std::nullopt;
 }
 

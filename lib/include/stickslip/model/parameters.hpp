@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "stickslip/invalid_input.hpp"
+
 namespace stickslip {
 
 // The five parameters users may continue in. The order is the column order of every
@@ -48,18 +50,10 @@ struct BasicParameters {
 };
 using Parameters = BasicParameters<double>;
 
-// A rejected input value: which field, its value, and the valid range, for a one-line message
-// such as "omega = -1 is invalid: valid range omega > 0".
-struct InvalidInput {
-  std::string field;
-  double value = 0.0;
-  std::string valid_range;
-  std::string Message() const;
-};
-
 // Checks every condition of eq. (4) and of the closed form: chi in (0,1), eta > 0, omega > 0,
 // u_s > 0, u_r >= u_s, all finite, and omega away from the natural frequencies omega1, omega2
-// (eq. 56) where the forced amplitude Q of eq. (7) is singular. Returns the first violation.
+// (eq. 56) where the forced amplitude Q of eq. (7) is singular. Returns the first violation
+// (not thrown: the solvers ask it of every iterate).
 std::optional<InvalidInput> Validate(const Parameters& p);
 
 // Only what the closed-form flows need: finite values, chi in (0,1), eta > 0, omega > 0 away

@@ -1,0 +1,35 @@
+// Bad input, the one error convention of the library: a value a caller gave lies outside its
+// valid range. The message is one line naming the field, the value and the valid range,
+//   "omega = -1 is invalid: valid range omega > 0",
+// and the command line maps the exception to exit code 2 with nothing written (Python will map
+// it to ValueError). Numerical outcomes (no convergence, a branch that ended, a verification
+// that failed) are not errors: they are statuses in the solvers' Summary and Result values.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace stickslip {
+
+class InvalidInput : public std::invalid_argument {
+ public:
+  // "<field> = <value> is invalid: valid range <valid_range>".
+  InvalidInput(std::string field, std::string value, std::string valid_range);
+  InvalidInput(std::string field, double value, std::string valid_range);
+  // A message of its own that still names the field first, for input that is not one value
+  // ("signature 'stik': token 1 'stik' is not a mode: valid slip-, slip+, stick").
+  static InvalidInput WithMessage(std::string field, std::string message);
+
+  const std::string& field() const { return field_; }
+  const std::string& value() const { return value_; }
+  const std::string& valid_range() const { return valid_range_; }
+
+ private:
+  InvalidInput(std::string field, std::string value, std::string valid_range, std::string message);
+
+  std::string field_;
+  std::string value_;
+  std::string valid_range_;
+};
+
+}  // namespace stickslip

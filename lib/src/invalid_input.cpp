@@ -1,0 +1,23 @@
+#include "stickslip/invalid_input.hpp"
+
+#include <fmt/format.h>
+
+namespace stickslip {
+
+InvalidInput::InvalidInput(std::string field, std::string value, std::string valid_range,
+                           std::string message)
+    : std::invalid_argument(std::move(message)), field_(std::move(field)), value_(std::move(value)),
+      valid_range_(std::move(valid_range)) {}
+
+InvalidInput::InvalidInput(std::string field, std::string value, std::string valid_range)
+    : InvalidInput(field, value, valid_range,
+                   fmt::format("{} = {} is invalid: valid range {}", field, value, valid_range)) {}
+
+InvalidInput::InvalidInput(std::string field, double value, std::string valid_range)
+    : InvalidInput(std::move(field), fmt::format("{}", value), std::move(valid_range)) {}
+
+InvalidInput InvalidInput::WithMessage(std::string field, std::string message) {
+  return InvalidInput(std::move(field), "", "", std::move(message));
+}
+
+}  // namespace stickslip
