@@ -13,7 +13,7 @@ Mode ModeFromRest(const State& x, double phase, const Parameters& p) {
   // extension of the strict inequality.
   const double level = 1e-12 * (std::abs(s) + threshold + 1.0);
   if (threshold - std::abs(s) <= level) {
-    const double ds_dt = -p.chi * p.eta * x(2) + p.omega * std::sin(phase);  // x2' = 0
+    const double ds_dt = StickForceRate(AtRest(x), phase, p);
     if (s > 0.0 && ds_dt > 0.0) return Mode::kSlipNegative;
     if (s < 0.0 && ds_dt < 0.0) return Mode::kSlipPositive;
   }

@@ -8,6 +8,7 @@
 
 #include "stickslip/model/events.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
 
@@ -52,69 +53,54 @@ std::string Margin::Name() const {
 
 std::vector<Margin> AdmissibilityMargins(const Orbit& orbit) {
   const Parameters& p = orbit.parameters;
-  const Signature& signature = orbit.signature;
   const double threshold = p.eta * p.u_r;
   std::vector<Margin> margins;
-  margins.reserve(5 * signature.size() + 1);
+  margins.reserve(5 * orbit.signature.size() + 1);
   auto add = [&](const char* name, MarginKind kind, int i, double value, double t) {
     margins.push_back({name, kind, i, value, t});
   };
-
-  State start = orbit.InitialState();
-  std::vector<double> times = {0.0};
-  for (int i = 0; i < signature.size(); ++i) {
-    const Mode mode = signature.segments()[i];
-    const double d = orbit.durations[i];
-    times.push_back(times[i] + d);
-    const double phase = orbit.phi + p.omega * times[i];
-    const double end_phase = phase + p.omega * d;
-    const ModeMotion<double> motion = MotionInMode(mode, start, phase, p);
-    const State end = motion.StateAt(d);
-    start = end;
-    add("duration", MarginKind::kDuration, i, d, times[i]);
+  WalkSegments(orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double>& s) {
+    const int i = s.spec.listed;
+    const Mode mode = s.spec.mode;
+    const double d = s.duration;
+    const double t_end = s.t0 + d;
+    add("duration", MarginKind::kDuration, i, d, s.t0);
 
     if (mode != Mode::kStick) {
-      const double sigma = SlipDirection(mode);
-      const SinusoidSum velocity = CoordinateAlong(motion, 3).Affine(sigma, 0.0);
+      const SinusoidSum velocity = CoordinateAlong(s.motion, 3).Affine(SlipDirection(mode), 0.0);
       const Extremum low = InteriorMinimum(velocity, d);
-      add("velocity", MarginKind::kSlipVelocity, i, low.value, times[i] + low.t);
-      const double force = StickForce(end, end_phase, p);
-      const double x2_acceleration = Acceleration(mode, end, end_phase, p)(1);
-      switch (signature.EndKind(i)) {
+      add("velocity", MarginKind::kSlipVelocity, i, low.value, s.t0 + low.t);
+      switch (s.spec.end) {
         case SegmentEndKind::kReversal:
-          add("stop-slope", MarginKind::kStopSlope, i, -sigma * x2_acceleration, times[i + 1]);
-          add("reversal", MarginKind::kStopForce, i,
-              signature.NextMode(i) == Mode::kSlipNegative ? force - threshold : -force - threshold,
-              times[i + 1]);
+          add("stop-slope", MarginKind::kStopSlope, i, StopSlope(mode, s.end, s.end_phase, p), t_end);
+          add("reversal", MarginKind::kStopForce, i, ReversalForce(s.spec.next, s.end, s.end_phase, p), t_end);
           break;
         case SegmentEndKind::kStickEntry:
-          add("stop-slope", MarginKind::kStopSlope, i, -sigma * x2_acceleration, times[i + 1]);
-          add("stick-entry", MarginKind::kStopForce, i, threshold - std::abs(force), times[i + 1]);
+          add("stop-slope", MarginKind::kStopSlope, i, StopSlope(mode, s.end, s.end_phase, p), t_end);
+          add("stick-entry", MarginKind::kStopForce, i, StickEntryForce(s.end, s.end_phase, p), t_end);
           break;
-        default: {  // abnormal stop: x2'' = 0 there; x2''' = -chi eta (x2' - x1') - omega sin
-          const double jerk = -p.chi * p.eta * (end(3) - end(2)) - p.omega * std::sin(end_phase);
-          add("abnormal-stop", MarginKind::kStopForce, i, sigma * jerk, times[i + 1]);
+        default:
+          add("abnormal-stop", MarginKind::kStopForce, i, AbnormalStopJerk(mode, s.end, s.end_phase, p), t_end);
           break;
-        }
       }
-      continue;
+      return;
     }
 
-    const SinusoidSum force = StickForceAlong(motion, phase, p);
+    const SinusoidSum force = StickForceAlong(s.motion, s.phase, p);
     const SinusoidSum g = force.Affine(1.0, threshold);    // G, eq. (35)
     const SinusoidSum g1 = force.Affine(-1.0, threshold);  // G1
-    const bool exit_negative = signature.EndKind(i) == SegmentEndKind::kExitToNegative;
+    const bool exit_negative = s.spec.end == SegmentEndKind::kExitToNegative;
     // The constraint that ends the stick is zero at the exit by its end condition.
     auto constraint_margin = [&](const char* name, const SinusoidSum& c, bool ends_stick) {
       Extremum low = ends_stick ? InteriorMinimum(c, d) : Minimum(c, 0.0, d);
       if (ends_stick && c(0.0) < low.value) low = {0.0, c(0.0)};
-      add(name, MarginKind::kStickConstraint, i, low.value, times[i] + low.t);
+      add(name, MarginKind::kStickConstraint, i, low.value, s.t0 + low.t);
     };
     constraint_margin("G", g, !exit_negative);
     constraint_margin("G1", g1, exit_negative);
     const double slope = force.Derivative()(d);
-    add("exit-slope", MarginKind::kExitSlope, i, exit_negative ? slope : -slope, times[i + 1]);
-  }
+    add("exit-slope", MarginKind::kExitSlope, i, exit_negative ? slope : -slope, t_end);
+  });
   margins.push_back({"sliding-friction", MarginKind::kFrictionLevel, -1, p.u_s, 0.0});
   return margins;
 }

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/orbits/segment_walk.hpp"
+
 namespace stickslip {
 
 double Orbit::Period() const {
@@ -18,39 +20,22 @@ std::vector<double> Orbit::SegmentTimes() const {
 
 std::vector<State> Orbit::SegmentStates() const {
   std::vector<State> states = {InitialState()};
-  double phase = phi;
-  for (int i = 0; i < signature.size(); ++i) {
-    states.push_back(Flow(signature.segments()[i], states.back(), phase, durations[i], parameters));
-    phase += parameters.omega * durations[i];
-  }
+  WalkSegments(*this, Extent::kListed, PhaseRule::kAccumulated,
+               [&](const SegmentVisit<double>& s) { states.push_back(s.end); });
   return states;
 }
 
-std::vector<double> Orbit::FullPeriodDurations() const {
-  std::vector<double> full = durations;
-  if (signature.antisymmetric()) full.insert(full.end(), durations.begin(), durations.end());
-  return full;
-}
-
 std::vector<State> Orbit::Sample(int count) const {
-  const std::vector<Mode> modes = signature.FullPeriod();
-  const std::vector<double> spans = FullPeriodDurations();
   std::vector<State> samples;
-  State start = InitialState();
-  double t0 = 0.0;
-  double phase = phi;
-  std::size_t segment = 0;
   const double period = Period();
-  for (int k = 0; k < count; ++k) {
-    const double t = period * k / (count - 1);
-    while (segment + 1 < modes.size() && t > t0 + spans[segment]) {
-      start = Flow(modes[segment], start, phase, spans[segment], parameters);
-      t0 += spans[segment];
-      phase += parameters.omega * spans[segment];
-      ++segment;
+  int k = 0;
+  WalkSegments(*this, Extent::kFullPeriod, PhaseRule::kAccumulated, [&](const SegmentVisit<double>& s) {
+    for (; k < count; ++k) {
+      const double t = period * k / (count - 1);
+      if (!s.last && t > s.t0 + s.duration) break;  // in a later segment
+      samples.push_back(s.motion.StateAt(t - s.t0));
     }
-    samples.push_back(Flow(modes[segment], start, phase, t - t0, parameters));
-  }
+  });
   return samples;
 }
 

@@ -6,7 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "stickslip/model/events.hpp"
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "stickslip/orbits/segment_plan.hpp"
 
 namespace stickslip {
 
@@ -25,39 +28,22 @@ struct LocalGradient {
   Eigen::Matrix<double, 1, kParameterCount> d_parameters = Eigen::Matrix<double, 1, kParameterCount>::Zero();
 };
 
-// The end conditions with their exact gradients, written out (they are linear in the state).
-// x2' = 0 at a stop (eq. 14, 16, 30).
-LocalGradient StopVelocity(const State& x) { return {x(3), Eigen::Vector4d::UnitW()}; }
-
-// x2'' = -chi eta (x2 - x1) + eta u + cos(psi), u = -sign(x2') u_s (eq. 2): zero at an abnormal
-// stop (eq. 18, 23).
-LocalGradient SlipAcceleration(Mode mode, const State& x, double phase, const Parameters& p) {
-  const double u = -SlipDirection(mode) * p.u_s;
-  LocalGradient g;
-  g.value = Acceleration(mode, x, phase, p)(1);
-  g.d_state << p.chi * p.eta, -p.chi * p.eta, 0.0, 0.0;
-  g.d_phase = -std::sin(phase);
-  g.d_parameters << -p.eta * (x(1) - x(0)), -p.chi * (x(1) - x(0)) + u, 0.0, -SlipDirection(mode) * p.eta, 0.0;
-  return g;
-}
-
-// s - side eta u_r with s = chi eta (x2 - x1) - cos(psi): zero at a stick exit into slip- (side
-// +1, G1 = 0) or slip+ (side -1, G = 0) (eq. 11, 32, 35, 37).
-LocalGradient StickExit(const State& x, double phase, const Parameters& p, double side) {
-  LocalGradient g;
-  g.value = StickForce(x, phase, p) - side * p.eta * p.u_r;
-  g.d_state << -p.chi * p.eta, p.chi * p.eta, 0.0, 0.0;
-  g.d_phase = std::sin(phase);
-  g.d_parameters << p.eta * (x(1) - x(0)), p.chi * (x(1) - x(0)) - side * p.u_r, 0.0, 0.0, -side * p.eta;
-  return g;
-}
-
-int AbnormalStops(const Signature& signature) {
-  int count = 0;
-  for (int i = 0; i < signature.size(); ++i) {
-    count += signature.EndKind(i) == SegmentEndKind::kAbnormalStop;
-  }
-  return count;
+// An end condition (segment_plan.hpp) and its exact gradient: forward-mode AD through its
+// template, one direction per state coordinate, the phase and each parameter.
+LocalGradient Linearize(EndCondition condition, Mode mode, const State& x, double phase, const Parameters& p) {
+  constexpr int kDirections = 4 + 1 + kParameterCount;
+  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kDirections, 1>>;
+  StateT<Dual> x_dual;
+  for (int k = 0; k < 4; ++k) x_dual(k) = Dual(x(k), kDirections, k);
+  BasicParameters<Dual> p_dual;
+  for (int k = 0; k < kParameterCount; ++k) p_dual[kAllParameters[k]] = Dual(p[kAllParameters[k]], kDirections, 5 + k);
+  const Dual g = EndConditionValue(condition, mode, x_dual, Dual(phase, kDirections, 4), p_dual);
+  LocalGradient out;
+  out.value = g.value();
+  out.d_state = g.derivatives().head<4>();
+  out.d_phase = g.derivatives()(4);
+  out.d_parameters = g.derivatives().tail<kParameterCount>().transpose();
+  return out;
 }
 
 int ShootingStates(const Signature& signature, Shooting shooting) {
@@ -67,10 +53,13 @@ int ShootingStates(const Signature& signature, Shooting shooting) {
 }  // namespace
 
 PeriodicityEquations::PeriodicityEquations(Signature signature, Shooting shooting, FlowEvaluator flow)
-    : signature_(std::move(signature)), shooting_(shooting), flow_(flow) {}
+    : signature_(std::move(signature)), plan_(SegmentPlan(signature_, Extent::kListed)), shooting_(shooting),
+      flow_(flow) {
+  for (const SegmentSpec& spec : plan_) end_conditions_ += static_cast<int>(EndConditionsOf(spec.end).size());
+}
 
 int PeriodicityEquations::EquationCount() const {
-  return signature_.size() + AbnormalStops(signature_) + 4 + ShootingStates(signature_, shooting_);
+  return end_conditions_ + 4 + ShootingStates(signature_, shooting_);
 }
 
 int PeriodicityEquations::VariableCount() const {
@@ -80,13 +69,14 @@ int PeriodicityEquations::VariableCount() const {
 std::vector<std::string> PeriodicityEquations::EquationNames() const {
   std::vector<std::string> names;
   static constexpr const char* kCoordinates[] = {"x1", "x2", "x1'", "x2'"};
-  for (int i = 0; i < signature_.size(); ++i) {
+  for (const SegmentSpec& spec : plan_) {
+    const int i = spec.listed;
     if (shooting_ == Shooting::kMultiple && i > 0) {
       for (const char* c : kCoordinates) names.push_back(fmt::format("continuity:{}:{}", i + 1, c));
     }
-    names.push_back(fmt::format("end:{}", i + 1));
-    if (signature_.EndKind(i) == SegmentEndKind::kAbnormalStop) {
-      names.push_back(fmt::format("abnormal-x2'':{}", i + 1));
+    for (EndCondition condition : EndConditionsOf(spec.end)) {
+      const char* name = condition == EndCondition::kSlipAccelerationZero ? "abnormal-x2''" : "end";
+      names.push_back(fmt::format("{}:{}", name, i + 1));
     }
   }
   for (int j = 0; j < 3; ++j) names.push_back(fmt::format("periodicity:{}", kCoordinates[j]));
@@ -125,8 +115,9 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
     ++row;
   };
 
-  for (int i = 0; i < n; ++i) {
-    const Mode mode = signature_.segments()[i];
+  for (const SegmentSpec& spec : plan_) {
+    const int i = spec.listed;
+    const Mode mode = spec.mode;
     if (shooting_ == Shooting::kMultiple && i > 0) {
       const int state_column = full + 4 * (i - 1);
       const State start = v.segment<4>(state_column);
@@ -155,22 +146,12 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
     dphase(omega_column) += d;
     phase += p.omega * d;
 
-    // End condition of segment i.
-    switch (signature_.EndKind(i)) {
-      case SegmentEndKind::kAbnormalStop:
-        add_equation(StopVelocity(x));
-        add_equation(SlipAcceleration(mode, x, phase, p));
-        break;
-      case SegmentEndKind::kReversal:
-      case SegmentEndKind::kStickEntry:
-        add_equation(StopVelocity(x));
-        break;
-      case SegmentEndKind::kExitToNegative:
-        add_equation(StickExit(x, phase, p, +1.0));
-        break;
-      case SegmentEndKind::kExitToPositive:
-        add_equation(StickExit(x, phase, p, -1.0));
-        break;
+    for (EndCondition condition : EndConditionsOf(spec.end)) {
+      if (jacobian) {
+        add_equation(Linearize(condition, mode, x, phase, p));
+      } else {
+        (*residual)(row++) = EndConditionValue(condition, mode, x, phase, p);
+      }
     }
   }
 

@@ -126,9 +126,9 @@ Mode Signature::NextMode(int i) const {
   return antisymmetric_ ? Mirror(segments_.front()) : segments_.front();
 }
 
-SegmentEndKind Signature::EndKind(int i) const {
-  const Mode mode = segments_[i];
-  const Mode next = NextMode(i);
+SegmentEndKind Signature::EndKind(int i) const { return EndKindOf(segments_[i], NextMode(i)); }
+
+SegmentEndKind EndKindOf(Mode mode, Mode next) {
   if (mode == Mode::kStick) {
     return next == Mode::kSlipNegative ? SegmentEndKind::kExitToNegative
                                        : SegmentEndKind::kExitToPositive;

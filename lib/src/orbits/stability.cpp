@@ -4,7 +4,9 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "stickslip/model/events.hpp"
 #include "stickslip/model/flows.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
 
@@ -19,8 +21,8 @@ Eigen::Matrix4d SaltationMatrix(Mode before, Mode after, const State& x, double 
     return s;
   }
   // A stick exit, h = chi eta (x2 - x1) - cos(omega t + phi) -+ eta u_r (eq. 11):
-  // grad h = chi eta (-1, 1, 0, 0), and grad h . f- + dh/dt = -chi eta x1' + omega sin(phase).
-  const double rate = -p.chi * p.eta * x(2) + p.omega * std::sin(phase);
+  // grad h = chi eta (-1, 1, 0, 0), and grad h . f- + dh/dt = ds/dt with m2 at rest.
+  const double rate = StickForceRate(AtRest(x), phase, p);
   s(3, 0) -= jump * p.chi * p.eta / rate;
   s(3, 1) += jump * p.chi * p.eta / rate;
   return s;
@@ -28,22 +30,14 @@ Eigen::Matrix4d SaltationMatrix(Mode before, Mode after, const State& x, double 
 
 Stability StabilityOf(const Orbit& orbit) {
   const Parameters& p = orbit.parameters;
-  const Signature& signature = orbit.signature;
+  Stability result;
   // The whole period: the listed segments, then their mirror images for an antisymmetric orbit,
   // flowed from the actual states (the symmetry is not assumed).
-  std::vector<Mode> modes = signature.FullPeriod();
-  const std::vector<double> durations = orbit.FullPeriodDurations();
-  Stability result;
-  State x = orbit.InitialState();
-  double phase = orbit.phi;
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  for (std::size_t i = 0; i < modes.size(); ++i) {
-    x = Flow(modes[i], x, phase, durations[i], p);
-    phase += p.omega * durations[i];
-    const Mode next = modes[(i + 1) % modes.size()];
-    result.one_sided = result.one_sided || next == modes[i];
-    m = SaltationMatrix(modes[i], next, x, phase, p) * TransitionMatrix(modes[i], durations[i], p) * m;
-  }
+  WalkSegments(orbit, Extent::kFullPeriod, PhaseRule::kAccumulated, [&](const SegmentVisit<double>& s) {
+    result.one_sided = result.one_sided || s.spec.end == SegmentEndKind::kAbnormalStop;
+    m = SaltationMatrix(s.spec.mode, s.spec.next, s.end, s.end_phase, p) * TransitionMatrix(s.spec.mode, s.duration, p) * m;
+  });
   result.monodromy = m;
   const Eigen::EigenSolver<Eigen::Matrix4d> eigen(m, /*computeEigenvectors=*/false);
   for (int k = 0; k < 4; ++k) result.multipliers[k] = eigen.eigenvalues()(k);

@@ -7,6 +7,7 @@
 
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
 
@@ -90,10 +91,9 @@ Verification VerifyOrbit(const Orbit& orbit) {
   Verification v;
   // The full period: the listed segments, mirrored when antisymmetric.
   v.expected = orbit.signature.FullPeriod();
-  const std::vector<double> durations = orbit.FullPeriodDurations();
   std::vector<double> event_times;
-  double t = 0.0;
-  for (double d : durations) event_times.push_back(t += d);
+  WalkSegments(orbit, Extent::kFullPeriod, PhaseRule::kAccumulated,
+               [&](const SegmentVisit<double>& s) { event_times.push_back(s.t0 + s.duration); });
   SimulationOptions options;
   options.duration = orbit.Period();
   v.exact = Check(SimulateExact(orbit.parameters, orbit.InitialState(), orbit.phi, options), orbit,

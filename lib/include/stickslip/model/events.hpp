@@ -28,6 +28,23 @@ T StickConstraintG1(const StateT<T>& x, const T& phase, const BasicParameters<T>
   return -StickForce(x, phase, p) + p.eta * p.u_r;
 }
 
+// ds/dt of eq. (11) along a motion: chi eta (x2' - x1') + omega sin(psi). With m2 at rest (a
+// stick, a stop) it is the transversality of a stick exit; at an abnormal stop, where x2'' = 0,
+// x2''' = -ds/dt (the derivative of x2'' of eq. 2).
+template <typename T>
+T StickForceRate(const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+  using std::sin;
+  return p.chi * p.eta * (x(3) - x(2)) + p.omega * sin(phase);
+}
+
+// The state with x2' = 0: m2 at rest, as during a stick or at a stop, where the equations hold
+// x2' at zero and a computed state carries rounding in it.
+template <typename T>
+StateT<T> AtRest(StateT<T> x) {
+  x(3) = T(0.0);
+  return x;
+}
+
 // Coulomb's law at rest (eq. 4): the mode m2 takes from a state with x2' = 0 at `phase`. It
 // sticks while |s| < eta u_r; on the threshold itself it leaves only if s is moving outwards.
 Mode ModeFromRest(const State& x, double phase, const Parameters& p);

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/model/events.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
@@ -51,6 +52,39 @@ struct Margin {
 };
 
 std::vector<Margin> AdmissibilityMargins(const Orbit& orbit);
+
+// The margins at a segment's end, as functions of the end state x, the forcing phase there and
+// the parameters; templated so that forward-mode AD gives their gradients (margin_gradients.hpp).
+// stop-slope: a slip in `mode` decelerates into its stop, -sign(x2') x2'' > 0.
+template <typename T>
+T StopSlope(Mode mode, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+  return -double(SlipDirection(mode)) * Acceleration(mode, x, phase, p)(1);
+}
+// reversal: the force at a stop exceeds the static level towards the slip that follows,
+// s - eta u_r > 0 before slip- (f > 0, eq. 12), -s - eta u_r > 0 before slip+ (f1 < 0, eq. 14).
+template <typename T>
+T ReversalForce(Mode next, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+  const T force = StickForce(x, phase, p);
+  const T threshold = p.eta * p.u_r;
+  return next == Mode::kSlipNegative ? T(force - threshold) : T(-force - threshold);
+}
+// stick-entry: the force at a stop into a stick lies inside the static band, eta u_r - |s| (eq. 30).
+template <typename T>
+T StickEntryForce(const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+  using std::abs;
+  return p.eta * p.u_r - abs(StickForce(x, phase, p));
+}
+// abnormal-stop: x2' touches zero and keeps its sign, sign(x2') x2''' > 0 (eq. 23).
+template <typename T>
+T AbnormalStopJerk(Mode mode, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+  return double(SlipDirection(mode)) * -StickForceRate(x, phase, p);
+}
+// exit-slope: s leaves the static band at a stick exit, ds/dt > 0 into slip-, < 0 into slip+.
+template <typename T>
+T ExitSlope(SegmentEndKind end, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+  const T rate = StickForceRate(x, phase, p);
+  return end == SegmentEndKind::kExitToNegative ? rate : T(-rate);
+}
 
 // The margin with the smallest value (the first on ties), by value: callers often pass a
 // temporary vector.

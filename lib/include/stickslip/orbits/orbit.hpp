@@ -30,9 +30,6 @@ struct Orbit {
   State InitialState() const { return State(x10, x20, v10, 0.0); }
   // k 2 pi/omega: the time after which the orbit repeats.
   double Period() const;
-  // The durations over one whole period, in the order of Signature::FullPeriod (the listed
-  // ones, twice for an antisymmetric orbit).
-  std::vector<double> FullPeriodDurations() const;
   // Start times of the listed segments, and the end of the last one (n + 1 values).
   std::vector<double> SegmentTimes() const;
   // Start state of each listed segment and the state at the end of the last one (n + 1), by the

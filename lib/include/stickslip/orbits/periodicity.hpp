@@ -26,6 +26,7 @@
 
 #include "stickslip/numerics/newton.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/segment_plan.hpp"
 
 namespace stickslip {
 
@@ -61,6 +62,8 @@ class PeriodicityEquations {
 
  private:
   Signature signature_;
+  std::vector<SegmentSpec> plan_;
+  int end_conditions_ = 0;  // equations at the segment ends (one more at each abnormal stop)
   Shooting shooting_;
   FlowEvaluator flow_;
 };

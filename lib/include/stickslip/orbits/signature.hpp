@@ -29,6 +29,9 @@ enum class SegmentEndKind {
 };
 const char* ToString(SegmentEndKind kind);
 
+// How a segment in `mode` ends when `next` follows it (the rules above).
+SegmentEndKind EndKindOf(Mode mode, Mode next);
+
 // The mode with x2' of the opposite sign (the image under X -> -X); a stick is its own mirror.
 Mode Mirror(Mode mode);
 
