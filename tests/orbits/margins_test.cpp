@@ -8,8 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/events.hpp"
-#include "stickslip/orbits/orbit_solver.hpp"
-#include "stickslip/orbits/paper_presets.hpp"
+#include "support/solved_presets.hpp"
 
 namespace stickslip {
 namespace {
@@ -33,13 +32,6 @@ Sampled SampledMinimum(F&& f, double a, double b, int count) {
     if (value < best.value) best = {t, value};
   }
   return best;
-}
-
-Orbit SolvedPreset(const char* name) {
-  const PaperPreset& preset = *FindPaperPreset(name);
-  const Orbit guess = preset.Guess();
-  const FreeVariables free = ResolveUnknowns(guess.signature, preset.unknowns);
-  return SolveOrbit(guess, free.indices, preset.unknowns.tie_static_friction).orbit;
 }
 
 // The stick constraints over the stick of an orbit, sampled from the flow.

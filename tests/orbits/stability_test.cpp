@@ -10,17 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
-#include "stickslip/orbits/paper_presets.hpp"
+#include "support/solved_presets.hpp"
 
 namespace stickslip {
 namespace {
-
-Orbit Solved(const char* name, bool paper_choice) {
-  const PaperPreset& preset = *FindPaperPreset(name);
-  const UnknownChoice& choice = paper_choice ? preset.paper_choice : preset.unknowns;
-  const Orbit guess = preset.Guess();
-  return SolveOrbit(guess, ResolveUnknowns(guess.signature, choice).indices, choice.tie_static_friction).orbit;
-}
 
 std::vector<std::complex<double>> Sorted(const Eigen::Matrix4d& m) {
   const Eigen::EigenSolver<Eigen::Matrix4d> eigen(m, false);
@@ -56,7 +49,7 @@ Eigen::Matrix4d PeriodMapJacobian(const Orbit& o) {
 class FloquetMultipliers : public ::testing::TestWithParam<std::pair<const char*, bool>> {};
 
 TEST_P(FloquetMultipliers, EqualThoseOfTheFiniteDifferencePeriodMap) {
-  const Orbit o = Solved(GetParam().first, GetParam().second);
+  const Orbit o = SolvedPreset(GetParam().first, GetParam().second);
   const Stability s = StabilityOf(o);
   const std::vector<std::complex<double>> fd = Sorted(PeriodMapJacobian(o));
   for (int k = 0; k < 4; ++k) {
@@ -84,7 +77,7 @@ INSTANTIATE_TEST_SUITE_P(PaperOrbits, FloquetMultipliers,
 // differences along random directions on that side (no stick in the perturbed motion) give the
 // one-sided Jacobian, J = [J d_k][d_k]^+, whose eigenvalues the reported multipliers must be.
 TEST(FloquetMultipliers, EqualThoseOfTheOneSidedPeriodMapAtAbnormalStops) {
-  const Orbit o = Solved("paper-4.2", false);
+  const Orbit o = SolvedPreset("paper-4.2", false);
   const Stability s = StabilityOf(o);
   ASSERT_TRUE(s.one_sided);
   const double t = 0.5 * o.durations[0];
@@ -120,13 +113,13 @@ TEST(FloquetMultipliers, EqualThoseOfTheOneSidedPeriodMapAtAbnormalStops) {
 
 TEST(FloquetMultipliers, IncludeZeroForAStickingOrbit) {
   // During a stick the perturbation of x2' is annihilated (the saltation matrix at the entry).
-  const Stability s = StabilityOf(Solved("paper-5.1", false));
+  const Stability s = StabilityOf(SolvedPreset("paper-5.1", false));
   EXPECT_LT(std::abs(s.multipliers[3]), 1e-12);
   EXPECT_FALSE(s.one_sided);
 }
 
 TEST(FloquetMultipliers, AreOneSidedAtAbnormalStops) {
-  EXPECT_TRUE(StabilityOf(Solved("paper-4.2", false)).one_sided);
+  EXPECT_TRUE(StabilityOf(SolvedPreset("paper-4.2", false)).one_sided);
 }
 
 }  // namespace

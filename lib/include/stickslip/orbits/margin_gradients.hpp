@@ -1,0 +1,37 @@
+// Exact gradients of the admissibility margins (margins.hpp) with respect to every orbit variable,
+// the full variable vector of orbit.hpp (x10, x20, v10, phi, d1..dn, chi, eta, omega, u_s, u_r):
+// forward-mode AD through the segment walk (segment_walk.hpp) and the margin templates. What a
+// two-parameter continuation of a type boundary adds to the periodicity system: margin = 0.
+//
+// A margin at a segment end depends on the variables through the end state and phase. A margin
+// at an interior minimum of a function f(tau) of the time tau elapsed in its segment (velocity:i,
+// G:i, G1:i) has, by the envelope theorem, the gradient of f at the fixed tau* (f_tau = 0 there),
+// and tau* moves with d tau*/dv = -(d f_tau/dv) / f_tau_tau. A continuation that keeps tau* as an
+// unknown adds f_tau = 0: `slope`, its gradient at fixed tau and `curvature` are that equation.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit.hpp"
+
+namespace stickslip {
+
+struct MarginGradient {
+  double value = 0.0;          // the margin, as AdmissibilityMargins gives it
+  Eigen::RowVectorXd d_value;  // d value / d variables
+  double t = 0.0;              // where it is attained, from the orbit's origin (Margin::t)
+  Eigen::RowVectorXd d_t;      // d t / d variables
+  bool interior = false;       // an interior minimum in time: the fields below apply
+  double slope = 0.0;          // f_tau at tau*: zero up to rounding
+  Eigen::RowVectorXd d_slope;  // d f_tau / d variables at fixed tau
+  double curvature = 0.0;      // f_tau_tau at tau*, > 0 at a minimum
+};
+
+// One per margin of AdmissibilityMargins(orbit), in its order. Where a margin is +inf (a slip
+// with no interior minimum of its velocity) its gradients are zero.
+std::vector<MarginGradient> MarginGradients(const Orbit& orbit);
+
+}  // namespace stickslip

@@ -1,0 +1,113 @@
+// Margin gradients against central differences of the margins themselves (which find interior
+// minima by root finding, independently of the envelope theorem the gradients use), on every
+// paper orbit and on random orbits that cover every end kind.
+#include "stickslip/orbits/margin_gradients.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/solved_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace ov = orbit_variables;
+
+// Central difference of every margin's value and time along variable `index`.
+struct Differences {
+  std::vector<double> value;
+  std::vector<double> t;
+};
+Differences CentralDifferences(const Orbit& orbit, int index) {
+  const Eigen::VectorXd v = ov::Pack(orbit);
+  const double h = 1e-6 * std::max(1.0, std::abs(v(index)));
+  Eigen::VectorXd plus = v, minus = v;
+  plus(index) += h;
+  minus(index) -= h;
+  const std::vector<Margin> up = AdmissibilityMargins(ov::Unpack(orbit.signature, plus));
+  const std::vector<Margin> down = AdmissibilityMargins(ov::Unpack(orbit.signature, minus));
+  Differences d;
+  for (std::size_t k = 0; k < up.size(); ++k) {
+    d.value.push_back((up[k].value - down[k].value) / (2 * h));
+    d.t.push_back((up[k].t - down[k].t) / (2 * h));
+  }
+  return d;
+}
+
+// Checks every finite margin's gradient and time gradient; returns the kinds it checked.
+std::set<std::string> ExpectGradientsMatchDifferences(const Orbit& orbit) {
+  const std::vector<Margin> margins = AdmissibilityMargins(orbit);
+  const std::vector<MarginGradient> gradients = MarginGradients(orbit);
+  EXPECT_EQ(gradients.size(), margins.size());
+  std::set<std::string> checked;
+  const int count = ov::Count(orbit.signature.size());
+  for (int index = 0; index < count; ++index) {
+    const Differences fd = CentralDifferences(orbit, index);
+    for (std::size_t k = 0; k < margins.size(); ++k) {
+      if (!std::isfinite(margins[k].value)) continue;
+      const MarginGradient& g = gradients[k];
+      EXPECT_EQ(g.value, margins[k].value);
+      EXPECT_NEAR(g.d_value(index), fd.value[k], 1e-6 * std::max(1.0, std::abs(fd.value[k])))
+          << margins[k].Name() << " d/d" << ov::Name(orbit.signature.size(), index) << " on "
+          << orbit.signature.ToString();
+      EXPECT_NEAR(g.d_t(index), fd.t[k], 1e-5 * std::max(1.0, std::abs(fd.t[k])))
+          << "time of " << margins[k].Name() << " d/d" << ov::Name(orbit.signature.size(), index);
+      checked.insert(std::string(ToString(margins[k].kind)) + (g.interior ? " (interior)" : ""));
+    }
+  }
+  for (const MarginGradient& g : gradients) {
+    if (!g.interior) continue;
+    EXPECT_NEAR(g.slope, 0.0, 1e-8);  // the time derivative vanishes at an interior minimum
+    EXPECT_GT(g.curvature, 0.0);
+  }
+  return checked;
+}
+
+TEST(MarginGradients, MatchCentralDifferencesOnEveryPaperOrbit) {
+  std::set<std::string> kinds;
+  for (const char* name : {"paper-4.1", "paper-4.2", "paper-5.1", "paper-5.2", "paper-6"}) {
+    SCOPED_TRACE(name);
+    kinds.merge(ExpectGradientsMatchDifferences(SolvedPreset(name)));
+  }
+  // The paper's orbits have stops of every kind and sticks ending both ways.
+  for (const char* kind : {"duration", "stop-slope", "stop-force", "stick-constraint", "exit-slope", "friction-level"}) {
+    EXPECT_TRUE(kinds.count(kind)) << kind;
+  }
+}
+
+// Orbits need not be periodic for their margins to be defined: random variables on signatures
+// that hold every end kind (abnormal stop, reversal, stick entry, exits into slip+ and slip-)
+// give interior minima of x2' and of G, G1 too.
+TEST(MarginGradients, MatchCentralDifferencesOnRandomOrbitsOfEveryEndKind) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
+  std::set<std::string> kinds;
+  for (const char* text : {"slip- slip- slip+ stick slip+ stick", "slip+ stick slip- slip+ / antisymmetric",
+                           "stick slip- stick slip+ / period 2"}) {
+    std::string error;
+    const Signature signature = *Signature::Parse(text, &error);
+    for (int trial = 0; trial < 6; ++trial) {
+      Orbit o{signature, {}, in(-1, 1), in(-1, 1), in(-1, 1), in(0, 2 * std::numbers::pi), {}};
+      for (int i = 0; i < signature.size(); ++i) o.durations.push_back(in(0.5, 6.0));
+      o.parameters = {in(0.2, 0.8), in(0.5, 4.0), in(0.3, 1.6), in(0.05, 0.5), 0.0};
+      o.parameters.u_r = o.parameters.u_s * in(1.0, 2.0);
+      const auto [w1, w2] = NaturalFrequencies(o.parameters.chi, o.parameters.eta);
+      if (std::min(std::abs(o.parameters.omega - w1), std::abs(o.parameters.omega - w2)) < 0.05) continue;
+      SCOPED_TRACE(testing::Message() << text << " trial " << trial);
+      kinds.merge(ExpectGradientsMatchDifferences(o));
+    }
+  }
+  for (const char* kind : {"slip-velocity (interior)", "stick-constraint (interior)", "stick-constraint", "stop-force",
+                           "stop-slope", "exit-slope"}) {
+    EXPECT_TRUE(kinds.count(kind)) << kind;
+  }
+}
+
+}  // namespace
+}  // namespace stickslip
