@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/invalid_input.hpp"
+
 namespace stickslip {
 
 const char* ToString(SegmentEndKind kind) {
@@ -50,11 +52,11 @@ Signature::Signature(std::vector<Mode> segments, bool antisymmetric, int period_
     : segments_(std::move(segments)), antisymmetric_(antisymmetric),
       period_multiple_(period_multiple) {
   if (const std::string problem = SequenceProblem(segments_, antisymmetric_); !problem.empty()) {
-    throw std::invalid_argument("invalid signature: " + problem);
+    throw InvalidInput::WithMessage("signature", fmt::format("signature '{}' is invalid: {}", ToString(), problem));
   }
-  if (period_multiple_ < 1) throw std::invalid_argument("invalid signature: period multiple < 1");
+  if (period_multiple_ < 1) throw InvalidInput("period", period_multiple_, "period >= 1");
   if (antisymmetric_ && period_multiple_ % 2 == 0) {
-    throw std::invalid_argument("invalid signature: antisymmetric needs an odd period multiple");
+    throw InvalidInput("period", period_multiple_, "an odd period with antisymmetric");
   }
 }
 

@@ -37,8 +37,8 @@ Mode Mirror(Mode mode);
 
 class Signature {
  public:
-  // Throws std::invalid_argument if the sequence is empty, has a stick after a stick, or
-  // period_multiple < 1.
+  // Throws InvalidInput if the sequence is empty, has a stick after a stick (cyclically), or
+  // period_multiple < 1, or is even with antisymmetric.
   Signature(std::vector<Mode> segments, bool antisymmetric = false, int period_multiple = 1);
 
   // Parses the text form; on error returns nullopt and sets *error to a message saying where and

@@ -1,0 +1,126 @@
+// Signature edits: round trips, explicit renaming of durations, and orbits that stay the same
+// motion under an edited type (compared by sampling the closed-form flows over a period).
+#include "stickslip/orbits/signature_edits.hpp"
+
+#include <gtest/gtest.h>
+
+#include "stickslip/orbits/periodicity.hpp"
+#include "support/solved_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+Signature Parsed(const char* text) {
+  std::string error;
+  return *Signature::Parse(text, &error);
+}
+
+// The largest difference between the two orbits' states at 401 times over one period.
+double SampledDistance(const Orbit& a, const Orbit& b) {
+  const std::vector<State> x = a.Sample(401);
+  const std::vector<State> y = b.Sample(401);
+  double distance = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) distance = std::max(distance, (x[k] - y[k]).lpNorm<Eigen::Infinity>());
+  return distance;
+}
+
+TEST(SignatureEdits, InsertThenRemoveGivesTheSignatureBack) {
+  const Signature s = Parsed("slip- slip+ stick slip+");
+  for (int position = 0; position <= s.size(); ++position) {
+    const SignatureEdit inserted = InsertSegment(s, position, Mode::kSlipNegative);
+    EXPECT_EQ(inserted.signature.size(), s.size() + 1);
+    EXPECT_EQ(inserted.signature.segments()[position], Mode::kSlipNegative);
+    EXPECT_EQ(RemoveSegment(inserted.signature, position, /*join_equal_neighbours=*/false).signature, s);
+  }
+}
+
+TEST(SignatureEdits, SplitThenRemoveWithJoinGivesTheSignatureBack) {
+  const Signature s = Parsed("slip- slip+ stick slip+");
+  const SignatureEdit split = SplitSegment(s, 1, Mode::kStick);  // a stick inside slip+
+  EXPECT_EQ(split.signature, Parsed("slip- slip+ stick slip+ stick slip+"));
+  EXPECT_EQ(RemoveSegment(split.signature, 2, /*join_equal_neighbours=*/true).signature, s);
+  // Without the join the two slips meet at an abnormal stop.
+  EXPECT_EQ(RemoveSegment(split.signature, 2, false).signature, Parsed("slip- slip+ slip+ stick slip+"));
+}
+
+TEST(SignatureEdits, RenameDurationsExplicitlyAndRefuseOnesThatChangedMeaning) {
+  const Signature s = Parsed("slip- slip+ stick slip+");
+  const SignatureEdit inserted = InsertSegment(s, 1, Mode::kStick);
+  EXPECT_EQ(inserted.Renamed("d1"), "d1");
+  EXPECT_EQ(inserted.Renamed("d2"), "d3");
+  EXPECT_EQ(inserted.Renamed("d4"), "d5");
+  EXPECT_EQ(inserted.Renamed("omega"), "omega");
+  EXPECT_EQ(inserted.Renamed("phi"), "phi");
+  const SignatureEdit split = SplitSegment(s, 1, Mode::kStick);
+  EXPECT_THROW(split.Renamed("d2"), InvalidInput);  // now only the part before the stick
+  EXPECT_EQ(split.Renamed("d3"), "d5");
+  const SignatureEdit removed = RemoveSegment(s, 2, /*join_equal_neighbours=*/true);
+  EXPECT_EQ(removed.signature, Parsed("slip- slip+"));
+  EXPECT_THROW(removed.Renamed("d2"), InvalidInput);  // joined with d4
+  EXPECT_THROW(removed.Renamed("d3"), InvalidInput);  // removed
+  EXPECT_EQ(removed.Renamed("d1"), "d1");
+}
+
+TEST(SignatureEdits, RefuseInvalidResultsWithTheFieldNamed) {
+  const Signature s = Parsed("slip- stick slip+");
+  EXPECT_THROW(InsertSegment(s, 1, Mode::kStick), InvalidInput);  // a stick beside a stick
+  EXPECT_THROW(InsertSegment(s, 4, Mode::kStick), InvalidInput);
+  EXPECT_THROW(RemoveSegment(s, -1, false), InvalidInput);
+  EXPECT_THROW(RemoveSegment(Parsed("slip-"), 0, false), InvalidInput);
+  // Joining slip+ ... slip+ around a vanished first segment would span the time origin.
+  EXPECT_THROW(RemoveSegment(Parsed("stick slip+ slip- slip+"), 0, true), InvalidInput);
+  try {
+    InsertSegment(s, 9, Mode::kSlipNegative);
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "position");
+    EXPECT_EQ(std::string(e.what()), "position = 9 is invalid: valid range 0 <= position <= 3");
+  }
+}
+
+// A zero-length segment inserted anywhere, or a split around one, leaves the motion as it was.
+TEST(OrbitEdits, ZeroLengthSegmentGivesTheSameOrbit) {
+  for (const char* name : {"paper-4.1", "paper-5.1", "paper-6"}) {
+    SCOPED_TRACE(name);
+    const Orbit o = SolvedPreset(name);
+    for (int position = 0; position <= o.signature.size(); ++position) {
+      const Mode mode = position < o.signature.size() && o.signature.segments()[position] == Mode::kStick
+                            ? Mode::kSlipPositive
+                            : Mode::kStick;
+      if (position > 0 && o.signature.segments()[position - 1] == Mode::kStick && mode == Mode::kStick) continue;
+      const Orbit edited = InsertSegment(o, position, mode);
+      EXPECT_EQ(edited.Period(), o.Period());
+      EXPECT_EQ(edited.InitialState(), o.InitialState());
+      EXPECT_EQ(edited.phi, o.phi);
+      EXPECT_LT(SampledDistance(edited, o), 1e-12);
+    }
+    for (int i = 0; i < o.signature.size(); ++i) {
+      if (o.signature.segments()[i] == Mode::kStick) continue;
+      const Orbit split = SplitSegment(o, i, 0.4 * o.durations[i], Mode::kStick);
+      EXPECT_LT(SampledDistance(split, o), 1e-12);
+      const Orbit back = RemoveSegment(split, i + 1, /*join_equal_neighbours=*/true);
+      EXPECT_EQ(back.signature, o.signature);
+      EXPECT_NEAR(back.durations[i], o.durations[i], 1e-15 * o.durations[i] + 1e-15);
+    }
+  }
+}
+
+// At a located stop-force boundary (a reversal whose force reaches the static level) a
+// zero-length stick inserted at the stop solves the periodicity equations of the new type: the
+// edit is how a branch of the adjacent type starts.
+TEST(OrbitEdits, ZeroLengthStickSolvesTheAdjacentTypeWhereTheReversalForceIsAtItsLevel) {
+  Orbit o = SolvedPreset("paper-4.1");  // a reversal at the end of segment 1
+  // Move u_r onto the reversal's force threshold: s - eta u_r = 0 there (the stop-force margin).
+  const PeriodicityEquations equations(o.signature, Shooting::kSingle);
+  const State end = o.SegmentStates()[1];
+  const double phase = o.phi + o.parameters.omega * o.durations[0];
+  o.parameters.u_r = std::abs(StickForce(end, phase, o.parameters)) / o.parameters.eta;
+  const Orbit edited = InsertSegment(o, 1, Mode::kStick);
+  const PeriodicityEquations adjacent(edited.signature, Shooting::kSingle);
+  Eigen::VectorXd residual;
+  adjacent.Evaluate(adjacent.Variables(edited), &residual, nullptr);
+  EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12) << residual.transpose();
+}
+
+}  // namespace
+}  // namespace stickslip
