@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "stickslip/io/run.hpp"
+#include "stickslip/io/result_files.hpp"
 #include "stickslip/model/paper_examples.hpp"
 
 namespace stickslip::cli {
@@ -89,8 +89,8 @@ ModelInput ResolveModelInput(const std::string& preset, const std::string& point
       throw InputError(fmt::format("point = '{}' cannot be used: {}", point, e.what()));
     }
     auto column = [&](std::string_view name) {
-      for (const auto& [key, text] : labelled.columns) {
-        if (key == name) return ParseNumber(name, text, "a finite number");
+      for (const auto& [key, value] : labelled.variables) {
+        if (key == name) return value;
       }
       throw InputError(fmt::format("point = '{}' has no column {}", point, name));
     };

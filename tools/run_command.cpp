@@ -13,6 +13,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "stickslip/io/check.hpp"
+#include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 
 namespace stickslip::cli {
@@ -21,7 +22,7 @@ namespace {
 
 struct Executed {
   OrbitBranch branch;
-  RunFiles files;
+  StoredRun stored;
   double seconds = 0.0;  // wall time of the continuation, reported on stdout (not in the files)
 };
 
@@ -49,8 +50,8 @@ std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path&
     fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
     return std::nullopt;
   }
-  RunFiles files = FormatRunFiles(run, branch);
-  return Executed{std::move(branch), std::move(files), seconds};
+  StoredRun stored = RecordRun(run, branch);
+  return Executed{std::move(branch), std::move(stored), seconds};
 }
 
 std::string Report(const RunFile& run, const Executed& e) {
@@ -88,7 +89,7 @@ int RunRuns(const RunArgs& args) {
       code = kExitNoConvergence;
       continue;
     }
-    WriteRunFiles(args.results, run.output, e->files);
+    WriteRunFiles(args.results, e->stored);
     fmt::print("{}\n", Report(run, *e));
   }
   return code;
@@ -106,7 +107,7 @@ int RunCheck(const CheckArgs& args) {
     std::optional<Executed> e = Execute(run, args.results);
     if (!e) return kExitNoConvergence;
     const std::vector<Difference> differences =
-        CompareWithStored(e->files, std::filesystem::path(args.results) / run.output, run.parameter);
+        CompareWithStored(e->stored, ReadRunFiles(std::filesystem::path(args.results) / run.output));
     if (differences.empty()) {
       fmt::print("check {}: ok ({} special points)\n", run.output, e->branch.branch.special_points.size());
       continue;
@@ -170,7 +171,7 @@ int RunContinue(ContinueArgs args) {
   }
   std::optional<Executed> e = Execute(run, args.results);
   if (!e) return kExitNoConvergence;
-  WriteRunFiles(args.results, run.output, e->files);
+  WriteRunFiles(args.results, e->stored);
   fmt::print("{}\n", Report(run, *e));
   return kExitOk;
 }

@@ -5,7 +5,7 @@
 STICKSLIP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 STICKSLIP_PACKAGES=(
   cmake ninja-build g++
-  libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev
+  libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev
   auto-07p python3-numpy python3-matplotlib

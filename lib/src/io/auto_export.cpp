@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
-#include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
-#include "stickslip/io/run.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/result_files.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
@@ -21,40 +22,34 @@ int AutoTypeCode(const std::string& type) {
   return it == codes.end() ? -4 : it->second;
 }
 
-std::string JsonString(const std::string& json, const std::string& key) {
-  const std::string pattern = "\"" + key + "\": \"";
-  const auto at = json.find(pattern);
-  if (at == std::string::npos) throw std::runtime_error("summary.json has no " + key);
-  const auto begin = at + pattern.size();
-  return json.substr(begin, json.find('"', begin) - begin);
+// AUTO's TY and LAB of a label "LP2": the type code and the running number.
+std::pair<int, int> AutoLabel(const std::string& label, const std::filesystem::path& file, int pt) {
+  auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  const auto digits = std::find_if(label.begin(), label.end(), is_digit);
+  const std::string number(digits, label.end());
+  if (number.empty() || number.size() > 9 || !std::all_of(number.begin(), number.end(), is_digit)) {
+    throw InvalidInput::WithMessage("label", fmt::format("{}: point {}: label '{}' is invalid: valid a type and a number, "
+                                                         "as LP2", file.string(), pt, label));
+  }
+  return {AutoTypeCode(std::string(label.begin(), digits)), std::stoi(number)};
 }
 
 }  // namespace
 
 AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
-  const CsvTable branch = ParseCsv(ReadTextFile(run_directory / "branch.csv"));
-  const std::string summary = ReadTextFile(run_directory / "summary.json");
-  const std::string parameter = JsonString(summary, "parameter");
-  std::string error;
-  const std::optional<Signature> signature = Signature::Parse(JsonString(summary, "signature"), &error);
-  if (!signature) throw std::runtime_error(error);
-  auto column = [&](const std::string& name) {
-    const auto it = std::find(branch.header.begin(), branch.header.end(), name);
-    if (it == branch.header.end()) throw std::runtime_error(fmt::format("branch.csv has no column {}", name));
-    return static_cast<std::size_t>(it - branch.header.begin());
-  };
-  std::vector<std::string> names = {parameter, "x10", "x20", "v10", "phi"};
-  for (int i = 1; i <= signature->size(); ++i) names.push_back(fmt::format("d{}", i));
-  std::vector<std::size_t> columns;
-  for (const std::string& n : names) columns.push_back(column(n));
-  const std::size_t label_column = column("label");
-  const std::size_t stable_column = column("stable");
-  if (branch.rows.empty()) throw std::runtime_error("branch.csv has no point");
-  double low = std::stod(branch.rows.front()[columns[0]]);
+  const StoredRun run = ReadRunFiles(run_directory);
+  const int segments = run.branch.front().orbit.signature.size();
+  // The reader checked that the parameter is a variable of the orbit.
+  std::vector<std::string> names = {run.summary.parameter, "x10", "x20", "v10", "phi"};
+  for (int i = 1; i <= segments; ++i) names.push_back(fmt::format("d{}", i));
+  std::vector<int> columns;
+  for (const std::string& name : names) columns.push_back(*orbit_variables::IndexOf(segments, name));
+  auto parameter = [&](const StoredPoint& p) { return orbit_variables::Pack(p.orbit)(columns.front()); };
+  double low = parameter(run.branch.front());
   double high = low;
-  for (const auto& row : branch.rows) {
-    low = std::min(low, std::stod(row[columns[0]]));
-    high = std::max(high, std::stod(row[columns[0]]));
+  for (const StoredPoint& p : run.branch) {
+    low = std::min(low, parameter(p));
+    high = std::max(high, parameter(p));
   }
 
   AutoFiles files;
@@ -64,27 +59,17 @@ AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
   for (const std::string& n : names) files.b += fmt::format("{:<19}", n);
   files.b += "\n";
   int pt = 0;
-  for (const auto& row : branch.rows) {
+  for (const StoredPoint& p : run.branch) {
     ++pt;
-    const std::string& label = row[label_column];
-    int ty = 0, lab = 0;
-    if (!label.empty()) {
-      const auto digits = std::find_if(label.begin(), label.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-      ty = AutoTypeCode(std::string(label.begin(), digits));
-      lab = std::stoi(std::string(digits, label.end()));
-    }
-    const bool stable = row[stable_column] == "1";
-    files.b += fmt::format("{:4d}{:6d}{:4d}{:5d}", 1, stable ? -pt : pt, ty, lab);
-    for (std::size_t c : columns) files.b += fmt::format("{:19.10E}", std::stod(row[c]));
+    const auto [ty, lab] = p.label.empty() ? std::pair(0, 0) : AutoLabel(p.label, run_directory / "branch.csv", pt);
+    files.b += fmt::format("{:4d}{:6d}{:4d}{:5d}", 1, p.stable ? -pt : pt, ty, lab);
+    const Eigen::VectorXd variables = orbit_variables::Pack(p.orbit);
+    for (int c : columns) files.b += fmt::format("{:19.10E}", variables(c));
     files.b += "\n";
-    if (label.empty()) continue;
+    if (p.label.empty()) continue;
 
     // The solution file entry of a labelled point.
-    Eigen::VectorXd variables(orbit_variables::Count(signature->size()));
-    for (int i = 0; i < variables.size(); ++i) {
-      variables(i) = std::stod(row[column(orbit_variables::Name(signature->size(), i))]);
-    }
-    const Orbit orbit = orbit_variables::Unpack(*signature, variables);
+    const Orbit& orbit = p.orbit;
     const std::vector<State> states = orbit.Sample(samples);
     constexpr int kParameters = 36;  // AUTO's NPAR
     std::vector<double> par(kParameters, 0.0);
@@ -93,7 +78,7 @@ AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
     const int rows = samples;
     const int lines = rows + (kParameters + 6) / 7;
     // IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR
-    files.s += fmt::format("{:6d}{:6d}{:6d}{:6d}{:6d}{:6d}{:8d}{:6d}{:8d}{:5d}{:5d}{:5d}\n", 1, stable ? -pt : pt, ty, lab,
+    files.s += fmt::format("{:6d}{:6d}{:6d}{:6d}{:6d}{:6d}{:8d}{:6d}{:8d}{:5d}{:5d}{:5d}\n", 1, p.stable ? -pt : pt, ty, lab,
                            1, 1, rows, 5, lines, rows - 1, 1, kParameters);
     for (int k = 0; k < rows; ++k) {
       const State& x = states[k];

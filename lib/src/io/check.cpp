@@ -4,35 +4,16 @@
 #include <cmath>
 #include <complex>
 #include <limits>
-#include <string_view>
 #include <utility>
-#include <set>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "stickslip/io/result_files.hpp"
+
 namespace stickslip {
 
 namespace {
-
-// Columns that make up the solution (the orbit's variables).
-bool IsSolutionColumn(const std::string& c) {
-  static const std::set<std::string> fixed = {"chi", "eta", "omega", "u_s", "u_r", "phi", "x10", "x20", "v10"};
-  return fixed.count(c) || (c.size() > 1 && c[0] == 'd' && std::all_of(c.begin() + 1, c.end(), ::isdigit));
-}
-
-bool StartsWith(const std::string& text, std::string_view prefix) { return text.rfind(prefix, 0) == 0; }
-
-// The Floquet multipliers of a row, in the file's order (the eigensolver's).
-std::vector<std::complex<double>> Multipliers(const std::vector<std::string>& header, const std::vector<std::string>& row) {
-  std::vector<std::complex<double>> mu;
-  for (std::size_t k = 0; k + 1 < header.size(); ++k) {
-    if (StartsWith(header[k], "floquet:mu") && header[k].ends_with("_re")) {
-      mu.emplace_back(std::stod(row[k]), std::stod(row[k + 1]));
-    }
-  }
-  return mu;
-}
 
 // Two NaNs agree: a value that could not be computed in both runs is no difference.
 double Distance(std::complex<double> a, std::complex<double> b) {
@@ -58,80 +39,96 @@ std::vector<std::complex<double>> Matched(const std::vector<std::complex<double>
   return matched;
 }
 
-// A flag is compared only where the stored row is clearly on one side of its boundary: at a
+// A flag is compared only where the stored point is clearly on one side of its boundary: at a
 // grazing or a fold the flag of the located point itself is decided by rounding.
-bool MarginsClearOfZero(const std::vector<std::string>& header, const std::vector<std::string>& row, double clearance) {
-  for (std::size_t k = 0; k < header.size(); ++k) {
-    if (StartsWith(header[k], "margin:") && !(std::abs(std::stod(row[k])) > clearance)) return false;
-  }
-  return true;
+bool MarginsClearOfZero(const StoredPoint& p, double clearance) {
+  return std::all_of(p.margins.begin(), p.margins.end(), [&](const auto& m) { return std::abs(m.second) > clearance; });
 }
 bool MultipliersClearOfUnitCircle(const std::vector<std::complex<double>>& mu, double clearance) {
   return std::all_of(mu.begin(), mu.end(), [&](auto m) { return std::abs(std::abs(m) - 1.0) > clearance; });
 }
 
-void CompareTables(const std::string& file, const CsvTable& stored, const CsvTable& fresh, bool labelled_only,
+std::string Text(double v) { return fmt::format("{}", v); }
+std::string Text(bool flag) { return flag ? "1" : "0"; }
+
+// Appends the differences of one point, `where` naming it (its label, or "row N").
+void ComparePoints(const std::string& file, const std::string& where, const StoredPoint& r, const StoredPoint& s,
                    const std::string& parameter, const CheckTolerances& tol, std::vector<Difference>* out) {
-  if (stored.header != fresh.header) {
-    out->push_back({file, "header", "", fmt::format("{}", fmt::join(stored.header, ",")),
-                    fmt::format("{}", fmt::join(fresh.header, ","))});
-    return;
-  }
-  auto select = [&](const CsvTable& t) {
-    std::vector<const std::vector<std::string>*> rows;
-    for (const auto& r : t.rows) {
-      if (r.size() == t.header.size() && (!labelled_only || !r[1].empty())) rows.push_back(&r);
-    }
-    return rows;
-  };
-  const auto a = select(stored);
-  const auto b = select(fresh);
-  if (a.size() != b.size()) {
-    out->push_back({file, "rows", "count", std::to_string(a.size()), std::to_string(b.size())});
-  }
-  const std::vector<std::string>& header = stored.header;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    const auto& r = *a[i];
-    const auto& s = *b[i];
-    const std::string where = r[1].empty() ? fmt::format("row {}", i + 1) : r[1];
-    const std::vector<std::complex<double>> mu = Multipliers(header, r);
-    const std::vector<std::complex<double>> fresh_mu = Matched(mu, Multipliers(header, s));
-    for (std::size_t k = 0; k < mu.size(); ++k) {
-      if (!(Distance(mu[k], fresh_mu[k]) <= tol.multiplier * std::max(1.0, std::abs(mu[k])))) {
-        auto text = [](std::complex<double> m) { return fmt::format("{}{:+}i", m.real(), m.imag()); };
-        out->push_back({file, where, fmt::format("multiplier {}", k + 1), text(mu[k]), text(fresh_mu[k])});
-      }
-    }
-    for (std::size_t k = 0; k < r.size(); ++k) {
-      const std::string& column = header[k];
-      const bool compared_exactly =
-          column == "label" || column == "type" || column == "test_function" || column == "located" ||
-          (column == "admissible" && MarginsClearOfZero(header, r, tol.flag_clearance)) ||
-          (column == "stable" && MultipliersClearOfUnitCircle(mu, tol.flag_clearance));
-      if (compared_exactly) {
-        if (r[k] != s[k]) out->push_back({file, where, column, r[k], s[k]});
-        continue;
-      }
-      if (!IsSolutionColumn(column)) continue;
-      const double x = std::stod(r[k]);
-      const double y = std::stod(s[k]);
-      const double limit = column == parameter ? tol.parameter_relative * std::max(std::abs(x), 1e-300)
-                                               : tol.solution * std::max(1.0, std::abs(x));
-      if (!(Distance(x, y) <= limit)) out->push_back({file, where, column, r[k], s[k]});
+  const std::vector<std::complex<double>> fresh_mu = Matched(r.multipliers, s.multipliers);
+  for (std::size_t k = 0; k < fresh_mu.size(); ++k) {
+    const std::complex<double> mu = r.multipliers[k];
+    if (!(Distance(mu, fresh_mu[k]) <= tol.multiplier * std::max(1.0, std::abs(mu)))) {
+      auto text = [](std::complex<double> m) { return fmt::format("{}{:+}i", m.real(), m.imag()); };
+      out->push_back({file, where, fmt::format("multiplier {}", k + 1), text(mu), text(fresh_mu[k])});
     }
   }
+  if (r.label != s.label) out->push_back({file, where, "label", r.label, s.label});
+  const NamedValues stored_solution = SolutionColumns(r.orbit);
+  const NamedValues fresh_solution = SolutionColumns(s.orbit);
+  for (std::size_t k = 0; k < stored_solution.size(); ++k) {
+    const auto& [column, x] = stored_solution[k];
+    const double y = fresh_solution[k].second;
+    const double limit = column == parameter ? tol.parameter_relative * std::max(std::abs(x), 1e-300)
+                                             : tol.solution * std::max(1.0, std::abs(x));
+    if (!(Distance(x, y) <= limit)) out->push_back({file, where, column, Text(x), Text(y)});
+  }
+  if (MultipliersClearOfUnitCircle(r.multipliers, tol.flag_clearance) && r.stable != s.stable) {
+    out->push_back({file, where, "stable", Text(r.stable), Text(s.stable)});
+  }
+  if (MarginsClearOfZero(r, tol.flag_clearance) && r.admissible != s.admissible) {
+    out->push_back({file, where, "admissible", Text(r.admissible), Text(s.admissible)});
+  }
+}
+
+std::vector<const StoredPoint*> Labelled(const std::vector<StoredPoint>& branch) {
+  std::vector<const StoredPoint*> labelled;
+  for (const StoredPoint& p : branch) {
+    if (!p.label.empty()) labelled.push_back(&p);
+  }
+  return labelled;
 }
 
 }  // namespace
 
-std::vector<Difference> CompareWithStored(const RunFiles& fresh, const std::filesystem::path& stored_dir,
-                                          const std::string& parameter, const CheckTolerances& tolerances) {
-  std::vector<Difference> differences;
-  CompareTables("special-points.csv", ParseCsv(ReadTextFile(stored_dir / "special-points.csv")),
-                ParseCsv(fresh.special_points_csv), false, parameter, tolerances, &differences);
-  CompareTables("branch.csv", ParseCsv(ReadTextFile(stored_dir / "branch.csv")), ParseCsv(fresh.branch_csv), true,
-                parameter, tolerances, &differences);
-  return differences;
+std::vector<Difference> CompareWithStored(const StoredRun& fresh, const StoredRun& stored,
+                                          const CheckTolerances& tolerances) {
+  const std::string special_file = "special-points.csv";
+  const std::string branch_file = "branch.csv";
+  std::vector<Difference> out;
+  const std::vector<std::string> stored_header = ColumnNames(stored.branch.front());
+  const std::vector<std::string> fresh_header = ColumnNames(fresh.branch.front());
+  if (stored_header != fresh_header) {
+    for (const std::string& file : {special_file, branch_file}) {
+      out.push_back({file, "header", "", fmt::format("{}", fmt::join(stored_header, ",")),
+                     fmt::format("{}", fmt::join(fresh_header, ","))});
+    }
+    return out;
+  }
+  const std::string& parameter = fresh.summary.parameter;
+  auto count = [&](const std::string& file, std::size_t a, std::size_t b) {
+    if (a != b) out.push_back({file, "rows", "count", std::to_string(a), std::to_string(b)});
+    return std::min(a, b);
+  };
+
+  // Special points in order, all of them.
+  for (std::size_t i = 0; i < count(special_file, stored.special_points.size(), fresh.special_points.size()); ++i) {
+    const StoredSpecialPoint& r = stored.special_points[i];
+    const StoredSpecialPoint& s = fresh.special_points[i];
+    const std::string where = r.point.label.empty() ? fmt::format("row {}", i + 1) : r.point.label;
+    ComparePoints(special_file, where, r.point, s.point, parameter, tolerances, &out);
+    if (r.type != s.type) out.push_back({special_file, where, "type", r.type, s.type});
+    if (r.test_function != s.test_function) {
+      out.push_back({special_file, where, "test_function", r.test_function, s.test_function});
+    }
+    if (r.located != s.located) out.push_back({special_file, where, "located", Text(r.located), Text(s.located)});
+  }
+  // The labelled branch points in order.
+  const std::vector<const StoredPoint*> a = Labelled(stored.branch);
+  const std::vector<const StoredPoint*> b = Labelled(fresh.branch);
+  for (std::size_t i = 0; i < count(branch_file, a.size(), b.size()); ++i) {
+    ComparePoints(branch_file, a[i]->label, *a[i], *b[i], parameter, tolerances, &out);
+  }
+  return out;
 }
 
 }  // namespace stickslip

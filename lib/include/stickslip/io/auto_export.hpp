@@ -19,7 +19,7 @@ struct AutoFiles {
   std::string s;
 };
 
-// Reads results/<run>/branch.csv and summary.json. Throws std::runtime_error naming the file.
+// Reads results/<run>/ (ReadRunFiles). Throws InvalidInput naming the file, as the reader does.
 AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples = 101);
 
 }  // namespace stickslip

@@ -6,11 +6,10 @@
 // zero, by flag_clearance); on the boundary, at a TR or a grazing, rounding decides them.
 #pragma once
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
-#include "stickslip/io/run.hpp"
+#include "stickslip/io/stored_run.hpp"
 
 namespace stickslip {
 
@@ -29,7 +28,9 @@ struct Difference {
   std::string fresh;
 };
 
-std::vector<Difference> CompareWithStored(const RunFiles& fresh, const std::filesystem::path& stored_dir,
-                                          const std::string& parameter, const CheckTolerances& tolerances = {});
+// The differences of a fresh run from the stored one (ReadRunFiles), in file order; the
+// continuation parameter is the fresh run's.
+std::vector<Difference> CompareWithStored(const StoredRun& fresh, const StoredRun& stored,
+                                          const CheckTolerances& tolerances = {});
 
 }  // namespace stickslip

@@ -1,0 +1,75 @@
+// A continuation run as its result files store it (result_files.hpp reads and writes them): what
+// each row of branch.csv and special-points.csv means, and what summary.json says. Plain values,
+// so that a later run, `check` and the AUTO export use the stored branch without parsing text.
+//
+//   StoredRun run = ReadRunFiles("results/paper-5.1-omega-up");
+//   for (const StoredPoint& p : run.branch) if (!p.label.empty()) use(p.orbit, p.multipliers);
+#pragma once
+
+#include <complex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/orbits/orbit.hpp"
+
+namespace stickslip {
+
+struct OrbitBranch;
+
+// One branch point, one CSV row. The columns are, in this order: pt, label, the orbit's
+// variables (SolutionColumns), margin:<name> per margin, floquet:mu<k>_re and _im per multiplier,
+// stable, floquet:det(M-I), floquet:det(M+I), floquet:torus, admissible, newton_iterations,
+// step_size.
+struct StoredPoint {
+  int pt = 0;                  // 1-based position on the branch
+  std::string label;           // AUTO-style type and running number ("LP2"); empty if regular
+  Orbit orbit;                 // its signature is the run's
+  NamedValues margins{};       // (Margin::Name(), value); > 0 is admissible, inf where undefined
+  std::vector<std::complex<double>> multipliers{};  // Floquet multipliers, in the eigensolver's order
+  bool stable = false;         // every |multiplier| < 1
+  double fold_test = 0.0;      // det(M - I)
+  double flip_test = 0.0;      // det(M + I)
+  double torus_test = 0.0;     // prod_{i<j} (mu_i mu_j - 1)
+  bool admissible = true;      // every terminal margin positive
+  int newton_iterations = 0;
+  double step_size = 0.0;      // the step that reached it (0 at the start and at located points)
+};
+
+// One row of special-points.csv: the point's row, then type, test_function and located.
+struct StoredSpecialPoint {
+  StoredPoint point;           // its label is the located point's, or the type at an end
+  std::string type;            // "LP", "BP", "UZ", "EP", "TR", "PD" or an orbit-type change code
+  std::string test_function;   // which function changed sign, or why the branch ended
+  bool located = true;         // false if the corrector failed inside the bracket
+};
+
+// summary.json, apart from the counts of points and special points by type, which the writer
+// derives from the tables and the reader checks against them.
+struct StoredSummary {
+  std::string run_file;
+  std::string stickslip_version;
+  std::string output;       // the run's folder under the results root
+  std::string signature;    // Signature::ToString of the orbits
+  std::string parameter;    // the continued variable (an orbit_variables name)
+  std::string shooting;     // "single" or "multiple"
+  std::string termination;  // why the branch ended: "max-points", "terminal-event", ...
+  std::string message;
+};
+
+struct StoredRun {
+  StoredSummary summary;
+  std::vector<StoredPoint> branch;
+  std::vector<StoredSpecialPoint> special_points;
+};
+
+// The orbit's variables as the files name and order them: chi, eta, omega, u_s, u_r, phi, x10,
+// x20, v10, d1..dn.
+NamedValues SolutionColumns(const Orbit& orbit);
+
+// The stored form of a branch just computed from `run`: the one place that reads the
+// continuation engine's Branch, so that a change there changes only this function.
+StoredRun RecordRun(const RunFile& run, const OrbitBranch& branch);
+
+}  // namespace stickslip

@@ -1,0 +1,369 @@
+#include "stickslip/io/result_files.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <span>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "csv_table.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/atomic_file.hpp"
+
+namespace stickslip {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace ov = orbit_variables;
+using detail::CsvTable;
+// Keys stay in the order they are written in.
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kBranchFile = "branch.csv";
+constexpr const char* kSpecialPointsFile = "special-points.csv";
+constexpr const char* kSummaryFile = "summary.json";
+
+// The columns of a point after its margins and multipliers, and those a special point adds.
+constexpr std::string_view kMarginPrefix = "margin:";
+constexpr std::array<const char*, 4> kStabilityColumns = {"stable", "floquet:det(M-I)", "floquet:det(M+I)",
+                                                          "floquet:torus"};
+constexpr std::array<const char*, 3> kStepColumns = {"admissible", "newton_iterations", "step_size"};
+constexpr std::array<const char*, 3> kSpecialColumns = {"type", "test_function", "located"};
+
+std::string MultiplierColumn(std::size_t k, const char* part) { return fmt::format("floquet:mu{}_{}", k, part); }
+
+// summary.json's text keys, before and after "points" and "special_points".
+struct TextKey {
+  const char* key;
+  std::string StoredSummary::*field;
+};
+constexpr std::array<TextKey, 6> kLeadingKeys = {{{"run_file", &StoredSummary::run_file},
+                                                  {"stickslip_version", &StoredSummary::stickslip_version},
+                                                  {"output", &StoredSummary::output},
+                                                  {"signature", &StoredSummary::signature},
+                                                  {"parameter", &StoredSummary::parameter},
+                                                  {"shooting", &StoredSummary::shooting}}};
+constexpr std::array<TextKey, 2> kTrailingKeys = {{{"termination", &StoredSummary::termination},
+                                                   {"message", &StoredSummary::message}}};
+constexpr const char* kPointsKey = "points";
+constexpr const char* kSpecialPointsKey = "special_points";
+
+std::map<std::string, std::size_t> CountsByType(const std::vector<StoredSpecialPoint>& special_points) {
+  std::map<std::string, std::size_t> counts;
+  for (const StoredSpecialPoint& s : special_points) ++counts[s.type];
+  return counts;
+}
+
+// ---- Writing
+
+std::string Number(double v) { return fmt::format("{}", v); }
+const char* Flag(bool b) { return b ? "1" : "0"; }
+
+std::string Row(const StoredPoint& p) {
+  std::vector<std::string> fields = {std::to_string(p.pt), p.label};
+  for (const auto& [name, value] : SolutionColumns(p.orbit)) fields.push_back(Number(value));
+  for (const auto& [name, value] : p.margins) fields.push_back(Number(value));
+  for (const std::complex<double>& mu : p.multipliers) {
+    fields.push_back(Number(mu.real()));
+    fields.push_back(Number(mu.imag()));
+  }
+  fields.push_back(Flag(p.stable));
+  for (double v : {p.fold_test, p.flip_test, p.torus_test}) fields.push_back(Number(v));
+  fields.push_back(Flag(p.admissible));
+  fields.push_back(std::to_string(p.newton_iterations));
+  fields.push_back(Number(p.step_size));
+  return fmt::format("{}", fmt::join(fields, ","));
+}
+
+std::string FormatSummary(const StoredRun& run) {
+  Json json = Json::object();
+  for (const TextKey& k : kLeadingKeys) json[k.key] = run.summary.*k.field;
+  json[kPointsKey] = run.branch.size();
+  json[kSpecialPointsKey] = Json::object();
+  for (const auto& [type, count] : CountsByType(run.special_points)) json[kSpecialPointsKey][type] = count;
+  for (const TextKey& k : kTrailingKeys) json[k.key] = run.summary.*k.field;
+  // Bytes that are not UTF-8 (a run file's path may hold any) become U+FFFD instead of failing.
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+// ---- Reading
+
+InvalidInput KeyError(const fs::path& file, const std::string& key, const std::string& what) {
+  return InvalidInput::WithMessage(key, fmt::format("{}: key '{}' {}", file.string(), key, what));
+}
+
+// summary.json as written by FormatSummary, with its counts.
+struct Summary {
+  StoredSummary fields;
+  std::size_t points = 0;
+  std::map<std::string, std::size_t> special_points;
+};
+
+std::size_t Count(const Json& value, const fs::path& file, const std::string& key) {
+  if (!value.is_number_unsigned()) {
+    throw KeyError(file, key, fmt::format("= {} is invalid: valid a count (an integer >= 0)", value.dump()));
+  }
+  return value.get<std::size_t>();
+}
+
+Summary ParseSummary(const std::string& text, const fs::path& file) {
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...".
+    const std::string what = e.what();
+    const auto start = what.find("] ");
+    throw InvalidInput::WithMessage(file.string(), fmt::format("{}: invalid JSON: {}", file.string(),
+                                                               start == std::string::npos ? what : what.substr(start + 2)));
+  }
+  if (!json.is_object()) {
+    throw InvalidInput::WithMessage(file.string(), fmt::format("{}: is invalid: valid a JSON object", file.string()));
+  }
+  Summary summary;
+  std::vector<std::string> known = {kPointsKey, kSpecialPointsKey};
+  auto required = [&](const std::string& key) -> const Json& {
+    const auto it = json.find(key);
+    if (it == json.end()) throw KeyError(file, key, "is missing");
+    return *it;
+  };
+  for (const auto& keys : {std::span<const TextKey>(kLeadingKeys), std::span<const TextKey>(kTrailingKeys)}) {
+    for (const TextKey& k : keys) {
+      const Json& value = required(k.key);
+      if (!value.is_string()) throw KeyError(file, k.key, fmt::format("= {} is invalid: valid a string", value.dump()));
+      summary.fields.*k.field = value.get<std::string>();
+      known.push_back(k.key);
+    }
+  }
+  summary.points = Count(required(kPointsKey), file, kPointsKey);
+  const Json& special = required(kSpecialPointsKey);
+  if (!special.is_object()) {
+    throw KeyError(file, kSpecialPointsKey,
+                   fmt::format("= {} is invalid: valid an object of counts by type", special.dump()));
+  }
+  for (const auto& [type, count] : special.items()) {
+    summary.special_points[type] = Count(count, file, fmt::format("{}.{}", kSpecialPointsKey, type));
+  }
+  for (const auto& [key, value] : json.items()) {
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      throw KeyError(file, key, fmt::format("is unknown: valid {}", fmt::join(known, ", ")));
+    }
+  }
+  return summary;
+}
+
+// Where each field of a StoredPoint is in a table.
+struct ColumnIndices {
+  int pt = 0;
+  int label = 0;
+  std::vector<std::pair<int, int>> variables;    // (column, orbit_variables index)
+  std::vector<int> margins;
+  std::vector<std::pair<int, int>> multipliers;  // (real part, imaginary part)
+  std::array<int, kStabilityColumns.size()> stability{};
+  std::array<int, kStepColumns.size()> step{};
+  std::array<int, kSpecialColumns.size()> special{};  // special-points.csv only
+};
+
+// Throws InvalidInput if a column is missing, unknown or repeated.
+ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, bool special_points) {
+  std::vector<bool> used(table.header().size(), false);
+  auto column = [&](const std::string& name) {
+    const int c = table.Column(name);
+    used[c] = true;
+    return c;
+  };
+  ColumnIndices c;
+  c.pt = column("pt");
+  c.label = column("label");
+  for (int i = 0; i < ov::Count(signature.size()); ++i) c.variables.emplace_back(column(ov::Name(signature.size(), i)), i);
+  for (std::size_t k = 0; k < table.header().size(); ++k) {
+    if (table.header()[k].starts_with(kMarginPrefix)) c.margins.push_back(column(table.header()[k]));
+  }
+  for (std::size_t k = 1; table.Find(MultiplierColumn(k, "re")) >= 0; ++k) {
+    c.multipliers.emplace_back(column(MultiplierColumn(k, "re")), column(MultiplierColumn(k, "im")));
+  }
+  for (std::size_t k = 0; k < kStabilityColumns.size(); ++k) c.stability[k] = column(kStabilityColumns[k]);
+  for (std::size_t k = 0; k < kStepColumns.size(); ++k) c.step[k] = column(kStepColumns[k]);
+  for (std::size_t k = 0; special_points && k < kSpecialColumns.size(); ++k) c.special[k] = column(kSpecialColumns[k]);
+  for (std::size_t k = 0; k < used.size(); ++k) {
+    if (!used[k]) throw table.HeaderError(fmt::format("column '{}' is unknown or repeated", table.header()[k]));
+  }
+  return c;
+}
+
+StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
+  Eigen::VectorXd variables(ov::Count(signature.size()));
+  for (const auto& [column, index] : c.variables) variables(index) = t.Number(row, column);
+  StoredPoint p{.pt = t.Integer(row, c.pt), .label = t.Text(row, c.label), .orbit = ov::Unpack(signature, variables)};
+  for (int column : c.margins) {
+    p.margins.emplace_back(t.header()[column].substr(kMarginPrefix.size()), t.Number(row, column));
+  }
+  for (const auto& [re, im] : c.multipliers) p.multipliers.emplace_back(t.Number(row, re), t.Number(row, im));
+  p.stable = t.Flag(row, c.stability[0]);
+  p.fold_test = t.Number(row, c.stability[1]);
+  p.flip_test = t.Number(row, c.stability[2]);
+  p.torus_test = t.Number(row, c.stability[3]);
+  p.admissible = t.Flag(row, c.step[0]);
+  p.newton_iterations = t.Integer(row, c.step[1]);
+  p.step_size = t.Number(row, c.step[2]);
+  return p;
+}
+
+std::string DescribeCounts(const std::map<std::string, std::size_t>& counts) {
+  std::vector<std::string> parts;
+  for (const auto& [type, count] : counts) parts.push_back(fmt::format("{} {}", type, count));
+  return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, ", "));
+}
+
+std::string ReadTextFile(const fs::path& path) {
+  std::error_code ignored;
+  std::ifstream in(path, std::ios::binary);
+  if (!fs::is_regular_file(path, ignored) || !in) {
+    throw InvalidInput::WithMessage(path.string(), fmt::format("cannot read '{}'", path.string()));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+std::vector<std::string> ColumnNames(const StoredPoint& p) {
+  std::vector<std::string> columns = {"pt", "label"};
+  for (const auto& [name, value] : SolutionColumns(p.orbit)) columns.push_back(name);
+  for (const auto& [name, value] : p.margins) columns.push_back(std::string(kMarginPrefix) + name);
+  for (std::size_t k = 1; k <= p.multipliers.size(); ++k) {
+    columns.push_back(MultiplierColumn(k, "re"));
+    columns.push_back(MultiplierColumn(k, "im"));
+  }
+  columns.insert(columns.end(), kStabilityColumns.begin(), kStabilityColumns.end());
+  columns.insert(columns.end(), kStepColumns.begin(), kStepColumns.end());
+  return columns;
+}
+
+RunFiles FormatRunFiles(const StoredRun& run) {
+  if (run.branch.empty()) throw std::invalid_argument("FormatRunFiles: the run has no branch point");
+  const std::vector<std::string> header = ColumnNames(run.branch.front());
+  auto check = [&](const StoredPoint& p) {
+    if (ColumnNames(p) != header) {
+      throw std::invalid_argument(fmt::format("FormatRunFiles: point {} has other columns than point 1", p.pt));
+    }
+  };
+  RunFiles files;
+  files.branch_csv = fmt::format("{}\n", fmt::join(header, ","));
+  for (const StoredPoint& p : run.branch) {
+    check(p);
+    files.branch_csv += Row(p) + "\n";
+  }
+  files.special_points_csv = fmt::format("{},{}\n", fmt::join(header, ","), fmt::join(kSpecialColumns, ","));
+  for (const StoredSpecialPoint& s : run.special_points) {
+    check(s.point);
+    files.special_points_csv += fmt::format("{},{},{},{}\n", Row(s.point), s.type, s.test_function, Flag(s.located));
+  }
+  files.summary_json = FormatSummary(run);
+  return files;
+}
+
+StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
+  const fs::path summary_file = directory / kSummaryFile;
+  Summary summary = ParseSummary(files.summary_json, summary_file);
+  std::string error;
+  const std::optional<Signature> signature = Signature::Parse(summary.fields.signature, &error);
+  if (!signature) {
+    throw KeyError(summary_file, "signature", fmt::format("= '{}' is invalid: {}", summary.fields.signature, error));
+  }
+  if (!ov::IndexOf(signature->size(), summary.fields.parameter)) {
+    std::vector<std::string> names;
+    for (int i = 0; i < ov::Count(signature->size()); ++i) names.push_back(ov::Name(signature->size(), i));
+    throw KeyError(summary_file, "parameter", fmt::format("= '{}' is invalid: valid a variable of the orbit, {}",
+                                                          summary.fields.parameter, fmt::join(names, ", ")));
+  }
+
+  StoredRun run{std::move(summary.fields), {}, {}};
+  const CsvTable branch(files.branch_csv, directory / kBranchFile);
+  const ColumnIndices branch_columns = FindColumns(branch, *signature, false);
+  for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, *signature));
+  if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
+
+  const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);
+  const ColumnIndices special_columns = FindColumns(special, *signature, true);
+  const std::vector<std::string> header = ColumnNames(run.branch.front());
+  for (int row = 0; row < special.rows(); ++row) {
+    StoredPoint point = ParsePoint(special, row, special_columns, *signature);
+    if (ColumnNames(point) != header) {
+      throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
+                                "test_function, located");
+    }
+    const std::array<int, 3>& c = special_columns.special;
+    run.special_points.push_back({std::move(point), special.Text(row, c[0]), special.Text(row, c[1]), special.Flag(row, c[2])});
+  }
+
+  if (summary.points != run.branch.size()) {
+    throw KeyError(summary_file, kPointsKey,
+                   fmt::format("= {} differs from the {} rows of {}", summary.points, run.branch.size(), kBranchFile));
+  }
+  const std::map<std::string, std::size_t> counts = CountsByType(run.special_points);
+  if (summary.special_points != counts) {
+    throw KeyError(summary_file, kSpecialPointsKey,
+                   fmt::format("({}) differs from the rows of {} ({})", DescribeCounts(summary.special_points),
+                               kSpecialPointsFile, DescribeCounts(counts)));
+  }
+  return run;
+}
+
+void WriteRunFiles(const fs::path& results_root, const StoredRun& run) {
+  const RunFiles files = FormatRunFiles(run);
+  const std::string& output = run.summary.output;
+  fs::create_directories(results_root);
+  const fs::path target = results_root / output;
+  const fs::path temporary = results_root / fmt::format(".{}.tmp.{}", output, static_cast<long>(::getpid()));
+  const fs::path old = results_root / fmt::format(".{}.old.{}", output, static_cast<long>(::getpid()));
+  std::error_code ignored;
+  fs::remove_all(temporary, ignored);
+  fs::create_directories(temporary);
+  try {
+    WriteFileAtomically(temporary / kBranchFile, files.branch_csv);
+    WriteFileAtomically(temporary / kSpecialPointsFile, files.special_points_csv);
+    WriteFileAtomically(temporary / kSummaryFile, files.summary_json);
+    if (fs::exists(target)) fs::rename(target, old);
+    fs::rename(temporary, target);
+  } catch (...) {
+    fs::remove_all(temporary, ignored);
+    if (!fs::exists(target) && fs::exists(old)) fs::rename(old, target, ignored);
+    throw;
+  }
+  fs::remove_all(old, ignored);
+}
+
+StoredRun ReadRunFiles(const fs::path& run_directory) {
+  const RunFiles files{ReadTextFile(run_directory / kBranchFile), ReadTextFile(run_directory / kSpecialPointsFile),
+                       ReadTextFile(run_directory / kSummaryFile)};
+  return ParseRunFiles(files, run_directory);
+}
+
+LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string& run, const std::string& label) {
+  if (!IsRunName(run)) {
+    throw InvalidInput::WithMessage("run", fmt::format("run '{}' is invalid: valid {}", run, kRunNameRule));
+  }
+  const StoredRun stored = ReadRunFiles(results_root / run);
+  std::vector<std::string> labels;
+  for (const StoredSpecialPoint& s : stored.special_points) {
+    if (s.point.label == label) return {stored.summary.signature, SolutionColumns(s.point.orbit)};
+    if (labels.empty() || labels.back() != s.point.label) labels.push_back(s.point.label);  // an end repeats its label
+  }
+  throw InvalidInput::WithMessage(
+      "label", fmt::format("label '{}' is not in '{}': valid labels {}", label,
+                           (results_root / run / kSpecialPointsFile).string(), fmt::join(labels, ", ")));
+}
+
+}  // namespace stickslip

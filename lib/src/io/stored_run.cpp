@@ -1,0 +1,77 @@
+#include "stickslip/io/stored_run.hpp"
+
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "stickslip/continuation/orbit_continuation.hpp"
+
+#ifndef STICKSLIP_VERSION
+#define STICKSLIP_VERSION "unknown"
+#endif
+
+namespace stickslip {
+
+namespace ov = orbit_variables;
+
+NamedValues SolutionColumns(const Orbit& orbit) {
+  const int n = orbit.signature.size();
+  const Eigen::VectorXd variables = ov::Pack(orbit);
+  std::vector<int> order;
+  for (ParameterId id : kAllParameters) order.push_back(ov::Parameter(n, id));
+  order.insert(order.end(), {ov::kPhi, ov::kX10, ov::kX20, ov::kV10});
+  for (int i = 0; i < n; ++i) order.push_back(ov::Duration(i));
+  NamedValues columns;
+  for (int index : order) columns.emplace_back(ov::Name(n, index), variables(index));
+  return columns;
+}
+
+StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
+  // The monitor's values by name: its margins, then what it records of the stability.
+  auto record = [&](int i, std::string label) {
+    const BranchPoint& p = b.branch.points[i];
+    StoredPoint point{.pt = i + 1, .label = std::move(label), .orbit = b.orbits[i]};
+    std::map<std::string, double> recorded;
+    for (std::size_t k = 0; k < b.branch.test_functions.size(); ++k) {
+      const std::string& name = b.branch.test_functions[k].name;
+      const double value = p.tests(static_cast<int>(k));
+      if (name.starts_with("margin:")) {
+        point.margins.emplace_back(name.substr(7), value);
+      } else {
+        recorded[name] = value;
+      }
+    }
+    for (int k = 1; recorded.count(fmt::format("floquet:mu{}_re", k)) != 0; ++k) {
+      point.multipliers.emplace_back(recorded.at(fmt::format("floquet:mu{}_re", k)),
+                                     recorded.at(fmt::format("floquet:mu{}_im", k)));
+    }
+    point.stable = recorded.at("stable") != 0.0;
+    point.fold_test = recorded.at("floquet:det(M-I)");
+    point.flip_test = recorded.at("floquet:det(M+I)");
+    point.torus_test = recorded.at("floquet:torus");
+    point.admissible = p.admissible;
+    point.newton_iterations = p.newton_iterations;
+    point.step_size = p.ds;
+    return point;
+  };
+
+  StoredRun stored;
+  stored.summary = {run.path, STICKSLIP_VERSION, run.output, b.orbits.front().signature.ToString(), run.parameter,
+                    ToString(b.shooting), ToString(b.branch.end), b.branch.end_message};
+  // AUTO-style labels: the type and a running number, in branch order.
+  std::vector<std::string> labels(b.branch.points.size());
+  int counter = 0;
+  for (std::size_t i = 0; i < b.branch.points.size(); ++i) {
+    if (!b.branch.points[i].label.empty()) labels[i] = fmt::format("{}{}", b.branch.points[i].label, ++counter);
+    stored.branch.push_back(record(static_cast<int>(i), labels[i]));
+  }
+  for (const SpecialPoint& s : b.branch.special_points) {
+    // An end that coincides with a located point keeps that point's label.
+    const std::string label = labels[s.point].empty() ? s.type : labels[s.point];
+    stored.special_points.push_back({record(s.point, label), s.type, s.test_function, s.located});
+  }
+  return stored;
+}
+
+}  // namespace stickslip

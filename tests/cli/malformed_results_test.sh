@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Every command that reads stored results (export --auto, check, a restart from a labelled point
+# by run file or by --point) meets a damaged results/<run>/ with exit code 2 and one line on
+# stderr naming the file, the line and the column, not a crash. A short row of branch.csv used to
+# crash export --auto (SIGSEGV).
+set -u
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+root=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+run=paper-5.1-omega-up
+
+# damage <file> <python statement on `lines`, the file's lines without their newlines>:
+# a fresh copy of the stored results with one file of the run edited.
+damage() {
+  rm -rf "$work/results" && cp -r "$root/results" "$work/results"
+  /usr/bin/python3 - "$work/results/$run/$1" "$2" <<'PY'
+import sys
+path, statement = sys.argv[1:]
+lines = open(path).read().splitlines()
+exec(statement)
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+}
+
+expect_rejected() {  # expect_rejected <expected text> <args...>
+  local text=$1
+  shift
+  (cd "$work" && "$bin" "$@") > /dev/null 2> "$work/stderr"
+  local code=$?
+  if [ "$code" -eq 2 ] && [ "$(wc -l < "$work/stderr")" -eq 1 ] && grep -qF -- "$text" "$work/stderr"; then
+    echo "ok   [$*]: $(cat "$work/stderr")"
+  else
+    echo "FAIL [$*]: exit code $code; want 2 and one stderr line with '$text'"
+    sed 's/^/    stderr: /' "$work/stderr"
+    failures=$((failures + 1))
+  fi
+}
+
+restart_file="$work/restart.toml"
+sed "s|^output = .*|output = \"restart-check\"|" "$root/continuation-scripts/paper-5.1-u_r-from-uz.toml" > "$restart_file"
+
+# A row one field short (the last one cut off).
+damage branch.csv 'lines[5] = lines[5].rsplit(",", 1)[0]'
+expect_rejected "results/$run/branch.csv:6: the row has 46 fields, the header 47" export --auto "results/$run"
+expect_rejected "results/$run/branch.csv:6: the row has 46 fields" check --results results "$root/continuation-scripts/$run.toml"
+
+# A column missing from special-points.csv (from the header and every row).
+damage special-points.csv 'k = lines[0].split(",").index("x10"); lines[:] = [",".join(f for i, f in enumerate(l.split(",")) if i != k) for l in lines]'
+expect_rejected "results/$run/special-points.csv:1: column 'x10' is missing" simulate --point "$run:UZ5" --results results --periods 1
+expect_rejected "results/$run/special-points.csv:1: column 'x10' is missing" run --results results "$restart_file"
+
+# A field that is not a number.
+damage special-points.csv 'f = lines[5].split(","); f[4] = "0.58.1"; lines[5] = ",".join(f)'
+expect_rejected "results/$run/special-points.csv:6: column 'omega' = '0.58.1' is not a number" export --auto "results/$run"
+expect_rejected "key 'start.restart' cannot be used: results/$run/special-points.csv:6: column 'omega'" run --results results "$restart_file"
+
+# A key missing from summary.json.
+damage summary.json 'lines[:] = [l for l in lines if "\"parameter\"" not in l]'
+expect_rejected "results/$run/summary.json: key 'parameter' is missing" export --auto "results/$run"
+expect_rejected "results/$run/summary.json: key 'parameter' is missing" simulate --point "$run:UZ5" --results results --periods 1
+
+# summary.json that is not JSON.
+damage summary.json 'lines[:] = lines[:4]'
+expect_rejected "results/$run/summary.json: invalid JSON: parse error at line 5, column 1" export --auto "results/$run"
+expect_rejected "results/$run/summary.json: invalid JSON" check --results results "$root/continuation-scripts/$run.toml"
+
+# Nothing was written beside the damaged run, and no restart run was created.
+[ ! -e "$work/results/$run/b.$run" ] || { echo "FAIL: export wrote b.$run from a damaged run"; failures=$((failures + 1)); }
+[ ! -e "$work/results/restart-check" ] || { echo "FAIL: a restart from a damaged run was written"; failures=$((failures + 1)); }
+
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "every reader of stored results rejects damaged files with one line naming where"

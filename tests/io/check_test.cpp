@@ -1,0 +1,54 @@
+// Regression checks compare the stored records themselves: a stored run agrees with itself, a
+// moved fold is reported with its label and column, and multipliers are matched to the nearest
+// rather than by position.
+#include "stickslip/io/check.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/io/result_files.hpp"
+
+namespace stickslip {
+namespace {
+
+const std::filesystem::path kRun = std::filesystem::path(STICKSLIP_SOURCE_DIR) / "results" / "paper-5.1-omega-up";
+
+TEST(CompareWithStored, FindsNoDifferenceBetweenAStoredRunAndItself) {
+  const StoredRun stored = ReadRunFiles(kRun);
+  EXPECT_TRUE(CompareWithStored(stored, stored).empty());
+}
+
+TEST(CompareWithStored, ReportsAFoldMovedBeyondTheParameterTolerance) {
+  const StoredRun stored = ReadRunFiles(kRun);
+  StoredRun fresh = stored;
+  StoredSpecialPoint& fold = fresh.special_points[3];
+  ASSERT_EQ(fold.point.label, "LP4");
+  fold.point.orbit.parameters.omega *= 1 + 1e-6;  // the tolerance is a relative 1e-8
+  const std::vector<Difference> differences = CompareWithStored(fresh, stored);
+  ASSERT_EQ(differences.size(), 1u);
+  EXPECT_EQ(differences[0].file, "special-points.csv");
+  EXPECT_EQ(differences[0].row, "LP4");
+  EXPECT_EQ(differences[0].column, "omega");
+  EXPECT_EQ(differences[0].stored, "0.5868188660921189");
+}
+
+TEST(CompareWithStored, MatchesMultipliersToTheNearestWhateverTheirOrder) {
+  const StoredRun stored = ReadRunFiles(kRun);
+  StoredRun fresh = stored;
+  for (StoredSpecialPoint& s : fresh.special_points) {
+    std::reverse(s.point.multipliers.begin(), s.point.multipliers.end());
+  }
+  EXPECT_TRUE(CompareWithStored(fresh, stored).empty());
+  // Now first, the zero multiplier of the stick (the entry into it), stored fourth, moved by 1e-5
+  // (the tolerance is 1e-6).
+  fresh.special_points[0].point.multipliers[0] += 1e-5;
+  const std::vector<Difference> differences = CompareWithStored(fresh, stored);
+  ASSERT_EQ(differences.size(), 1u);
+  EXPECT_EQ(differences[0].row, "EP1");
+  EXPECT_EQ(differences[0].column, "multiplier 4");
+}
+
+}  // namespace
+}  // namespace stickslip

@@ -1,0 +1,235 @@
+// The result files' one reader and one writer: every stored run reads and writes back to the same
+// bytes, a row means what its columns say, and a damaged file is an error naming the file, the
+// line and the column, never a crash.
+#include "stickslip/io/result_files.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/invalid_input.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kResults = fs::path(STICKSLIP_SOURCE_DIR) / "results";
+const fs::path kRun = kResults / "paper-5.1-omega-up";
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+RunFiles StoredTexts(const fs::path& dir) {
+  return {Slurp(dir / "branch.csv"), Slurp(dir / "special-points.csv"), Slurp(dir / "summary.json")};
+}
+
+std::vector<fs::path> StoredRuns() {
+  std::vector<fs::path> runs;
+  for (const auto& entry : fs::directory_iterator(kResults)) {
+    if (fs::exists(entry.path() / "summary.json")) runs.push_back(entry.path());
+  }
+  std::sort(runs.begin(), runs.end());
+  return runs;
+}
+
+TEST(ResultFiles, ReadingThenWritingEveryStoredRunGivesItsBytes) {
+  const std::vector<fs::path> runs = StoredRuns();
+  ASSERT_GE(runs.size(), 19u);
+  for (const fs::path& dir : runs) {
+    SCOPED_TRACE(dir.string());
+    const RunFiles stored = StoredTexts(dir);
+    const RunFiles written = FormatRunFiles(ReadRunFiles(dir));
+    EXPECT_EQ(written.branch_csv, stored.branch_csv);
+    EXPECT_EQ(written.special_points_csv, stored.special_points_csv);
+    EXPECT_EQ(written.summary_json, stored.summary_json);
+  }
+}
+
+// The first row of paper-5.1-omega-up/branch.csv, field by field (the values are the file's text).
+TEST(ResultFiles, ReaderGivesEachColumnItsMeaning) {
+  const StoredRun run = ReadRunFiles(kRun);
+  EXPECT_EQ(run.summary.signature, "slip- slip+ stick slip+");
+  EXPECT_EQ(run.summary.parameter, "omega");
+  EXPECT_EQ(run.summary.termination, "terminal-event");
+  ASSERT_EQ(run.branch.size(), 106u);
+  const StoredPoint& p = run.branch.front();
+  EXPECT_EQ(p.pt, 1);
+  EXPECT_EQ(p.label, "EP1");
+  EXPECT_EQ(p.orbit.parameters.omega, 0.5711986642890533);
+  EXPECT_EQ(p.orbit.parameters.u_r, 0.4962);
+  EXPECT_EQ(p.orbit.phi, 0.31766724083352016);
+  EXPECT_EQ(p.orbit.v10, -0.2579458242291443);
+  ASSERT_EQ(p.orbit.durations.size(), 4u);
+  EXPECT_EQ(p.orbit.durations[3], 2.9998603518755917);
+  // Four listed segments give 4 margins for each slip, 4 for the stick and sliding-friction.
+  ASSERT_EQ(p.margins.size(), 17u);
+  EXPECT_EQ(p.margins.front().first, "duration:1");
+  EXPECT_EQ(p.margins.front().second, p.orbit.durations[0]);  // a duration margin is the duration
+  EXPECT_EQ(p.margins[1].first, "velocity:1");
+  EXPECT_EQ(p.margins[1].second, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(p.margins.back().first, "sliding-friction");
+  EXPECT_EQ(p.margins.back().second, p.orbit.parameters.u_s);
+  ASSERT_EQ(p.multipliers.size(), 4u);
+  EXPECT_EQ(p.multipliers[0], std::complex<double>(0.7027261158856764, 0.794660591714117));
+  EXPECT_EQ(p.multipliers[1], std::conj(p.multipliers[0]));
+  EXPECT_FALSE(p.stable);  // |mu1| = 1.06
+  EXPECT_EQ(p.flip_test, 5.191639239866712);
+  EXPECT_TRUE(p.admissible);
+  EXPECT_EQ(p.newton_iterations, 2);
+  EXPECT_EQ(p.step_size, 0.0);
+  EXPECT_EQ(run.branch[1].step_size, 0.005);
+
+  ASSERT_EQ(run.special_points.size(), 7u);
+  const StoredSpecialPoint& fold = run.special_points[3];
+  EXPECT_EQ(fold.type, "LP");
+  EXPECT_EQ(fold.point.label, "LP4");
+  EXPECT_EQ(fold.point.pt, 48);
+  EXPECT_EQ(fold.test_function, "tangent:lambda");
+  EXPECT_TRUE(fold.located);
+  EXPECT_EQ(fold.point.orbit.parameters.omega, 0.5868188660921189);
+}
+
+TEST(ResultFiles, LabelledPointGivesTheOrbitVariablesOfTheSpecialPoint) {
+  const LabelledPoint point = ReadLabelledPoint(kResults, "paper-5.1-omega-up", "LP4");
+  EXPECT_EQ(point.signature, "slip- slip+ stick slip+");
+  ASSERT_EQ(point.variables.size(), 13u);  // 5 parameters, phi, x10, x20, v10, 4 durations
+  EXPECT_EQ(point.variables[2], std::make_pair(std::string("omega"), 0.5868188660921189));
+  EXPECT_EQ(point.variables.back().first, "d4");
+}
+
+// ---- Damaged files: each is one InvalidInput whose message names where.
+
+// The message of the InvalidInput that parsing `files` throws ("" if none is thrown).
+std::string ParseError(const RunFiles& files) {
+  try {
+    ParseRunFiles(files, "stored");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// `text` with line `line` (1-based) replaced by what `edit` makes of it.
+template <typename Edit>
+std::string EditLine(const std::string& text, int line, Edit edit) {
+  std::istringstream in(text);
+  std::string out, l;
+  for (int k = 1; std::getline(in, l); ++k) out += (k == line ? edit(l) : l) + "\n";
+  return out;
+}
+
+std::vector<std::string> Fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+  return fields;
+}
+
+std::string Join(const std::vector<std::string>& fields) {
+  std::string line;
+  for (const std::string& f : fields) line += (line.empty() ? "" : ",") + f;
+  return line;
+}
+
+TEST(ResultFiles, RowShorterThanItsHeaderNamesFileAndLine) {
+  RunFiles files = StoredTexts(kRun);
+  files.branch_csv = EditLine(files.branch_csv, 3, [](std::string l) { return l.substr(0, l.rfind(',')); });
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 46 fields, the header 47: valid one field per column");
+}
+
+TEST(ResultFiles, MissingColumnNamesFileAndColumn) {
+  RunFiles files = StoredTexts(kRun);
+  const int omega = 4;  // pt, label, chi, eta, omega
+  for (int line = 1; line <= 8; ++line) {
+    files.special_points_csv = EditLine(files.special_points_csv, line, [&](const std::string& l) {
+      std::vector<std::string> fields = Fields(l);
+      fields.erase(fields.begin() + omega);
+      return Join(fields);
+    });
+  }
+  EXPECT_EQ(ParseError(files), "stored/special-points.csv:1: column 'omega' is missing");
+}
+
+TEST(ResultFiles, UnknownColumnIsAnError) {
+  RunFiles files = StoredTexts(kRun);
+  files.branch_csv = EditLine(files.branch_csv, 1, [](const std::string& l) {
+    return std::string(l).replace(l.find("margin:G:3"), 10, "margin_G:3");
+  });
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:1: column 'margin_G:3' is unknown or repeated");
+}
+
+TEST(ResultFiles, FieldThatIsNotANumberNamesLineAndColumn) {
+  RunFiles files = StoredTexts(kRun);
+  files.branch_csv = EditLine(files.branch_csv, 4, [](const std::string& l) {
+    std::vector<std::string> fields = Fields(l);
+    fields[9] = "4.2x";  // x20
+    return Join(fields);
+  });
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:4: column 'x20' = '4.2x' is not a number");
+}
+
+TEST(ResultFiles, FlagOtherThanZeroOrOneIsAnError) {
+  RunFiles files = StoredTexts(kRun);
+  files.special_points_csv = EditLine(files.special_points_csv, 2, [](const std::string& l) {
+    return l.substr(0, l.rfind(',')) + ",yes";
+  });
+  EXPECT_EQ(ParseError(files), "stored/special-points.csv:2: column 'located' = 'yes' is invalid: valid 0 or 1");
+}
+
+TEST(ResultFiles, MissingSummaryKeyNamesTheKey) {
+  RunFiles files = StoredTexts(kRun);
+  const auto at = files.summary_json.find("  \"signature\"");
+  files.summary_json.erase(at, files.summary_json.find('\n', at) + 1 - at);
+  EXPECT_EQ(ParseError(files), "stored/summary.json: key 'signature' is missing");
+}
+
+TEST(ResultFiles, InvalidJsonNamesLineAndColumn) {
+  RunFiles files = StoredTexts(kRun);
+  // Line 3 is `  "stickslip_version": "0.1.0",` (31 characters): a second comma is column 32.
+  files.summary_json = EditLine(files.summary_json, 3, [](const std::string& l) { return l + ","; });
+  const std::string error = ParseError(files);
+  EXPECT_TRUE(error.starts_with("stored/summary.json: invalid JSON: parse error at line 3, column 32:")) << error;
+}
+
+TEST(ResultFiles, WrongTypeOfSummaryValueIsAnError) {
+  RunFiles files = StoredTexts(kRun);
+  files.summary_json = EditLine(files.summary_json, 8, [](const std::string&) { return R"(  "points": "106",)"; });
+  EXPECT_EQ(ParseError(files), R"(stored/summary.json: key 'points' = "106" is invalid: valid a count (an integer >= 0))");
+}
+
+TEST(ResultFiles, SummaryCountsMustMatchTheTables) {
+  RunFiles files = StoredTexts(kRun);
+  files.branch_csv = EditLine(files.branch_csv, 107, [](const std::string&) { return std::string(); });
+  EXPECT_EQ(ParseError(files), "stored/summary.json: key 'points' = 106 differs from the 105 rows of branch.csv");
+}
+
+TEST(ResultFiles, UnknownLabelListsTheValidOnes) {
+  try {
+    ReadLabelledPoint(kResults, "paper-5.1-omega-up", "XX9");
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("valid labels EP1, TR2, UZ3, LP4, UZ5, GR6"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ResultFiles, MissingRunIsAnErrorNamingTheFile) {
+  try {
+    ReadRunFiles(kResults / "no-such-run");
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot read '" + (kResults / "no-such-run" / "branch.csv").string() + "'");
+  }
+}
+
+}  // namespace
+}  // namespace stickslip
