@@ -69,12 +69,13 @@ SimulatorCheck Check(const SimulationResult& r, const Orbit& orbit, std::vector<
 }  // namespace
 
 bool Verification::Passed() const {
-  return exact.sequence_matches && odeint.sequence_matches &&
+  return not_simulated.empty() && exact.sequence_matches && odeint.sequence_matches &&
          exact.periodicity_mismatch <= kExactTolerance &&
          odeint.periodicity_mismatch <= kOdeintTolerance;
 }
 
 std::string Verification::Report() const {
+  if (!not_simulated.empty()) return fmt::format("expected [{}]\nnot simulated: {}\n", ModeList(expected), not_simulated);
   auto line = [&](const char* name, const SimulatorCheck& c, double tolerance) {
     return fmt::format("{:<7} events [{}] {}; periodicity mismatch {:.2e} (<= {:.0e}: {}); event "
                        "times within {:.2e}\n",
@@ -94,12 +95,22 @@ Verification VerifyOrbit(const Orbit& orbit) {
   std::vector<double> event_times;
   WalkSegments(orbit, Extent::kFullPeriod, PhaseRule::kAccumulated,
                [&](const SegmentVisit<double>& s) { event_times.push_back(s.t0 + s.duration); });
+  if (const auto invalid = Validate(orbit.parameters)) {
+    v.not_simulated = fmt::format("the orbit is not a motion of the system: {}", invalid->what());
+    return v;
+  }
   SimulationOptions options;
   options.duration = orbit.Period();
-  v.exact = Check(SimulateExact(orbit.parameters, orbit.InitialState(), orbit.phi, options), orbit,
-                  v.expected, event_times, /*sees_tangencies=*/true);
-  v.odeint = Check(SimulateOdeint(orbit.parameters, orbit.InitialState(), orbit.phi, options),
-                   orbit, v.expected, event_times, /*sees_tangencies=*/false);
+  const SimulationResult exact = SimulateExact(orbit.parameters, orbit.InitialState(), orbit.phi, options);
+  const SimulationResult odeint = SimulateOdeint(orbit.parameters, orbit.InitialState(), orbit.phi, options);
+  for (const auto& [name, r] : {std::pair{"exact", &exact}, std::pair{"odeint", &odeint}}) {
+    if (!r->completed || r->segments.empty()) {
+      v.not_simulated = fmt::format("the {} simulation stopped early: {}", name, r->message);
+      return v;
+    }
+  }
+  v.exact = Check(exact, orbit, v.expected, event_times, /*sees_tangencies=*/true);
+  v.odeint = Check(odeint, orbit, v.expected, event_times, /*sees_tangencies=*/false);
   return v;
 }
 

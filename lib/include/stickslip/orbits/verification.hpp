@@ -22,13 +22,17 @@ struct SimulatorCheck {
 
 struct Verification {
   std::vector<Mode> expected;  // the signature over a whole period
+  // Why the orbit could not be simulated (parameters outside the physical range, say u_s <= 0
+  // where Newton converged past the family's end, or a simulation that stopped early); empty
+  // when both simulators ran over the whole period.
+  std::string not_simulated;
   SimulatorCheck exact;
   SimulatorCheck odeint;
   // Thresholds: the exact flows carry rounding only; Odeint integrates at 1e-12 tolerances.
   static constexpr double kExactTolerance = 1e-9;
   static constexpr double kOdeintTolerance = 1e-6;
   bool Passed() const;
-  std::string Report() const;  // one line per simulator
+  std::string Report() const;  // one line per simulator, or why there was no simulation
 };
 
 Verification VerifyOrbit(const Orbit& orbit);
