@@ -9,7 +9,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "stickslip/io/atomic_file.hpp"
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip::cli {

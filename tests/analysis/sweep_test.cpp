@@ -1,7 +1,7 @@
 // The brute-force sweep: its section states against the independent Odeint simulator, the
 // chaining of points (the down pass from where the up pass ended), chains independent of each
 // other, and an output that does not depend on the number of threads.
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 
 #include <cstdint>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 
 #include <cmath>
 #include <numbers>
