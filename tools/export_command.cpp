@@ -22,15 +22,14 @@ struct ExportArgs {
 
 int RunExport(const ExportArgs& args) {
   namespace fs = std::filesystem;
-  if (!args.auto07p) throw InputError("format is missing: valid --auto");
+  if (!args.auto07p) throw InvalidInput::WithMessage("format", "format is missing: valid --auto");
   const fs::path dir(args.directory);
   if (!fs::is_regular_file(dir / "branch.csv") || !fs::is_regular_file(dir / "summary.json")) {
-    throw InputError(fmt::format("results directory = '{}' is invalid: valid a directory results/<run>/ with branch.csv "
-                                 "and summary.json",
-                                 args.directory));
+    throw InvalidInput("results directory", "'" + args.directory + "'",
+                       "a directory results/<run>/ with branch.csv and summary.json");
   }
   if (args.samples < 2 || args.samples > 100000) {
-    throw InputError(fmt::format("samples = {} is invalid: valid range 2 <= samples <= 100000", args.samples));
+    throw InvalidInput("samples", args.samples, "2 <= samples <= 100000");
   }
   const AutoFiles files = ExportAuto(dir, args.samples);
   const std::string run = fs::absolute(dir).lexically_normal().filename().string().empty()

@@ -38,8 +38,7 @@ Sampled SampledMinimum(F&& f, double a, double b, int count) {
 Orbit SolvedPreset(const char* name) {
   const PaperPreset& preset = *FindPaperPreset(name);
   const Orbit guess = preset.Guess();
-  const FreeVariables free = ResolveUnknowns(guess.signature, preset.unknowns);
-  return SolveOrbit(guess, free.indices, preset.unknowns.tie_static_friction).orbit;
+  return SolveOrbit(guess, FreeIndices(guess.signature, preset.unknowns), preset.unknowns.tie_static_friction).orbit;
 }
 
 // The stick constraints over the stick of an orbit, sampled from the flow.

@@ -19,7 +19,7 @@ Orbit Solved(const char* name, bool paper_choice) {
   const PaperPreset& preset = *FindPaperPreset(name);
   const UnknownChoice& choice = paper_choice ? preset.paper_choice : preset.unknowns;
   const Orbit guess = preset.Guess();
-  return SolveOrbit(guess, ResolveUnknowns(guess.signature, choice).indices, choice.tie_static_friction).orbit;
+  return SolveOrbit(guess, FreeIndices(guess.signature, choice), choice.tie_static_friction).orbit;
 }
 
 std::vector<std::complex<double>> Sorted(const Eigen::Matrix4d& m) {
