@@ -101,7 +101,7 @@ int RunSimulate(const SimulateArgs& args) {
     fmt::print("{} event(s), {} segment(s){}\n", result.events.size(), result.segments.size(),
                args.csv_path.empty() ? "" : fmt::format("; time series written to {}", args.csv_path));
   }
-  if (!result.completed) {
+  if (!result.Completed()) {
     fmt::print(stderr, "error: simulation incomplete: {}\n", result.message);
     return kExitFailure;
   }
