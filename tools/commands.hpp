@@ -1,6 +1,6 @@
 // The subcommands of the stickslip program. Each Add* function declares a subcommand's options
 // on `app` and returns it with the action to run when it was given; the action returns the
-// process exit code (cli_common.hpp) and throws InputError for bad input.
+// process exit code (cli_common.hpp) and throws InvalidInput for bad input.
 #pragma once
 
 #include <functional>
@@ -14,10 +14,6 @@ struct Command {
   CLI::App* subcommand = nullptr;
   std::function<int()> run;
 };
-
-// --point RUN:LABEL and --results DIR: start from a labelled point of a stored continuation run
-// (ResolveModelInput), for the commands that simulate.
-void AddPointOptions(CLI::App& cmd, std::string* point, std::string* results);
 
 Command AddSimulateCommand(CLI::App& app);
 Command AddSolveCommand(CLI::App& app);

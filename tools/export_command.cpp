@@ -22,10 +22,10 @@ struct ExportArgs {
 
 int RunExport(const ExportArgs& args) {
   namespace fs = std::filesystem;
-  if (!args.auto07p) throw InputError("format is missing: valid --auto");
+  if (!args.auto07p) throw InvalidInput::WithMessage("format", "format is missing: valid --auto");
   const fs::path dir(args.directory);
   if (args.samples < 2 || args.samples > 100000) {
-    throw InputError(fmt::format("samples = {} is invalid: valid range 2 <= samples <= 100000", args.samples));
+    throw InvalidInput("samples", args.samples, "2 <= samples <= 100000");
   }
   const AutoFiles files = ExportAuto(dir, args.samples);
   const std::string run = fs::absolute(dir).lexically_normal().filename().string().empty()

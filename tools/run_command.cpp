@@ -12,6 +12,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "start_options.hpp"
 #include "stickslip/io/check.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
@@ -29,13 +30,7 @@ struct Executed {
 // Runs one run file in memory. A start that does not converge is a failed run: exit code 3,
 // nothing written.
 std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path& results) {
-  OrbitContinuationSetup setup = [&] {
-    try {
-      return MakeSetup(run, results);
-    } catch (const RunFileError& e) {
-      throw InputError(e.what());
-    }
-  }();
+  OrbitContinuationSetup setup = MakeSetup(run, results);
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   const auto started = std::chrono::steady_clock::now();
   OrbitBranch branch = ContinueOrbit(setup, [&](const Branch& b) {
@@ -65,14 +60,6 @@ std::string Report(const RunFile& run, const Executed& e) {
                      ToString(b.branch.end), b.branch.end_message, special.empty() ? " no special points" : special);
 }
 
-RunFile Read(const std::string& path) {
-  try {
-    return ReadRunFile(path);
-  } catch (const RunFileError& e) {
-    throw InputError(e.what());
-  }
-}
-
 struct RunArgs {
   std::vector<std::string> files;
   std::string results = "results";
@@ -81,7 +68,7 @@ struct RunArgs {
 int RunRuns(const RunArgs& args) {
   // Read every file first: a bad run file fails the command before anything is written.
   std::vector<RunFile> runs;
-  for (const std::string& f : args.files) runs.push_back(Read(f));
+  for (const std::string& f : args.files) runs.push_back(ReadRunFile(f));
   int code = kExitOk;
   for (const RunFile& run : runs) {
     std::optional<Executed> e = Execute(run, args.results);
@@ -103,7 +90,7 @@ struct CheckArgs {
 int RunCheck(const CheckArgs& args) {
   int code = kExitOk;
   for (const std::string& path : args.files) {
-    const RunFile run = Read(path);
+    const RunFile run = ReadRunFile(path);
     std::optional<Executed> e = Execute(run, args.results);
     if (!e) return kExitNoConvergence;
     const std::vector<Difference> differences =
@@ -123,55 +110,37 @@ int RunCheck(const CheckArgs& args) {
 }
 
 struct ContinueArgs {
-  std::string preset;
-  std::string signature;
-  std::vector<std::string> set;
-  std::vector<std::string> guess;
+  StartFlags start;
   RunFile run;
   std::string range;
   std::string direction = "up";
-  std::string results = "results";
 };
-
-NamedValues Assignments(const std::vector<std::string>& texts, const char* option) {
-  NamedValues values;
-  for (const std::string& t : texts) {
-    const auto equals = t.find('=');
-    if (equals == std::string::npos) throw InputError(fmt::format("{} '{}' is not NAME=VALUE", option, t));
-    values.emplace_back(t.substr(0, equals), ParseNumber(t.substr(0, equals), t.substr(equals + 1), "any finite number"));
-  }
-  return values;
-}
 
 int RunContinue(ContinueArgs args) {
   RunFile& run = args.run;
   run.path = "(command line)";
-  run.preset = args.preset;
-  run.signature = args.signature;
-  run.set = Assignments(args.set, "--set");
-  run.guess = Assignments(args.guess, "--guess");
+  SetRunFileStart(ToStartInput(args.start), &run);
   if (args.direction != "up" && args.direction != "down") {
-    throw InputError(fmt::format("direction = '{}' is invalid: valid up, down", args.direction));
+    throw InvalidInput("direction", "'" + args.direction + "'", "up, down");
   }
   run.direction = args.direction == "up" ? 1 : -1;
   const auto comma = args.range.find(',');
-  if (comma == std::string::npos) throw InputError(fmt::format("range = '{}' is invalid: valid MIN,MAX", args.range));
+  if (comma == std::string::npos) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX");
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
   run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
-  if (!(run.range_min < run.range_max)) throw InputError(fmt::format("range = '{}' is invalid: valid MIN,MAX with MIN < MAX", args.range));
+  if (!(run.range_min < run.range_max)) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX with MIN < MAX");
   if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
-    throw InputError(fmt::format("ds = {} is invalid: valid 0 < ds-min ({}) <= ds <= ds-max ({})", run.ds, run.ds_min, run.ds_max));
+    throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
   }
-  if (run.preset.empty() == run.signature.empty()) throw InputError("preset/signature: give exactly one of --preset or --signature");
   if (run.max_points < 1 || run.max_points > 1000000) {
-    throw InputError(fmt::format("max-points = {} is invalid: valid range 1 <= max-points <= 1000000", run.max_points));
+    throw InvalidInput("max-points", run.max_points, "1 <= max-points <= 1000000");
   }
   if (!IsRunName(run.output)) {
-    throw InputError(fmt::format("output = '{}' is invalid: valid {}", run.output, kRunNameRule));
+    throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
   }
-  std::optional<Executed> e = Execute(run, args.results);
+  std::optional<Executed> e = Execute(run, args.start.results);
   if (!e) return kExitNoConvergence;
-  WriteRunFiles(args.results, e->stored);
+  WriteRunFiles(args.start.results, e->stored);
   fmt::print("{}\n", Report(run, *e));
   return kExitOk;
 }
@@ -202,13 +171,7 @@ Command AddCheckCommand(CLI::App& app) {
 Command AddContinueCommand(CLI::App& app) {
   auto args = std::make_shared<ContinueArgs>();
   CLI::App* cmd = app.add_subcommand("continue", "A one-off continuation run from flags (the keys of a run file).");
-  cmd->add_option("--preset", args->preset, "paper-4.1, paper-4.2, paper-5.1, paper-5.2, paper-6");
-  cmd->add_option("--signature", args->signature, "orbit type, as for solve");
-  cmd->add_option("--set", args->set, "model data and start: chi, eta, omega, u_s, u_r, x10, x20, v10, phi")->type_name("KEY=VALUE");
-  cmd->add_option("--guess", args->guess, "any orbit variable (d1..dn too)")->type_name("NAME=VALUE");
-  cmd->add_option("--free", args->run.free, "released variable")->type_name("NAME");
-  cmd->add_option("--fix", args->run.fix, "held variable")->type_name("NAME");
-  cmd->add_flag("--tie-u_r", args->run.tie_u_r, "hold u_r = u_s");
+  AddStartOptions(*cmd, &args->start, StartOptions::kOrbit);
   cmd->add_option("--parameter", args->run.parameter, "continued variable (omega, u_r, u_s, chi, eta, ...)")->required();
   cmd->add_option("--direction", args->direction, "up or down")->capture_default_str();
   cmd->add_option("--range", args->range, "MIN,MAX of the parameter")->required();
@@ -219,7 +182,8 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_flag("--continue-past-type-changes", args->run.continue_past_type_changes,
                 "go on past orbit-type changes, flagging the points beyond inadmissible");
   cmd->add_option("--output", args->run.output, "results/<output>/")->required();
-  cmd->add_option("--results", args->results, "results directory")->capture_default_str();
+  cmd->add_option("--results", args->start.results, "results directory: where --point is read and <output>/ written")
+      ->capture_default_str();
   return {cmd, [args] { return RunContinue(*args); }};
 }
 

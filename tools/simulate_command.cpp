@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -18,10 +19,7 @@ namespace stickslip::cli {
 namespace {
 
 struct SimulateArgs {
-  std::string preset;
-  std::string point;  // RUN:LABEL
-  std::string results = "results";
-  std::vector<std::string> assignments;
+  StartFlags start;
   std::string periods = "2";
   std::string method = "exact";
   std::string csv_path;
@@ -70,17 +68,15 @@ std::string SamplesCsv(const SimulationResult& result) {
 }
 
 int RunSimulate(const SimulateArgs& args) {
-  const ModelInput input = ResolveModelInput(args.preset, args.point, args.results, args.assignments);
+  const ModelStart input = BuildModelStart(ToStartInput(args.start));
   const double periods = ParseNumber("periods", args.periods, "0 < periods <= 1e6");
   if (!(periods > 0.0 && periods <= 1e6)) {
-    throw InputError(fmt::format("periods = {} is invalid: valid range 0 < periods <= 1e6", periods));
+    throw InvalidInput("periods", periods, "0 < periods <= 1e6");
   }
   const double samples_per_period =
       ParseNumber("samples-per-period", args.samples_per_period, "1 <= samples-per-period <= 1e5");
   if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
-    throw InputError(fmt::format(
-        "samples-per-period = {} is invalid: valid range 1 <= samples-per-period <= 1e5",
-        samples_per_period));
+    throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
   }
   const double period = 2.0 * std::numbers::pi / input.parameters.omega;
   SimulationOptions options;
@@ -96,7 +92,7 @@ int RunSimulate(const SimulateArgs& args) {
     fmt::print("{}", EventsJson(result));
   } else {
     const State& x = input.initial_state;
-    fmt::print("stickslip simulate{}: {}\n", input.preset.empty() ? "" : " " + input.preset,
+    fmt::print("stickslip simulate{}: {}\n", args.start.preset.empty() ? "" : " " + args.start.preset,
                DescribeParameters(input.parameters));
     fmt::print("start: x10={} x20={} v10={} v20={} phi={}; {} period(s) of 2 pi/omega = {}; "
                "method {}\n",
@@ -105,7 +101,7 @@ int RunSimulate(const SimulateArgs& args) {
     fmt::print("{} event(s), {} segment(s){}\n", result.events.size(), result.segments.size(),
                args.csv_path.empty() ? "" : fmt::format("; time series written to {}", args.csv_path));
   }
-  if (!result.completed) {
+  if (!result.Completed()) {
     fmt::print(stderr, "error: simulation incomplete: {}\n", result.message);
     return kExitFailure;
   }
@@ -120,11 +116,8 @@ Command AddSimulateCommand(CLI::App& app) {
       "simulate",
       "Simulate the oscillator from an initial state under Coulomb's law and print every stop "
       "and stick exit (time, kind, mode after, state). Time is the paper's scaled time t.");
-  cmd->add_option("--preset", args->preset,
-                  "start from a paper example's printed data and initial state: paper-4.1, "
-                  "paper-4.2, paper-5.1, paper-5.2, paper-6");
-  AddPointOptions(*cmd, &args->point, &args->results);
-  cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
+  AddStartOptions(*cmd, &args->start, StartOptions::kMotion);
+  cmd->add_option("--results", args->start.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_option("--periods", args->periods,
                   "simulated time in forcing periods 2 pi/omega (0 < periods <= 1e6)")
       ->capture_default_str();

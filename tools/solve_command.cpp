@@ -10,6 +10,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "start_options.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
@@ -23,13 +24,7 @@ namespace {
 namespace ov = orbit_variables;
 
 struct SolveArgs {
-  std::string preset;
-  std::string signature;
-  std::vector<std::string> assignments;
-  std::vector<std::string> guesses;
-  std::vector<std::string> release;
-  std::vector<std::string> fixes;
-  bool tie = false;
+  StartFlags start;
   bool paper_choice = false;
   std::string shooting = "auto";
   std::string linear_solver = "klu";
@@ -100,71 +95,20 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
 }
 
 int RunSolve(const SolveArgs& args) {
-  if (args.preset.empty() == args.signature.empty()) {
-    throw InputError("signature/preset: give exactly one of --preset NAME or --signature TEXT");
+  if (args.compare_paper && args.start.preset.empty()) {
+    throw InvalidInput::WithMessage("compare-paper", "compare-paper needs --preset");
   }
-  const PaperPreset* preset = args.preset.empty() ? nullptr : FindPaperPreset(args.preset);
-  if (!args.preset.empty() && preset == nullptr) {
-    throw InputError(fmt::format("preset = '{}' is unknown: valid presets paper-4.1, paper-4.2, "
-                                 "paper-5.1, paper-5.2, paper-6", args.preset));
-  }
-  Orbit guess = [&] {
-    if (preset != nullptr) return preset->Guess();
-    std::string error;
-    const std::optional<Signature> signature = Signature::Parse(args.signature, &error);
-    if (!signature) throw InputError(error);
-    return Orbit{*signature, {}, 0.0, 0.0, 0.0, 0.0, std::vector<double>(signature->size(), 0.0)};
-  }();
-  UnknownChoice choice;
-  if (preset != nullptr) choice = args.paper_choice ? preset->paper_choice : preset->unknowns;
-  // --set: the model data and start; --guess: any orbit variable (d1..dn too).
-  const ModelInput input = ResolveModelInput(args.preset, args.assignments);
-  guess.parameters = input.parameters;
-  guess.x10 = input.initial_state(0);
-  guess.x20 = input.initial_state(1);
-  guess.v10 = input.initial_state(2);
-  guess.phi = input.phi;
-  if (input.initial_state(3) != 0.0) {
-    throw InputError(fmt::format("v20 = {} is invalid: valid range v20 = 0 (an orbit starts at a stop)",
-                                 input.initial_state(3)));
-  }
-  const int n = guess.signature.size();
-  Eigen::VectorXd variables = ov::Pack(guess);
-  auto assign = [&](const std::string& text, const char* option) {
-    const auto equals = text.find('=');
-    const std::string name = text.substr(0, equals);
-    const std::optional<int> index = ov::IndexOf(n, name);
-    if (equals == std::string::npos || !index) {
-      std::string names;
-      for (int i = 0; i < ov::Count(n); ++i) names += (i ? ", " : "") + ov::Name(n, i);
-      throw InputError(fmt::format("{} '{}' is not NAME=VALUE with a variable: valid {}", option, text, names));
-    }
-    variables(*index) = ParseNumber(name, text.substr(equals + 1), "any finite number");
-    return name;
-  };
-  for (const std::string& g : args.guesses) assign(g, "--guess");
-  for (const std::string& f : args.fixes) {
-    choice.fix.push_back(f.find('=') == std::string::npos ? f : assign(f, "--fix"));
-  }
-  for (const std::string& r : args.release) choice.release.push_back(r);
-  if (args.tie) choice.tie_static_friction = true;
-  guess = ov::Unpack(guess.signature, variables);
-  if (choice.tie_static_friction) guess.parameters.u_r = guess.parameters.u_s;
-  for (int i = 0; i < n; ++i) {
-    if (guess.durations[i] <= 0.0) {
-      throw InputError(fmt::format("d{} = {} is invalid: valid range d{} > 0 (give --guess d{}=VALUE)",
-                                   i + 1, guess.durations[i], i + 1, i + 1));
-    }
-  }
-  if (const auto invalid = Validate(guess.parameters)) throw InputError(invalid->what());
-  const FreeVariables free = ResolveUnknowns(guess.signature, choice);
-  if (!free.error.empty()) throw InputError(free.error);
+  StartInput input = ToStartInput(args.start);
+  input.paper_choice = args.paper_choice;
+  const StartProblem start = BuildStartProblem(input);
+  const PaperPreset* preset = FindPaperPreset(args.start.preset);
+  const int n = start.orbit.signature.size();
 
   OrbitSolverOptions options;
   if (args.shooting == "single") options.shooting = ShootingChoice::kSingle;
   if (args.shooting == "multiple") options.shooting = ShootingChoice::kMultiple;
   options.sparse_solver = *LinearSolverFromString(args.linear_solver);
-  const OrbitSolution solution = SolveOrbit(guess, free.indices, choice.tie_static_friction, options);
+  const OrbitSolution solution = SolveOrbit(start.orbit, start.free, start.unknowns.tie_static_friction, options);
   const Orbit& orbit = solution.orbit;
   if (!solution.summary.Converged()) {
     fmt::print(stderr, "error: Newton did not converge: {}\n", solution.summary.BriefReport());
@@ -177,14 +121,13 @@ int RunSolve(const SolveArgs& args) {
     return kExitOk;
   }
   if (args.compare_paper) {
-    if (preset == nullptr) throw InputError("compare-paper: needs --preset");
     fmt::print("{}", PaperComparison(*preset, orbit, args.paper_choice ? std::string(preset->paper_choice_note) : "paper's data held"));
     return kExitOk;
   }
   fmt::print("signature  {}\nparameters {}\n", orbit.signature.ToString(), DescribeParameters(orbit.parameters));
   std::string unknowns;
-  for (int index : free.indices) unknowns += (unknowns.empty() ? "" : " ") + ov::Name(n, index);
-  fmt::print("unknowns   {}{}\n", unknowns, choice.tie_static_friction ? " (u_r = u_s)" : "");
+  for (int index : start.free) unknowns += (unknowns.empty() ? "" : " ") + ov::Name(n, index);
+  fmt::print("unknowns   {}{}\n", unknowns, start.unknowns.tie_static_friction ? " (u_r = u_s)" : "");
   fmt::print("newton     {} ({} shooting, {})\n", solution.summary.BriefReport(), ToString(solution.shooting),
              solution.shooting == Shooting::kMultiple ? args.linear_solver : "dense");
   fmt::print("solution   x10={} x20={} v10={} phi={}\n", orbit.x10, orbit.x20, orbit.v10, orbit.phi);
@@ -218,24 +161,8 @@ Command AddSolveCommand(CLI::App& app) {
       "Solve the periodicity equations of an orbit type for one periodic orbit; print the "
       "unknowns, the Newton summary, the admissibility margins and a verification by the exact "
       "and the Odeint simulators. Exit code 3 if Newton does not converge.");
-  cmd->add_option("--preset", args->preset,
-                  "a paper orbit: paper-4.1, paper-4.2, paper-5.1, paper-5.2, paper-6 (data, "
-                  "signature and printed values as guess)");
-  cmd->add_option("--signature", args->signature,
-                  "orbit type, e.g. \"slip- slip+ stick slip+\" or \"slip- stick slip- / "
-                  "antisymmetric\" (options after '/': antisymmetric, period K)");
-  cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
-  cmd->add_option("--guess", args->guesses,
-                  "starting value of any orbit variable: x10, x20, v10, phi, d1..dn (durations, "
-                  "scaled time, > 0), chi, eta, omega, u_s, u_r")
-      ->type_name("NAME=VALUE");
-  cmd->add_option("--free", args->release,
-                  "release a variable (usually a parameter: chi, eta, omega, u_s, u_r) as an unknown")
-      ->type_name("NAME");
-  cmd->add_option("--fix", args->fixes,
-                  "hold a variable (phi, d1..dn, x10, ...) at its guess, or at VALUE")
-      ->type_name("NAME[=VALUE]");
-  cmd->add_flag("--tie-u_r", args->tie, "hold u_r = u_s (abnormal stops need it, eq. 25)");
+  AddStartOptions(*cmd, &args->start, StartOptions::kOrbit);
+  cmd->add_option("--results", args->start.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_flag("--paper-choice", args->paper_choice,
                 "with --preset: the paper's own choice where a round printed value looks held "
                 "fixed (see README, errata)");

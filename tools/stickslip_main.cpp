@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "start_options.hpp"
 
 int main(int argc, char** argv) {
   using namespace stickslip::cli;
@@ -38,11 +39,8 @@ int main(int argc, char** argv) {
     for (const Command& command : commands) {
       if (command.subcommand->parsed()) return command.run();
     }
-  } catch (const InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return kExitBadInput;
   } catch (const stickslip::InvalidInput& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "error: {}\n", OnCommandLine(e).what());
     return kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());

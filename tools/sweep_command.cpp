@@ -8,8 +8,9 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip::cli {
@@ -17,10 +18,7 @@ namespace stickslip::cli {
 namespace {
 
 struct SweepArgs {
-  std::string preset;
-  std::string point;  // RUN:LABEL
-  std::string results = "results";
-  std::vector<std::string> assignments;
+  StartFlags origin;
   std::string parameter = "omega";
   std::string from, to;
   std::string steps = "40";
@@ -37,22 +35,21 @@ struct SweepArgs {
 int Count(const char* field, const std::string& text, int low, int high) {
   const double value = ParseNumber(field, text, fmt::format("{} <= {} <= {}", low, field, high));
   if (!(value >= low && value <= high) || value != static_cast<int>(value)) {
-    throw InputError(fmt::format("{} = {} is invalid: valid range whole numbers {} <= {} <= {}", field, text, low,
-                                 field, high));
+    throw InvalidInput(field, text, fmt::format("whole numbers {} <= {} <= {}", low, field, high));
   }
   return static_cast<int>(value);
 }
 
 int RunSweep(const SweepArgs& args) {
-  const ModelInput input = ResolveModelInput(args.preset, args.point, args.results, args.assignments);
+  const ModelStart input = BuildModelStart(ToStartInput(args.origin));
   const std::optional<ParameterId> parameter = ParameterFromString(args.parameter);
   if (!parameter) {
-    throw InputError(fmt::format("parameter = '{}' is unknown: valid chi, eta, omega, u_s, u_r", args.parameter));
+    throw InvalidInput("parameter", "'" + args.parameter + "'", "chi, eta, omega, u_s, u_r");
   }
   SweepOptions options;
   options.parameter = *parameter;
-  options.from = ParseNumber("from", args.from, ValidRange(*parameter));
-  options.to = ParseNumber("to", args.to, ValidRange(*parameter));
+  options.from = ParseNumber("from", args.from, SetKeyRange(args.parameter));
+  options.to = ParseNumber("to", args.to, SetKeyRange(args.parameter));
   options.steps = Count("steps", args.steps, 1, 100000);
   options.transient_periods = Count("transients", args.transients, 0, 1000000);
   options.recorded_periods = Count("periods", args.periods, 1, 100000);
@@ -61,19 +58,19 @@ int RunSweep(const SweepArgs& args) {
   } else if (args.start == "fixed") {
     options.start = SweepStart::kFixed;
   } else {
-    throw InputError(fmt::format("start = '{}' is unknown: valid chained, fixed", args.start));
+    throw InvalidInput("start", "'" + args.start + "'", "chained, fixed");
   }
   const int chains = Count("chains", args.chains, 1, 10000);
   const double scatter = ParseNumber("scatter", args.scatter, "0 <= scatter <= 1e6");
   if (!(scatter >= 0.0 && scatter <= 1e6)) {
-    throw InputError(fmt::format("scatter = {} is invalid: valid range 0 <= scatter <= 1e6", args.scatter));
+    throw InvalidInput("scatter", args.scatter, "0 <= scatter <= 1e6");
   }
   const int seed = Count("seed", args.seed, 0, 1000000000);
   options.threads = Count("threads", args.threads, 0, 1024);
   for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
     Parameters p = input.parameters;
     p[*parameter] = value;
-    if (const auto invalid = Validate(p)) throw InputError(fmt::format("{}: {}", field, invalid->what()));
+    if (const auto invalid = Validate(p)) throw InvalidInput::WithMessage(field, fmt::format("{}: {}", field, invalid->what()));
   }
   const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
   const std::vector<SweepPoint> points = Sweep(input.parameters, starts, input.phi, options);
@@ -100,9 +97,8 @@ Command AddSweepCommand(CLI::App& app) {
       "down from --to; with --start fixed every point starts from its chain's start, in one pass. "
       "--chains independent chains start from the preset's (or --set, or --point) state and from "
       "states scattered around it, and run in parallel; the output does not depend on --threads.");
-  cmd->add_option("--preset", args->preset, "paper example for the data and the first start");
-  AddPointOptions(*cmd, &args->point, &args->results);
-  cmd->add_option("--set", args->assignments, SetKeysHelp())->type_name("KEY=VALUE");
+  AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
+  cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
   cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->required();
   cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->required();

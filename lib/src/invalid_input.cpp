@@ -1,5 +1,7 @@
 #include "stickslip/invalid_input.hpp"
 
+#include <string_view>
+
 #include <fmt/format.h>
 
 namespace stickslip {
@@ -18,6 +20,18 @@ InvalidInput::InvalidInput(std::string field, double value, std::string valid_ra
 
 InvalidInput InvalidInput::WithMessage(std::string field, std::string message) {
   return InvalidInput(std::move(field), "", "", std::move(message));
+}
+
+std::string InvalidInput::Predicate() const {
+  const std::string_view message = what();
+  if (!field_.empty() && message.starts_with(field_ + " ")) return std::string(message.substr(field_.size() + 1));
+  return std::string(message);
+}
+
+InvalidInput InvalidInput::Renamed(std::string field) const {
+  const bool leading = Predicate().size() != std::string_view(what()).size();
+  std::string message = leading ? fmt::format("{} {}", field, Predicate()) : std::string(what());
+  return InvalidInput(std::move(field), value_, valid_range_, std::move(message));
 }
 
 }  // namespace stickslip

@@ -22,7 +22,7 @@
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip {

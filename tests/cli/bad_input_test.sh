@@ -53,12 +53,12 @@ expect_rejected omega "natural frequencies" --preset paper-4.1 --set omega=0.701
 expect_rejected periods "periods" "${p[@]}" --periods -1
 expect_rejected periods "periods" "${p[@]}" --periods two
 expect_rejected preset "paper-4.1" --preset paper-9
-expect_rejected "--set" "valid keys" "${p[@]}" --set mu=3
+expect_rejected "set = 'mu'" "valid range keys chi" "${p[@]}" --set mu=3
 expect_rejected chi "missing" --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3
 expect_rejected point "valid RUN:LABEL" --point paper-5.1-omega-up
 expect_rejected point "valid labels EP1" --point paper-5.1-omega-up:XX9 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "cannot read" --point no-such-run:EP1 --results "${STICKSLIP_SOURCE:?}/results"
-expect_rejected point "at most one" --point paper-5.1-omega-up:TR2 --preset paper-5.1
+expect_rejected point "at most one" --point paper-5.1-omega-up:TR2 --preset paper-5.1 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "without '/' or '..'" --point ./b:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "not '.'" --point .:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 

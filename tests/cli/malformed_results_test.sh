@@ -54,7 +54,7 @@ expect_rejected "results/$run/special-points.csv:1: column 'x10' is missing" run
 # A field that is not a number.
 damage special-points.csv 'f = lines[5].split(","); f[4] = "0.58.1"; lines[5] = ",".join(f)'
 expect_rejected "results/$run/special-points.csv:6: column 'omega' = '0.58.1' is not a number" export --auto "results/$run"
-expect_rejected "key 'start.restart' cannot be used: results/$run/special-points.csv:6: column 'omega'" run --results results "$restart_file"
+expect_rejected "key 'start.restart' = '$run:UZ5' cannot be used: results/$run/special-points.csv:6: column 'omega'" run --results results "$restart_file"
 
 # A key missing from summary.json.
 damage summary.json 'lines[:] = [l for l in lines if "\"parameter\"" not in l]'

@@ -56,7 +56,7 @@ expect_error 2 "preset = 'paper-7'" --preset paper-7
 expect_error 2 "token 2 'stik'" --signature "slip- stik" --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3
 expect_error 2 "not square" --preset paper-5.1 --free u_r
 expect_error 2 "free = 'mu'" --preset paper-5.1 --free mu --fix phi
-expect_error 2 "d1 = 0" --signature "slip- slip+" --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3 --set x10=1
+expect_error 2 "misses d1" --signature "slip- slip+" --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3 --set x10=1
 expect_error 2 "exactly one" --preset paper-5.1 --signature "slip-"
 expect_error 3 "did not converge" --preset paper-5.1 --guess d1=0.01 --guess x10=40 --guess phi=5
 

@@ -46,7 +46,7 @@ TEST_P(PaperBranch, StartsOnThePaperOrbitWhenTheRunKeepsThePresetUnknowns) {
   if (!run.free.empty() || !run.fix.empty()) GTEST_SKIP() << "the run solves for other unknowns";
   const PaperPreset& preset = *FindPaperPreset(run.preset);
   const Orbit guess = preset.Guess();
-  const OrbitSolution solved = SolveOrbit(guess, ResolveUnknowns(guess.signature, preset.unknowns).indices,
+  const OrbitSolution solved = SolveOrbit(guess, FreeIndices(guess.signature, preset.unknowns),
                                           preset.unknowns.tie_static_friction);
   const OrbitBranch b = Continue(GetParam());
   const Eigen::VectorXd a = orbit_variables::Pack(b.orbits.front());

@@ -6,7 +6,7 @@
 
 #include "stickslip/continuation/orbit_continuation.hpp"
 #include "stickslip/io/run.hpp"
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/stability.hpp"
 

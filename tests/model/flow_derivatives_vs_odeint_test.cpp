@@ -140,8 +140,7 @@ TEST(OdeintVariationalReference, RejectsANegativeOrNonFiniteDuration) {
   const State start(0.1, -0.2, 0.3, -0.4);
   for (double s : {-1e-9, -1.0, std::numeric_limits<double>::infinity(),
                    std::numeric_limits<double>::quiet_NaN()}) {
-    EXPECT_THROW(IntegrateModeWithDerivatives(Mode::kSlipNegative, start, 0.0, s, p),
-                 std::invalid_argument)
+    EXPECT_THROW(IntegrateModeWithDerivatives(Mode::kSlipNegative, start, 0.0, s, p), InvalidInput)
         << "s = " << s;
   }
 }

@@ -28,8 +28,8 @@ TEST_P(ExactAgainstOdeint, GiveTheSameEventsOverTwoPeriods) {
   const SimulationOptions options = Periods(e, 2.0);
   const SimulationResult exact = SimulateExact(e.parameters, e.initial_state, e.phi, options);
   const SimulationResult odeint = SimulateOdeint(e.parameters, e.initial_state, e.phi, options);
-  ASSERT_TRUE(exact.completed);
-  ASSERT_TRUE(odeint.completed);
+  ASSERT_TRUE(exact.Completed());
+  ASSERT_TRUE(odeint.Completed());
   ASSERT_EQ(exact.events.size(), odeint.events.size());
   ASSERT_GE(exact.events.size(), 2u);
   for (std::size_t i = 0; i < exact.events.size(); ++i) {

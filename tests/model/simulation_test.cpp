@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -134,7 +135,7 @@ TEST(ExactSimulator, SegmentsJoinUpAndSamplesFollowTheFlow) {
   options.duration = 2 * 2.0 * kPi / e.parameters.omega;
   options.sample_step = 0.05;
   const SimulationResult r = SimulateExact(e.parameters, e.initial_state, e.phi, options);
-  ASSERT_TRUE(r.completed);
+  ASSERT_TRUE(r.Completed());
   for (std::size_t i = 1; i < r.segments.size(); ++i) {
     EXPECT_EQ(r.segments[i].t_start, r.segments[i - 1].t_end);
     EXPECT_EQ(r.segments[i].start, r.segments[i - 1].end);
@@ -161,6 +162,33 @@ TEST(ExactSimulator, SamplesTheEndOfADurationOfWholeSampleSteps) {
     ++checked;
   }
   EXPECT_EQ(checked, 100);
+}
+
+// Bad input is an exception naming the field; stopping early is a status of the result.
+TEST(OdeintSimulator, ThrowsInvalidInputNamingTheFieldAndReportsMaxEventsAsAnEnd) {
+  const PaperExample& e = *FindPaperExample("paper-4.1");
+  auto field_of = [&](const Parameters& p, const SimulationOptions& options, const OdeintOptions& odeint) {
+    try {
+      SimulateOdeint(p, e.initial_state, e.phi, options, odeint);
+    } catch (const InvalidInput& error) {
+      return error.field();
+    }
+    return std::string("none");
+  };
+  SimulationOptions options;
+  options.duration = 10.0;
+  Parameters bad = e.parameters;
+  bad.chi = 2.0;
+  EXPECT_EQ(field_of(bad, options, {}), "chi");
+  EXPECT_EQ(field_of(e.parameters, {}, {}), "duration");
+  OdeintOptions loose;
+  loose.relative_tolerance = -1.0;
+  EXPECT_EQ(field_of(e.parameters, options, loose), "relative_tolerance");
+  options.max_events = 1;
+  const SimulationResult r = SimulateOdeint(e.parameters, e.initial_state, e.phi, options);
+  EXPECT_EQ(r.end, SimulationEnd::kMaxEvents);
+  EXPECT_FALSE(r.Completed());
+  EXPECT_EQ(r.events.size(), 1u);
 }
 
 // A stick whose force beats slowly toward the static level (forcing near the stick frequency 1,

@@ -20,9 +20,7 @@ Orbit Solve(const char* name, bool paper_choice) {
   const PaperPreset& preset = *FindPaperPreset(name);
   const UnknownChoice& choice = paper_choice ? preset.paper_choice : preset.unknowns;
   const Orbit guess = preset.Guess();
-  const FreeVariables free = ResolveUnknowns(guess.signature, choice);
-  EXPECT_TRUE(free.error.empty()) << free.error;
-  const OrbitSolution s = SolveOrbit(guess, free.indices, choice.tie_static_friction);
+  const OrbitSolution s = SolveOrbit(guess, FreeIndices(guess.signature, choice), choice.tie_static_friction);
   EXPECT_TRUE(s.summary.Converged()) << name << ": " << s.summary.BriefReport();
   return s.orbit;
 }

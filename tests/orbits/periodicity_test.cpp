@@ -69,12 +69,10 @@ TEST(PeriodicityEquations, CountIsNPlusFourPlusOnePerAbnormalStop) {
 OrbitSolution SolvePreset(const PaperPreset& preset, ShootingChoice shooting,
                           LinearSolverType sparse = LinearSolverType::kKlu) {
   const Orbit guess = preset.Guess();
-  const FreeVariables free = ResolveUnknowns(guess.signature, preset.unknowns);
-  EXPECT_TRUE(free.error.empty()) << free.error;
   OrbitSolverOptions options;
   options.shooting = shooting;
   options.sparse_solver = sparse;
-  return SolveOrbit(guess, free.indices, preset.unknowns.tie_static_friction, options);
+  return SolveOrbit(guess, FreeIndices(guess.signature, preset.unknowns), preset.unknowns.tie_static_friction, options);
 }
 
 double MaxDifference(const Orbit& a, const Orbit& b) {
@@ -159,11 +157,23 @@ TEST(OrbitSolver, FullPeriodSolutionsOfAntisymmetricOrbitsEqualTheReducedOnes) {
 
 TEST(UnknownChoice, RejectsANonSquareChoiceWithTheCounts) {
   const Orbit o = FindPaperPreset("paper-5.1")->Guess();
-  const FreeVariables free = ResolveUnknowns(o.signature, {{"u_r"}, {}, false});
-  EXPECT_NE(free.error.find("not square"), std::string::npos) << free.error;
-  EXPECT_NE(free.error.find("8 equations but there are 9 unknowns"), std::string::npos) << free.error;
-  EXPECT_NE(ResolveUnknowns(o.signature, {{"mu"}, {}, false}).error.find("'mu'"), std::string::npos);
-  EXPECT_TRUE(ResolveUnknowns(o.signature, {{"u_r"}, {"phi"}, false}).error.empty());
+  auto error = [&](const UnknownChoice& choice) -> InvalidInput {
+    try {
+      FreeIndices(o.signature, choice);
+    } catch (const InvalidInput& e) {
+      return e;
+    }
+    return InvalidInput::WithMessage("", "no error");
+  };
+  const InvalidInput not_square = error({{"u_r"}, {}, false});
+  EXPECT_EQ(not_square.field(), "unknowns");
+  EXPECT_NE(std::string(not_square.what()).find("not square"), std::string::npos) << not_square.what();
+  EXPECT_NE(std::string(not_square.what()).find("8 equations but there are 9 unknowns"), std::string::npos)
+      << not_square.what();
+  const InvalidInput unknown = error({{"mu"}, {}, false});
+  EXPECT_EQ(unknown.field(), "free");
+  EXPECT_NE(std::string(unknown.what()).find("'mu'"), std::string::npos);
+  EXPECT_EQ(FreeIndices(o.signature, {{"u_r"}, {"phi"}, false}).size(), 8u);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ inline Orbit SolvedPreset(const char* name, bool paper_choice = false) {
   const PaperPreset& preset = *FindPaperPreset(name);
   const UnknownChoice& choice = paper_choice ? preset.paper_choice : preset.unknowns;
   const Orbit guess = preset.Guess();
-  return SolveOrbit(guess, ResolveUnknowns(guess.signature, choice).indices, choice.tie_static_friction).orbit;
+  return SolveOrbit(guess, FreeIndices(guess.signature, choice), choice.tie_static_friction).orbit;
 }
 
 }  // namespace stickslip

@@ -19,6 +19,12 @@ class InvalidInput : public std::invalid_argument {
   // A message of its own that still names the field first, for input that is not one value
   // ("signature 'stik': token 1 'stik' is not a mode: valid slip-, slip+, stick").
   static InvalidInput WithMessage(std::string field, std::string message);
+  // The same violation with the field named as a front end calls it ("restart" -> "point" on the
+  // command line): a leading field name in the message is replaced too.
+  InvalidInput Renamed(std::string field) const;
+  // The message after its leading field name ("= 'paper-9' is unknown: valid ..."), or the whole
+  // message when it does not start with the field; for front ends that name the field their way.
+  std::string Predicate() const;
 
   const std::string& field() const { return field_; }
   const std::string& value() const { return value_; }

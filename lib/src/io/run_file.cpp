@@ -107,10 +107,11 @@ class TableReader {
     return node;
   }
   [[noreturn]] void Fail(const toml::node& node, std::string_view key, std::string_view what) const {
-    throw RunFileError(fmt::format("{}: key '{}{}' {}", Where(path_, node), prefix_, key, what));
+    throw RunFileError(fmt::format("{}: key '{}{}' {}", Where(path_, node), prefix_, key, what), prefix_ + std::string(key));
   }
   [[noreturn]] void Missing(std::string_view key, std::string_view what) const {
-    throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}", Where(path_, table_), prefix_, key, what));
+    throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}", Where(path_, table_), prefix_, key, what),
+                       prefix_ + std::string(key));
   }
 
   void String(std::string_view key, std::string* out, bool required = false) {

@@ -6,29 +6,19 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <boost/numeric/odeint.hpp>
 #include <fmt/format.h>
 
 namespace stickslip {
 
-bool OdeintOptions::IsValid(std::string* error) const {
-  auto bad = [&](const char* name, double value) {
-    if (error != nullptr) {
-      *error = fmt::format("{} = {} is invalid: must be finite and > 0", name, value);
-    }
-    return false;
-  };
-  if (!(std::isfinite(relative_tolerance) && relative_tolerance > 0.0)) {
-    return bad("relative_tolerance", relative_tolerance);
+void OdeintOptions::CheckValid() const {
+  for (const auto& [name, value] : {std::pair{"relative_tolerance", relative_tolerance},
+                                    std::pair{"absolute_tolerance", absolute_tolerance},
+                                    std::pair{"event_time_tolerance", event_time_tolerance}}) {
+    if (!(std::isfinite(value) && value > 0.0)) throw InvalidInput(name, value, "finite and > 0");
   }
-  if (!(std::isfinite(absolute_tolerance) && absolute_tolerance > 0.0)) {
-    return bad("absolute_tolerance", absolute_tolerance);
-  }
-  if (!(std::isfinite(event_time_tolerance) && event_time_tolerance > 0.0)) {
-    return bad("event_time_tolerance", event_time_tolerance);
-  }
-  return true;
 }
 
 namespace {
@@ -198,7 +188,7 @@ double LocateZero(const ModeIntegrator& integrator, Mode mode, double phase, con
 State IntegrateMode(Mode mode, const State& start, double phase, double s, const Parameters& p,
                     const OdeintOptions& odeint) {
   if (!(std::isfinite(s) && s >= 0.0)) {
-    throw std::invalid_argument(fmt::format("IntegrateMode: s = {} must be finite and >= 0", s));
+    throw InvalidInput("s", s, "finite and >= 0");
   }
   if (s == 0.0) return start;
   ModeIntegrator integrator(mode, start, phase, p, odeint);
@@ -297,12 +287,9 @@ class VariationalField {
 FlowDerivatives IntegrateModeWithDerivatives(Mode mode, const State& start, double phase, double s,
                                              const Parameters& p, const OdeintOptions& odeint) {
   if (!(std::isfinite(s) && s >= 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("IntegrateModeWithDerivatives: s = {} must be finite and >= 0", s));
+    throw InvalidInput("s", s, "finite and >= 0");
   }
-  if (std::string error; !odeint.IsValid(&error)) {
-    throw std::invalid_argument("IntegrateModeWithDerivatives: " + error);
-  }
+  odeint.CheckValid();
   const VariationalField field(mode, phase, p);
   VariationalState y{};
   for (int i = 0; i < 4; ++i) {
@@ -335,21 +322,23 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
   SimulationResult result;
   result.parameters = p;
   result.phi = phi;
-  auto fail = [&](std::string message) {
-    result.completed = false;
+  auto stop = [&](SimulationEnd end, std::string message) {
+    result.end = end;
     result.message = std::move(message);
     return result;
   };
-  if (const auto invalid = Validate(p)) return fail(invalid->what());
-  if (!x0.allFinite() || !std::isfinite(phi)) return fail("x0 and phi must be finite");
+  if (auto invalid = Validate(p)) throw *invalid;
+  for (int i = 0; i < 4; ++i) {
+    if (!std::isfinite(x0(i))) throw InvalidInput(fmt::format("x0({})", i), x0(i), "a finite number");
+  }
+  if (!std::isfinite(phi)) throw InvalidInput("phi", phi, "a finite number");
   if (!(std::isfinite(options.duration) && options.duration > 0.0)) {
-    return fail(fmt::format("duration = {} is invalid: must be finite and > 0", options.duration));
+    throw InvalidInput("duration", options.duration, "finite and > 0");
   }
   if (!(std::isfinite(options.sample_step) && options.sample_step >= 0.0)) {
-    return fail(fmt::format("sample_step = {} is invalid: must be finite and >= 0",
-                            options.sample_step));
+    throw InvalidInput("sample_step", options.sample_step, "finite and >= 0");
   }
-  if (std::string error; !odeint.IsValid(&error)) return fail(error);
+  odeint.CheckValid();
 
   // Samples at k * sample_step (the last one clipped to the duration), taken from the dense
   // output of the segment that covers them.
@@ -403,7 +392,7 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
             }
           }
           if (!armed) {
-            return fail(fmt::format(
+            return stop(SimulationEnd::kStuckAtRest, fmt::format(
                 "at t = {} a {} from rest does not move in its direction (x2' = {} after {})",
                 t, ToString(mode), integrator.Interpolated(hi)[3], hi));
           }
@@ -451,7 +440,7 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
     x = x_end;
     mode = event.mode_after;
     if (static_cast<int>(result.events.size()) >= options.max_events) {
-      return fail(fmt::format("stopped after {} events at t = {} (max_events)",
+      return stop(SimulationEnd::kMaxEvents, fmt::format("stopped after {} events at t = {} (max_events)",
                               result.events.size(), t));
     }
   }

@@ -3,6 +3,8 @@
 #include <array>
 #include <numbers>
 
+#include <fmt/format.h>
+
 namespace stickslip {
 
 namespace {
@@ -41,6 +43,12 @@ const PaperExample* FindPaperExample(std::string_view name) {
     if (e.name == name) return &e;
   }
   return nullptr;
+}
+
+std::string PaperExampleNames() {
+  std::string names;
+  for (const PaperExample& e : Examples()) names += fmt::format("{}{}", names.empty() ? "" : ", ", e.name);
+  return names;
 }
 
 }  // namespace stickslip

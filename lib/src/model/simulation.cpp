@@ -12,6 +12,15 @@
 
 namespace stickslip {
 
+const char* ToString(SimulationEnd end) {
+  switch (end) {
+    case SimulationEnd::kDuration: return "duration";
+    case SimulationEnd::kMaxEvents: return "max-events";
+    case SimulationEnd::kStuckAtRest: break;
+  }
+  return "stuck-at-rest";
+}
+
 const char* ToString(EventKind kind) {
   return kind == EventKind::kStop ? "stop" : "stick-exit";
 }
@@ -159,7 +168,7 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     x = segment.end;
     mode = end->next;
     if (static_cast<int>(result.events.size()) >= options.max_events) {
-      result.completed = false;
+      result.end = SimulationEnd::kMaxEvents;
       result.message = fmt::format("stopped after {} events at t = {} (max_events)",
                                    result.events.size(), t);
       break;

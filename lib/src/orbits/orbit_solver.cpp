@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace stickslip {
 
@@ -18,35 +19,45 @@ const char* ToString(ShootingChoice s) {
   return "multiple";
 }
 
-FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& choice) {
+int VariableIndex(int n, std::string_view field, std::string_view name) {
+  if (const std::optional<int> index = ov::IndexOf(n, name)) return *index;
+  std::vector<std::string> names;
+  for (int i = 0; i < ov::Count(n); ++i) names.push_back(ov::Name(n, i));
+  throw InvalidInput::WithMessage(std::string(field), fmt::format("{} = '{}' is not a variable: valid {}", field,
+                                                                  name, fmt::join(names, ", ")));
+}
+
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice) {
   const int n = signature.size();
   std::vector<int> free = {ov::kX10, ov::kX20, ov::kV10, ov::kPhi};
   for (int i = 0; i < n; ++i) free.push_back(ov::Duration(i));
-  std::string names;
-  for (int i = 0; i < ov::Count(n); ++i) names += (i ? ", " : "") + ov::Name(n, i);
   for (const std::string& name : choice.release) {
-    const std::optional<int> index = ov::IndexOf(n, name);
-    if (!index) return {{}, fmt::format("free = '{}' is not a variable: valid {}", name, names)};
-    if (choice.tie_static_friction && *index == ov::Parameter(n, ParameterId::kStaticFriction)) {
-      return {{}, "free = 'u_r' is tied to u_s (u_r = u_s): release u_s instead"};
+    const int index = VariableIndex(n, "free", name);
+    if (choice.tie_static_friction && index == ov::Parameter(n, ParameterId::kStaticFriction)) {
+      throw InvalidInput::WithMessage("free", "free = 'u_r' is tied to u_s (u_r = u_s): release u_s instead");
     }
-    if (std::find(free.begin(), free.end(), *index) == free.end()) free.push_back(*index);
+    if (std::find(free.begin(), free.end(), index) == free.end()) free.push_back(index);
   }
-  for (const std::string& name : choice.fix) {
-    const std::optional<int> index = ov::IndexOf(n, name);
-    if (!index) return {{}, fmt::format("fix = '{}' is not a variable: valid {}", name, names)};
-    std::erase(free, *index);
-  }
+  for (const std::string& name : choice.fix) std::erase(free, VariableIndex(n, "fix", name));
   const PeriodicityEquations equations(signature, Shooting::kSingle);
   if (static_cast<int>(free.size()) != equations.EquationCount()) {
     std::string unknowns;
     for (int index : free) unknowns += (unknowns.empty() ? "" : ", ") + ov::Name(n, index);
-    return {{}, fmt::format("the system is not square: signature '{}' has {} equations but there "
-                            "are {} unknowns ({}); release or fix {} variable(s)",
-                            signature.ToString(), equations.EquationCount(), free.size(), unknowns,
-                            std::abs(static_cast<int>(free.size()) - equations.EquationCount()))};
+    throw InvalidInput::WithMessage(
+        "unknowns", fmt::format("the system is not square: signature '{}' has {} equations but there "
+                                "are {} unknowns ({}); release or fix {} variable(s)",
+                                signature.ToString(), equations.EquationCount(), free.size(), unknowns,
+                                std::abs(static_cast<int>(free.size()) - equations.EquationCount())));
   }
-  return {free, {}};
+  return free;
+}
+
+FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& choice) {
+  try {
+    return {FreeIndices(signature, choice), {}};
+  } catch (const InvalidInput& e) {
+    return {{}, e.what()};
+  }
 }
 
 Shooting ResolveShooting(ShootingChoice choice, int listed_segments, int max_single_shooting_segments) {

@@ -104,7 +104,7 @@ Verification VerifyOrbit(const Orbit& orbit) {
   const SimulationResult exact = SimulateExact(orbit.parameters, orbit.InitialState(), orbit.phi, options);
   const SimulationResult odeint = SimulateOdeint(orbit.parameters, orbit.InitialState(), orbit.phi, options);
   for (const auto& [name, r] : {std::pair{"exact", &exact}, std::pair{"odeint", &odeint}}) {
-    if (!r->completed || r->segments.empty()) {
+    if (!r->Completed() || r->segments.empty()) {
       v.not_simulated = fmt::format("the {} simulation stopped early: {}", name, r->message);
       return v;
     }

@@ -23,20 +23,23 @@
 
 #include <filesystem>
 #include <map>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/named_values.hpp"
+
 namespace stickslip {
 
-class RunFileError : public std::runtime_error {
+// Bad input in a run file: the message starts with "<path>:<line>:<column>:" and names the key,
+// which is the field (or "run file" for what concerns the whole file).
+class RunFileError : public InvalidInput {
  public:
-  using std::runtime_error::runtime_error;
+  explicit RunFileError(std::string message, std::string key = "run file")
+      : InvalidInput(WithMessage(std::move(key), std::move(message))) {}
 };
-
-using NamedValues = std::vector<std::pair<std::string, double>>;
 
 struct RunFile {
   std::string path;

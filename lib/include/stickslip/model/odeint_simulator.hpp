@@ -22,8 +22,8 @@ struct OdeintOptions {
   double relative_tolerance = 1e-12;    // dopri5 error control
   double absolute_tolerance = 1e-12;
   double event_time_tolerance = 1e-12;  // bisection on the dense output
-  // All three finite and > 0; otherwise false and, if error != nullptr, the reason.
-  bool IsValid(std::string* error) const;
+  // Throws InvalidInput naming the first field that is not finite and > 0.
+  void CheckValid() const;
 };
 
 // Reference simulator: eq. (2) integrated mode by mode with a controlled dense-output
@@ -33,16 +33,16 @@ struct OdeintOptions {
 // Events are found from sign changes of the event function between accepted steps (x2' in a
 // slip; s - eta u_r and s + eta u_r in a stick, s of eq. 11), so a zero touched tangentially
 // (a grazing, or an abnormal stop) is seen only if rounding happens to make it a crossing.
-// Invalid input (Validate(p) fails, x0, phi or the options not finite, duration <= 0,
-// sample_step < 0, invalid `odeint`) is reported as completed = false with a message and no
-// segments; so is a slip started from rest that does not move in its direction.
+// Throws InvalidInput for bad input (Validate(p) fails, x0, phi or the options not finite,
+// duration <= 0, sample_step < 0, invalid `odeint`). A slip started from rest that does not move
+// in its direction ends the simulation with SimulationEnd::kStuckAtRest.
 SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi,
                                 const SimulationOptions& options, const OdeintOptions& odeint = {});
 
 // One mode only, no events: the state after time s from `start` at forcing phase `phase`
 // (forcing cos(omega*tau + phase), tau elapsed) — the reference for the closed-form flows.
 // The stick integrates eq. (9) as written (x2'' = 0), so x2 drifts if start(3) != 0.
-// Throws std::invalid_argument if s < 0 or s is not finite.
+// Throws InvalidInput if s < 0 or s is not finite.
 State IntegrateMode(Mode mode, const State& start, double phase, double s, const Parameters& p,
                     const OdeintOptions& odeint = {});
 
@@ -52,7 +52,7 @@ State IntegrateMode(Mode mode, const State& start, double phase, double s, const
 // continuation benchmark. Only the FlowDerivatives type is shared with flows.hpp: the vector
 // field and its derivatives are written out here. d_elapsed is the vector field at the end
 // point; the u_r column of d_parameters is zero (u_r enters no mode's equations).
-// Throws std::invalid_argument if s < 0 or s is not finite, or if `odeint` is invalid.
+// Throws InvalidInput if s < 0 or s is not finite, or if `odeint` is invalid.
 FlowDerivatives IntegrateModeWithDerivatives(Mode mode, const State& start, double phase, double s,
                                              const Parameters& p, const OdeintOptions& odeint = {});
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "stickslip/model/flows.hpp"
@@ -23,5 +24,8 @@ struct PaperExample {
 std::span<const PaperExample> PaperExamples();
 // nullptr if there is no example of that name.
 const PaperExample* FindPaperExample(std::string_view name);
+// "paper-4.1, paper-4.2, ...": the names, for messages and help texts (the solver presets of
+// orbits/paper_presets.hpp have the same names).
+std::string PaperExampleNames();
 
 }  // namespace stickslip

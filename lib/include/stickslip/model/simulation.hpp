@@ -54,14 +54,23 @@ struct SimulationOptions {
   ZeroSearchOptions zeros;    // event location accuracy (time tolerance 1e-13)
 };
 
+// How a simulation ended: a numerical outcome, not an error (bad input throws InvalidInput).
+enum class SimulationEnd {
+  kDuration,     // the whole duration was simulated
+  kMaxEvents,    // options.max_events stopped it (chattering, or a duration too long)
+  kStuckAtRest,  // Odeint only: a slip chosen from rest does not move in its direction
+};
+const char* ToString(SimulationEnd end);  // "duration", "max-events", "stuck-at-rest"
+
 struct SimulationResult {
   Parameters parameters;
   double phi = 0.0;  // forcing phase at t = 0
   std::vector<Segment> segments;
   std::vector<Event> events;
   std::vector<TimeSample> samples;  // filled when sample_step > 0
-  bool completed = true;            // false if max_events stopped the simulation
-  std::string message;              // why it stopped early, if it did
+  SimulationEnd end = SimulationEnd::kDuration;
+  std::string message;  // why it stopped early, if it did
+  bool Completed() const { return end == SimulationEnd::kDuration; }
 };
 
 // Initial mode from a state: the sign of x2', or Coulomb's law at rest when x2' = 0 (to

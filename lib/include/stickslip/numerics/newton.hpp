@@ -22,7 +22,9 @@ class NonlinearSystem {
   // F(u), and J(u) (EquationCount x UnknownCount) when `jacobian` is not null.
   virtual void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual,
                         JacobianMatrix* jacobian) const = 0;
-  // Why u lies outside the domain where F is defined (an invalid physical parameter, ...).
+  // Why u lies outside the domain where F is defined (an invalid physical parameter, ...). A
+  // query, not the error convention: Newton asks it of every trial point and steps back when it
+  // answers; a caller's bad input is InvalidInput, thrown before solving.
   virtual std::optional<std::string> DomainError(const Eigen::VectorXd& u) const {
     (void)u;
     return std::nullopt;

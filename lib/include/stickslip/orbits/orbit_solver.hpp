@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stickslip/numerics/newton.hpp"
@@ -20,8 +21,17 @@ struct UnknownChoice {
   bool tie_static_friction = false;  // u_r follows u_s (u_r = u_s); u_r may not be released
 };
 
-// The free variable indices of a choice for a signature, or an error message naming the bad
-// name or the counts when the system would not be square.
+// The index of the variable `name` of an n-segment orbit (orbit.hpp). Throws InvalidInput
+// "<field> = '<name>' is not a variable: valid x10, x20, ..." naming the caller's field.
+int VariableIndex(int n, std::string_view field, std::string_view name);
+
+// The free variable indices of a choice for a signature. Throws InvalidInput naming "free" or
+// "fix" for a name that is not a variable (or u_r released while tied to u_s), and "unknowns",
+// with both counts, when the system would not be square.
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);
+
+// FreeIndices with the error as a string instead of thrown, for continuation/orbit_continuation.cpp
+// only, until that file calls FreeIndices (issue 10, item 6). New code calls FreeIndices.
 struct FreeVariables {
   std::vector<int> indices;
   std::string error;  // empty when valid

@@ -1,4 +1,4 @@
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -25,7 +25,7 @@ SimulationResult SimulateOrThrow(const Parameters& p, const State& x0, double ph
   options.duration = duration;
   options.max_events = o.max_events_per_simulation;
   SimulationResult r = SimulateExact(p, x0, phi, options);
-  if (!r.completed) {
+  if (!r.Completed()) {
     throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
                                          ToString(pass), step, ToString(o.parameter), p[o.parameter], r.message));
   }
@@ -93,15 +93,13 @@ std::string ToString(SweepPass pass) {
 
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options) {
-  if (starts.empty()) throw std::invalid_argument("Sweep: no starting state");
-  if (options.steps < 1) throw std::invalid_argument(fmt::format("Sweep: steps = {}, must be >= 1", options.steps));
+  if (starts.empty()) throw InvalidInput("starts", "none", "at least one starting state");
+  if (options.steps < 1) throw InvalidInput("steps", options.steps, "steps >= 1");
   if (options.transient_periods < 0) {
-    throw std::invalid_argument(
-        fmt::format("Sweep: transient_periods = {}, must be >= 0", options.transient_periods));
+    throw InvalidInput("transient_periods", options.transient_periods, "transient_periods >= 0");
   }
   if (options.recorded_periods < 1) {
-    throw std::invalid_argument(
-        fmt::format("Sweep: recorded_periods = {}, must be >= 1", options.recorded_periods));
+    throw InvalidInput("recorded_periods", options.recorded_periods, "recorded_periods >= 1");
   }
   const int chains = static_cast<int>(starts.size());
   const int per_chain = options.steps + 1;

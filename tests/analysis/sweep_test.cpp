@@ -1,7 +1,7 @@
 // The brute-force sweep: its section states against the independent Odeint simulator, the
 // chaining of points (the down pass from where the up pass ended), chains independent of each
 // other, and an output that does not depend on the number of threads.
-#include "stickslip/model/sweep.hpp"
+#include "stickslip/analysis/sweep.hpp"
 
 #include <cstdint>
 #include <numbers>
@@ -21,7 +21,7 @@ State OdeintAfter(const Parameters& p, const State& x0, double phi, int periods)
   SimulationOptions options;
   options.duration = periods * 2.0 * std::numbers::pi / p.omega;
   const SimulationResult r = SimulateOdeint(p, x0, phi, options);
-  EXPECT_TRUE(r.completed) << r.message;
+  EXPECT_TRUE(r.Completed()) << r.message;
   return r.segments.back().end;
 }
 
@@ -128,13 +128,13 @@ TEST(Sweep, RecognisesThePeriodOneMotionOfSection41) {
 
 TEST(Sweep, RejectsNoStartsAndCountsOutOfRange) {
   const PaperExample& e = *FindPaperExample("paper-4.1");
-  EXPECT_THROW(Sweep(e.parameters, {}, e.phi, ShortSweep(SweepStart::kChained)), std::invalid_argument);
+  EXPECT_THROW(Sweep(e.parameters, {}, e.phi, ShortSweep(SweepStart::kChained)), InvalidInput);
   for (auto [steps, transients, recorded] : {std::tuple{0, 2, 2}, {2, -1, 2}, {2, 2, 0}}) {
     SweepOptions o = ShortSweep(SweepStart::kFixed);
     o.steps = steps;
     o.transient_periods = transients;
     o.recorded_periods = recorded;
-    EXPECT_THROW(Sweep(e.parameters, {e.initial_state}, e.phi, o), std::invalid_argument)
+    EXPECT_THROW(Sweep(e.parameters, {e.initial_state}, e.phi, o), InvalidInput)
         << steps << " " << transients << " " << recorded;
   }
 }

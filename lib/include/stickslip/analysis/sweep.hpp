@@ -57,8 +57,8 @@ struct SweepPoint {
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
 // (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
 // step, whatever the number of threads. Precondition: Validate passes at every swept value.
-// Throws std::invalid_argument for no starts or options out of range, and std::runtime_error
-// naming the point when a simulation stops early (max_events_per_simulation).
+// Throws InvalidInput for no starts or options out of range, and std::runtime_error naming the
+// point when a simulation stops early (max_events_per_simulation).
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options);
 

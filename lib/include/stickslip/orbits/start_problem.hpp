@@ -1,0 +1,104 @@
+// The start of every computation on an orbit or a motion, assembled in one place from what a
+// user gives: a paper preset or an orbit type, a labelled point of earlier results, model data,
+// guesses and the choice of unknowns. Run files (io/run.hpp MakeSetup), the command line's
+// solve, continue, simulate and sweep, and the Python bindings build their start here, so the
+// same input gives the same start whichever way it arrives.
+//
+// Values are applied in this order, later ones winning: the preset's printed values, the
+// restart point, set, guess, the values given with fix; then u_r = u_s when tied.
+//
+// Bad input throws InvalidInput. Its field is the StartInput member at fault ("preset",
+// "signature", "restart", "set", "guess", "free", "fix", "paper_choice", "parameter", and
+// "unknowns" for a choice that is not square) or the variable whose value is out of range ("u_r",
+// "d2"), and the message starts with that field, so that a front end can name it its own way
+// (InvalidInput::Renamed, Predicate). Nothing is printed.
+//
+//   StartInput input;
+//   input.preset = "paper-5.2";
+//   input.fix = {{"phi", std::numbers::pi / 2}};
+//   input.free = {"u_r"};
+//   const StartProblem start = BuildStartProblem(input);
+//   const OrbitSolution s = SolveOrbit(start.orbit, start.free, start.unknowns.tie_static_friction);
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stickslip/model/flows.hpp"
+#include "stickslip/model/parameters.hpp"
+#include "stickslip/named_values.hpp"
+#include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
+
+namespace stickslip {
+
+// A key of `set`: the model data and the start state, with the same meaning everywhere.
+struct SetKey {
+  std::string_view key;
+  std::string_view meaning;
+  std::string_view valid_range;
+};
+// chi, eta, omega, u_s, u_r, x10, x20, v10, v20, phi.
+std::span<const SetKey> SetKeys();
+// The valid range of a set key as messages print it ("0 < chi < 1"); "any finite number" for a
+// name that is not a set key.
+std::string_view SetKeyRange(std::string_view key);
+
+// A labelled point of earlier results, as the io layer reads it (io/start_input.hpp): its orbit
+// type and its columns by name; columns that name no orbit variable are ignored.
+struct RestartPoint {
+  std::string run;    // where it came from: results/<run>/, point <label>
+  std::string label;
+  std::string signature;
+  NamedValues values;
+};
+
+// A variable held fixed: at its start value, or at `value`.
+struct FixedVariable {
+  std::string name;
+  std::optional<double> value;
+};
+
+struct StartInput {
+  std::string preset;     // a paper preset (PaperExampleNames), or empty
+  std::string signature;  // an orbit type in text form (signature.hpp), or empty
+  std::optional<RestartPoint> restart;
+  NamedValues set;    // model data and start state: the keys of SetKeys()
+  NamedValues guess;  // any orbit variable: x10 x20 v10 phi d1..dn chi eta omega u_s u_r
+  std::vector<std::string> free;   // released variables
+  std::vector<FixedVariable> fix;  // held variables; a later fix wins over an earlier free
+  bool tie_u_r = false;            // u_r = u_s (abnormal stops need it, eq. 25)
+  bool paper_choice = false;       // with a preset: the paper's own choice of unknowns
+  std::optional<std::string> parameter;  // the continued variable; none for one orbit
+};
+
+// A start orbit and its unknowns: square at a fixed `parameter`.
+struct StartProblem {
+  Orbit orbit;
+  UnknownChoice unknowns;
+  std::vector<int> free;         // FreeIndices(orbit.signature, unknowns)
+  std::optional<int> parameter;  // index of the continued variable, when one was given
+};
+
+// Needs exactly one orbit type: from the preset, the signature or the restart point (a
+// signature or restart point beside a preset must agree with it). Every parameter must be
+// given, every duration given and >= 0 (a zero-length segment is where a branch switches type),
+// v20 = 0 (an orbit starts at a stop). Throws InvalidInput.
+StartProblem BuildStartProblem(const StartInput& input);
+
+// The model data, initial state (x10, x20, x1'0, x2'0) and forcing phase a simulation starts
+// from.
+struct ModelStart {
+  Parameters parameters;
+  State initial_state = State::Zero();
+  double phi = 0.0;
+};
+
+// From at most one of the preset and the restart point, and set; every parameter given and
+// valid (Validate). The orbit members of `input` must be empty. Throws InvalidInput.
+ModelStart BuildModelStart(const StartInput& input);
+
+}  // namespace stickslip

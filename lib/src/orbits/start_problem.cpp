@@ -1,0 +1,213 @@
+#include "stickslip/orbits/start_problem.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "stickslip/orbits/paper_presets.hpp"
+
+namespace stickslip {
+
+namespace {
+
+namespace ov = orbit_variables;
+
+constexpr std::array<SetKey, 10> kSetKeys = {{
+    {"chi", "stiffness ratio k2/(k1+k2)", "0 < chi < 1"},
+    {"eta", "mass ratio m1/m2", "eta > 0"},
+    {"omega", "forcing frequency (scaled time)", "omega > 0, not a natural frequency"},
+    {"u_s", "sliding friction level", "u_s > 0"},
+    {"u_r", "static friction level", "u_r >= u_s"},
+    {"x10", "initial x1", "any finite number"},
+    {"x20", "initial x2", "any finite number"},
+    {"v10", "initial x1'", "any finite number"},
+    {"v20", "initial x2'", "any finite number"},
+    {"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", "any finite number"},
+}};
+
+double Finite(std::string_view name, double value) {
+  if (!std::isfinite(value)) throw InvalidInput(std::string(name), value, "a finite number");
+  return value;
+}
+
+const PaperPreset* Preset(const std::string& name) {
+  if (name.empty()) return nullptr;
+  const PaperPreset* preset = FindPaperPreset(name);
+  if (preset == nullptr) {
+    throw InvalidInput::WithMessage("preset", fmt::format("preset = '{}' is unknown: valid {}", name, PaperExampleNames()));
+  }
+  return preset;
+}
+
+// The variables of an n-segment orbit as far as the preset, the restart point and set give
+// them, and which were given. With n = 0 they are the model data and the start state only;
+// v20 is kept apart, since an orbit has none.
+struct Values {
+  Eigen::VectorXd x;
+  std::vector<bool> given;
+  double v20 = 0.0;
+
+  void Assign(int index, double value) {
+    x(index) = value;
+    given[index] = true;
+  }
+};
+
+Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
+  Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false)};
+  if (preset != nullptr) {
+    const Orbit guess = preset->Guess();
+    const Eigen::VectorXd packed = ov::Pack(guess);
+    for (int i = 0; i < ov::Count(n); ++i) v.Assign(i, packed(ov::IndexOf(guess.signature.size(), ov::Name(n, i)).value()));
+    v.v20 = preset->example->initial_state(3);
+  }
+  if (input.restart) {
+    for (const auto& [name, value] : input.restart->values) {
+      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Finite(name, value));
+    }
+  }
+  for (const auto& [key, value] : input.set) {
+    if (std::none_of(kSetKeys.begin(), kSetKeys.end(), [&](const SetKey& k) { return k.key == key; })) {
+      std::vector<std::string_view> keys;
+      for (const SetKey& k : kSetKeys) keys.push_back(k.key);
+      throw InvalidInput("set", fmt::format("'{}'", key), fmt::format("keys {}", fmt::join(keys, ", ")));
+    }
+    if (key == "v20") {
+      v.v20 = Finite(key, value);
+    } else {
+      v.Assign(*ov::IndexOf(n, key), Finite(key, value));
+    }
+  }
+  return v;
+}
+
+// Every parameter given (or tied) and valid.
+Parameters CheckedParameters(const Values& v, int n, bool tie_u_r) {
+  Parameters p;
+  for (ParameterId id : kAllParameters) {
+    const int index = ov::Parameter(n, id);
+    const bool tied = tie_u_r && id == ParameterId::kStaticFriction;
+    if (!v.given[index] && !tied) {
+      throw InvalidInput::WithMessage(
+          ToString(id), fmt::format("{} is missing: give set {}=VALUE ({}), a preset or a restart point", ToString(id),
+                                    ToString(id), SetKeyRange(ToString(id))));
+    }
+    p[id] = v.x(index);
+  }
+  if (tie_u_r) p.u_r = p.u_s;
+  if (auto invalid = Validate(p)) throw *invalid;
+  return p;
+}
+
+// The orbit type: from the preset, the signature or the restart point, in that order of
+// precedence for the text; a preset's must agree with the others.
+Signature OrbitType(const StartInput& input, const PaperPreset* preset) {
+  const bool given = !input.signature.empty();
+  const std::string field = given ? "signature" : "restart";
+  const std::string text = given ? input.signature : input.restart ? input.restart->signature : "";
+  if (text.empty()) {
+    if (preset != nullptr) return preset->Guess().signature;
+    throw InvalidInput::WithMessage("signature", "signature is missing: give exactly one of a preset, a signature "
+                                                 "or a restart point");
+  }
+  std::string error;
+  const std::optional<Signature> signature = Signature::Parse(text, &error);
+  if (!signature) throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: {}", field, text, error));
+  if (preset != nullptr && !(preset->Guess().signature == *signature)) {
+    throw InvalidInput::WithMessage(
+        field, fmt::format("{} gives the orbit type '{}', preset {} has '{}': give exactly one of them", field, text,
+                           input.preset, preset->signature));
+  }
+  return *signature;
+}
+
+// The preset's choice of unknowns, then the input's.
+UnknownChoice Unknowns(const StartInput& input, const PaperPreset* preset) {
+  if (input.paper_choice && preset == nullptr) {
+    throw InvalidInput::WithMessage("paper_choice", "paper_choice = true is invalid: valid only with a preset");
+  }
+  UnknownChoice choice;
+  if (preset != nullptr) choice = input.paper_choice ? preset->paper_choice : preset->unknowns;
+  for (const FixedVariable& f : input.fix) {
+    if (std::find(input.free.begin(), input.free.end(), f.name) != input.free.end()) {
+      throw InvalidInput::WithMessage("fix", fmt::format("fix = '{}' is released by free as well: give it in one of them", f.name));
+    }
+    choice.fix.push_back(f.name);
+  }
+  choice.release.insert(choice.release.end(), input.free.begin(), input.free.end());
+  choice.tie_static_friction = choice.tie_static_friction || input.tie_u_r;
+  return choice;
+}
+
+}  // namespace
+
+std::span<const SetKey> SetKeys() { return kSetKeys; }
+
+std::string_view SetKeyRange(std::string_view key) {
+  for (const SetKey& k : kSetKeys) {
+    if (k.key == key) return k.valid_range;
+  }
+  return "any finite number";
+}
+
+StartProblem BuildStartProblem(const StartInput& input) {
+  const PaperPreset* preset = Preset(input.preset);
+  const Signature signature = OrbitType(input, preset);
+  const int n = signature.size();
+  const UnknownChoice unknowns = Unknowns(input, preset);
+
+  Values v = Assemble(input, preset, n);
+  if (v.v20 != 0.0) throw InvalidInput("v20", v.v20, "v20 = 0 (an orbit starts at a stop)");
+  for (const auto& [name, value] : input.guess) v.Assign(VariableIndex(n, "guess", name), Finite(name, value));
+  for (const FixedVariable& f : input.fix) {
+    if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Finite(f.name, *f.value));
+  }
+  Orbit orbit = ov::Unpack(signature, v.x);
+  orbit.parameters = CheckedParameters(v, n, unknowns.tie_static_friction);
+  for (int i = 0; i < n; ++i) {
+    const std::string name = ov::Name(n, ov::Duration(i));
+    if (!v.given[ov::Duration(i)]) {
+      throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (>= 0): give the duration of segment {}", name, i + 1));
+    }
+    if (orbit.durations[i] < 0.0) throw InvalidInput(name, orbit.durations[i], name + " >= 0");
+  }
+  const std::vector<int> free = FreeIndices(signature, unknowns);
+
+  std::optional<int> parameter;
+  if (input.parameter) {
+    parameter = VariableIndex(n, "parameter", *input.parameter);
+    if (unknowns.tie_static_friction && *parameter == ov::Parameter(n, ParameterId::kStaticFriction)) {
+      throw InvalidInput::WithMessage("parameter", "parameter = 'u_r' is tied to u_s (tie_u_r): continue in u_s");
+    }
+    if (std::find(free.begin(), free.end(), *parameter) != free.end()) {
+      throw InvalidInput::WithMessage("parameter", fmt::format("parameter = '{}' is an unknown already: continue in a "
+                                                               "held variable", *input.parameter));
+    }
+  }
+  return {std::move(orbit), unknowns, free, parameter};
+}
+
+ModelStart BuildModelStart(const StartInput& input) {
+  const std::pair<const char*, bool> orbit_members[] = {
+      {"signature", !input.signature.empty()}, {"guess", !input.guess.empty()},   {"free", !input.free.empty()},
+      {"fix", !input.fix.empty()},             {"tie_u_r", input.tie_u_r},       {"paper_choice", input.paper_choice},
+      {"parameter", input.parameter.has_value()}};
+  for (const auto& [member, given] : orbit_members) {
+    if (given) throw InvalidInput::WithMessage(member, fmt::format("{} is for orbits: a simulation starts from a preset, "
+                                                                   "a restart point and set", member));
+  }
+  if (input.restart && !input.preset.empty()) {
+    throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' and preset = '{}': give at most one of them",
+                                                           input.restart->run, input.restart->label, input.preset));
+  }
+  const Values v = Assemble(input, Preset(input.preset), 0);
+  ModelStart start;
+  start.parameters = CheckedParameters(v, 0, false);
+  start.initial_state = State(v.x(ov::kX10), v.x(ov::kX20), v.x(ov::kV10), v.v20);
+  start.phi = v.x(ov::kPhi);
+  return start;
+}
+
+}  // namespace stickslip

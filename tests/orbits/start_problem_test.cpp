@@ -1,0 +1,179 @@
+// The one start-problem builder: which values win, what a zero-length segment and a missing one
+// do, and which field each kind of bad input is blamed on.
+#include "stickslip/orbits/start_problem.hpp"
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace stickslip {
+namespace {
+
+namespace ov = orbit_variables;
+
+// Section 5.1's data as printed in eq. (36), for a start given by hand.
+StartInput HandMadeSlipStick() {
+  StartInput input;
+  input.signature = "slip- slip+ stick slip+";
+  input.set = {{"chi", 0.22}, {"eta", 4.2}, {"omega", 2 * std::numbers::pi / 11}, {"u_s", 0.0138}, {"u_r", 0.4962}};
+  input.guess = {{"d1", 3.2663}, {"d2", 2.0}, {"d3", 2.7337}, {"d4", 3.0}};
+  return input;
+}
+
+InvalidInput ErrorOf(const std::function<void()>& build) {
+  try {
+    build();
+  } catch (const InvalidInput& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InvalidInput thrown";
+  return InvalidInput::WithMessage("", "");
+}
+
+TEST(StartProblem, AcceptsADurationGivenAsZero) {
+  StartInput input = HandMadeSlipStick();
+  input.guess.emplace_back("d3", 0.0);
+  const StartProblem start = BuildStartProblem(input);
+  EXPECT_EQ(start.orbit.durations, (std::vector<double>{3.2663, 2.0, 0.0, 3.0}));
+}
+
+TEST(StartProblem, RefusesADurationThatWasNeverGiven) {
+  StartInput input = HandMadeSlipStick();
+  input.guess.pop_back();
+  const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
+  EXPECT_EQ(e.field(), "guess");
+  EXPECT_NE(std::string(e.what()).find("misses d4"), std::string::npos) << e.what();
+}
+
+TEST(StartProblem, RefusesANegativeDuration) {
+  StartInput input = HandMadeSlipStick();
+  input.guess.emplace_back("d2", -0.5);
+  const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
+  EXPECT_EQ(e.field(), "d2");
+  EXPECT_EQ(e.valid_range(), "d2 >= 0");
+}
+
+TEST(StartProblem, LaterSourcesWinPresetThenSetThenGuessThenFix) {
+  StartInput input;
+  input.preset = "paper-5.1";
+  input.set = {{"x10", 1.0}, {"u_r", 0.6}};
+  input.guess = {{"x10", 2.0}, {"x20", 5.0}};
+  input.fix = {{"phi", 0.5}};
+  input.free = {"u_r"};
+  const StartProblem start = BuildStartProblem(input);
+  EXPECT_EQ(start.orbit.x10, 2.0);
+  EXPECT_EQ(start.orbit.x20, 5.0);
+  EXPECT_EQ(start.orbit.v10, -0.2578);  // the printed value
+  EXPECT_EQ(start.orbit.phi, 0.5);
+  EXPECT_EQ(start.orbit.parameters.u_r, 0.6);
+  EXPECT_EQ(start.orbit.parameters.chi, 0.22);
+  EXPECT_EQ(start.orbit.durations, (std::vector<double>{3.2663, 2.0, 2.7337, 3.0}));
+  const int n = 4;
+  EXPECT_EQ(start.free, (std::vector<int>{ov::kX10, ov::kX20, ov::kV10, ov::Duration(0), ov::Duration(1), ov::Duration(2),
+                                          ov::Duration(3), ov::Parameter(n, ParameterId::kStaticFriction)}));
+}
+
+TEST(StartProblem, TyingCopiesTheSlidingFrictionLevel) {
+  StartInput input;
+  input.preset = "paper-4.1";
+  input.tie_u_r = true;
+  input.free = {"u_s"};
+  input.fix = {{"phi", std::nullopt}};
+  const StartProblem start = BuildStartProblem(input);
+  EXPECT_TRUE(start.unknowns.tie_static_friction);
+  EXPECT_EQ(start.orbit.parameters.u_r, 0.1);
+}
+
+TEST(StartProblem, ThePaperChoiceReplacesThePresetsUnknowns) {
+  StartInput input;
+  input.preset = "paper-5.2";
+  input.paper_choice = true;
+  const StartProblem start = BuildStartProblem(input);
+  EXPECT_EQ(start.unknowns.release, (std::vector<std::string>{"u_r"}));
+  EXPECT_EQ(start.unknowns.fix, (std::vector<std::string>{"phi"}));
+}
+
+struct BadInput {
+  const char* what;
+  std::function<void(StartInput*)> change;
+  const char* field;
+  const char* text;
+};
+
+class StartProblemBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(StartProblemBadInput, IsBlamedOnItsField) {
+  StartInput input = HandMadeSlipStick();
+  input.parameter = "omega";
+  GetParam().change(&input);
+  const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
+  EXPECT_EQ(e.field(), GetParam().field) << e.what();
+  EXPECT_NE(std::string(e.what()).find(GetParam().text), std::string::npos) << e.what();
+  EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryField, StartProblemBadInput,
+    ::testing::Values(
+        BadInput{"UnknownPreset", [](StartInput* in) { in->preset = "paper-9"; }, "preset", "paper-4.1, paper-4.2"},
+        BadInput{"Signature", [](StartInput* in) { in->signature = "slip- stik"; }, "signature", "token 2 'stik'"},
+        BadInput{"SignatureBesideADifferentPreset", [](StartInput* in) { in->preset = "paper-6"; }, "signature",
+                 "give exactly one"},
+        BadInput{"NoOrbitType", [](StartInput* in) { in->signature.clear(); }, "signature", "missing"},
+        BadInput{"SetKey", [](StartInput* in) { in->set.emplace_back("d1", 1.0); }, "set", "valid range keys chi, eta"},
+        BadInput{"GuessName", [](StartInput* in) { in->guess.emplace_back("mu", 1.0); }, "guess", "'mu'"},
+        BadInput{"NotANumber", [](StartInput* in) { in->guess.emplace_back("x10", std::nan("")); }, "x10", "finite"},
+        BadInput{"Infinite", [](StartInput* in) { in->set.emplace_back("phi", HUGE_VAL); }, "phi", "finite"},
+        BadInput{"OutOfRange", [](StartInput* in) { in->set.emplace_back("chi", 1e308); }, "chi", "0 < chi < 1"},
+        BadInput{"MissingParameter", [](StartInput* in) { in->set.erase(in->set.begin()); }, "chi", "missing"},
+        BadInput{"MovingStart", [](StartInput* in) { in->set.emplace_back("v20", 1.0); }, "v20", "v20 = 0"},
+        BadInput{"FreeName", [](StartInput* in) { in->free = {"mu"}; }, "free", "'mu'"},
+        BadInput{"FixName", [](StartInput* in) { in->fix = {{"mu", 1.0}}; }, "fix", "'mu'"},
+        BadInput{"FreeAndFixed", [](StartInput* in) { in->free = {"u_r"}, in->fix = {{"u_r", std::nullopt}}; }, "fix",
+                 "released by free as well"},
+        BadInput{"NotSquare", [](StartInput* in) { in->free = {"u_r"}; }, "unknowns", "9 unknowns"},
+        BadInput{"TiedRelease", [](StartInput* in) { in->tie_u_r = true, in->free = {"u_r"}; }, "free", "tied"},
+        BadInput{"PaperChoiceWithoutPreset", [](StartInput* in) { in->paper_choice = true; }, "paper_choice",
+                 "only with a preset"},
+        BadInput{"ParameterName", [](StartInput* in) { in->parameter = ""; }, "parameter", "not a variable"},
+        BadInput{"ParameterAnUnknown", [](StartInput* in) { in->parameter = "x10"; }, "parameter", "unknown already"},
+        BadInput{"ParameterTied", [](StartInput* in) { in->tie_u_r = true, in->parameter = "u_r"; }, "parameter",
+                 "tied to u_s"}),
+    [](const ::testing::TestParamInfo<BadInput>& test) { return std::string(test.param.what); });
+
+TEST(ModelStart, TakesThePaperExampleAndSet) {
+  StartInput input;
+  input.preset = "paper-4.1";
+  input.set = {{"v20", 0.5}, {"omega", 0.65}};
+  const ModelStart start = BuildModelStart(input);
+  EXPECT_EQ(start.parameters.omega, 0.65);
+  EXPECT_EQ(start.parameters.u_r, 0.2996);
+  EXPECT_EQ(start.initial_state, State(1.5608, 3.3295, 0.1523, 0.5));
+  EXPECT_EQ(start.phi, 0.3925);
+}
+
+TEST(ModelStart, TakesARestartPointsColumns) {
+  StartInput input;
+  input.restart = RestartPoint{"run", "TR1", "slip-", {{"chi", 0.3}, {"eta", 4}, {"omega", 0.6}, {"u_s", 0.1},
+                                                     {"u_r", 0.3}, {"x10", 1}, {"v10", 2}, {"phi", 3}, {"d1", 9}}};
+  const ModelStart start = BuildModelStart(input);
+  EXPECT_EQ(start.initial_state, State(1, 0, 2, 0));
+  EXPECT_EQ(start.phi, 3.0);
+  EXPECT_EQ(start.parameters.eta, 4.0);
+}
+
+TEST(ModelStart, RefusesAPresetBesideARestartPointAndOrbitMembers) {
+  StartInput input;
+  input.preset = "paper-4.1";
+  input.restart = RestartPoint{"run", "TR1", "slip-", {}};
+  EXPECT_EQ(ErrorOf([&] { BuildModelStart(input); }).field(), "restart");
+  input.restart.reset();
+  input.guess = {{"d1", 1.0}};
+  EXPECT_EQ(ErrorOf([&] { BuildModelStart(input); }).field(), "guess");
+}
+
+}  // namespace
+}  // namespace stickslip

@@ -1,0 +1,105 @@
+#include "start_options.hpp"
+
+#include <fmt/format.h>
+
+#include "cli_common.hpp"
+#include "stickslip/io/start_input.hpp"
+#include "stickslip/model/paper_examples.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+// "NAME=VALUE" texts of the option `field` ("set", "guess").
+NamedValues Assignments(const std::vector<std::string>& texts, const char* field) {
+  NamedValues values;
+  for (const std::string& text : texts) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos) {
+      throw InvalidInput(field, fmt::format("'{}'", text), "NAME=VALUE");
+    }
+    const std::string name = text.substr(0, equals);
+    values.emplace_back(name, ParseNumber(name, text.substr(equals + 1), SetKeyRange(name)));
+  }
+  return values;
+}
+
+}  // namespace
+
+void AddStartOptions(CLI::App& cmd, StartFlags* flags, StartOptions which) {
+  const bool orbit = which == StartOptions::kOrbit;
+  cmd.add_option("--preset", flags->preset,
+                 orbit ? "a paper orbit: " + PaperExampleNames() + " (data, signature and printed values as guess)"
+                       : "start from a paper example's printed data and initial state: " + PaperExampleNames());
+  cmd.add_option("--point", flags->point,
+                 orbit ? "start from a labelled point of a continuation run under --results: its orbit type, data "
+                         "and orbit (RUN:LABEL, e.g. paper-5.1-omega-up:TR2)"
+                       : "start from a labelled point of a continuation run under --results instead of a preset: "
+                         "its data, its orbit's initial state and phase (RUN:LABEL, e.g. paper-5.1-omega-up:TR2)")
+      ->type_name("RUN:LABEL");
+  cmd.add_option("--set", flags->set, SetKeysHelp())->type_name("KEY=VALUE");
+  if (!orbit) return;
+  cmd.add_option("--signature", flags->signature,
+                 "orbit type, e.g. \"slip- slip+ stick slip+\" or \"slip- stick slip- / antisymmetric\" "
+                 "(options after '/': antisymmetric, period K)");
+  cmd.add_option("--guess", flags->guess,
+                 "starting value of any orbit variable: x10, x20, v10, phi, d1..dn (durations, scaled time, "
+                 ">= 0), chi, eta, omega, u_s, u_r")
+      ->type_name("NAME=VALUE");
+  cmd.add_option("--free", flags->free, "release a variable (usually a parameter: chi, eta, omega, u_s, u_r) as an unknown")
+      ->type_name("NAME");
+  cmd.add_option("--fix", flags->fix, "hold a variable (phi, d1..dn, x10, ...) at its guess, or at VALUE")
+      ->type_name("NAME[=VALUE]");
+  cmd.add_flag("--tie-u_r", flags->tie_u_r, "hold u_r = u_s (abnormal stops need it, eq. 25)");
+}
+
+StartInput ToStartInput(const StartFlags& flags) {
+  StartInput input;
+  input.preset = flags.preset;
+  input.signature = flags.signature;
+  if (!flags.point.empty()) {
+    const auto colon = flags.point.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == flags.point.size()) {
+      throw InvalidInput::WithMessage(
+          "restart", fmt::format("restart = '{}' is invalid: valid RUN:LABEL, a labelled point of results/RUN", flags.point));
+    }
+    input.restart = ReadRestartPoint(flags.results, flags.point.substr(0, colon), flags.point.substr(colon + 1));
+  }
+  input.set = Assignments(flags.set, "set");
+  input.guess = Assignments(flags.guess, "guess");
+  input.free = flags.free;
+  for (const std::string& text : flags.fix) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos) {
+      input.fix.push_back({text, std::nullopt});
+    } else {
+      const std::string name = text.substr(0, equals);
+      input.fix.push_back({name, ParseNumber(name, text.substr(equals + 1), SetKeyRange(name))});
+    }
+  }
+  input.tie_u_r = flags.tie_u_r;
+  return input;
+}
+
+void SetRunFileStart(const StartInput& input, RunFile* run) {
+  run->preset = input.preset;
+  run->signature = input.signature;
+  if (input.restart) {
+    run->restart_run = input.restart->run;
+    run->restart_label = input.restart->label;
+  }
+  run->set = input.set;
+  run->guess = input.guess;
+  run->free = input.free;
+  for (const FixedVariable& f : input.fix) {
+    run->fix.push_back(f.name);
+    if (f.value) run->guess.emplace_back(f.name, *f.value);
+  }
+  run->tie_u_r = input.tie_u_r;
+}
+
+InvalidInput OnCommandLine(const InvalidInput& error) {
+  return error.field() == "restart" ? error.Renamed("point") : error;
+}
+
+}  // namespace stickslip::cli

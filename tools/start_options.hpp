@@ -1,0 +1,50 @@
+// The options a subcommand starts from, declared once: --preset, --point, --signature, --set,
+// --guess, --free, --fix, --tie-u_r; and their conversion into the library's one start-problem
+// input (stickslip/orbits/start_problem.hpp), which checks them. Each command declares its own
+// --results (where --point reads from), since continue also writes there.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/orbits/start_problem.hpp"
+
+namespace stickslip::cli {
+
+struct StartFlags {
+  std::string preset;
+  std::string point;  // RUN:LABEL
+  std::string results = "results";  // bound to the command's --results
+  std::string signature;
+  std::vector<std::string> set;    // KEY=VALUE
+  std::vector<std::string> guess;  // NAME=VALUE
+  std::vector<std::string> free;
+  std::vector<std::string> fix;  // NAME or NAME=VALUE
+  bool tie_u_r = false;
+};
+
+enum class StartOptions {
+  kMotion,  // simulate, sweep: --preset, --point, --set
+  kOrbit,   // solve, continue: those and --signature, --guess, --free, --fix, --tie-u_r
+};
+void AddStartOptions(CLI::App& cmd, StartFlags* flags, StartOptions which);
+
+// Parses the texts (numbers strictly, ParseNumber) and reads the --point from --results.
+// Throws InvalidInput.
+StartInput ToStartInput(const StartFlags& flags);
+
+// continue: a run file's [start] and [unknowns] from the flags, so that the run goes through
+// MakeSetup like any run file (which reads the restart point again, by run and label). A value
+// given with --fix becomes the last guess of that variable, which is what a fix's value means
+// to the builder.
+void SetRunFileStart(const StartInput& input, RunFile* run);
+
+// The builder's error with its field named as the command line names it: the restart point is
+// --point's "point"; the other fields are the option names already (set for --set, ...).
+InvalidInput OnCommandLine(const InvalidInput& error);
+
+}  // namespace stickslip::cli
