@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <string>
 
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip {

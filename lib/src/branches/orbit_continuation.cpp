@@ -1,4 +1,4 @@
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/sweep.hpp"
 #include "stickslip/orbits/margins.hpp"
