@@ -214,9 +214,33 @@ TEST(Continuation, CanBeSteppedOnePointAtATime) {
 TEST(ContinuationOptions, RejectInconsistentStepBounds) {
   ContinuationOptions o = Options();
   o.step.ds_min = 1.0;
-  std::string error;
-  EXPECT_FALSE(o.IsValid(&error));
-  EXPECT_NE(error.find("ds_min"), std::string::npos);
+  try {
+    o.Validate();
+    FAIL() << "ds_min > ds was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "ds_min");
+    EXPECT_EQ(e.value(), "1");
+  }
+}
+
+TEST(Continuation, ThrowsInvalidInputNamingTheFieldForANonPositiveStep) {
+  const Circle circle;
+  ContinuationOptions o = Options();
+  o.step.ds = 0.0;
+  try {
+    Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0));
+    FAIL() << "ds = 0 was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "ds");
+    EXPECT_EQ(e.valid_range(), "ds > 0");
+  }
+}
+
+TEST(Continuation, ThrowsInvalidInputForAParameterIndexBeyondTheUnknowns) {
+  const Circle circle;
+  ContinuationOptions o = Options();
+  o.parameter_index = 2;  // the circle has the unknowns x and lambda
+  EXPECT_THROW(Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)), InvalidInput);
 }
 
 }  // namespace

@@ -23,23 +23,23 @@ const char* ToString(BranchEnd end) {
   return "start-failed";
 }
 
-bool ContinuationOptions::IsValid(std::string* error) const {
-  auto fail = [&](std::string message) {
-    *error = std::move(message);
-    return false;
-  };
-  if (direction != 1 && direction != -1) return fail(fmt::format("direction ({}) must be +1 or -1", direction));
-  if (!(step.ds > 0.0)) return fail(fmt::format("ds ({}) must be > 0", step.ds));
-  if (!(step.ds_min > 0.0 && step.ds_min <= step.ds)) {
-    return fail(fmt::format("ds_min ({}) must be > 0 and <= ds ({})", step.ds_min, step.ds));
-  }
-  if (!(step.ds_max >= step.ds)) return fail(fmt::format("ds_max ({}) must be >= ds ({})", step.ds_max, step.ds));
+void ContinuationOptions::Validate() const {
+  if (parameter_index < 0) throw InvalidInput("parameter_index", parameter_index, "parameter_index >= 0");
+  if (direction != 1 && direction != -1) throw InvalidInput("direction", direction, "+1 or -1");
+  step.Validate();
   if (!(lambda_min < lambda_max)) {
-    return fail(fmt::format("the parameter range [{}, {}] is empty", lambda_min, lambda_max));
+    throw InvalidInput("lambda_min", lambda_min, fmt::format("lambda_min < lambda_max ({})", lambda_max));
   }
-  if (max_points < 1) return fail(fmt::format("max_points ({}) must be >= 1", max_points));
-  if (!(locate_tolerance > 0.0)) return fail("locate_tolerance must be > 0");
-  return true;
+  if (max_points < 1) throw InvalidInput("max_points", max_points, "max_points >= 1");
+  if (start_iterations < 1) throw InvalidInput("start_iterations", start_iterations, "start_iterations >= 1");
+  if (!(bound_tolerance >= 0.0)) throw InvalidInput("bound_tolerance", bound_tolerance, "bound_tolerance >= 0");
+  if (!(location.tolerance > 0.0)) throw InvalidInput("location.tolerance", location.tolerance, "> 0");
+  if (location.corrector_iterations < 1) {
+    throw InvalidInput("location.corrector_iterations", location.corrector_iterations, ">= 1");
+  }
+  if (location.max_iterations < 1) throw InvalidInput("location.max_iterations", location.max_iterations, ">= 1");
+  if (!(location.same_point >= 0.0)) throw InvalidInput("location.same_point", location.same_point, ">= 0");
+  if (!(location.fold_noise >= 0.0)) throw InvalidInput("location.fold_noise", location.fold_noise, ">= 0");
 }
 
 namespace {
@@ -213,7 +213,7 @@ struct Continuation::State {
   std::optional<Sample> Corrected(double s, bool locating = false) {
     const BorderedSystem bordered(problem, tangent, u, s);
     NewtonOptions newton = options.corrector;
-    if (locating) newton.max_iterations = std::max(newton.max_iterations, 50);
+    if (locating) newton.max_iterations = std::max(newton.max_iterations, options.location.corrector_iterations);
     NewtonResult r = SolveNewton(bordered, u + s * tangent, newton);
     if (!r.summary.Converged()) {
       last_failure = r.summary.BriefReport();
@@ -246,16 +246,19 @@ struct Continuation::State {
 
 Continuation::Continuation(const NonlinearSystem& problem, const Monitor* monitor,
                            ContinuationOptions options, Eigen::VectorXd start) {
-  std::string error;
-  if (!options.IsValid(&error)) throw std::invalid_argument("invalid continuation options: " + error);
+  options.Validate();
   if (problem.UnknownCount() != problem.EquationCount() + 1) {
     throw std::invalid_argument(fmt::format(
         "continuation needs one unknown more than equations: {} equations, {} unknowns",
         problem.EquationCount(), problem.UnknownCount()));
   }
-  if (start.size() != problem.UnknownCount() || options.parameter_index < 0 ||
-      options.parameter_index >= start.size()) {
-    throw std::invalid_argument("continuation start point or parameter index out of range");
+  if (start.size() != problem.UnknownCount()) {
+    throw std::invalid_argument(fmt::format("the start point has {} unknowns, the problem {}", start.size(),
+                                            problem.UnknownCount()));
+  }
+  if (options.parameter_index >= start.size()) {
+    throw InvalidInput("parameter_index", options.parameter_index,
+                       fmt::format("0 <= parameter_index < {} (the unknowns)", start.size()));
   }
   if (monitor) branch_.test_functions = monitor->TestFunctions();
   state_ = std::make_unique<State>(problem, monitor, std::move(options), std::move(start));
@@ -290,7 +293,7 @@ bool Continuation::Step() {
     st.started = true;
     const FixedParameterSystem fixed(st.problem, st.start, o.parameter_index);
     NewtonOptions newton = o.corrector;
-    newton.max_iterations = std::max(newton.max_iterations, 30);
+    newton.max_iterations = std::max(newton.max_iterations, o.start_iterations);
     const NewtonResult r = SolveNewton(fixed, fixed.Reduce(st.start), newton);
     if (!r.summary.Converged()) {
       return end(BranchEnd::kStartFailed, "the start point does not converge: " + r.summary.BriefReport());
@@ -340,7 +343,7 @@ bool Continuation::Step() {
         // The corrector keeps lambda on the bound only to second order in the step; where it
         // lands within rounding of it, the point is put on it, and the bound event below
         // records it. If that fails, the branch still ends on the corrected point.
-        on_bound = std::abs(st.Lambda(next->u) - bound) <= 1e-10 * (1.0 + std::abs(bound));
+        on_bound = std::abs(st.Lambda(next->u) - bound) <= o.bound_tolerance * (1.0 + std::abs(bound));
         if (on_bound) {
           if (std::optional<State::Sample> exact = st.OnBound(*next, bound)) next = std::move(exact);
         }
@@ -368,7 +371,7 @@ bool Continuation::Step() {
   if (o.detect_folds) {
     // Where the branch runs at constant lambda, the fold function is rounding noise around zero.
     events.push_back({"LP", "tangent:lambda", [lambda_index](const State::Sample& s) { return s.tangent(lambda_index); },
-                      false, false, false, 1e-8, 1});
+                      false, false, false, o.location.fold_noise, 1});
   }
   if (o.detect_branch_points) {
     events.push_back({"BP", "det-bordered", [](const State::Sample& s) { return double(s.det_sign); }, true, false,
@@ -413,7 +416,7 @@ bool Continuation::Step() {
     bool ok = true;
     try {
       if (e.sign_only) {
-        while (hi - lo > o.locate_tolerance) {
+        while (hi - lo > o.location.tolerance) {
           const double mid = 0.5 * (lo + hi);
           const double g_mid = g_at(mid);
           if (g_mid * g_lo > 0.0) {
@@ -424,8 +427,8 @@ bool Continuation::Step() {
           }
         }
       } else if (gb != 0.0) {
-        std::uintmax_t iterations = 100;
-        const double tol = o.locate_tolerance;
+        std::uintmax_t iterations = static_cast<std::uintmax_t>(o.location.max_iterations);
+        const double tol = o.location.tolerance;
         const auto bracket = boost::math::tools::toms748_solve(
             g_at, 0.0, ds, ga, gb, [tol](double x, double y) { return std::abs(y - x) <= tol; }, iterations);
         lo = bracket.first;
@@ -451,7 +454,7 @@ bool Continuation::Step() {
   // In arclength order; events within a few location tolerances of each other are one point
   // (a fold where a stop degenerates, say) and come in a fixed order, whatever the step size.
   std::sort(located.begin(), located.end(), [](const Located& x, const Located& y) { return x.s < y.s; });
-  const double same_point = 10.0 * o.locate_tolerance;
+  const double same_point = o.location.same_point * o.location.tolerance;
   for (std::size_t first = 0; first < located.size();) {
     std::size_t last = first + 1;
     while (last < located.size() && located[last].s - located[last - 1].s <= same_point) ++last;

@@ -23,6 +23,7 @@
 
 #include "stickslip/continuation/monitor.hpp"
 #include "stickslip/continuation/step_size.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/numerics/newton.hpp"
 
 namespace stickslip {
@@ -34,12 +35,27 @@ struct UserValue {
   std::string name;    // for the report, e.g. "omega=0.6"
 };
 
+// Where special points are located on the branch, and how hard the corrector tries there.
+struct EventLocationOptions {
+  double tolerance = 1e-11;       // final arclength bracket of a located special point
+  // Corrector iterations (at least) at a trial point: near a singular point (a branch point)
+  // Newton converges slowly, and a trial point cannot shrink its step as a step can.
+  int corrector_iterations = 50;
+  int max_iterations = 100;       // of the bracketing root finder (TOMS 748)
+  // Events less than this many `tolerance`s apart in arclength are one point (a fold where a
+  // stop degenerates, say), reported in a fixed order whatever the step size.
+  double same_point = 10.0;
+  // A fold function (the lambda component of the tangent) whose values on both sides are below
+  // this is rounding noise around zero, where the branch runs at constant lambda: no fold.
+  double fold_noise = 1e-8;
+};
+
 struct ContinuationOptions {
   int parameter_index = -1;  // the unknown that is lambda; required
   int direction = 1;         // +1: start towards increasing lambda, -1: decreasing
   double lambda_min = -std::numeric_limits<double>::infinity();  // the branch ends at these
   double lambda_max = std::numeric_limits<double>::infinity();   // bounds (located, EP)
-  int max_points = 500;      // accepted points, the start included
+  int max_points = 2000;     // accepted points, the start included
   StepSizeOptions step;
   NewtonOptions corrector = [] {
     NewtonOptions o;
@@ -47,15 +63,22 @@ struct ContinuationOptions {
     o.estimate_condition = false;
     return o;
   }();
+  // Corrector iterations (at least) for the start, which may be a rough guess of a point.
+  int start_iterations = 30;
+  // A corrected point within this distance of a parameter bound, relative to 1 + |bound|, is
+  // moved onto the bound (the corrector keeps lambda there only to second order in the step).
+  double bound_tolerance = 1e-10;
   bool detect_folds = true;
   bool detect_branch_points = true;
   std::vector<UserValue> user_values;
   // By default the branch ends at the first terminal test function leaving its admissible
   // (positive) side; with this set it goes on and flags the points beyond as inadmissible.
   bool continue_past_terminal = false;
-  double locate_tolerance = 1e-11;  // final arclength bracket of a located special point
+  EventLocationOptions location;
 
-  bool IsValid(std::string* error) const;
+  // Throws InvalidInput naming the first field out of its valid range (parameter_index is
+  // checked against the problem by Continuation).
+  void Validate() const;
 };
 
 enum class BranchEnd {
@@ -101,7 +124,8 @@ struct Branch {
 class Continuation {
  public:
   // `monitor` may be null. `start` need not lie exactly on the branch: it is corrected at its
-  // lambda first. Throws std::invalid_argument on invalid options or sizes.
+  // lambda first. Throws InvalidInput on invalid options, std::invalid_argument on sizes that
+  // do not fit the problem.
   Continuation(const NonlinearSystem& problem, const Monitor* monitor, ContinuationOptions options,
                Eigen::VectorXd start);
   ~Continuation();
