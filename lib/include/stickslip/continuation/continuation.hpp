@@ -124,10 +124,11 @@ struct Branch {
 class Continuation {
  public:
   // `monitor` may be null. `start` need not lie exactly on the branch: it is corrected at its
-  // lambda first. Throws InvalidInput on invalid options, std::invalid_argument on sizes that
+  // lambda first. `step_size` chooses the steps; null means StepSizeController::Create(
+  // options.step). Throws InvalidInput on invalid options, std::invalid_argument on sizes that
   // do not fit the problem.
   Continuation(const NonlinearSystem& problem, const Monitor* monitor, ContinuationOptions options,
-               Eigen::VectorXd start);
+               Eigen::VectorXd start, std::unique_ptr<StepSizeController> step_size = nullptr);
   ~Continuation();
 
   // Computes the next accepted point (the corrected start on the first call), with every
@@ -138,6 +139,13 @@ class Continuation {
 
  private:
   struct State;
+  // The parts of Step, in order; each returns false once the branch has ended.
+  bool Start();              // the corrected start, the first point
+  bool PredictAndCorrect();  // the next point, the step shortened until the corrector converges
+  bool RecordEvents();       // the special points between the last point and the next, located
+  bool Accept();             // the next point becomes the last; the next step size
+  bool End(BranchEnd why, std::string message);  // returns false
+
   std::unique_ptr<State> state_;
   Branch branch_;
 };
