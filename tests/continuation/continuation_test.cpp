@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -200,6 +201,80 @@ TEST(StepSizeController, GrowsAfterFastStepsHalvesOnFailureAndRespectsDsMax) {
   EXPECT_DOUBLE_EQ(c->OnAccepted(0.15, 1), 0.2);
   EXPECT_LT(c->OnAccepted(0.1, 6), 0.1);
   EXPECT_DOUBLE_EQ(c->OnRejected(0.1), 0.05);
+}
+
+// Test functions of (x, lambda) with their declared properties, and the radius of the point as
+// a recorded value; counts its evaluations.
+class FunctionMonitor final : public Monitor {
+ public:
+  struct Function {
+    TestFunctionInfo info;
+    std::function<double(double x, double lambda)> g;
+  };
+  explicit FunctionMonitor(std::vector<Function> functions) : functions_(std::move(functions)) {}
+  std::vector<TestFunctionInfo> TestFunctions() const override {
+    std::vector<TestFunctionInfo> info;
+    for (const Function& f : functions_) info.push_back(f.info);
+    return info;
+  }
+  std::vector<std::string> RecordedNames() const override { return {"radius"}; }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const override {
+    ++evaluations;
+    tests->resize(static_cast<int>(functions_.size()));
+    for (std::size_t k = 0; k < functions_.size(); ++k) (*tests)(static_cast<int>(k)) = functions_[k].g(u(0), u(1));
+    if (recorded) {
+      ++recorded_evaluations;
+      *recorded = Eigen::VectorXd::Constant(1, u.norm());
+    }
+  }
+  mutable int evaluations = 0;
+  mutable int recorded_evaluations = 0;
+
+ private:
+  std::vector<Function> functions_;
+};
+
+TEST(Monitor, RecordsItsValuesOnlyAtThePointsTheBranchKeeps) {
+  const Circle circle;
+  // x changes sign twice a turn round the circle: each location corrects many trial points.
+  FunctionMonitor monitor({{{.name = "x", .type = "XZ"}, [](double x, double) { return x; }}});
+  ContinuationOptions o = Options();
+  o.max_points = 60;
+  const Branch b = Continuation(circle, &monitor, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_GE(OfType(b, "XZ").size(), 2u);
+  EXPECT_EQ(b.recorded, std::vector<std::string>{"radius"});
+  for (const BranchPoint& p : b.points) {
+    ASSERT_EQ(p.recorded.size(), 1);
+    EXPECT_NEAR(p.recorded(0), 1.0, 1e-10);
+  }
+  // Every kept point once, and at most the step that the branch's end left unkept.
+  EXPECT_GE(monitor.recorded_evaluations, static_cast<int>(b.points.size()));
+  EXPECT_LE(monitor.recorded_evaluations, static_cast<int>(b.points.size()) + 1);
+  EXPECT_GT(monitor.evaluations, monitor.recorded_evaluations + 10);
+}
+
+// g = 1/(lambda - 1/2) changes sign at lambda = 1/2 through a pole, not a zero.
+TEST(Monitor, ASignChangeThroughAPoleIsASpecialPointOnlyIfTheFunctionDeclaresNoPoles) {
+  const Cubic cubic;
+  for (bool may_have_poles : {false, true}) {
+    FunctionMonitor monitor({{{.name = "pole", .type = "PO", .may_have_poles = may_have_poles},
+                              [](double, double l) { return 1.0 / (l - 0.5); }}});
+    ContinuationOptions o = Options();
+    o.lambda_max = 0.6;
+    const Branch b = Continuation(cubic, &monitor, o, Eigen::Vector2d(0.0, 0.0)).Run();
+    EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+    EXPECT_EQ(OfType(b, "PO").size(), may_have_poles ? 0u : 1u);
+  }
+}
+
+TEST(Monitor, ATerminalFunctionEndsTheBranchWhereItLeavesItsPositiveSide) {
+  const Cubic cubic;
+  FunctionMonitor monitor({{{.name = "below-half", .type = "BH", .terminal = true, .positive_side = "lower"},
+                            [](double, double l) { return 0.5 - l; }}});
+  const Branch b = Continuation(cubic, &monitor, Options(), Eigen::Vector2d(0.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kTerminalEvent);
+  EXPECT_EQ(b.end_message, "below-half (BH) left its lower side");
+  EXPECT_NEAR(b.points.back().lambda, 0.5, 1e-10);
 }
 
 // Keeps the step fixed and counts the accepted steps it is told of.

@@ -11,7 +11,7 @@ ArclengthCorrector::ArclengthCorrector(const NonlinearSystem& problem, const Mon
     : problem_(problem), monitor_(monitor), options_(options),
       solver_(LinearSolver::Create(options.corrector.linear_solver)) {}
 
-bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, Sample* sample) {
+bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, bool record, Sample* sample) {
   Eigen::VectorXd f;
   JacobianMatrix j;
   problem_.Evaluate(sample->u, &f, &j);
@@ -24,7 +24,7 @@ bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, Sample* samp
   // factorisation serves.
   sample->det_sign = solver_->DeterminantSign();
   sample->tangent /= sample->tangent.norm();
-  if (monitor_) sample->tests = monitor_->Evaluate(sample->u);
+  if (monitor_) monitor_->Evaluate(sample->u, &sample->tests, record ? &sample->recorded : nullptr);
   return true;
 }
 
@@ -42,7 +42,7 @@ std::optional<Sample> ArclengthCorrector::Start(const Eigen::VectorXd& guess, st
   sample.iterations = r.summary.iterations;
   Eigen::VectorXd axis = Eigen::VectorXd::Zero(guess.size());
   axis(options_.parameter_index) = options_.direction;
-  if (!Complete(axis, &sample)) {
+  if (!Complete(axis, true, &sample)) {
     *failure = "the bordered Jacobian is singular at the start point";
     return std::nullopt;
   }
@@ -52,7 +52,7 @@ std::optional<Sample> ArclengthCorrector::Start(const Eigen::VectorXd& guess, st
 std::optional<Sample> ArclengthCorrector::Corrected(const Sample& from, double s, Attempt attempt) {
   const BorderedSystem bordered(problem_, from.tangent, from.u, s);
   NewtonOptions newton = options_.corrector;
-  if (attempt == Attempt::kLocating) {
+  if (attempt != Attempt::kStep) {
     newton.max_iterations = std::max(newton.max_iterations, options_.location.corrector_iterations);
   }
   NewtonResult r = SolveNewton(bordered, from.u + s * from.tangent, newton);
@@ -63,7 +63,7 @@ std::optional<Sample> ArclengthCorrector::Corrected(const Sample& from, double s
   Sample sample;
   sample.u = std::move(r.solution);
   sample.iterations = r.summary.iterations;
-  if (!Complete(from.tangent, &sample)) return std::nullopt;
+  if (!Complete(from.tangent, attempt != Attempt::kLocationTrial, &sample)) return std::nullopt;
   return sample;
 }
 
@@ -76,7 +76,7 @@ std::optional<Sample> ArclengthCorrector::OnBound(const Sample& from, const Samp
   Sample sample;
   sample.u = fixed.Expand(r.solution);
   sample.iterations = near.iterations + r.summary.iterations;
-  if (!Complete(from.tangent, &sample)) return std::nullopt;
+  if (!Complete(from.tangent, true, &sample)) return std::nullopt;
   return sample;
 }
 

@@ -19,12 +19,14 @@ struct Sample {
   Eigen::VectorXd tangent;  // unit tangent, oriented along the branch
   int det_sign = 0;         // sign of det [J; t^T], for branch points
   Eigen::VectorXd tests;    // the monitor's test functions
+  Eigen::VectorXd recorded;  // the monitor's recorded values, at points the branch may keep
   int iterations = 0;       // corrector iterations that found it
 };
 
-// Why a point is corrected: a step may fail and be shortened; a point while locating an event
-// cannot, so its corrector is allowed more iterations.
-enum class Attempt { kStep, kLocating };
+// Why a point is corrected. A step may fail and be shortened; a point while locating an event
+// cannot, so its corrector is allowed more iterations. Trial points of the location are not kept:
+// they go without the recorded values.
+enum class Attempt { kStep, kLocationTrial, kLocated };
 
 class ArclengthCorrector {
  public:
@@ -43,9 +45,10 @@ class ArclengthCorrector {
   const std::string& last_failure() const { return last_failure_; }
 
  private:
-  // The unit tangent at u with the orientation of `reference`, with the determinant sign and the
-  // test functions; false if the bordered matrix is singular.
-  bool Complete(const Eigen::VectorXd& reference, Sample* sample);
+  // The unit tangent at u with the orientation of `reference`, with the determinant sign, the
+  // test functions and, if `record`, the recorded values; false if the bordered matrix is
+  // singular.
+  bool Complete(const Eigen::VectorXd& reference, bool record, Sample* sample);
 
   const NonlinearSystem& problem_;
   const Monitor* monitor_;

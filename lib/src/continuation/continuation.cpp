@@ -68,13 +68,8 @@ struct Continuation::State {
 
 namespace {
 
-BranchPoint MakePoint(const detail::Sample& s, double lambda, double ds, std::string label,
-                      const std::vector<TestFunctionInfo>& monitored) {
-  bool admissible = true;
-  for (int k = 0; k < s.tests.size(); ++k) {
-    if (monitored[k].terminal && std::isfinite(s.tests(k)) && s.tests(k) <= 0.0) admissible = false;
-  }
-  return {s.u, lambda, ds, s.iterations, s.tests, std::move(label), admissible};
+BranchPoint MakePoint(const detail::Sample& s, double lambda, double ds, std::string label) {
+  return {s.u, lambda, ds, s.iterations, s.tests, s.recorded, std::move(label)};
 }
 
 }  // namespace
@@ -95,7 +90,10 @@ Continuation::Continuation(const NonlinearSystem& problem, const Monitor* monito
     throw InvalidInput("parameter_index", options.parameter_index,
                        fmt::format("0 <= parameter_index < {} (the unknowns)", start.size()));
   }
-  if (monitor) branch_.test_functions = monitor->TestFunctions();
+  if (monitor) {
+    branch_.test_functions = monitor->TestFunctions();
+    branch_.recorded = monitor->RecordedNames();
+  }
   state_ = std::make_unique<State>(problem, monitor, std::move(options), std::move(start), std::move(step_size),
                                    branch_.test_functions);
 }
@@ -136,7 +134,7 @@ bool Continuation::Start() {
   if (!start) return End(BranchEnd::kStartFailed, failure);
   st.last = std::move(*start);
   st.ds = st.step_size->Initial();
-  branch_.points.push_back(MakePoint(st.last, st.Lambda(st.last.u), 0.0, "EP", branch_.test_functions));
+  branch_.points.push_back(MakePoint(st.last, st.Lambda(st.last.u), 0.0, "EP"));
   branch_.special_points.push_back({"EP", "start", 0, st.Lambda(st.last.u), st.last.u, st.last.tests, 0.0, true, 0.0});
   if (st.Lambda(st.last.u) < o.lambda_min || st.Lambda(st.last.u) > o.lambda_max) {
     return End(BranchEnd::kParameterBound, "the start lies outside the parameter range");
@@ -193,7 +191,7 @@ bool Continuation::RecordEvents() {
     std::optional<std::pair<BranchEnd, std::string>> ending;
     for (const detail::Located& l : point) {
       const detail::Event& e = *l.event;
-      branch_.points.push_back(MakePoint(l.sample, st.Lambda(l.sample.u), 0.0, e.type, branch_.test_functions));
+      branch_.points.push_back(MakePoint(l.sample, st.Lambda(l.sample.u), 0.0, e.type));
       const int index = static_cast<int>(branch_.points.size()) - 1;
       branch_.special_points.push_back({e.type, e.name, index, st.Lambda(l.sample.u), l.sample.u, l.sample.tests,
                                         l.value, l.located, l.bracket});
@@ -201,8 +199,9 @@ bool Continuation::RecordEvents() {
       if (e.bound) {
         ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, st.Lambda(l.sample.u)));
       } else if (e.terminal && l.value_before > 0.0) {
-        // A terminal function ends the branch only when it leaves the admissible (positive) side.
-        ending.emplace(BranchEnd::kTerminalEvent, fmt::format("{} ({}) left its admissible side", e.name, e.type));
+        // A terminal function ends the branch only when it leaves its positive side.
+        ending.emplace(BranchEnd::kTerminalEvent,
+                       fmt::format("{} ({}) left its {} side", e.name, e.type, e.positive_side));
       }
     }
     if (ending) return End(ending->first, ending->second);
@@ -212,7 +211,7 @@ bool Continuation::RecordEvents() {
 
 bool Continuation::Accept() {
   State& st = *state_;
-  branch_.points.push_back(MakePoint(st.next, st.Lambda(st.next.u), st.next_ds, "", branch_.test_functions));
+  branch_.points.push_back(MakePoint(st.next, st.Lambda(st.next.u), st.next_ds, ""));
   if (st.on_bound) {
     return End(BranchEnd::kParameterBound, fmt::format("reached the bound lambda = {}", st.Lambda(st.next.u)));
   }

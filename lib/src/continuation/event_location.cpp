@@ -44,7 +44,7 @@ void Bracket(const Event& event, G g_at, double ga, double gb, const EventLocati
 std::optional<Located> Locate(const Event& event, const Sample& a, const Sample& b, double ds, double ga, double gb,
                               ArclengthCorrector& corrector, const EventLocationOptions& options) {
   auto g_at = [&](double s) {
-    std::optional<Sample> p = corrector.Corrected(a, s, Attempt::kLocating);
+    std::optional<Sample> p = corrector.Corrected(a, s, Attempt::kLocationTrial);
     if (!p) throw CorrectorFailure{};
     return event.g(*p);
   };
@@ -63,7 +63,7 @@ std::optional<Located> Locate(const Event& event, const Sample& a, const Sample&
     // A sign is located where it has changed; a continuous function in the bracket's middle.
     l.s = event.sign_only ? hi : 0.5 * (lo + hi);
     if (l.s != ds) {
-      std::optional<Sample> p = corrector.Corrected(a, l.s, Attempt::kLocating);
+      std::optional<Sample> p = corrector.Corrected(a, l.s, Attempt::kLocated);
       if (p) {
         l.sample = std::move(*p);
       } else {
@@ -72,9 +72,11 @@ std::optional<Located> Locate(const Event& event, const Sample& a, const Sample&
     }
   }
   l.value = event.g(l.sample);
-  // A sign change through a pole (a test function that blows up, as a saltation matrix does
-  // where an event becomes tangent) is no zero: the located value is large, not small.
-  if (l.located && !event.sign_only && std::abs(l.value) > std::max(std::abs(ga), std::abs(gb))) return std::nullopt;
+  // A sign change through a pole is no zero: the located value is large, not small.
+  if (l.located && event.may_have_poles && !event.sign_only &&
+      std::abs(l.value) > std::max(std::abs(ga), std::abs(gb))) {
+    return std::nullopt;
+  }
   return l;
 }
 

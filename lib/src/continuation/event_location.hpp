@@ -22,8 +22,8 @@ struct Located {
 
 // The zero of `event` between a and b, b at arclength ds from a, where it changes sign from ga to
 // gb. If the corrector fails inside the bracket, the linear interpolate, not located, at b.
-// nullopt where the sign change is a pole rather than a zero (the located value is larger than
-// at both ends), for test functions that may have poles.
+// nullopt where the sign change of a function that may have poles is one (the located value is
+// larger than at both ends).
 std::optional<Located> Locate(const Event& event, const Sample& a, const Sample& b, double ds, double ga, double gb,
                               ArclengthCorrector& corrector, const EventLocationOptions& options);
 

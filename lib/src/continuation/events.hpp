@@ -19,6 +19,8 @@ struct Event {
   bool bound = false;      // a parameter bound: ends the branch
   double noise = 0.0;      // a sign change between values both below this is noise
   int priority = 0;        // order of events located at the same point
+  bool may_have_poles = false;  // a sign change may be a pole (TestFunctionInfo)
+  std::string positive_side = {};  // what the positive side of a terminal one means
 };
 
 // Built once per branch. The functions keep references to `options`, which must outlive them.

@@ -191,8 +191,8 @@ std::vector<std::string> Columns(const OrbitBranch& b) {
   const Signature& signature = b.orbits.front().signature;
   std::vector<std::string> columns = {"pt", "label", "chi", "eta", "omega", "u_s", "u_r", "phi", "x10", "x20", "v10"};
   for (int i = 0; i < signature.size(); ++i) columns.push_back(fmt::format("d{}", i + 1));
-  for (const TestFunctionInfo& t : b.branch.test_functions) columns.push_back(t.name);
-  columns.insert(columns.end(), {"admissible", "newton_iterations", "step_size"});
+  for (const PointColumn& c : b.columns) columns.push_back(c.name);
+  columns.insert(columns.end(), {"newton_iterations", "step_size"});
   return columns;
 }
 
@@ -203,8 +203,7 @@ std::string Row(const OrbitBranch& b, int i, const std::string& label) {
   for (ParameterId id : kAllParameters) fields.push_back(Number(o.parameters[id]));
   for (double v : {o.phi, o.x10, o.x20, o.v10}) fields.push_back(Number(v));
   for (double d : o.durations) fields.push_back(Number(d));
-  for (int k = 0; k < p.tests.size(); ++k) fields.push_back(Number(p.tests(k)));
-  fields.push_back(p.admissible ? "1" : "0");
+  for (double v : ColumnValues(b.columns, p)) fields.push_back(Number(v));
   fields.push_back(std::to_string(p.newton_iterations));
   fields.push_back(Number(p.ds));
   return fmt::format("{}", fmt::join(fields, ","));

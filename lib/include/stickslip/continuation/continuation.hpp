@@ -71,8 +71,8 @@ struct ContinuationOptions {
   bool detect_folds = true;
   bool detect_branch_points = true;
   std::vector<UserValue> user_values;
-  // By default the branch ends at the first terminal test function leaving its admissible
-  // (positive) side; with this set it goes on and flags the points beyond as inadmissible.
+  // By default the branch ends at the first terminal test function leaving its positive side;
+  // with this set it goes on, and such sign changes are special points like any other.
   bool continue_past_terminal = false;
   EventLocationOptions location;
 
@@ -96,9 +96,9 @@ struct BranchPoint {
   double lambda = 0.0;
   double ds = 0.0;         // the step that reached it (0 for the start and located points)
   int newton_iterations = 0;
-  Eigen::VectorXd tests;   // the monitor's test functions
-  std::string label;       // special-point type, "" for a regular point
-  bool admissible = true;  // every terminal test function positive
+  Eigen::VectorXd tests;     // the monitor's test functions
+  Eigen::VectorXd recorded;  // the monitor's recorded values
+  std::string label;         // special-point type, "" for a regular point
 };
 
 struct SpecialPoint {
@@ -117,6 +117,7 @@ struct Branch {
   std::vector<BranchPoint> points;
   std::vector<SpecialPoint> special_points;
   std::vector<TestFunctionInfo> test_functions;  // the monitor's
+  std::vector<std::string> recorded;             // the names of the monitor's recorded values
   BranchEnd end = BranchEnd::kRunning;
   std::string end_message;
 };
