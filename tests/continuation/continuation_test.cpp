@@ -70,17 +70,35 @@ std::vector<SpecialPoint> OfType(const Branch& b, const std::string& type) {
   return out;
 }
 
-TEST(PseudoArclength, LocatesBothFoldsOfTheCircle) {
-  const Circle circle;
+// The circle from (1, 0) towards increasing lambda, for `points` points.
+Branch RoundTheCircle(int points) {
   ContinuationOptions o = Options();
-  o.max_points = 200;
-  const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  o.max_points = points;
+  return Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+}
+
+TEST(PseudoArclength, LocatesBothFoldsOfTheCircle) {
+  const Branch b = RoundTheCircle(200);
   const auto folds = OfType(b, "LP");
   ASSERT_GE(folds.size(), 2u);
   EXPECT_NEAR(folds[0].lambda, 1.0, 1e-10);
   EXPECT_NEAR(folds[0].u(0), 0.0, 1e-9);
   EXPECT_NEAR(folds[1].lambda, -1.0, 1e-10);
   for (const BranchPoint& p : b.points) EXPECT_NEAR(p.u.squaredNorm(), 1.0, 1e-10);
+}
+
+// Round the circle from (1, 0) towards increasing lambda, the unit tangent is (-lambda, x).
+TEST(PseudoArclength, KeepsTheTangentAlongTheBranchAtEachSpecialPoint) {
+  const Branch b = RoundTheCircle(100);
+  const auto folds = OfType(b, "LP");
+  ASSERT_GE(folds.size(), 2u);
+  for (const SpecialPoint& s : b.special_points) {
+    ASSERT_EQ(s.tangent.size(), 2) << s.type;
+    EXPECT_LT((s.tangent - Eigen::Vector2d(-s.lambda, s.u(0))).norm(), 1e-9) << s.type << " at " << s.lambda;
+  }
+  EXPECT_NEAR(folds[0].tangent(1), 0.0, 1e-9);  // at lambda = 1, heading to x < 0
+  EXPECT_NEAR(folds[0].tangent(0), -1.0, 1e-9);
+  EXPECT_NEAR(folds[1].tangent(0), 1.0, 1e-9);  // at lambda = -1, heading back to x > 0
 }
 
 TEST(PseudoArclength, LocatesTheFoldOfACubicInEitherDirection) {

@@ -69,7 +69,15 @@ struct Continuation::State {
 namespace {
 
 BranchPoint MakePoint(const detail::Sample& s, double lambda, double ds, std::string label) {
-  return {s.u, lambda, ds, s.iterations, s.tests, s.recorded, std::move(label)};
+  return {s.u, lambda, ds, s.iterations, s.tests, s.recorded, s.tangent, std::move(label)};
+}
+
+// The special point at the branch's last point.
+void MarkLastPoint(Branch* b, std::string type, std::string test_function, double value = 0.0, bool located = true,
+                   double bracket = 0.0) {
+  const BranchPoint& p = b->points.back();
+  b->special_points.push_back({std::move(type), std::move(test_function), static_cast<int>(b->points.size()) - 1,
+                               p.lambda, p.u, p.tests, value, located, bracket, p.tangent});
 }
 
 }  // namespace
@@ -117,10 +125,8 @@ bool Continuation::End(BranchEnd why, std::string message) {
   branch_.end = why;
   branch_.end_message = std::move(message);
   if (!branch_.points.empty()) {
-    const int last = static_cast<int>(branch_.points.size()) - 1;
-    BranchPoint& p = branch_.points[last];
-    if (p.label.empty()) p.label = "EP";
-    branch_.special_points.push_back({"EP", ToString(why), last, p.lambda, p.u, p.tests, 0.0, true, 0.0});
+    if (branch_.points.back().label.empty()) branch_.points.back().label = "EP";
+    MarkLastPoint(&branch_, "EP", ToString(why));
   }
   return false;
 }
@@ -135,7 +141,7 @@ bool Continuation::Start() {
   st.last = std::move(*start);
   st.ds = st.step_size->Initial();
   branch_.points.push_back(MakePoint(st.last, st.Lambda(st.last.u), 0.0, "EP"));
-  branch_.special_points.push_back({"EP", "start", 0, st.Lambda(st.last.u), st.last.u, st.last.tests, 0.0, true, 0.0});
+  MarkLastPoint(&branch_, "EP", "start");
   if (st.Lambda(st.last.u) < o.lambda_min || st.Lambda(st.last.u) > o.lambda_max) {
     return End(BranchEnd::kParameterBound, "the start lies outside the parameter range");
   }
@@ -192,9 +198,7 @@ bool Continuation::RecordEvents() {
     for (const detail::Located& l : point) {
       const detail::Event& e = *l.event;
       branch_.points.push_back(MakePoint(l.sample, st.Lambda(l.sample.u), 0.0, e.type));
-      const int index = static_cast<int>(branch_.points.size()) - 1;
-      branch_.special_points.push_back({e.type, e.name, index, st.Lambda(l.sample.u), l.sample.u, l.sample.tests,
-                                        l.value, l.located, l.bracket});
+      MarkLastPoint(&branch_, e.type, e.name, l.value, l.located, l.bracket);
       if (ending) continue;
       if (e.bound) {
         ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, st.Lambda(l.sample.u)));

@@ -98,6 +98,7 @@ struct BranchPoint {
   int newton_iterations = 0;
   Eigen::VectorXd tests;     // the monitor's test functions
   Eigen::VectorXd recorded;  // the monitor's recorded values
+  Eigen::VectorXd tangent;   // unit tangent, oriented along the branch
   std::string label;         // special-point type, "" for a regular point
 };
 
@@ -111,6 +112,9 @@ struct SpecialPoint {
   double test_value = 0.0;    // the function that changed sign, at the located point
   bool located = true;        // false if the corrector failed inside the bracket
   double bracket = 0.0;       // final arclength bracket width
+  // The unit tangent there, oriented along the branch: a later branch can start from the point
+  // in a chosen direction.
+  Eigen::VectorXd tangent;
 };
 
 struct Branch {
