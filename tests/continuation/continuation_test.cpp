@@ -295,6 +295,35 @@ TEST(Monitor, ATerminalFunctionEndsTheBranchWhereItLeavesItsPositiveSide) {
   EXPECT_NEAR(b.points.back().lambda, 0.5, 1e-10);
 }
 
+// A start on a terminal function's zero: the circle from (1, 0), where lambda is exactly zero.
+Branch FromTheZeroOfATerminalLambda(int direction) {
+  FunctionMonitor monitor({{{.name = "lambda", .type = "LZ", .terminal = true}, [](double, double l) { return l; }}});
+  ContinuationOptions o = Options();
+  o.direction = direction;
+  return Continuation(Circle(), &monitor, o, Eigen::Vector2d(1.0, 0.0)).Run();
+}
+
+TEST(Monitor, AStartOnATerminalZeroGoesOnWhenTheFirstStepKeepsItPositive) {
+  const Branch b = FromTheZeroOfATerminalLambda(+1);
+  // Over the fold at lambda = 1, lambda leaves its positive side half way round, at (-1, 0).
+  EXPECT_EQ(b.end, BranchEnd::kTerminalEvent);
+  EXPECT_GT(b.points.size(), 3u);
+  EXPECT_NEAR(b.points.back().u(0), -1.0, 1e-10);
+  EXPECT_NEAR(b.points.back().lambda, 0.0, 1e-10);
+  EXPECT_EQ(OfType(b, "LZ").size(), 1u);
+}
+
+TEST(Monitor, AStartOnATerminalZeroEndsThereWhenTheFirstStepMakesItNegative) {
+  const Branch b = FromTheZeroOfATerminalLambda(-1);
+  EXPECT_EQ(b.end, BranchEnd::kTerminalEvent);
+  ASSERT_EQ(b.points.size(), 1u);
+  EXPECT_EQ(b.points[0].lambda, 0.0);
+  EXPECT_NE(b.end_message.find("lambda (LZ)"), std::string::npos) << b.end_message;
+  const auto zero = OfType(b, "LZ");
+  ASSERT_EQ(zero.size(), 1u);
+  EXPECT_EQ(zero[0].point, 0);
+}
+
 // Keeps the step fixed and counts the accepted steps it is told of.
 class FixedStep final : public StepSizeController {
  public:

@@ -111,7 +111,7 @@ Continuation::~Continuation() = default;
 bool Continuation::Step() {
   if (state_->ended) return false;
   if (!state_->started) return Start();
-  return PredictAndCorrect() && RecordEvents() && Accept();
+  return PredictAndCorrect() && LeavesTheStartOnThePositiveSides() && RecordEvents() && Accept();
 }
 
 Branch Continuation::Run() {
@@ -188,6 +188,22 @@ bool Continuation::PredictAndCorrect() {
     ds = st.step_size->OnRejected(ds);
     st.ds = ds;
   }
+}
+
+// A start may lie on a terminal function's zero (on a type boundary: an orbit with a segment of
+// zero length). That is no sign change, but where the first step makes it negative the branch
+// beyond is on the wrong side: it ends at the start.
+bool Continuation::LeavesTheStartOnThePositiveSides() {
+  State& st = *state_;
+  if (branch_.points.size() != 1) return true;  // a later zero was counted by the step reaching it
+  for (const detail::Event& e : st.events) {
+    if (!e.terminal || e.g(st.last) != 0.0 || !(e.g(st.next) < 0.0)) continue;
+    MarkLastPoint(&branch_, e.type, e.name);
+    return End(BranchEnd::kTerminalEvent,
+               fmt::format("{} ({}) is zero at the start and the first step leaves its {} side", e.name, e.type,
+                           e.positive_side));
+  }
+  return true;
 }
 
 bool Continuation::RecordEvents() {

@@ -147,6 +147,7 @@ class Continuation {
   // The parts of Step, in order; each returns false once the branch has ended.
   bool Start();              // the corrected start, the first point
   bool PredictAndCorrect();  // the next point, the step shortened until the corrector converges
+  bool LeavesTheStartOnThePositiveSides();  // of the terminal functions that are zero at the start
   bool RecordEvents();       // the special points between the last point and the next, located
   bool Accept();             // the next point becomes the last; the next step size
   bool End(BranchEnd why, std::string message);  // returns false
