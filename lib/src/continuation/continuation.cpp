@@ -42,7 +42,8 @@ void ContinuationOptions::Validate() const {
   if (!(location.fold_noise >= 0.0)) throw InvalidInput("location.fold_noise", location.fold_noise, ">= 0");
 }
 
-// Per-step mutable state, apart from the immutable setup (problem, monitor, options).
+// The setup, fixed for the branch (options, corrector, step-size controller, events), and the
+// per-step state (the last point, the next one, the step size).
 struct Continuation::State {
   ContinuationOptions options;
   detail::ArclengthCorrector corrector;

@@ -11,7 +11,9 @@
 // accepted points and located on the branch itself by a bracketing root finder in arclength
 // (TOMS 748; bisection for the sign of a determinant): LP (fold: the lambda component of the
 // tangent), BP (branch point: the sign of det [J; t^T]), UZ (user values), EP (ends), and every
-// test function of the Monitor.
+// test function of the Monitor. A terminal test function ends the branch where it leaves its
+// positive side; one exactly zero at the start (a start on a type boundary) ends it there if the
+// first step makes it negative.
 #pragma once
 
 #include <limits>
@@ -92,9 +94,9 @@ enum class BranchEnd {
 const char* ToString(BranchEnd end);
 
 struct BranchPoint {
-  Eigen::VectorXd u;       // every unknown, lambda included
+  Eigen::VectorXd u;         // every unknown, lambda included
   double lambda = 0.0;
-  double ds = 0.0;         // the step that reached it (0 for the start and located points)
+  double ds = 0.0;           // the step that reached it (0 for the start and located points)
   int newton_iterations = 0;
   Eigen::VectorXd tests;     // the monitor's test functions
   Eigen::VectorXd recorded;  // the monitor's recorded values
