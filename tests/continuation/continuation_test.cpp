@@ -4,6 +4,12 @@
 #include <cmath>
 
 #include <algorithm>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -64,17 +70,35 @@ std::vector<SpecialPoint> OfType(const Branch& b, const std::string& type) {
   return out;
 }
 
-TEST(PseudoArclength, LocatesBothFoldsOfTheCircle) {
-  const Circle circle;
+// The circle from (1, 0) towards increasing lambda, for `points` points.
+Branch RoundTheCircle(int points) {
   ContinuationOptions o = Options();
-  o.max_points = 200;
-  const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  o.max_points = points;
+  return Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+}
+
+TEST(PseudoArclength, LocatesBothFoldsOfTheCircle) {
+  const Branch b = RoundTheCircle(200);
   const auto folds = OfType(b, "LP");
   ASSERT_GE(folds.size(), 2u);
   EXPECT_NEAR(folds[0].lambda, 1.0, 1e-10);
   EXPECT_NEAR(folds[0].u(0), 0.0, 1e-9);
   EXPECT_NEAR(folds[1].lambda, -1.0, 1e-10);
   for (const BranchPoint& p : b.points) EXPECT_NEAR(p.u.squaredNorm(), 1.0, 1e-10);
+}
+
+// Round the circle from (1, 0) towards increasing lambda, the unit tangent is (-lambda, x).
+TEST(PseudoArclength, KeepsTheTangentAlongTheBranchAtEachSpecialPoint) {
+  const Branch b = RoundTheCircle(100);
+  const auto folds = OfType(b, "LP");
+  ASSERT_GE(folds.size(), 2u);
+  for (const SpecialPoint& s : b.special_points) {
+    ASSERT_EQ(s.tangent.size(), 2) << s.type;
+    EXPECT_LT((s.tangent - Eigen::Vector2d(-s.lambda, s.u(0))).norm(), 1e-9) << s.type << " at " << s.lambda;
+  }
+  EXPECT_NEAR(folds[0].tangent(1), 0.0, 1e-9);  // at lambda = 1, heading to x < 0
+  EXPECT_NEAR(folds[0].tangent(0), -1.0, 1e-9);
+  EXPECT_NEAR(folds[1].tangent(0), 1.0, 1e-9);  // at lambda = -1, heading back to x > 0
 }
 
 TEST(PseudoArclength, LocatesTheFoldOfACubicInEitherDirection) {
@@ -197,6 +221,144 @@ TEST(StepSizeController, GrowsAfterFastStepsHalvesOnFailureAndRespectsDsMax) {
   EXPECT_DOUBLE_EQ(c->OnRejected(0.1), 0.05);
 }
 
+// Test functions of (x, lambda) with their declared properties, and the radius of the point as
+// a recorded value; counts its evaluations.
+class FunctionMonitor final : public Monitor {
+ public:
+  struct Function {
+    TestFunctionInfo info;
+    std::function<double(double x, double lambda)> g;
+  };
+  explicit FunctionMonitor(std::vector<Function> functions) : functions_(std::move(functions)) {}
+  std::vector<TestFunctionInfo> TestFunctions() const override {
+    std::vector<TestFunctionInfo> info;
+    for (const Function& f : functions_) info.push_back(f.info);
+    return info;
+  }
+  std::vector<std::string> RecordedNames() const override { return {"radius"}; }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const override {
+    ++evaluations;
+    tests->resize(static_cast<int>(functions_.size()));
+    for (std::size_t k = 0; k < functions_.size(); ++k) (*tests)(static_cast<int>(k)) = functions_[k].g(u(0), u(1));
+    if (recorded) {
+      ++recorded_evaluations;
+      *recorded = Eigen::VectorXd::Constant(1, u.norm());
+    }
+  }
+  mutable int evaluations = 0;
+  mutable int recorded_evaluations = 0;
+
+ private:
+  std::vector<Function> functions_;
+};
+
+TEST(Monitor, RecordsItsValuesOnlyAtThePointsTheBranchKeeps) {
+  const Circle circle;
+  // x changes sign twice a turn round the circle: each location corrects many trial points.
+  FunctionMonitor monitor({{{.name = "x", .type = "XZ"}, [](double x, double) { return x; }}});
+  ContinuationOptions o = Options();
+  o.max_points = 60;
+  const Branch b = Continuation(circle, &monitor, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_GE(OfType(b, "XZ").size(), 2u);
+  EXPECT_EQ(b.recorded, std::vector<std::string>{"radius"});
+  for (const BranchPoint& p : b.points) {
+    ASSERT_EQ(p.recorded.size(), 1);
+    EXPECT_NEAR(p.recorded(0), 1.0, 1e-10);
+  }
+  // Every kept point once, and at most the step that the branch's end left unkept.
+  EXPECT_GE(monitor.recorded_evaluations, static_cast<int>(b.points.size()));
+  EXPECT_LE(monitor.recorded_evaluations, static_cast<int>(b.points.size()) + 1);
+  EXPECT_GT(monitor.evaluations, monitor.recorded_evaluations + 10);
+}
+
+// g = 1/(lambda - 1/2) changes sign at lambda = 1/2 through a pole, not a zero.
+TEST(Monitor, ASignChangeThroughAPoleIsASpecialPointOnlyIfTheFunctionDeclaresNoPoles) {
+  const Cubic cubic;
+  for (bool may_have_poles : {false, true}) {
+    FunctionMonitor monitor({{{.name = "pole", .type = "PO", .may_have_poles = may_have_poles},
+                              [](double, double l) { return 1.0 / (l - 0.5); }}});
+    ContinuationOptions o = Options();
+    o.lambda_max = 0.6;
+    const Branch b = Continuation(cubic, &monitor, o, Eigen::Vector2d(0.0, 0.0)).Run();
+    EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+    EXPECT_EQ(OfType(b, "PO").size(), may_have_poles ? 0u : 1u);
+  }
+}
+
+TEST(Monitor, ATerminalFunctionEndsTheBranchWhereItLeavesItsPositiveSide) {
+  const Cubic cubic;
+  FunctionMonitor monitor({{{.name = "below-half", .type = "BH", .terminal = true, .positive_side = "lower"},
+                            [](double, double l) { return 0.5 - l; }}});
+  const Branch b = Continuation(cubic, &monitor, Options(), Eigen::Vector2d(0.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kTerminalEvent);
+  EXPECT_EQ(b.end_message, "below-half (BH) left its lower side");
+  EXPECT_NEAR(b.points.back().lambda, 0.5, 1e-10);
+}
+
+// A start on a terminal function's zero: the circle from (1, 0), where lambda is exactly zero.
+Branch FromTheZeroOfATerminalLambda(int direction) {
+  FunctionMonitor monitor({{{.name = "lambda", .type = "LZ", .terminal = true}, [](double, double l) { return l; }}});
+  ContinuationOptions o = Options();
+  o.direction = direction;
+  return Continuation(Circle(), &monitor, o, Eigen::Vector2d(1.0, 0.0)).Run();
+}
+
+TEST(Monitor, AStartOnATerminalZeroGoesOnWhenTheFirstStepKeepsItPositive) {
+  const Branch b = FromTheZeroOfATerminalLambda(+1);
+  // Over the fold at lambda = 1, lambda leaves its positive side half way round, at (-1, 0).
+  EXPECT_EQ(b.end, BranchEnd::kTerminalEvent);
+  EXPECT_GT(b.points.size(), 3u);
+  EXPECT_NEAR(b.points.back().u(0), -1.0, 1e-10);
+  EXPECT_NEAR(b.points.back().lambda, 0.0, 1e-10);
+  EXPECT_EQ(OfType(b, "LZ").size(), 1u);
+}
+
+TEST(Monitor, AStartOnATerminalZeroEndsThereWhenTheFirstStepMakesItNegative) {
+  const Branch b = FromTheZeroOfATerminalLambda(-1);
+  EXPECT_EQ(b.end, BranchEnd::kTerminalEvent);
+  ASSERT_EQ(b.points.size(), 1u);
+  EXPECT_EQ(b.points[0].lambda, 0.0);
+  EXPECT_NE(b.end_message.find("lambda (LZ)"), std::string::npos) << b.end_message;
+  const auto zero = OfType(b, "LZ");
+  ASSERT_EQ(zero.size(), 1u);
+  EXPECT_EQ(zero[0].point, 0);
+}
+
+// Keeps the step fixed and counts the accepted steps it is told of.
+class FixedStep final : public StepSizeController {
+ public:
+  FixedStep(double ds, int* accepted) : ds_(ds), accepted_(accepted) {}
+  double Initial() const override { return ds_; }
+  double OnAccepted(double, int) override {
+    ++*accepted_;
+    return ds_;
+  }
+  double OnRejected(double ds) override { return 0.5 * ds; }
+
+ private:
+  double ds_;
+  int* accepted_;
+};
+
+TEST(Continuation, TakesItsStepsFromAnInjectedStepSizeController) {
+  const Circle circle;
+  ContinuationOptions o = Options();  // the default controller would grow the steps to 0.2
+  o.max_points = 20;
+  o.detect_folds = false;
+  int accepted = 0;
+  const Branch b =
+      Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0), std::make_unique<FixedStep>(0.03, &accepted)).Run();
+  ASSERT_EQ(b.points.size(), 20u);
+  EXPECT_EQ(accepted, 19);
+  for (std::size_t i = 1; i < b.points.size(); ++i) {
+    EXPECT_EQ(b.points[i].ds, 0.03);
+    // On the unit circle a step s along the tangent turns the point by asin(s).
+    const double turned = std::atan2(b.points[i].lambda, b.points[i].u(0)) -
+                          std::atan2(b.points[i - 1].lambda, b.points[i - 1].u(0));
+    EXPECT_NEAR(turned, std::asin(0.03), 1e-10);
+  }
+}
+
 TEST(Continuation, CanBeSteppedOnePointAtATime) {
   const Circle circle;
   ContinuationOptions o = Options();
@@ -211,12 +373,41 @@ TEST(Continuation, CanBeSteppedOnePointAtATime) {
   EXPECT_EQ(static_cast<int>(c.branch().points.size()), 10);
 }
 
+// The InvalidInput that `f` throws, if any.
+std::optional<InvalidInput> ThrownInvalidInput(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InvalidInput& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
 TEST(ContinuationOptions, RejectInconsistentStepBounds) {
   ContinuationOptions o = Options();
   o.step.ds_min = 1.0;
-  std::string error;
-  EXPECT_FALSE(o.IsValid(&error));
-  EXPECT_NE(error.find("ds_min"), std::string::npos);
+  const std::optional<InvalidInput> e = ThrownInvalidInput([&] { o.Validate(); });
+  ASSERT_TRUE(e.has_value()) << "ds_min > ds was accepted";
+  EXPECT_EQ(e->field(), "ds_min");
+  EXPECT_EQ(e->value(), "1");
+}
+
+TEST(Continuation, ThrowsInvalidInputNamingTheInvalidField) {
+  const Circle circle;
+  const std::vector<std::pair<std::function<void(ContinuationOptions*)>, std::string>> cases = {
+      {[](ContinuationOptions* o) { o->step.ds = 0.0; }, "ds"},
+      {[](ContinuationOptions* o) { o->direction = 0; }, "direction"},
+      {[](ContinuationOptions* o) { o->location.tolerance = 0.0; }, "location.tolerance"},
+      {[](ContinuationOptions* o) { o->parameter_index = 2; }, "parameter_index"},  // unknowns: x, lambda
+  };
+  for (const auto& [invalidate, field] : cases) {
+    ContinuationOptions o = Options();
+    invalidate(&o);
+    const std::optional<InvalidInput> e =
+        ThrownInvalidInput([&] { Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)); });
+    ASSERT_TRUE(e.has_value()) << field << " was accepted";
+    EXPECT_EQ(e->field(), field);
+  }
 }
 
 }  // namespace

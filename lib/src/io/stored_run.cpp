@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 
 #ifndef STICKSLIP_VERSION
 #define STICKSLIP_VERSION "unknown"
@@ -28,18 +28,18 @@ NamedValues SolutionColumns(const Orbit& orbit) {
 }
 
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
-  // The monitor's values by name: its margins, then what it records of the stability.
+  // The monitor's columns by name: its margins, then what it records of the stability.
   auto record = [&](int i, std::string label) {
     const BranchPoint& p = b.branch.points[i];
     StoredPoint point{.pt = i + 1, .label = std::move(label), .orbit = b.orbits[i]};
     std::map<std::string, double> recorded;
-    for (std::size_t k = 0; k < b.branch.test_functions.size(); ++k) {
-      const std::string& name = b.branch.test_functions[k].name;
-      const double value = p.tests(static_cast<int>(k));
+    const std::vector<double> values = ColumnValues(b.columns, p);
+    for (std::size_t k = 0; k < b.columns.size(); ++k) {
+      const std::string& name = b.columns[k].name;
       if (name.starts_with("margin:")) {
-        point.margins.emplace_back(name.substr(7), value);
+        point.margins.emplace_back(name.substr(7), values[k]);
       } else {
-        recorded[name] = value;
+        recorded[name] = values[k];
       }
     }
     for (int k = 1; recorded.count(fmt::format("floquet:mu{}_re", k)) != 0; ++k) {
@@ -50,7 +50,7 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
     point.fold_test = recorded.at("floquet:det(M-I)");
     point.flip_test = recorded.at("floquet:det(M+I)");
     point.torus_test = recorded.at("floquet:torus");
-    point.admissible = p.admissible;
+    point.admissible = recorded.at("admissible") != 0.0;
     point.newton_iterations = p.newton_iterations;
     point.step_size = p.ds;
     return point;

@@ -11,7 +11,9 @@
 // accepted points and located on the branch itself by a bracketing root finder in arclength
 // (TOMS 748; bisection for the sign of a determinant): LP (fold: the lambda component of the
 // tangent), BP (branch point: the sign of det [J; t^T]), UZ (user values), EP (ends), and every
-// test function of the Monitor.
+// test function of the Monitor. A terminal test function ends the branch where it leaves its
+// positive side; one exactly zero at the start (a start on a type boundary) ends it there if the
+// first step makes it negative.
 #pragma once
 
 #include <limits>
@@ -23,6 +25,7 @@
 
 #include "stickslip/continuation/monitor.hpp"
 #include "stickslip/continuation/step_size.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/numerics/newton.hpp"
 
 namespace stickslip {
@@ -34,12 +37,27 @@ struct UserValue {
   std::string name;    // for the report, e.g. "omega=0.6"
 };
 
+// Where special points are located on the branch, and how hard the corrector tries there.
+struct EventLocationOptions {
+  double tolerance = 1e-11;       // final arclength bracket of a located special point
+  // Corrector iterations (at least) at a trial point: near a singular point (a branch point)
+  // Newton converges slowly, and a trial point cannot shrink its step as a step can.
+  int corrector_iterations = 50;
+  int max_iterations = 100;       // of the bracketing root finder (TOMS 748)
+  // Events less than this many `tolerance`s apart in arclength are one point (a fold where a
+  // stop degenerates, say), reported in a fixed order whatever the step size.
+  double same_point = 10.0;
+  // A fold function (the lambda component of the tangent) whose values on both sides are below
+  // this is rounding noise around zero, where the branch runs at constant lambda: no fold.
+  double fold_noise = 1e-8;
+};
+
 struct ContinuationOptions {
   int parameter_index = -1;  // the unknown that is lambda; required
   int direction = 1;         // +1: start towards increasing lambda, -1: decreasing
   double lambda_min = -std::numeric_limits<double>::infinity();  // the branch ends at these
   double lambda_max = std::numeric_limits<double>::infinity();   // bounds (located, EP)
-  int max_points = 500;      // accepted points, the start included
+  int max_points = 2000;     // accepted points, the start included
   StepSizeOptions step;
   NewtonOptions corrector = [] {
     NewtonOptions o;
@@ -47,15 +65,22 @@ struct ContinuationOptions {
     o.estimate_condition = false;
     return o;
   }();
+  // Corrector iterations (at least) for the start, which may be a rough guess of a point.
+  int start_iterations = 30;
+  // A corrected point within this distance of a parameter bound, relative to 1 + |bound|, is
+  // moved onto the bound (the corrector keeps lambda there only to second order in the step).
+  double bound_tolerance = 1e-10;
   bool detect_folds = true;
   bool detect_branch_points = true;
   std::vector<UserValue> user_values;
-  // By default the branch ends at the first terminal test function leaving its admissible
-  // (positive) side; with this set it goes on and flags the points beyond as inadmissible.
+  // By default the branch ends at the first terminal test function leaving its positive side;
+  // with this set it goes on, and such sign changes are special points like any other.
   bool continue_past_terminal = false;
-  double locate_tolerance = 1e-11;  // final arclength bracket of a located special point
+  EventLocationOptions location;
 
-  bool IsValid(std::string* error) const;
+  // Throws InvalidInput naming the first field out of its valid range (parameter_index is
+  // checked against the problem by Continuation).
+  void Validate() const;
 };
 
 enum class BranchEnd {
@@ -69,13 +94,14 @@ enum class BranchEnd {
 const char* ToString(BranchEnd end);
 
 struct BranchPoint {
-  Eigen::VectorXd u;       // every unknown, lambda included
+  Eigen::VectorXd u;         // every unknown, lambda included
   double lambda = 0.0;
-  double ds = 0.0;         // the step that reached it (0 for the start and located points)
+  double ds = 0.0;           // the step that reached it (0 for the start and located points)
   int newton_iterations = 0;
-  Eigen::VectorXd tests;   // the monitor's test functions
-  std::string label;       // special-point type, "" for a regular point
-  bool admissible = true;  // every terminal test function positive
+  Eigen::VectorXd tests;     // the monitor's test functions
+  Eigen::VectorXd recorded;  // the monitor's recorded values
+  Eigen::VectorXd tangent;   // unit tangent, oriented along the branch
+  std::string label;         // special-point type, "" for a regular point
 };
 
 struct SpecialPoint {
@@ -88,12 +114,16 @@ struct SpecialPoint {
   double test_value = 0.0;    // the function that changed sign, at the located point
   bool located = true;        // false if the corrector failed inside the bracket
   double bracket = 0.0;       // final arclength bracket width
+  // The unit tangent there, oriented along the branch: a later branch can start from the point
+  // in a chosen direction.
+  Eigen::VectorXd tangent;
 };
 
 struct Branch {
   std::vector<BranchPoint> points;
   std::vector<SpecialPoint> special_points;
   std::vector<TestFunctionInfo> test_functions;  // the monitor's
+  std::vector<std::string> recorded;             // the names of the monitor's recorded values
   BranchEnd end = BranchEnd::kRunning;
   std::string end_message;
 };
@@ -101,9 +131,11 @@ struct Branch {
 class Continuation {
  public:
   // `monitor` may be null. `start` need not lie exactly on the branch: it is corrected at its
-  // lambda first. Throws std::invalid_argument on invalid options or sizes.
+  // lambda first. `step_size` chooses the steps; null means StepSizeController::Create(
+  // options.step). Throws InvalidInput on invalid options, std::invalid_argument on sizes that
+  // do not fit the problem.
   Continuation(const NonlinearSystem& problem, const Monitor* monitor, ContinuationOptions options,
-               Eigen::VectorXd start);
+               Eigen::VectorXd start, std::unique_ptr<StepSizeController> step_size = nullptr);
   ~Continuation();
 
   // Computes the next accepted point (the corrected start on the first call), with every
@@ -114,6 +146,14 @@ class Continuation {
 
  private:
   struct State;
+  // The parts of Step, in order; each returns false once the branch has ended.
+  bool Start();              // the corrected start, the first point
+  bool PredictAndCorrect();  // the next point, the step shortened until the corrector converges
+  bool LeavesTheStartOnThePositiveSides();  // of the terminal functions that are zero at the start
+  bool RecordEvents();       // the special points between the last point and the next, located
+  bool Accept();             // the next point becomes the last; the next step size
+  bool End(BranchEnd why, std::string message);  // returns false
+
   std::unique_ptr<State> state_;
   Branch branch_;
 };

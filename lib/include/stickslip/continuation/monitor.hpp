@@ -1,6 +1,7 @@
-// Problem-specific test functions watched along a branch: named scalar functions of the branch
-// point, each with the special-point type its sign change means. The continuation engine adds
-// its own (LP, BP, UZ) and knows nothing of what these mean.
+// Problem-specific quantities along a branch, apart as BifurcationKit keeps events apart from
+// record_from_solution: test functions, whose sign changes are special points (events), and
+// recorded values, stored with each point the branch keeps and never watched. The engine adds
+// its own test functions (LP, BP, UZ) and knows nothing of what these mean.
 #pragma once
 
 #include <string>
@@ -13,17 +14,26 @@ namespace stickslip {
 struct TestFunctionInfo {
   std::string name;       // e.g. "G:3"
   std::string type;       // special-point code reported at a sign change, e.g. "GR"
-  bool terminal = false;  // the branch ends there unless told to continue past such points
-  bool detect = true;     // false: a value recorded at every point, never an event
+  bool terminal = false;  // the branch ends where it leaves its positive side, unless told to
+                          // continue past such points
+  // A sign change may be a pole rather than a zero (a saltation matrix blows up where an event
+  // becomes tangent): with this set, one whose located value is larger than at both ends is no
+  // special point.
+  bool may_have_poles = false;
+  std::string positive_side = "positive";  // what the positive side means, for the end message
 };
 
 class Monitor {
  public:
   virtual ~Monitor() = default;
   virtual std::vector<TestFunctionInfo> TestFunctions() const = 0;
-  // Values at a branch point u (all unknowns, the continuation parameter included). Non-finite
-  // values mean "not defined here" and are never taken for a sign change.
-  virtual Eigen::VectorXd Evaluate(const Eigen::VectorXd& u) const = 0;
+  // The names of the recorded values; none by default.
+  virtual std::vector<std::string> RecordedNames() const { return {}; }
+  // At a branch point u (all unknowns, the continuation parameter included): the test
+  // functions, in TestFunctions' order, and the recorded values where `recorded` is not null
+  // (the engine asks for them at the points it keeps, not at the trial points of locating an
+  // event). Non-finite test values mean "not defined here" and are never taken for a sign change.
+  virtual void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const = 0;
 };
 
 }  // namespace stickslip

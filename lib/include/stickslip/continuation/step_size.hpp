@@ -9,9 +9,14 @@ namespace stickslip {
 struct StepSizeOptions {
   double ds = 0.01;       // initial arclength step, > 0
   double ds_min = 1e-8;   // the branch ends when a step would have to be smaller
-  double ds_max = 0.1;    // steps never grow beyond this
+  double ds_max = 0.05;   // steps never grow beyond this
   double growth = 1.5;    // largest growth factor after a fast corrector
   int target_iterations = 3;  // corrector iterations regarded as "fast"
+  double slowest_shrink = 0.5;  // smallest factor after a slow (but converged) corrector
+  double rejection_shrink = 0.5;  // factor on the step after a failed corrector
+
+  // Throws InvalidInput naming the first field out of its valid range.
+  void Validate() const;
 };
 
 class StepSizeController {
@@ -24,7 +29,8 @@ class StepSizeController {
   virtual double OnRejected(double ds) = 0;
 
   // The default policy: grow by up to `growth` when the corrector needed at most
-  // target_iterations, shrink in proportion beyond, halve on failure; bounded by ds_max.
+  // target_iterations, shrink in proportion beyond (down to slowest_shrink), shrink by
+  // rejection_shrink on failure; bounded by ds_max.
   static std::unique_ptr<StepSizeController> Create(const StepSizeOptions& options);
 };
 

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip {

@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/named_values.hpp"
 
@@ -66,15 +67,16 @@ struct RunFile {
   int direction = 1;
   double range_min = 0.0;
   double range_max = 0.0;
-  double ds = 0.01;
-  double ds_min = 1e-8;
-  double ds_max = 0.05;
-  int max_points = 2000;
+  // Keys left out take the engine's defaults, stated once in its option structs.
+  double ds = StepSizeOptions{}.ds;
+  double ds_min = StepSizeOptions{}.ds_min;
+  double ds_max = StepSizeOptions{}.ds_max;
+  int max_points = ContinuationOptions{}.max_points;
   std::string shooting = "auto";
   std::string linear_solver = "klu";
-  bool detect_folds = true;
-  bool detect_branch_points = true;
-  bool continue_past_type_changes = false;
+  bool detect_folds = ContinuationOptions{}.detect_folds;
+  bool detect_branch_points = ContinuationOptions{}.detect_branch_points;
+  bool continue_past_type_changes = ContinuationOptions{}.continue_past_terminal;
   NamedValues user_values;  // (variable, value); the continuation parameter's from user_values
 };
 

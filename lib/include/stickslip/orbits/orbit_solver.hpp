@@ -30,7 +30,7 @@ int VariableIndex(int n, std::string_view field, std::string_view name);
 // with both counts, when the system would not be square.
 std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);
 
-// FreeIndices with the error as a string instead of thrown, for continuation/orbit_continuation.cpp
+// FreeIndices with the error as a string instead of thrown, for branches/orbit_continuation.cpp
 // only, until that file calls FreeIndices (issue 10, item 6). New code calls FreeIndices.
 struct FreeVariables {
   std::vector<int> indices;

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/orbits/margins.hpp"
@@ -43,9 +43,12 @@ class SweepAgainstBranch : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SweepAgainstBranch, SettlesOnStableOrbitsAndLeavesUnstableOnes) {
   const OrbitBranch b = Branch(GetParam());
+  const auto admissible = std::find_if(b.columns.begin(), b.columns.end(),
+                                       [](const PointColumn& c) { return c.name == "admissible"; });
+  ASSERT_NE(admissible, b.columns.end());
   int stable = 0, unstable = 0;
   for (std::size_t i = 0; i < b.orbits.size(); i += 7) {
-    if (!b.branch.points[i].admissible) continue;
+    if (ColumnValues(b.columns, b.branch.points[i])[admissible - b.columns.begin()] == 0.0) continue;
     const Orbit& o = b.orbits[i];
     const Stability s = StabilityOf(o);
     // Keep clear of the unit circle, where convergence or escape takes too long to see, and of

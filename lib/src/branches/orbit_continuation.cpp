@@ -1,63 +1,13 @@
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "stickslip/orbits/stability.hpp"
-
 namespace stickslip {
 
 namespace ov = orbit_variables;
-
-std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode) {
-  switch (margin.kind) {
-    case MarginKind::kDuration: return segment_mode == Mode::kStick ? "T0" : "S0";
-    case MarginKind::kSlipVelocity:
-    case MarginKind::kStopSlope: return "NS";
-    case MarginKind::kStopForce: return "SK";
-    case MarginKind::kFrictionLevel: return "EP";
-    case MarginKind::kStickConstraint:
-    case MarginKind::kExitSlope: break;
-  }
-  return "GR";
-}
-
-OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : system_(system) {
-  // The margins' names and kinds depend on the signature only.
-  for (const Margin& m : AdmissibilityMargins(start)) {
-    const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
-    info_.push_back({"margin:" + m.Name(), OrbitTypeChangeCode(m, mode), true});
-  }
-  // Stability: recorded at every point; the multipliers through -1 and the unit circle are events.
-  for (int k = 1; k <= 4; ++k) {
-    info_.push_back({fmt::format("floquet:mu{}_re", k), "", false, false});
-    info_.push_back({fmt::format("floquet:mu{}_im", k), "", false, false});
-  }
-  info_.push_back({"stable", "", false, false});
-  info_.push_back({"floquet:det(M-I)", "", false, false});  // zero at a fold (LP)
-  info_.push_back({"floquet:det(M+I)", "PD", false, true});
-  info_.push_back({"floquet:torus", "TR", false, true});
-}
-
-Eigen::VectorXd OrbitMonitor::Evaluate(const Eigen::VectorXd& u) const {
-  const Orbit orbit = system_.ToOrbit(u);
-  const std::vector<Margin> margins = AdmissibilityMargins(orbit);
-  const Stability stability = StabilityOf(orbit);
-  Eigen::VectorXd values(static_cast<int>(info_.size()));
-  int k = 0;
-  for (const Margin& m : margins) values(k++) = m.value;
-  for (const std::complex<double>& mu : stability.multipliers) {
-    values(k++) = mu.real();
-    values(k++) = mu.imag();
-  }
-  values(k++) = stability.stable ? 1.0 : 0.0;
-  values(k++) = stability.fold_test;
-  values(k++) = stability.flip_test;
-  values(k++) = stability.torus_test;
-  return values;
-}
 
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
   const Signature& signature = setup.start.signature;
@@ -96,6 +46,7 @@ OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
   OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
   OrbitBranch result;
   result.shooting = problem.system->equations().shooting();
+  result.columns = problem.monitor->Columns();
   Continuation continuation(*problem.system, problem.monitor.get(), problem.options, problem.start);
   while (continuation.Step()) {
     if (observer) observer(continuation.branch());

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/continuation/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/events.hpp"
 #include "stickslip/model/simulation.hpp"

@@ -1,0 +1,68 @@
+// What the continuation engine watches and records along a branch of periodic orbits.
+//
+// Monitored (test functions, whose sign changes are special points): the admissibility margins
+// (orbits/margins.hpp), terminal, whose sign change is a change of orbit type:
+//   GR  a stick constraint G or G1 grazing zero inside a stick (G:i, G1:i), or born at the stick
+//       exit (exit-slope:i)
+//   T0  a stick phase shrinking to zero (duration:i of a stick)
+//   S0  a slip phase shrinking to zero (duration:i of a slip)
+//   NS  x2' touching zero inside a slip (velocity:i), or at its end (stop-slope:i): a new stop
+//   SK  the force condition at a stop crossing its threshold (reversal:i, stick-entry:i,
+//       abnormal-stop:i)
+//   EP  the sliding friction level u_s reaching zero: the end of the physical family
+// and det(M + I) (PD, a multiplier through -1) and the torus test (TR, a complex pair on the
+// unit circle). All may have poles: the saltation matrices blow up where an event becomes
+// tangent.
+//
+// Recorded with each point: the Floquet multipliers, whether the orbit is stable, det(M - I)
+// (zero at a fold) and whether it is admissible (every defined margin positive).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/continuation/continuation.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/periodicity.hpp"
+
+namespace stickslip {
+
+// The special-point code of a margin's sign change.
+std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode);
+
+// One per-point column of an orbit branch, as the result files have it.
+struct PointColumn {
+  std::string name;        // e.g. "margin:G:3", "floquet:mu1_re", "admissible"
+  bool monitored = false;  // a test function (BranchPoint::tests), else a recorded value
+  int index = 0;           // in BranchPoint::tests or BranchPoint::recorded
+};
+// The columns' values at a branch point.
+std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const BranchPoint& point);
+
+class OrbitMonitor final : public Monitor {
+ public:
+  // `start` is any orbit of the system's signature (the names depend on the signature only).
+  OrbitMonitor(const OrbitSystem& system, const Orbit& start);
+  std::vector<TestFunctionInfo> TestFunctions() const override { return info_; }
+  std::vector<std::string> RecordedNames() const override { return recorded_; }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const override;
+  // Every column, monitored and recorded, in the order of the result files: the margins, the
+  // multipliers, stable, det(M - I), det(M + I), the torus test, admissible.
+  const std::vector<PointColumn>& Columns() const { return columns_; }
+
+ private:
+  struct Evaluated;  // what the columns are computed from, at one point
+  using Value = std::function<double(const Evaluated&)>;
+  // Each adds the next column.
+  void AddTestFunction(TestFunctionInfo info, Value value);
+  void AddRecorded(std::string name, Value value);
+
+  const OrbitSystem& system_;
+  std::vector<TestFunctionInfo> info_;
+  std::vector<std::string> recorded_;
+  std::vector<PointColumn> columns_;
+  std::vector<Value> values_;  // one per column
+};
+
+}  // namespace stickslip

@@ -1,0 +1,93 @@
+#include "stickslip/branches/orbit_monitor.hpp"
+
+#include <cmath>
+#include <complex>
+
+#include <fmt/format.h>
+
+#include "stickslip/orbits/stability.hpp"
+
+namespace stickslip {
+
+std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode) {
+  switch (margin.kind) {
+    case MarginKind::kDuration: return segment_mode == Mode::kStick ? "T0" : "S0";
+    case MarginKind::kSlipVelocity:
+    case MarginKind::kStopSlope: return "NS";
+    case MarginKind::kStopForce: return "SK";
+    case MarginKind::kFrictionLevel: return "EP";
+    case MarginKind::kStickConstraint:
+    case MarginKind::kExitSlope: break;
+  }
+  return "GR";
+}
+
+std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const BranchPoint& point) {
+  std::vector<double> values;
+  values.reserve(columns.size());
+  for (const PointColumn& c : columns) values.push_back(c.monitored ? point.tests(c.index) : point.recorded(c.index));
+  return values;
+}
+
+struct OrbitMonitor::Evaluated {
+  std::vector<Margin> margins;
+  Stability stability;
+};
+
+void OrbitMonitor::AddTestFunction(TestFunctionInfo info, Value value) {
+  columns_.push_back({info.name, true, static_cast<int>(info_.size())});
+  info_.push_back(std::move(info));
+  values_.push_back(std::move(value));
+}
+
+void OrbitMonitor::AddRecorded(std::string name, Value value) {
+  columns_.push_back({name, false, static_cast<int>(recorded_.size())});
+  recorded_.push_back(std::move(name));
+  values_.push_back(std::move(value));
+}
+
+OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : system_(system) {
+  const std::vector<Margin> margins = AdmissibilityMargins(start);
+  for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
+    const Margin& m = margins[k];
+    const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
+    AddTestFunction({.name = "margin:" + m.Name(), .type = OrbitTypeChangeCode(m, mode), .terminal = true,
+                     .may_have_poles = true, .positive_side = "admissible"},
+                    [k](const Evaluated& e) { return e.margins[k].value; });
+  }
+  for (int k = 0; k < 4; ++k) {
+    AddRecorded(fmt::format("floquet:mu{}_re", k + 1),
+                [k](const Evaluated& e) { return e.stability.multipliers[k].real(); });
+    AddRecorded(fmt::format("floquet:mu{}_im", k + 1),
+                [k](const Evaluated& e) { return e.stability.multipliers[k].imag(); });
+  }
+  AddRecorded("stable", [](const Evaluated& e) { return e.stability.stable ? 1.0 : 0.0; });
+  AddRecorded("floquet:det(M-I)", [](const Evaluated& e) { return e.stability.fold_test; });
+  AddTestFunction({.name = "floquet:det(M+I)", .type = "PD", .may_have_poles = true},
+                  [](const Evaluated& e) { return e.stability.flip_test; });
+  AddTestFunction({.name = "floquet:torus", .type = "TR", .may_have_poles = true},
+                  [](const Evaluated& e) { return e.stability.torus_test; });
+  AddRecorded("admissible", [](const Evaluated& e) {
+    for (const Margin& m : e.margins) {
+      if (std::isfinite(m.value) && m.value <= 0.0) return 0.0;  // non-finite: not defined here
+    }
+    return 1.0;
+  });
+}
+
+void OrbitMonitor::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const {
+  const Orbit orbit = system_.ToOrbit(u);
+  const Evaluated evaluated{AdmissibilityMargins(orbit), StabilityOf(orbit)};
+  tests->resize(static_cast<int>(info_.size()));
+  if (recorded) recorded->resize(static_cast<int>(recorded_.size()));
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    const PointColumn& column = columns_[c];
+    if (column.monitored) {
+      (*tests)(column.index) = values_[c](evaluated);
+    } else if (recorded) {
+      (*recorded)(column.index) = values_[c](evaluated);
+    }
+  }
+}
+
+}  // namespace stickslip

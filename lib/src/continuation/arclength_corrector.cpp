@@ -1,0 +1,83 @@
+#include "arclength_corrector.hpp"
+
+#include <algorithm>
+
+#include "bordered_systems.hpp"
+
+namespace stickslip::detail {
+
+ArclengthCorrector::ArclengthCorrector(const NonlinearSystem& problem, const Monitor* monitor,
+                                       const ContinuationOptions& options)
+    : problem_(problem), monitor_(monitor), options_(options),
+      solver_(LinearSolver::Create(options.corrector.linear_solver)) {}
+
+bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, bool record, Sample* sample) {
+  Eigen::VectorXd f;
+  JacobianMatrix j;
+  problem_.Evaluate(sample->u, &f, &j);
+  if (!solver_->Factorize(AppendRow(j, reference))) return false;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(sample->u.size());
+  rhs(sample->u.size() - 1) = 1.0;
+  sample->tangent = solver_->Solve(rhs);
+  // With A = [J; r^T] and A t~ = e (so r.t~ = 1: t keeps the orientation of r), the rank-one
+  // update to B = [J; t^T], t = t~/|t~|, gives det B = det A (1 + (t - r).t~) = det A |t~|: one
+  // factorisation serves.
+  sample->det_sign = solver_->DeterminantSign();
+  sample->tangent /= sample->tangent.norm();
+  if (monitor_) monitor_->Evaluate(sample->u, &sample->tests, record ? &sample->recorded : nullptr);
+  return true;
+}
+
+std::optional<Sample> ArclengthCorrector::Start(const Eigen::VectorXd& guess, std::string* failure) {
+  const FixedParameterSystem fixed(problem_, guess, options_.parameter_index);
+  NewtonOptions newton = options_.corrector;
+  newton.max_iterations = std::max(newton.max_iterations, options_.start_iterations);
+  const NewtonResult r = SolveNewton(fixed, fixed.Reduce(guess), newton);
+  if (!r.summary.Converged()) {
+    *failure = "the start point does not converge: " + r.summary.BriefReport();
+    return std::nullopt;
+  }
+  Sample sample;
+  sample.u = fixed.Expand(r.solution);
+  sample.iterations = r.summary.iterations;
+  Eigen::VectorXd axis = Eigen::VectorXd::Zero(guess.size());
+  axis(options_.parameter_index) = options_.direction;
+  if (!Complete(axis, true, &sample)) {
+    *failure = "the bordered Jacobian is singular at the start point";
+    return std::nullopt;
+  }
+  return sample;
+}
+
+std::optional<Sample> ArclengthCorrector::Corrected(const Sample& from, double s, Attempt attempt) {
+  const BorderedSystem bordered(problem_, from.tangent, from.u, s);
+  NewtonOptions newton = options_.corrector;
+  if (attempt != Attempt::kStep) {
+    newton.max_iterations = std::max(newton.max_iterations, options_.location.corrector_iterations);
+  }
+  NewtonResult r = SolveNewton(bordered, from.u + s * from.tangent, newton);
+  if (!r.summary.Converged()) {
+    last_failure_ = r.summary.BriefReport();
+    return std::nullopt;
+  }
+  Sample sample;
+  sample.u = std::move(r.solution);
+  sample.iterations = r.summary.iterations;
+  if (!Complete(from.tangent, attempt != Attempt::kLocationTrial, &sample)) return std::nullopt;
+  return sample;
+}
+
+std::optional<Sample> ArclengthCorrector::OnBound(const Sample& from, const Sample& near, double bound) {
+  Eigen::VectorXd target = near.u;
+  target(options_.parameter_index) = bound;
+  const FixedParameterSystem fixed(problem_, target, options_.parameter_index);
+  const NewtonResult r = SolveNewton(fixed, fixed.Reduce(target), options_.corrector);
+  if (!r.summary.Converged()) return std::nullopt;
+  Sample sample;
+  sample.u = fixed.Expand(r.solution);
+  sample.iterations = near.iterations + r.summary.iterations;
+  if (!Complete(from.tangent, true, &sample)) return std::nullopt;
+  return sample;
+}
+
+}  // namespace stickslip::detail

@@ -1,0 +1,107 @@
+#include "event_location.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+#include <boost/math/tools/roots.hpp>
+
+namespace stickslip::detail {
+
+namespace {
+
+// Thrown inside location when the corrector fails at a trial arclength.
+struct CorrectorFailure {};
+
+// Narrows [*lo, *hi] = [0, ds] onto the zero; throws CorrectorFailure, leaving the bracket
+// reached so far.
+template <typename G>
+void Bracket(const Event& event, G g_at, double ga, double gb, const EventLocationOptions& options, double* lo,
+             double* hi) {
+  if (event.sign_only) {
+    double g_lo = ga;
+    while (*hi - *lo > options.tolerance) {
+      const double mid = 0.5 * (*lo + *hi);
+      const double g_mid = g_at(mid);
+      if (g_mid * g_lo > 0.0) {
+        *lo = mid;
+        g_lo = g_mid;
+      } else {
+        *hi = mid;
+      }
+    }
+  } else if (gb != 0.0) {
+    std::uintmax_t iterations = static_cast<std::uintmax_t>(options.max_iterations);
+    const double tol = options.tolerance;
+    std::tie(*lo, *hi) = boost::math::tools::toms748_solve(
+        g_at, *lo, *hi, ga, gb, [tol](double x, double y) { return std::abs(y - x) <= tol; }, iterations);
+  }
+}
+
+}  // namespace
+
+std::optional<Located> Locate(const Event& event, const Sample& a, const Sample& b, double ds, double ga, double gb,
+                              ArclengthCorrector& corrector, const EventLocationOptions& options) {
+  auto g_at = [&](double s) {
+    std::optional<Sample> p = corrector.Corrected(a, s, Attempt::kLocationTrial);
+    if (!p) throw CorrectorFailure{};
+    return event.g(*p);
+  };
+  Located l{0.0, &event, b, 0.0, ga, true, 0.0};
+  double lo = 0.0, hi = ds;
+  try {
+    Bracket(event, g_at, ga, gb, options, &lo, &hi);
+  } catch (const CorrectorFailure&) {
+    l.located = false;
+  }
+  if (gb == 0.0) lo = hi = ds;  // the zero is at b
+  l.bracket = hi - lo;
+  if (!l.located) {
+    l.s = ds * ga / (ga - gb);
+  } else {
+    // A sign is located where it has changed; a continuous function in the bracket's middle.
+    l.s = event.sign_only ? hi : 0.5 * (lo + hi);
+    if (l.s != ds) {
+      std::optional<Sample> p = corrector.Corrected(a, l.s, Attempt::kLocated);
+      if (p) {
+        l.sample = std::move(*p);
+      } else {
+        l.located = false;
+      }
+    }
+  }
+  l.value = event.g(l.sample);
+  // A sign change through a pole is no zero: the located value is large, not small.
+  if (l.located && event.may_have_poles && !event.sign_only &&
+      std::abs(l.value) > std::max(std::abs(ga), std::abs(gb))) {
+    return std::nullopt;
+  }
+  return l;
+}
+
+std::vector<std::vector<Located>> DetectAndLocate(const std::vector<Event>& events, const Sample& a, const Sample& b,
+                                                  double ds, ArclengthCorrector& corrector,
+                                                  const EventLocationOptions& options) {
+  std::vector<Located> located;
+  for (const Event& e : events) {
+    const double ga = e.g(a);
+    const double gb = e.g(b);
+    if (!ChangesSign(e, ga, gb)) continue;
+    if (std::optional<Located> l = Locate(e, a, b, ds, ga, gb, corrector, options)) located.push_back(std::move(*l));
+  }
+  std::sort(located.begin(), located.end(), [](const Located& x, const Located& y) { return x.s < y.s; });
+  const double same_point = options.same_point * options.tolerance;
+  std::vector<std::vector<Located>> points;
+  for (std::size_t k = 0; k < located.size(); ++k) {
+    if (k == 0 || located[k].s - located[k - 1].s > same_point) points.emplace_back();
+    points.back().push_back(std::move(located[k]));
+  }
+  for (std::vector<Located>& point : points) {
+    std::stable_sort(point.begin(), point.end(),
+                     [](const Located& x, const Located& y) { return x.event->priority < y.event->priority; });
+  }
+  return points;
+}
+
+}  // namespace stickslip::detail
