@@ -52,12 +52,18 @@ std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& ch
   return free;
 }
 
-FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& choice) {
-  try {
-    return {FreeIndices(signature, choice), {}};
-  } catch (const InvalidInput& e) {
-    return {{}, e.what()};
+int ContinuedVariable(const Signature& signature, const std::vector<int>& free, bool tie_static_friction,
+                      std::string_view parameter) {
+  const int n = signature.size();
+  const int index = VariableIndex(n, "parameter", parameter);
+  if (tie_static_friction && index == ov::Parameter(n, ParameterId::kStaticFriction)) {
+    throw InvalidInput::WithMessage("parameter", "parameter = 'u_r' is tied to u_s (tie_u_r): continue in u_s");
   }
+  if (std::find(free.begin(), free.end(), index) != free.end()) {
+    throw InvalidInput::WithMessage(
+        "parameter", fmt::format("parameter = '{}' is an unknown already: continue in a held variable", parameter));
+  }
+  return index;
 }
 
 Shooting ResolveShooting(ShootingChoice choice, int listed_segments, int max_single_shooting_segments) {

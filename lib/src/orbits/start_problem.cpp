@@ -177,14 +177,7 @@ StartProblem BuildStartProblem(const StartInput& input) {
 
   std::optional<int> parameter;
   if (input.parameter) {
-    parameter = VariableIndex(n, "parameter", *input.parameter);
-    if (unknowns.tie_static_friction && *parameter == ov::Parameter(n, ParameterId::kStaticFriction)) {
-      throw InvalidInput::WithMessage("parameter", "parameter = 'u_r' is tied to u_s (tie_u_r): continue in u_s");
-    }
-    if (std::find(free.begin(), free.end(), *parameter) != free.end()) {
-      throw InvalidInput::WithMessage("parameter", fmt::format("parameter = '{}' is an unknown already: continue in a "
-                                                               "held variable", *input.parameter));
-    }
+    parameter = ContinuedVariable(signature, free, unknowns.tie_static_friction, *input.parameter);
   }
   return {std::move(orbit), unknowns, free, parameter};
 }

@@ -32,8 +32,8 @@ struct OrbitBranch {
   std::vector<PointColumn> columns;  // the monitor's, in the order of the result files
 };
 
-// Throws std::invalid_argument with a message naming the problem if the choice of unknowns is
-// not square or the parameter is not a variable. `observer`, if given, sees the branch after
+// Throws InvalidInput naming "free", "fix", "unknowns" or "parameter" if the choice of unknowns
+// is not square or the parameter is not a held variable. `observer`, if given, sees the branch after
 // every step (a progress display, say).
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer = {});

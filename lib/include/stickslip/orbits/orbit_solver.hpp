@@ -30,13 +30,10 @@ int VariableIndex(int n, std::string_view field, std::string_view name);
 // with both counts, when the system would not be square.
 std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);
 
-// FreeIndices with the error as a string instead of thrown, for branches/orbit_continuation.cpp
-// only, until that file calls FreeIndices (issue 10, item 6). New code calls FreeIndices.
-struct FreeVariables {
-  std::vector<int> indices;
-  std::string error;  // empty when valid
-};
-FreeVariables ResolveUnknowns(const Signature& signature, const UnknownChoice& choice);
+// The index of the continued variable `parameter` (a variable name): one that is held, not in
+// `free`, and not u_r while it is tied to u_s. Throws InvalidInput naming "parameter".
+int ContinuedVariable(const Signature& signature, const std::vector<int>& free, bool tie_static_friction,
+                      std::string_view parameter);
 
 enum class ShootingChoice { kAuto, kSingle, kMultiple };
 const char* ToString(ShootingChoice s);  // "auto", "single", "multiple"
