@@ -90,8 +90,7 @@ TEST(MarginGradients, MatchCentralDifferencesOnRandomOrbitsOfEveryEndKind) {
   std::set<std::string> kinds;
   for (const char* text : {"slip- slip- slip+ stick slip+ stick", "slip+ stick slip- slip+ / antisymmetric",
                            "stick slip- stick slip+ / period 2"}) {
-    std::string error;
-    const Signature signature = *Signature::Parse(text, &error);
+    const Signature signature = Signature::Parse(text);
     for (int trial = 0; trial < 6; ++trial) {
       Orbit o{signature, {}, in(-1, 1), in(-1, 1), in(-1, 1), in(0, 2 * std::numbers::pi), {}};
       for (int i = 0; i < signature.size(); ++i) o.durations.push_back(in(0.5, 6.0));

@@ -74,7 +74,7 @@ TEST(StickConstraintMargins, AreTheTrueMinimaOverTheStick) {
 TEST(SlipVelocityMargin, IsTheInteriorMinimumOfTheSignedVelocity) {
   const Parameters p{0.3, 4.0, 0.6, 0.1, 0.2};
   // At rest with s = chi eta (x2 - x1) - cos(phi) = -2.2 < -eta u_r: a slip with x2' > 0.
-  Orbit o{*Signature::Parse("slip+ slip-", nullptr), p, 1.0, 0.0, 0.0, 0.0, {0.0, 1.0}};
+  Orbit o{Signature::Parse("slip+ slip-"), p, 1.0, 0.0, 0.0, 0.0, {0.0, 1.0}};
   auto v2 = [&](double t) { return Flow(Mode::kSlipPositive, o.InitialState(), o.phi, t, p)(3); };
   // The first interior local minimum of x2' on a fine grid.
   const double h = 1e-4;

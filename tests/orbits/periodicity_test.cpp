@@ -17,8 +17,7 @@ namespace ov = orbit_variables;
 // A signature with every end kind: abnormal stop, reversal, stick entry, exit into slip+, exit
 // into slip-; evaluated away from any solution, where every term of the Jacobian matters.
 Orbit EveryEndKind() {
-  std::string error;
-  const Signature s = *Signature::Parse("slip- slip- slip+ stick slip+ stick", &error);
+  const Signature s = Signature::Parse("slip- slip- slip+ stick slip+ stick");
   return Orbit{s, {0.3, 4.0, 0.6, 0.1, 0.25}, 1.3, 2.9, 0.2, 0.4, {1.1, 0.9, 2.3, 1.2, 1.7, 0.8}};
 }
 

@@ -10,10 +10,7 @@
 namespace stickslip {
 namespace {
 
-Signature Parsed(const char* text) {
-  std::string error;
-  return *Signature::Parse(text, &error);
-}
+Signature Parsed(const char* text) { return Signature::Parse(text); }
 
 // The largest difference between the two orbits' states at 401 times over one period.
 double SampledDistance(const Orbit& a, const Orbit& b) {

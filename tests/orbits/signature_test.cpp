@@ -5,11 +5,18 @@
 namespace stickslip {
 namespace {
 
-Signature Parsed(const char* text) {
-  std::string error;
-  const auto s = Signature::Parse(text, &error);
-  EXPECT_TRUE(s.has_value()) << error;
-  return *s;
+Signature Parsed(const char* text) { return Signature::Parse(text); }
+
+// The message of the InvalidInput that parsing `text` throws.
+std::string ParseError(const char* text) {
+  try {
+    Signature::Parse(text);
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "signature");
+    return e.what();
+  }
+  ADD_FAILURE() << "'" << text << "' parsed";
+  return "";
 }
 
 TEST(Signature, DerivesEveryEndFromTheNextMode) {
@@ -40,21 +47,13 @@ TEST(Signature, RoundTripsThroughItsTextForm) {
 }
 
 TEST(Signature, ParseErrorsSayWhereAndWhy) {
-  std::string error;
-  EXPECT_FALSE(Signature::Parse("slip- stik", &error));
-  EXPECT_NE(error.find("token 2 'stik'"), std::string::npos) << error;
-  EXPECT_FALSE(Signature::Parse("slip- stick stick", &error));
-  EXPECT_NE(error.find("segment 2 is a stick followed by a stick"), std::string::npos) << error;
-  EXPECT_FALSE(Signature::Parse("stick slip+ stick", &error));
-  EXPECT_NE(error.find("cyclically"), std::string::npos) << error;
-  EXPECT_FALSE(Signature::Parse("", &error));
-  EXPECT_NE(error.find("no segment"), std::string::npos) << error;
-  EXPECT_FALSE(Signature::Parse("slip- / symmetric", &error));
-  EXPECT_NE(error.find("option 'symmetric'"), std::string::npos) << error;
-  EXPECT_FALSE(Signature::Parse("slip- / antisymmetric period 2", &error));
-  EXPECT_NE(error.find("odd"), std::string::npos) << error;
-  EXPECT_FALSE(Signature::Parse("slip- / period 0", &error));
-  EXPECT_NE(error.find("period"), std::string::npos) << error;
+  EXPECT_NE(ParseError("slip- stik").find("signature 'slip- stik': token 2 'stik'"), std::string::npos);
+  EXPECT_NE(ParseError("slip- stick stick").find("segment 2 is a stick followed by a stick"), std::string::npos);
+  EXPECT_NE(ParseError("stick slip+ stick").find("cyclically"), std::string::npos);
+  EXPECT_NE(ParseError("").find("no segment"), std::string::npos);
+  EXPECT_NE(ParseError("slip- / symmetric").find("option 'symmetric'"), std::string::npos);
+  EXPECT_NE(ParseError("slip- / antisymmetric period 2").find("odd"), std::string::npos);
+  EXPECT_NE(ParseError("slip- / period 0").find("period"), std::string::npos);
 }
 
 }  // namespace

@@ -277,29 +277,31 @@ RunFiles FormatRunFiles(const StoredRun& run) {
 StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   const fs::path summary_file = directory / kSummaryFile;
   Summary summary = ParseSummary(files.summary_json, summary_file);
-  std::string error;
-  const std::optional<Signature> signature = Signature::Parse(summary.fields.signature, &error);
-  if (!signature) {
-    throw KeyError(summary_file, "signature", fmt::format("= '{}' is invalid: {}", summary.fields.signature, error));
-  }
-  if (!ov::IndexOf(signature->size(), summary.fields.parameter)) {
+  const Signature signature = [&] {
+    try {
+      return Signature::Parse(summary.fields.signature);
+    } catch (const InvalidInput& e) {
+      throw KeyError(summary_file, "signature", fmt::format("= '{}' is invalid: {}", summary.fields.signature, e.what()));
+    }
+  }();
+  if (!ov::IndexOf(signature.size(), summary.fields.parameter)) {
     std::vector<std::string> names;
-    for (int i = 0; i < ov::Count(signature->size()); ++i) names.push_back(ov::Name(signature->size(), i));
+    for (int i = 0; i < ov::Count(signature.size()); ++i) names.push_back(ov::Name(signature.size(), i));
     throw KeyError(summary_file, "parameter", fmt::format("= '{}' is invalid: valid a variable of the orbit, {}",
                                                           summary.fields.parameter, fmt::join(names, ", ")));
   }
 
   StoredRun run{std::move(summary.fields), {}, {}};
   const CsvTable branch(files.branch_csv, directory / kBranchFile);
-  const ColumnIndices branch_columns = FindColumns(branch, *signature, false);
-  for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, *signature));
+  const ColumnIndices branch_columns = FindColumns(branch, signature, false);
+  for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, signature));
   if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
 
   const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);
-  const ColumnIndices special_columns = FindColumns(special, *signature, true);
+  const ColumnIndices special_columns = FindColumns(special, signature, true);
   const std::vector<std::string> header = ColumnNames(run.branch.front());
   for (int row = 0; row < special.rows(); ++row) {
-    StoredPoint point = ParsePoint(special, row, special_columns, *signature);
+    StoredPoint point = ParsePoint(special, row, special_columns, signature);
     if (ColumnNames(point) != header) {
       throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
                                 "test_function, located");

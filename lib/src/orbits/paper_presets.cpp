@@ -7,11 +7,8 @@
 namespace stickslip {
 
 Orbit PaperPreset::Guess() const {
-  std::string error;
-  const std::optional<Signature> parsed = Signature::Parse(signature, &error);
-  if (!parsed) throw std::logic_error(error);
   const State& x = example->initial_state;
-  return Orbit{*parsed, example->parameters, x(0), x(1), x(2), example->phi, durations};
+  return Orbit{Signature::Parse(signature), example->parameters, x(0), x(1), x(2), example->phi, durations};
 }
 
 namespace {

@@ -60,7 +60,10 @@ Signature::Signature(std::vector<Mode> segments, bool antisymmetric, int period_
   }
 }
 
-std::optional<Signature> Signature::Parse(std::string_view text, std::string* error) {
+Signature Signature::Parse(std::string_view text) {
+  auto fail = [&](const std::string& why) {
+    return InvalidInput::WithMessage("signature", fmt::format("signature '{}': {}", text, why));
+  };
   const std::size_t slash = text.find('/');
   std::istringstream modes(std::string(text.substr(0, slash)));
   std::vector<Mode> segments;
@@ -70,9 +73,7 @@ std::optional<Signature> Signature::Parse(std::string_view text, std::string* er
     ++index;
     const std::optional<Mode> mode = ModeFromString(token);
     if (!mode) {
-      *error = fmt::format("signature '{}': token {} '{}' is not a mode: valid slip-, slip+, stick",
-                           text, index, token);
-      return std::nullopt;
+      throw fail(fmt::format("token {} '{}' is not a mode: valid slip-, slip+, stick", index, token));
     }
     segments.push_back(*mode);
   }
@@ -87,29 +88,21 @@ std::optional<Signature> Signature::Parse(std::string_view text, std::string* er
         std::string value;
         if (!(options >> value) || value.find_first_not_of("0123456789") != std::string::npos ||
             value.size() > 3 || std::stoi(value) < 1) {
-          *error = fmt::format("signature '{}': 'period' needs a whole number 1 to 999 after it",
-                               text);
-          return std::nullopt;
+          throw fail("'period' needs a whole number 1 to 999 after it");
         }
         period_multiple = std::stoi(value);
       } else {
-        *error = fmt::format(
-            "signature '{}': option '{}' after '/' is unknown: valid antisymmetric, period K",
-            text, token);
-        return std::nullopt;
+        throw fail(fmt::format("option '{}' after '/' is unknown: valid antisymmetric, period K", token));
       }
     }
   }
   if (const std::string problem = SequenceProblem(segments, antisymmetric); !problem.empty()) {
-    *error = fmt::format("signature '{}': {}", text, problem);
-    return std::nullopt;
+    throw fail(problem);
   }
   // X(t + k pi/omega) = -X(t) needs the forcing to change sign over half the period: k odd.
   if (antisymmetric && period_multiple % 2 == 0) {
-    *error = fmt::format("signature '{}': 'antisymmetric' needs an odd 'period K' (the forcing must change sign "
-                         "over half the period), got {}",
-                         text, period_multiple);
-    return std::nullopt;
+    throw fail(fmt::format("'antisymmetric' needs an odd 'period K' (the forcing must change sign over half the "
+                           "period), got {}", period_multiple));
   }
   return Signature(std::move(segments), antisymmetric, period_multiple);
 }

@@ -112,15 +112,19 @@ Signature OrbitType(const StartInput& input, const PaperPreset* preset) {
     throw InvalidInput::WithMessage("signature", "signature is missing: give exactly one of a preset, a signature "
                                                  "or a restart point");
   }
-  std::string error;
-  const std::optional<Signature> signature = Signature::Parse(text, &error);
-  if (!signature) throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: {}", field, text, error));
-  if (preset != nullptr && !(preset->Guess().signature == *signature)) {
+  const Signature signature = [&] {
+    try {
+      return Signature::Parse(text);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: {}", field, text, e.what()));
+    }
+  }();
+  if (preset != nullptr && !(preset->Guess().signature == signature)) {
     throw InvalidInput::WithMessage(
         field, fmt::format("{} gives the orbit type '{}', preset {} has '{}': give exactly one of them", field, text,
                            input.preset, preset->signature));
   }
-  return *signature;
+  return signature;
 }
 
 // The preset's choice of unknowns, then the input's.

@@ -41,9 +41,9 @@ class Signature {
   // period_multiple < 1, or is even with antisymmetric.
   Signature(std::vector<Mode> segments, bool antisymmetric = false, int period_multiple = 1);
 
-  // Parses the text form; on error returns nullopt and sets *error to a message saying where and
-  // why ("token 2 'stik' is not a mode: valid slip-, slip+, stick").
-  static std::optional<Signature> Parse(std::string_view text, std::string* error);
+  // Parses the text form. Throws InvalidInput naming "signature", with a message saying where
+  // and why ("signature 'slip- stik': token 2 'stik' is not a mode: valid slip-, slip+, stick").
+  static Signature Parse(std::string_view text);
   std::string ToString() const;
 
   // The segments the periodicity equations cover: the whole period, or the first half when
