@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -32,53 +33,50 @@ struct SolveArgs {
   bool compare_paper = false;
 };
 
-std::string MultipliersJson(const Stability& stability) {
-  std::string out;
-  for (const std::complex<double>& mu : stability.multipliers) {
-    out += fmt::format("{}[{}, {}]", out.empty() ? "" : ", ", mu.real(), mu.imag());
-  }
-  return fmt::format("\"multipliers\": [{}], \"stable\": {}, \"multipliers_one_sided\": {}", out,
-                     stability.stable, stability.one_sided);
-}
-
+// The solution as one JSON object (the keys --help lists); non-finite numbers are null.
 std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margin>& margins,
                  const Verification& v) {
-  std::string out = fmt::format("{{\"signature\": \"{}\", \"parameters\": {{", o.signature.ToString());
-  for (ParameterId id : kAllParameters) {
-    out += fmt::format("{}\"{}\": {}", id == ParameterId::kChi ? "" : ", ", ToString(id), o.parameters[id]);
-  }
-  out += fmt::format("}}, \"phi\": {}, \"x10\": {}, \"x20\": {}, \"v10\": {}, \"segments\": [", o.phi,
-                     o.x10, o.x20, o.v10);
-  for (int i = 0; i < o.signature.size(); ++i) {
-    out += fmt::format("{}{{\"mode\": \"{}\", \"duration\": {}}}", i ? ", " : "",
-                       ToString(o.signature.segments()[i]), o.durations[i]);
-  }
-  out += fmt::format("], \"converged\": {}, \"termination\": \"{}\", \"iterations\": {}, "
-                     "\"residual_norm\": {}, \"condition_number\": {}, \"shooting\": \"{}\", "
-                     "\"margins\": {{",
-                     s.summary.Converged(), ToString(s.summary.termination), s.summary.iterations,
-                     s.summary.residual_norms.back(), s.summary.condition_number,
-                     ToString(s.shooting));
-  for (std::size_t i = 0; i < margins.size(); ++i) {
-    const double value = margins[i].value;
-    out += fmt::format("{}\"{}\": {}", i ? ", " : "", margins[i].Name(),
-                       std::isfinite(value) ? fmt::format("{}", value) : std::string("null"));
-  }
-  auto sequence = [](const std::vector<Mode>& modes) {
-    std::string text;
-    for (Mode m : modes) text += fmt::format("{}\"{}\"", text.empty() ? "" : ", ", ToString(m));
-    return "[" + text + "]";
+  using Json = nlohmann::ordered_json;
+  auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
+  auto modes = [](const std::vector<Mode>& sequence) {
+    Json list = Json::array();
+    for (Mode m : sequence) list.push_back(ToString(m));
+    return list;
   };
-  out += fmt::format("}}, {}", MultipliersJson(StabilityOf(o)));
-  out += fmt::format(
-      ", \"verification\": {{\"passed\": {}, \"expected\": {}, \"exact\": {{\"events\": {}, "
-      "\"sequence_matches\": {}, \"max_mismatch\": {}, \"max_event_time_difference\": {}}}, "
-      "\"odeint\": {{\"events\": {}, \"sequence_matches\": {}, \"max_mismatch\": {}, "
-      "\"max_event_time_difference\": {}}}}}}}\n",
-      v.Passed(), sequence(v.expected), sequence(v.exact.modes), v.exact.sequence_matches,
-      v.exact.periodicity_mismatch, v.exact.max_event_time_difference, sequence(v.odeint.modes),
-      v.odeint.sequence_matches, v.odeint.periodicity_mismatch, v.odeint.max_event_time_difference);
-  return out;
+  auto check = [&](const SimulatorCheck& c) {
+    const bool simulated = v.not_simulated.empty();
+    return Json{{"events", modes(c.modes)},
+                {"sequence_matches", c.sequence_matches},
+                {"max_mismatch", simulated ? number(c.periodicity_mismatch) : Json(nullptr)},
+                {"max_event_time_difference", simulated ? number(c.max_event_time_difference) : Json(nullptr)}};
+  };
+  Json out{{"signature", o.signature.ToString()}};
+  for (ParameterId id : kAllParameters) out["parameters"][ToString(id)] = o.parameters[id];
+  out.update(Json{{"phi", o.phi}, {"x10", o.x10}, {"x20", o.x20}, {"v10", o.v10}});
+  out["segments"] = Json::array();
+  for (int i = 0; i < o.signature.size(); ++i) {
+    out["segments"].push_back({{"mode", ToString(o.signature.segments()[i])}, {"duration", o.durations[i]}});
+  }
+  out.update(Json{{"converged", s.summary.Converged()},
+                  {"termination", ToString(s.summary.termination)},
+                  {"iterations", s.summary.iterations},
+                  {"residual_norm", number(s.summary.residual_norms.back())},
+                  {"condition_number", number(s.summary.condition_number)},
+                  {"shooting", ToString(s.shooting)}});
+  out["margins"] = Json::object();
+  for (const Margin& m : margins) out["margins"][m.Name()] = number(m.value);
+  const Stability stability = StabilityOf(o);
+  out["multipliers"] = Json::array();
+  for (const std::complex<double>& mu : stability.multipliers) {
+    out["multipliers"].push_back({number(mu.real()), number(mu.imag())});
+  }
+  out.update(Json{{"stable", stability.stable}, {"multipliers_one_sided", stability.one_sided}});
+  out["verification"] = {{"passed", v.Passed()},
+                         {"not_simulated", v.not_simulated.empty() ? Json(nullptr) : Json(v.not_simulated)},
+                         {"expected", modes(v.expected)},
+                         {"exact", check(v.exact)},
+                         {"odeint", check(v.odeint)}};
+  return out.dump() + "\n";
 }
 
 

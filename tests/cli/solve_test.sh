@@ -25,6 +25,18 @@ assert o["verification"]["passed"] is True
 print("solve json ok")
 PY
 
+# Newton converges past section 4.2's family end (u_s < 0 at omega = 0.63): the verification says
+# the orbit is no motion of the system (it used to read an empty simulation: SIGSEGV).
+"$bin" solve --preset paper-4.2 --set omega=0.63 --json > "$work/42.json"
+code=$?
+[ "$code" -lt 128 ] || fail "paper-4.2 omega=0.63 crashed with exit $code"
+/usr/bin/python3 -c "
+import json
+v = json.load(open('$work/42.json'))['verification']
+assert v['passed'] is False and 'u_s = -' in v['not_simulated'], v
+assert v['exact']['max_mismatch'] is None, v
+print('not simulated ok')" || failures=$((failures + 1))
+
 # Section 5.2 with phi = pi/2 held and u_r released (the paper's choice, ERRATA: u_r = 0.478).
 "$bin" solve --preset paper-5.2 --fix phi=1.5707963267948966 --free u_r --json > "$work/52.json" ||
   fail "paper-5.2 --fix phi --free u_r exit $?"

@@ -56,6 +56,18 @@ TEST(StartProblem, RefusesANegativeDuration) {
   EXPECT_EQ(e.valid_range(), "d2 >= 0");
 }
 
+// A restart's d1..dn are the durations of its own type; under another signature they would
+// silently name other segments (item 4 of issue 10): the builder refuses, pointing to the edits.
+TEST(StartProblem, RefusesASignatureThatDiffersFromTheRestartPoints) {
+  StartInput input = HandMadeSlipStick();
+  input.guess.clear();
+  input.restart = RestartPoint{"run", "SK1", "slip- slip+ / antisymmetric",
+                               {{"d1", 3.0}, {"d2", 2.0}, {"x10", 0.1}, {"x20", 0.2}, {"v10", 0.0}, {"phi", 0.0}}};
+  const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
+  EXPECT_EQ(e.field(), "signature");
+  EXPECT_NE(std::string(e.what()).find("differs from the restart point's orbit type"), std::string::npos) << e.what();
+}
+
 TEST(StartProblem, LaterSourcesWinPresetThenSetThenGuessThenFix) {
   StartInput input;
   input.preset = "paper-5.1";

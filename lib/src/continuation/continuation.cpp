@@ -33,6 +33,9 @@ void ContinuationOptions::Validate() const {
   if (max_points < 1) throw InvalidInput("max_points", max_points, "max_points >= 1");
   if (start_iterations < 1) throw InvalidInput("start_iterations", start_iterations, "start_iterations >= 1");
   if (!(bound_tolerance >= 0.0)) throw InvalidInput("bound_tolerance", bound_tolerance, "bound_tolerance >= 0");
+  if (!(start_boundary_tolerance >= 0.0)) {
+    throw InvalidInput("start_boundary_tolerance", start_boundary_tolerance, "start_boundary_tolerance >= 0");
+  }
   if (!(location.tolerance > 0.0)) throw InvalidInput("location.tolerance", location.tolerance, "> 0");
   if (location.corrector_iterations < 1) {
     throw InvalidInput("location.corrector_iterations", location.corrector_iterations, ">= 1");
@@ -142,6 +145,13 @@ bool Continuation::Start() {
   st.last = std::move(*start);
   st.ds = st.step_size->Initial();
   branch_.points.push_back(MakePoint(st.last, st.Lambda(st.last.u), 0.0, "EP"));
+  // Seen from the first step, a terminal function on its zero is on it exactly (the stored start
+  // keeps its computed values).
+  for (int k = 0; k < st.last.tests.size(); ++k) {
+    if (branch_.test_functions[k].terminal && std::abs(st.last.tests(k)) <= o.start_boundary_tolerance) {
+      st.last.tests(k) = 0.0;
+    }
+  }
   MarkLastPoint(&branch_, "EP", "start");
   if (st.Lambda(st.last.u) < o.lambda_min || st.Lambda(st.last.u) > o.lambda_max) {
     return End(BranchEnd::kParameterBound, "the start lies outside the parameter range");

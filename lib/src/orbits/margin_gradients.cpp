@@ -30,6 +30,7 @@ class GradientBuilder {
   // A margin attained at a time that is a function of the variables (a segment end or start).
   MarginGradient AtBoundary(const Margin& m, const Dual& f, const Dual& t) const {
     MarginGradient g = Empty(m);
+    g.value = f.value();
     g.d_value = Head(f);
     g.d_t = Head(t);
     return g;
@@ -40,6 +41,7 @@ class GradientBuilder {
   MarginGradient AtInteriorMinimum(const Margin& m, const Dual& f, const Dual& f_tau, const Dual& t0) const {
     MarginGradient g = Empty(m);
     g.interior = true;
+    g.value = f.value();
     g.d_value = Head(f);  // the envelope theorem: the partial derivative at fixed tau*
     g.slope = f_tau.value();
     g.d_slope = Head(f_tau);

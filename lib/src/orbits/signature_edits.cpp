@@ -56,7 +56,7 @@ SignatureEdit RemoveSegment(const Signature& signature, int i, bool join_equal_n
   // orbit comes the mirror of the last, after the last the mirror of the first.
   const Mode before = i > 0 ? modes[i - 1] : signature.antisymmetric() ? Mirror(modes[n - 1]) : modes[n - 1];
   const Mode after = signature.NextMode(i);
-  const bool join = join_equal_neighbours && before == after && n > 2;
+  const bool join = join_equal_neighbours && before == after;
   if (join && (i == 0 || i == n - 1)) {
     throw InvalidInput("segment", i,
                        "a segment whose neighbours do not join across the orbit's origin (the time origin is a "

@@ -116,9 +116,19 @@ Signature OrbitType(const StartInput& input, const PaperPreset* preset) {
     try {
       return Signature::Parse(text);
     } catch (const InvalidInput& e) {
-      throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: {}", field, text, e.what()));
+      if (given) throw;  // it names the signature and says why
+      throw InvalidInput::WithMessage(field, fmt::format("restart point's {}", e.what()));
     }
   }();
+  // The restart's values are the variables of its own type: under another type "d2" would name
+  // another segment's duration. Edit the type with signature_edits.hpp, which renames them.
+  if (given && input.restart && !(Signature::Parse(input.restart->signature) == signature)) {
+    throw InvalidInput::WithMessage(
+        "signature", fmt::format("signature = '{}' differs from the restart point's orbit type '{}': a restart keeps "
+                                 "its type (edit it with InsertSegment/RemoveSegment/SplitSegment, which rename "
+                                 "the durations)",
+                                 text, input.restart->signature));
+  }
   if (preset != nullptr && !(preset->Guess().signature == signature)) {
     throw InvalidInput::WithMessage(
         field, fmt::format("{} gives the orbit type '{}', preset {} has '{}': give exactly one of them", field, text,

@@ -70,6 +70,10 @@ struct ContinuationOptions {
   // A corrected point within this distance of a parameter bound, relative to 1 + |bound|, is
   // moved onto the bound (the corrector keeps lambda there only to second order in the step).
   double bound_tolerance = 1e-10;
+  // A terminal test function within this of zero at the corrected start counts as zero there: a
+  // start on a boundary (a type change, where a segment has zero length) is corrected only to
+  // rounding, and a value of -1e-16 is no side of it.
+  double start_boundary_tolerance = 1e-9;
   bool detect_folds = true;
   bool detect_branch_points = true;
   std::vector<UserValue> user_values;

@@ -20,7 +20,7 @@
 namespace stickslip {
 
 struct MarginGradient {
-  double value = 0.0;          // the margin, as AdmissibilityMargins gives it
+  double value = 0.0;          // the margin, evaluated along the AD walk (AdmissibilityMargins' to rounding)
   Eigen::RowVectorXd d_value;  // d value / d variables
   double t = 0.0;              // where it is attained, from the orbit's origin (Margin::t)
   Eigen::RowVectorXd d_t;      // d t / d variables
