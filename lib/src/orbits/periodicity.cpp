@@ -84,6 +84,96 @@ std::vector<std::string> PeriodicityEquations::EquationNames() const {
   return names;
 }
 
+namespace {
+
+// The state and forcing phase along the orbit with their derivatives with respect to every
+// variable: the variational form of the segment walk.
+struct Variational {
+  State x;
+  Eigen::Matrix<double, 4, Eigen::Dynamic> dx;
+  double phase = 0.0;
+  Eigen::RowVectorXd dphase;
+  bool with_derivatives = false;
+};
+
+// The rows of the residual and, with derivatives, of the Jacobian, filled in order.
+struct EquationRows {
+  Eigen::VectorXd* residual;
+  Eigen::MatrixXd* jacobian;
+  int row = 0;
+
+  void Add(const LocalGradient& g, const Variational& w, int first_parameter) {
+    (*residual)(row) = g.value;
+    if (jacobian) {
+      jacobian->row(row) = g.d_state.transpose() * w.dx + g.d_phase * w.dphase;
+      jacobian->row(row).segment(first_parameter, kParameterCount) += g.d_parameters;
+    }
+    ++row;
+  }
+};
+
+// Multiple shooting: the segment starts at its own unknown state, continuous with the last end.
+void RestartAt(const Eigen::VectorXd& v, int state_column, Variational* w, EquationRows* rows) {
+  const State start = v.segment<4>(state_column);
+  rows->residual->segment<4>(rows->row) = start - w->x;
+  if (rows->jacobian) {
+    rows->jacobian->block(rows->row, 0, 4, rows->jacobian->cols()) = -w->dx;
+    rows->jacobian->block<4, 4>(rows->row, state_column) += Eigen::Matrix4d::Identity();
+  }
+  rows->row += 4;
+  w->x = start;
+  w->dx.setZero();
+  w->dx.block<4, 4>(0, state_column) = Eigen::Matrix4d::Identity();
+}
+
+// The flow of one segment of duration d (variable `duration_column`), derivatives carried along.
+void Advance(const FlowEvaluator& flow, Mode mode, double d, int duration_column, const Parameters& p, int n,
+             Variational* w) {
+  const int first_parameter = ov::Parameter(n, ParameterId::kChi);
+  if (w->with_derivatives) {
+    const FlowDerivatives f = flow.derivatives(mode, w->x, w->phase, d, p);
+    Eigen::Matrix<double, 4, Eigen::Dynamic> next = f.d_start * w->dx + f.d_phase * w->dphase;
+    next.col(duration_column) += f.d_elapsed;
+    next.middleCols(first_parameter, kParameterCount) += f.d_parameters;
+    w->dx = next;
+    w->x = f.state;
+  } else {
+    w->x = flow.state(mode, w->x, w->phase, d, p);
+  }
+  w->dphase(duration_column) += p.omega;
+  w->dphase(ov::Parameter(n, ParameterId::kOmega)) += d;
+  w->phase += p.omega * d;
+}
+
+// (Anti)periodicity of x1, x2, x1' at the end of the listed segments, and the durations summing
+// to the covered time.
+void CloseOrbit(const Signature& signature, const Orbit& orbit, const Variational& w, EquationRows* rows) {
+  const int n = signature.size();
+  Eigen::VectorXd& residual = *rows->residual;
+  const double sign = signature.antisymmetric() ? -1.0 : 1.0;
+  const State x0 = orbit.InitialState();
+  for (int j = 0; j < 3; ++j) {
+    residual(rows->row) = w.x(j) - sign * x0(j);
+    if (rows->jacobian) {
+      rows->jacobian->row(rows->row) = w.dx.row(j);
+      (*rows->jacobian)(rows->row, j) -= sign;
+    }
+    ++rows->row;
+  }
+  const double covered_periods = signature.period_multiple() * signature.CoveredFraction();
+  const double omega = orbit.parameters.omega;
+  double sum = 0.0;
+  for (double d : orbit.durations) sum += d;
+  residual(rows->row) = sum - covered_periods * 2.0 * std::numbers::pi / omega;
+  if (rows->jacobian) {
+    for (int i = 0; i < n; ++i) (*rows->jacobian)(rows->row, ov::Duration(i)) = 1.0;
+    (*rows->jacobian)(rows->row, ov::Parameter(n, ParameterId::kOmega)) =
+        covered_periods * 2.0 * std::numbers::pi / (omega * omega);
+  }
+}
+
+}  // namespace
+
 void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* residual,
                                     Eigen::MatrixXd* jacobian) const {
   const int n = signature_.size();
@@ -91,90 +181,29 @@ void PeriodicityEquations::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* r
   const int full = ov::Count(n);
   const Orbit orbit = ov::Unpack(signature_, v.head(full));
   const Parameters& p = orbit.parameters;
-  const int omega_column = ov::Parameter(n, ParameterId::kOmega);
   const int first_parameter = ov::Parameter(n, ParameterId::kChi);
 
   residual->setZero(EquationCount());
   if (jacobian) jacobian->setZero(EquationCount(), columns);
+  EquationRows rows{residual, jacobian};
 
-  // The state and phase along the orbit with their derivatives with respect to every variable.
-  State x = orbit.InitialState();
-  Eigen::Matrix<double, 4, Eigen::Dynamic> dx = Eigen::MatrixXd::Zero(4, columns);
-  dx(0, ov::kX10) = dx(1, ov::kX20) = dx(2, ov::kV10) = 1.0;
-  double phase = orbit.phi;
-  Eigen::RowVectorXd dphase = Eigen::RowVectorXd::Zero(columns);
-  dphase(ov::kPhi) = 1.0;
-
-  int row = 0;
-  auto add_equation = [&](const LocalGradient& g) {
-    (*residual)(row) = g.value;
-    if (jacobian) {
-      jacobian->row(row) = g.d_state.transpose() * dx + g.d_phase * dphase;
-      jacobian->row(row).segment(first_parameter, kParameterCount) += g.d_parameters;
-    }
-    ++row;
-  };
-
+  Variational w{orbit.InitialState(), Eigen::MatrixXd::Zero(4, columns), orbit.phi,
+                Eigen::RowVectorXd::Zero(columns), jacobian != nullptr};
+  w.dx(0, ov::kX10) = w.dx(1, ov::kX20) = w.dx(2, ov::kV10) = 1.0;
+  w.dphase(ov::kPhi) = 1.0;
   for (const SegmentSpec& spec : plan_) {
     const int i = spec.listed;
-    const Mode mode = spec.mode;
-    if (shooting_ == Shooting::kMultiple && i > 0) {
-      const int state_column = full + 4 * (i - 1);
-      const State start = v.segment<4>(state_column);
-      residual->segment<4>(row) = start - x;  // continuity
-      if (jacobian) {
-        jacobian->block(row, 0, 4, columns) = -dx;
-        jacobian->block<4, 4>(row, state_column) += Eigen::Matrix4d::Identity();
-      }
-      row += 4;
-      x = start;
-      dx.setZero();
-      dx.block<4, 4>(0, state_column) = Eigen::Matrix4d::Identity();
-    }
-    const double d = orbit.durations[i];
-    if (jacobian) {
-      const FlowDerivatives f = flow_.derivatives(mode, x, phase, d, p);
-      Eigen::Matrix<double, 4, Eigen::Dynamic> next = f.d_start * dx + f.d_phase * dphase;
-      next.col(ov::Duration(i)) += f.d_elapsed;
-      next.middleCols(first_parameter, kParameterCount) += f.d_parameters;
-      dx = next;
-      x = f.state;
-    } else {
-      x = flow_.state(mode, x, phase, d, p);
-    }
-    dphase(ov::Duration(i)) += p.omega;
-    dphase(omega_column) += d;
-    phase += p.omega * d;
-
+    if (shooting_ == Shooting::kMultiple && i > 0) RestartAt(v, full + 4 * (i - 1), &w, &rows);
+    Advance(flow_, spec.mode, orbit.durations[i], ov::Duration(i), p, n, &w);
     for (EndCondition condition : EndConditionsOf(spec.end)) {
       if (jacobian) {
-        add_equation(Linearize(condition, mode, x, phase, p));
+        rows.Add(Linearize(condition, spec.mode, w.x, w.phase, p), w, first_parameter);
       } else {
-        (*residual)(row++) = EndConditionValue(condition, mode, x, phase, p);
+        (*residual)(rows.row++) = EndConditionValue(condition, spec.mode, w.x, w.phase, p);
       }
     }
   }
-
-  // (Anti)periodicity of x1, x2, x1'.
-  const double sign = signature_.antisymmetric() ? -1.0 : 1.0;
-  const State x0 = orbit.InitialState();
-  for (int j = 0; j < 3; ++j) {
-    (*residual)(row) = x(j) - sign * x0(j);
-    if (jacobian) {
-      jacobian->row(row) = dx.row(j);
-      (*jacobian)(row, j) -= sign;
-    }
-    ++row;
-  }
-  // Durations sum to the covered time.
-  const double covered_periods = signature_.period_multiple() * signature_.CoveredFraction();
-  double sum = 0.0;
-  for (double d : orbit.durations) sum += d;
-  (*residual)(row) = sum - covered_periods * 2.0 * std::numbers::pi / p.omega;
-  if (jacobian) {
-    for (int i = 0; i < n; ++i) (*jacobian)(row, ov::Duration(i)) = 1.0;
-    (*jacobian)(row, omega_column) = covered_periods * 2.0 * std::numbers::pi / (p.omega * p.omega);
-  }
+  CloseOrbit(signature_, orbit, w, &rows);
 }
 
 Eigen::VectorXd PeriodicityEquations::Variables(const Orbit& orbit) const {
