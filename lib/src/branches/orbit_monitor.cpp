@@ -22,6 +22,8 @@ std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode) {
   return "GR";
 }
 
+std::string orbit_columns::Multiplier(int k, const char* part) { return fmt::format("floquet:mu{}_{}", k, part); }
+
 std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const BranchPoint& point) {
   std::vector<double> values;
   values.reserve(columns.size());
@@ -51,23 +53,23 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : syst
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];
     const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
-    AddTestFunction({.name = "margin:" + m.Name(), .type = OrbitTypeChangeCode(m, mode), .terminal = true,
+    AddTestFunction({.name = std::string(orbit_columns::kMarginPrefix) + m.Name(), .type = OrbitTypeChangeCode(m, mode), .terminal = true,
                      .may_have_poles = true, .positive_side = "admissible"},
                     [k](const Evaluated& e) { return e.margins[k].value; });
   }
   for (int k = 0; k < 4; ++k) {
-    AddRecorded(fmt::format("floquet:mu{}_re", k + 1),
+    AddRecorded(orbit_columns::Multiplier(k + 1, "re"),
                 [k](const Evaluated& e) { return e.stability.multipliers[k].real(); });
-    AddRecorded(fmt::format("floquet:mu{}_im", k + 1),
+    AddRecorded(orbit_columns::Multiplier(k + 1, "im"),
                 [k](const Evaluated& e) { return e.stability.multipliers[k].imag(); });
   }
-  AddRecorded("stable", [](const Evaluated& e) { return e.stability.stable ? 1.0 : 0.0; });
-  AddRecorded("floquet:det(M-I)", [](const Evaluated& e) { return e.stability.fold_test; });
-  AddTestFunction({.name = "floquet:det(M+I)", .type = "PD", .may_have_poles = true},
+  AddRecorded(orbit_columns::kStable, [](const Evaluated& e) { return e.stability.stable ? 1.0 : 0.0; });
+  AddRecorded(orbit_columns::kFoldTest, [](const Evaluated& e) { return e.stability.fold_test; });
+  AddTestFunction({.name = orbit_columns::kFlipTest, .type = "PD", .may_have_poles = true},
                   [](const Evaluated& e) { return e.stability.flip_test; });
-  AddTestFunction({.name = "floquet:torus", .type = "TR", .may_have_poles = true},
+  AddTestFunction({.name = orbit_columns::kTorusTest, .type = "TR", .may_have_poles = true},
                   [](const Evaluated& e) { return e.stability.torus_test; });
-  AddRecorded("admissible", [](const Evaluated& e) {
+  AddRecorded(orbit_columns::kAdmissible, [](const Evaluated& e) {
     for (const Margin& m : e.margins) {
       if (std::isfinite(m.value) && m.value <= 0.0) return 0.0;  // non-finite: not defined here
     }

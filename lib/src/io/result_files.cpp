@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "csv_table.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
 
@@ -34,13 +35,15 @@ constexpr const char* kSpecialPointsFile = "special-points.csv";
 constexpr const char* kSummaryFile = "summary.json";
 
 // The columns of a point after its margins and multipliers, and those a special point adds.
-constexpr std::string_view kMarginPrefix = "margin:";
-constexpr std::array<const char*, 4> kStabilityColumns = {"stable", "floquet:det(M-I)", "floquet:det(M+I)",
-                                                          "floquet:torus"};
-constexpr std::array<const char*, 3> kStepColumns = {"admissible", "newton_iterations", "step_size"};
+using orbit_columns::kMarginPrefix;
+constexpr std::array<const char*, 4> kStabilityColumns = {orbit_columns::kStable, orbit_columns::kFoldTest,
+                                                          orbit_columns::kFlipTest, orbit_columns::kTorusTest};
+constexpr std::array<const char*, 3> kStepColumns = {orbit_columns::kAdmissible, "newton_iterations", "step_size"};
 constexpr std::array<const char*, 3> kSpecialColumns = {"type", "test_function", "located"};
 
-std::string MultiplierColumn(std::size_t k, const char* part) { return fmt::format("floquet:mu{}_{}", k, part); }
+std::string MultiplierColumn(std::size_t k, const char* part) {
+  return orbit_columns::Multiplier(static_cast<int>(k), part);
+}
 
 // summary.json's text keys, before and after "points" and "special_points".
 struct TextKey {

@@ -36,21 +36,21 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
     const std::vector<double> values = ColumnValues(b.columns, p);
     for (std::size_t k = 0; k < b.columns.size(); ++k) {
       const std::string& name = b.columns[k].name;
-      if (name.starts_with("margin:")) {
-        point.margins.emplace_back(name.substr(7), values[k]);
+      if (name.starts_with(orbit_columns::kMarginPrefix)) {
+        point.margins.emplace_back(name.substr(orbit_columns::kMarginPrefix.size()), values[k]);
       } else {
         recorded[name] = values[k];
       }
     }
-    for (int k = 1; recorded.count(fmt::format("floquet:mu{}_re", k)) != 0; ++k) {
-      point.multipliers.emplace_back(recorded.at(fmt::format("floquet:mu{}_re", k)),
-                                     recorded.at(fmt::format("floquet:mu{}_im", k)));
+    for (int k = 1; recorded.count(orbit_columns::Multiplier(k, "re")) != 0; ++k) {
+      point.multipliers.emplace_back(recorded.at(orbit_columns::Multiplier(k, "re")),
+                                     recorded.at(orbit_columns::Multiplier(k, "im")));
     }
-    point.stable = recorded.at("stable") != 0.0;
-    point.fold_test = recorded.at("floquet:det(M-I)");
-    point.flip_test = recorded.at("floquet:det(M+I)");
-    point.torus_test = recorded.at("floquet:torus");
-    point.admissible = recorded.at("admissible") != 0.0;
+    point.stable = recorded.at(orbit_columns::kStable) != 0.0;
+    point.fold_test = recorded.at(orbit_columns::kFoldTest);
+    point.flip_test = recorded.at(orbit_columns::kFlipTest);
+    point.torus_test = recorded.at(orbit_columns::kTorusTest);
+    point.admissible = recorded.at(orbit_columns::kAdmissible) != 0.0;
     point.newton_iterations = p.newton_iterations;
     point.step_size = p.ds;
     return point;

@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stickslip/continuation/continuation.hpp"
@@ -27,6 +28,19 @@
 #include "stickslip/orbits/periodicity.hpp"
 
 namespace stickslip {
+
+// The names of an orbit branch's per-point columns, stated once for the monitor, the stored
+// record (io/stored_run.hpp) and the result files' reader and writer.
+namespace orbit_columns {
+inline constexpr std::string_view kMarginPrefix = "margin:";  // then Margin::Name()
+inline constexpr const char* kStable = "stable";
+inline constexpr const char* kFoldTest = "floquet:det(M-I)";
+inline constexpr const char* kFlipTest = "floquet:det(M+I)";
+inline constexpr const char* kTorusTest = "floquet:torus";
+inline constexpr const char* kAdmissible = "admissible";
+// "floquet:mu<k>_re" or "_im", k from 1.
+std::string Multiplier(int k, const char* part);
+}  // namespace orbit_columns
 
 // The special-point code of a margin's sign change.
 std::string OrbitTypeChangeCode(const Margin& margin, Mode segment_mode);
