@@ -103,8 +103,7 @@ int RunSolve(const SolveArgs& args) {
   const int n = start.orbit.signature.size();
 
   OrbitSolverOptions options;
-  if (args.shooting == "single") options.shooting = ShootingChoice::kSingle;
-  if (args.shooting == "multiple") options.shooting = ShootingChoice::kMultiple;
+  options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
   options.sparse_solver = *LinearSolverFromString(args.linear_solver);
   const OrbitSolution solution = SolveOrbit(start.orbit, start.free, start.unknowns.tie_static_friction, options);
   const Orbit& orbit = solution.orbit;

@@ -30,9 +30,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
     throw fail("continuation.range", fmt::format("= [{}, {}] excludes the start, {} = {}", run.range_min,
                                                  run.range_max, run.parameter, lambda));
   }
-  setup.shooting = run.shooting == "single" ? ShootingChoice::kSingle
-                   : run.shooting == "multiple" ? ShootingChoice::kMultiple
-                                                : ShootingChoice::kAuto;
+  setup.shooting = *ShootingChoiceFromString(run.shooting);  // checked by the run-file reader
   setup.sparse_solver = *LinearSolverFromString(run.linear_solver);
   ContinuationOptions& o = setup.options;
   o.direction = run.direction;

@@ -66,6 +66,13 @@ int ContinuedVariable(const Signature& signature, const std::vector<int>& free, 
   return index;
 }
 
+std::optional<ShootingChoice> ShootingChoiceFromString(std::string_view text) {
+  for (ShootingChoice s : {ShootingChoice::kAuto, ShootingChoice::kSingle, ShootingChoice::kMultiple}) {
+    if (text == ToString(s)) return s;
+  }
+  return std::nullopt;
+}
+
 Shooting ResolveShooting(ShootingChoice choice, int listed_segments, int max_single_shooting_segments) {
   const bool multiple = choice == ShootingChoice::kMultiple ||
                         (choice == ShootingChoice::kAuto && listed_segments > max_single_shooting_segments);
@@ -78,8 +85,8 @@ OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
       ResolveShooting(options.shooting, guess.signature.size(), options.max_single_shooting_segments);
   const OrbitSystem system(guess, free, tie_static_friction, shooting);
   if (system.EquationCount() != system.UnknownCount()) {
-    throw std::invalid_argument(fmt::format("orbit system is not square: {} equations, {} unknowns",
-                                            system.EquationCount(), system.UnknownCount()));
+    throw InvalidInput("free", fmt::format("{} unknowns", system.UnknownCount()),
+                       fmt::format("{} unknowns, as many as the equations", system.EquationCount()));
   }
   NewtonOptions newton = options.newton;
   if (shooting == Shooting::kMultiple && newton.linear_solver == LinearSolverType::kDenseLu) {

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/segment_plan.hpp"
 
 namespace stickslip {
@@ -223,9 +224,11 @@ OrbitSystem::OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie
       free_(std::move(free)), tie_static_friction_(tie_static_friction) {
   const int n = reference.signature.size();
   for (int index : free_) {
-    if (index < 0 || index >= ov::Count(n)) throw std::invalid_argument("free variable out of range");
+    if (index < 0 || index >= ov::Count(n)) {
+      throw InvalidInput("free", index, fmt::format("a variable index, 0 <= index < {}", ov::Count(n)));
+    }
     if (tie_static_friction_ && index == ov::Parameter(n, ParameterId::kStaticFriction)) {
-      throw std::invalid_argument("u_r cannot be free while it is tied to u_s");
+      throw InvalidInput::WithMessage("free", "free = 'u_r' is tied to u_s (u_r = u_s): release u_s instead");
     }
   }
 }

@@ -51,12 +51,15 @@ std::string SequenceProblem(const std::vector<Mode>& segments, bool antisymmetri
 Signature::Signature(std::vector<Mode> segments, bool antisymmetric, int period_multiple)
     : segments_(std::move(segments)), antisymmetric_(antisymmetric),
       period_multiple_(period_multiple) {
-  if (const std::string problem = SequenceProblem(segments_, antisymmetric_); !problem.empty()) {
-    throw InvalidInput::WithMessage("signature", fmt::format("signature '{}' is invalid: {}", ToString(), problem));
-  }
-  if (period_multiple_ < 1) throw InvalidInput("period", period_multiple_, "period >= 1");
+  auto fail = [&](const std::string& why) {
+    return InvalidInput::WithMessage("signature", fmt::format("signature '{}': {}", ToString(), why));
+  };
+  if (const std::string problem = SequenceProblem(segments_, antisymmetric_); !problem.empty()) throw fail(problem);
+  if (period_multiple_ < 1) throw fail(fmt::format("'period' must be at least 1, got {}", period_multiple_));
+  // X(t + k pi/omega) = -X(t) needs the forcing to change sign over half the period: k odd.
   if (antisymmetric_ && period_multiple_ % 2 == 0) {
-    throw InvalidInput("period", period_multiple_, "an odd period with antisymmetric");
+    throw fail(fmt::format("'antisymmetric' needs an odd 'period K' (the forcing must change sign over half the "
+                           "period), got {}", period_multiple_));
   }
 }
 
@@ -96,15 +99,7 @@ Signature Signature::Parse(std::string_view text) {
       }
     }
   }
-  if (const std::string problem = SequenceProblem(segments, antisymmetric); !problem.empty()) {
-    throw fail(problem);
-  }
-  // X(t + k pi/omega) = -X(t) needs the forcing to change sign over half the period: k odd.
-  if (antisymmetric && period_multiple % 2 == 0) {
-    throw fail(fmt::format("'antisymmetric' needs an odd 'period K' (the forcing must change sign over half the "
-                           "period), got {}", period_multiple));
-  }
-  return Signature(std::move(segments), antisymmetric, period_multiple);
+  return Signature(std::move(segments), antisymmetric, period_multiple);  // checks the sequence
 }
 
 std::string Signature::ToString() const {

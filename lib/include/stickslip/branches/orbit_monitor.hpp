@@ -11,8 +11,9 @@
 //       abnormal-stop:i)
 //   EP  the sliding friction level u_s reaching zero: the end of the physical family
 // and det(M + I) (PD, a multiplier through -1) and the torus test (TR, a complex pair on the
-// unit circle). All may have poles: the saltation matrices blow up where an event becomes
-// tangent.
+// unit circle). All may jump through a pole rather than pass through zero: the saltation
+// matrices blow up where an event becomes tangent, and a margin jumps where an interior minimum
+// appears or leaves (to or from +inf).
 //
 // Recorded with each point: the Floquet multipliers, whether the orbit is stable, det(M - I)
 // (zero at a fold) and whether it is admissible (every defined margin positive).

@@ -37,6 +37,7 @@ int ContinuedVariable(const Signature& signature, const std::vector<int>& free, 
 
 enum class ShootingChoice { kAuto, kSingle, kMultiple };
 const char* ToString(ShootingChoice s);  // "auto", "single", "multiple"
+std::optional<ShootingChoice> ShootingChoiceFromString(std::string_view text);
 
 // kAuto picks single shooting up to max_single_shooting_segments listed segments, multiple
 // shooting beyond (where long products of flow Jacobians lose accuracy).
@@ -57,7 +58,7 @@ struct OrbitSolution {
   Shooting shooting = Shooting::kSingle;
 };
 
-// Throws std::invalid_argument if `free` does not make the system square.
+// Throws InvalidInput naming "free" if `free` does not make the system square.
 OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
                          bool tie_static_friction, const OrbitSolverOptions& options = {});
 

@@ -73,6 +73,7 @@ class PeriodicityEquations {
 // value. With tie_static_friction, u_r follows u_s (u_r = u_s, needed by abnormal stops).
 class OrbitSystem final : public NonlinearSystem {
  public:
+  // Throws InvalidInput naming "free" for an index that is no variable, or u_r freed while tied.
   OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie_static_friction,
               Shooting shooting, FlowEvaluator flow = {});
 
