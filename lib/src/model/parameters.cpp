@@ -29,7 +29,7 @@ std::optional<ParameterId> ParameterFromString(std::string_view key) {
 std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) {
   for (ParameterId id : kAllParameters) {
     if (!std::isfinite(p[id])) {
-      return InvalidInput(ToString(id), p[id], "is a finite number");
+      return InvalidInput(ToString(id), p[id], "a finite number");
     }
   }
   if (!(p.chi > 0.0 && p.chi < 1.0)) return InvalidInput("chi", p.chi, "0 < chi < 1");

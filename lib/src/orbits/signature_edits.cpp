@@ -29,9 +29,10 @@ std::string SignatureEdit::Renamed(std::string_view variable) const {
   if (!index || *index < first || *index >= first + static_cast<int>(new_index.size())) return std::string(variable);
   const int i = *index - first;
   if (new_index[i] < 0 || !duration_kept[i]) {
-    throw InvalidInput(std::string(variable), "a duration of the edited type",
-                       fmt::format("a duration that the edit to '{}' keeps: segment {} was split, joined or removed",
-                                   signature.ToString(), i + 1));
+    throw InvalidInput::WithMessage(
+        std::string(variable), fmt::format("{} names the duration of segment {}, which the edit to '{}' split, joined "
+                                           "or removed: it has no name in the edited type",
+                                           variable, i + 1, signature.ToString()));
   }
   return fmt::format("d{}", new_index[i] + 1);
 }
