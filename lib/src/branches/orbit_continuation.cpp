@@ -1,7 +1,29 @@
 #include "stickslip/branches/orbit_continuation.hpp"
 
+#include <algorithm>
+
 
 namespace stickslip {
+
+namespace {
+
+namespace ov = orbit_variables;
+
+// u_r >= u_s (eq. 4) bounds a continuation in either while the other is held: the range stops
+// at the other's value, a bound located exactly (EP). (u_s > 0 is the sliding-friction margin, a
+// domain boundary; chi, eta and omega are kept in their open ranges by the corrector's domain.)
+void KeepFrictionLevelsOrdered(const OrbitContinuationSetup& setup, const std::vector<int>& free, int parameter,
+                               ContinuationOptions* options) {
+  const int n = setup.start.signature.size();
+  const int u_s = ov::Parameter(n, ParameterId::kSlidingFriction);
+  const int u_r = ov::Parameter(n, ParameterId::kStaticFriction);
+  const bool held_u_s = std::find(free.begin(), free.end(), u_s) == free.end();
+  const bool held_u_r = std::find(free.begin(), free.end(), u_r) == free.end() && !setup.unknowns.tie_static_friction;
+  if (parameter == u_r && held_u_s) options->lambda_min = std::max(options->lambda_min, setup.start.parameters.u_s);
+  if (parameter == u_s && held_u_r) options->lambda_max = std::min(options->lambda_max, setup.start.parameters.u_r);
+}
+
+}  // namespace
 
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
   const Signature& signature = setup.start.signature;
@@ -16,6 +38,7 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start);
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.size());
+  KeepFrictionLevelsOrdered(setup, free, unknowns.back(), &problem.options);
   if (shooting == Shooting::kMultiple && problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
     problem.options.corrector.linear_solver = setup.sparse_solver;
   }

@@ -53,8 +53,13 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : syst
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];
     const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
-    AddTestFunction({.name = std::string(orbit_columns::kMarginPrefix) + m.Name(), .type = OrbitTypeChangeCode(m, mode), .terminal = true,
-                     .may_have_poles = true, .positive_side = "admissible"},
+    // u_s reaching zero ends the physical family (eq. 4), past type changes too.
+    AddTestFunction({.name = std::string(orbit_columns::kMarginPrefix) + m.Name(),
+                     .type = OrbitTypeChangeCode(m, mode),
+                     .terminal = true,
+                     .domain_boundary = m.kind == MarginKind::kFrictionLevel,
+                     .may_have_poles = true,
+                     .positive_side = "admissible"},
                     [k](const Evaluated& e) { return e.margins[k].value; });
   }
   for (int k = 0; k < 4; ++k) {

@@ -57,14 +57,16 @@ std::optional<Located> Locate(const Event& event, const Sample& a, const Sample&
   }
   if (gb == 0.0) lo = hi = ds;  // the zero is at b
   l.bracket = hi - lo;
-  if (!l.located) {
-    l.s = ds * ga / (ga - gb);
-  } else {
+  // An event that could not be located is recorded at the step's end, b, and ordered there:
+  // ordered at an interpolated arclength it could come before an end located inside the step,
+  // and its point, beyond that end, would be reported (a BP at u_s < 0 past section 4.2's end).
+  l.s = ds;
+  if (l.located) {
     // A sign is located where it has changed; a continuous function in the bracket's middle.
-    l.s = event.sign_only ? hi : 0.5 * (lo + hi);
-    if (l.s != ds) {
-      std::optional<Sample> p = corrector.Corrected(a, l.s, Attempt::kLocated);
-      if (p) {
+    const double s = event.sign_only ? hi : 0.5 * (lo + hi);
+    if (s != ds) {
+      if (std::optional<Sample> p = corrector.Corrected(a, s, Attempt::kLocated)) {
+        l.s = s;
         l.sample = std::move(*p);
       } else {
         l.located = false;

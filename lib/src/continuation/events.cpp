@@ -25,7 +25,8 @@ std::vector<Event> MakeEvents(const ContinuationOptions& o, const std::vector<Te
   for (int k = 0; k < static_cast<int>(monitored.size()); ++k) {
     const TestFunctionInfo& info = monitored[k];
     events.push_back({.type = info.type, .name = info.name, .g = [k](const Sample& s) { return s.tests(k); },
-                      .terminal = info.terminal && !o.continue_past_terminal, .may_have_poles = info.may_have_poles,
+                      .terminal = info.domain_boundary || (info.terminal && !o.continue_past_terminal),
+                      .may_have_poles = info.may_have_poles,
                       .positive_side = info.positive_side});
   }
   events.push_back({.type = "EP", .name = "lambda_max",

@@ -16,6 +16,9 @@ struct TestFunctionInfo {
   std::string type;       // special-point code reported at a sign change, e.g. "GR"
   bool terminal = false;  // the branch ends where it leaves its positive side, unless told to
                           // continue past such points
+  // The edge of the problem's domain (a physical parameter's range): the branch ends where it
+  // leaves the positive side, even when told to continue past terminal functions.
+  bool domain_boundary = false;
   // A sign change may be a pole rather than a zero (a saltation matrix blows up where an event
   // becomes tangent): with this set, one whose located value is larger than at both ends is no
   // special point.

@@ -1,0 +1,57 @@
+// Every continuation stays inside the physical parameter ranges (eq. 4): u_s > 0 ends a branch
+// as an EP even when it is told to go on past changes of orbit type, u_r >= u_s bounds a
+// continuation in either friction level, and nothing beyond an end is reported.
+#include <gtest/gtest.h>
+
+#include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/orbits/paper_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+OrbitBranch ContinuePreset(const char* name, const char* parameter, int direction, double lo, double hi,
+                           bool past_type_changes) {
+  const PaperPreset& preset = *FindPaperPreset(name);
+  ContinuationOptions options;
+  options.direction = direction;
+  options.lambda_min = lo;
+  options.lambda_max = hi;
+  options.continue_past_terminal = past_type_changes;
+  options.max_points = 400;
+  return ContinueOrbit({.start = preset.Guess(), .unknowns = preset.unknowns, .parameter = parameter,
+                        .shooting = ShootingChoice::kAuto, .sparse_solver = LinearSolverType::kKlu,
+                        .options = options, .flow = {}});
+}
+
+double SmallestSlidingFriction(const OrbitBranch& b) {
+  double smallest = b.orbits.front().parameters.u_s;
+  for (const Orbit& o : b.orbits) smallest = std::min(smallest, o.parameters.u_s);
+  return smallest;
+}
+
+TEST(ParameterRanges, SlidingFrictionReachingZeroEndsTheBranchPastTypeChangesToo) {
+  const OrbitBranch b = ContinuePreset("paper-5.1", "u_s", -1, -1.0, 1.0, /*past_type_changes=*/true);
+  EXPECT_EQ(b.branch.end, BranchEnd::kTerminalEvent) << b.branch.end_message;
+  EXPECT_NE(b.branch.end_message.find("margin:sliding-friction"), std::string::npos) << b.branch.end_message;
+  EXPECT_GT(SmallestSlidingFriction(b), -1e-12);  // it ran on to u_s = -1 before
+}
+
+// Section 4.2's family ends at u_s = 0 (u_s = u_r released): a branch point that could not be
+// located inside the last step was reported at that step's end, u_s = -0.00134.
+TEST(ParameterRanges, NothingBeyondTheFamilysEndIsReported) {
+  const OrbitBranch b = ContinuePreset("paper-4.2", "omega", +1, 0.3, 0.9, false);
+  EXPECT_NE(b.branch.end_message.find("margin:sliding-friction"), std::string::npos) << b.branch.end_message;
+  for (const SpecialPoint& s : b.branch.special_points) {
+    EXPECT_GT(b.orbits[s.point].parameters.u_s, -1e-9) << s.type << " at u_s = " << b.orbits[s.point].parameters.u_s;
+  }
+}
+
+TEST(ParameterRanges, StaticFrictionStopsAtTheSlidingLevel) {
+  const OrbitBranch b = ContinuePreset("paper-4.1", "u_r", -1, 0.0, 1.0, /*past_type_changes=*/true);
+  EXPECT_EQ(b.branch.end, BranchEnd::kParameterBound) << b.branch.end_message;
+  const Parameters& last = b.orbits.back().parameters;
+  EXPECT_EQ(last.u_r, last.u_s);  // the bound u_r = u_s, located exactly
+}
+
+}  // namespace
+}  // namespace stickslip
