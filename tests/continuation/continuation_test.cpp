@@ -412,3 +412,38 @@ TEST(Continuation, ThrowsInvalidInputNamingTheInvalidField) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// A start on a fold: at (0, 1) the circle's tangent is (1, 0), across the lambda axis, and both
+// sides run towards decreasing lambda (lambda = sqrt(1 - x^2)).
+TEST(PseudoArclength, StartsOnAFoldTowardsTheSideTheBranchRunsTo) {
+  ContinuationOptions o = Options();
+  o.max_points = 5;
+  o.direction = -1;
+  const Branch down = Continuation(Circle(), nullptr, o, Eigen::Vector2d(0.0, 1.0)).Run();
+  ASSERT_EQ(down.end, BranchEnd::kMaxPoints) << down.end_message << " after " << down.points.size();
+  for (std::size_t k = 1; k < down.points.size(); ++k) {
+    const BranchPoint& p = down.points[k];
+    EXPECT_LT(p.lambda, down.points[k - 1].lambda);
+    EXPECT_NEAR(p.u(0) * p.u(0) + p.lambda * p.lambda, 1.0, 1e-10);
+  }
+  o.direction = 1;
+  const Branch up = Continuation(Circle(), nullptr, o, Eigen::Vector2d(0.0, 1.0)).Run();
+  EXPECT_EQ(up.end, BranchEnd::kFoldAtStart) << up.end_message;
+  EXPECT_EQ(up.points.size(), 1u);
+  EXPECT_NE(up.end_message.find("decreasing lambda"), std::string::npos) << up.end_message;
+}
+
+// A restart from a located fold is the fold itself: the first step does not report it again.
+TEST(PseudoArclength, DoesNotReportTheStartsOwnFoldAgain) {
+  ContinuationOptions o = Options();
+  o.max_points = 20;
+  o.direction = -1;
+  const Branch b = Continuation(Circle(), nullptr, o, Eigen::Vector2d(0.0, 1.0)).Run();
+  for (const SpecialPoint& lp : OfType(b, "LP")) EXPECT_NEAR(lp.lambda, -1.0, 1e-9);  // the other fold only
+}
+
+}  // namespace
+}  // namespace stickslip

@@ -42,7 +42,10 @@ std::optional<Sample> ArclengthCorrector::Start(const Eigen::VectorXd& guess, st
   sample.iterations = r.summary.iterations;
   Eigen::VectorXd axis = Eigen::VectorXd::Zero(guess.size());
   axis(options_.parameter_index) = options_.direction;
-  if (!Complete(axis, true, &sample)) {
+  // At a fold the tangent is orthogonal to the lambda axis and [J; axis^T] singular: a generic
+  // border gives the tangent there (its orientation is settled by the first step).
+  const Eigen::VectorXd generic = Eigen::VectorXd::LinSpaced(guess.size(), 1.0, 2.0).normalized();
+  if (!Complete(axis, true, &sample) && !Complete(generic, true, &sample)) {
     *failure = "the bordered Jacobian is singular at the start point";
     return std::nullopt;
   }

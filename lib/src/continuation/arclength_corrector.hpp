@@ -33,7 +33,8 @@ class ArclengthCorrector {
   // Keeps references to all three: they must outlive it.
   ArclengthCorrector(const NonlinearSystem& problem, const Monitor* monitor, const ContinuationOptions& options);
 
-  // `guess` corrected at its lambda, with the tangent towards options.direction in lambda;
+  // `guess` corrected at its lambda, with the tangent towards options.direction in lambda (at a
+  // fold, across the lambda axis, either way);
   // nullopt with the reason in *failure if Newton fails or the bordered Jacobian is singular.
   std::optional<Sample> Start(const Eigen::VectorXd& guess, std::string* failure);
   // The point at arclength s from `from` along its tangent; nullopt if the corrector fails

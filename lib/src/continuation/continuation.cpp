@@ -18,9 +18,10 @@ const char* ToString(BranchEnd end) {
     case BranchEnd::kParameterBound: return "parameter-bound";
     case BranchEnd::kStepTooSmall: return "step-too-small";
     case BranchEnd::kTerminalEvent: return "terminal-event";
-    case BranchEnd::kStartFailed: break;
+    case BranchEnd::kStartFailed: return "start-failed";
+    case BranchEnd::kFoldAtStart: break;
   }
-  return "start-failed";
+  return "fold-at-start";
 }
 
 void ContinuationOptions::Validate() const {
@@ -115,7 +116,8 @@ Continuation::~Continuation() = default;
 bool Continuation::Step() {
   if (state_->ended) return false;
   if (!state_->started) return Start();
-  return PredictAndCorrect() && LeavesTheStartOnThePositiveSides() && RecordEvents() && Accept();
+  return PredictAndCorrect() && HeadsTheAskedWay() && LeavesTheStartOnThePositiveSides() && RecordEvents() &&
+         Accept();
 }
 
 Branch Continuation::Run() {
@@ -180,7 +182,8 @@ bool Continuation::PredictAndCorrect() {
     if (rate != 0.0 && to_bound <= 0.0) {
       return End(BranchEnd::kParameterBound, fmt::format("at the bound lambda = {}", st.Lambda(st.last.u)));
     }
-    const bool clipped = to_bound <= ds;
+    // Only a finite bound can be reached (and tolerance times an infinite bound is no test).
+    const bool clipped = rate != 0.0 && std::isfinite(bound) && to_bound <= ds;
     if (std::optional<detail::Sample> next = st.corrector.Corrected(st.last, clipped ? to_bound : ds,
                                                                     detail::Attempt::kStep)) {
       st.next = std::move(*next);
@@ -201,6 +204,23 @@ bool Continuation::PredictAndCorrect() {
   }
 }
 
+// A start on a fold (a restart from an LP) has a tangent across the lambda axis, oriented at
+// random: the first step shows which way lambda runs. Against the asked direction the other side
+// is tried; where both run that way, the branch folds at the start and goes no further this way.
+bool Continuation::HeadsTheAskedWay() {
+  State& st = *state_;
+  const ContinuationOptions& o = st.options;
+  if (branch_.points.size() != 1 || std::abs(st.last.tangent(o.parameter_index)) > o.location.fold_noise) return true;
+  auto heads_right = [&] { return (st.Lambda(st.next.u) - st.Lambda(st.last.u)) * o.direction >= 0.0; };
+  if (heads_right()) return true;
+  st.last.tangent = -st.last.tangent;
+  if (!PredictAndCorrect()) return false;
+  if (heads_right()) return true;
+  return End(BranchEnd::kFoldAtStart,
+             fmt::format("the branch folds at the start, lambda = {}: on both sides it runs towards {} lambda",
+                         st.Lambda(st.last.u), o.direction > 0 ? "decreasing" : "increasing"));
+}
+
 // A start may lie on a terminal function's zero (on a type boundary: an orbit with a segment of
 // zero length). That is no sign change, but where the first step makes it negative the branch
 // beyond is on the wrong side: it ends at the start.
@@ -219,8 +239,12 @@ bool Continuation::LeavesTheStartOnThePositiveSides() {
 
 bool Continuation::RecordEvents() {
   State& st = *state_;
+  const EventLocationOptions& location = st.options.location;
   for (const std::vector<detail::Located>& point :
-       detail::DetectAndLocate(st.events, st.last, st.next, st.next_ds, st.corrector, st.options.location)) {
+       detail::DetectAndLocate(st.events, st.last, st.next, st.next_ds, st.corrector, location)) {
+    // A restart from a special point finds it again at the start (a TR, an LP): it is the
+    // start's own, no new one.
+    if (branch_.points.size() == 1 && point.front().s <= location.same_point * location.tolerance) continue;
     std::optional<std::pair<BranchEnd, std::string>> ending;
     for (const detail::Located& l : point) {
       const detail::Event& e = *l.event;

@@ -94,6 +94,7 @@ enum class BranchEnd {
   kStepTooSmall,
   kTerminalEvent,
   kStartFailed,
+  kFoldAtStart,  // the start is a fold and the branch runs only against the asked direction
 };
 const char* ToString(BranchEnd end);
 
@@ -153,6 +154,7 @@ class Continuation {
   // The parts of Step, in order; each returns false once the branch has ended.
   bool Start();              // the corrected start, the first point
   bool PredictAndCorrect();  // the next point, the step shortened until the corrector converges
+  bool HeadsTheAskedWay();  // from a start on a fold, where the first step shows the way
   bool LeavesTheStartOnThePositiveSides();  // of the terminal functions that are zero at the start
   bool RecordEvents();       // the special points between the last point and the next, located
   bool Accept();             // the next point becomes the last; the next step size
