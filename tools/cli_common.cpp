@@ -22,6 +22,19 @@ double ParseNumber(std::string_view field, std::string_view text, std::string_vi
   return value;
 }
 
+int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason) {
+  if (!(smallest.value > 0)) {
+    *reason = fmt::format("the solution is not a motion of the system: margin {} = {:.6g} <= 0", smallest.Name(),
+                          smallest.value);
+    return kExitNotAMotion;
+  }
+  if (!verification.Passed()) {
+    *reason = "the solution failed its verification by simulation";
+    return kExitNotAMotion;
+  }
+  return kExitOk;
+}
+
 std::string SetKeysHelp() {
   std::string help = "KEY=VALUE, repeatable; overrides the preset. Keys:";
   for (const SetKey& k : SetKeys()) {

@@ -6,6 +6,8 @@
 #include <string_view>
 
 #include "stickslip/model/parameters.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/verification.hpp"
 
 namespace stickslip::cli {
 
@@ -15,6 +17,14 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;     // an internal or I/O failure
 inline constexpr int kExitBadInput = 2;    // invalid options or values; nothing was written
 inline constexpr int kExitNoConvergence = 3;
+// solve: the orbit was solved but is no motion of the system (a margin <= 0) or failed its
+// verification by simulation; the output is printed all the same.
+inline constexpr int kExitNotAMotion = 4;
+
+// solve's exit code for a converged orbit with this smallest margin and verification:
+// kExitNotAMotion, with the reason in *reason, if the margin is not positive or the verification
+// failed; kExitOk otherwise.
+int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason);
 
 // A decimal number, the whole text, finite; otherwise InvalidInput
 // "<field> = '<text>' is not a finite number: valid range <valid_range>".

@@ -27,10 +27,18 @@ int RunExport(const ExportArgs& args) {
   if (args.samples < 2 || args.samples > 100000) {
     throw InvalidInput("samples", args.samples, "2 <= samples <= 100000");
   }
-  const AutoFiles files = ExportAuto(dir, args.samples);
   const std::string run = fs::absolute(dir).lexically_normal().filename().string().empty()
                               ? fs::absolute(dir).lexically_normal().parent_path().filename().string()
                               : fs::absolute(dir).lexically_normal().filename().string();
+  const AutoFiles files = ExportAuto(dir, args.samples);
+  for (const char* prefix : {"b.", "s."}) {
+    try {
+      CheckOutputFile(dir / (prefix + run), prefix + run);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput::WithMessage("directory",
+                                      fmt::format("directory = '{}' cannot hold the export: {}", dir.string(), e.what()));
+    }
+  }
   WriteFileAtomically(dir / ("b." + run), files.b);
   WriteFileAtomically(dir / ("s." + run), files.s);
   fmt::print("wrote {} and {}\n", (dir / ("b." + run)).string(), (dir / ("s." + run)).string());

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -60,15 +61,38 @@ std::string Report(const RunFile& run, const Executed& e) {
                      ToString(b.branch.end), b.branch.end_message, special.empty() ? " no special points" : special);
 }
 
+// Writes the run's files and reports the run on stdout, and the files of the earlier run's directory
+// that were kept (an export's b.<run> and s.<run>, files of the user's), so that none goes unseen.
+void WriteAndReport(const RunFile& run, const Executed& e, const std::filesystem::path& results) {
+  const std::vector<std::string> kept = WriteRunFiles(results, e.stored);
+  fmt::print("{}\n", Report(run, e));
+  if (!kept.empty()) {
+    fmt::print("{}: kept {} other file(s) of {}: {}\n", run.output, kept.size(), (results / run.output).string(),
+               fmt::join(kept, ", "));
+  }
+}
+
+// CheckOutputDirectory, with a refused output placed at the run file's key 'output'.
+void CheckRunOutput(const RunFile& run, const std::filesystem::path& results) {
+  try {
+    CheckOutputDirectory(results, run.output);
+  } catch (const InvalidInput& e) {
+    if (e.field() != "output") throw;
+    throw RunFileError(fmt::format("{}: key 'output' {}", run.Location("output"), e.Predicate()), "output");
+  }
+}
+
 struct RunArgs {
   std::vector<std::string> files;
   std::string results = "results";
 };
 
 int RunRuns(const RunArgs& args) {
-  // Read every file first: a bad run file fails the command before anything is written.
+  // Read and check every file first: a bad run file or output fails the command before anything
+  // is computed or written.
   std::vector<RunFile> runs;
   for (const std::string& f : args.files) runs.push_back(ReadRunFile(f));
+  for (const RunFile& run : runs) CheckRunOutput(run, args.results);
   int code = kExitOk;
   for (const RunFile& run : runs) {
     std::optional<Executed> e = Execute(run, args.results);
@@ -76,8 +100,7 @@ int RunRuns(const RunArgs& args) {
       code = kExitNoConvergence;
       continue;
     }
-    WriteRunFiles(args.results, e->stored);
-    fmt::print("{}\n", Report(run, *e));
+    WriteAndReport(run, *e, args.results);
   }
   return code;
 }
@@ -88,13 +111,18 @@ struct CheckArgs {
 };
 
 int RunCheck(const CheckArgs& args) {
-  int code = kExitOk;
+  // Every run file and stored run is read first: a missing one fails before anything is computed.
+  std::vector<std::pair<RunFile, StoredRun>> checks;
   for (const std::string& path : args.files) {
-    const RunFile run = ReadRunFile(path);
+    RunFile run = ReadRunFile(path);
+    StoredRun stored = ReadRunFiles(std::filesystem::path(args.results) / run.output);
+    checks.emplace_back(std::move(run), std::move(stored));
+  }
+  int code = kExitOk;
+  for (const auto& [run, stored] : checks) {
     std::optional<Executed> e = Execute(run, args.results);
     if (!e) return kExitNoConvergence;
-    const std::vector<Difference> differences =
-        CompareWithStored(e->stored, ReadRunFiles(std::filesystem::path(args.results) / run.output));
+    const std::vector<Difference> differences = CompareWithStored(e->stored, stored);
     if (differences.empty()) {
       fmt::print("check {}: ok ({} special points)\n", run.output, e->branch.branch.special_points.size());
       continue;
@@ -138,10 +166,10 @@ int RunContinue(ContinueArgs args) {
   if (!IsRunName(run.output)) {
     throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
   }
+  CheckOutputDirectory(args.start.results, run.output);
   std::optional<Executed> e = Execute(run, args.start.results);
   if (!e) return kExitNoConvergence;
-  WriteRunFiles(args.start.results, e->stored);
-  fmt::print("{}\n", Report(run, *e));
+  WriteAndReport(run, *e, args.start.results);
   return kExitOk;
 }
 

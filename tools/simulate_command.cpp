@@ -68,6 +68,7 @@ std::string SamplesCsv(const SimulationResult& result) {
 }
 
 int RunSimulate(const SimulateArgs& args) {
+  if (!args.csv_path.empty()) CheckOutputFile(args.csv_path, "csv");
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   const double periods = ParseNumber("periods", args.periods, "0 < periods <= 1e6");
   if (!(periods > 0.0 && periods <= 1e6)) {

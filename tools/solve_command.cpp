@@ -92,6 +92,14 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
   return out;
 }
 
+// SolvedOrbitExitCode, with the reason on stderr, so that scripts need not parse the output.
+int Outcome(const Margin& smallest, const Verification& verification) {
+  std::string reason;
+  const int code = SolvedOrbitExitCode(smallest, verification, &reason);
+  if (code != kExitOk) fmt::print(stderr, "error: {}\n", reason);
+  return code;
+}
+
 int RunSolve(const SolveArgs& args) {
   if (args.compare_paper && args.start.preset.empty()) {
     throw InvalidInput::WithMessage("compare-paper", "compare-paper needs --preset");
@@ -112,14 +120,15 @@ int RunSolve(const SolveArgs& args) {
     return kExitNoConvergence;
   }
   const std::vector<Margin> margins = AdmissibilityMargins(orbit);
+  const Margin smallest = SmallestMargin(margins);
   const Verification verification = VerifyOrbit(orbit);
   if (args.json) {
     fmt::print("{}", Json(orbit, solution, margins, verification));
-    return kExitOk;
+    return Outcome(smallest, verification);
   }
   if (args.compare_paper) {
     fmt::print("{}", PaperComparison(*preset, orbit, args.paper_choice ? std::string(preset->paper_choice_note) : "paper's data held"));
-    return kExitOk;
+    return Outcome(smallest, verification);
   }
   fmt::print("signature  {}\nparameters {}\n", orbit.signature.ToString(), DescribeParameters(orbit.parameters));
   std::string unknowns;
@@ -135,7 +144,6 @@ int RunSolve(const SolveArgs& args) {
   for (const Margin& m : margins) {
     fmt::print("  {:<16} {:>14.6g}  at t = {:.6g}\n", m.Name(), m.value, m.t);
   }
-  const Margin smallest = SmallestMargin(margins);
   fmt::print("smallest   {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
              smallest.value > 0 ? "admissible" : "NOT a motion of the system");
   const Stability stability = StabilityOf(orbit);
@@ -146,7 +154,7 @@ int RunSolve(const SolveArgs& args) {
   }
   fmt::print("stability  {}\n", stability.stable ? "stable" : "unstable");
   fmt::print("verification {}\n{}", verification.Passed() ? "passed" : "FAILED", verification.Report());
-  return kExitOk;
+  return Outcome(smallest, verification);
 }
 
 }  // namespace
@@ -157,7 +165,8 @@ Command AddSolveCommand(CLI::App& app) {
       "solve",
       "Solve the periodicity equations of an orbit type for one periodic orbit; print the "
       "unknowns, the Newton summary, the admissibility margins and a verification by the exact "
-      "and the Odeint simulators. Exit code 3 if Newton does not converge.");
+      "and the Odeint simulators. Exit code 3 if Newton does not converge, 4 if the solution is not a "
+      "motion of the system (a margin <= 0) or fails its verification (the output is printed all the same).");
   AddStartOptions(*cmd, &args->start, StartOptions::kOrbit);
   cmd->add_option("--results", args->start.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_flag("--paper-choice", args->paper_choice,

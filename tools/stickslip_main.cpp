@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
   CLI::App app(
       "stickslip: periodic orbits of the two-degree-of-freedom dry-friction oscillator of "
       "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276.\n"
-      "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence.",
+      "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence, 4 solve: the "
+      "solution is not a motion of the system (a margin <= 0) or failed its verification.",
       "stickslip");
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddCheckCommand(app),

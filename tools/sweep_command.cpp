@@ -41,6 +41,7 @@ int Count(const char* field, const std::string& text, int low, int high) {
 }
 
 int RunSweep(const SweepArgs& args) {
+  CheckOutputFile(args.output, "output");
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
   const std::optional<ParameterId> parameter = ParameterFromString(args.parameter);
   if (!parameter) {

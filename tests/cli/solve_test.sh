@@ -30,12 +30,33 @@ PY
 "$bin" solve --preset paper-4.2 --set omega=0.63 --json > "$work/42.json"
 code=$?
 [ "$code" -lt 128 ] || fail "paper-4.2 omega=0.63 crashed with exit $code"
+[ "$code" -eq 4 ] || fail "paper-4.2 omega=0.63, no motion of the system: exit $code (want 4)"
 /usr/bin/python3 -c "
 import json
 v = json.load(open('$work/42.json'))['verification']
 assert v['passed'] is False and 'u_s = -' in v['not_simulated'], v
 assert v['exact']['max_mismatch'] is None, v
 print('not simulated ok')" || failures=$((failures + 1))
+
+# Section 5.2's printed data solve to an orbit whose stick ends early (G:3 < 0): exit 4 in every
+# output format, the output printed all the same and the reason in one line on stderr.
+for format in "" --json --compare-paper; do
+  "$bin" solve --preset paper-5.2 $format > "$work/52-printed" 2> "$work/err"
+  code=$?
+  [ "$code" -eq 4 ] || fail "paper-5.2 $format: exit $code (want 4)"
+  [ -s "$work/52-printed" ] || fail "paper-5.2 $format: nothing printed"
+  [ "$(cat "$work/err")" = "error: the solution is not a motion of the system: margin G:3 = -0.0072388 <= 0" ] ||
+    fail "paper-5.2 $format: stderr $(cat "$work/err")"
+done
+"$bin" solve --preset paper-5.2 > "$work/52-printed" 2> /dev/null
+grep -q "^smallest   G:3 = -0.0072388: NOT a motion of the system" "$work/52-printed" || fail "paper-5.2 report changed"
+/usr/bin/python3 -c "
+import json, subprocess, sys
+o = json.loads(subprocess.run(['$bin', 'solve', '--preset', 'paper-5.2', '--json'], capture_output=True).stdout)
+assert o['converged'] is True and o['verification']['passed'] is False, o['verification']
+print('paper-5.2 json ok')" || failures=$((failures + 1))
+# The paper's own choice for section 5.2 is a motion: exit 0.
+"$bin" solve --preset paper-5.2 --paper-choice > /dev/null || fail "paper-5.2 --paper-choice exit $?"
 
 # Section 5.2 with phi = pi/2 held and u_r released (the paper's choice, ERRATA: u_r = 0.478).
 "$bin" solve --preset paper-5.2 --fix phi=1.5707963267948966 --free u_r --json > "$work/52.json" ||

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "stickslip/invalid_input.hpp"
+
 namespace stickslip {
 
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content) {
@@ -40,6 +42,24 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
         fmt::format("cannot rename '{}' to '{}': {}", temporary.string(), path.string(),
                     error.message()));
   }
+}
+
+void CheckOutputFile(const std::filesystem::path& path, const std::string& field) {
+  namespace fs = std::filesystem;
+  auto refuse = [&](const std::string& why) {
+    return InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: {}: valid a file in an existing directory",
+                                                        field, path.string(), why));
+  };
+  if (path.empty()) throw refuse("it is empty");
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (status.type() == fs::file_type::none) throw refuse(fmt::format("it cannot be examined ({})", error.message()));
+  if (fs::exists(status)) {
+    if (!fs::is_regular_file(status)) throw refuse(fs::is_directory(status) ? "it is a directory" : "it is not a file");
+    return;
+  }
+  const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(directory, error)) throw refuse(fmt::format("directory '{}' does not exist", directory.string()));
 }
 
 }  // namespace stickslip

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -239,6 +240,24 @@ std::string ReadTextFile(const fs::path& path) {
   return text.str();
 }
 
+// Whether `directory` can be created, found by creating what is missing of it and removing that
+// again; the error of the first directory that could not be.
+std::error_code TryCreateDirectories(const fs::path& directory) {
+  std::vector<fs::path> missing;
+  std::error_code ignored;
+  for (fs::path p = directory; !p.empty() && !fs::exists(p, ignored); p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;  // a root that is not there
+  }
+  std::error_code error;
+  std::vector<fs::path> created;
+  for (auto p = missing.rbegin(); p != missing.rend() && !error; ++p) {
+    if (fs::create_directory(*p, error)) created.push_back(*p);
+  }
+  for (auto p = created.rbegin(); p != created.rend(); ++p) fs::remove(*p, ignored);
+  return error;
+}
+
 }  // namespace
 
 std::vector<std::string> ColumnNames(const StoredPoint& p) {
@@ -326,28 +345,84 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   return run;
 }
 
-void WriteRunFiles(const fs::path& results_root, const StoredRun& run) {
+void CheckOutputDirectory(const fs::path& results_root, const std::string& output) {
+  auto results_error = [&](const std::string& why) {
+    return InvalidInput::WithMessage(
+        "results", fmt::format("results = '{}' is invalid: {}: valid a directory, or a path where one can be created",
+                               results_root.string(), why));
+  };
+  if (results_root.empty()) throw results_error("it is empty");
+  std::error_code error;
+  const fs::file_status root = fs::status(results_root, error);
+  if (fs::exists(root) && !fs::is_directory(root)) throw results_error("it is not a directory");
+  if (!fs::exists(root)) {
+    if (const std::error_code failed = TryCreateDirectories(results_root)) {
+      throw results_error(fmt::format("it cannot be created ({})", failed.message()));
+    }
+    return;  // then it holds no output yet
+  }
+
+  const fs::path target = results_root / output;
+  const fs::file_status status = fs::symlink_status(target, error);
+  if (status.type() == fs::file_type::not_found) return;
+  auto refuse = [&](const std::string& why) {
+    return InvalidInput::WithMessage(
+        "output", fmt::format("output = '{}' is invalid: '{}' {}: valid a new name or the directory of a stickslip run "
+                              "(with its summary.json)",
+                              output, target.string(), why));
+  };
+  if (error) throw refuse(fmt::format("cannot be examined ({})", error.message()));
+  if (fs::is_symlink(status)) throw refuse("is a symbolic link");
+  if (!fs::is_directory(status)) throw refuse("is not a directory");
+  try {
+    ParseSummary(ReadTextFile(target / kSummaryFile), target / kSummaryFile);
+  } catch (const InvalidInput& e) {
+    throw refuse(fmt::format("holds no stickslip run ({})", e.what()));
+  }
+}
+
+std::vector<std::string> WriteRunFiles(const fs::path& results_root, const StoredRun& run) {
   const RunFiles files = FormatRunFiles(run);
   const std::string& output = run.summary.output;
+  CheckOutputDirectory(results_root, output);
   fs::create_directories(results_root);
   const fs::path target = results_root / output;
   const fs::path temporary = results_root / fmt::format(".{}.tmp.{}", output, static_cast<long>(::getpid()));
   const fs::path old = results_root / fmt::format(".{}.old.{}", output, static_cast<long>(::getpid()));
+  constexpr std::array<const char*, 3> kResultFiles = {kBranchFile, kSpecialPointsFile, kSummaryFile};
   std::error_code ignored;
   fs::remove_all(temporary, ignored);
   fs::create_directories(temporary);
+  std::vector<std::string> kept;
   try {
     WriteFileAtomically(temporary / kBranchFile, files.branch_csv);
     WriteFileAtomically(temporary / kSpecialPointsFile, files.special_points_csv);
     WriteFileAtomically(temporary / kSummaryFile, files.summary_json);
-    if (fs::exists(target)) fs::rename(target, old);
+    if (fs::exists(target)) {
+      // Listed first: POSIX leaves open what a directory listing shows of entries moved during it.
+      std::vector<std::string> others;
+      for (const fs::directory_entry& entry : fs::directory_iterator(target)) {
+        const std::string name = entry.path().filename().string();
+        if (std::find(kResultFiles.begin(), kResultFiles.end(), name) == kResultFiles.end()) others.push_back(name);
+      }
+      for (const std::string& name : others) {
+        fs::rename(target / name, temporary / name);
+        kept.push_back(name);
+      }
+      fs::rename(target, old);
+    }
     fs::rename(temporary, target);
   } catch (...) {
-    fs::remove_all(temporary, ignored);
     if (!fs::exists(target) && fs::exists(old)) fs::rename(old, target, ignored);
+    for (const std::string& name : kept) fs::rename(temporary / name, target / name, ignored);
+    // Not remove_all: a file of the user's that could not be moved back stays where it is.
+    for (const char* name : kResultFiles) fs::remove(temporary / name, ignored);
+    fs::remove(temporary, ignored);
     throw;
   }
   fs::remove_all(old, ignored);
+  std::sort(kept.begin(), kept.end());
+  return kept;
 }
 
 StoredRun ReadRunFiles(const fs::path& run_directory) {

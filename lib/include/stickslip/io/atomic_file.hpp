@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace stickslip {
@@ -11,5 +12,11 @@ namespace stickslip {
 // std::runtime_error naming the path if the directory is missing or the write fails; the
 // target is then untouched.
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content);
+
+// Throws InvalidInput naming `field` if WriteFileAtomically(path, ...) is bound to fail, or
+// would replace what is not a file: `path` is empty, its directory does not exist, or it exists
+// as something other than a regular file (a directory, a device). Front ends call it before the
+// work whose result they write.
+void CheckOutputFile(const std::filesystem::path& path, const std::string& field);
 
 }  // namespace stickslip

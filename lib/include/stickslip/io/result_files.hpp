@@ -40,9 +40,20 @@ RunFiles FormatRunFiles(const StoredRun& run);
 // summary.json that differ from the tables.
 StoredRun ParseRunFiles(const RunFiles& files, const std::filesystem::path& directory);
 
+// Throws InvalidInput naming "results" if results_root is not a directory and cannot be created
+// (a file, a path too long, no permission), and InvalidInput naming "output" if
+// results_root/<output> exists but is not the directory of a stickslip run (one whose
+// summary.json reads as a run's): a file, a symbolic link, a directory of the user's, an
+// unreadable one. Touches nothing: a missing results_root is created and removed again, the one
+// exact test that it can be. Front ends call it before a run, so that nothing is computed for
+// nothing; WriteRunFiles calls it again.
+void CheckOutputDirectory(const std::filesystem::path& results_root, const std::string& output);
+
 // Writes results_root/<run.summary.output>/ as a whole: the three files go into a temporary
-// directory first, which then replaces the old one.
-void WriteRunFiles(const std::filesystem::path& results_root, const StoredRun& run);
+// directory first, which then replaces the old one. Every other file of the old directory (the
+// AUTO export's b.<run> and s.<run>, files of the user's) moves into the new one; returns their
+// names, sorted. Throws InvalidInput as CheckOutputDirectory, with nothing touched.
+std::vector<std::string> WriteRunFiles(const std::filesystem::path& results_root, const StoredRun& run);
 
 // Reads results_root/<run>/. Throws InvalidInput as ParseRunFiles, and if a file cannot be read.
 StoredRun ReadRunFiles(const std::filesystem::path& run_directory);

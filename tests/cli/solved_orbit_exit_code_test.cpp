@@ -1,0 +1,52 @@
+// solve's exit code for a converged orbit: 4 when the orbit is not a motion of the system or its
+// verification failed, each on its own, so that a script can rely on it. The verification alone
+// fails only at edge cases of the simulators today, so it is set up here rather than found.
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli_common.hpp"
+
+namespace stickslip::cli {
+namespace {
+
+Margin MarginOf(double value) { return Margin{.base = "G", .kind = MarginKind::kDuration, .segment = 2, .value = value}; }
+
+Verification Passing() {
+  Verification v;
+  v.exact.sequence_matches = true;
+  v.odeint.sequence_matches = true;
+  return v;
+}
+
+TEST(SolvedOrbitExitCode, AdmissibleVerifiedOrbitIsSuccess) {
+  std::string reason;
+  ASSERT_TRUE(Passing().Passed());
+  EXPECT_EQ(SolvedOrbitExitCode(MarginOf(0.01), Passing(), &reason), kExitOk);
+  EXPECT_EQ(reason, "");
+}
+
+TEST(SolvedOrbitExitCode, NonPositiveMarginIsNotAMotionEvenWhenVerified) {
+  for (double value : {0.0, -0.0072388}) {
+    std::string reason;
+    EXPECT_EQ(SolvedOrbitExitCode(MarginOf(value), Passing(), &reason), kExitNotAMotion);
+    EXPECT_NE(reason.find("not a motion of the system: margin G:3 = "), std::string::npos) << reason;
+  }
+}
+
+TEST(SolvedOrbitExitCode, FailedVerificationOfAnAdmissibleOrbitIsNotAMotion) {
+  Verification v = Passing();
+  v.exact.sequence_matches = false;
+  std::string reason;
+  EXPECT_EQ(SolvedOrbitExitCode(MarginOf(0.01), v, &reason), kExitNotAMotion);
+  EXPECT_EQ(reason, "the solution failed its verification by simulation");
+}
+
+TEST(SolvedOrbitExitCode, NanMarginIsNotAMotion) {
+  std::string reason;
+  EXPECT_EQ(SolvedOrbitExitCode(MarginOf(std::numeric_limits<double>::quiet_NaN()), Passing(), &reason), kExitNotAMotion);
+}
+
+}  // namespace
+}  // namespace stickslip::cli
