@@ -54,6 +54,8 @@ TEST(Signature, ParseErrorsSayWhereAndWhy) {
   EXPECT_NE(ParseError("slip- / symmetric").find("option 'symmetric'"), std::string::npos);
   EXPECT_NE(ParseError("slip- / antisymmetric period 2").find("odd"), std::string::npos);
   EXPECT_NE(ParseError("slip- / period 0").find("period"), std::string::npos);
+  EXPECT_NE(ParseError("slip- / period 1 period 3").find("option 'period' is given twice"), std::string::npos);
+  EXPECT_NE(ParseError("slip- / antisymmetric antisymmetric").find("given twice"), std::string::npos);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "stickslip/orbits/signature.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -84,7 +85,13 @@ Signature Signature::Parse(std::string_view text) {
   int period_multiple = 1;
   if (slash != std::string_view::npos) {
     std::istringstream options(std::string(text.substr(slash + 1)));
+    std::vector<std::string> seen;
     while (options >> token) {
+      // "period 1 period 2" would silently keep the last: an option is given once.
+      if (std::find(seen.begin(), seen.end(), token) != seen.end()) {
+        throw fail(fmt::format("option '{}' is given twice", token));
+      }
+      seen.push_back(token);
       if (token == "antisymmetric") {
         antisymmetric = true;
       } else if (token == "period") {
