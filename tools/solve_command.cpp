@@ -137,7 +137,9 @@ int RunSolve(const SolveArgs& args) {
   }
   const Margin smallest = SmallestMargin(margins);
   fmt::print("smallest   {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
-             smallest.value > 0 ? "admissible" : "NOT a motion of the system");
+             std::isnan(smallest.value) ? "not defined (its root search was cut short)"
+             : smallest.value > 0       ? "admissible"
+                                        : "NOT a motion of the system");
   const Stability stability = StabilityOf(orbit);
   fmt::print("floquet multipliers (monodromy with saltation matrices){}:\n",
              stability.one_sided ? ", one-sided at the abnormal stops" : "");
