@@ -145,7 +145,9 @@ int RunSolve(const SolveArgs& args) {
     fmt::print("  {:<16} {:>14.6g}  at t = {:.6g}\n", m.Name(), m.value, m.t);
   }
   fmt::print("smallest   {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
-             smallest.value > 0 ? "admissible" : "NOT a motion of the system");
+             std::isnan(smallest.value) ? "not defined (its root search was cut short)"
+             : smallest.value > 0       ? "admissible"
+                                        : "NOT a motion of the system");
   const Stability stability = StabilityOf(orbit);
   fmt::print("floquet multipliers (monodromy with saltation matrices){}:\n",
              stability.one_sided ? ", one-sided at the abnormal stops" : "");

@@ -68,11 +68,6 @@ int RunSweep(const SweepArgs& args) {
   }
   const int seed = Count("seed", args.seed, 0, 1000000000);
   options.threads = Count("threads", args.threads, 0, 1024);
-  for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
-    Parameters p = input.parameters;
-    p[*parameter] = value;
-    if (const auto invalid = Validate(p)) throw InvalidInput::WithMessage(field, fmt::format("{}: {}", field, invalid->what()));
-  }
   const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
   const std::vector<SweepPoint> points = Sweep(input.parameters, starts, input.phi, options);
   WriteFileAtomically(args.output, SweepCsv(points, *parameter, input.phi));

@@ -3,6 +3,7 @@
 // other, and an output that does not depend on the number of threads.
 #include "stickslip/analysis/sweep.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <numbers>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "stickslip/model/modal.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 
@@ -136,6 +138,43 @@ TEST(Sweep, RejectsNoStartsAndCountsOutOfRange) {
     o.recorded_periods = recorded;
     EXPECT_THROW(Sweep(e.parameters, {e.initial_state}, e.phi, o), InvalidInput)
         << steps << " " << transients << " " << recorded;
+  }
+}
+
+// An interior grid value on a natural frequency is refused before anything is simulated, as the
+// ends are, in both passes and with fixed starts.
+TEST(Sweep, RejectsAnInteriorValueOnANaturalFrequencyNamingTheStep) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  const double omega1 = NaturalFrequencies(e.parameters.chi, e.parameters.eta).first;
+  for (SweepStart start : {SweepStart::kChained, SweepStart::kFixed}) {
+    SweepOptions o = ShortSweep(start);
+    o.from = omega1 - 0.01;
+    o.to = omega1 + 0.01;  // step 1 of 2 lies within rounding of omega1
+    o.transient_periods = 500;
+    const auto begin = std::chrono::steady_clock::now();
+    try {
+      Sweep(e.parameters, {e.initial_state}, e.phi, o);
+      FAIL() << "no error";
+    } catch (const InvalidInput& error) {
+      EXPECT_EQ(error.field(), "steps");
+      EXPECT_NE(std::string(error.what()).find("step 1 of the"), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("natural frequencies"), std::string::npos) << error.what();
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(), 1.0);
+  }
+}
+
+TEST(Sweep, NamesTheEndThatIsInvalid) {
+  const PaperExample& e = *FindPaperExample("paper-4.1");
+  SweepOptions o = ShortSweep(SweepStart::kChained);
+  o.parameter = ParameterId::kStaticFriction;
+  o.from = 0.3;
+  o.to = 0.05;  // below u_s = 0.1
+  try {
+    Sweep(e.parameters, {e.initial_state}, e.phi, o);
+    FAIL() << "no error";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "to");
   }
 }
 

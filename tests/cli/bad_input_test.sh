@@ -38,13 +38,13 @@ expect_rejected() {  # expect_rejected <field> <expected text> <args...>
 }
 
 p=(--preset paper-4.1)
-expect_rejected chi "0 < chi < 1" "${p[@]}" --set chi=1.5
-expect_rejected chi "0 < chi < 1" "${p[@]}" --set chi=0
-expect_rejected eta "eta > 0" "${p[@]}" --set eta=-1
-expect_rejected eta "eta > 0" "${p[@]}" --set eta=0
-expect_rejected omega "omega > 0" "${p[@]}" --set omega=0
-expect_rejected u_s "u_s > 0" "${p[@]}" --set u_s=0
-expect_rejected u_r "u_r >= u_s" "${p[@]}" --set u_r=0.05
+expect_rejected chi "0.01 <= chi <= 0.99" "${p[@]}" --set chi=1.5
+expect_rejected chi "0.01 <= chi <= 0.99" "${p[@]}" --set chi=0
+expect_rejected eta "0.01 <= eta <= 100" "${p[@]}" --set eta=-1
+expect_rejected eta "0.01 <= eta <= 100" "${p[@]}" --set eta=0
+expect_rejected omega "0.01 <= omega <= 100" "${p[@]}" --set omega=0
+expect_rejected u_s "1e-06 <= u_s <= 1000" "${p[@]}" --set u_s=0
+expect_rejected u_r "u_s = 0.1 <= u_r <= 1000" "${p[@]}" --set u_r=0.05
 expect_rejected omega "finite number" "${p[@]}" --set omega=nan
 expect_rejected x10 "finite number" "${p[@]}" --set x10=inf
 expect_rejected phi "finite number" "${p[@]}" --set phi=1e999
@@ -73,10 +73,10 @@ expect_rejected scatter "0 <= scatter <= 1e6" "${w[@]}" --scatter 1e7
 expect_rejected seed "0 <= seed" "${w[@]}" --seed -3
 expect_rejected threads "0 <= threads <= 1024" "${w[@]}" --threads -1
 expect_rejected steps "1 <= steps" --preset paper-4.1 --from 0.55 --to 0.6 --steps 0
-expect_rejected "from: omega = -0.1" "omega > 0" --preset paper-4.1 --from -0.1 --to 0.6
-expect_rejected "to: u_r = 0.05" "u_r >= u_s" --preset paper-4.1 --parameter u_r --from 0.3 --to 0.05
+expect_rejected "from: omega = -0.1" "0.01 <= omega <= 100" --preset paper-4.1 --from -0.1 --to 0.6
+expect_rejected "to: u_r = 0.05" "u_s = 0.1 <= u_r <= 1000" --preset paper-4.1 --parameter u_r --from 0.3 --to 0.05
 expect_rejected parameter "chi, eta, omega" "${w[@]}" --parameter mu
-expect_rejected "from = 'abc'" "valid range 0 < chi < 1" --preset paper-4.1 --parameter chi --from abc --to 0.3
+expect_rejected "from = 'abc'" "valid range 0.01 <= chi <= 0.99" --preset paper-4.1 --parameter chi --from abc --to 0.3
 expect_rejected point "run '../results' is invalid" --point ../results:EP1 --from 0.55 --to 0.6
 
 # An unknown subcommand also exits 2 with one line.

@@ -1,6 +1,7 @@
 #include "stickslip/model/parameters.hpp"
 
 #include <limits>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,45 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{ParameterId::kStaticFriction, 0.05},
                       BadCase{ParameterId::kEta, kNaN}, BadCase{ParameterId::kOmega, kInf},
                       BadCase{ParameterId::kStaticFriction, kNaN}));
+
+// Just outside each magnitude bound, and far outside (the values that overflowed or hung).
+INSTANTIATE_TEST_SUITE_P(
+    BeyondTheMagnitudes, ParameterValidationRejects,
+    ::testing::Values(BadCase{ParameterId::kChi, 0.0099}, BadCase{ParameterId::kChi, 0.9901},
+                      BadCase{ParameterId::kEta, 0.0099}, BadCase{ParameterId::kEta, 100.01},
+                      BadCase{ParameterId::kEta, 1e308}, BadCase{ParameterId::kOmega, 0.0099},
+                      BadCase{ParameterId::kOmega, 1e-300}, BadCase{ParameterId::kOmega, 100.01},
+                      BadCase{ParameterId::kSlidingFriction, 9.9e-7},
+                      BadCase{ParameterId::kSlidingFriction, 1e-16},
+                      BadCase{ParameterId::kSlidingFriction, 1000.1},
+                      BadCase{ParameterId::kStaticFriction, 1000.1},
+                      BadCase{ParameterId::kStaticFriction, 1e308}));
+
+TEST(ParameterValidation, AcceptsEachEndOfEachMagnitudeRange) {
+  const std::pair<ParameterId, double> ends[] = {
+      {ParameterId::kChi, kMinChi},      {ParameterId::kChi, kMaxChi},     {ParameterId::kEta, kMinEta},
+      {ParameterId::kEta, kMaxEta},      {ParameterId::kOmega, kMinOmega}, {ParameterId::kOmega, kMaxOmega},
+      {ParameterId::kSlidingFriction, kMinSlidingFriction},             {ParameterId::kStaticFriction, kMaxFriction}};
+  for (const auto& [id, value] : ends) {
+    Parameters p = Valid();
+    p[id] = value;
+    EXPECT_FALSE(Validate(p).has_value()) << ToString(id) << " = " << value;
+  }
+  Parameters both = Valid();
+  both.u_s = both.u_r = kMaxFriction;
+  EXPECT_FALSE(Validate(both).has_value());
+}
+
+TEST(StateValidation, AcceptsTheBoundAndRejectsBeyondItNamingTheField) {
+  EXPECT_FALSE(ValidateStateValue("x10", kMaxStateMagnitude).has_value());
+  EXPECT_FALSE(ValidateStateValue("phi", -kMaxStateMagnitude).has_value());
+  for (double value : {1.0000001e6, -1e308, kNaN}) {
+    const auto invalid = ValidateStateValue("v20", value);
+    ASSERT_TRUE(invalid.has_value()) << value;
+    EXPECT_EQ(invalid->field(), "v20");
+    EXPECT_EQ(invalid->valid_range(), kStateRange);
+  }
+}
 
 TEST(ParameterValidation, RejectsForcingAtEachNaturalFrequency) {
   Parameters p = Valid();

@@ -3,6 +3,7 @@
 // near-tangency whose two stops are too close for any sampling to see.
 #include "stickslip/model/simulation.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -209,6 +210,32 @@ TEST(ExactSimulator, FindsAStickExitManyForcingPeriodsIntoTheStick) {
     EXPECT_EQ(exact.events[i].mode_after, odeint.events[i].mode_after) << "event " << i;
     EXPECT_NEAR(exact.events[i].t, odeint.events[i].t, 1e-8) << "event " << i;
   }
+}
+
+// Held by a static level far above the forcing, the mass sticks for the whole duration: the
+// search for the stick's exit runs on in windows, each within the root finder's bound.
+TEST(ExactSimulator, SticksThroughAThousandForcingPeriodsInBoundedSearches) {
+  const Parameters p{0.3, 2.0, 0.6, 0.1, 1000.0};
+  SimulationOptions options;
+  options.duration = 1000.0 * 2.0 * kPi / p.omega;
+  const auto start = std::chrono::steady_clock::now();
+  const SimulationResult r = SimulateExact(p, State(0.5, 0.0, 0.0, 0.0), 0.0, options);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_TRUE(r.Completed());
+  EXPECT_TRUE(r.events.empty());
+  ASSERT_EQ(r.segments.size(), 1u);
+  EXPECT_EQ(r.segments[0].mode, Mode::kStick);
+}
+
+TEST(ExactSimulator, ReportsTheSearchLimitInsteadOfRunningOn) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SimulationOptions options;
+  options.duration = 2.0 * 2.0 * kPi / e.parameters.omega;
+  options.zeros.max_intervals = 2;
+  const SimulationResult r = SimulateExact(e.parameters, e.initial_state, e.phi, options);
+  EXPECT_EQ(r.end, SimulationEnd::kSearchLimit);
+  EXPECT_FALSE(r.Completed());
+  EXPECT_NE(r.message.find("too many sub-intervals"), std::string::npos) << r.message;
 }
 
 // A stick from rest with x1 off its stick equilibrium chi x2 by -0.2: the stick force s (eq. 11)

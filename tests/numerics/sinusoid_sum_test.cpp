@@ -1,6 +1,8 @@
 #include "stickslip/numerics/sinusoid_sum.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -12,7 +14,7 @@ constexpr double kPi = std::numbers::pi;
 
 TEST(SinusoidSumZeros, FindsEveryZeroOfCosineInOrder) {
   const SinusoidSum f(0.0, 0.0, {{1.0, 1.0, 0.0}});  // cos t
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 10.0, 100);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 10.0, 100).zeros;
   ASSERT_EQ(zeros.size(), 3u);  // pi/2, 3pi/2, 5pi/2 (< 10)
   for (int k = 0; k < 3; ++k) {
     EXPECT_NEAR(zeros[k].t, kPi / 2 + k * kPi, 1e-13);
@@ -26,7 +28,7 @@ TEST(SinusoidSumZeros, SeparatesTwoZerosCloserThanAnySamplingStep) {
   // coefficients moves the zeros by ~1e-13.)
   const double delta = 1e-3;
   const SinusoidSum f(-std::cos(delta), 0.0, {{1.0, std::cos(5.0), std::sin(5.0)}});
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 6.0, 100);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 6.0, 100).zeros;
   ASSERT_EQ(zeros.size(), 2u);
   EXPECT_NEAR(zeros[0].t, 5.0 - delta, 1e-12);
   EXPECT_NEAR(zeros[1].t, 5.0 + delta, 1e-12);
@@ -34,7 +36,7 @@ TEST(SinusoidSumZeros, SeparatesTwoZerosCloserThanAnySamplingStep) {
 
 TEST(SinusoidSumZeros, ReportsADoubleZeroAsATouch) {
   const SinusoidSum f(1.0, 0.0, {{1.0, -1.0, 0.0}});  // 1 - cos t >= 0, zero at 2 pi
-  const std::vector<Zero> zeros = Zeros(f, 0.5, 7.0, 100);
+  const std::vector<Zero> zeros = Zeros(f, 0.5, 7.0, 100).zeros;
   ASSERT_EQ(zeros.size(), 1u);
   EXPECT_EQ(zeros[0].kind, ZeroKind::kTouch);
   EXPECT_NEAR(zeros[0].t, 2 * kPi, 1e-12);
@@ -42,7 +44,7 @@ TEST(SinusoidSumZeros, ReportsADoubleZeroAsATouch) {
 
 TEST(SinusoidSumZeros, SkipsTheZeroAtTheStartOfTheInterval) {
   const SinusoidSum f(0.0, 0.0, {{2.0, 0.0, 1.0}});  // sin 2t: zeros at 0, pi/2, pi
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 3.5, 100);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 3.5, 100).zeros;
   ASSERT_EQ(zeros.size(), 2u);
   EXPECT_NEAR(zeros[0].t, kPi / 2, 1e-13);
   EXPECT_NEAR(zeros[1].t, kPi, 1e-13);
@@ -51,7 +53,7 @@ TEST(SinusoidSumZeros, SkipsTheZeroAtTheStartOfTheInterval) {
 TEST(SinusoidSumZeros, SkipsAStartingZeroWithZeroSlope) {
   // 1 - cos t starts with f = f' = 0 and next vanishes at 2 pi.
   const SinusoidSum f(1.0, 0.0, {{1.0, -1.0, 0.0}});
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 7.0, 100);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 7.0, 100).zeros;
   ASSERT_EQ(zeros.size(), 1u);
   EXPECT_NEAR(zeros[0].t, 2 * kPi, 1e-12);
 }
@@ -60,7 +62,7 @@ TEST(SinusoidSumZeros, FindsAZeroSoonAfterAStartingZeroWhenCurvatureOpposesSlope
   // f = 5 - sin t - 5 cos t: f(0) = 0, f'(0) = -1, f''(0) = 5, so f turns back and vanishes again
   // at 2 atan(0.2) (found by an independent review: a curvature-based skip once jumped it).
   const SinusoidSum f(5.0, 0.0, {{1.0, -5.0, -1.0}});
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 3.0, 5);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 3.0, 5).zeros;
   ASSERT_FALSE(zeros.empty());
   EXPECT_NEAR(zeros[0].t, 2.0 * std::atan(0.2), 1e-13);
 }
@@ -68,7 +70,7 @@ TEST(SinusoidSumZeros, FindsAZeroSoonAfterAStartingZeroWhenCurvatureOpposesSlope
 TEST(SinusoidSumZeros, ReportsAZeroThatIsDueAtOnce) {
   // f(0) = 3e-12, within the touch level, and decreasing: the zero 3e-12 later is not skipped.
   const SinusoidSum f(3e-12, 0.0, {{1.0, 0.0, -1.0}});  // 3e-12 - sin t
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 1.0, 5);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 1.0, 5).zeros;
   ASSERT_EQ(zeros.size(), 1u);
   EXPECT_NEAR(zeros[0].t, 3e-12, 1e-15);
 }
@@ -76,7 +78,7 @@ TEST(SinusoidSumZeros, ReportsAZeroThatIsDueAtOnce) {
 TEST(SinusoidSumZeros, HandlesIncommensurateFrequenciesAndDrift) {
   // f = 0.3 + 0.05 t + cos(sqrt2 t) - 0.7 sin(t/3): compare with a fine scan for sign changes.
   const SinusoidSum f(0.3, 0.05, {{std::sqrt(2.0), 1.0, 0.0}, {1.0 / 3.0, 0.0, -0.7}});
-  const std::vector<Zero> zeros = Zeros(f, 0.0, 40.0, 1000);
+  const std::vector<Zero> zeros = Zeros(f, 0.0, 40.0, 1000).zeros;
   std::vector<double> scanned;
   const int n = 400000;
   for (int i = 0; i < n; ++i) {
@@ -103,6 +105,67 @@ TEST(SinusoidSumMinimum, ReturnsAnEndPointWhenTheFunctionIsMonotone) {
   const Extremum m = Minimum(f, 0.1, 1.0);
   EXPECT_DOUBLE_EQ(m.t, 0.1);
   EXPECT_DOUBLE_EQ(m.value, std::sin(0.1));
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(SinusoidSumZeros, ReportsANaNCoefficientAsNotFiniteWithoutSearching) {
+  const SinusoidSum f(0.5, 0.0, {{1.0, std::nan(""), 1.0}});
+  const auto start = std::chrono::steady_clock::now();
+  const ZeroSearch search = Zeros(f, 0.0, 10.0, 100);
+  EXPECT_LT(SecondsSince(start), 1.0);
+  EXPECT_EQ(search.status, ZeroSearchStatus::kNotFinite);
+  EXPECT_TRUE(search.zeros.empty());
+}
+
+TEST(SinusoidSumZeros, ReportsANaNEndAsNotFinite) {
+  const SinusoidSum f(0.5, 0.0, {{1.0, 1.0, 0.0}});
+  EXPECT_EQ(Zeros(f, 0.0, std::nan(""), 100).status, ZeroSearchStatus::kNotFinite);
+  EXPECT_EQ(Zeros(f, std::nan(""), 1.0, 100).status, ZeroSearchStatus::kNotFinite);
+}
+
+TEST(SinusoidSumZeros, StopsAtTheSubIntervalBoundWhateverTheLengthOfTheInterval) {
+  const SinusoidSum f(0.5, 0.0, {{1.0, 1.0, 0.0}});  // 0.5 + cos t: two zeros per 2 pi
+  ZeroSearchOptions options;
+  options.max_intervals = 1000;
+  const auto start = std::chrono::steady_clock::now();
+  const ZeroSearch search = Zeros(f, 0.0, 1e300, std::numeric_limits<int>::max(), options);
+  EXPECT_LT(SecondsSince(start), 1.0);
+  EXPECT_EQ(search.status, ZeroSearchStatus::kTooManyIntervals);
+  EXPECT_EQ(search.intervals, 1001);
+  // What was found before the bound is still right.
+  ASSERT_FALSE(search.zeros.empty());
+  EXPECT_NEAR(search.zeros.front().t, 2 * kPi / 3, 1e-12);
+}
+
+TEST(SinusoidSumZeros, StopsAtTheDefaultBoundWithinSecondsOnTenMillionPeriods) {
+  const SinusoidSum f(0.5, 0.0, {{1.0, 1.0, 0.0}});
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(Zeros(f, 0.0, 2 * kPi * 1e7, std::numeric_limits<int>::max()).status, ZeroSearchStatus::kTooManyIntervals);
+  EXPECT_LT(SecondsSince(start), 10.0);
+}
+
+TEST(SinusoidSumZeros, EndsWhereNeighbouringTimesAreFurtherApartThanTheTolerance) {
+  // 2 (1 - cos t)^2 = 3 - 4 cos t + cos 2t: a fourth-order zero, f, f' and f'' all vanish, at
+  // t = 2 pi k with k = 1e6, where adjacent doubles lie ~1e-9 apart, far above time_tolerance.
+  const SinusoidSum f(3.0, 0.0, {{1.0, -4.0, 0.0}, {2.0, 1.0, 0.0}});
+  const double t0 = 2 * kPi * 1e6;
+  const auto start = std::chrono::steady_clock::now();
+  const ZeroSearch search = Zeros(f, t0 - 1.0, t0 + 1.0, 100);
+  EXPECT_LT(SecondsSince(start), 1.0);
+  EXPECT_TRUE(search.Complete());
+  ASSERT_FALSE(search.zeros.empty());
+  EXPECT_NEAR(search.zeros.front().t, t0, 1e-3);
+}
+
+TEST(SinusoidSumMinimum, IsNaNWhenTheSearchForCriticalPointsIsCutShort) {
+  const SinusoidSum f(0.0, 0.0, {{1.0, 0.0, 1.0}});
+  ZeroSearchOptions options;
+  options.max_intervals = 10;
+  EXPECT_TRUE(std::isnan(Minimum(f, 0.0, 1e6, options).value));
+  EXPECT_TRUE(std::isnan(Minimum(SinusoidSum(std::nan(""), 0.0, {}), 0.0, 1.0).value));
 }
 
 TEST(SinusoidSum, DerivativeMatchesFiniteDifferences) {

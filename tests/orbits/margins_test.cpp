@@ -3,6 +3,8 @@
 #include "stickslip/orbits/margins.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -106,6 +108,41 @@ TEST(Margins, SmallestIsTheDistanceToTheNearestChangeOfType) {
   const State stop = o.SegmentStates()[1];
   const double phase = o.phi + o.parameters.omega * o.durations[0];
   EXPECT_NEAR(smallest.value, -StickForce(stop, phase, o.parameters) - o.parameters.eta * o.parameters.u_r, 1e-14);
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(Margins, AreNaNNotASpinForAnOrbitWithANaNValue) {
+  Orbit o = SolvedPreset("paper-5.1");
+  o.x10 = std::numeric_limits<double>::quiet_NaN();
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Margin> margins = AdmissibilityMargins(o);
+  EXPECT_LT(SecondsSince(start), 2.0);
+  EXPECT_TRUE(std::isnan(Find(margins, "velocity:1").value));
+  EXPECT_TRUE(std::isnan(Find(margins, "G:3").value));
+  EXPECT_TRUE(std::isnan(SmallestMargin(margins).value));
+}
+
+TEST(Margins, AreNaNNotASpinForANaNDuration) {
+  Orbit o = SolvedPreset("paper-5.1");
+  o.durations[0] = std::numeric_limits<double>::quiet_NaN();
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Margin> margins = AdmissibilityMargins(o);
+  EXPECT_LT(SecondsSince(start), 2.0);
+  EXPECT_TRUE(std::isnan(Find(margins, "velocity:1").value));
+}
+
+TEST(Margins, AreNaNWhenASegmentIsTooLongForTheSearchBound) {
+  Orbit o = SolvedPreset("paper-5.1");
+  o.durations[0] = 1e308;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Margin> margins = AdmissibilityMargins(o);
+  EXPECT_LT(SecondsSince(start), 10.0);
+  EXPECT_TRUE(std::isnan(Find(margins, "velocity:1").value));
+  // The other segments' margins do not depend on it.
+  EXPECT_FALSE(std::isnan(Find(margins, "stick-entry:2").value));
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ TEST(StartProblem, RefusesANegativeDuration) {
   input.guess.emplace_back("d2", -0.5);
   const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
   EXPECT_EQ(e.field(), "d2");
-  EXPECT_EQ(e.valid_range(), "d2 >= 0");
+  EXPECT_EQ(e.valid_range(), "0 <= d2 <= 11, the orbit's period 1 x 2 pi/omega");
 }
 
 // A restart's d1..dn are the durations of its own type; under another signature they would
@@ -139,7 +139,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"GuessName", [](StartInput* in) { in->guess.emplace_back("mu", 1.0); }, "guess", "'mu'"},
         BadInput{"NotANumber", [](StartInput* in) { in->guess.emplace_back("x10", std::nan("")); }, "x10", "finite"},
         BadInput{"Infinite", [](StartInput* in) { in->set.emplace_back("phi", HUGE_VAL); }, "phi", "finite"},
-        BadInput{"OutOfRange", [](StartInput* in) { in->set.emplace_back("chi", 1e308); }, "chi", "0 < chi < 1"},
+        BadInput{"OutOfRange", [](StartInput* in) { in->set.emplace_back("chi", 1e308); }, "chi", "0.01 <= chi <= 0.99"},
         BadInput{"MissingParameter", [](StartInput* in) { in->set.erase(in->set.begin()); }, "chi", "missing"},
         BadInput{"MovingStart", [](StartInput* in) { in->set.emplace_back("v20", 1.0); }, "v20", "v20 = 0"},
         BadInput{"FreeName", [](StartInput* in) { in->free = {"mu"}; }, "free", "'mu'"},

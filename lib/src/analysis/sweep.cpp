@@ -101,11 +101,30 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& 
   if (options.recorded_periods < 1) {
     throw InvalidInput("recorded_periods", options.recorded_periods, "recorded_periods >= 1");
   }
+  auto invalid_at = [&](double value) {
+    Parameters p = base;
+    p[options.parameter] = value;
+    return Validate(p);
+  };
+  for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
+    if (const auto invalid = invalid_at(value)) throw InvalidInput::WithMessage(field, fmt::format("{}: {}", field, invalid->what()));
+  }
+  // Every value simulated, not only the ends: an interior one may fall on a natural frequency.
+  const bool chained = options.start == SweepStart::kChained;
+  for (SweepPass pass : chained ? std::vector{SweepPass::kUp, SweepPass::kDown} : std::vector{SweepPass::kFixed}) {
+    for (int step = 0; step <= options.steps; ++step) {
+      const double value = ValueAt(options, pass, step);
+      if (const auto invalid = invalid_at(value)) {
+        throw InvalidInput::WithMessage(
+            "steps", fmt::format("steps = {} puts step {} of the {} pass at {} = {}: {}", options.steps, step,
+                                 ToString(pass), ToString(options.parameter), value, invalid->what()));
+      }
+    }
+  }
   const int chains = static_cast<int>(starts.size());
   const int per_chain = options.steps + 1;
   // Each work item fills its own slot; the slots are joined in index order, so the output is the
   // same for any number of threads.
-  const bool chained = options.start == SweepStart::kChained;
   const int items = chained ? chains : chains * per_chain;
   std::vector<std::vector<SweepPoint>> slots(items);
   ParallelFor(items, options.threads, [&](int i) {

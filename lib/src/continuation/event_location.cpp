@@ -23,6 +23,7 @@ void Bracket(const Event& event, G g_at, double ga, double gb, const EventLocati
     double g_lo = ga;
     while (*hi - *lo > options.tolerance) {
       const double mid = 0.5 * (*lo + *hi);
+      if (mid <= *lo || mid >= *hi) break;  // no double between them
       const double g_mid = g_at(mid);
       if (g_mid * g_lo > 0.0) {
         *lo = mid;

@@ -32,9 +32,11 @@ std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) {
       return InvalidInput(ToString(id), p[id], "a finite number");
     }
   }
-  if (!(p.chi > 0.0 && p.chi < 1.0)) return InvalidInput("chi", p.chi, "0 < chi < 1");
-  if (!(p.eta > 0.0)) return InvalidInput("eta", p.eta, "eta > 0");
-  if (!(p.omega > 0.0)) return InvalidInput("omega", p.omega, "omega > 0");
+  if (!(p.chi >= kMinChi && p.chi <= kMaxChi)) return InvalidInput("chi", p.chi, std::string(kChiRange));
+  if (!(p.eta >= kMinEta && p.eta <= kMaxEta)) return InvalidInput("eta", p.eta, std::string(kEtaRange));
+  if (!(p.omega >= kMinOmega && p.omega <= kMaxOmega)) {
+    return InvalidInput("omega", p.omega, std::string(kOmegaRange));
+  }
   // Q of eq. (7) has the factor 1/((omega^2 - omega1^2)(omega^2 - omega2^2)); a relative gap of
   // 1e-9 keeps it below ~1e9 times its typical size, beyond which no result is meaningful.
   const auto [omega1, omega2] = NaturalFrequencies(p.chi, p.eta);
@@ -42,7 +44,7 @@ std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) {
     if (std::abs(p.omega - natural) <= 1e-9 * natural) {
       return InvalidInput(
           "omega", p.omega,
-          fmt::format("omega > 0 away from the natural frequencies omega1 = {} and omega2 = {} "
+          fmt::format("0.01 <= omega <= 100 away from the natural frequencies omega1 = {} and omega2 = {} "
                       "(relative gap > 1e-9)",
                       omega1, omega2));
     }
@@ -52,10 +54,17 @@ std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) {
 
 std::optional<InvalidInput> Validate(const Parameters& p) {
   if (auto invalid = ValidateClosedForm(p)) return invalid;
-  if (!(p.u_s > 0.0)) return InvalidInput("u_s", p.u_s, "u_s > 0");
-  if (!(p.u_r >= p.u_s)) {
-    return InvalidInput("u_r", p.u_r, fmt::format("u_r >= u_s = {}", p.u_s));
+  if (!(p.u_s >= kMinSlidingFriction && p.u_s <= kMaxFriction)) {
+    return InvalidInput("u_s", p.u_s, std::string(kSlidingFrictionRange));
   }
+  if (!(p.u_r >= p.u_s && p.u_r <= kMaxFriction)) {
+    return InvalidInput("u_r", p.u_r, fmt::format("u_s = {} <= u_r <= 1000", p.u_s));
+  }
+  return std::nullopt;
+}
+
+std::optional<InvalidInput> ValidateStateValue(std::string_view name, double value) {
+  if (!(std::abs(value) <= kMaxStateMagnitude)) return InvalidInput(std::string(name), value, std::string(kStateRange));
   return std::nullopt;
 }
 

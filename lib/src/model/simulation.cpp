@@ -16,9 +16,10 @@ const char* ToString(SimulationEnd end) {
   switch (end) {
     case SimulationEnd::kDuration: return "duration";
     case SimulationEnd::kMaxEvents: return "max-events";
-    case SimulationEnd::kStuckAtRest: break;
+    case SimulationEnd::kStuckAtRest: return "stuck-at-rest";
+    case SimulationEnd::kSearchLimit: break;
   }
-  return "stuck-at-rest";
+  return "search-limit";
 }
 
 const char* ToString(EventKind kind) {
@@ -60,6 +61,13 @@ struct SegmentEndpoint {
   Mode next = Mode::kStick;
 };
 
+// What the search for a segment's end found: its end, none before the horizon (complete), or
+// no answer (a root search cut short).
+struct SegmentSearch {
+  std::optional<SegmentEndpoint> end;
+  ZeroSearchStatus status = ZeroSearchStatus::kComplete;
+};
+
 bool FrictionLevelsEqual(const Parameters& p) {
   return std::abs(p.u_r - p.u_s) <= 1e-12 * p.u_r;
 }
@@ -67,13 +75,13 @@ bool FrictionLevelsEqual(const Parameters& p) {
 // In a slip: the first zero of x2'. A crossing is a stop, decided by Coulomb's law (eq. 4); a
 // touch (x2' = x2'' = 0) is an abnormal stop when u_r = u_s (eq. 25) and otherwise the onset
 // of a stick, since there |s| = eta u_s < eta u_r.
-std::optional<SegmentEndpoint> SlipEnd(Mode mode, const ModeMotion<double>& motion, double phase,
-                                       double horizon, const Parameters& p,
-                                       const ZeroSearchOptions& zeros) {
+SegmentSearch SlipEnd(Mode mode, const ModeMotion<double>& motion, double phase, double horizon,
+                      const Parameters& p, const ZeroSearchOptions& zeros) {
   const SinusoidSum velocity = CoordinateAlong(motion, 3);
-  const std::vector<Zero> found = Zeros(velocity, 0.0, horizon, 1, zeros);
-  if (found.empty()) return std::nullopt;
-  const Zero& z = found.front();
+  const ZeroSearch found = Zeros(velocity, 0.0, horizon, 1, zeros);
+  if (!found.Complete()) return {std::nullopt, found.status};
+  if (found.zeros.empty()) return {};
+  const Zero& z = found.zeros.front();
   State at = motion.StateAt(z.t);
   at(3) = 0.0;
   Mode next;
@@ -83,51 +91,60 @@ std::optional<SegmentEndpoint> SlipEnd(Mode mode, const ModeMotion<double>& moti
     next = ModeFromRest(at, phase + p.omega * z.t, p);
     if (next == mode) next = Mode::kStick;  // rounding at the threshold: cannot go on
   }
-  return SegmentEndpoint{z.t, SegmentEnd::kStop, next};
+  return {SegmentEndpoint{z.t, SegmentEnd::kStop, next}};
 }
 
 // In a stick: the first time G (exit into slip+) or G1 (exit into slip-) crosses zero
 // (eq. 11, 35). A touch leaves the constraint satisfied and the stick goes on. The search reaches
-// one forcing period ahead, then two, four, ... until an exit or the horizon: searched to the
-// horizon at once, a constraint that never crosses would make every stick cost the whole
-// remaining time (a long simulation quadratic in its duration), while the doubling costs at
-// most twice the reach it needs. Every search starts at the stick's start, where a constraint
-// at zero level is understood (Zeros), and ends where both constraints are clear of the touch
-// level: there the sign alone tells whether a zero lies before the end, so a grazing or a
+// one forcing period ahead, then two, four, ... up to kMaxReachPeriods, and from there on in
+// windows of that many periods, until an exit or the horizon: searched to the horizon at once, a
+// constraint that never crosses would make every stick cost the whole remaining time (a long
+// simulation quadratic in its duration), while the doubling costs at most twice the reach it
+// needs, and the windows keep each search within the root finder's bound on sub-intervals.
+// Every search starts at the stick's start, where a constraint at zero level is understood
+// (Zeros), or at the end of the last window, and ends where both constraints are clear of the
+// touch level: there the sign alone tells whether a zero lies before the end, so a grazing or a
 // crossing next to the end is classified as by a search that went on past it.
-std::optional<SegmentEndpoint> StickEnd(const ModeMotion<double>& motion, double phase,
-                                        double horizon, const Parameters& p,
-                                        const ZeroSearchOptions& zeros) {
+SegmentSearch StickEnd(const ModeMotion<double>& motion, double phase, double horizon, const Parameters& p,
+                       const ZeroSearchOptions& zeros) {
+  constexpr double kMaxReachPeriods = 64.0;
   const SinusoidSum force = StickForceAlong(motion, phase, p);
   const double threshold = p.eta * p.u_r;
   const SinusoidSum g = force.Affine(1.0, threshold);    // G = s + eta u_r
   const SinusoidSum g1 = force.Affine(-1.0, threshold);  // G1 = -s + eta u_r
-  std::optional<SegmentEndpoint> end;
-  auto first_crossing = [&](const SinusoidSum& constraint, Mode next, double to) {
-    double from = 0.0;
-    // Touches are rare; look past each one.
+  SegmentSearch result;
+  auto first_crossing = [&](const SinusoidSum& constraint, Mode next, double from, double to) {
+    // Touches are rare; look past each one, all of them within one search's bound.
+    ZeroSearchOptions left = zeros;
     while (from < to) {
-      const std::vector<Zero> found = Zeros(constraint, from, to, 1, zeros);
-      if (found.empty()) return;
-      if (found.front().kind == ZeroKind::kCrossing) {
-        if (!end || found.front().t < end->elapsed) {
-          end = SegmentEndpoint{found.front().t, SegmentEnd::kStickExit, next};
-        }
+      const ZeroSearch found = Zeros(constraint, from, to, 1, left);
+      left.max_intervals -= found.intervals;
+      if (!found.Complete()) {
+        result.status = found.status;
         return;
       }
-      from = found.front().t;
+      if (found.zeros.empty()) return;
+      const Zero& z = found.zeros.front();
+      if (z.kind == ZeroKind::kCrossing) {
+        if (!result.end || z.t < result.end->elapsed) result.end = SegmentEndpoint{z.t, SegmentEnd::kStickExit, next};
+        return;
+      }
+      from = z.t;
     }
   };
   const double g_level = 2.0 * zeros.touch_tolerance * g.Scale();  // twice: room for rounding
   const double g1_level = 2.0 * zeros.touch_tolerance * g1.Scale();
-  for (double reach = 2.0 * std::numbers::pi / p.omega;; reach *= 2.0) {
-    double to = std::min(horizon, reach);
+  const double period = 2.0 * std::numbers::pi / p.omega;
+  double from = 0.0;
+  for (double reach = period;; reach = std::min(2.0 * reach, kMaxReachPeriods * period)) {
+    double to = std::min(horizon, from + reach);
     while (to < horizon && !(std::abs(g(to)) > g_level && std::abs(g1(to)) > g1_level)) {
       to = std::min(horizon, to + 1e-3 * reach);
     }
-    first_crossing(g, Mode::kSlipPositive, to);
-    first_crossing(g1, Mode::kSlipNegative, to);
-    if (end || to == horizon) return end;
+    first_crossing(g, Mode::kSlipPositive, from, to);
+    first_crossing(g1, Mode::kSlipNegative, from, to);
+    if (result.end || result.status != ZeroSearchStatus::kComplete || to == horizon) return result;
+    if (reach == kMaxReachPeriods * period) from = to;
   }
 }
 
@@ -146,9 +163,15 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     const double phase = p.omega * t + phi;
     const double horizon = options.duration - t;
     const ModeMotion<double> motion = MotionInMode(mode, x, phase, p);
-    const std::optional<SegmentEndpoint> end =
-        mode == Mode::kStick ? StickEnd(motion, phase, horizon, p, options.zeros)
-                             : SlipEnd(mode, motion, phase, horizon, p, options.zeros);
+    const SegmentSearch search = mode == Mode::kStick ? StickEnd(motion, phase, horizon, p, options.zeros)
+                                                       : SlipEnd(mode, motion, phase, horizon, p, options.zeros);
+    if (search.status != ZeroSearchStatus::kComplete) {
+      result.end = SimulationEnd::kSearchLimit;
+      result.message = fmt::format("the search for the end of the {} at t = {} ended: {} (max_intervals {})",
+                                   ToString(mode), t, ToString(search.status), options.zeros.max_intervals);
+      break;
+    }
+    const std::optional<SegmentEndpoint>& end = search.end;
     Segment segment{mode, t, options.duration, x, State::Zero(), SegmentEnd::kHorizon};
     if (!end) {
       segment.end = motion.StateAt(horizon);
@@ -174,7 +197,7 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
       break;
     }
   }
-  if (options.sample_step > 0.0) {
+  if (options.sample_step > 0.0 && !result.segments.empty()) {
     // A duration meant as a whole number of sample steps may come out a rounding error short of
     // it (N T / T < N): its last sample still belongs in.
     const auto count = static_cast<long>(std::floor(options.duration / options.sample_step * (1.0 + 1e-12)));

@@ -65,6 +65,18 @@ double SinusoidSum::Scale() const {
   return scale;
 }
 
+bool SinusoidSum::IsFinite() const {
+  if (!std::isfinite(constant_) || !std::isfinite(slope_)) return false;
+  return std::all_of(terms_.begin(), terms_.end(), [](const Sinusoid& s) {
+    return std::isfinite(s.frequency) && std::isfinite(s.cos_coefficient) && std::isfinite(s.sin_coefficient);
+  });
+}
+
+const char* ToString(ZeroSearchStatus status) {
+  constexpr const char* kNames[] = {"complete", "too many sub-intervals", "not finite"};  // in enum order
+  return kNames[static_cast<int>(status)];
+}
+
 namespace {
 
 // The root of g in [l, r], given g(l) and g(r) of opposite signs (or one of them zero).
@@ -94,7 +106,7 @@ class ZeroFinder {
         touch_level_(options.touch_tolerance * std::max(f.Scale(), 1e-300)) {}
 
   // Zeros of f in [l, r] with f(l) != 0, appended to `out` in increasing order.
-  void Search(double l, double r, int max_count, std::vector<Zero>* out) const {
+  ZeroSearchStatus Search(double l, double r, int max_count, std::vector<Zero>* out, int* examined) const {
     struct End {
       double t;
       SinusoidSum::Jet f;
@@ -104,6 +116,7 @@ class ZeroFinder {
     };
     std::vector<Interval> stack = {{{l, f_.JetAt(l)}, {r, f_.JetAt(r)}}};
     while (!stack.empty() && static_cast<int>(out->size()) < max_count) {
+      if (++*examined > options_.max_intervals) return ZeroSearchStatus::kTooManyIntervals;
       const Interval iv = stack.back();
       stack.pop_back();
       const double h = iv.r.t - iv.l.t;
@@ -137,7 +150,9 @@ class ZeroFinder {
         continue;
       }
       const double tm = 0.5 * (iv.l.t + iv.r.t);
-      if (h <= options_.time_tolerance) {
+      // Far from t = 0 adjacent doubles may lie further apart than the tolerance: an interval
+      // that no longer splits is as narrow as it gets.
+      if (h <= options_.time_tolerance || !(tm > iv.l.t && tm < iv.r.t)) {
         // Degenerate (f, f' and f'' all near zero): report a touch if f is at zero level.
         if (fl * fr <= 0.0) {
           out->push_back({tm, ZeroKind::kCrossing});
@@ -150,6 +165,7 @@ class ZeroFinder {
       stack.push_back({middle, iv.r});  // right half after the left one
       stack.push_back({iv.l, middle});
     }
+    return ZeroSearchStatus::kComplete;
   }
 
   // Length of a neighbourhood (a, a + length] in which f has no zero, given that f(a) is at
@@ -190,10 +206,14 @@ class ZeroFinder {
 
 }  // namespace
 
-std::vector<Zero> Zeros(const SinusoidSum& f, double a, double b, int max_count,
-                        const ZeroSearchOptions& options) {
-  std::vector<Zero> zeros;
-  if (!(b > a) || max_count <= 0) return zeros;
+ZeroSearch Zeros(const SinusoidSum& f, double a, double b, int max_count, const ZeroSearchOptions& options) {
+  ZeroSearch search;
+  // A NaN would fail every test that ends a subdivision.
+  if (!std::isfinite(a) || !std::isfinite(b) || !f.IsFinite()) {
+    search.status = ZeroSearchStatus::kNotFinite;
+    return search;
+  }
+  if (!(b > a) || max_count <= 0) return search;
   const ZeroFinder finder(f, options);
   double start = a;
   if (finder.AtZeroLevel(a)) {
@@ -201,22 +221,23 @@ std::vector<Zero> Zeros(const SinusoidSum& f, double a, double b, int max_count,
     // at once, not behind us (a state sampled a hair before a stop).
     const SinusoidSum::Jet jet = f.JetAt(a);
     if (jet.value * jet.slope < 0.0 && std::abs(jet.value) > 1e-13 * f.Scale()) {
-      zeros.push_back({std::min(b, a - jet.value / jet.slope), ZeroKind::kCrossing});
-      return zeros;
+      search.zeros.push_back({std::min(b, a - jet.value / jet.slope), ZeroKind::kCrossing});
+      return search;
     }
     start = a + finder.ExclusionAfterZero(a);
-    if (start >= b) return zeros;
+    if (start >= b) return search;
   }
-  finder.Search(start, b, max_count, &zeros);
-  return zeros;
+  search.status = finder.Search(start, b, max_count, &search.zeros, &search.intervals);
+  return search;
 }
 
 Extremum Minimum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options) {
   Extremum best{a, f(a)};
   const double fb = f(b);
   if (fb < best.value) best = {b, fb};
-  const SinusoidSum df = f.Derivative();
-  for (const Zero& z : Zeros(df, a, b, std::numeric_limits<int>::max(), options)) {
+  const ZeroSearch critical = Zeros(f.Derivative(), a, b, std::numeric_limits<int>::max(), options);
+  if (!critical.Complete()) return {a, std::numeric_limits<double>::quiet_NaN()};
+  for (const Zero& z : critical.zeros) {
     const double value = f(z.t);
     if (value < best.value) best = {z.t, value};
   }

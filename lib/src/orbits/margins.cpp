@@ -30,14 +30,19 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The smallest interior local minimum of f on (0, d), ignoring critical points within `guard`
-// of either end (there f is at an end value fixed by an end condition); +inf if none.
+// of either end (there f is at an end value fixed by an end condition); +inf if none; NaN if
+// the search for them could not be completed (a NaN in the orbit, or a segment too long for the
+// search's bound): a margin that is not defined there, never a wrong one.
 Extremum InteriorMinimum(const SinusoidSum& f, double d) {
   const double guard = 1e-9 * std::max(1.0, d);
   Extremum best{0.0, kInfinity};
   const SinusoidSum df = f.Derivative();
   const SinusoidSum d2f = df.Derivative();
+  if (std::isnan(d)) return {0.0, std::numeric_limits<double>::quiet_NaN()};
   if (!(d > 2 * guard)) return best;
-  for (const Zero& z : Zeros(df, guard, d - guard, std::numeric_limits<int>::max())) {
+  const ZeroSearch critical = Zeros(df, guard, d - guard, std::numeric_limits<int>::max());
+  if (!critical.Complete()) return {0.0, std::numeric_limits<double>::quiet_NaN()};
+  for (const Zero& z : critical.zeros) {
     if (d2f(z.t) < 0.0) continue;  // a maximum
     const double value = f(z.t);
     if (value < best.value) best = {z.t, value};
@@ -106,6 +111,8 @@ std::vector<Margin> AdmissibilityMargins(const Orbit& orbit) {
 }
 
 Margin SmallestMargin(const std::vector<Margin>& margins) {
+  const auto undefined = std::find_if(margins.begin(), margins.end(), [](const Margin& m) { return std::isnan(m.value); });
+  if (undefined != margins.end()) return *undefined;
   return *std::min_element(margins.begin(), margins.end(),
                            [](const Margin& a, const Margin& b) { return a.value < b.value; });
 }

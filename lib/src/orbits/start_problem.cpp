@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -15,20 +16,25 @@ namespace {
 namespace ov = orbit_variables;
 
 constexpr std::array<SetKey, 10> kSetKeys = {{
-    {"chi", "stiffness ratio k2/(k1+k2)", "0 < chi < 1"},
-    {"eta", "mass ratio m1/m2", "eta > 0"},
-    {"omega", "forcing frequency (scaled time)", "omega > 0, not a natural frequency"},
-    {"u_s", "sliding friction level", "u_s > 0"},
-    {"u_r", "static friction level", "u_r >= u_s"},
-    {"x10", "initial x1", "any finite number"},
-    {"x20", "initial x2", "any finite number"},
-    {"v10", "initial x1'", "any finite number"},
-    {"v20", "initial x2'", "any finite number"},
-    {"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", "any finite number"},
+    {"chi", "stiffness ratio k2/(k1+k2)", kChiRange},
+    {"eta", "mass ratio m1/m2", kEtaRange},
+    {"omega", "forcing frequency (scaled time)", kOmegaRange},
+    {"u_s", "sliding friction level", kSlidingFrictionRange},
+    {"u_r", "static friction level", kStaticFrictionRange},
+    {"x10", "initial x1", kStateRange},
+    {"x20", "initial x2", kStateRange},
+    {"v10", "initial x1'", kStateRange},
+    {"v20", "initial x2'", kStateRange},
+    {"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", kStateRange},
 }};
 
-double Finite(std::string_view name, double value) {
+// A value given for `name`: finite, and within kStateRange if it is a start state's component
+// or phase.
+double Checked(std::string_view name, double value) {
   if (!std::isfinite(value)) throw InvalidInput(std::string(name), value, "a finite number");
+  if (SetKeyRange(name) == kStateRange) {
+    if (auto invalid = ValidateStateValue(name, value)) throw *invalid;
+  }
   return value;
 }
 
@@ -65,7 +71,7 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
   }
   if (input.restart) {
     for (const auto& [name, value] : input.restart->values) {
-      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Finite(name, value));
+      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Checked(name, value));
     }
   }
   for (const auto& [key, value] : input.set) {
@@ -75,9 +81,9 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
       throw InvalidInput("set", fmt::format("'{}'", key), fmt::format("keys {}", fmt::join(keys, ", ")));
     }
     if (key == "v20") {
-      v.v20 = Finite(key, value);
+      v.v20 = Checked(key, value);
     } else {
-      v.Assign(*ov::IndexOf(n, key), Finite(key, value));
+      v.Assign(*ov::IndexOf(n, key), Checked(key, value));
     }
   }
   return v;
@@ -174,9 +180,9 @@ StartProblem BuildStartProblem(const StartInput& input) {
 
   Values v = Assemble(input, preset, n);
   if (v.v20 != 0.0) throw InvalidInput("v20", v.v20, "v20 = 0 (an orbit starts at a stop)");
-  for (const auto& [name, value] : input.guess) v.Assign(VariableIndex(n, "guess", name), Finite(name, value));
+  for (const auto& [name, value] : input.guess) v.Assign(VariableIndex(n, "guess", name), Checked(name, value));
   for (const FixedVariable& f : input.fix) {
-    if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Finite(f.name, *f.value));
+    if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Checked(f.name, *f.value));
   }
   Orbit orbit = ov::Unpack(signature, v.x);
   orbit.parameters = CheckedParameters(v, n, unknowns.tie_static_friction);
@@ -185,7 +191,13 @@ StartProblem BuildStartProblem(const StartInput& input) {
     if (!v.given[ov::Duration(i)]) {
       throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (>= 0): give the duration of segment {}", name, i + 1));
     }
-    if (orbit.durations[i] < 0.0) throw InvalidInput(name, orbit.durations[i], name + " >= 0");
+    // The listed segments last at most the orbit's period together.
+    const double period = orbit.signature.period_multiple() * 2.0 * std::numbers::pi / orbit.parameters.omega;
+    if (!(orbit.durations[i] >= 0.0 && orbit.durations[i] <= period)) {
+      throw InvalidInput(name, orbit.durations[i],
+                         fmt::format("0 <= {} <= {}, the orbit's period {} x 2 pi/omega", name, period,
+                                     orbit.signature.period_multiple()));
+    }
   }
   const std::vector<int> free = FreeIndices(signature, unknowns);
 

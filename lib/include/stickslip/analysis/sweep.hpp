@@ -56,9 +56,10 @@ struct SweepPoint {
 
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
 // (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
-// step, whatever the number of threads. Precondition: Validate passes at every swept value.
-// Throws InvalidInput for no starts or options out of range, and std::runtime_error naming the
-// point when a simulation stops early (max_events_per_simulation).
+// step, whatever the number of threads. Throws InvalidInput for no starts, options out of range
+// or a swept value where Validate fails (field "from" or "to" at an end, "steps" inside), and
+// std::runtime_error naming the point when a simulation stops early (max_events_per_simulation,
+// or the event search's bound).
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options);
 

@@ -50,15 +50,45 @@ struct BasicParameters {
 };
 using Parameters = BasicParameters<double>;
 
-// Checks every condition of eq. (4) and of the closed form: chi in (0,1), eta > 0, omega > 0,
-// u_s > 0, u_r >= u_s, all finite, and omega away from the natural frequencies omega1, omega2
-// (eq. 56) where the forced amplitude Q of eq. (7) is singular. Returns the first violation
-// (not thrown: the solvers ask it of every iterate).
+// Valid magnitudes. Eq. (3) scales time so that the stick's natural frequency is 1 and forces
+// so that the forcing amplitude is 1; every other magnitude is judged against these units.
+// Doubles carry 16 digits, events are located to 1e-13 in time and a zero is judged at 1e-11
+// of its function's size (sinusoid_sum.hpp). Within the ranges below,
+//   - every frequency (omega, 1, omega1 >= 1e-3, omega2 <= 10) lies within 1e3 of the unit, so
+//     a segment or a forcing period holds a bounded number of oscillations and costs a bounded
+//     number of root-finding steps;
+//   - every force (eta u_r <= 1e5, chi eta (x2 - x1) <= 2e8) stays far from overflow, and the
+//     unit forcing stays above the zero level of the constraints it enters;
+//   - the friction force eta u_s >= 1e-8 stays above that zero level too, so that Coulomb's law
+//     at a stop is decided by the physics and not by rounding (below u_s ~ 1e-15 the exact
+//     simulator turned a stick of the 5.1 orbit into a slip);
+//   - a phase omega t + phi keeps 10 digits after the point.
+inline constexpr double kMinChi = 0.01, kMaxChi = 0.99;
+inline constexpr double kMinEta = 0.01, kMaxEta = 100.0;
+inline constexpr double kMinOmega = 0.01, kMaxOmega = 100.0;
+inline constexpr double kMinSlidingFriction = 1e-6, kMaxFriction = 1000.0;
+inline constexpr double kMaxStateMagnitude = 1e6;  // |x1|, |x2|, |x1'|, |x2'| and |phi| of a start
+// The same ranges as the messages and --help print them.
+inline constexpr std::string_view kChiRange = "0.01 <= chi <= 0.99";
+inline constexpr std::string_view kEtaRange = "0.01 <= eta <= 100";
+inline constexpr std::string_view kOmegaRange = "0.01 <= omega <= 100, not a natural frequency";
+inline constexpr std::string_view kSlidingFrictionRange = "1e-06 <= u_s <= 1000";
+inline constexpr std::string_view kStaticFrictionRange = "u_s <= u_r <= 1000";
+inline constexpr std::string_view kStateRange = "|value| <= 1e+06";
+
+// Checks every condition of eq. (4) and of the closed form: the ranges above, u_r >= u_s, all
+// finite, and omega away from the natural frequencies omega1, omega2 (eq. 56) where the forced
+// amplitude Q of eq. (7) is singular. Returns the first violation (not thrown: the solvers ask
+// it of every iterate).
 std::optional<InvalidInput> Validate(const Parameters& p);
 
-// Only what the closed-form flows need: finite values, chi in (0,1), eta > 0, omega > 0 away
-// from omega1, omega2. The friction levels enter the equations linearly and stay meaningful
-// to the solvers beyond their physical range, where the admissibility margins take over.
+// Only what the closed-form flows need: finite values, chi, eta and omega in range and omega
+// away from omega1, omega2. The friction levels enter the equations linearly and stay
+// meaningful to the solvers beyond their physical range, where the admissibility margins take
+// over.
 std::optional<InvalidInput> ValidateClosedForm(const Parameters& p);
+
+// A start state's component or phase within kStateRange; `name` is the field reported.
+std::optional<InvalidInput> ValidateStateValue(std::string_view name, double value);
 
 }  // namespace stickslip

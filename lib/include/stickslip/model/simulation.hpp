@@ -59,8 +59,9 @@ enum class SimulationEnd {
   kDuration,     // the whole duration was simulated
   kMaxEvents,    // options.max_events stopped it (chattering, or a duration too long)
   kStuckAtRest,  // Odeint only: a slip chosen from rest does not move in its direction
+  kSearchLimit,  // exact only: the search for an event reached options.zeros.max_intervals
 };
-const char* ToString(SimulationEnd end);  // "duration", "max-events", "stuck-at-rest"
+const char* ToString(SimulationEnd end);  // "duration", "max-events", "stuck-at-rest", "search-limit"
 
 struct SimulationResult {
   Parameters parameters;

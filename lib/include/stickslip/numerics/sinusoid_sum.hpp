@@ -34,6 +34,8 @@ class SinusoidSum {
   double DerivativeBound(int order) const;
   // |c0| + sum_k |(a_k, b_k)|: the size against which "zero" is judged.
   double Scale() const;
+  // Every coefficient and frequency finite.
+  bool IsFinite() const;
 
  private:
   double constant_ = 0.0;
@@ -55,6 +57,24 @@ struct ZeroSearchOptions {
   double time_tolerance = 1e-13;
   // |f| <= touch_tolerance * f.Scale() at an interior extremum counts as touching zero.
   double touch_tolerance = 1e-11;
+  // The most sub-intervals one search examines, so that its cost is bounded whatever f and
+  // [a, b] are: a few per oscillation of f, enough for ~1e5 oscillations.
+  int max_intervals = 1 << 20;
+};
+
+// How a search ended.
+enum class ZeroSearchStatus {
+  kComplete,          // every zero in (a, b] was found, or the first max_count of them
+  kTooManyIntervals,  // options.max_intervals was reached: zeros past those found may be missed
+  kNotFinite,         // f, a or b is not finite: nothing was searched
+};
+const char* ToString(ZeroSearchStatus status);  // "complete", "too many sub-intervals", "not finite"
+
+struct ZeroSearch {
+  std::vector<Zero> zeros;
+  ZeroSearchStatus status = ZeroSearchStatus::kComplete;
+  int intervals = 0;  // sub-intervals examined
+  bool Complete() const { return status == ZeroSearchStatus::kComplete; }
 };
 
 // The zeros of f in (a, b], in increasing order, at most max_count of them. A zero at a itself
@@ -62,11 +82,12 @@ struct ZeroSearchOptions {
 // is not reported; the neighbourhood where the Taylor bound proves f has no other zero is
 // skipped. If f(a) is at the touch level but moving towards zero, that zero is reported at once. Every zero of f in (a, b] whose
 // multiplicity is odd is found; a zero of even multiplicity is found as a touch when the
-// extremum lies within touch_tolerance of zero.
-std::vector<Zero> Zeros(const SinusoidSum& f, double a, double b, int max_count,
-                        const ZeroSearchOptions& options = {});
+// extremum lies within touch_tolerance of zero. Only a complete search proves there is no other
+// zero; a search cut short says so in its status.
+ZeroSearch Zeros(const SinusoidSum& f, double a, double b, int max_count, const ZeroSearchOptions& options = {});
 
-// The minimum of f over [a, b] and where it is attained (an end point or a zero of f').
+// The minimum of f over [a, b] and where it is attained (an end point or a zero of f'); the value
+// is NaN if the search for the zeros of f' was not complete.
 struct Extremum {
   double t = 0.0;
   double value = 0.0;

@@ -17,6 +17,8 @@
 //   exit-slope:i     stick: the slope with which s reaches +-eta u_r (it must leave the band)
 // and, for the orbit as a whole,
 //   sliding-friction u_s > 0 (eq. 4): where a branch reaches u_s = 0 the family ends
+// A margin whose search for interior minima could not be completed (a NaN in the orbit, or a
+// segment too long for the root finder's bound) is NaN: not defined, rather than wrong.
 // An interior extremum can only be born at a segment end, where the matching slope margin passes
 // through zero; so a change of orbit type is always a sign change of some margin.
 #pragma once
@@ -86,8 +88,8 @@ T ExitSlope(SegmentEndKind end, const StateT<T>& x, const T& phase, const BasicP
   return end == SegmentEndKind::kExitToNegative ? rate : T(-rate);
 }
 
-// The margin with the smallest value (the first on ties), by value: callers often pass a
-// temporary vector.
+// The margin with the smallest value (the first on ties), or the first NaN one: a margin that
+// could not be computed may be the smallest. By value: callers often pass a temporary vector.
 Margin SmallestMargin(const std::vector<Margin>& margins);
 
 }  // namespace stickslip
