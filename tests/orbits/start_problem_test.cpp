@@ -35,7 +35,7 @@ InvalidInput ErrorOf(const std::function<void()>& build) {
 
 TEST(StartProblem, AcceptsADurationGivenAsZero) {
   StartInput input = HandMadeSlipStick();
-  input.guess.emplace_back("d3", 0.0);
+  input.guess[2].second = 0.0;  // d3
   const StartProblem start = BuildStartProblem(input);
   EXPECT_EQ(start.orbit.durations, (std::vector<double>{3.2663, 2.0, 0.0, 3.0}));
 }
@@ -50,7 +50,7 @@ TEST(StartProblem, RefusesADurationThatWasNeverGiven) {
 
 TEST(StartProblem, RefusesANegativeDuration) {
   StartInput input = HandMadeSlipStick();
-  input.guess.emplace_back("d2", -0.5);
+  input.guess[1].second = -0.5;  // d2
   const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
   EXPECT_EQ(e.field(), "d2");
   EXPECT_EQ(e.valid_range(), "0 <= d2 <= 11, the orbit's period 1 x 2 pi/omega");
@@ -139,7 +139,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"GuessName", [](StartInput* in) { in->guess.emplace_back("mu", 1.0); }, "guess", "'mu'"},
         BadInput{"NotANumber", [](StartInput* in) { in->guess.emplace_back("x10", std::nan("")); }, "x10", "finite"},
         BadInput{"Infinite", [](StartInput* in) { in->set.emplace_back("phi", HUGE_VAL); }, "phi", "finite"},
-        BadInput{"OutOfRange", [](StartInput* in) { in->set.emplace_back("chi", 1e308); }, "chi", "0.01 <= chi <= 0.99"},
+        BadInput{"OutOfRange", [](StartInput* in) { in->set[0].second = 1e308; }, "chi", "0.01 <= chi <= 0.99"},
+        BadInput{"RepeatedSetKey", [](StartInput* in) { in->set.emplace_back("omega", 0.7); }, "set", "gives 'omega' twice"},
+        BadInput{"RepeatedGuess", [](StartInput* in) { in->guess.emplace_back("d2", 2.5); }, "guess", "gives 'd2' twice"},
+        BadInput{"FreeOfAnUnknown", [](StartInput* in) { in->free.push_back("x10"); }, "free", "is an unknown already"},
+        BadInput{"PresetWithRestart",
+                 [](StartInput* in) {
+                   in->preset = "paper-5.1";
+                   in->restart = RestartPoint{"run", "TR1", "slip- slip+ stick slip+", {}};
+                 },
+                 "restart", "give at most one of them"},
         BadInput{"MissingParameter", [](StartInput* in) { in->set.erase(in->set.begin()); }, "chi", "missing"},
         BadInput{"MovingStart", [](StartInput* in) { in->set.emplace_back("v20", 1.0); }, "v20", "v20 = 0"},
         BadInput{"FreeName", [](StartInput* in) { in->free = {"mu"}; }, "free", "'mu'"},

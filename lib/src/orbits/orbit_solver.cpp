@@ -36,6 +36,10 @@ std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& ch
     if (choice.tie_static_friction && index == ov::Parameter(n, ParameterId::kStaticFriction)) {
       throw InvalidInput::WithMessage("free", "free = 'u_r' is tied to u_s (u_r = u_s): release u_s instead");
     }
+    if (index < ov::Parameter(n, ParameterId::kChi)) {
+      throw InvalidInput::WithMessage("free", fmt::format("free = '{}' is an unknown already: x10, x20, v10, phi and "
+                                                          "the durations always are (free releases a parameter)", name));
+    }
     if (std::find(free.begin(), free.end(), index) == free.end()) free.push_back(index);
   }
   for (const std::string& name : choice.fix) std::erase(free, VariableIndex(n, "fix", name));

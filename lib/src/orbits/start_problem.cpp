@@ -61,7 +61,26 @@ struct Values {
   }
 };
 
+// A name given twice would silently keep its last value ("--set omega=0.6 --set omega=0.7").
+void RefuseRepeatedNames(std::string_view field, const NamedValues& values) {
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    for (std::size_t j = 0; j < k; ++j) {
+      if (values[j].first == values[k].first) {
+        throw InvalidInput::WithMessage(std::string(field), fmt::format("{} gives '{}' twice ({} and {}): give it once",
+                                                                        field, values[k].first, values[j].second,
+                                                                        values[k].second));
+      }
+    }
+  }
+}
+
+// The values start from a preset's or a restart point's, never from both (which would win?).
 Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
+  if (input.restart && !input.preset.empty()) {
+    throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' and preset = '{}': give at most one of them",
+                                                           input.restart->run, input.restart->label, input.preset));
+  }
+  RefuseRepeatedNames("set", input.set);
   Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false)};
   if (preset != nullptr) {
     const Orbit guess = preset->Guess();
@@ -180,6 +199,7 @@ StartProblem BuildStartProblem(const StartInput& input) {
 
   Values v = Assemble(input, preset, n);
   if (v.v20 != 0.0) throw InvalidInput("v20", v.v20, "v20 = 0 (an orbit starts at a stop)");
+  RefuseRepeatedNames("guess", input.guess);
   for (const auto& [name, value] : input.guess) v.Assign(VariableIndex(n, "guess", name), Checked(name, value));
   for (const FixedVariable& f : input.fix) {
     if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Checked(f.name, *f.value));
@@ -216,10 +236,6 @@ ModelStart BuildModelStart(const StartInput& input) {
   for (const auto& [member, given] : orbit_members) {
     if (given) throw InvalidInput::WithMessage(member, fmt::format("{} is for orbits: a simulation starts from a preset, "
                                                                    "a restart point and set", member));
-  }
-  if (input.restart && !input.preset.empty()) {
-    throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' and preset = '{}': give at most one of them",
-                                                           input.restart->run, input.restart->label, input.preset));
   }
   const Values v = Assemble(input, Preset(input.preset), 0);
   ModelStart start;
