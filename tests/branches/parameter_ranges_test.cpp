@@ -1,6 +1,7 @@
-// Every continuation stays inside the physical parameter ranges (eq. 4): u_s > 0 ends a branch
-// as an EP even when it is told to go on past changes of orbit type, u_r >= u_s bounds a
-// continuation in either friction level, and nothing beyond an end is reported.
+// Every continuation stays inside the valid parameter ranges (parameters.hpp, eq. 4): the
+// continued parameter's range stops at its valid range, a released u_s reaching zero ends the
+// family as an EP even past changes of orbit type, u_r >= u_s bounds a continuation in either
+// friction level, and nothing beyond an end is reported.
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
@@ -29,17 +30,17 @@ double SmallestSlidingFriction(const OrbitBranch& b) {
   return smallest;
 }
 
-TEST(ParameterRanges, SlidingFrictionReachingZeroEndsTheBranchPastTypeChangesToo) {
+TEST(ParameterRanges, ContinuedSlidingFrictionStopsAtItsValidRangePastTypeChangesToo) {
   const OrbitBranch b = ContinuePreset("paper-5.1", "u_s", -1, -1.0, 1.0, /*past_type_changes=*/true);
-  EXPECT_EQ(b.branch.end, BranchEnd::kTerminalEvent) << b.branch.end_message;
-  EXPECT_NE(b.branch.end_message.find("margin:sliding-friction"), std::string::npos) << b.branch.end_message;
-  EXPECT_GT(SmallestSlidingFriction(b), -1e-12);  // it ran on to u_s = -1 before
+  EXPECT_EQ(b.branch.end, BranchEnd::kParameterBound) << b.branch.end_message;
+  EXPECT_EQ(b.orbits.back().parameters.u_s, kMinSlidingFriction);  // it ran on to u_s = -1 before
+  EXPECT_GE(SmallestSlidingFriction(b), kMinSlidingFriction);
 }
 
 // Section 4.2's family ends at u_s = 0 (u_s = u_r released): a branch point that could not be
 // located inside the last step was reported at that step's end, u_s = -0.00134.
 TEST(ParameterRanges, NothingBeyondTheFamilysEndIsReported) {
-  const OrbitBranch b = ContinuePreset("paper-4.2", "omega", +1, 0.3, 0.9, false);
+  const OrbitBranch b = ContinuePreset("paper-4.2", "omega", +1, 0.3, 0.9, /*past_type_changes=*/true);
   EXPECT_NE(b.branch.end_message.find("margin:sliding-friction"), std::string::npos) << b.branch.end_message;
   for (const SpecialPoint& s : b.branch.special_points) {
     EXPECT_GT(b.orbits[s.point].parameters.u_s, -1e-9) << s.type << " at u_s = " << b.orbits[s.point].parameters.u_s;

@@ -23,4 +23,9 @@ head -1 "$work/one.csv" | grep -qx "chain,pass,step,omega,section_phase,k,x1,x2,
 "$bin" "${sweep[@]}" --seed 2 --output "$work/seed2.csv" > /dev/null
 ! cmp -s "$work/one.csv" "$work/seed2.csv"
 cmp <(grep '^0,' "$work/one.csv") <(grep '^0,' "$work/seed2.csv")
+# The last step lands on the range's end exactly: u_r down to u_s (valid) is not refused as an ulp
+# below it (to - (to - from) != from).
+"$bin" sweep --preset paper-4.1 --parameter u_r --from 0.1 --to 0.99 --steps 2 --chains 1 --periods 5 \
+  --transients 2 --output "$work/ends.csv" > /dev/null
+grep -q '^0,down,2,0.1,' "$work/ends.csv"
 echo "sweep output ok"

@@ -68,11 +68,13 @@ TEST(StartProblem, RefusesASignatureThatDiffersFromTheRestartPoints) {
   EXPECT_NE(std::string(e.what()).find("differs from the restart point's orbit type"), std::string::npos) << e.what();
 }
 
-TEST(StartProblem, LaterSourcesWinPresetThenSetThenGuessThenFix) {
+// Set, guess and fix values each replace the preset's printed value; a name is given in one of
+// them only (RepeatedAcrossSetAndGuess below).
+TEST(StartProblem, SetGuessAndFixValuesReplaceThePresets) {
   StartInput input;
   input.preset = "paper-5.1";
-  input.set = {{"x10", 1.0}, {"u_r", 0.6}};
-  input.guess = {{"x10", 2.0}, {"x20", 5.0}};
+  input.set = {{"x10", 2.0}, {"u_r", 0.6}};
+  input.guess = {{"x20", 5.0}};
   input.fix = {{"phi", 0.5}};
   input.free = {"u_r"};
   const StartProblem start = BuildStartProblem(input);
@@ -142,6 +144,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"OutOfRange", [](StartInput* in) { in->set[0].second = 1e308; }, "chi", "0.01 <= chi <= 0.99"},
         BadInput{"RepeatedSetKey", [](StartInput* in) { in->set.emplace_back("omega", 0.7); }, "set", "gives 'omega' twice"},
         BadInput{"RepeatedGuess", [](StartInput* in) { in->guess.emplace_back("d2", 2.5); }, "guess", "gives 'd2' twice"},
+        BadInput{"RepeatedAcrossSetAndGuess", [](StartInput* in) { in->guess.emplace_back("omega", 0.7); }, "guess",
+                 "gives 'omega' twice"},
+        BadInput{"RepeatedAcrossGuessAndFix", [](StartInput* in) { in->fix.push_back({"d1", 3.0}); }, "guess",
+                 "gives 'd1' twice"},
         BadInput{"FreeOfAnUnknown", [](StartInput* in) { in->free.push_back("x10"); }, "free", "is an unknown already"},
         BadInput{"PresetWithRestart",
                  [](StartInput* in) {

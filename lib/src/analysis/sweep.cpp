@@ -14,6 +14,9 @@ namespace stickslip {
 namespace {
 
 double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
+  // The last step lands on the range's end exactly: to - (to - from) may miss `from` by an ulp,
+  // and a valid end (u_r = u_s) would be refused or simulated outside its range.
+  if (step == o.steps) return pass == SweepPass::kDown ? o.from : o.to;
   const double fraction = static_cast<double>(step) / o.steps;
   return pass == SweepPass::kDown ? o.to - fraction * (o.to - o.from) : o.from + fraction * (o.to - o.from);
 }

@@ -1,6 +1,8 @@
 #include "stickslip/branches/orbit_continuation.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 
 namespace stickslip {
@@ -9,12 +11,20 @@ namespace {
 
 namespace ov = orbit_variables;
 
-// u_r >= u_s (eq. 4) bounds a continuation in either while the other is held: the range stops
-// at the other's value, a bound located exactly (EP). (u_s > 0 is the sliding-friction margin, a
-// domain boundary; chi, eta and omega are kept in their open ranges by the corrector's domain.)
-void KeepFrictionLevelsOrdered(const OrbitContinuationSetup& setup, const std::vector<int>& free, int parameter,
-                               ContinuationOptions* options) {
+// The continued parameter's range stops at its valid range (parameters.hpp), and u_r >= u_s
+// (eq. 4) bounds a continuation in either while the other is held: bounds located exactly (EP).
+// A released u_s reaching zero ends the family by the sliding-friction margin, a domain boundary.
+void KeepInPhysicalRanges(const OrbitContinuationSetup& setup, const std::vector<int>& free, int parameter,
+                          ContinuationOptions* options) {
   const int n = setup.start.signature.size();
+  static constexpr std::array<std::pair<double, double>, kParameterCount> kRanges = {{
+      {kMinChi, kMaxChi}, {kMinEta, kMaxEta}, {kMinOmega, kMaxOmega}, {kMinSlidingFriction, kMaxFriction},
+      {kMinSlidingFriction, kMaxFriction}}};
+  for (int k = 0; k < kParameterCount; ++k) {
+    if (parameter != ov::Parameter(n, kAllParameters[k])) continue;
+    options->lambda_min = std::max(options->lambda_min, kRanges[k].first);
+    options->lambda_max = std::min(options->lambda_max, kRanges[k].second);
+  }
   const int u_s = ov::Parameter(n, ParameterId::kSlidingFriction);
   const int u_r = ov::Parameter(n, ParameterId::kStaticFriction);
   const bool held_u_s = std::find(free.begin(), free.end(), u_s) == free.end();
@@ -38,7 +48,7 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start);
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.size());
-  KeepFrictionLevelsOrdered(setup, free, unknowns.back(), &problem.options);
+  KeepInPhysicalRanges(setup, free, unknowns.back(), &problem.options);
   if (shooting == Shooting::kMultiple && problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
     problem.options.corrector.linear_solver = setup.sparse_solver;
   }

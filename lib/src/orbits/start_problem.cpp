@@ -66,7 +66,8 @@ void RefuseRepeatedNames(std::string_view field, const NamedValues& values) {
   for (std::size_t k = 0; k < values.size(); ++k) {
     for (std::size_t j = 0; j < k; ++j) {
       if (values[j].first == values[k].first) {
-        throw InvalidInput::WithMessage(std::string(field), fmt::format("{} gives '{}' twice ({} and {}): give it once",
+        throw InvalidInput::WithMessage(std::string(field), fmt::format("{} gives '{}' twice ({} and {}): give it once "
+                                                                        "(in set, guess or a fix value)",
                                                                         field, values[k].first, values[j].second,
                                                                         values[k].second));
       }
@@ -199,7 +200,13 @@ StartProblem BuildStartProblem(const StartInput& input) {
 
   Values v = Assemble(input, preset, n);
   if (v.v20 != 0.0) throw InvalidInput("v20", v.v20, "v20 = 0 (an orbit starts at a stop)");
-  RefuseRepeatedNames("guess", input.guess);
+  // A variable takes its value from one place (a later one won silently): set, guess or a fix value.
+  NamedValues values = input.set;
+  values.insert(values.end(), input.guess.begin(), input.guess.end());
+  for (const FixedVariable& f : input.fix) {
+    if (f.value) values.emplace_back(f.name, *f.value);
+  }
+  RefuseRepeatedNames("guess", values);
   for (const auto& [name, value] : input.guess) v.Assign(VariableIndex(n, "guess", name), Checked(name, value));
   for (const FixedVariable& f : input.fix) {
     if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Checked(f.name, *f.value));
