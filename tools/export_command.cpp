@@ -30,7 +30,6 @@ int RunExport(const ExportArgs& args) {
   const std::string run = fs::absolute(dir).lexically_normal().filename().string().empty()
                               ? fs::absolute(dir).lexically_normal().parent_path().filename().string()
                               : fs::absolute(dir).lexically_normal().filename().string();
-  const AutoFiles files = ExportAuto(dir, args.samples);
   for (const char* prefix : {"b.", "s."}) {
     try {
       CheckOutputFile(dir / (prefix + run), prefix + run);
@@ -39,6 +38,7 @@ int RunExport(const ExportArgs& args) {
                                       fmt::format("directory = '{}' cannot hold the export: {}", dir.string(), e.what()));
     }
   }
+  const AutoFiles files = ExportAuto(dir, args.samples);  // after the checks: no work for nothing
   WriteFileAtomically(dir / ("b." + run), files.b);
   WriteFileAtomically(dir / ("s." + run), files.s);
   fmt::print("wrote {} and {}\n", (dir / ("b." + run)).string(), (dir / ("s." + run)).string());

@@ -68,7 +68,7 @@ expect 2 "key 'continuation.parameter' = 'u_r' is tied to u_s" "${good/omega/u_r
 tie_u_r = true"
 expect 2 "key 'output' = '../t' is invalid" "${good/output = \"t\"/output = \"..\/t\"}"
 # A duration that was never given is refused (one given as 0 is a zero-length segment).
-expect 2 "key 'start.guess' misses d2 (>= 0)" "${good/preset = \"paper-5.1\"/signature = \"slip- slip+\"
+expect 2 "key 'start.guess' misses d2 (0 to the period)" "${good/preset = \"paper-5.1\"/signature = \"slip- slip+\"
 set = { chi = 0.3, eta = 4.0, omega = 0.6, u_s = 0.1, u_r = 0.3 \}
 guess = { d1 = 0.0 \}}"
 expect 2 "key 'unknowns.fix' = 'u_r' is released by free as well" "$good

@@ -216,7 +216,7 @@ StartProblem BuildStartProblem(const StartInput& input) {
   for (int i = 0; i < n; ++i) {
     const std::string name = ov::Name(n, ov::Duration(i));
     if (!v.given[ov::Duration(i)]) {
-      throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (>= 0): give the duration of segment {}", name, i + 1));
+      throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (0 to the period): give the duration of segment {}", name, i + 1));
     }
     // The listed segments last at most the orbit's period together.
     const double period = orbit.signature.period_multiple() * 2.0 * std::numbers::pi / orbit.parameters.omega;

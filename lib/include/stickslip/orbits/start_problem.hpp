@@ -43,7 +43,7 @@ struct SetKey {
 };
 // chi, eta, omega, u_s, u_r, x10, x20, v10, v20, phi.
 std::span<const SetKey> SetKeys();
-// The valid range of a set key as messages print it ("0 < chi < 1"); "any finite number" for a
+// The valid range of a set key as messages print it ("0.01 <= chi <= 0.99"); "any finite number" for a
 // name that is not a set key.
 std::string_view SetKeyRange(std::string_view key);
 
