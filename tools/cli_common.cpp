@@ -23,6 +23,11 @@ double ParseNumber(std::string_view field, std::string_view text, std::string_vi
 }
 
 int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason) {
+  if (std::isnan(smallest.value)) {
+    *reason = fmt::format("the solution's admissibility is not known: margin {} is not defined (its root search was cut short)",
+                          smallest.Name());
+    return kExitNotAMotion;
+  }
   if (!(smallest.value > 0)) {
     *reason = fmt::format("the solution is not a motion of the system: margin {} = {:.6g} <= 0", smallest.Name(),
                           smallest.value);

@@ -94,7 +94,7 @@ for end in "${ends[@]}"; do
     failures=$((failures + 1))
   fi
   rm -rf "$work/run"
-  expect_ends "0 1 3" "${c[@]}" "${orbit[@]}"
+  expect_ends "0 3" "${c[@]}" "${orbit[@]}"
 done
 beyond=("chi|0.01 <= chi <= 0.99|0.0099" "chi|0.01 <= chi <= 0.99|0.9901" "eta|0.01 <= eta <= 100|0.0099"
         "eta|0.01 <= eta <= 100|100.01" "omega|0.01 <= omega <= 100|0.0099" "omega|0.01 <= omega <= 100|100.01"

@@ -92,6 +92,22 @@ expect_refused "b.paper-5.1-omega-up = 'results/paper-5.1-omega-up/b.paper-5.1-o
   export --auto results/paper-5.1-omega-up
 rmdir "$results/paper-5.1-omega-up/b.paper-5.1-omega-up"
 
+# A directory where no file can be created (as root, permissions do not tell: /proc).
+before=$(snapshot)
+if [ -d /proc/self ]; then
+  expect_refused "results = '/proc' is invalid: no file can be created in it" $cont --results /proc --output t
+  expect_refused "csv = '/proc/x.csv' is invalid: no file can be created in directory '/proc'" \
+    simulate --preset paper-5.1 --csv /proc/x.csv
+fi
+
+# An output file that is a symbolic link: its target is written, the link stays a link.
+printf 'old\n' > "$scratch/target.csv"
+ln -s "$scratch/target.csv" "$scratch/link.csv"
+"$bin" simulate --preset paper-5.1 --periods 1 --csv "$scratch/link.csv" > /dev/null || fail "simulate into a link: exit $?"
+[ -L "$scratch/link.csv" ] || fail "the link to the output file was replaced"
+head -1 "$scratch/target.csv" | grep -q "^t,x1,x2,v1,v2,mode$" || fail "the link's target was not written"
+echo "ok   a symbolic link as output file: target written, link kept"
+
 # Re-running a run replaces its three files and keeps every other file in its directory.
 (cd "$work" && "$bin" $cont --results results --output again > "$scratch/out") || fail "first run exit $?"
 grep -q "kept" "$scratch/out" && fail "a first run reports kept files: $(cat "$scratch/out")"

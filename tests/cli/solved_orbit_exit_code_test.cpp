@@ -43,9 +43,10 @@ TEST(SolvedOrbitExitCode, FailedVerificationOfAnAdmissibleOrbitIsNotAMotion) {
   EXPECT_EQ(reason, "the solution failed its verification by simulation");
 }
 
-TEST(SolvedOrbitExitCode, NanMarginIsNotAMotion) {
+TEST(SolvedOrbitExitCode, NanMarginIsAnUnknownAdmissibilityNotAComparisonWithZero) {
   std::string reason;
   EXPECT_EQ(SolvedOrbitExitCode(MarginOf(std::numeric_limits<double>::quiet_NaN()), Passing(), &reason), kExitNotAMotion);
+  EXPECT_EQ(reason, "the solution's admissibility is not known: margin G:3 is not defined (its root search was cut short)");
 }
 
 }  // namespace

@@ -1,19 +1,23 @@
 #include "stickslip/io/atomic_file.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
 
 #include <fmt/format.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "stickslip/invalid_input.hpp"
 
 namespace stickslip {
 
-void WriteFileAtomically(const std::filesystem::path& path, std::string_view content) {
+void WriteFileAtomically(const std::filesystem::path& link_or_path, std::string_view content) {
   namespace fs = std::filesystem;
+  std::error_code not_a_link;
+  const fs::path path = fs::is_symlink(link_or_path, not_a_link) ? fs::weakly_canonical(link_or_path) : link_or_path;
   const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::is_directory(directory)) {
     throw std::runtime_error(
@@ -54,12 +58,25 @@ void CheckOutputFile(const std::filesystem::path& path, const std::string& field
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (status.type() == fs::file_type::none) throw refuse(fmt::format("it cannot be examined ({})", error.message()));
-  if (fs::exists(status)) {
-    if (!fs::is_regular_file(status)) throw refuse(fs::is_directory(status) ? "it is a directory" : "it is not a file");
-    return;
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    throw refuse(fs::is_directory(status) ? "it is a directory" : "it is not a file");
   }
-  const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  // The file is written beside its target (a link's target: WriteFileAtomically follows links).
+  const fs::path target = fs::is_symlink(path, error) ? fs::weakly_canonical(path) : path;
+  const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (!fs::is_directory(directory, error)) throw refuse(fmt::format("directory '{}' does not exist", directory.string()));
+  if (const std::error_code failed = CanCreateFileIn(directory)) {
+    throw refuse(fmt::format("no file can be created in directory '{}' ({})", directory.string(), failed.message()));
+  }
+}
+
+std::error_code CanCreateFileIn(const std::filesystem::path& directory) {
+  const std::filesystem::path probe = directory / fmt::format(".stickslip.probe.{}", static_cast<long>(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (fd < 0) return {errno, std::generic_category()};
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return {};
 }
 
 }  // namespace stickslip

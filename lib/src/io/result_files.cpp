@@ -361,6 +361,9 @@ void CheckOutputDirectory(const fs::path& results_root, const std::string& outpu
     }
     return;  // then it holds no output yet
   }
+  if (const std::error_code failed = CanCreateFileIn(results_root)) {
+    throw results_error(fmt::format("no file can be created in it ({})", failed.message()));
+  }
 
   const fs::path target = results_root / output;
   const fs::file_status status = fs::symlink_status(target, error);

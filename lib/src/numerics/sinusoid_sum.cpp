@@ -116,7 +116,8 @@ class ZeroFinder {
     };
     std::vector<Interval> stack = {{{l, f_.JetAt(l)}, {r, f_.JetAt(r)}}};
     while (!stack.empty() && static_cast<int>(out->size()) < max_count) {
-      if (++*examined > options_.max_intervals) return ZeroSearchStatus::kTooManyIntervals;
+      if (*examined >= options_.max_intervals) return ZeroSearchStatus::kTooManyIntervals;
+      ++*examined;
       const Interval iv = stack.back();
       stack.pop_back();
       const double h = iv.r.t - iv.l.t;

@@ -5,18 +5,23 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace stickslip {
 
-// Writes `content` to `path` atomically (same directory, then rename). Throws
-// std::runtime_error naming the path if the directory is missing or the write fails; the
-// target is then untouched.
+// Writes `content` to `path` atomically (same directory, then rename). A symbolic link is
+// followed: its target is written and the link stays. Throws std::runtime_error naming the
+// path if the directory is missing or the write fails; the target is then untouched.
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content);
 
 // Throws InvalidInput naming `field` if WriteFileAtomically(path, ...) is bound to fail, or
-// would replace what is not a file: `path` is empty, its directory does not exist, or it exists
-// as something other than a regular file (a directory, a device). Front ends call it before the
-// work whose result they write.
+// would replace what is not a file: `path` is empty, its directory does not exist or takes no
+// new file, or it exists as something other than a regular file (a directory, a device). Front
+// ends call it before the work whose result they write.
 void CheckOutputFile(const std::filesystem::path& path, const std::string& field);
+
+// Whether a new file can be created in `directory`: found by creating an empty file of our own
+// there and removing it again (permissions alone do not tell, for root or on /proc).
+std::error_code CanCreateFileIn(const std::filesystem::path& directory);
 
 }  // namespace stickslip
