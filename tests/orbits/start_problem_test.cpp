@@ -56,6 +56,16 @@ TEST(StartProblem, RefusesANegativeDuration) {
   EXPECT_EQ(e.valid_range(), "0 <= d2 <= 11, the orbit's period 1 x 2 pi/omega");
 }
 
+// A duration equal to the period to rounding (a solved one-segment orbit) is accepted; one
+// longer by a part in a billion is refused.
+TEST(StartProblem, AcceptsADurationOfThePeriodToRoundingOnly) {
+  StartInput input = HandMadeSlipStick();
+  input.guess[3].second = std::nextafter(11.0, 20.0);  // d4, the period 2 pi/omega = 11
+  EXPECT_NO_THROW(BuildStartProblem(input));
+  input.guess[3].second = 11.0 * (1.0 + 1e-9);
+  EXPECT_EQ(ErrorOf([&] { BuildStartProblem(input); }).field(), "d4");
+}
+
 // A restart's d1..dn are the durations of its own type; under another signature they would
 // silently name other segments (item 4 of issue 10): the builder refuses, pointing to the edits.
 TEST(StartProblem, RefusesASignatureThatDiffersFromTheRestartPoints) {

@@ -218,9 +218,11 @@ StartProblem BuildStartProblem(const StartInput& input) {
     if (!v.given[ov::Duration(i)]) {
       throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (0 to the period): give the duration of segment {}", name, i + 1));
     }
-    // The listed segments last at most the orbit's period together.
+    // The listed segments last at most the orbit's period together; a solved one-segment orbit
+    // has d1 = the period to rounding, which a restart from it must accept.
     const double period = orbit.signature.period_multiple() * 2.0 * std::numbers::pi / orbit.parameters.omega;
-    if (!(orbit.durations[i] >= 0.0 && orbit.durations[i] <= period)) {
+    constexpr double kRounding = 1e-12;
+    if (!(orbit.durations[i] >= 0.0 && orbit.durations[i] <= period * (1.0 + kRounding))) {
       throw InvalidInput(name, orbit.durations[i],
                          fmt::format("0 <= {} <= {}, the orbit's period {} x 2 pi/omega", name, period,
                                      orbit.signature.period_multiple()));
