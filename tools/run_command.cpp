@@ -162,6 +162,24 @@ std::vector<std::pair<int, std::string>> Directions(const ContinueArgs& args) {
   throw InvalidInput("direction", "'" + args.direction + "'", "up, down, both");
 }
 
+// A complaint about a run-file key, as the command line names its option: "(command line): key
+// 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r' twice ...".
+InvalidInput AsOption(const InvalidInput& error) {
+  static const std::vector<std::pair<std::string, std::string>> kOptions = {
+      {"start.set", "set"},          {"start.guess", "guess"},   {"start.preset", "preset"},
+      {"start.signature", "signature"}, {"start.restart", "point"}, {"unknowns.free", "free"},
+      {"unknowns.fix", "fix"},       {"unknowns.tie_u_r", "tie-u_r"}, {"continuation.range", "range"},
+      {"continuation.parameter", "parameter"}, {"continuation.user_values_of", "user-value"}};
+  for (const auto& [key, option] : kOptions) {
+    if (error.field() != key) continue;
+    const std::string what = error.what();
+    const std::string quoted = "key '" + key + "' ";
+    const auto at = what.find(quoted);
+    return InvalidInput::WithMessage(option, option + " " + (at == std::string::npos ? what : what.substr(at + quoted.size())));
+  }
+  return error;
+}
+
 int RunContinue(ContinueArgs args) {
   RunFile& run = args.run;
   run.path = "(command line)";
@@ -198,14 +216,7 @@ int RunContinue(ContinueArgs args) {
     try {
       e = Execute(run, args.start.results);
     } catch (const InvalidInput& error) {
-      // The run file's key for user values is --user-value here: "user-value names 'x', which is
-      // not an unknown of the run".
-      if (error.field() != "continuation.user_values_of") throw;
-      const std::string key = "key 'continuation.user_values_of' ";
-      const std::string what = error.what();
-      const auto at = what.find(key);
-      throw InvalidInput::WithMessage("user-value",
-                                      "user-value " + (at == std::string::npos ? what : what.substr(at + key.size())));
+      throw AsOption(error);
     }
     if (!e) return kExitNoConvergence;
     WriteAndReport(run, *e, args.start.results);

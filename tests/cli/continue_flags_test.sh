@@ -81,7 +81,7 @@ expect_rejected "detect-folds = 'maybe'" "${base[@]}" --detect-folds maybe --out
 expect_rejected "detect-branch-points = 'no'" "${base[@]}" --detect-branch-points no --output bad
 expect_rejected "user-value = 'omega'" "${base[@]}" --user-value omega --output bad
 expect_rejected "user-value = 'abc'" "${base[@]}" --user-value omega=abc --output bad
-expect_rejected "user-value names 'x10'" "${base[@]}" --user-value x10=0.3 --output bad
+expect_rejected "user-value names 'chi'" "${base[@]}" --user-value chi=0.3 --output bad
 expect_rejected "--shooting" "${base[@]}" --shooting double --output bad
 expect_rejected "set" "${base[@]}" --set u_r=0.5 --set u_r=0.6 --output bad
 expect_rejected "guess" "${base[@]}" --guess d1=3 --guess d1=3.1 --output bad
