@@ -255,6 +255,7 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_option("--direction", args->direction,
                   "up, down, or both: two runs from the one start, written to results/<output>-down and "
                   "results/<output>-up (each a run of its own, to restart from, check and export)")
+      ->type_name("up|down|both")
       ->capture_default_str();
   cmd->add_option("--range", args->range, "MIN,MAX of the parameter")->required();
   cmd->add_option("--ds", args->run.ds, "initial arclength step (> 0)")->capture_default_str();
@@ -272,8 +273,11 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_option("--linear-solver", args->run.linear_solver, "sparse solver for multiple shooting")
       ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
       ->capture_default_str();
-  cmd->add_option("--detect-folds", args->detect_folds, "locate folds (LP): true or false")->capture_default_str();
+  cmd->add_option("--detect-folds", args->detect_folds, "locate folds (LP): true or false")
+      ->type_name("true|false")
+      ->capture_default_str();
   cmd->add_option("--detect-branch-points", args->detect_branch_points, "locate branch points (BP): true or false")
+      ->type_name("true|false")
       ->capture_default_str();
   cmd->add_flag("--continue-past-type-changes", args->run.continue_past_type_changes,
                 "go on past orbit-type changes, flagging the points beyond inadmissible");
