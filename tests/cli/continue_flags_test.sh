@@ -65,6 +65,19 @@ for k in ("omega", "x10", "x20", "v10", "phi"):
     assert abs(float(first[k]) - float(last[k])) < 1e-7, (k, first[k], last[k])
 PY
 
+# Round the loop from one of its special points (the SK where the sticking orbit's second
+# reversal becomes a stick): the lap ends on it without finding it again.
+"$bin" continue --point loop:SK8 --parameter omega --range 0.3,0.9 --ds 0.005 --ds-max 0.05 \
+  --continue-past-type-changes --max-points 100000 --results "$work" --output loop-sk > "$work/loop-sk.txt"
+grep -q "closed-loop" "$work/loop-sk.txt"
+/usr/bin/python3 - "$work/loop-sk/special-points.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+start = float(rows[0]["omega"])
+at_start = [r["label"] for r in rows if abs(float(r["omega"]) - start) < 1e-9]
+assert at_start == [rows[0]["label"], rows[-1]["label"]] and rows[-1]["type"] == "EP", at_start
+PY
+
 # Bad values: exit 2, one line naming the option, nothing written.
 expect_rejected() {
   local field=$1; shift

@@ -498,6 +498,21 @@ TEST(ClosedLoop, FindsEachSpecialPointOnceRoundTheLoop) {
   EXPECT_GT(OfType(b, "UZ").back().u(0), 0.0);  // on the arc back to the start at x = 1
 }
 
+// Started on a special point (a located zero of a test function, here lambda = -1e-13, as a restart
+// from a stored label is), the lap ends there without reporting it again: the zero lies within the
+// same-point distance of the start.
+TEST(ClosedLoop, DoesNotReportTheStartsOwnSpecialPointAgainAtTheEnd) {
+  FunctionMonitor monitor({{{.name = "lambda", .type = "LZ"}, [](double, double l) { return l + 1e-13; }}});
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  const Branch b = Continuation(Circle(), &monitor, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kClosedLoop) << b.end_message;
+  const auto zeros = OfType(b, "LZ");
+  ASSERT_EQ(zeros.size(), 1u);  // at x = -1 only
+  EXPECT_NEAR(zeros[0].u(0), -1.0, 1e-9);
+  EXPECT_LT((b.points.back().u - Eigen::Vector2d(1.0, 0.0)).norm(), 1e-9);
+}
+
 TEST(ClosedLoop, WithoutDetectionTheBranchGoesRoundUntilMaxPoints) {
   ContinuationOptions o;
   o.parameter_index = 1;

@@ -302,6 +302,8 @@ bool Continuation::RecordEvents() {
     // A restart from a special point finds it again at the start (a TR, an LP): it is the
     // start's own, no new one.
     if (branch_.points.size() == 1 && point.front().s <= location.same_point * location.tolerance) continue;
+    // Likewise at the end of a closed branch: the step onto the start finds the start's own.
+    if (st.closes_loop && st.next_ds - point.front().s <= location.same_point * location.tolerance) continue;
     std::optional<std::pair<BranchEnd, std::string>> ending;
     for (const detail::Located& l : point) {
       const detail::Event& e = *l.event;
