@@ -9,10 +9,10 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/check.hpp"
 #include "stickslip/io/result_files.hpp"
@@ -32,15 +32,13 @@ struct Executed {
 // nothing written.
 std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path& results) {
   OrbitContinuationSetup setup = MakeSetup(run, results);
-  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  ProgressLineOptions line_options;
+  line_options.value_name = run.parameter;
+  ProgressLine line(run.output, line_options);
+  if (line.enabled()) setup.options.progress = line.Callback();
   const auto started = std::chrono::steady_clock::now();
-  OrbitBranch branch = ContinueOrbit(setup, [&](const Branch& b) {
-    if (!terminal) return;
-    const BranchPoint& p = b.points.back();
-    fmt::print(stderr, "\r{}: {} points, {} = {:.10g}, ds = {:.2e}   ", run.output, b.points.size(),
-               run.parameter, p.lambda, p.ds);
-  });
-  if (terminal) fmt::print(stderr, "\r\033[K");
+  OrbitBranch branch = ContinueOrbit(setup);
+  line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (branch.branch.end == BranchEnd::kStartFailed) {
     fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
@@ -142,16 +140,50 @@ struct ContinueArgs {
   RunFile run;
   std::string range;
   std::string direction = "up";
+  std::vector<std::string> user_values;  // NAME=VALUE
+  std::string detect_folds = "true";
+  std::string detect_branch_points = "true";
 };
+
+// "true" or "false", as the run file's booleans.
+bool ParseSwitch(const char* field, const std::string& text) {
+  if (text != "true" && text != "false") throw InvalidInput(field, "'" + text + "'", "true, false");
+  return text == "true";
+}
+
+// The run's directions and outputs: one run, or with --direction both the two runs
+// <output>-down and <output>-up (as AUTO's and BifurcationKit's users run a branch both ways from
+// one start, and as continuation-scripts/ names its pairs).
+std::vector<std::pair<int, std::string>> Directions(const ContinueArgs& args) {
+  const std::string& output = args.run.output;
+  if (args.direction == "up") return {{1, output}};
+  if (args.direction == "down") return {{-1, output}};
+  if (args.direction == "both") return {{-1, output + "-down"}, {1, output + "-up"}};
+  throw InvalidInput("direction", "'" + args.direction + "'", "up, down, both");
+}
+
+// A complaint about a run-file key, as the command line names its option: "(command line): key
+// 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r' twice ...".
+InvalidInput AsOption(const InvalidInput& error) {
+  static const std::vector<std::pair<std::string, std::string>> kOptions = {
+      {"start.set", "set"},          {"start.guess", "guess"},   {"start.preset", "preset"},
+      {"start.signature", "signature"}, {"start.restart", "point"}, {"unknowns.free", "free"},
+      {"unknowns.fix", "fix"},       {"unknowns.tie_u_r", "tie-u_r"}, {"continuation.range", "range"},
+      {"continuation.parameter", "parameter"}, {"continuation.user_values_of", "user-value"}};
+  for (const auto& [key, option] : kOptions) {
+    if (error.field() != key) continue;
+    const std::string what = error.what();
+    const std::string quoted = "key '" + key + "' ";
+    const auto at = what.find(quoted);
+    return InvalidInput::WithMessage(option, option + " " + (at == std::string::npos ? what : what.substr(at + quoted.size())));
+  }
+  return error;
+}
 
 int RunContinue(ContinueArgs args) {
   RunFile& run = args.run;
   run.path = "(command line)";
   SetRunFileStart(ToStartInput(args.start), &run);
-  if (args.direction != "up" && args.direction != "down") {
-    throw InvalidInput("direction", "'" + args.direction + "'", "up, down");
-  }
-  run.direction = args.direction == "up" ? 1 : -1;
   const auto comma = args.range.find(',');
   if (comma == std::string::npos) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX");
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
@@ -163,13 +195,32 @@ int RunContinue(ContinueArgs args) {
   if (run.max_points < 1 || run.max_points > 1000000) {
     throw InvalidInput("max-points", run.max_points, "1 <= max-points <= 1000000");
   }
-  if (!IsRunName(run.output)) {
-    throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
+  for (const std::string& text : args.user_values) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");
+    const std::string name = text.substr(0, equals);
+    run.user_values.emplace_back(name, ParseNumber("user-value", text.substr(equals + 1), "a finite number"));
   }
-  CheckOutputDirectory(args.start.results, run.output);
-  std::optional<Executed> e = Execute(run, args.start.results);
-  if (!e) return kExitNoConvergence;
-  WriteAndReport(run, *e, args.start.results);
+  run.detect_folds = ParseSwitch("detect-folds", args.detect_folds);
+  run.detect_branch_points = ParseSwitch("detect-branch-points", args.detect_branch_points);
+  // Every output is checked before anything is computed.
+  const std::vector<std::pair<int, std::string>> directions = Directions(args);
+  for (const auto& [direction, output] : directions) {
+    if (!IsRunName(output)) throw InvalidInput("output", "'" + output + "'", std::string(kRunNameRule));
+    CheckOutputDirectory(args.start.results, output);
+  }
+  for (const auto& [direction, output] : directions) {
+    run.direction = direction;
+    run.output = output;
+    std::optional<Executed> e;
+    try {
+      e = Execute(run, args.start.results);
+    } catch (const InvalidInput& error) {
+      throw AsOption(error);
+    }
+    if (!e) return kExitNoConvergence;
+    WriteAndReport(run, *e, args.start.results);
+  }
   return kExitOk;
 }
 
@@ -201,12 +252,33 @@ Command AddContinueCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("continue", "A one-off continuation run from flags (the keys of a run file).");
   AddStartOptions(*cmd, &args->start, StartOptions::kOrbit);
   cmd->add_option("--parameter", args->run.parameter, "continued variable (omega, u_r, u_s, chi, eta, ...)")->required();
-  cmd->add_option("--direction", args->direction, "up or down")->capture_default_str();
+  cmd->add_option("--direction", args->direction,
+                  "up, down, or both: two runs from the one start, written to results/<output>-down and "
+                  "results/<output>-up (each a run of its own, to restart from, check and export)")
+      ->type_name("up|down|both")
+      ->capture_default_str();
   cmd->add_option("--range", args->range, "MIN,MAX of the parameter")->required();
   cmd->add_option("--ds", args->run.ds, "initial arclength step (> 0)")->capture_default_str();
   cmd->add_option("--ds-min", args->run.ds_min, "smallest step (> 0)")->capture_default_str();
   cmd->add_option("--ds-max", args->run.ds_max, "largest step")->capture_default_str();
   cmd->add_option("--max-points", args->run.max_points, "accepted points (1 to 1e6)")->capture_default_str();
+  cmd->add_option("--user-value", args->user_values,
+                  "report a UZ point where the variable NAME (the parameter or another unknown) passes VALUE; "
+                  "repeatable (the run file's user_values and user_values_of)")
+      ->type_name("NAME=VALUE");
+  cmd->add_option("--shooting", args->run.shooting,
+                  "single (dense), multiple (block-sparse), or auto (single up to 6 listed segments)")
+      ->check(CLI::IsMember({"auto", "single", "multiple"}))
+      ->capture_default_str();
+  cmd->add_option("--linear-solver", args->run.linear_solver, "sparse solver for multiple shooting")
+      ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
+      ->capture_default_str();
+  cmd->add_option("--detect-folds", args->detect_folds, "locate folds (LP): true or false")
+      ->type_name("true|false")
+      ->capture_default_str();
+  cmd->add_option("--detect-branch-points", args->detect_branch_points, "locate branch points (BP): true or false")
+      ->type_name("true|false")
+      ->capture_default_str();
   cmd->add_flag("--continue-past-type-changes", args->run.continue_past_type_changes,
                 "go on past orbit-type changes, flagging the points beyond inadmissible");
   cmd->add_option("--output", args->run.output, "results/<output>/")->required();

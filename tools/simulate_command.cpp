@@ -9,10 +9,12 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/model/transient.hpp"
 
 namespace stickslip::cli {
 
@@ -21,6 +23,7 @@ namespace {
 struct SimulateArgs {
   StartFlags start;
   std::string periods = "2";
+  std::string transients = "0";
   std::string method = "exact";
   std::string csv_path;
   std::string samples_per_period = "200";
@@ -31,37 +34,39 @@ std::string StateJson(const State& x) {
   return fmt::format("[{}, {}, {}, {}]", x(0), x(1), x(2), x(3));
 }
 
-std::string EventsJson(const SimulationResult& result) {
+// The printed times are the paper's absolute t: the simulation after a transient of t0 counts
+// its time from t0 (the forcing has the same phase there), and t0 is added back.
+std::string EventsJson(const SimulationResult& result, double t0) {
   std::string out = "{\"events\": [";
   for (std::size_t i = 0; i < result.events.size(); ++i) {
     const Event& e = result.events[i];
     out += fmt::format("{}{{\"t\": {}, \"kind\": \"{}\", \"mode_after\": \"{}\", \"state\": {}}}",
-                       i == 0 ? "" : ", ", e.t, ToString(e.kind), ToString(e.mode_after),
+                       i == 0 ? "" : ", ", t0 + e.t, ToString(e.kind), ToString(e.mode_after),
                        StateJson(e.state));
   }
   out += "]}\n";
   return out;
 }
 
-std::string EventTable(const SimulationResult& result) {
+std::string EventTable(const SimulationResult& result, double t0) {
   std::string out = fmt::format("{:>22} {:<14} {:<6} {:>22} {:>22} {:>22} {:>22}\n", "t",
                                 "event", "after", "x1", "x2", "x1'", "x2'");
   for (const Event& e : result.events) {
     const std::string kind =
         e.IsAbnormalStop() ? std::string("abnormal-stop") : std::string(ToString(e.kind));
-    out += fmt::format("{:>22.15g} {:<14} {:<6} {:>22.15g} {:>22.15g} {:>22.15g} {:>22.15g}\n", e.t,
+    out += fmt::format("{:>22.15g} {:<14} {:<6} {:>22.15g} {:>22.15g} {:>22.15g} {:>22.15g}\n", t0 + e.t,
                        kind, ToString(e.mode_after), e.state(0), e.state(1), e.state(2),
                        e.state(3));
   }
   return out;
 }
 
-std::string SamplesCsv(const SimulationResult& result) {
+std::string SamplesCsv(const SimulationResult& result, double t0) {
   std::string out = "t,x1,x2,v1,v2,mode\n";
   std::size_t segment = 0;
   for (const TimeSample& s : result.samples) {
     while (segment + 1 < result.segments.size() && result.segments[segment].t_end < s.t) ++segment;
-    out += fmt::format("{},{},{},{},{},{}\n", s.t, s.state(0), s.state(1), s.state(2), s.state(3),
+    out += fmt::format("{},{},{},{},{},{}\n", t0 + s.t, s.state(0), s.state(1), s.state(2), s.state(3),
                        ToString(result.segments[segment].mode));
   }
   return out;
@@ -79,18 +84,46 @@ int RunSimulate(const SimulateArgs& args) {
   if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
     throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
   }
+  const std::string transient_range = fmt::format("whole numbers 0 <= transients <= {}", kMaxTransientPeriods);
+  const double transients = ParseNumber("transients", args.transients, transient_range);
+  if (!(transients >= 0.0 && transients <= kMaxTransientPeriods) || transients != std::floor(transients)) {
+    throw InvalidInput("transients", args.transients, transient_range);
+  }
   const double period = 2.0 * std::numbers::pi / input.parameters.omega;
+  const Simulator simulate =
+      args.method == "exact"
+          ? Simulator(SimulateExact)
+          : Simulator([](const Parameters& p, const State& x0, double phi, const SimulationOptions& o) {
+              return SimulateOdeint(p, x0, phi, o);
+            });
+  ProgressLine line("simulate");
+  // One line over the transient and the shown periods.
+  auto reporting = [&](double offset) -> ProgressCallback {
+    if (!line.enabled()) return {};
+    return [&line, offset, total = transients + periods](const Progress& p) {
+      line.Update({offset + p.done, total, "periods"});
+    };
+  };
+  TransientOptions transient;
+  transient.periods = static_cast<int>(transients);
+  transient.simulation.progress = reporting(0.0);
+  const Transient settled =
+      SimulateTransient(simulate, input.parameters, input.initial_state, input.phi, transient);
+  if (!settled.Completed()) {
+    line.Clear();
+    fmt::print(stderr, "error: simulation incomplete in the transient: {}\n", settled.message);
+    return kExitFailure;
+  }
+  const double t0 = settled.t;
   SimulationOptions options;
   options.duration = periods * period;
   if (!args.csv_path.empty()) options.sample_step = period / samples_per_period;
-
-  const SimulationResult result =
-      args.method == "exact"
-          ? SimulateExact(input.parameters, input.initial_state, input.phi, options)
-          : SimulateOdeint(input.parameters, input.initial_state, input.phi, options);
-  if (!args.csv_path.empty()) WriteFileAtomically(args.csv_path, SamplesCsv(result));
+  options.progress = reporting(transients);
+  const SimulationResult result = simulate(input.parameters, settled.state, input.phi, options);
+  line.Clear();
+  if (!args.csv_path.empty()) WriteFileAtomically(args.csv_path, SamplesCsv(result, t0));
   if (args.json) {
-    fmt::print("{}", EventsJson(result));
+    fmt::print("{}", EventsJson(result, t0));
   } else {
     const State& x = input.initial_state;
     fmt::print("stickslip simulate{}: {}\n", args.start.preset.empty() ? "" : " " + args.start.preset,
@@ -98,7 +131,12 @@ int RunSimulate(const SimulateArgs& args) {
     fmt::print("start: x10={} x20={} v10={} v20={} phi={}; {} period(s) of 2 pi/omega = {}; "
                "method {}\n",
                x(0), x(1), x(2), x(3), input.phi, periods, period, args.method);
-    fmt::print("{}", EventTable(result));
+    if (transient.periods > 0) {
+      const State& y = settled.state;
+      fmt::print("after {} transient period(s), not shown: t={} x1={} x2={} x1'={} x2'={}\n", transient.periods, t0,
+                 y(0), y(1), y(2), y(3));
+    }
+    fmt::print("{}", EventTable(result, t0));
     fmt::print("{} event(s), {} segment(s){}\n", result.events.size(), result.segments.size(),
                args.csv_path.empty() ? "" : fmt::format("; time series written to {}", args.csv_path));
   }
@@ -121,6 +159,13 @@ Command AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--results", args->start.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_option("--periods", args->periods,
                   "simulated time in forcing periods 2 pi/omega (0 < periods <= 1e6)")
+      ->capture_default_str();
+  cmd->add_option("--transients", args->transients,
+                  "forcing periods simulated first and not shown (whole numbers, 0 to 1e6); the table, "
+                  "--json and --csv then cover --periods after them, with times still counted from the "
+                  "start of the simulation (the paper's t, so that phases keep their meaning: the "
+                  "first shown time is >= transients * 2 pi/omega)")
+      ->type_name("N")
       ->capture_default_str();
   cmd->add_option("--method", args->method,
                   "exact: closed-form flows with rigorous event location (1e-13 in time); "

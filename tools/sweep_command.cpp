@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/analysis/sweep.hpp"
@@ -69,7 +70,10 @@ int RunSweep(const SweepArgs& args) {
   const int seed = Count("seed", args.seed, 0, 1000000000);
   options.threads = Count("threads", args.threads, 0, 1024);
   const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
+  ProgressLine line("sweep");
+  if (line.enabled()) options.progress = line.Callback();
   const std::vector<SweepPoint> points = Sweep(input.parameters, starts, input.phi, options);
+  line.Clear();
   WriteFileAtomically(args.output, SweepCsv(points, *parameter, input.phi));
   int periodic = 0;
   for (const SweepPoint& p : points) periodic += p.period > 0;

@@ -3,6 +3,7 @@
 // other, and an output that does not depend on the number of threads.
 #include "stickslip/analysis/sweep.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <numbers>
@@ -230,6 +231,43 @@ TEST(ScatteredStarts, DrawsFromSplitmix64InTheBoxAroundTheCentre) {
   EXPECT_LT(lowest.maxCoeff(), -0.9);
   EXPECT_GT(highest.minCoeff(), 0.9);
   EXPECT_EQ(ScatteredStarts(centre, 0.25, 400, 5), many);
+}
+
+}  // namespace
+}  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// The callback sees every point once, one call at a time, the count rising to the total, on
+// any number of threads; and the output is the same with and without it.
+TEST(SweepProgress, CountsEveryPointOnceInOrderOnAnyNumberOfThreads) {
+  const PaperExample& e = *FindPaperExample("paper-5.2");
+  const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 5, 3);
+  for (SweepStart start : {SweepStart::kChained, SweepStart::kFixed}) {
+    SweepOptions o = ShortSweep(start);
+    const std::string quiet = SweepCsv(Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi);
+    for (int threads : {1, 4}) {
+      o.threads = threads;
+      std::vector<double> done;
+      std::atomic<int> inside{0};
+      bool overlapped = false;
+      double total = 0.0;
+      o.progress = [&](const Progress& p) {
+        overlapped = overlapped || inside.fetch_add(1) != 0;
+        done.push_back(p.done);
+        total = p.total;
+        EXPECT_STREQ(p.unit, "points");
+        inside.fetch_sub(1);
+      };
+      const std::vector<SweepPoint> points = Sweep(e.parameters, starts, e.phi, o);
+      EXPECT_FALSE(overlapped);
+      ASSERT_EQ(done.size(), points.size()) << threads << " threads";
+      EXPECT_EQ(total, static_cast<double>(points.size()));
+      for (std::size_t k = 0; k < done.size(); ++k) EXPECT_EQ(done[k], static_cast<double>(k + 1));
+      EXPECT_EQ(SweepCsv(points, o.parameter, e.phi), quiet);
+    }
+  }
 }
 
 }  // namespace

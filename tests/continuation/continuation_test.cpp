@@ -447,3 +447,128 @@ TEST(PseudoArclength, DoesNotReportTheStartsOwnFoldAgain) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// The circle is a closed branch: once round, the branch ends on its start, with each fold once.
+TEST(ClosedLoop, TheCircleEndsBackOnItsStartAfterOneLap) {
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  o.max_points = 2000;
+  const Branch b = Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kClosedLoop) << b.end_message;
+  EXPECT_STREQ(ToString(b.end), "closed-loop");
+  EXPECT_LT((b.points.back().u - b.points.front().u).norm(), 1e-9);
+  EXPECT_EQ(b.points.back().label, "EP");
+  // One lap of arclength 2 pi, the steps at most ds_max: at least 2 pi / ds_max steps, and far
+  // fewer than a second lap would take.
+  EXPECT_GE(b.points.size(), static_cast<std::size_t>(2 * M_PI / o.step.ds_max));
+  EXPECT_LT(b.points.size(), 2 * static_cast<std::size_t>(2 * M_PI / o.step.ds_max) + 10);
+  double turned = 0.0;  // the angle swept, point to point: one full turn
+  for (std::size_t k = 1; k < b.points.size(); ++k) {
+    const Eigen::VectorXd& p = b.points[k - 1].u;
+    const Eigen::VectorXd& q = b.points[k].u;
+    turned += std::atan2(p(0) * q(1) - p(1) * q(0), p.dot(q));
+    EXPECT_NEAR(q.squaredNorm(), 1.0, 1e-10);
+  }
+  EXPECT_NEAR(turned, 2 * M_PI, 1e-9);
+  const auto folds = OfType(b, "LP");
+  ASSERT_EQ(folds.size(), 2u);
+  EXPECT_NEAR(folds[0].lambda, 1.0, 1e-10);
+  EXPECT_NEAR(folds[1].lambda, -1.0, 1e-10);
+  EXPECT_EQ(b.special_points.back().type, "EP");
+  EXPECT_EQ(b.special_points.back().test_function, "closed-loop");
+}
+
+// A user value just before the start, on the last arc of the lap, is located on the way back to
+// the start; one just after the start is not found twice.
+TEST(ClosedLoop, FindsEachSpecialPointOnceRoundTheLoop) {
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  o.user_values = {{1, -1e-3, "lambda=-0.001"}, {1, 1e-3, "lambda=0.001"}};
+  const Branch b = Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kClosedLoop) << b.end_message;
+  std::vector<double> at;
+  for (const SpecialPoint& s : OfType(b, "UZ")) at.push_back(s.lambda);
+  // lambda = 0.001 once near x = 1 and once near x = -1; lambda = -0.001 likewise.
+  ASSERT_EQ(at.size(), 4u);
+  EXPECT_NEAR(at.front(), 1e-3, 1e-12);
+  EXPECT_NEAR(at.back(), -1e-3, 1e-12);
+  EXPECT_GT(OfType(b, "UZ").back().u(0), 0.0);  // on the arc back to the start at x = 1
+}
+
+// Started on a special point (a located zero of a test function, here lambda = -1e-13, as a restart
+// from a stored label is), the lap ends there without reporting it again: the zero lies within the
+// same-point distance of the start.
+TEST(ClosedLoop, DoesNotReportTheStartsOwnSpecialPointAgainAtTheEnd) {
+  FunctionMonitor monitor({{{.name = "lambda", .type = "LZ"}, [](double, double l) { return l + 1e-13; }}});
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  const Branch b = Continuation(Circle(), &monitor, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kClosedLoop) << b.end_message;
+  const auto zeros = OfType(b, "LZ");
+  ASSERT_EQ(zeros.size(), 1u);  // at x = -1 only
+  EXPECT_NEAR(zeros[0].u(0), -1.0, 1e-9);
+  EXPECT_LT((b.points.back().u - Eigen::Vector2d(1.0, 0.0)).norm(), 1e-9);
+}
+
+TEST(ClosedLoop, WithoutDetectionTheBranchGoesRoundUntilMaxPoints) {
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  o.max_points = 500;
+  o.closed_loop.detect = false;
+  const Branch b = Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kMaxPoints);
+  EXPECT_GT(OfType(b, "LP").size(), 2u);  // round and round
+}
+
+// The cubic's branch is no loop: it passes near no earlier point and ends at its bound.
+TEST(ClosedLoop, AnOpenBranchIsNotClosed) {
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  o.lambda_min = -2.0;
+  o.lambda_max = 2.0;
+  const Branch b = Continuation(Cubic(), nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound) << b.end_message;
+}
+
+TEST(ClosedLoopOptions, RejectValuesOutOfRange) {
+  for (const auto& [invalidate, field] : std::vector<std::pair<std::function<void(ClosedLoopOptions*)>, std::string>>{
+           {[](ClosedLoopOptions* c) { c->tolerance = 0.0; }, "closed_loop.tolerance"},
+           {[](ClosedLoopOptions* c) { c->alignment = 1.5; }, "closed_loop.alignment"},
+           {[](ClosedLoopOptions* c) { c->departure = 0.5; }, "closed_loop.departure"}}) {
+    ContinuationOptions o;
+    o.parameter_index = 1;
+    invalidate(&o.closed_loop);
+    const std::optional<InvalidInput> e = ThrownInvalidInput([&] { o.Validate(); });
+    ASSERT_TRUE(e.has_value()) << field;
+    EXPECT_EQ(e->field(), field);
+  }
+}
+
+// The progress callback sees every accepted point once, in order, with the branch's lambda.
+TEST(ContinuationProgress, ReportsEveryAcceptedPointWithItsLambda) {
+  ContinuationOptions o;
+  o.parameter_index = 1;
+  o.max_points = 30;
+  std::vector<Progress> seen;
+  o.progress = [&](const Progress& p) { seen.push_back(p); };
+  const Branch b = Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kMaxPoints);
+  // Located special points are points of the branch too, counted when the step is accepted.
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front().done, 1.0);
+  EXPECT_EQ(seen.back().done, static_cast<double>(b.points.size()));
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].total, 30.0);
+    EXPECT_STREQ(seen[k].unit, "points");
+    if (k > 0) {
+      EXPECT_GT(seen[k].done, seen[k - 1].done);
+    }
+    EXPECT_EQ(seen[k].value, b.points[static_cast<std::size_t>(seen[k].done) - 1].lambda);
+  }
+}
+
+}  // namespace
+}  // namespace stickslip

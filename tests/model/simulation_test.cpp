@@ -310,3 +310,30 @@ TEST(ExactSimulator, FindsAStickExitJustAfterTheFirstForcingPeriod) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// The callback is called at every event with the time simulated, in forcing periods.
+TEST(SimulationProgress, ReportsEveryEventInForcingPeriods) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  const double period = 2.0 * std::numbers::pi / e.parameters.omega;
+  SimulationOptions o;
+  o.duration = 7.5 * period;
+  std::vector<Progress> seen;
+  o.progress = [&](const Progress& p) { seen.push_back(p); };
+  for (bool exact : {true, false}) {
+    seen.clear();
+    const SimulationResult r = exact ? SimulateExact(e.parameters, e.initial_state, e.phi, o)
+                                     : SimulateOdeint(e.parameters, e.initial_state, e.phi, o);
+    ASSERT_EQ(seen.size(), r.events.size());
+    for (std::size_t k = 0; k < seen.size(); ++k) {
+      EXPECT_DOUBLE_EQ(seen[k].done, r.events[k].t / period);
+      EXPECT_DOUBLE_EQ(seen[k].total, 7.5);
+      EXPECT_STREQ(seen[k].unit, "periods");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace stickslip

@@ -1,6 +1,8 @@
 #include "stickslip/analysis/sweep.hpp"
 
 #include <cmath>
+#include <functional>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 
@@ -71,13 +73,14 @@ SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_
 
 // A chain's up pass and then its down pass, each point from the last section state before it.
 std::vector<SweepPoint> ChainedPasses(const Parameters& base, const State& start, double phi_section,
-                                      const SweepOptions& o, int chain) {
+                                      const SweepOptions& o, int chain, const std::function<void()>& point_done) {
   std::vector<SweepPoint> points;
   State x = start;
   for (SweepPass pass : {SweepPass::kUp, SweepPass::kDown}) {
     for (int step = 0; step <= o.steps; ++step) {
       points.push_back(SimulatePoint(base, x, phi_section, o, chain, pass, step));
       x = points.back().section.back();
+      point_done();
     }
   }
   return points;
@@ -130,12 +133,23 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& 
   // same for any number of threads.
   const int items = chained ? chains : chains * per_chain;
   std::vector<std::vector<SweepPoint>> slots(items);
+  // Progress: the points done, counted and reported under one lock, so that the callback sees
+  // one call at a time with the count increasing.
+  const double total = static_cast<double>(chained ? chains * 2 * per_chain : items);
+  std::mutex progress_mutex;
+  long done = 0;
+  const std::function<void()> point_done = [&] {
+    if (!options.progress) return;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    options.progress({static_cast<double>(++done), total, "points"});
+  };
   ParallelFor(items, options.threads, [&](int i) {
     if (chained) {
-      slots[i] = ChainedPasses(base, starts[i], phi_section, options, i);
+      slots[i] = ChainedPasses(base, starts[i], phi_section, options, i, point_done);
     } else {
       const int chain = i / per_chain;
       slots[i] = {SimulatePoint(base, starts[chain], phi_section, options, chain, SweepPass::kFixed, i % per_chain)};
+      point_done();
     }
   });
   std::vector<SweepPoint> points;

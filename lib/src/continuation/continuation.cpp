@@ -1,5 +1,6 @@
 #include "stickslip/continuation/continuation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,9 +20,18 @@ const char* ToString(BranchEnd end) {
     case BranchEnd::kStepTooSmall: return "step-too-small";
     case BranchEnd::kTerminalEvent: return "terminal-event";
     case BranchEnd::kStartFailed: return "start-failed";
-    case BranchEnd::kFoldAtStart: break;
+    case BranchEnd::kFoldAtStart: return "fold-at-start";
+    case BranchEnd::kClosedLoop: break;
   }
-  return "fold-at-start";
+  return "closed-loop";
+}
+
+void ClosedLoopOptions::Validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) throw InvalidInput("closed_loop.tolerance", tolerance, "0 < tolerance < 1");
+  if (!(alignment > 0.0 && alignment <= 1.0)) throw InvalidInput("closed_loop.alignment", alignment, "0 < alignment <= 1");
+  if (!(departure >= 1.0 && departure <= 1e6)) {
+    throw InvalidInput("closed_loop.departure", departure, "1 <= departure <= 1e6");
+  }
 }
 
 void ContinuationOptions::Validate() const {
@@ -44,6 +54,7 @@ void ContinuationOptions::Validate() const {
   if (location.max_iterations < 1) throw InvalidInput("location.max_iterations", location.max_iterations, ">= 1");
   if (!(location.same_point >= 0.0)) throw InvalidInput("location.same_point", location.same_point, ">= 0");
   if (!(location.fold_noise >= 0.0)) throw InvalidInput("location.fold_noise", location.fold_noise, ">= 0");
+  closed_loop.Validate();
 }
 
 // The setup, fixed for the branch (options, corrector, step-size controller, events), and the
@@ -59,6 +70,12 @@ struct Continuation::State {
   detail::Sample next;      // the step's corrected point, not yet accepted
   double next_ds = 0.0;     // ... at this arclength from the last
   bool on_bound = false;    // ... put exactly on a parameter bound
+  bool closes_loop = false;  // ... the start again: the branch is closed
+  // For ClosedLoopOptions: the start as the branch left it (its tangent oriented by the first
+  // step), the farthest any point lay from it, and the longest step so far.
+  Eigen::VectorXd start_u, start_tangent;
+  double farthest = 0.0;
+  double longest_step = 0.0;
   bool started = false;
   bool ended = false;
 
@@ -116,8 +133,8 @@ Continuation::~Continuation() = default;
 bool Continuation::Step() {
   if (state_->ended) return false;
   if (!state_->started) return Start();
-  return PredictAndCorrect() && HeadsTheAskedWay() && LeavesTheStartOnThePositiveSides() && RecordEvents() &&
-         Accept();
+  return PredictAndCorrect() && HeadsTheAskedWay() && LeavesTheStartOnThePositiveSides() && ClosesTheLoop() &&
+         RecordEvents() && Accept();
 }
 
 Branch Continuation::Run() {
@@ -155,6 +172,7 @@ bool Continuation::Start() {
     }
   }
   MarkLastPoint(&branch_, "EP", "start");
+  Report();
   if (st.Lambda(st.last.u) < o.lambda_min || st.Lambda(st.last.u) > o.lambda_max) {
     return End(BranchEnd::kParameterBound, "the start lies outside the parameter range");
   }
@@ -237,6 +255,45 @@ bool Continuation::LeavesTheStartOnThePositiveSides() {
   return true;
 }
 
+// The step from the last point to the next passes the start (within the tolerance of its chord,
+// heading the way the branch left the start), after the branch has been away from it: the loop is
+// closed. The step is taken again, onto the start: from the last point at the arclength where the
+// start lies along the last tangent, so that the corrector lands on the start itself and the
+// special points before it are located as on any step.
+bool Continuation::ClosesTheLoop() {
+  State& st = *state_;
+  const ClosedLoopOptions& o = st.options.closed_loop;
+  if (branch_.points.size() == 1) {
+    st.start_u = st.last.u;
+    st.start_tangent = st.last.tangent;  // oriented along the branch by HeadsTheAskedWay
+  }
+  const Eigen::VectorXd chord = st.next.u - st.last.u;
+  const double length = chord.norm();
+  st.longest_step = std::max(st.longest_step, length);
+  if (!o.detect || !(st.farthest > o.departure * st.longest_step) || !(length > 0.0)) return true;
+  const Eigen::VectorXd to_start = st.start_u - st.last.u;
+  const double along = std::clamp(to_start.dot(chord) / (length * length), 0.0, 1.0);
+  if (!((to_start - along * chord).norm() <= o.tolerance * length)) return true;
+  if (!(st.start_tangent.dot(chord) >= o.alignment * length)) return true;
+  const double s = st.last.tangent.dot(to_start);
+  if (s > 0.0) {
+    if (std::optional<detail::Sample> onto = st.corrector.Corrected(st.last, s, detail::Attempt::kStep)) {
+      st.next = std::move(*onto);
+      st.next_ds = s;
+      st.on_bound = false;
+    }
+  }
+  st.closes_loop = true;
+  return true;
+}
+
+void Continuation::Report() const {
+  const State& st = *state_;
+  if (!st.options.progress) return;
+  st.options.progress({static_cast<double>(branch_.points.size()), static_cast<double>(st.options.max_points),
+                       "points", branch_.points.back().lambda});
+}
+
 bool Continuation::RecordEvents() {
   State& st = *state_;
   const EventLocationOptions& location = st.options.location;
@@ -245,6 +302,8 @@ bool Continuation::RecordEvents() {
     // A restart from a special point finds it again at the start (a TR, an LP): it is the
     // start's own, no new one.
     if (branch_.points.size() == 1 && point.front().s <= location.same_point * location.tolerance) continue;
+    // Likewise at the end of a closed branch: the step onto the start finds the start's own.
+    if (st.closes_loop && st.next_ds - point.front().s <= location.same_point * location.tolerance) continue;
     std::optional<std::pair<BranchEnd, std::string>> ending;
     for (const detail::Located& l : point) {
       const detail::Event& e = *l.event;
@@ -267,6 +326,13 @@ bool Continuation::RecordEvents() {
 bool Continuation::Accept() {
   State& st = *state_;
   branch_.points.push_back(MakePoint(st.next, st.Lambda(st.next.u), st.next_ds, ""));
+  st.farthest = std::max(st.farthest, (st.next.u - st.start_u).norm());
+  Report();
+  if (st.closes_loop) {
+    return End(BranchEnd::kClosedLoop,
+               fmt::format("the branch came back to its start, lambda = {}, after {} points: a closed branch",
+                           st.Lambda(st.next.u), branch_.points.size() - 1));
+  }
   if (st.on_bound) {
     return End(BranchEnd::kParameterBound, fmt::format("reached the bound lambda = {}", st.Lambda(st.next.u)));
   }

@@ -439,6 +439,7 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
     t = t_event;
     x = x_end;
     mode = event.mode_after;
+    ReportSimulated(options, p, t);
     if (static_cast<int>(result.events.size()) >= options.max_events) {
       return stop(SimulationEnd::kMaxEvents, fmt::format("stopped after {} events at t = {} (max_events)",
                               result.events.size(), t));

@@ -190,6 +190,7 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     t = segment.t_end;
     x = segment.end;
     mode = end->next;
+    ReportSimulated(options, p, t);
     if (static_cast<int>(result.events.size()) >= options.max_events) {
       result.end = SimulationEnd::kMaxEvents;
       result.message = fmt::format("stopped after {} events at t = {} (max_events)",
@@ -208,6 +209,12 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     }
   }
   return result;
+}
+
+void ReportSimulated(const SimulationOptions& options, const Parameters& p, double t) {
+  if (!options.progress) return;
+  const double period = 2.0 * std::numbers::pi / p.omega;
+  options.progress({t / period, options.duration / period, "periods"});
 }
 
 State StateAt(const SimulationResult& result, double t) {

@@ -9,6 +9,7 @@
 
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/parameters.hpp"
+#include "stickslip/progress.hpp"
 
 namespace stickslip {
 
@@ -38,6 +39,10 @@ struct SweepOptions {
   // an error naming the point, rather than recording a motion cut short.
   int max_events_per_simulation = 1000000;
   int threads = 0;  // 0: every hardware thread. The result does not depend on it.
+  // Called after every point with done = the points simulated so far and total = all of them
+  // (unit "points"), from the worker threads but one call at a time, done increasing. Empty: no
+  // reports.
+  ProgressCallback progress = {};
 };
 
 enum class SweepPass { kUp, kDown, kFixed };

@@ -13,7 +13,8 @@
 // tangent), BP (branch point: the sign of det [J; t^T]), UZ (user values), EP (ends), and every
 // test function of the Monitor. A terminal test function ends the branch where it leaves its
 // positive side; one exactly zero at the start (a start on a type boundary) ends it there if the
-// first step makes it negative.
+// first step makes it negative. A closed branch (an isola, a loop) ends where it comes back to its
+// start (BranchEnd::kClosedLoop), with the start repeated as its last point.
 #pragma once
 
 #include <limits>
@@ -27,6 +28,7 @@
 #include "stickslip/continuation/step_size.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/numerics/newton.hpp"
+#include "stickslip/progress.hpp"
 
 namespace stickslip {
 
@@ -50,6 +52,27 @@ struct EventLocationOptions {
   // A fold function (the lambda component of the tangent) whose values on both sides are below
   // this is rounding noise around zero, where the branch runs at constant lambda: no fold.
   double fold_noise = 1e-8;
+};
+
+// A closed branch: once the branch has been away from its start, a step whose chord passes the
+// start again, heading the way the branch left it, closes the loop. The last step is then taken
+// onto the start (special points on the way located as on any step), and the branch ends there
+// (BranchEnd::kClosedLoop) instead of going round again until max_points. Distances are the
+// engine's: the Euclidean norm of the unknowns, as the arclength is measured.
+struct ClosedLoopOptions {
+  bool detect = true;
+  // The start's distance from the step's chord, as a fraction of the step's length, below which
+  // the step passes the start. The chord strays from a branch of curvature k by about k ds^2 / 8,
+  // a fraction k ds / 8 of the step; a branch crossing the start (a branch point there) is told
+  // apart by its direction (`alignment`).
+  double tolerance = 0.1;
+  // The cosine of the angle between the step's chord and the start's tangent, at least.
+  double alignment = 0.9;
+  // Only looked for once a point of the branch lay farther from the start than this many of the
+  // longest step so far (the first steps pass the start: they leave it).
+  double departure = 3.0;
+
+  void Validate() const;  // throws InvalidInput naming the first field out of range
 };
 
 struct ContinuationOptions {
@@ -81,6 +104,11 @@ struct ContinuationOptions {
   // with this set it goes on, and such sign changes are special points like any other.
   bool continue_past_terminal = false;
   EventLocationOptions location;
+  ClosedLoopOptions closed_loop;
+  // Called after every accepted point (the start included) with done = the points so far, total
+  // = max_points (an upper bound: most branches end earlier, at a bound or an event), unit
+  // "points" and value = lambda. Empty: no reports.
+  ProgressCallback progress = {};
 
   // Throws InvalidInput naming the first field out of its valid range (parameter_index is
   // checked against the problem by Continuation).
@@ -95,6 +123,7 @@ enum class BranchEnd {
   kTerminalEvent,
   kStartFailed,
   kFoldAtStart,  // the start is a fold and the branch runs only against the asked direction
+  kClosedLoop,   // the branch came back to its start (ClosedLoopOptions): a closed branch
 };
 const char* ToString(BranchEnd end);
 
@@ -157,8 +186,10 @@ class Continuation {
   bool HeadsTheAskedWay();  // from a start on a fold, where the first step shows the way
   bool LeavesTheStartOnThePositiveSides();  // of the terminal functions that are zero at the start
   bool RecordEvents();       // the special points between the last point and the next, located
+  bool ClosesTheLoop();      // if the step passes the start again, the step onto the start instead
   bool Accept();             // the next point becomes the last; the next step size
   bool End(BranchEnd why, std::string message);  // returns false
+  void Report() const;       // the progress callback, if any, at the last point
 
   std::unique_ptr<State> state_;
   Branch branch_;

@@ -9,6 +9,7 @@
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/parameters.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
+#include "stickslip/progress.hpp"
 
 namespace stickslip {
 
@@ -52,7 +53,13 @@ struct SimulationOptions {
   double sample_step = 0.0;   // > 0: also record the state every sample_step (for CSV output)
   int max_events = 1000000;   // a guard against chattering; reaching it is reported
   ZeroSearchOptions zeros;    // event location accuracy (time tolerance 1e-13)
+  // Called after every event with done = the time simulated and total = duration, both in
+  // forcing periods 2 pi/omega (unit "periods"). Empty: no reports.
+  ProgressCallback progress = {};
 };
+
+// options.progress, if any, at time t of a simulation of p (both simulators report this way).
+void ReportSimulated(const SimulationOptions& options, const Parameters& p, double t);
 
 // How a simulation ended: a numerical outcome, not an error (bad input throws InvalidInput).
 enum class SimulationEnd {

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# stickslip continue: the run file's keys as flags (user values, shooting, linear solver, fold
+# and branch-point detection, both directions in one command), --point restarts, a closed branch
+# reported as such, and bad values refused with exit 2 and nothing written.
+set -euo pipefail
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+src=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+base=(continue --preset paper-5.1 --parameter omega --range 0.3,0.9 --ds 0.005 --ds-max 0.05 --results "$work")
+
+# Both directions: two runs, <output>-down and <output>-up, each as the run file with that
+# direction writes it (the stored paper-5.1-omega-up/-down; check compares them).
+"$bin" "${base[@]}" --direction both --user-value omega=0.58 --output p > "$work/both.txt"
+[ "$(wc -l < "$work/both.txt")" -eq 2 ]
+grep -q "^p-down: " "$work/both.txt" && grep -q "^p-up: " "$work/both.txt"
+for d in down up; do
+  cmp "$work/p-$d/special-points.csv" "$src/results/paper-5.1-omega-$d/special-points.csv"
+  cmp "$work/p-$d/branch.csv" "$src/results/paper-5.1-omega-$d/branch.csv"
+done
+
+# A user value of another unknown (a released u_r) and of the parameter, each located there.
+"$bin" "${base[@]}" --free u_r --fix phi --user-value u_r=0.5 --user-value omega=0.575 --max-points 40 \
+  --output uz > /dev/null
+/usr/bin/python3 - "$work/uz/special-points.csv" <<'PY'
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["type"] == "UZ"]
+assert rows, "no UZ"
+for r in rows:
+    assert abs(float(r["u_r"]) - 0.5) < 1e-9 or abs(float(r["omega"]) - 0.575) < 1e-9, r
+PY
+
+# Fold detection off: the fold at omega = 0.5868 is no special point; the rest is the same.
+"$bin" "${base[@]}" --detect-folds false --detect-branch-points false --output nofold > /dev/null
+! grep -q ",LP," "$work/nofold/special-points.csv"
+grep -q ",LP," "$src/results/paper-5.1-omega-up/special-points.csv"
+grep -q ",TR," "$work/nofold/special-points.csv"
+
+# Multiple shooting with UMFPACK finds the same special points (to the check's tolerance).
+"$bin" "${base[@]}" --shooting multiple --linear-solver umfpack --user-value omega=0.58 --output ms > /dev/null
+/usr/bin/python3 - "$work/ms/special-points.csv" "$src/results/paper-5.1-omega-up/special-points.csv" <<'PY'
+import csv, sys
+a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
+assert [r["type"] for r in a] == [r["type"] for r in b], ([r["type"] for r in a], [r["type"] for r in b])
+for r, s in zip(a, b):
+    assert abs(float(r["omega"]) - float(s["omega"])) < 1e-8 * (1 + abs(float(s["omega"]))), (r["omega"], s["omega"])
+PY
+grep -q '"shooting": "multiple"' "$work/ms/summary.json"
+
+# A restart from a labelled point of a run under --results: the fold of the run above.
+"$bin" continue --point p-up:LP4 --parameter omega --range 0.3,0.9 --direction down --max-points 20 \
+  --results "$work" --output from-lp > "$work/lp.txt"
+grep -q "^from-lp: 20 points" "$work/lp.txt"
+head -2 "$work/from-lp/branch.csv" | tail -1 | cut -d, -f5 | grep -q "^0.58681886"
+
+# A closed branch: section 5.1 past its type changes is a loop; it ends where it began.
+"$bin" "${base[@]}" --continue-past-type-changes --max-points 100000 --output loop > "$work/loop.txt"
+grep -q "closed-loop: the branch came back to its start" "$work/loop.txt"
+/usr/bin/python3 - "$work/loop/branch.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+first, last = rows[0], rows[-1]
+assert len(rows) < 5000, len(rows)
+for k in ("omega", "x10", "x20", "v10", "phi"):
+    assert abs(float(first[k]) - float(last[k])) < 1e-7, (k, first[k], last[k])
+PY
+
+# Round the loop from one of its special points (the SK where the sticking orbit's second
+# reversal becomes a stick): the lap ends on it without finding it again.
+"$bin" continue --point loop:SK8 --parameter omega --range 0.3,0.9 --ds 0.005 --ds-max 0.05 \
+  --continue-past-type-changes --max-points 100000 --results "$work" --output loop-sk > "$work/loop-sk.txt"
+grep -q "closed-loop" "$work/loop-sk.txt"
+/usr/bin/python3 - "$work/loop-sk/special-points.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+start = float(rows[0]["omega"])
+at_start = [r["label"] for r in rows if abs(float(r["omega"]) - start) < 1e-9]
+assert at_start == [rows[0]["label"], rows[-1]["label"]] and rows[-1]["type"] == "EP", at_start
+PY
+
+# Bad values: exit 2, one line naming the option, nothing written.
+expect_rejected() {
+  local field=$1; shift
+  set +e
+  "$bin" "$@" > "$work/out" 2> "$work/err"
+  local code=$?
+  set -e
+  [ "$code" -eq 2 ] || { echo "exit $code for: $*"; cat "$work/err"; exit 1; }
+  [ "$(wc -l < "$work/err")" -eq 1 ] && grep -q "^error: $field" "$work/err" || { echo "for: $*"; cat "$work/err"; exit 1; }
+  [ ! -e "$work/bad" ] && [ ! -e "$work/bad-up" ] && [ ! -e "$work/bad-down" ] || { echo "written: $*"; exit 1; }
+}
+expect_rejected "direction = 'sideways'" "${base[@]}" --direction sideways --output bad
+expect_rejected "detect-folds = 'maybe'" "${base[@]}" --detect-folds maybe --output bad
+expect_rejected "detect-branch-points = 'no'" "${base[@]}" --detect-branch-points no --output bad
+expect_rejected "user-value = 'omega'" "${base[@]}" --user-value omega --output bad
+expect_rejected "user-value = 'abc'" "${base[@]}" --user-value omega=abc --output bad
+expect_rejected "user-value names 'chi'" "${base[@]}" --user-value chi=0.3 --output bad
+expect_rejected "--shooting" "${base[@]}" --shooting double --output bad
+expect_rejected "set" "${base[@]}" --set u_r=0.5 --set u_r=0.6 --output bad
+expect_rejected "guess" "${base[@]}" --guess d1=3 --guess d1=3.1 --output bad
+# Both outputs are checked before either run: a file in the way of -up leaves no -down.
+touch "$work/bad-up"
+set +e
+"$bin" "${base[@]}" --direction both --output bad > /dev/null 2> "$work/err"
+code=$?
+set -e
+[ "$code" -eq 2 ] && grep -q "^error: output" "$work/err" && [ ! -e "$work/bad-down" ] && [ -f "$work/bad-up" ] ||
+  { echo "exit $code"; cat "$work/err"; exit 1; }
+echo "continue flags ok"

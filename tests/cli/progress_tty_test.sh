@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The progress line: drawn on stderr when it is a terminal (a pseudo-terminal made by script(1)),
+# with '\r' and erased at the end; absent when stderr is a file or a pipe. The output files are
+# the same either way.
+set -euo pipefail
+bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+command -v script > /dev/null || { echo "script(1) not found: skipped"; exit 0; }
+
+# Long enough to pass the line's half-second delay on a busy machine.
+sweep="sweep --preset paper-6 --from 0.55 --to 0.57 --steps 30 --transients 300 --periods 5 --chains 2 --threads 1"
+script -qec "'$bin' $sweep --output '$work/tty.csv' > '$work/tty.out'" /dev/null > "$work/terminal"
+grep -q $'\rsweep: [0-9]*/124 points (' "$work/terminal" || { od -c "$work/terminal" | head; exit 1; }
+# Erased at the end: the last thing on the terminal is a blanked line.
+tail -c 2 "$work/terminal" | od -c | grep -q '\\r'
+
+"$bin" $sweep --output "$work/piped.csv" > "$work/piped.out" 2> "$work/stderr"
+[ ! -s "$work/stderr" ] || { echo "progress in a file:"; od -c "$work/stderr" | head; exit 1; }
+"$bin" $sweep --output "$work/pipe.csv" 2>&1 > /dev/null | cat > "$work/pipe"
+[ ! -s "$work/pipe" ]
+cmp "$work/tty.csv" "$work/piped.csv"
+sed "s|$work/tty.csv|X|" "$work/tty.out" | cmp - <(sed "s|$work/piped.csv|X|" "$work/piped.out")
+
+# simulate and continue draw theirs too.
+script -qec "'$bin' simulate --preset paper-5.1 --transients 200000 --periods 1 > /dev/null" /dev/null > "$work/sim"
+grep -q $'\rsimulate: [0-9.e+]*/200001 periods' "$work/sim" || { od -c "$work/sim" | head; exit 1; }
+"$bin" simulate --preset paper-5.1 --transients 200000 --periods 1 2> "$work/sim-stderr" > /dev/null
+[ ! -s "$work/sim-stderr" ]
+echo "progress line ok"
