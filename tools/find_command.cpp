@@ -44,6 +44,9 @@ std::string Number(double x) {
   return text;
 }
 
+// Six significant digits, for a range to edit.
+std::string Rounded(double x) { return Number(std::stod(fmt::format("{:.6g}", x))); }
+
 // The solve command line of a start (StartInputOf): signature, set, guess, free, tie.
 std::string SolveCommandLine(const StartInput& start) {
   std::string line = fmt::format("stickslip solve --signature \"{}\"", start.signature);
@@ -76,7 +79,7 @@ std::string RunFileText(const StartInput& start, const std::filesystem::path& pa
   text += fmt::format("]\ntie_u_r = {}\n", start.tie_u_r);
   text += fmt::format("[continuation]                         # edit: the parameter, direction and range\n"
                       "parameter = \"omega\"\ndirection = \"up\"\nrange = [{}, {}]\n",
-                      Number(std::max(kMinOmega, 0.9 * omega)), Number(std::min(kMaxOmega, 1.1 * omega)));
+                      Rounded(std::max(kMinOmega, 0.9 * omega)), Rounded(std::min(kMaxOmega, 1.1 * omega)));
   return text;
 }
 

@@ -5,6 +5,7 @@
 // permanent stick has no orbit type.
 #include "stickslip/analysis/orbit_finder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -75,7 +76,12 @@ TEST_P(FindsStablePaperOrbit, EqualToTheSolvedPresetAndVerified) {
 
 INSTANTIATE_TEST_SUITE_P(Paper, FindsStablePaperOrbit,
                          ::testing::Values(StableCase{"paper-4.1", false}, StableCase{"paper-4.2", false},
-                                           StableCase{"paper-5.2", true}));
+                                           StableCase{"paper-5.2", true}),
+                         [](const ::testing::TestParamInfo<StableCase>& info) {
+                           std::string name = info.param.preset;
+                           std::replace_if(name.begin(), name.end(), [](char c) { return c == '-' || c == '.'; }, '_');
+                           return name;
+                         });
 
 // Section 5.1 is unstable (|mu| = 1.061): a simulation started 1e-6 off leaves it, slowly (more
 // than 1000 forcing periods), and settles on one of the coexisting period-1 motions with two
