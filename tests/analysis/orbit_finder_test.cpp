@@ -83,6 +83,21 @@ INSTANTIATE_TEST_SUITE_P(Paper, FindsStablePaperOrbit,
                            return name;
                          });
 
+// Section 4.1 lies 2.9e-4 from the force level at which its stops turn into sticks: started 1e-3
+// off, the motion crosses over and settles on an antisymmetric orbit of period 3 forcing periods
+// with sticks, which find reads as such (the listed half, k odd) and verifies.
+TEST(FindOrbit, FindsAnAntisymmetricOrbitOfPeriodThreeNextToSection41) {
+  const FindOrbitResult found = FindNear(SolvedPreset("paper-4.1"), 1e-3);
+  ASSERT_EQ(found.status, FindOrbitStatus::kFound) << found.message;
+  EXPECT_EQ(found.period_multiple, 3);
+  EXPECT_TRUE(found.antisymmetric);
+  const Signature& signature = found.solution->orbit.signature;
+  EXPECT_TRUE(signature.antisymmetric());
+  EXPECT_EQ(signature.period_multiple(), 3);
+  EXPECT_NEAR(found.solution->orbit.Period(), 3 * 2 * std::numbers::pi / 0.6, 1e-9);
+  ExpectVerifiedByBothSimulators(found);
+}
+
 // Section 5.1 is unstable (|mu| = 1.061): a simulation started 1e-6 off leaves it, slowly (more
 // than 1000 forcing periods), and settles on one of the coexisting period-1 motions with two
 // stops and a stick (README: the sweeps from the paper's state follow them), which find solves
