@@ -45,6 +45,8 @@ void FindOrbitOptions::Validate() const {
 
 namespace {
 
+constexpr int kTransientPiece = 1000;  // forcing periods per transient simulation
+
 // |a - b|_inf relative to 1 + |b|_inf, as the tolerance is stated; infinite for non-finite states.
 double RelativeDistance(const State& a, const State& b) {
   const double d = (a - b).lpNorm<Eigen::Infinity>() / (1.0 + b.lpNorm<Eigen::Infinity>());
@@ -198,12 +200,16 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
   std::vector<State> section;
   int next = options.transient_periods;
   for (int round = 0;; ++round) {
-    if (next > 0) {
-      sim.duration = next * period;
+    // In pieces of at most kTransientPiece periods, so that neither the events of one
+    // simulation (max_events) nor its memory grow with the transient.
+    for (int done = 0; done < next;) {
+      const int piece = std::min(kTransientPiece, next - done);
+      sim.duration = piece * period;
       const SimulationResult transient = SimulateExact(parameters, settled, phi, sim);
       if (!transient.Completed()) return incomplete(transient, "transient");
       settled = transient.segments.back().end;
-      result.transient_periods += next;
+      done += piece;
+      result.transient_periods += piece;
     }
     sim.duration = record_periods * period;
     record = SimulateExact(parameters, settled, phi, sim);
