@@ -84,9 +84,10 @@ struct PeriodEvents {
 PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double period_time, double period,
                         bool antisymmetric, int max_segments) {
   constexpr double kEndSlack = 1e-3;  // forcing periods
+  constexpr const char* kNoEvent = "no stop or stick exit in a period (a permanent stick has no orbit type)";
   PeriodEvents found;
   if (events.empty()) {
-    found.problem = "no stop or stick exit in a period (a permanent stick has no orbit type)";
+    found.problem = kNoEvent;
     return found;
   }
   // Every kind of event of the period occurs once in the period from the first event on (the
@@ -100,7 +101,7 @@ PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double
     }
   }
   if (found.origin < 0 || events.front().t >= period_time) {
-    found.problem = "no stop or stick exit in a period (a permanent stick has no orbit type)";
+    found.problem = kNoEvent;
     found.origin = -1;
     return found;
   }
