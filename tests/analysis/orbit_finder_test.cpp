@@ -173,6 +173,27 @@ TEST(FindOrbit, APermanentStickHasNoOrbitType) {
   EXPECT_NE(found.message.find("permanent stick"), std::string::npos) << found.message;
 }
 
+// The numerical outcomes are statuses: a simulation cut short by its event guard, and a Newton
+// allowed no step from the read-off start (off the orbit by the section tolerance, above the
+// residual tolerance), which still carries that start for the user.
+TEST(FindOrbit, ReportsASimulationCutShortAndANewtonThatDidNotConverge) {
+  FindOrbitOptions few_events;
+  few_events.max_events = 10;
+  const FindOrbitResult cut = FindOrbit(NewUsersData(), State(1.0, 0.0, 0.0, 0.0), 0.0, few_events);
+  EXPECT_EQ(cut.status, FindOrbitStatus::kSimulationIncomplete) << cut.message;
+  EXPECT_NE(cut.message.find("max_events"), std::string::npos) << cut.message;
+
+  FindOrbitOptions no_newton;
+  no_newton.transient_periods = 20;
+  no_newton.settle_rounds = 10;
+  no_newton.solver.newton.max_iterations = 0;
+  const FindOrbitResult unsolved = FindOrbit(NewUsersData(), State(1.0, 0.0, 0.0, 0.0), 0.0, no_newton);
+  EXPECT_EQ(unsolved.status, FindOrbitStatus::kSolveFailed) << unsolved.message;
+  ASSERT_TRUE(unsolved.start.has_value());
+  EXPECT_EQ(Signature::Parse(unsolved.start->signature).period_multiple(), 4);
+  EXPECT_FALSE(unsolved.verification.has_value());
+}
+
 TEST(FindOrbit, StartInputOfGivesTheOrbitBackThroughTheBuilder) {
   const Orbit solved = SolvedPreset("paper-4.2");
   const StartProblem problem = BuildStartProblem(StartInputOf(solved));
