@@ -79,6 +79,7 @@ struct PeriodEvents {
   int origin = -1;
   int segments = 0;
   std::string problem;
+  bool unsettled = false;  // the origin's event comes back, but off the period: not settled yet
 };
 
 PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double period_time, double period,
@@ -119,6 +120,7 @@ PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double
     found.problem = found.segments == 0 || found.segments > max_segments
                         ? fmt::format("the origin's event does not come back within {} segments", max_segments)
                         : fmt::format("the origin's event comes back {:.3g} off the period", best);
+    found.unsettled = found.segments > 0 && found.segments <= max_segments;
     found.segments = 0;
   } else if (found.segments > max_segments) {
     found.problem = fmt::format("{} segments in a period, more than max_segments = {}", found.segments, max_segments);
@@ -127,27 +129,44 @@ PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double
   return found;
 }
 
-// The smallest k whose section repeats over `confirmations` periods of k T, with its mismatch;
-// or none, with the smallest mismatch seen and its k.
-void SectionRepeat(const std::vector<State>& section, const FindOrbitOptions& options, FindOrbitResult* result) {
-  result->period_multiple = 0;
-  result->closest_multiple = 0;
-  result->mismatch = std::numeric_limits<double>::infinity();
+// For the k of result->period_multiple: antisymmetry X(t + k T/2) = -X(t), on the section and
+// half a period later (odd k only: the forcing must change sign), into *result; then one
+// period's events from the origin on (the whole period when the events do not bear out the
+// antisymmetry the section showed).
+PeriodEvents ReadOnePeriod(const SimulationResult& record, const std::vector<State>& section, double period,
+                           const FindOrbitOptions& options, FindOrbitResult* result) {
+  const int k = result->period_multiple;
+  result->antisymmetry_mismatch = std::numeric_limits<double>::quiet_NaN();
+  result->antisymmetric = false;
+  if (k % 2 == 1) {
+    double mismatch = 0.0;
+    for (int n = 0; n < options.confirmations * k; ++n) {
+      const State half = StateAt(record, n * period + 0.5 * k * period);
+      mismatch = std::max(mismatch, RelativeDistance(-half, section[n]));
+    }
+    result->antisymmetry_mismatch = mismatch;
+    result->antisymmetric = mismatch <= options.periodicity_tolerance;
+  }
+  if (result->antisymmetric) {
+    const PeriodEvents half = ReadPeriod(record.events, 0.5 * k * period, k * period, period, true, options.max_segments);
+    if (half.segments > 0) return half;
+    result->antisymmetric = false;
+  }
+  return ReadPeriod(record.events, k * period, k * period, period, false, options.max_segments);
+}
+
+// The section mismatch of every k = 1..max_multiple (index k - 1): the largest relative distance
+// between section points k periods apart, over `confirmations` periods of k T.
+std::vector<double> SectionMismatches(const std::vector<State>& section, const FindOrbitOptions& options) {
+  std::vector<double> mismatches;
   for (int k = 1; k <= options.max_multiple; ++k) {
     double mismatch = 0.0;
     for (int n = 0; n < options.confirmations * k; ++n) {
       mismatch = std::max(mismatch, RelativeDistance(section[n + k], section[n]));
     }
-    if (mismatch <= options.periodicity_tolerance) {
-      result->period_multiple = k;
-      result->mismatch = mismatch;
-      return;
-    }
-    if (mismatch < result->mismatch) {
-      result->mismatch = mismatch;
-      result->closest_multiple = k;
-    }
+    mismatches.push_back(mismatch);
   }
+  return mismatches;
 }
 
 }  // namespace
@@ -190,15 +209,17 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
 
   // The transient, then the record: the section over (confirmations + 1) max_multiple periods,
   // and the events of one period from an origin that may lie up to 2 k T in, with one period to
-  // spare. Each simulation restarts the
-  // clock at a section time, where the forcing phase is phi again. While the section does not
-  // repeat, the transient goes on, twice as long each round.
+  // spare. Each simulation restarts the clock at a section time, where the forcing phase is phi
+  // again. While the section does not repeat, or its events do not repeat with it, the transient
+  // goes on, twice as long each round.
   const int k_max = options.max_multiple;
   const int recorded = (options.confirmations + 1) * k_max;
   const int record_periods = std::max(recorded, 3 * k_max) + 1;
   State settled = x0;
   SimulationResult record;
   std::vector<State> section;
+  PeriodEvents period_events;
+  std::string unsettled;  // why the last round's section repeat was not taken
   int next = options.transient_periods;
   for (int round = 0;; ++round) {
     // In pieces of at most kTransientPiece periods, so that neither the events of one
@@ -217,9 +238,30 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
     if (!record.Completed()) return incomplete(record, "recorded");
     section.clear();
     for (int n = 0; n <= recorded; ++n) section.push_back(StateAt(record, n * period));
-    SectionRepeat(section, options, &result);
-    if (result.period_multiple > 0 || round == options.settle_rounds || next == 0 ||
-        result.transient_periods + 2 * next > FindOrbitOptions::kMaxTransient) {
+    // The smallest k whose section repeats and whose events repeat with it (a section that
+    // repeats to a loose tolerance after fewer periods than the motion does has events that do
+    // not); else the smallest mismatch seen.
+    const std::vector<double> mismatches = SectionMismatches(section, options);
+    result.period_multiple = 0;
+    result.mismatch = std::numeric_limits<double>::infinity();
+    unsettled.clear();
+    for (int k = 1; k <= k_max && result.period_multiple == 0; ++k) {
+      if (mismatches[k - 1] < result.mismatch) {
+        result.mismatch = mismatches[k - 1];
+        result.closest_multiple = k;
+      }
+      if (mismatches[k - 1] > options.periodicity_tolerance) continue;
+      result.period_multiple = k;
+      result.mismatch = mismatches[k - 1];
+      period_events = ReadOnePeriod(record, section, period, options, &result);
+      if (period_events.unsettled) {
+        unsettled = fmt::format("the section repeats after k = {} forcing periods to {:.3g}, but {}", k,
+                                mismatches[k - 1], period_events.problem);
+        result.period_multiple = 0;
+      }
+    }
+    if (result.period_multiple > 0) break;
+    if (round == options.settle_rounds || next == 0 || result.transient_periods + 2 * next > FindOrbitOptions::kMaxTransient) {
       break;
     }
     next *= 2;
@@ -227,41 +269,22 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
   const int k = result.period_multiple;
   if (k == 0) {
     result.status = FindOrbitStatus::kNotPeriodic;
-    result.message = fmt::format(
-        "the motion is not periodic with k <= {} forcing periods after {} transient periods: the smallest "
-        "section mismatch is {:.3g} (k = {}), above the tolerance {:g}",
-        k_max, result.transient_periods, result.mismatch, result.closest_multiple, options.periodicity_tolerance);
+    result.message =
+        unsettled.empty()
+            ? fmt::format("the motion is not periodic with k <= {} forcing periods after {} transient periods: the "
+                          "smallest section mismatch is {:.3g} (k = {}), above the tolerance {:g}",
+                          k_max, result.transient_periods, result.mismatch, result.closest_multiple,
+                          options.periodicity_tolerance)
+            : fmt::format("the motion has not settled after {} transient periods: {}", result.transient_periods,
+                          unsettled);
     return result;
-  }
-
-  // Antisymmetry X(t + k T/2) = -X(t), on the section and half a period later (odd k only: the
-  // forcing must change sign).
-  result.antisymmetry_mismatch = std::numeric_limits<double>::quiet_NaN();
-  if (k % 2 == 1) {
-    double mismatch = 0.0;
-    for (int n = 0; n < options.confirmations * k; ++n) {
-      const State half = StateAt(record, n * period + 0.5 * k * period);
-      mismatch = std::max(mismatch, RelativeDistance(-half, section[n]));
-    }
-    result.antisymmetry_mismatch = mismatch;
-    result.antisymmetric = mismatch <= options.periodicity_tolerance;
-  }
-
-  // One period's events, from the origin on.
-  PeriodEvents period_events;
-  bool antisymmetric = result.antisymmetric;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    period_events = ReadPeriod(record.events, (antisymmetric ? 0.5 : 1.0) * k * period, k * period, period,
-                               antisymmetric, options.max_segments);
-    if (period_events.segments > 0 || !antisymmetric) break;
-    antisymmetric = false;  // the section said antisymmetric, the events do not: the whole period
   }
   if (period_events.segments == 0) {
     result.status = FindOrbitStatus::kNoOrbitType;
     result.message = fmt::format("the motion repeats after k = {} forcing periods, but {}", k, period_events.problem);
     return result;
   }
-  result.antisymmetric = antisymmetric;
+  const bool antisymmetric = result.antisymmetric;
   const int first = period_events.origin;
   const int m = period_events.segments;
   std::vector<Mode> modes;
