@@ -77,8 +77,8 @@ TEST_P(FindsStablePaperOrbit, EqualToTheSolvedPresetAndVerified) {
 INSTANTIATE_TEST_SUITE_P(Paper, FindsStablePaperOrbit,
                          ::testing::Values(StableCase{"paper-4.1", false}, StableCase{"paper-4.2", false},
                                            StableCase{"paper-5.2", true}),
-                         [](const ::testing::TestParamInfo<StableCase>& info) {
-                           std::string name = info.param.preset;
+                         [](const ::testing::TestParamInfo<StableCase>& case_info) {
+                           std::string name = case_info.param.preset;
                            std::replace_if(name.begin(), name.end(), [](char c) { return c == '-' || c == '.'; }, '_');
                            return name;
                          });
