@@ -216,7 +216,9 @@ TEST(FindOrbit, StartInputOfGivesTheOrbitBackThroughTheBuilder) {
 
 TEST(FindOrbit, RefusesOptionsOutOfRangeNamingTheMember) {
   const Parameters p = NewUsersData();
-  auto field_of = [&](FindOrbitOptions options) {
+  auto field_of = [&](void (*change)(FindOrbitOptions&)) {
+    FindOrbitOptions options;
+    change(options);
     try {
       FindOrbit(p, State::Zero(), 0.0, options);
     } catch (const InvalidInput& e) {
@@ -224,12 +226,14 @@ TEST(FindOrbit, RefusesOptionsOutOfRangeNamingTheMember) {
     }
     return std::string("nothing thrown");
   };
-  EXPECT_EQ(field_of({.transient_periods = -1}), "transient_periods");
-  EXPECT_EQ(field_of({.max_multiple = 0}), "max_multiple");
-  EXPECT_EQ(field_of({.max_multiple = 1000}), "max_multiple");
-  EXPECT_EQ(field_of({.periodicity_tolerance = std::nan("")}), "periodicity_tolerance");
-  EXPECT_EQ(field_of({.periodicity_tolerance = 0.0}), "periodicity_tolerance");
-  EXPECT_EQ(field_of({.confirmations = 0}), "confirmations");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.transient_periods = -1; }), "transient_periods");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.settle_rounds = 11; }), "settle_rounds");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.max_multiple = 0; }), "max_multiple");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.max_multiple = 1000; }), "max_multiple");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.periodicity_tolerance = std::nan(""); }), "periodicity_tolerance");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.periodicity_tolerance = 0.0; }), "periodicity_tolerance");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.confirmations = 0; }), "confirmations");
+  EXPECT_EQ(field_of([](FindOrbitOptions& o) { o.max_segments = 0; }), "max_segments");
   EXPECT_THROW(FindOrbit(p, State(1e300, 0.0, 0.0, 0.0), 0.0), InvalidInput);
   EXPECT_THROW(FindOrbit(p, State::Zero(), 1e300), InvalidInput);
   Parameters bad = p;

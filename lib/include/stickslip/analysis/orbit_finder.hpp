@@ -1,7 +1,8 @@
 // From a simulated motion to its exact periodic orbit: simulate out a transient with the exact
 // simulator, detect the period on the stroboscopic section (the state at t = n 2 pi/omega, where
-// the forcing phase is the start's phi), read the orbit type, the durations, the phase and the
-// state off the simulated events of one period, solve the periodicity equations from there
+// the forcing phase is the start's phi): the smallest k whose section repeats and whose events
+// repeat with it (the origin's event comes back after k T, to 1e-3 T); read the orbit type, the
+// durations, the phase and the state off the simulated events of one period, solve the periodicity equations from there
 // (orbits/start_problem.hpp, orbits/orbit_solver.hpp) and verify the solution by both
 // simulators (orbits/verification.hpp).
 //
@@ -61,7 +62,8 @@ struct FindOrbitOptions {
 
 enum class FindOrbitStatus {
   kFound,                 // solved, every margin > 0, and verified by both simulators
-  kNotPeriodic,           // no k <= max_multiple repeats on the section
+  kNotPeriodic,           // no k <= max_multiple repeats on the section (or none whose events
+                          // repeat with it: the motion has not settled)
   kSimulationIncomplete,  // the simulator stopped early (max_events, or the event search's bound)
   kNoOrbitType,           // periodic, but its events give no orbit type (none in a period, or
                           // too many segments, or events that do not repeat with the section)
@@ -86,7 +88,7 @@ struct FindOrbitResult {
   // What was read off one simulated period, as the one start builder takes it: the signature,
   // the parameters (set), the origin's state x10 x20 v10, its phase phi in [0, 2 pi) and the
   // durations d1..dn (guess); with abnormal stops u_s is released and u_r tied to it. Filled
-  // from kNotAMotion/kSolveFailed/kFound.
+  // for kSolveFailed, kNotAMotion and kFound (and kNoOrbitType when the builder refuses it).
   std::optional<StartInput> start;
   std::optional<StartProblem> problem;  // built from `start`: the orbit guess and its unknowns
   double origin_time = 0.0;  // time of the origin after the transient, 0 < t < 2 k T
