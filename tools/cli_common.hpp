@@ -20,6 +20,9 @@ inline constexpr int kExitNoConvergence = 3;
 // solve: the orbit was solved but is no motion of the system (a margin <= 0) or failed its
 // verification by simulation; the output is printed all the same.
 inline constexpr int kExitNotAMotion = 4;
+// find: the motion is not periodic within k <= --max-multiple forcing periods, or its period has
+// no stop or stick exit (a permanent stick), so there is no orbit type to solve.
+inline constexpr int kExitNotPeriodic = 5;
 
 // solve's exit code for a converged orbit with this smallest margin and verification:
 // kExitNotAMotion, with the reason in *reason, if the margin is not positive or the verification

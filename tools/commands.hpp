@@ -22,5 +22,6 @@ Command AddContinueCommand(CLI::App& app);
 Command AddCheckCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddExportCommand(CLI::App& app);
+Command AddFindCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

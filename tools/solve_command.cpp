@@ -11,6 +11,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "orbit_report.hpp"
 #include "start_options.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
@@ -21,8 +22,6 @@
 namespace stickslip::cli {
 
 namespace {
-
-namespace ov = orbit_variables;
 
 struct SolveArgs {
   StartFlags start;
@@ -92,14 +91,6 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
   return out;
 }
 
-// SolvedOrbitExitCode, with the reason on stderr, so that scripts need not parse the output.
-int Outcome(const Margin& smallest, const Verification& verification) {
-  std::string reason;
-  const int code = SolvedOrbitExitCode(smallest, verification, &reason);
-  if (code != kExitOk) fmt::print(stderr, "error: {}\n", reason);
-  return code;
-}
-
 int RunSolve(const SolveArgs& args) {
   if (args.compare_paper && args.start.preset.empty()) {
     throw InvalidInput::WithMessage("compare-paper", "compare-paper needs --preset");
@@ -108,7 +99,6 @@ int RunSolve(const SolveArgs& args) {
   input.paper_choice = args.paper_choice;
   const StartProblem start = BuildStartProblem(input);
   const PaperPreset* preset = FindPaperPreset(args.start.preset);
-  const int n = start.orbit.signature.size();
 
   OrbitSolverOptions options;
   options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
@@ -120,43 +110,18 @@ int RunSolve(const SolveArgs& args) {
     return kExitNoConvergence;
   }
   const std::vector<Margin> margins = AdmissibilityMargins(orbit);
-  const Margin smallest = SmallestMargin(margins);
   const Verification verification = VerifyOrbit(orbit);
   if (args.json) {
     fmt::print("{}", Json(orbit, solution, margins, verification));
-    return Outcome(smallest, verification);
+    return SolvedOrbitOutcome(margins, verification);
   }
   if (args.compare_paper) {
     fmt::print("{}", PaperComparison(*preset, orbit, args.paper_choice ? std::string(preset->paper_choice_note) : "paper's data held"));
-    return Outcome(smallest, verification);
+    return SolvedOrbitOutcome(margins, verification);
   }
-  fmt::print("signature  {}\nparameters {}\n", orbit.signature.ToString(), DescribeParameters(orbit.parameters));
-  std::string unknowns;
-  for (int index : start.free) unknowns += (unknowns.empty() ? "" : " ") + ov::Name(n, index);
-  fmt::print("unknowns   {}{}\n", unknowns, start.unknowns.tie_static_friction ? " (u_r = u_s)" : "");
-  fmt::print("newton     {} ({} shooting, {})\n", solution.summary.BriefReport(), ToString(solution.shooting),
-             solution.shooting == Shooting::kMultiple ? args.linear_solver : "dense");
-  fmt::print("solution   x10={} x20={} v10={} phi={}\n", orbit.x10, orbit.x20, orbit.v10, orbit.phi);
-  for (int i = 0; i < n; ++i) {
-    fmt::print("  d{} = {:<22} {}\n", i + 1, orbit.durations[i], ToString(orbit.signature.segments()[i]));
-  }
-  fmt::print("margins (positive = admissible; the smallest is the distance to a change of type)\n");
-  for (const Margin& m : margins) {
-    fmt::print("  {:<16} {:>14.6g}  at t = {:.6g}\n", m.Name(), m.value, m.t);
-  }
-  fmt::print("smallest   {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
-             std::isnan(smallest.value) ? "not defined (its root search was cut short)"
-             : smallest.value > 0       ? "admissible"
-                                        : "NOT a motion of the system");
-  const Stability stability = StabilityOf(orbit);
-  fmt::print("floquet multipliers (monodromy with saltation matrices){}:\n",
-             stability.one_sided ? ", one-sided at the abnormal stops" : "");
-  for (const std::complex<double>& mu : stability.multipliers) {
-    fmt::print("  {:>+14.8f} {:+.8f}i  |mu| = {:.8f}\n", mu.real(), mu.imag(), std::abs(mu));
-  }
-  fmt::print("stability  {}\n", stability.stable ? "stable" : "unstable");
-  fmt::print("verification {}\n{}", verification.Passed() ? "passed" : "FAILED", verification.Report());
-  return Outcome(smallest, verification);
+  fmt::print("{}", OrbitReport(solution, start.free, start.unknowns.tie_static_friction, args.linear_solver, margins,
+                               verification));
+  return SolvedOrbitOutcome(margins, verification);
 }
 
 }  // namespace

@@ -15,13 +15,14 @@ int main(int argc, char** argv) {
   CLI::App app(
       "stickslip: periodic orbits of the two-degree-of-freedom dry-friction oscillator of "
       "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276.\n"
-      "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence, 4 solve: the "
-      "solution is not a motion of the system (a margin <= 0) or failed its verification.",
+      "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence, 4 solve, find: the "
+      "solution is not a motion of the system (a margin <= 0) or failed its verification, 5 find: the motion "
+      "is not periodic within k <= --max-multiple forcing periods (or has no stop or stick exit).",
       "stickslip");
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app),
-                                         AddExportCommand(app)};
+                                         AddExportCommand(app), AddFindCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep, export", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep, export, find", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

@@ -1,0 +1,346 @@
+#include "stickslip/analysis/orbit_finder.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/signature.hpp"
+
+namespace stickslip {
+
+const char* ToString(FindOrbitStatus status) {
+  switch (status) {
+    case FindOrbitStatus::kFound: return "found";
+    case FindOrbitStatus::kNotPeriodic: return "not-periodic";
+    case FindOrbitStatus::kSimulationIncomplete: return "simulation-incomplete";
+    case FindOrbitStatus::kNoOrbitType: return "no-orbit-type";
+    case FindOrbitStatus::kSolveFailed: return "solve-failed";
+    case FindOrbitStatus::kNotAMotion: break;
+  }
+  return "not-a-motion";
+}
+
+void FindOrbitOptions::Validate() const {
+  auto check_int = [](const char* field, int value, int lo, int hi) {
+    if (value < lo || value > hi) {
+      throw InvalidInput(field, std::to_string(value), fmt::format("{} <= {} <= {}", lo, field, hi));
+    }
+  };
+  check_int("transient_periods", transient_periods, 0, kMaxTransient);
+  check_int("settle_rounds", settle_rounds, 0, 10);
+  check_int("max_multiple", max_multiple, 1, kMaxMultiple);
+  check_int("confirmations", confirmations, 1, 100);
+  check_int("max_segments", max_segments, 1, 1000);
+  check_int("max_events", max_events, 1, 100000000);
+  if (!(periodicity_tolerance >= 1e-12 && periodicity_tolerance <= 1e-2)) {
+    throw InvalidInput("periodicity_tolerance", periodicity_tolerance, "1e-12 <= periodicity_tolerance <= 0.01");
+  }
+}
+
+namespace {
+
+constexpr int kTransientPiece = 1000;  // forcing periods per transient simulation
+
+// |a - b|_inf relative to 1 + |b|_inf, as the tolerance is stated; infinite for non-finite states.
+double RelativeDistance(const State& a, const State& b) {
+  const double d = (a - b).lpNorm<Eigen::Infinity>() / (1.0 + b.lpNorm<Eigen::Infinity>());
+  return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+}
+
+// The preference of an event as the orbit's origin: lower is better (see the header).
+int OriginRank(const Event& e) {
+  if (e.mode_after != Mode::kSlipNegative) return 3;
+  if (e.kind == EventKind::kStop && e.mode_before == Mode::kSlipPositive) return 0;
+  if (e.kind == EventKind::kStickExit) return 1;
+  return 2;
+}
+
+bool SameEvent(const Event& a, const Event& b, bool mirrored) {
+  auto m = [&](Mode mode) { return mirrored ? Mirror(mode) : mode; };
+  return a.kind == b.kind && m(a.mode_before) == b.mode_before && m(a.mode_after) == b.mode_after;
+}
+
+double ReducedPhase(double phase) {
+  double reduced = std::fmod(phase, 2.0 * std::numbers::pi);
+  if (reduced < 0.0) reduced += 2.0 * std::numbers::pi;
+  return reduced;
+}
+
+// One period's events: the origin's index and the number of listed segments, or why there is
+// none. The period's end is the event like the origin (its mirror image when antisymmetric)
+// nearest to origin + covered time; it must fall within kEndSlack periods of it.
+struct PeriodEvents {
+  int origin = -1;
+  int segments = 0;
+  std::string problem;
+  bool unsettled = false;  // the origin's event comes back, but off the period: not settled yet
+};
+
+PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double period_time, double period,
+                        bool antisymmetric, int max_segments) {
+  constexpr double kEndSlack = 1e-3;  // forcing periods
+  constexpr const char* kNoEvent = "no stop or stick exit in a period (a permanent stick has no orbit type)";
+  PeriodEvents found;
+  if (events.empty()) {
+    found.problem = kNoEvent;
+    return found;
+  }
+  // Every kind of event of the period occurs once in the period from the first event on (the
+  // record's start is no event, even where it lies on one).
+  const double window_end = events.front().t + period_time - kEndSlack * period;
+  int best_rank = 4;
+  for (int i = 0; i < static_cast<int>(events.size()) && events[i].t < window_end; ++i) {
+    if (OriginRank(events[i]) < best_rank) {
+      best_rank = OriginRank(events[i]);
+      found.origin = i;
+    }
+  }
+  if (found.origin < 0 || events.front().t >= period_time) {
+    found.problem = kNoEvent;
+    found.origin = -1;
+    return found;
+  }
+  const Event& origin = events[found.origin];
+  const double end_time = origin.t + covered;
+  double best = std::numeric_limits<double>::infinity();
+  for (int j = found.origin + 1; j < static_cast<int>(events.size()) && j - found.origin <= max_segments + 1; ++j) {
+    const double distance = std::abs(events[j].t - end_time);
+    if (SameEvent(origin, events[j], antisymmetric) && distance < best) {
+      best = distance;
+      found.segments = j - found.origin;
+    }
+  }
+  if (!(best <= kEndSlack * period)) {
+    found.problem = found.segments == 0 || found.segments > max_segments
+                        ? fmt::format("the origin's event does not come back within {} segments", max_segments)
+                        : fmt::format("the origin's event comes back {:.3g} off the period", best);
+    found.unsettled = found.segments > 0 && found.segments <= max_segments;
+    found.segments = 0;
+  } else if (found.segments > max_segments) {
+    found.problem = fmt::format("{} segments in a period, more than max_segments = {}", found.segments, max_segments);
+    found.segments = 0;
+  }
+  return found;
+}
+
+// For the k of result->period_multiple: antisymmetry X(t + k T/2) = -X(t), on the section and
+// half a period later (odd k only: the forcing must change sign), into *result; then one
+// period's events from the origin on (the whole period when the events do not bear out the
+// antisymmetry the section showed).
+PeriodEvents ReadOnePeriod(const SimulationResult& record, const std::vector<State>& section, double period,
+                           const FindOrbitOptions& options, FindOrbitResult* result) {
+  const int k = result->period_multiple;
+  result->antisymmetry_mismatch = std::numeric_limits<double>::quiet_NaN();
+  result->antisymmetric = false;
+  if (k % 2 == 1) {
+    double mismatch = 0.0;
+    for (int n = 0; n < options.confirmations * k; ++n) {
+      const State half = StateAt(record, n * period + 0.5 * k * period);
+      mismatch = std::max(mismatch, RelativeDistance(-half, section[n]));
+    }
+    result->antisymmetry_mismatch = mismatch;
+    result->antisymmetric = mismatch <= options.periodicity_tolerance;
+  }
+  if (result->antisymmetric) {
+    const PeriodEvents half = ReadPeriod(record.events, 0.5 * k * period, k * period, period, true, options.max_segments);
+    if (half.segments > 0) return half;
+    result->antisymmetric = false;
+  }
+  return ReadPeriod(record.events, k * period, k * period, period, false, options.max_segments);
+}
+
+// The section mismatch of every k = 1..max_multiple (index k - 1): the largest relative distance
+// between section points k periods apart, over `confirmations` periods of k T.
+std::vector<double> SectionMismatches(const std::vector<State>& section, const FindOrbitOptions& options) {
+  std::vector<double> mismatches;
+  for (int k = 1; k <= options.max_multiple; ++k) {
+    double mismatch = 0.0;
+    for (int n = 0; n < options.confirmations * k; ++n) {
+      mismatch = std::max(mismatch, RelativeDistance(section[n + k], section[n]));
+    }
+    mismatches.push_back(mismatch);
+  }
+  return mismatches;
+}
+
+}  // namespace
+
+StartInput StartInputOf(const Orbit& orbit) {
+  StartInput start;
+  start.signature = orbit.signature.ToString();
+  for (ParameterId id : kAllParameters) start.set.emplace_back(ToString(id), orbit.parameters[id]);
+  start.guess = {{"x10", orbit.x10}, {"x20", orbit.x20}, {"v10", orbit.v10}, {"phi", orbit.phi}};
+  for (std::size_t i = 0; i < orbit.durations.size(); ++i) {
+    start.guess.emplace_back(fmt::format("d{}", i + 1), orbit.durations[i]);
+  }
+  for (int i = 0; i < orbit.signature.size(); ++i) {
+    if (orbit.signature.EndKind(i) == SegmentEndKind::kAbnormalStop) {
+      start.free = {"u_s"};
+      start.tie_u_r = true;
+    }
+  }
+  return start;
+}
+
+FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double phi, const FindOrbitOptions& options) {
+  options.Validate();
+  if (auto invalid = Validate(parameters)) throw *invalid;
+  constexpr std::array<const char*, 4> kStateNames = {"x10", "x20", "v10", "v20"};
+  for (int i = 0; i < 4; ++i) {
+    if (auto invalid = ValidateStateValue(kStateNames[i], x0(i))) throw *invalid;
+  }
+  if (auto invalid = ValidateStateValue("phi", phi)) throw *invalid;
+
+  FindOrbitResult result;
+  const double period = 2.0 * std::numbers::pi / parameters.omega;
+  SimulationOptions sim;
+  sim.max_events = options.max_events;
+  auto incomplete = [&](const SimulationResult& r, const char* which) {
+    result.status = FindOrbitStatus::kSimulationIncomplete;
+    result.message = fmt::format("the {} simulation stopped early: {}", which, r.message);
+    return result;
+  };
+
+  // The transient, then the record: the section over (confirmations + 1) max_multiple periods,
+  // and the events of one period from an origin that may lie up to 2 k T in, with one period to
+  // spare. Each simulation restarts the clock at a section time, where the forcing phase is phi
+  // again. While the section does not repeat, or its events do not repeat with it, the transient
+  // goes on, twice as long each round.
+  const int k_max = options.max_multiple;
+  const int recorded = (options.confirmations + 1) * k_max;
+  const int record_periods = std::max(recorded, 3 * k_max) + 1;
+  State settled = x0;
+  SimulationResult record;
+  std::vector<State> section;
+  PeriodEvents period_events;
+  std::string unsettled;  // why the last round's section repeat was not taken
+  int next = options.transient_periods;
+  for (int round = 0;; ++round) {
+    // In pieces of at most kTransientPiece periods, so that neither the events of one
+    // simulation (max_events) nor its memory grow with the transient.
+    for (int done = 0; done < next;) {
+      const int piece = std::min(kTransientPiece, next - done);
+      sim.duration = piece * period;
+      const SimulationResult transient = SimulateExact(parameters, settled, phi, sim);
+      if (!transient.Completed()) return incomplete(transient, "transient");
+      settled = transient.segments.back().end;
+      done += piece;
+      result.transient_periods += piece;
+    }
+    sim.duration = record_periods * period;
+    record = SimulateExact(parameters, settled, phi, sim);
+    if (!record.Completed()) return incomplete(record, "recorded");
+    section.clear();
+    for (int n = 0; n <= recorded; ++n) section.push_back(StateAt(record, n * period));
+    // The smallest k whose section repeats and whose events repeat with it (a section that
+    // repeats to a loose tolerance after fewer periods than the motion does has events that do
+    // not); else the smallest mismatch seen.
+    const std::vector<double> mismatches = SectionMismatches(section, options);
+    result.period_multiple = 0;
+    result.mismatch = std::numeric_limits<double>::infinity();
+    unsettled.clear();
+    for (int k = 1; k <= k_max && result.period_multiple == 0; ++k) {
+      if (mismatches[k - 1] < result.mismatch) {
+        result.mismatch = mismatches[k - 1];
+        result.closest_multiple = k;
+      }
+      if (mismatches[k - 1] > options.periodicity_tolerance) continue;
+      result.period_multiple = k;
+      result.mismatch = mismatches[k - 1];
+      period_events = ReadOnePeriod(record, section, period, options, &result);
+      if (period_events.unsettled) {
+        unsettled = fmt::format("the section repeats after k = {} forcing periods to {:.3g}, but {}", k,
+                                mismatches[k - 1], period_events.problem);
+        result.period_multiple = 0;
+      }
+    }
+    if (result.period_multiple > 0) break;
+    if (round == options.settle_rounds || next == 0 || result.transient_periods + 2 * next > FindOrbitOptions::kMaxTransient) {
+      break;
+    }
+    next *= 2;
+  }
+  const int k = result.period_multiple;
+  if (k == 0) {
+    result.status = FindOrbitStatus::kNotPeriodic;
+    result.message =
+        unsettled.empty()
+            ? fmt::format("the motion is not periodic with k <= {} forcing periods after {} transient periods: the "
+                          "smallest section mismatch is {:.3g} (k = {}), above the tolerance {:g}",
+                          k_max, result.transient_periods, result.mismatch, result.closest_multiple,
+                          options.periodicity_tolerance)
+            : fmt::format("the motion has not settled after {} transient periods: {}", result.transient_periods,
+                          unsettled);
+    return result;
+  }
+  if (period_events.segments == 0) {
+    result.status = FindOrbitStatus::kNoOrbitType;
+    result.message = fmt::format("the motion repeats after k = {} forcing periods, but {}", k, period_events.problem);
+    return result;
+  }
+  const bool antisymmetric = result.antisymmetric;
+  const int first = period_events.origin;
+  const int m = period_events.segments;
+  std::vector<Mode> modes;
+  for (int j = first; j < first + m; ++j) {
+    modes.push_back(record.events[j].mode_after);
+  }
+  std::optional<Signature> signature;
+  try {
+    signature.emplace(modes, antisymmetric, k);
+  } catch (const InvalidInput& e) {
+    result.status = FindOrbitStatus::kNoOrbitType;
+    result.message = fmt::format("the motion repeats after k = {} forcing periods, but its events are no orbit type: {}",
+                                 k, e.what());
+    return result;
+  }
+
+  const Event& origin = record.events[first];
+  result.origin_time = origin.t;
+  Orbit read_off{*signature, parameters, origin.state(0), origin.state(1), origin.state(2),
+                 ReducedPhase(parameters.omega * origin.t + phi), {}};
+  for (int j = first; j < first + m; ++j) read_off.durations.push_back(record.events[j + 1].t - record.events[j].t);
+  const StartInput start = StartInputOf(read_off);
+  result.start = start;
+
+  try {
+    result.problem = BuildStartProblem(start);
+  } catch (const InvalidInput& e) {
+    result.status = FindOrbitStatus::kNoOrbitType;
+    result.message = fmt::format("the start read off the motion is refused: {}", e.what());
+    return result;
+  }
+  const StartProblem& problem = *result.problem;
+  result.solution = SolveOrbit(problem.orbit, problem.free, problem.unknowns.tie_static_friction, options.solver);
+  const std::string found = fmt::format("{} (k = {}, section mismatch {:.2g})", start.signature, k, result.mismatch);
+  if (!result.solution->summary.Converged()) {
+    result.status = FindOrbitStatus::kSolveFailed;
+    result.message = fmt::format("the motion is {}, but Newton did not converge from it: {}", found,
+                                 result.solution->summary.BriefReport());
+    return result;
+  }
+  const Orbit& orbit = result.solution->orbit;
+  result.margins = AdmissibilityMargins(orbit);
+  result.verification = VerifyOrbit(orbit);
+  const Margin smallest = SmallestMargin(result.margins);
+  if (!(smallest.value > 0.0)) {
+    result.status = FindOrbitStatus::kNotAMotion;
+    result.message = fmt::format("the motion is {}, but the solved orbit is not a motion of the system: margin {} = {:.6g}",
+                                 found, smallest.Name(), smallest.value);
+  } else if (!result.verification->Passed()) {
+    result.status = FindOrbitStatus::kNotAMotion;
+    result.message = fmt::format("the motion is {}, but the solved orbit failed its verification by simulation", found);
+  } else {
+    result.status = FindOrbitStatus::kFound;
+    result.message = fmt::format("found {}, solved and verified", found);
+  }
+  return result;
+}
+
+}  // namespace stickslip
