@@ -40,6 +40,13 @@ int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification
   return kExitOk;
 }
 
+int ParseCount(std::string_view field, const std::string& text, int lo, int hi) {
+  const std::string range = fmt::format("{} <= {} <= {}, a whole number", lo, field, hi);
+  const double value = ParseNumber(field, text, range);
+  if (!(value >= lo && value <= hi && value == std::floor(value))) throw InvalidInput(std::string(field), text, range);
+  return static_cast<int>(value);
+}
+
 std::string SetKeysHelp() {
   std::string help = "KEY=VALUE, repeatable; overrides the preset. Keys:";
   for (const SetKey& k : SetKeys()) {

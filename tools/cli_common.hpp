@@ -32,6 +32,9 @@ int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification
 // A decimal number, the whole text, finite; otherwise InvalidInput
 // "<field> = '<text>' is not a finite number: valid range <valid_range>".
 double ParseNumber(std::string_view field, std::string_view text, std::string_view valid_range);
+// A whole number of the option `field` within [lo, hi] ("1e3" included); InvalidInput
+// "field = text is invalid: valid range lo <= field <= hi, a whole number" otherwise.
+int ParseCount(std::string_view field, const std::string& text, int lo, int hi);
 
 // The help text of --set, listing every key with its meaning and valid range (SetKeys).
 std::string SetKeysHelp();

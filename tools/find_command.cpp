@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "orbit_report.hpp"
+#include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/io/atomic_file.hpp"
@@ -29,14 +30,6 @@ struct FindArgs {
   std::string confirmations = std::to_string(FindOrbitOptions{}.confirmations);
   std::string write_run;
 };
-
-// A whole number of the option `field` within [lo, hi]; one-line InvalidInput otherwise.
-int ParseCount(std::string_view field, const std::string& text, int lo, int hi) {
-  const std::string range = fmt::format("{} <= {} <= {}, a whole number", lo, field, hi);
-  const double value = ParseNumber(field, text, range);
-  if (!(value >= lo && value <= hi && value == std::floor(value))) throw InvalidInput(std::string(field), text, range);
-  return static_cast<int>(value);
-}
 
 std::string Number(double x) {
   std::string text = fmt::format("{}", x);
@@ -108,7 +101,10 @@ int RunFind(const FindArgs& args) {
     throw InvalidInput("tolerance", options.periodicity_tolerance, tolerance_range);
   }
 
+  ProgressLine line("find: transient");
+  options.progress = line.Callback();
   const FindOrbitResult found = FindOrbit(input.parameters, input.initial_state, input.phi, options);
+  line.Clear();
   if (found.period_multiple > 0) {
     fmt::print("motion     periodic after {} transient period(s): k = {} forcing period(s), section mismatch {:.3g}{}\n",
                found.transient_periods, found.period_multiple, found.mismatch,

@@ -84,11 +84,7 @@ int RunSimulate(const SimulateArgs& args) {
   if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
     throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
   }
-  const std::string transient_range = fmt::format("whole numbers 0 <= transients <= {}", kMaxTransientPeriods);
-  const double transients = ParseNumber("transients", args.transients, transient_range);
-  if (!(transients >= 0.0 && transients <= kMaxTransientPeriods) || transients != std::floor(transients)) {
-    throw InvalidInput("transients", args.transients, transient_range);
-  }
+  const int transients = ParseCount("transients", args.transients, 0, kMaxTransientPeriods);
   const double period = 2.0 * std::numbers::pi / input.parameters.omega;
   const Simulator simulate =
       args.method == "exact"
@@ -105,7 +101,7 @@ int RunSimulate(const SimulateArgs& args) {
     };
   };
   TransientOptions transient;
-  transient.periods = static_cast<int>(transients);
+  transient.periods = transients;
   transient.simulation.progress = reporting(0.0);
   const Transient settled =
       SimulateTransient(simulate, input.parameters, input.initial_state, input.phi, transient);

@@ -8,8 +8,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 command -v script > /dev/null || { echo "script(1) not found: skipped"; exit 0; }
 
-# Long enough to pass the line's half-second delay on a busy machine.
-sweep="sweep --preset paper-6 --from 0.55 --to 0.57 --steps 30 --transients 300 --periods 5 --chains 2 --threads 1"
+# Long enough (2.5 s and more) to pass the line's half-second delay on an idle fast machine too.
+sweep="sweep --preset paper-6 --from 0.55 --to 0.57 --steps 30 --transients 1500 --periods 5 --chains 2 --threads 1"
 script -qec "'$bin' $sweep --output '$work/tty.csv' > '$work/tty.out'" /dev/null > "$work/terminal"
 grep -q $'\rsweep: [0-9]*/124 points (' "$work/terminal" || { od -c "$work/terminal" | head; exit 1; }
 # Erased at the end: the last thing on the terminal is a blanked line.
@@ -22,9 +22,11 @@ tail -c 2 "$work/terminal" | od -c | grep -q '\\r'
 cmp "$work/tty.csv" "$work/piped.csv"
 sed "s|$work/tty.csv|X|" "$work/tty.out" | cmp - <(sed "s|$work/piped.csv|X|" "$work/piped.out")
 
-# simulate and continue draw theirs too.
-script -qec "'$bin' simulate --preset paper-5.1 --transients 200000 --periods 1 > /dev/null" /dev/null > "$work/sim"
-grep -q $'\rsimulate: [0-9.e+]*/200001 periods' "$work/sim" || { od -c "$work/sim" | head; exit 1; }
-"$bin" simulate --preset paper-5.1 --transients 200000 --periods 1 2> "$work/sim-stderr" > /dev/null
+# simulate and find draw theirs too.
+script -qec "'$bin' simulate --preset paper-5.1 --transients 500000 --periods 1 > /dev/null" /dev/null > "$work/sim"
+grep -q $'\rsimulate: [0-9.e+]*/500001 periods' "$work/sim" || { od -c "$work/sim" | head; exit 1; }
+"$bin" simulate --preset paper-5.1 --transients 500000 --periods 1 2> "$work/sim-stderr" > /dev/null
 [ ! -s "$work/sim-stderr" ]
+script -qec "'$bin' find --preset paper-4.1 --transients 200000 > /dev/null" /dev/null > "$work/find"
+grep -q $'\rfind: transient: [0-9.e+]*/200000 periods' "$work/find" || { od -c "$work/find" | head; exit 1; }
 echo "progress line ok"

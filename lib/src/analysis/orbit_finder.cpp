@@ -45,7 +45,6 @@ void FindOrbitOptions::Validate() const {
 
 namespace {
 
-constexpr int kTransientPiece = 1000;  // forcing periods per transient simulation
 
 // |a - b|_inf relative to 1 + |b|_inf, as the tolerance is stated; infinite for non-finite states.
 double RelativeDistance(const State& a, const State& b) {
@@ -222,17 +221,18 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
   std::string unsettled;  // why the last round's section repeat was not taken
   int next = options.transient_periods;
   for (int round = 0;; ++round) {
-    // In pieces of at most kTransientPiece periods, so that neither the events of one
-    // simulation (max_events) nor its memory grow with the transient.
-    for (int done = 0; done < next;) {
-      const int piece = std::min(kTransientPiece, next - done);
-      sim.duration = piece * period;
-      const SimulationResult transient = SimulateExact(parameters, settled, phi, sim);
-      if (!transient.Completed()) return incomplete(transient, "transient");
-      settled = transient.segments.back().end;
-      done += piece;
-      result.transient_periods += piece;
+    TransientOptions transient;
+    transient.periods = next;
+    transient.simulation = sim;
+    transient.simulation.progress = options.progress;
+    const Transient settling = SimulateTransient(SimulateExact, parameters, settled, phi, transient);
+    if (!settling.Completed()) {
+      result.status = FindOrbitStatus::kSimulationIncomplete;
+      result.message = fmt::format("the transient simulation stopped early: {}", settling.message);
+      return result;
     }
+    settled = settling.state;
+    result.transient_periods += next;
     sim.duration = record_periods * period;
     record = SimulateExact(parameters, settled, phi, sim);
     if (!record.Completed()) return incomplete(record, "recorded");

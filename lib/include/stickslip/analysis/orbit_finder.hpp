@@ -24,6 +24,8 @@
 
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/parameters.hpp"
+#include "stickslip/model/transient.hpp"
+#include "stickslip/progress.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/start_problem.hpp"
@@ -54,7 +56,10 @@ struct FindOrbitOptions {
   // Newton on the periodicity equations.
   OrbitSolverOptions solver;
 
-  static constexpr int kMaxTransient = 1000000;
+  // Reports the transient's simulated periods (each round's transient counted from 0).
+  ProgressCallback progress = {};
+
+  static constexpr int kMaxTransient = kMaxTransientPeriods;
   static constexpr int kMaxMultiple = 999;  // the signature's "period K" range
   // Throws InvalidInput naming the member ("transient_periods", ...) when one is out of range.
   void Validate() const;
