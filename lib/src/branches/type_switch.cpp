@@ -1,0 +1,218 @@
+#include "stickslip/branches/type_switch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/simulation.hpp"
+
+namespace stickslip {
+
+namespace {
+
+namespace ov = orbit_variables;
+
+// The exact simulator over one period from the orbit's start: the segments in the orbit's order,
+// each starting where the orbit says, and the state back at the start. "" when it is so.
+std::string SimulationDisagrees(const Orbit& orbit, double tolerance) {
+  const double period = orbit.Period();
+  SimulationOptions options;
+  options.duration = period;
+  const SimulationResult r = SimulateExact(orbit.parameters, orbit.InitialState(), orbit.phi, options);
+  if (!r.Completed()) return "the simulation stopped early: " + r.message;
+  std::vector<double> starts = orbit.SegmentTimes();
+  starts.pop_back();
+  if (orbit.signature.antisymmetric()) {
+    const std::size_t n = starts.size();
+    for (std::size_t k = 0; k < n; ++k) starts.push_back(period / 2 + starts[k]);
+  }
+  const std::vector<Mode> expected = orbit.signature.FullPeriod();
+  std::vector<const Segment*> simulated;  // a sliver opened a rounding error before the end is the next period's
+  for (const Segment& s : r.segments) {
+    if (s.t_start < period - 1e-7) simulated.push_back(&s);
+  }
+  std::string modes;
+  for (const Segment* s : simulated) modes += fmt::format("{}{}", modes.empty() ? "" : " ", ToString(s->mode));
+  if (simulated.size() != expected.size()) return fmt::format("the simulator went through [{}]", modes);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    if (simulated[k]->mode != expected[k]) return fmt::format("the simulator went through [{}]", modes);
+    if (std::abs(simulated[k]->t_start - starts[k]) > tolerance) {
+      return fmt::format("segment {} starts at t = {:.12g} in the simulation, {:.12g} on the orbit", k + 1,
+                         simulated[k]->t_start, starts[k]);
+    }
+  }
+  const double mismatch = (simulated.back()->end - orbit.InitialState()).lpNorm<Eigen::Infinity>();
+  if (mismatch > tolerance) return fmt::format("the simulated state after one period is {:.2e} off the start", mismatch);
+  return "";
+}
+
+UnknownChoice Renamed(const UnknownChoice& unknowns, const SignatureEdit& edit) {
+  UnknownChoice renamed = unknowns;
+  for (std::string& name : renamed.release) name = edit.Renamed(name);
+  for (std::string& name : renamed.fix) name = edit.Renamed(name);
+  return renamed;
+}
+
+ParameterId ParameterIdOf(std::string_view name) {
+  const std::optional<ParameterId> id = ParameterFromString(name);
+  if (!id) throw InvalidInput("parameter", std::string(name), "chi, eta, omega, u_s, u_r");
+  return *id;
+}
+
+// Why the orbit past the boundary is not the adjacent type's motion, "" if it is.
+std::string NotConfirmed(const Orbit& past, const AdjacentType& adjacent, const TypeSwitchOptions& options) {
+  if (adjacent.new_segment >= 0) {
+    const double d = past.durations[adjacent.new_segment];
+    if (!(d > 0.0)) return fmt::format("the new segment's duration is {:.3g} there", d);
+    if (d > options.max_new_duration * past.Period()) {
+      return fmt::format("the new segment is not short ({:.3g} of the period)", d / past.Period());
+    }
+  }
+  const Margin smallest = SmallestMargin(AdmissibilityMargins(past));
+  if (!(smallest.value > 0.0)) return fmt::format("margin {} = {:.3g} there", smallest.Name(), smallest.value);
+  return SimulationDisagrees(past, options.simulation_tolerance);
+}
+
+}  // namespace
+
+double OrbitDistance(const Orbit& a, const Orbit& b) {
+  const double period = std::abs(a.Period() - b.Period());
+  const double phase = std::abs(a.phi - b.phi);
+  return std::max({(a.InitialState() - b.InitialState()).lpNorm<Eigen::Infinity>(), phase, period});
+}
+
+const char* ToString(TypeSwitchStatus status) {
+  switch (status) {
+    case TypeSwitchStatus::kConfirmed: return "confirmed";
+    case TypeSwitchStatus::kNotConfirmed: return "not-confirmed";
+    case TypeSwitchStatus::kNoAdjacentType: return "no-adjacent-type";
+  }
+  return "?";
+}
+
+LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& special,
+                               const OrbitContinuationSetup& setup) {
+  const std::string prefix(orbit_columns::kMarginPrefix);
+  if (special.test_function.rfind(prefix, 0) != 0 || special.point < 0 ||
+      special.point >= static_cast<int>(branch.orbits.size())) {
+    throw InvalidInput("special point", special.type + " " + special.test_function,
+                       "a located sign change of a margin on this branch");
+  }
+  const Orbit& orbit = branch.orbits[special.point];
+  const std::size_t lambda = FreeIndices(orbit.signature, setup.unknowns).size();
+  const double along = lambda < static_cast<std::size_t>(special.tangent.size()) ? special.tangent(lambda) : 0.0;
+  return {.orbit = orbit,
+          .margin = special.test_function.substr(prefix.size()),
+          .parameter = setup.parameter,
+          .past = along > 0.0 ? 1 : along < 0.0 ? -1 : setup.options.direction,
+          .unknowns = setup.unknowns};
+}
+
+TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& options) {
+  TypeSwitch result;
+  const std::size_t colon = located.margin.find(':');
+  const std::string base = located.margin.substr(0, colon);
+  const std::vector<Margin> margins = AdmissibilityMargins(located.orbit);
+  const auto margin = std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == located.margin; });
+  if (margin == margins.end()) {
+    throw InvalidInput("margin", located.margin,
+                       fmt::format("a margin of the signature '{}'", located.orbit.signature.ToString()));
+  }
+  const Parameters& p = located.orbit.parameters;
+  const bool equal_friction = located.unknowns.tie_static_friction || p.u_r == p.u_s;
+  const std::vector<AdjacentType> candidates =
+      AdjacentTypes(base, margin->segment, located.orbit.signature, equal_friction);
+  if (candidates.empty()) {
+    result.status = TypeSwitchStatus::kNoAdjacentType;
+    result.reason = NoAdjacentTypeReason(base);
+    if (result.reason.empty()) {
+      result.reason = fmt::format("{}: no valid signature without segment {} (the only segment, or neighbours "
+                                  "joined across the orbit's origin)", located.margin, margin->segment + 1);
+    }
+    return result;
+  }
+  const ParameterId parameter = ParameterIdOf(located.parameter);
+  const double lambda = located.orbit.parameters[parameter];
+  const double step = options.nudge * (1.0 + std::abs(lambda));
+  std::vector<std::string> reasons;
+  for (const AdjacentType& adjacent : candidates) {
+    const std::string name = fmt::format("'{}' ({})", adjacent.edit.signature.ToString(), adjacent.bifurcation);
+    const bool removal = adjacent.new_segment < 0 && adjacent.kind != TypeEdit::kSplitAtAbnormalStop;
+    const double vanished = located.orbit.durations[adjacent.segment];
+    if (removal && !(std::abs(vanished) <= options.same_orbit * located.orbit.Period())) {
+      reasons.push_back(fmt::format("{}: segment {} has not vanished (duration {:.3g})", name, adjacent.segment + 1,
+                                    vanished));
+      continue;
+    }
+    try {
+      const UnknownChoice unknowns = Renamed(located.unknowns, adjacent.edit);
+      const std::vector<int> free = FreeIndices(adjacent.edit.signature, unknowns);
+      const OrbitSolution start =
+          SolveOrbit(AdjacentStart(located.orbit, *margin, adjacent), free, unknowns.tie_static_friction, options.solver);
+      if (!start.summary.Converged()) {
+        reasons.push_back(name + ": the start does not solve the new type's equations");
+        continue;
+      }
+      const double moved = OrbitDistance(start.orbit, located.orbit);
+      if (!(moved <= options.same_orbit)) {
+        reasons.push_back(fmt::format("{}: the corrected start moved {:.3g} off the located orbit", name, moved));
+        continue;
+      }
+      // A margin already negative at the start: the new type is not a motion next to the located
+      // orbit on either side (a new slip that accelerates away from its stop, a new stick that the
+      // force does not leave at once).
+      const Margin at_start = SmallestMargin(AdmissibilityMargins(start.orbit));
+      if (!(at_start.value >= -options.start_margin_tolerance)) {
+        reasons.push_back(fmt::format("{}: margin {} = {:.3g} at the start, so the new segment cannot stay short", name,
+                                      at_start.Name(), at_start.value));
+        continue;
+      }
+      std::vector<std::pair<OrbitSolution, std::string>> tries;  // an orbit past the boundary, how it was found
+      for (const int direction : {located.past, -located.past}) {
+        Orbit guess = start.orbit;
+        guess.parameters[parameter] = lambda + direction * step;
+        tries.emplace_back(SolveOrbit(guess, free, unknowns.tie_static_friction, options.solver),
+                           direction == located.past ? "past the boundary" : "before the boundary");
+      }
+      if (adjacent.new_segment >= 0 && !tries[0].first.summary.Converged() && !tries[1].first.summary.Converged()) {
+        // Where the new segment's length grows as a root of the parameter step (a grazing, where
+        // the Jacobian is singular at the start), give the length and solve for the parameter.
+        Orbit guess = start.orbit;
+        guess.durations[adjacent.new_segment] = options.new_duration * guess.Period();
+        std::vector<int> released = free;
+        released.push_back(ov::Parameter(guess.signature.size(), parameter));
+        released.erase(std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment)));
+        tries.emplace_back(SolveOrbit(guess, released, unknowns.tie_static_friction, options.solver),
+                           "with the new segment's duration given");
+      }
+      for (const auto& [past, side] : tries) {
+        const std::string why =
+            past.summary.Converged() ? NotConfirmed(past.orbit, adjacent, options) : "no convergence on the new type";
+        if (!why.empty()) {
+          reasons.push_back(fmt::format("{} {}: {}", name, side, why));
+          continue;
+        }
+        const double moved = past.orbit.parameters[parameter] - lambda;
+        const int direction = moved > 0.0 ? 1 : -1;
+        result.status = TypeSwitchStatus::kConfirmed;
+        result.reason = fmt::format("{} {}: confirmed by simulation; {}", name, side, adjacent.motion);
+        result.adjacent = adjacent;
+        result.start = start.orbit;
+        result.past = past.orbit;
+        result.direction = direction;
+        result.persists = direction == located.past;
+        result.unknowns = unknowns;
+        return result;
+      }
+    } catch (const InvalidInput& e) {
+      reasons.push_back(name + ": " + e.what());
+    }
+  }
+  result.status = TypeSwitchStatus::kNotConfirmed;
+  for (const std::string& r : reasons) result.reason += (result.reason.empty() ? "" : "; ") + r;
+  return result;
+}
+
+}  // namespace stickslip
