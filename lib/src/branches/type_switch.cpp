@@ -103,10 +103,18 @@ LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& sp
   const Orbit& orbit = branch.orbits[special.point];
   const std::size_t lambda = FreeIndices(orbit.signature, setup.unknowns).size();
   const double along = lambda < static_cast<std::size_t>(special.tangent.size()) ? special.tangent(lambda) : 0.0;
+  const int way = along > 0.0 ? 1 : along < 0.0 ? -1 : setup.options.direction;
+  // A branch that comes from the inadmissible side (a start beyond the boundary, as section 5.2's)
+  // has the far side behind it.
+  const auto& functions = branch.branch.test_functions;
+  const auto function = std::find_if(functions.begin(), functions.end(),
+                                     [&](const TestFunctionInfo& f) { return f.name == special.test_function; });
+  const bool from_inadmissible = function != functions.end() && special.point > 0 &&
+                                 branch.branch.points[special.point - 1].tests(function - functions.begin()) < 0.0;
   return {.orbit = orbit,
           .margin = special.test_function.substr(prefix.size()),
           .parameter = setup.parameter,
-          .past = along > 0.0 ? 1 : along < 0.0 ? -1 : setup.options.direction,
+          .past = from_inadmissible ? -way : way,
           .unknowns = setup.unknowns};
 }
 

@@ -30,12 +30,13 @@ struct LocatedTypeChange {
   Orbit orbit;             // the orbit at the located point
   std::string margin;      // the margin through zero, as Margin::Name() gives it: "reversal:1"
   std::string parameter;   // the continued parameter, e.g. "omega"
-  int past = 1;            // +1 or -1: the way the parameter went along the branch at the point
+  int past = 1;            // +1 or -1: the way the parameter goes past the boundary, to the side
+                           // where the located type is not admissible
   UnknownChoice unknowns;  // the branch's unknowns (the parameter held)
 };
 
 // The type change of a branch's special point `special` (a margin's sign change: test function
-// "margin:<name>"), the direction from its tangent. Throws InvalidInput naming "special point"
+// "margin:<name>"), the side past it from its tangent and the margin's sign before it. Throws InvalidInput naming "special point"
 // when the point is not a margin's sign change.
 LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& special,
                                const OrbitContinuationSetup& setup);
