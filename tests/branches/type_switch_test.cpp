@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/type_switch.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
@@ -28,12 +29,8 @@ struct Located {
   LocatedTypeChange change;
 };
 
-// The run file's branch, and its special point where `margin` changed sign.
-Located Locate(const std::string& run, const std::string& margin, double ds_scale = 1.0) {
-  const fs::path root(STICKSLIP_SOURCE_DIR);
-  OrbitContinuationSetup setup = MakeSetup(ReadRunFile(root / "continuation-scripts" / (run + ".toml")), root / "results");
-  setup.options.step.ds *= ds_scale;
-  setup.options.step.ds_max *= ds_scale;
+// The branch of `setup`, and its special point where `margin` changed sign.
+Located Locate(const OrbitContinuationSetup& setup, const std::string& margin) {
   OrbitBranch branch = ContinueOrbit(setup);
   for (const SpecialPoint& s : branch.branch.special_points) {
     if (s.test_function == "margin:" + margin) {
@@ -41,7 +38,17 @@ Located Locate(const std::string& run, const std::string& margin, double ds_scal
       return {setup, std::move(branch), s, std::move(change)};
     }
   }
-  throw std::runtime_error(margin + " is not located on " + run);
+  throw std::runtime_error(margin + " is not located on the branch of " + setup.start.signature.ToString() + ": " +
+                           branch.branch.end_message);
+}
+
+// The run file's branch, and its special point where `margin` changed sign.
+Located Locate(const std::string& run, const std::string& margin, double ds_scale = 1.0) {
+  const fs::path root(STICKSLIP_SOURCE_DIR);
+  OrbitContinuationSetup setup = MakeSetup(ReadRunFile(root / "continuation-scripts" / (run + ".toml")), root / "results");
+  setup.options.step.ds *= ds_scale;
+  setup.options.step.ds_max *= ds_scale;
+  return Locate(setup, margin);
 }
 
 Margin Named(const Orbit& o, const std::string& name) {
@@ -162,6 +169,7 @@ TEST(TypeSwitch, TheStickingBranchOfSection41ClosesBackOntoTheNonstickingOrbit) 
   const SpecialPoint& end = *margin;
   EXPECT_NEAR(end.lambda, at.special.lambda, 1e-9);
   const LocatedTypeChange change = TypeChangeAt(up, end, back);
+  EXPECT_EQ(change.margin, "duration:2") << "T0: the stick shrinks to nothing";
   EXPECT_EQ(change.past, +1);
   const TypeSwitch inverse = SwitchAt(change);
   ASSERT_EQ(inverse.status, TypeSwitchStatus::kConfirmed) << change.margin << ": " << inverse.reason;
@@ -183,29 +191,22 @@ class UnconfirmedSwitch : public ::testing::TestWithParam<UnconfirmedCase> {};
 // With u_r > u_s these changes of type have no adjacent orbit nearby: the new segment is long. The
 // exact simulator, started on the located orbit with the parameter nudged past the boundary, shows
 // it: the segment of the new mode that begins at the event lasts more than 1% of the period.
-TEST_P(UnconfirmedSwitch, TheSimulatorPastTheBoundaryShowsTheNewSegmentIsNotShort) {
-  const UnconfirmedCase& c = GetParam();
-  const Located at = Locate(c.run, c.margin);
-  const TypeSwitch sw = SwitchAt(at.change);
-  ASSERT_EQ(sw.status, TypeSwitchStatus::kNotConfirmed) << sw.reason;
-  EXPECT_NE(sw.reason.find(std::string("margin ") + c.blocking), std::string::npos) << sw.reason;
-  EXPECT_FALSE(sw.start.has_value());
-
+// The exact simulator, started on the located type's orbit just past the boundary (not a motion:
+// its margin is negative there), makes the new segment of the first candidate long: more than 1%
+// of the period.
+void ExpectTheNewSegmentIsLongPastTheBoundary(const Located& at, const std::string& margin) {
   const Orbit& o = at.change.orbit;
-  const std::size_t colon = std::string(c.margin).find(':');
-  const AdjacentType candidate = AdjacentTypes(std::string(c.margin).substr(0, colon), Named(o, c.margin).segment,
-                                               o.signature, false).front();
+  const Margin located = Named(o, margin);
+  const AdjacentType candidate =
+      AdjacentTypes(margin.substr(0, margin.find(':')), located.segment, o.signature, false).front();
   const Mode new_mode = candidate.edit.signature.segments()[candidate.new_segment];
-  const double t_event = Named(o, c.margin).t;
-  // The located type's orbit just past the boundary (not a motion: its margin is negative), and the
-  // motion the simulator makes of its start.
   Orbit guess = o;
   const ParameterId id = *ParameterFromString(at.change.parameter);
   guess.parameters[id] += at.change.past * 1e-6 * (1 + std::abs(guess.parameters[id]));
   const OrbitSolution beyond = SolveOrbit(guess, FreeIndices(o.signature, at.setup.unknowns),
                                           at.setup.unknowns.tie_static_friction);
   ASSERT_TRUE(beyond.summary.Converged());
-  ASSERT_LT(Named(beyond.orbit, c.margin).value, 0.0) << "past the boundary";
+  ASSERT_LT(Named(beyond.orbit, margin).value, 0.0) << "past the boundary";
   SimulationOptions options;
   options.duration = o.Period();
   const SimulationResult r =
@@ -214,12 +215,23 @@ TEST_P(UnconfirmedSwitch, TheSimulatorPastTheBoundaryShowsTheNewSegmentIsNotShor
   for (const Segment& s : r.segments) {
     // Past a grazing the constraint is violated on an interval ~ sqrt(nudge) wide: section 6's
     // slip+ begins 0.012 before the grazing time.
-    if (s.mode == new_mode && std::abs(s.t_start - t_event) < 0.05) next = &s;
+    if (s.mode == new_mode && std::abs(s.t_start - located.t) < 0.05) next = &s;
   }
   std::string modes;
   for (const Segment& s : r.segments) modes += fmt::format(" {}@{:.6f}", ToString(s.mode), s.t_start);
-  ASSERT_NE(next, nullptr) << "no " << ToString(new_mode) << " begins at t = " << t_event << ":" << modes;
-  EXPECT_GT(next->t_end - next->t_start, 1e-2 * o.Period());
+  ASSERT_NE(next, nullptr) << "no " << ToString(new_mode) << " begins at t = " << located.t << ":" << modes;
+  EXPECT_GT(next->t_end - next->t_start, 1e-2 * o.Period()) << modes;
+}
+
+// With u_r > u_s these changes of type have no adjacent orbit nearby: the new segment is long.
+TEST_P(UnconfirmedSwitch, TheSimulatorPastTheBoundaryShowsTheNewSegmentIsNotShort) {
+  const UnconfirmedCase& c = GetParam();
+  const Located at = Locate(c.run, c.margin);
+  const TypeSwitch sw = SwitchAt(at.change);
+  ASSERT_EQ(sw.status, TypeSwitchStatus::kNotConfirmed) << sw.reason;
+  EXPECT_NE(sw.reason.find(std::string("margin ") + c.blocking), std::string::npos) << sw.reason;
+  EXPECT_FALSE(sw.start.has_value());
+  ExpectTheNewSegmentIsLongPastTheBoundary(at, c.margin);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -238,6 +250,36 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
+// Section 4.1's data continued in chi: the stops turn into sticks at chi = 0.30032 (confirmed), and
+// on the sticking branch the force at the entry into the stick reaches the static level at
+// chi = 0.32637 (where G also grazes zero at the stick's start). The stick still lasts 0.014 there, so
+// no candidate is confirmed: the reversed slip+ is long.
+TEST(TypeSwitch, AStickEntryAtTheStaticLevelOnTheSection41StickingBranchHasNoNearbyOrbit) {
+  const fs::path root(STICKSLIP_SOURCE_DIR);
+  OrbitContinuationSetup setup =
+      MakeSetup(ReadRunFile(root / "continuation-scripts" / "paper-4.1-omega-up.toml"), root / "results");
+  setup.parameter = "chi";
+  setup.options.user_values.clear();
+  setup.options.lambda_max = 0.5;
+  const Located stops = Locate(setup, "reversal:1");
+  EXPECT_NEAR(stops.special.lambda, 0.3003229572, 1e-10);
+  const TypeSwitch first = SwitchAt(stops.change);
+  ASSERT_EQ(first.status, TypeSwitchStatus::kConfirmed) << first.reason;
+
+  OrbitContinuationSetup sticking = setup;
+  sticking.start = *first.start;
+  sticking.unknowns = first.unknowns;
+  sticking.options.direction = first.direction;
+  const Located at = Locate(sticking, "stick-entry:1");
+  EXPECT_NEAR(at.special.lambda, 0.3263659421, 1e-9);
+  EXPECT_EQ(at.change.past, 1);
+  const TypeSwitch sw = SwitchAt(at.change);
+  ASSERT_EQ(sw.status, TypeSwitchStatus::kNotConfirmed) << sw.reason;
+  EXPECT_NE(sw.reason.find("margin stop-slope:2"), std::string::npos) << sw.reason;
+  EXPECT_NE(sw.reason.find("segment 2 has not vanished"), std::string::npos) << sw.reason;
+  ExpectTheNewSegmentIsLongPastTheBoundary(at, "stick-entry:1");
+}
+
 // A tangential stop is a fold of the same type (LP at the same point); the family's end has nothing.
 TEST(TypeSwitch, ATangentialEndOrTheFamilysEndHasNoAdjacentType) {
   const Located ns = Locate("paper-5.2-omega-up", "stop-slope:2");
@@ -249,6 +291,67 @@ TEST(TypeSwitch, ATangentialEndOrTheFamilysEndHasNoAdjacentType) {
   EXPECT_TRUE(fold) << "the branch folds where the stop becomes tangential";
   EXPECT_EQ(SwitchAt(Locate("paper-6-omega-down", "exit-slope:2").change).status, TypeSwitchStatus::kNoAdjacentType);
   EXPECT_EQ(SwitchAt(Locate("paper-4.2-omega-up", "sliding-friction").change).status, TypeSwitchStatus::kNoAdjacentType);
+}
+
+TEST(TypeSwitchSurvey, DISABLED_Chains) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(STICKSLIP_SOURCE_DIR) / "continuation-scripts")) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  for (const std::string& file : files) {
+    const RunFile run = ReadRunFile(file);
+    std::vector<std::pair<OrbitContinuationSetup, int>> todo;
+    const OrbitContinuationSetup base = MakeSetup(run, fs::path(STICKSLIP_SOURCE_DIR) / "results");
+    if (std::getenv("SURVEY_PARAMS") == nullptr) {
+      todo.push_back({base, 0});
+    } else {
+      if (file.find("omega-up") == std::string::npos || file.find("from") != std::string::npos) continue;
+      for (const char* parameter : {"chi", "eta", "u_s", "u_r"}) {
+        for (int direction : {-1, 1}) {
+          OrbitContinuationSetup setup = base;
+          setup.parameter = parameter;
+          if (std::string(parameter) == "u_s" && setup.unknowns.tie_static_friction) continue;
+          if (std::string(parameter) == "u_r" && setup.unknowns.tie_static_friction) continue;
+          setup.options.direction = direction;
+          setup.options.lambda_min = -1e9;
+          setup.options.lambda_max = 1e9;
+          setup.options.max_points = 400;
+          setup.options.user_values.clear();
+          try {
+            (void)MakeOrbitContinuation(setup);
+          } catch (const InvalidInput&) {
+            continue;
+          }
+          todo.push_back({setup, 0});
+        }
+      }
+    }
+    while (!todo.empty()) {
+      auto [setup, depth] = todo.back();
+      todo.pop_back();
+      const OrbitBranch b = ContinueOrbit(setup);
+      std::printf("%*s%s %s [%s %d]: %zu points, %s %s\n", 2 * depth, "", fs::path(file).stem().c_str(),
+                  setup.start.signature.ToString().c_str(), setup.parameter.c_str(), setup.options.direction, b.branch.points.size(), ToString(b.branch.end), b.branch.end_message.c_str());
+      for (const SpecialPoint& s : b.branch.special_points) {
+        if (s.test_function.rfind("margin:", 0) != 0) continue;
+        const LocatedTypeChange located = TypeChangeAt(b, s, setup);
+        const TypeSwitch sw = SwitchAt(located);
+        std::printf("%*s%s %s lambda=%.10g past=%d -> %s %s dir=%d persists=%d\n%*s  %s\n", 2 * depth, "",
+                    s.type.c_str(), located.margin.c_str(), s.lambda, located.past, ToString(sw.status),
+                    sw.adjacent ? sw.adjacent->edit.signature.ToString().c_str() : "-", sw.direction, sw.persists,
+                    2 * depth, "", sw.reason.c_str());
+        if (sw.status == TypeSwitchStatus::kConfirmed && depth < 3) {
+          OrbitContinuationSetup next = setup;
+          next.start = *sw.start;
+          next.unknowns = sw.unknowns;
+          next.options.direction = sw.direction;
+          next.options.max_points = 400;
+          todo.push_back({next, depth + 1});
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -75,6 +75,21 @@ std::string NotConfirmed(const Orbit& past, const AdjacentType& adjacent, const 
   return SimulationDisagrees(past, options.simulation_tolerance);
 }
 
+TypeSwitch Confirmed(const LocatedTypeChange& located, const AdjacentType& adjacent, const Orbit& start,
+                     const Orbit& past, const std::string& side, const UnknownChoice& unknowns, double lambda) {
+  const ParameterId parameter = ParameterIdOf(located.parameter);
+  const int direction = past.parameters[parameter] > lambda ? 1 : -1;
+  return {.status = TypeSwitchStatus::kConfirmed,
+          .reason = fmt::format("'{}' ({}) {}: confirmed by simulation; {}", adjacent.edit.signature.ToString(),
+                                adjacent.bifurcation, side, adjacent.motion),
+          .adjacent = adjacent,
+          .start = start,
+          .past = past,
+          .direction = direction,
+          .persists = direction == located.past,
+          .unknowns = unknowns};
+}
+
 }  // namespace
 
 double OrbitDistance(const Orbit& a, const Orbit& b) {
@@ -109,8 +124,16 @@ LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& sp
   const auto& functions = branch.branch.test_functions;
   const auto function = std::find_if(functions.begin(), functions.end(),
                                      [&](const TestFunctionInfo& f) { return f.name == special.test_function; });
-  const bool from_inadmissible = function != functions.end() && special.point > 0 &&
-                                 branch.branch.points[special.point - 1].tests(function - functions.begin()) < 0.0;
+  // The margin at the last regular point before (not another special point located at the same
+  // place, nor a start on the boundary).
+  bool from_inadmissible = false;
+  for (int k = special.point - 1; k >= 0 && function != functions.end(); --k) {
+    const BranchPoint& point = branch.branch.points[k];
+    const double value = point.tests(function - functions.begin());
+    if (!point.label.empty() || !(std::abs(value) > setup.options.start_boundary_tolerance)) continue;
+    from_inadmissible = value < 0.0;
+    break;
+  }
   return {.orbit = orbit,
           .margin = special.test_function.substr(prefix.size()),
           .parameter = setup.parameter,
@@ -184,35 +207,32 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
         tries.emplace_back(SolveOrbit(guess, free, unknowns.tie_static_friction, options.solver),
                            direction == located.past ? "past the boundary" : "before the boundary");
       }
-      if (adjacent.new_segment >= 0 && !tries[0].first.summary.Converged() && !tries[1].first.summary.Converged()) {
-        // Where the new segment's length grows as a root of the parameter step (a grazing, where
-        // the Jacobian is singular at the start), give the length and solve for the parameter.
-        Orbit guess = start.orbit;
-        guess.durations[adjacent.new_segment] = options.new_duration * guess.Period();
-        std::vector<int> released = free;
-        released.push_back(ov::Parameter(guess.signature.size(), parameter));
-        released.erase(std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment)));
-        tries.emplace_back(SolveOrbit(guess, released, unknowns.tie_static_friction, options.solver),
-                           "with the new segment's duration given");
-      }
       for (const auto& [past, side] : tries) {
         const std::string why =
             past.summary.Converged() ? NotConfirmed(past.orbit, adjacent, options) : "no convergence on the new type";
-        if (!why.empty()) {
-          reasons.push_back(fmt::format("{} {}: {}", name, side, why));
-          continue;
+        if (why.empty()) return Confirmed(located, adjacent, start.orbit, past.orbit, side, unknowns, lambda);
+        reasons.push_back(fmt::format("{} {}: {}", name, side, why));
+      }
+      if (adjacent.new_segment >= 0) {
+        // Where the new segment's length grows as a root of the parameter step (a grazing, where
+        // the Jacobian is singular at the start, and Newton may find the other root), give the
+        // length, centred on the grazing time for a split, and solve for the parameter.
+        Orbit guess = start.orbit;
+        const double length = options.new_duration * guess.Period();
+        guess.durations[adjacent.new_segment] = length;
+        if (adjacent.kind == TypeEdit::kSplit) {
+          guess.durations[adjacent.new_segment - 1] -= std::min(length / 2, guess.durations[adjacent.new_segment - 1]);
+          guess.durations[adjacent.new_segment + 1] -= std::min(length / 2, guess.durations[adjacent.new_segment + 1]);
         }
-        const double moved = past.orbit.parameters[parameter] - lambda;
-        const int direction = moved > 0.0 ? 1 : -1;
-        result.status = TypeSwitchStatus::kConfirmed;
-        result.reason = fmt::format("{} {}: confirmed by simulation; {}", name, side, adjacent.motion);
-        result.adjacent = adjacent;
-        result.start = start.orbit;
-        result.past = past.orbit;
-        result.direction = direction;
-        result.persists = direction == located.past;
-        result.unknowns = unknowns;
-        return result;
+        std::vector<int> released = free;
+        released.push_back(ov::Parameter(guess.signature.size(), parameter));
+        released.erase(std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment)));
+        const OrbitSolution given = SolveOrbit(guess, released, unknowns.tie_static_friction, options.solver);
+        const std::string side = "with the new segment's duration given";
+        const std::string why =
+            given.summary.Converged() ? NotConfirmed(given.orbit, adjacent, options) : "no convergence on the new type";
+        if (why.empty()) return Confirmed(located, adjacent, start.orbit, given.orbit, side, unknowns, lambda);
+        reasons.push_back(fmt::format("{} {}: {}", name, side, why));
       }
     } catch (const InvalidInput& e) {
       reasons.push_back(name + ": " + e.what());
