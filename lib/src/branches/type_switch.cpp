@@ -213,12 +213,13 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
         if (why.empty()) return Confirmed(located, adjacent, start.orbit, past.orbit, side, unknowns, lambda);
         reasons.push_back(fmt::format("{} {}: {}", name, side, why));
       }
-      if (adjacent.new_segment >= 0) {
-        // Where the new segment's length grows as a root of the parameter step (a grazing, where
-        // the Jacobian is singular at the start, and Newton may find the other root), give the
-        // length, centred on the grazing time for a split, and solve for the parameter.
+      // Where the new segment's length grows as a root of the parameter step (a grazing, where the
+      // Jacobian is singular at the start, and Newton may find the other root), give the length,
+      // centred on the grazing time for a split, and solve for the parameter; longer lengths where
+      // the shortest leaves the end condition too flat to solve (a slip starting with x2'' = 0).
+      for (const double fraction : adjacent.new_segment >= 0 ? options.new_durations : std::vector<double>{}) {
         Orbit guess = start.orbit;
-        const double length = options.new_duration * guess.Period();
+        const double length = fraction * guess.Period();
         guess.durations[adjacent.new_segment] = length;
         if (adjacent.kind == TypeEdit::kSplit) {
           guess.durations[adjacent.new_segment - 1] -= std::min(length / 2, guess.durations[adjacent.new_segment - 1]);
@@ -228,7 +229,7 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
         released.push_back(ov::Parameter(guess.signature.size(), parameter));
         released.erase(std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment)));
         const OrbitSolution given = SolveOrbit(guess, released, unknowns.tie_static_friction, options.solver);
-        const std::string side = "with the new segment's duration given";
+        const std::string side = fmt::format("with the new segment's duration given ({:g} of the period)", fraction);
         const std::string why =
             given.summary.Converged() ? NotConfirmed(given.orbit, adjacent, options) : "no convergence on the new type";
         if (why.empty()) return Confirmed(located, adjacent, start.orbit, given.orbit, side, unknowns, lambda);

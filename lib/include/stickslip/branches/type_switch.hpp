@@ -6,8 +6,8 @@
 //  2. the parameter is nudged a little past the boundary, first the way the located branch was
 //     going (the orbit persists across the boundary), then the other way (the new branch turns
 //     back: a nonsmooth fold, both types on the same side); the new type is solved there. Where
-//     Newton converges on neither side, the new segment is given a short length instead and the
-//     parameter is solved for (its side says which way the new branch goes);
+//     that confirms nothing, the new segment is given short lengths instead and the parameter is
+//     solved for (its side says which way the new branch goes);
 //  3. the solved orbit is confirmed when the new segment has a positive duration shorter than
 //     `max_new_duration` of the period, every margin is positive, and the exact simulator, started
 //     from it, goes through the new signature over one period (events where the orbit says, state
@@ -43,10 +43,10 @@ LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& sp
 
 struct TypeSwitchOptions {
   double nudge = 1e-6;             // the parameter step past the boundary, relative to 1 + |lambda|
-  // Where the orbit is not found at the nudged parameter on either side (a new segment whose length
-  // grows as a root of the step), the new segment's duration given, as a fraction of the period, and
-  // the parameter solved for.
-  double new_duration = 1e-5;
+  // Where the nudges confirm nothing (a new segment whose length grows as a root of the step), the
+  // new segment's duration given instead, as fractions of the period tried in turn, and the
+  // parameter solved for.
+  std::vector<double> new_durations = {1e-5, 1e-4, 1e-3};
   double max_new_duration = 1e-2;  // the new segment's duration past the boundary, as a fraction of the period
   double simulation_tolerance = 1e-9;  // event times and state after one period, exact simulator
   // The corrected start may differ from the located orbit by this much (OrbitDistance), and a removed
@@ -70,7 +70,10 @@ struct TypeSwitch {
   std::string reason;            // per candidate tried, why it was or was not confirmed
   // Set when confirmed:
   std::optional<AdjacentType> adjacent;  // the confirmed candidate
-  std::optional<Orbit> start;    // on the adjacent type at the located parameter, corrected
+  // On the adjacent type at the located parameter, corrected. Where the new segment's length grows
+  // as a root of the parameter step (a grazing), the new type's Jacobian is singular here: a
+  // branch of the new type then starts from `past`.
+  std::optional<Orbit> start;
   std::optional<Orbit> past;     // on the adjacent type at the nudged parameter, confirmed by simulation
   int direction = 0;             // +1 or -1: the parameter's direction on the new branch
   bool persists = false;         // direction == LocatedTypeChange::past; else a nonsmooth fold
