@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/type_switch.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
@@ -338,6 +339,22 @@ TEST(TypeSwitch, AtEqualFrictionLevelsAGrazingInsideTheStickAddsAShortSlip) {
     const Verification later = VerifyOrbit(next.orbits.back());
     EXPECT_TRUE(later.Passed()) << later.Report();
   }
+}
+
+TEST(TypeSwitch, InvalidOptionsAndAMarginTheOrbitDoesNotHaveAreRefused) {
+  const Located at = Locate("paper-4.1-omega-down", "reversal:1");
+  TypeSwitchOptions options;
+  options.nudge = 0.0;
+  EXPECT_THROW(SwitchAt(at.change, options), InvalidInput);
+  options = {};
+  options.new_durations = {0.5};  // longer than max_new_duration
+  EXPECT_THROW(SwitchAt(at.change, options), InvalidInput);
+  LocatedTypeChange wrong = at.change;
+  wrong.margin = "G:1";
+  EXPECT_THROW(SwitchAt(wrong), InvalidInput);
+  wrong = at.change;
+  wrong.parameter = "x10";
+  EXPECT_THROW(SwitchAt(wrong), InvalidInput);
 }
 
 // A tangential stop is a fold of the same type (LP at the same point); the family's end has nothing.

@@ -141,7 +141,27 @@ LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& sp
           .unknowns = setup.unknowns};
 }
 
+void TypeSwitchOptions::Validate() const {
+  if (!(nudge > 0.0 && nudge <= 0.1)) throw InvalidInput("nudge", nudge, "0 < nudge <= 0.1");
+  if (!(max_new_duration > 0.0 && max_new_duration <= 1.0)) {
+    throw InvalidInput("max_new_duration", max_new_duration, "0 < max_new_duration <= 1");
+  }
+  for (const double d : new_durations) {
+    if (!(d > 0.0 && d <= max_new_duration)) {
+      throw InvalidInput("new_durations", d, fmt::format("0 < each <= max_new_duration = {}", max_new_duration));
+    }
+  }
+  if (!(simulation_tolerance > 0.0 && simulation_tolerance <= 1e-3)) {
+    throw InvalidInput("simulation_tolerance", simulation_tolerance, "0 < simulation_tolerance <= 1e-3");
+  }
+  if (!(same_orbit > 0.0 && same_orbit <= 1e-3)) throw InvalidInput("same_orbit", same_orbit, "0 < same_orbit <= 1e-3");
+  if (!(start_margin_tolerance >= 0.0 && start_margin_tolerance <= 1e-3)) {
+    throw InvalidInput("start_margin_tolerance", start_margin_tolerance, "0 <= start_margin_tolerance <= 1e-3");
+  }
+}
+
 TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& options) {
+  options.Validate();
   TypeSwitch result;
   const std::size_t colon = located.margin.find(':');
   const std::string base = located.margin.substr(0, colon);
@@ -226,8 +246,10 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
           guess.durations[adjacent.new_segment + 1] -= std::min(length / 2, guess.durations[adjacent.new_segment + 1]);
         }
         std::vector<int> released = free;
+        const auto held = std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment));
+        if (held == released.end()) break;  // the new segment's duration is held by the user's fix
+        released.erase(held);
         released.push_back(ov::Parameter(guess.signature.size(), parameter));
-        released.erase(std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment)));
         const OrbitSolution given = SolveOrbit(guess, released, unknowns.tie_static_friction, options.solver);
         const std::string side = fmt::format("with the new segment's duration given ({:g} of the period)", fraction);
         const std::string why =

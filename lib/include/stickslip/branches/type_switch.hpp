@@ -56,6 +56,9 @@ struct TypeSwitchOptions {
   // means the new segment cannot be short (a new slip accelerating away from its stop, say).
   double start_margin_tolerance = 1e-7;
   OrbitSolverOptions solver;       // for the corrected start and the orbit past the boundary
+
+  // Throws InvalidInput naming the first field out of its valid range.
+  void Validate() const;
 };
 
 enum class TypeSwitchStatus {
@@ -84,6 +87,8 @@ struct TypeSwitch {
 // the same origin, whatever the signatures.
 double OrbitDistance(const Orbit& a, const Orbit& b);
 
+// Throws InvalidInput for invalid options, a margin the located orbit does not have, or a parameter
+// that is no parameter.
 TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& options = {});
 
 }  // namespace stickslip
