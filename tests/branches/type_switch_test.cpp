@@ -5,13 +5,14 @@
 // the located parameter does not depend on the step size, and the new branch goes on. Where none
 // is: the exact simulator, nudged past the boundary, shows why (the new segment is long). Where the
 // margin has no adjacent type: the branch folds there.
-#include <filesystem>
-#include <map>
+#include "stickslip/branches/type_switch.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "stickslip/branches/type_switch.hpp"
+#include <filesystem>
+#include <map>
+
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -46,7 +47,8 @@ Located Locate(const OrbitContinuationSetup& setup, const std::string& margin) {
 // The run file's branch, and its special point where `margin` changed sign.
 Located Locate(const std::string& run, const std::string& margin, double ds_scale = 1.0) {
   const fs::path root(STICKSLIP_SOURCE_DIR);
-  OrbitContinuationSetup setup = MakeSetup(ReadRunFile(root / "continuation-scripts" / (run + ".toml")), root / "results");
+  OrbitContinuationSetup setup =
+      MakeSetup(ReadRunFile(root / "continuation-scripts" / (run + ".toml")), root / "results");
   setup.options.step.ds *= ds_scale;
   setup.options.step.ds_max *= ds_scale;
   return Locate(setup, margin);
@@ -59,7 +61,8 @@ Margin Named(const Orbit& o, const std::string& name) {
   throw std::runtime_error(name);
 }
 
-OrbitBranch ContinueNewType(const Located& at, const TypeSwitch& sw, int direction, int points, bool from_past = false) {
+OrbitBranch ContinueNewType(const Located& at, const TypeSwitch& sw, int direction, int points,
+                            bool from_past = false) {
   OrbitContinuationSetup setup = at.setup;
   setup.start = from_past ? *sw.past : *sw.start;
   setup.unknowns = sw.unknowns;
@@ -176,13 +179,14 @@ TEST(TypeSwitch, TheStickingBranchOfSection41ClosesBackOntoTheNonstickingOrbit) 
     if (inverse.status != TypeSwitchStatus::kConfirmed) continue;
     EXPECT_EQ(inverse.adjacent->edit.signature.ToString(), "slip- / antisymmetric");
     EXPECT_TRUE(inverse.persists);
-    EXPECT_LE((orbit_variables::Pack(*inverse.start) - orbit_variables::Pack(at.change.orbit)).lpNorm<Eigen::Infinity>(),
-              1e-9);
+    EXPECT_LE(
+        (orbit_variables::Pack(*inverse.start) - orbit_variables::Pack(at.change.orbit)).lpNorm<Eigen::Infinity>(),
+        1e-9);
     EXPECT_TRUE(VerifyOrbit(*inverse.past).Passed());
   }
   EXPECT_EQ(statuses, (std::map<std::string, TypeSwitchStatus>{{"G:2", TypeSwitchStatus::kNotConfirmed},
-                                                                {"duration:2", TypeSwitchStatus::kConfirmed},
-                                                                {"stick-entry:1", TypeSwitchStatus::kConfirmed}}));
+                                                               {"duration:2", TypeSwitchStatus::kConfirmed},
+                                                               {"stick-entry:1", TypeSwitchStatus::kConfirmed}}));
 }
 
 struct UnconfirmedCase {
@@ -208,8 +212,8 @@ void ExpectTheNewSegmentIsLongPastTheBoundary(const Located& at, const std::stri
   Orbit guess = o;
   const ParameterId id = *ParameterFromString(at.change.parameter);
   guess.parameters[id] += at.change.past * 1e-6 * (1 + std::abs(guess.parameters[id]));
-  const OrbitSolution beyond = SolveOrbit(guess, FreeIndices(o.signature, at.setup.unknowns),
-                                          at.setup.unknowns.tie_static_friction);
+  const OrbitSolution beyond =
+      SolveOrbit(guess, FreeIndices(o.signature, at.setup.unknowns), at.setup.unknowns.tie_static_friction);
   ASSERT_TRUE(beyond.summary.Converged());
   ASSERT_LT(Named(beyond.orbit, margin).value, 0.0) << "past the boundary";
   SimulationOptions options;
@@ -367,7 +371,8 @@ TEST(TypeSwitch, ATangentialEndOrTheFamilysEndHasNoAdjacentType) {
   }
   EXPECT_TRUE(fold) << "the branch folds where the stop becomes tangential";
   EXPECT_EQ(SwitchAt(Locate("paper-6-omega-down", "exit-slope:2").change).status, TypeSwitchStatus::kNoAdjacentType);
-  EXPECT_EQ(SwitchAt(Locate("paper-4.2-omega-up", "sliding-friction").change).status, TypeSwitchStatus::kNoAdjacentType);
+  EXPECT_EQ(SwitchAt(Locate("paper-4.2-omega-up", "sliding-friction").change).status,
+            TypeSwitchStatus::kNoAdjacentType);
 }
 
 }  // namespace

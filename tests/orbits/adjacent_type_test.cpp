@@ -1,16 +1,18 @@
 // The adjacent types of every margin kind (the README's switching table), and their start orbits:
 // the same motion as the located orbit, sampled over a whole period, with the new segment of zero
 // length where the margin says.
+#include "stickslip/orbits/adjacent_type.hpp"
+
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
-#include "stickslip/orbits/adjacent_type.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
 namespace {
 
-std::vector<std::string> Signatures(std::string_view base, int segment, const char* signature, bool equal_friction = false) {
+std::vector<std::string> Signatures(std::string_view base, int segment, const char* signature,
+                                    bool equal_friction = false) {
   std::vector<std::string> out;
   for (const AdjacentType& a : AdjacentTypes(base, segment, Signature::Parse(signature), equal_friction)) {
     out.push_back(a.edit.signature.ToString());
@@ -32,8 +34,10 @@ TEST(AdjacentTypes, AReversalWhoseForceReachesTheStaticLevelGetsAStickAtItsStop)
 TEST(AdjacentTypes, AStickEntryAtTheStaticLevelReversesFirstOrLosesAVanishedStick) {
   // slip+ stops into the stick of segment 3: the mass reverses (a slip- between), or, where the
   // stick has zero length, the slips on both sides of it are one.
-  EXPECT_EQ(Signatures("stick-entry", 1, "slip- slip+ stick slip+"), (Names{"slip- slip+ slip- stick slip+", "slip- slip+"}));
-  EXPECT_EQ(Signatures("stick-entry", 0, "slip- stick slip+ stick"), (Names{"slip- slip+ stick slip+ stick", "slip- slip+ stick"}));
+  EXPECT_EQ(Signatures("stick-entry", 1, "slip- slip+ stick slip+"),
+            (Names{"slip- slip+ slip- stick slip+", "slip- slip+"}));
+  EXPECT_EQ(Signatures("stick-entry", 0, "slip- stick slip+ stick"),
+            (Names{"slip- slip+ stick slip+ stick", "slip- slip+ stick"}));
 }
 
 TEST(AdjacentTypes, AnAbnormalStopWhoseJerkVanishesGetsAStick) {
@@ -75,11 +79,11 @@ TEST(AdjacentTypes, TangentialEndsAndTheFamilysEndHaveNone) {
 
 TEST(AdjacentTypes, AMarginThatIsNotTheSegmentsIsRefused) {
   const Signature s = Signature::Parse("slip- slip+ stick");
-  EXPECT_THROW(AdjacentTypes("G", 0, s, false), InvalidInput);            // a slip has no G
-  EXPECT_THROW(AdjacentTypes("reversal", 1, s, false), InvalidInput);     // slip+ ends into the stick
-  EXPECT_THROW(AdjacentTypes("velocity", 2, s, false), InvalidInput);     // a stick has no velocity
-  EXPECT_THROW(AdjacentTypes("slope", 0, s, false), InvalidInput);        // no such margin
-  EXPECT_THROW(AdjacentTypes("duration", 3, s, false), InvalidInput);     // no such segment
+  EXPECT_THROW(AdjacentTypes("G", 0, s, false), InvalidInput);         // a slip has no G
+  EXPECT_THROW(AdjacentTypes("reversal", 1, s, false), InvalidInput);  // slip+ ends into the stick
+  EXPECT_THROW(AdjacentTypes("velocity", 2, s, false), InvalidInput);  // a stick has no velocity
+  EXPECT_THROW(AdjacentTypes("slope", 0, s, false), InvalidInput);     // no such margin
+  EXPECT_THROW(AdjacentTypes("duration", 3, s, false), InvalidInput);  // no such segment
 }
 
 // The start orbit is the same motion: sampled over a period it equals the located orbit.

@@ -1,9 +1,9 @@
 #include "stickslip/branches/type_switch.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -44,7 +44,8 @@ std::string SimulationDisagrees(const Orbit& orbit, double tolerance) {
     }
   }
   const double mismatch = (simulated.back()->end - orbit.InitialState()).lpNorm<Eigen::Infinity>();
-  if (mismatch > tolerance) return fmt::format("the simulated state after one period is {:.2e} off the start", mismatch);
+  if (mismatch > tolerance)
+    return fmt::format("the simulated state after one period is {:.2e} off the start", mismatch);
   return "";
 }
 
@@ -100,9 +101,12 @@ double OrbitDistance(const Orbit& a, const Orbit& b) {
 
 const char* ToString(TypeSwitchStatus status) {
   switch (status) {
-    case TypeSwitchStatus::kConfirmed: return "confirmed";
-    case TypeSwitchStatus::kNotConfirmed: return "not-confirmed";
-    case TypeSwitchStatus::kNoAdjacentType: return "no-adjacent-type";
+    case TypeSwitchStatus::kConfirmed:
+      return "confirmed";
+    case TypeSwitchStatus::kNotConfirmed:
+      return "not-confirmed";
+    case TypeSwitchStatus::kNoAdjacentType:
+      return "no-adjacent-type";
   }
   return "?";
 }
@@ -166,7 +170,8 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
   const std::size_t colon = located.margin.find(':');
   const std::string base = located.margin.substr(0, colon);
   const std::vector<Margin> margins = AdmissibilityMargins(located.orbit);
-  const auto margin = std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == located.margin; });
+  const auto margin =
+      std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == located.margin; });
   if (margin == margins.end()) {
     throw InvalidInput("margin", located.margin,
                        fmt::format("a margin of the signature '{}'", located.orbit.signature.ToString()));
@@ -179,8 +184,10 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
     result.status = TypeSwitchStatus::kNoAdjacentType;
     result.reason = NoAdjacentTypeReason(base);
     if (result.reason.empty()) {
-      result.reason = fmt::format("{}: no valid signature without segment {} (the only segment, or neighbours "
-                                  "joined across the orbit's origin)", located.margin, margin->segment + 1);
+      result.reason = fmt::format(
+          "{}: no valid signature without segment {} (the only segment, or neighbours "
+          "joined across the orbit's origin)",
+          located.margin, margin->segment + 1);
     }
     return result;
   }
@@ -193,15 +200,15 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
     const bool removal = adjacent.new_segment < 0 && adjacent.kind != TypeEdit::kSplitAtAbnormalStop;
     const double vanished = located.orbit.durations[adjacent.segment];
     if (removal && !(std::abs(vanished) <= options.same_orbit * located.orbit.Period())) {
-      reasons.push_back(fmt::format("{}: segment {} has not vanished (duration {:.3g})", name, adjacent.segment + 1,
-                                    vanished));
+      reasons.push_back(
+          fmt::format("{}: segment {} has not vanished (duration {:.3g})", name, adjacent.segment + 1, vanished));
       continue;
     }
     try {
       const UnknownChoice unknowns = Renamed(located.unknowns, adjacent.edit);
       const std::vector<int> free = FreeIndices(adjacent.edit.signature, unknowns);
-      const OrbitSolution start =
-          SolveOrbit(AdjacentStart(located.orbit, *margin, adjacent), free, unknowns.tie_static_friction, options.solver);
+      const OrbitSolution start = SolveOrbit(AdjacentStart(located.orbit, *margin, adjacent), free,
+                                             unknowns.tie_static_friction, options.solver);
       if (!start.summary.Converged()) {
         reasons.push_back(name + ": the start does not solve the new type's equations");
         continue;

@@ -1,9 +1,9 @@
 #include "stickslip/orbits/adjacent_type.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
-
-#include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
 
@@ -27,9 +27,9 @@ bool BelongsTo(std::string_view base, int i, const Signature& signature) {
   return false;
 }
 
-constexpr std::array<std::string_view, 10> kMarginBases = {"duration",      "velocity", "stop-slope", "reversal",
-                                                           "stick-entry",   "abnormal-stop", "G",     "G1",
-                                                           "exit-slope",    "sliding-friction"};
+constexpr std::array<std::string_view, 10> kMarginBases = {"duration",    "velocity",        "stop-slope", "reversal",
+                                                           "stick-entry", "abnormal-stop",   "G",          "G1",
+                                                           "exit-slope",  "sliding-friction"};
 
 AdjacentType Inserted(const Signature& signature, int i, Mode mode, const char* bifurcation, std::string motion) {
   return {InsertSegment(signature, i + 1, mode), TypeEdit::kInsert, i, i + 1, bifurcation, std::move(motion)};
@@ -44,7 +44,11 @@ AdjacentType Split(const Signature& signature, int i, Mode mode, const char* bif
 AdjacentType SplitAtAbnormalStop(const Signature& signature, int i) {
   SignatureEdit edit = InsertSegment(signature, i + 1, signature.segments()[i]);
   edit.duration_kept[i] = false;
-  return {std::move(edit), TypeEdit::kSplitAtAbnormalStop, i, -1, "grazing-sliding (u_r = u_s)",
+  return {std::move(edit),
+          TypeEdit::kSplitAtAbnormalStop,
+          i,
+          -1,
+          "grazing-sliding (u_r = u_s)",
           "x2' touches zero inside the slip with x2'' = 0 and goes on in the same direction: an abnormal stop"};
 }
 
@@ -61,8 +65,8 @@ void AddRemovals(const Signature& signature, int i, bool equal_friction, std::ve
   for (const bool join : {true, false}) {
     if (!join && !keep_apart) continue;
     try {
-      out->push_back({RemoveSegment(signature, i, join), join ? TypeEdit::kRemove : TypeEdit::kRemoveKeepApart, i,
-                      -1, bifurcation,
+      out->push_back({RemoveSegment(signature, i, join), join ? TypeEdit::kRemove : TypeEdit::kRemoveKeepApart, i, -1,
+                      bifurcation,
                       !equal_neighbours ? what + "; its neighbours meet at a stop"
                       : join            ? what + "; its neighbours, in the same mode, join into one segment"
                                         : what + "; its equal neighbours meet at an abnormal stop"});
@@ -76,11 +80,16 @@ void AddRemovals(const Signature& signature, int i, bool equal_friction, std::ve
 
 const char* ToString(TypeEdit edit) {
   switch (edit) {
-    case TypeEdit::kInsert: return "insert";
-    case TypeEdit::kSplit: return "split";
-    case TypeEdit::kSplitAtAbnormalStop: return "split-at-abnormal-stop";
-    case TypeEdit::kRemove: return "remove";
-    case TypeEdit::kRemoveKeepApart: return "remove-keep-apart";
+    case TypeEdit::kInsert:
+      return "insert";
+    case TypeEdit::kSplit:
+      return "split";
+    case TypeEdit::kSplitAtAbnormalStop:
+      return "split-at-abnormal-stop";
+    case TypeEdit::kRemove:
+      return "remove";
+    case TypeEdit::kRemoveKeepApart:
+      return "remove-keep-apart";
   }
   return "?";
 }
@@ -101,8 +110,9 @@ std::string NoAdjacentTypeReason(std::string_view base) {
 std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, const Signature& signature,
                                         bool equal_friction) {
   if (std::find(kMarginBases.begin(), kMarginBases.end(), base) == kMarginBases.end()) {
-    throw InvalidInput("margin", std::string(base), "duration, velocity, stop-slope, reversal, stick-entry, "
-                                                    "abnormal-stop, G, G1, exit-slope, sliding-friction");
+    throw InvalidInput("margin", std::string(base),
+                       "duration, velocity, stop-slope, reversal, stick-entry, "
+                       "abnormal-stop, G, G1, exit-slope, sliding-friction");
   }
   if (base == "sliding-friction") return {};
   if (segment < 0 || segment >= signature.size()) {
@@ -165,8 +175,10 @@ Orbit AdjacentStart(const Orbit& located, const Margin& margin, const AdjacentTy
       edited.durations.insert(edited.durations.begin() + i + 1, located.durations[i] - tau);
       return edited;
     }
-    case TypeEdit::kRemove: return RemoveSegment(located, i, true);
-    case TypeEdit::kRemoveKeepApart: return RemoveSegment(located, i, false);
+    case TypeEdit::kRemove:
+      return RemoveSegment(located, i, true);
+    case TypeEdit::kRemoveKeepApart:
+      return RemoveSegment(located, i, false);
   }
   return located;
 }

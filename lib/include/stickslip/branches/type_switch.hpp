@@ -36,18 +36,18 @@ struct LocatedTypeChange {
 };
 
 // The type change of a branch's special point `special` (a margin's sign change: test function
-// "margin:<name>"), the side past it from its tangent and the margin's sign before it. Throws InvalidInput naming "special point"
-// when the point is not a margin's sign change.
+// "margin:<name>"), the side past it from its tangent and the margin's sign before it. Throws InvalidInput naming
+// "special point" when the point is not a margin's sign change.
 LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& special,
                                const OrbitContinuationSetup& setup);
 
 struct TypeSwitchOptions {
-  double nudge = 1e-6;             // the parameter step past the boundary, relative to 1 + |lambda|
+  double nudge = 1e-6;  // the parameter step past the boundary, relative to 1 + |lambda|
   // Where the nudges confirm nothing (a new segment whose length grows as a root of the step), the
   // new segment's duration given instead, as fractions of the period tried in turn, and the
   // parameter solved for.
   std::vector<double> new_durations = {1e-5, 1e-4, 1e-3};
-  double max_new_duration = 1e-2;  // the new segment's duration past the boundary, as a fraction of the period
+  double max_new_duration = 1e-2;      // the new segment's duration past the boundary, as a fraction of the period
   double simulation_tolerance = 1e-9;  // event times and state after one period, exact simulator
   // The corrected start may differ from the located orbit by this much (OrbitDistance), and a removed
   // segment's located duration may be this fraction of the period: the same motion, to rounding.
@@ -55,32 +55,32 @@ struct TypeSwitchOptions {
   // The margins of the corrected start are zero or positive, to this: a margin clearly negative there
   // means the new segment cannot be short (a new slip accelerating away from its stop, say).
   double start_margin_tolerance = 1e-7;
-  OrbitSolverOptions solver;       // for the corrected start and the orbit past the boundary
+  OrbitSolverOptions solver;  // for the corrected start and the orbit past the boundary
 
   // Throws InvalidInput naming the first field out of its valid range.
   void Validate() const;
 };
 
 enum class TypeSwitchStatus {
-  kConfirmed,          // an adjacent type confirmed by simulation
-  kNotConfirmed,       // candidates, none confirmed (reasons per candidate)
-  kNoAdjacentType,     // the margin has no adjacent type (a tangential end, the family's end)
+  kConfirmed,       // an adjacent type confirmed by simulation
+  kNotConfirmed,    // candidates, none confirmed (reasons per candidate)
+  kNoAdjacentType,  // the margin has no adjacent type (a tangential end, the family's end)
 };
 const char* ToString(TypeSwitchStatus status);
 
 struct TypeSwitch {
   TypeSwitchStatus status = TypeSwitchStatus::kNotConfirmed;
-  std::string reason;            // per candidate tried, why it was or was not confirmed
+  std::string reason;  // per candidate tried, why it was or was not confirmed
   // Set when confirmed:
   std::optional<AdjacentType> adjacent;  // the confirmed candidate
   // On the adjacent type at the located parameter, corrected. Where the new segment's length grows
   // as a root of the parameter step (a grazing), the new type's Jacobian is singular here: a
   // branch of the new type then starts from `past`.
   std::optional<Orbit> start;
-  std::optional<Orbit> past;     // on the adjacent type at the nudged parameter, confirmed by simulation
-  int direction = 0;             // +1 or -1: the parameter's direction on the new branch
-  bool persists = false;         // direction == LocatedTypeChange::past; else a nonsmooth fold
-  UnknownChoice unknowns;        // the located unknowns renamed for the adjacent signature
+  std::optional<Orbit> past;  // on the adjacent type at the nudged parameter, confirmed by simulation
+  int direction = 0;          // +1 or -1: the parameter's direction on the new branch
+  bool persists = false;      // direction == LocatedTypeChange::past; else a nonsmooth fold
+  UnknownChoice unknowns;     // the located unknowns renamed for the adjacent signature
 };
 
 // The largest difference in the start state, the phase and the period: 0 for the same motion from

@@ -55,13 +55,13 @@ enum class TypeEdit {
 const char* ToString(TypeEdit edit);
 
 struct AdjacentType {
-  SignatureEdit edit;        // the adjacent signature, with the renaming of durations
+  SignatureEdit edit;  // the adjacent signature, with the renaming of durations
   TypeEdit kind = TypeEdit::kInsert;
-  int segment = 0;           // 0-based listed segment of the located signature the edit is at
-  int new_segment = -1;      // 0-based listed segment of the new signature that starts at zero
-                             // length (-1 for a removal)
+  int segment = 0;               // 0-based listed segment of the located signature the edit is at
+  int new_segment = -1;          // 0-based listed segment of the new signature that starts at zero
+                                 // length (-1 for a removal)
   const char* bifurcation = "";  // "crossing-sliding", "grazing-sliding", "adding-sliding", ...
-  std::string motion;        // what the motion does on the far side, in one sentence
+  std::string motion;            // what the motion does on the far side, in one sentence
 };
 
 // The adjacent types of `signature` where the margin `base` ("reversal", "G", ..., without the
