@@ -101,12 +101,9 @@ double OrbitDistance(const Orbit& a, const Orbit& b) {
 
 const char* ToString(TypeSwitchStatus status) {
   switch (status) {
-    case TypeSwitchStatus::kConfirmed:
-      return "confirmed";
-    case TypeSwitchStatus::kNotConfirmed:
-      return "not-confirmed";
-    case TypeSwitchStatus::kNoAdjacentType:
-      return "no-adjacent-type";
+    case TypeSwitchStatus::kConfirmed: return "confirmed";
+    case TypeSwitchStatus::kNotConfirmed: return "not-confirmed";
+    case TypeSwitchStatus::kNoAdjacentType: return "no-adjacent-type";
   }
   return "?";
 }

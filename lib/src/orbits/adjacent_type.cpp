@@ -80,16 +80,11 @@ void AddRemovals(const Signature& signature, int i, bool equal_friction, std::ve
 
 const char* ToString(TypeEdit edit) {
   switch (edit) {
-    case TypeEdit::kInsert:
-      return "insert";
-    case TypeEdit::kSplit:
-      return "split";
-    case TypeEdit::kSplitAtAbnormalStop:
-      return "split-at-abnormal-stop";
-    case TypeEdit::kRemove:
-      return "remove";
-    case TypeEdit::kRemoveKeepApart:
-      return "remove-keep-apart";
+    case TypeEdit::kInsert: return "insert";
+    case TypeEdit::kSplit: return "split";
+    case TypeEdit::kSplitAtAbnormalStop: return "split-at-abnormal-stop";
+    case TypeEdit::kRemove: return "remove";
+    case TypeEdit::kRemoveKeepApart: return "remove-keep-apart";
   }
   return "?";
 }
@@ -175,10 +170,8 @@ Orbit AdjacentStart(const Orbit& located, const Margin& margin, const AdjacentTy
       edited.durations.insert(edited.durations.begin() + i + 1, located.durations[i] - tau);
       return edited;
     }
-    case TypeEdit::kRemove:
-      return RemoveSegment(located, i, true);
-    case TypeEdit::kRemoveKeepApart:
-      return RemoveSegment(located, i, false);
+    case TypeEdit::kRemove: return RemoveSegment(located, i, true);
+    case TypeEdit::kRemoveKeepApart: return RemoveSegment(located, i, false);
   }
   return located;
 }
