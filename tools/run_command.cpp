@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/check.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 
@@ -148,24 +149,12 @@ int RunContinue(ContinueArgs args) {
   RunFile& run = args.run;
   run.path = "(command line)";
   SetRunFileStart(ToStartInput(args.start), &run);
-  if (args.direction != "up" && args.direction != "down") {
-    throw InvalidInput("direction", "'" + args.direction + "'", "up, down");
-  }
-  run.direction = args.direction == "up" ? 1 : -1;
+  run.direction = ContinuationDirection(args.direction);
   const auto comma = args.range.find(',');
   if (comma == std::string::npos) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX");
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
   run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
-  if (!(run.range_min < run.range_max)) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX with MIN < MAX");
-  if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
-    throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
-  }
-  if (run.max_points < 1 || run.max_points > 1000000) {
-    throw InvalidInput("max-points", run.max_points, "1 <= max-points <= 1000000");
-  }
-  if (!IsRunName(run.output)) {
-    throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
-  }
+  CheckOneOffRun(run, args.range);
   CheckOutputDirectory(args.start.results, run.output);
   std::optional<Executed> e = Execute(run, args.start.results);
   if (!e) return kExitNoConvergence;
