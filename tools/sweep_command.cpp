@@ -18,18 +18,20 @@ namespace stickslip::cli {
 
 namespace {
 
+// The options as texts, with SweepCommand's defaults (which Python's sweep has too).
+std::string Text(double value) { return fmt::format("{}", value); }
 struct SweepArgs {
   StartFlags origin;
-  std::string parameter = "omega";
+  std::string parameter = SweepCommand{}.parameter;
   std::string from, to;
-  std::string steps = "40";
-  std::string transients = "500";
-  std::string periods = "20";
-  std::string start = "chained";
-  std::string chains = "4";
-  std::string scatter = "1";
-  std::string seed = "1";
-  std::string threads = "0";
+  std::string steps = Text(SweepCommand{}.steps);
+  std::string transients = Text(SweepCommand{}.transients);
+  std::string periods = Text(SweepCommand{}.periods);
+  std::string start = SweepCommand{}.start;
+  std::string chains = Text(SweepCommand{}.chains);
+  std::string scatter = Text(SweepCommand{}.scatter);
+  std::string seed = Text(SweepCommand{}.seed);
+  std::string threads = Text(SweepCommand{}.threads);
   std::string output;
 };
 

@@ -49,7 +49,8 @@ int ContinuationDirection(std::string_view direction);
 // "range", "ds", "max-points" or "output".
 void CheckOneOffRun(const RunFile& run, std::string_view range_text);
 
-// sweep: the options as given, numbers not yet checked to be whole or in range.
+// sweep: the options as given, numbers not yet checked to be whole or in range. The defaults are
+// the command line's and Python's.
 struct SweepCommand {
   std::string parameter = "omega";  // chi, eta, omega, u_s or u_r
   double from = 0.0;
