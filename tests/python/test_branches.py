@@ -123,3 +123,45 @@ def test_to_pandas_gives_the_columns():
     frame = branch.to_pandas()
     assert isinstance(frame, pandas.DataFrame)
     assert list(frame.columns) == branch.columns and (frame["omega"].to_numpy() == branch["omega"]).all()
+
+
+def test_a_run_file_stepped_gives_the_branch_of_one_run(monkeypatch):
+    monkeypatch.chdir(SOURCE)
+    cont = stickslip.Continuation.from_run_file("continuation-scripts/paper-6-omega-down.toml")
+    assert cont.step() and len(cont) == 1 and cont.point(0)["label"] == "EP1"
+    assert cont.run().files() == stickslip.run("continuation-scripts/paper-6-omega-down.toml").files()
+
+
+def test_to_pandas_without_pandas_says_what_is_missing():
+    try:
+        import pandas  # noqa: F401
+        pytest.skip("pandas is installed")
+    except ImportError:
+        pass
+    branch = stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3)
+    with pytest.raises(ImportError, match="python3-pandas"):
+        branch.to_pandas()
+
+
+def test_misuse_raises_python_errors_and_never_crashes():
+    cont = stickslip.Continuation("omega", (0.5, 0.6), preset="paper-5.1", max_points=3)
+    with pytest.raises(IndexError):
+        cont.point(0)  # nothing computed yet
+    branch = cont.run()
+    with pytest.raises(IndexError):
+        cont.point(99)
+    with pytest.raises(IndexError):
+        branch.sample(99)
+    with pytest.raises(ValueError, match="n = 1 is invalid"):
+        branch.sample(0, 1)
+    with pytest.raises(KeyError, match="valid columns"):
+        branch["omgea"]
+    with pytest.raises(TypeError):
+        stickslip.simulate(stickslip.presets["paper-5.1"].parameters, state=(1, 2, 3))
+    with pytest.raises(TypeError):
+        stickslip.solve(preset="paper-5.1", guess=[("d1", 3.0)])
+    with pytest.raises(TypeError):
+        stickslip.continue_orbit("omega", (0.5,), preset="paper-5.1")
+    with pytest.raises(TypeError):
+        stickslip.Continuation("omega", (0.5, 0.6), preset="paper-5.1", bogus=1)
+    assert not cont.step() and cont.ended
