@@ -39,13 +39,44 @@ def test_the_result_does_not_depend_on_the_threads():
     assert np.array_equal(one.section, two.section)
 
 
+def most_threads_during(call):
+    """The most threads this process had while `call` ran (sampled from another Python thread,
+    which runs only because the call releases the GIL)."""
+    seen = []
+    done = threading.Event()
+
+    def sample():
+        while not done.is_set():
+            seen.append(len(os.listdir("/proc/self/task")))
+            time.sleep(0.0005)
+
+    sampler = threading.Thread(target=sample)
+    sampler.start()
+    try:
+        call()
+    finally:
+        done.set()
+        sampler.join()
+    return max(seen)
+
+
+def test_a_sweep_from_python_runs_its_chains_on_several_threads():
+    work = dict(preset="paper-5.1", range=(0.55, 0.6), steps=10, transients=500, periods=20, chains=4)
+    one = most_threads_during(lambda: stickslip.sweep(**work, threads=1))
+    two = most_threads_during(lambda: stickslip.sweep(**work, threads=2))
+    every = most_threads_during(lambda: stickslip.sweep(**work))
+    # The caller is one worker: threads=2 adds one thread, threads=0 one per core beyond the first.
+    assert two == one + 1
+    assert every == one + min(4, os.cpu_count()) - 1
+
+
 def free_cores():
     """Cores not busy with other work right now (the load average over the last minute)."""
     return (os.cpu_count() or 1) - os.getloadavg()[0]
 
 
 def test_a_sweep_runs_on_several_threads_and_releases_the_gil():
-    work = dict(preset="paper-5.1", range=(0.55, 0.6), steps=6, transients=150, periods=10, chains=4)
+    work = dict(preset="paper-5.1", range=(0.55, 0.6), steps=10, transients=500, periods=20, chains=4)
     started = time.perf_counter()
     one = stickslip.sweep(**work, threads=1)
     serial = time.perf_counter() - started
