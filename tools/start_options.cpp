@@ -74,8 +74,4 @@ StartInput ToStartInput(const StartFlags& flags) {
   return input;
 }
 
-InvalidInput OnCommandLine(const InvalidInput& error) {
-  return error.field() == "restart" ? error.Renamed("point") : error;
-}
-
 }  // namespace stickslip::cli

@@ -37,8 +37,5 @@ void AddStartOptions(CLI::App& cmd, StartFlags* flags, StartOptions which);
 // Throws InvalidInput.
 StartInput ToStartInput(const StartFlags& flags);
 
-// The builder's error with its field named as the command line names it: the restart point is
-// --point's "point"; the other fields are the option names already (set for --set, ...).
-InvalidInput OnCommandLine(const InvalidInput& error);
 
 }  // namespace stickslip::cli

@@ -485,14 +485,12 @@ void BindErrors(py::module_& m) {
                                 "holds the Newton summary.",
                                 PyExc_RuntimeError, nullptr));
   convergence_error_type = m.attr("ConvergenceError").ptr();
-  // Bad input is ValueError with the command line's one line; the restart point is the option
-  // `point` there and here.
+  // Bad input is ValueError with the command line's one line, the fields named as the options.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InvalidInput& e) {
-      const InvalidInput named = e.field() == "restart" ? e.Renamed("point") : e;
-      PyErr_SetString(PyExc_ValueError, named.what());
+      PyErr_SetString(PyExc_ValueError, AsOption(e).what());
     }
   });
 }

@@ -10,6 +10,10 @@
 
 namespace stickslip {
 
+InvalidInput AsOption(const InvalidInput& error) {
+  return error.field() == "restart" ? error.Renamed("point") : error;
+}
+
 RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::string_view run_and_label) {
   const auto colon = run_and_label.find(':');
   if (colon == std::string_view::npos || colon == 0 || colon + 1 == run_and_label.size()) {

@@ -24,6 +24,10 @@
 
 namespace stickslip {
 
+// The start builder's error with its field named as the front ends' options name it: the
+// restart point is `point` (--point, point=); the other fields are the options' names already.
+InvalidInput AsOption(const InvalidInput& error);
+
 // A labelled point given as "RUN:LABEL", read from results_root/RUN for a restart. Throws
 // InvalidInput naming "restart" when the text is not RUN:LABEL, and as ReadRestartPoint
 // (io/start_input.hpp) when the point cannot be read.
