@@ -20,13 +20,15 @@ attribute holds the Newton summary. Long computations release the GIL; a sweep r
 on every core.
 """
 
+import inspect as _inspect
 from dataclasses import dataclass as _dataclass
 
 import numpy as _np
 
 from . import _stickslip as _core
 from ._stickslip import ConvergenceError, Orbit, Parameters, Signature, SweepResult
-from ._branch import Branch, Continuation, _continuation_options
+from ._branch import Branch, Continuation
+from ._inputs import _one_off_run, _start
 
 __all__ = [
     "Branch", "Continuation", "ConvergenceError", "Orbit", "Parameters", "Preset", "Signature",
@@ -67,48 +69,6 @@ def natural_frequencies(parameters):
     """(omega1, omega2): the natural frequencies of the slip for `parameters` (eq. 56). The forced
     amplitude is singular there, so omega must stay away from them."""
     return parameters.natural_frequencies
-
-
-# ---- The start of every computation, as the command line's --preset, --point, --set, ...
-
-def _named_values(values, field):
-    if values is None:
-        return []
-    if not isinstance(values, dict):
-        raise TypeError(f"{field} must be a dict of name: value, got {type(values).__name__}")
-    return [(str(name), float(value)) for name, value in values.items()]
-
-
-def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, results="results", set=None,
-           signature=None, guess=None, free=None, fix=None, tie_u_r=False, paper_choice=False):
-    pairs = []
-    if parameters is not None:
-        if not isinstance(parameters, Parameters):
-            raise TypeError(f"parameters must be a stickslip.Parameters, got {type(parameters).__name__}")
-        pairs += list(parameters.as_dict().items())
-    if state is not None:
-        values = [float(x) for x in _np.asarray(state, dtype=float).ravel()]
-        if len(values) != 4:
-            raise TypeError(f"state must hold (x10, x20, v10, v20), got {len(values)} values")
-        pairs += list(zip(("x10", "x20", "v10", "v20"), values))
-    if phi is not None:
-        pairs.append(("phi", float(phi)))
-    pairs += _named_values(set, "set")
-    if isinstance(free, str):
-        free = [free]
-    fixes = []
-    if isinstance(fix, str):
-        fix = [fix]
-    if isinstance(fix, dict):
-        fixes = [(str(k), None if v is None else float(v)) for k, v in fix.items()]
-    elif fix is not None:
-        fixes = [(str(k), None) for k in fix]
-    return {
-        "preset": preset or "", "point": point or "", "results": str(results),
-        "signature": "" if signature is None else str(signature),
-        "set": pairs, "guess": _named_values(guess, "guess"), "free": [str(f) for f in (free or [])],
-        "fix": fixes, "tie_u_r": bool(tie_u_r), "paper_choice": bool(paper_choice),
-    }
 
 
 class Simulation:
@@ -173,11 +133,7 @@ def solve(parameters=None, signature=None, *, preset=None, point=None, results="
     return _core._solve(start, str(shooting), str(linear_solver))
 
 
-def continue_orbit(parameter, range, *, direction="up", output="python", parameters=None, signature=None,
-                   preset=None, point=None, results="results", set=None, guess=None, free=None, fix=None,
-                   tie_u_r=False, ds=None, ds_min=None, ds_max=None, max_points=None, shooting=None,
-                   linear_solver=None, detect_folds=None, detect_branch_points=None,
-                   continue_past_type_changes=None, user_values=(), user_values_of=None):
+def continue_orbit(parameter, range, **keywords):
     """Continue a periodic orbit in `parameter` over `range` = (min, max), as `stickslip continue`
     (the keys of a run file's [continuation] table as keywords; left out, the engine's defaults).
 
@@ -193,12 +149,10 @@ def continue_orbit(parameter, range, *, direction="up", output="python", paramet
     The start keywords are solve()'s. Returns a Branch; raises ConvergenceError if the start does
     not converge, ValueError for bad input (the command line's message).
     """
-    options = _continuation_options(parameter, range, direction, output, results, ds, ds_min, ds_max, max_points,
-                                    shooting, linear_solver, detect_folds, detect_branch_points,
-                                    continue_past_type_changes, user_values, user_values_of)
-    start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
-                   guess=guess, free=free, fix=fix, tie_u_r=tie_u_r)
-    return Branch(_core._continue(_core._one_off_run(start, options)))
+    return Branch(_core._continue(_one_off_run(parameter, range, **keywords)))
+
+
+continue_orbit.__signature__ = _inspect.signature(_one_off_run)
 
 
 def run(path, results="results"):

@@ -8,28 +8,10 @@ import io as _io
 import numpy as _np
 
 from . import _stickslip as _core
+from ._inputs import _one_off_run
 
-_DEFAULTS = _core._continuation_defaults()
 _TEXT_COLUMNS = ("label", "type", "test_function")
 _INTEGER_COLUMNS = ("pt", "stable", "admissible", "newton_iterations", "located")
-
-
-def _continuation_options(parameter, range, direction, output, results, ds, ds_min, ds_max, max_points, shooting,
-                          linear_solver, detect_folds, detect_branch_points, continue_past_type_changes,
-                          user_values, user_values_of):
-    if range is None or len(range) != 2:
-        raise TypeError("range must be (min, max)")
-    given = {"ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points, "shooting": shooting,
-             "linear_solver": linear_solver, "detect_folds": detect_folds,
-             "detect_branch_points": detect_branch_points, "continue_past_type_changes": continue_past_type_changes}
-    options = {key: (_DEFAULTS[key] if value is None else value) for key, value in given.items()}
-    options.update({
-        "parameter": str(parameter), "range": (float(range[0]), float(range[1])), "direction": str(direction),
-        "output": str(output), "results": str(results),
-        "user_values": [float(v) for v in user_values],
-        "user_values_of": {str(k): [float(v) for v in vs] for k, vs in (user_values_of or {}).items()},
-    })
-    return options
 
 
 def _read_table(text):
@@ -165,20 +147,7 @@ class Continuation:
     """
 
     def __init__(self, parameter, range, **keywords):
-        from . import _start
-        options_keys = ("direction", "output", "ds", "ds_min", "ds_max", "max_points", "shooting", "linear_solver",
-                        "detect_folds", "detect_branch_points", "continue_past_type_changes", "user_values",
-                        "user_values_of")
-        options = {k: keywords.pop(k) for k in options_keys if k in keywords}
-        results = keywords.get("results", "results")
-        opts = _continuation_options(parameter, range, options.get("direction", "up"), options.get("output", "python"),
-                                     results, options.get("ds"), options.get("ds_min"), options.get("ds_max"),
-                                     options.get("max_points"), options.get("shooting"), options.get("linear_solver"),
-                                     options.get("detect_folds"), options.get("detect_branch_points"),
-                                     options.get("continue_past_type_changes"), options.get("user_values", ()),
-                                     options.get("user_values_of"))
-        keywords.pop("paper_choice", None)
-        self._stepper = _core._Stepper(_core._one_off_run(_start(**keywords), opts))
+        self._stepper = _core._Stepper(_one_off_run(parameter, range, **keywords))
         self._yielded = 0
 
     @classmethod
