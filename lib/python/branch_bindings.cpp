@@ -86,7 +86,12 @@ StoredRun Continue(const RunInput& input) {
   OrbitBranch branch;
   {
     py::gil_scoped_release release;
-    branch = ContinueOrbit(MakeSetup(input.run, input.results));
+    // Between steps the GIL is taken for a moment to see Ctrl-C (KeyboardInterrupt), which ends
+    // the continuation there.
+    branch = ContinueOrbit(MakeSetup(input.run, input.results), [](const Branch&) {
+      const py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    });
   }
   RaiseIfStartFailed(input, branch.branch);
   return RecordRun(input.run, branch);

@@ -165,3 +165,19 @@ def test_misuse_raises_python_errors_and_never_crashes():
     with pytest.raises(TypeError):
         stickslip.Continuation("omega", (0.5, 0.6), preset="paper-5.1", bogus=1)
     assert not cont.step() and cont.ended
+
+
+def test_ctrl_c_ends_a_long_continuation_between_steps():
+    import _thread
+    import threading
+    import time
+
+    timer = threading.Timer(0.2, _thread.interrupt_main)
+    timer.start()
+    started = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        # About 1e5 points of 1e-6 in arclength: minutes, unless interrupted.
+        stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", ds=1e-6, ds_min=1e-8, ds_max=1e-6,
+                                 max_points=1000000)
+    timer.join()
+    assert time.perf_counter() - started < 30
