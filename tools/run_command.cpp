@@ -15,6 +15,7 @@
 #include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/check.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 
@@ -162,39 +163,15 @@ std::vector<std::pair<int, std::string>> Directions(const ContinueArgs& args) {
   throw InvalidInput("direction", "'" + args.direction + "'", "up, down, both");
 }
 
-// A complaint about a run-file key, as the command line names its option: "(command line): key
-// 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r' twice ...".
-InvalidInput AsOption(const InvalidInput& error) {
-  static const std::vector<std::pair<std::string, std::string>> kOptions = {
-      {"start.set", "set"},          {"start.guess", "guess"},   {"start.preset", "preset"},
-      {"start.signature", "signature"}, {"start.restart", "point"}, {"unknowns.free", "free"},
-      {"unknowns.fix", "fix"},       {"unknowns.tie_u_r", "tie-u_r"}, {"continuation.range", "range"},
-      {"continuation.parameter", "parameter"}, {"continuation.user_values_of", "user-value"}};
-  for (const auto& [key, option] : kOptions) {
-    if (error.field() != key) continue;
-    const std::string what = error.what();
-    const std::string quoted = "key '" + key + "' ";
-    const auto at = what.find(quoted);
-    return InvalidInput::WithMessage(option, option + " " + (at == std::string::npos ? what : what.substr(at + quoted.size())));
-  }
-  return error;
-}
-
 int RunContinue(ContinueArgs args) {
   RunFile& run = args.run;
-  run.path = "(command line)";
+  run.path = kOneOffRunPath;
   SetRunFileStart(ToStartInput(args.start), &run);
   const auto comma = args.range.find(',');
   if (comma == std::string::npos) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX");
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
   run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
-  if (!(run.range_min < run.range_max)) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX with MIN < MAX");
-  if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
-    throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
-  }
-  if (run.max_points < 1 || run.max_points > 1000000) {
-    throw InvalidInput("max-points", run.max_points, "1 <= max-points <= 1000000");
-  }
+  CheckOneOffRun(run, args.range);
   for (const std::string& text : args.user_values) {
     const auto equals = text.find('=');
     if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");
@@ -205,10 +182,7 @@ int RunContinue(ContinueArgs args) {
   run.detect_branch_points = ParseSwitch("detect-branch-points", args.detect_branch_points);
   // Every output is checked before anything is computed.
   const std::vector<std::pair<int, std::string>> directions = Directions(args);
-  for (const auto& [direction, output] : directions) {
-    if (!IsRunName(output)) throw InvalidInput("output", "'" + output + "'", std::string(kRunNameRule));
-    CheckOutputDirectory(args.start.results, output);
-  }
+  for (const auto& [direction, output] : directions) CheckOutputDirectory(args.start.results, output);
   for (const auto& [direction, output] : directions) {
     run.direction = direction;
     run.output = output;

@@ -9,6 +9,7 @@ STICKSLIP_PACKAGES=(
   libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev
   auto-07p python3-numpy python3-matplotlib
+  python3-dev pybind11-dev python3-pybind11 python3-pytest
 )
 
 stickslip_install_packages() {

@@ -12,6 +12,7 @@
 #include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/model/transient.hpp"
@@ -76,14 +77,10 @@ int RunSimulate(const SimulateArgs& args) {
   if (!args.csv_path.empty()) CheckOutputFile(args.csv_path, "csv");
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   const double periods = ParseNumber("periods", args.periods, "0 < periods <= 1e6");
-  if (!(periods > 0.0 && periods <= 1e6)) {
-    throw InvalidInput("periods", periods, "0 < periods <= 1e6");
-  }
   const double samples_per_period =
       ParseNumber("samples-per-period", args.samples_per_period, "1 <= samples-per-period <= 1e5");
-  if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
-    throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
-  }
+  SimulationOptions options =
+      SimulationOver(input.parameters, periods, samples_per_period, !args.csv_path.empty());
   const int transients = ParseCount("transients", args.transients, 0, kMaxTransientPeriods);
   const double period = 2.0 * std::numbers::pi / input.parameters.omega;
   const Simulator simulate =
@@ -111,9 +108,6 @@ int RunSimulate(const SimulateArgs& args) {
     return kExitFailure;
   }
   const double t0 = settled.t;
-  SimulationOptions options;
-  options.duration = periods * period;
-  if (!args.csv_path.empty()) options.sample_step = period / samples_per_period;
   options.progress = reporting(transients);
   const SimulationResult result = simulate(input.parameters, settled.state, input.phi, options);
   line.Clear();

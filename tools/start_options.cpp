@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli_common.hpp"
-#include "stickslip/io/start_input.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/model/paper_examples.hpp"
 
 namespace stickslip::cli {
@@ -57,14 +57,7 @@ StartInput ToStartInput(const StartFlags& flags) {
   StartInput input;
   input.preset = flags.preset;
   input.signature = flags.signature;
-  if (!flags.point.empty()) {
-    const auto colon = flags.point.find(':');
-    if (colon == std::string::npos || colon == 0 || colon + 1 == flags.point.size()) {
-      throw InvalidInput::WithMessage(
-          "restart", fmt::format("restart = '{}' is invalid: valid RUN:LABEL, a labelled point of results/RUN", flags.point));
-    }
-    input.restart = ReadRestartPoint(flags.results, flags.point.substr(0, colon), flags.point.substr(colon + 1));
-  }
+  if (!flags.point.empty()) input.restart = ReadRestartPoint(flags.results, flags.point);
   input.set = Assignments(flags.set, "set");
   input.guess = Assignments(flags.guess, "guess");
   input.free = flags.free;
@@ -79,27 +72,6 @@ StartInput ToStartInput(const StartFlags& flags) {
   }
   input.tie_u_r = flags.tie_u_r;
   return input;
-}
-
-void SetRunFileStart(const StartInput& input, RunFile* run) {
-  run->preset = input.preset;
-  run->signature = input.signature;
-  if (input.restart) {
-    run->restart_run = input.restart->run;
-    run->restart_label = input.restart->label;
-  }
-  run->set = input.set;
-  run->guess = input.guess;
-  run->free = input.free;
-  for (const FixedVariable& f : input.fix) {
-    run->fix.push_back(f.name);
-    if (f.value) run->guess.emplace_back(f.name, *f.value);
-  }
-  run->tie_u_r = input.tie_u_r;
-}
-
-InvalidInput OnCommandLine(const InvalidInput& error) {
-  return error.field() == "restart" ? error.Renamed("point") : error;
 }
 
 }  // namespace stickslip::cli

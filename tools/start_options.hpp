@@ -37,14 +37,5 @@ void AddStartOptions(CLI::App& cmd, StartFlags* flags, StartOptions which);
 // Throws InvalidInput.
 StartInput ToStartInput(const StartFlags& flags);
 
-// continue: a run file's [start] and [unknowns] from the flags, so that the run goes through
-// MakeSetup like any run file (which reads the restart point again, by run and label). A value
-// given with --fix becomes the last guess of that variable, which is what a fix's value means
-// to the builder.
-void SetRunFileStart(const StartInput& input, RunFile* run);
-
-// The builder's error with its field named as the command line names it: the restart point is
-// --point's "point"; the other fields are the option names already (set for --set, ...).
-InvalidInput OnCommandLine(const InvalidInput& error);
 
 }  // namespace stickslip::cli

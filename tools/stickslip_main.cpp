@@ -9,6 +9,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "start_options.hpp"
+#include "stickslip/io/command_options.hpp"
 
 int main(int argc, char** argv) {
   using namespace stickslip::cli;
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
       if (command.subcommand->parsed()) return command.run();
     }
   } catch (const stickslip::InvalidInput& e) {
-    fmt::print(stderr, "error: {}\n", OnCommandLine(e).what());
+    fmt::print(stderr, "error: {}\n", stickslip::AsOption(e).what());
     return kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());

@@ -11,6 +11,7 @@
 #include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
@@ -18,63 +19,50 @@ namespace stickslip::cli {
 
 namespace {
 
+// The options as texts, with SweepCommand's defaults (which Python's sweep has too).
+std::string Text(double value) { return fmt::format("{}", value); }
 struct SweepArgs {
   StartFlags origin;
-  std::string parameter = "omega";
+  std::string parameter = SweepCommand{}.parameter;
   std::string from, to;
-  std::string steps = "40";
-  std::string transients = "500";
-  std::string periods = "20";
-  std::string start = "chained";
-  std::string chains = "4";
-  std::string scatter = "1";
-  std::string seed = "1";
-  std::string threads = "0";
+  std::string steps = Text(SweepCommand{}.steps);
+  std::string transients = Text(SweepCommand{}.transients);
+  std::string periods = Text(SweepCommand{}.periods);
+  std::string start = SweepCommand{}.start;
+  std::string chains = Text(SweepCommand{}.chains);
+  std::string scatter = Text(SweepCommand{}.scatter);
+  std::string seed = Text(SweepCommand{}.seed);
+  std::string threads = Text(SweepCommand{}.threads);
   std::string output;
 };
-
-int Count(const char* field, const std::string& text, int low, int high) {
-  const double value = ParseNumber(field, text, fmt::format("{} <= {} <= {}", low, field, high));
-  if (!(value >= low && value <= high) || value != static_cast<int>(value)) {
-    throw InvalidInput(field, text, fmt::format("whole numbers {} <= {} <= {}", low, field, high));
-  }
-  return static_cast<int>(value);
-}
 
 int RunSweep(const SweepArgs& args) {
   CheckOutputFile(args.output, "output");
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
-  const std::optional<ParameterId> parameter = ParameterFromString(args.parameter);
-  if (!parameter) {
-    throw InvalidInput("parameter", "'" + args.parameter + "'", "chi, eta, omega, u_s, u_r");
-  }
-  SweepOptions options;
-  options.parameter = *parameter;
-  options.from = ParseNumber("from", args.from, SetKeyRange(args.parameter));
-  options.to = ParseNumber("to", args.to, SetKeyRange(args.parameter));
-  options.steps = Count("steps", args.steps, 1, 100000);
-  options.transient_periods = Count("transients", args.transients, 0, 1000000);
-  options.recorded_periods = Count("periods", args.periods, 1, 100000);
-  if (args.start == "chained") {
-    options.start = SweepStart::kChained;
-  } else if (args.start == "fixed") {
-    options.start = SweepStart::kFixed;
-  } else {
-    throw InvalidInput("start", "'" + args.start + "'", "chained, fixed");
-  }
-  const int chains = Count("chains", args.chains, 1, 10000);
-  const double scatter = ParseNumber("scatter", args.scatter, "0 <= scatter <= 1e6");
-  if (!(scatter >= 0.0 && scatter <= 1e6)) {
-    throw InvalidInput("scatter", args.scatter, "0 <= scatter <= 1e6");
-  }
-  const int seed = Count("seed", args.seed, 0, 1000000000);
-  options.threads = Count("threads", args.threads, 0, 1024);
-  const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
+  SweepCommand command;
+  command.parameter = args.parameter;
+  // The texts become numbers here; PlanSweep checks them, as it does for Python's sweep.
+  auto number = [](const char* field, const std::string& text) {
+    return ParseNumber(field, text, SweepOptionRange(field));
+  };
+  command.from = ParseNumber("from", args.from, SetKeyRange(args.parameter));
+  command.to = ParseNumber("to", args.to, SetKeyRange(args.parameter));
+  command.steps = number("steps", args.steps);
+  command.transients = number("transients", args.transients);
+  command.periods = number("periods", args.periods);
+  command.start = args.start;
+  command.chains = number("chains", args.chains);
+  command.scatter = number("scatter", args.scatter);
+  command.seed = number("seed", args.seed);
+  command.threads = number("threads", args.threads);
+  const SweepPlan plan = PlanSweep(command, input);
+  SweepOptions options = plan.options;
+  const int chains = static_cast<int>(plan.starts.size());
   ProgressLine line("sweep");
   if (line.enabled()) options.progress = line.Callback();
-  const std::vector<SweepPoint> points = Sweep(input.parameters, starts, input.phi, options);
+  const std::vector<SweepPoint> points = Sweep(input.parameters, plan.starts, input.phi, options);
   line.Clear();
-  WriteFileAtomically(args.output, SweepCsv(points, *parameter, input.phi));
+  WriteFileAtomically(args.output, SweepCsv(points, options.parameter, input.phi));
   int periodic = 0;
   for (const SweepPoint& p : points) periodic += p.period > 0;
   const int items = options.start == SweepStart::kChained ? chains : chains * (options.steps + 1);

@@ -8,7 +8,7 @@ stickslip_install_packages
 if [ "${1:-}" = "--sanitize" ]; then
   dir="$STICKSLIP_ROOT/build/asan"
   stickslip_build "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTICKSLIP_SANITIZE=ON \
-    -DSTICKSLIP_BUILD_BENCHMARKS=OFF
+    -DSTICKSLIP_BUILD_BENCHMARKS=OFF -DSTICKSLIP_BUILD_PYTHON=OFF
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else

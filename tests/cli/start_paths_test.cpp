@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "start_options.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/run.hpp"
 
 namespace stickslip {
@@ -72,7 +73,7 @@ Seen ContinuePath(const PathCase& c) {
   run.parameter = c.parameter;
   run.range_min = -1e9;
   run.range_max = 1e9;
-  cli::SetRunFileStart(cli::ToStartInput(flags), &run);
+  SetRunFileStart(cli::ToStartInput(flags), &run);
   return FromSetup(MakeSetup(run, flags.results));
 }
 

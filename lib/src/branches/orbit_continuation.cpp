@@ -56,19 +56,23 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   return problem;
 }
 
-OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
-                          const std::function<void(const Branch&)>& observer) {
-  OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
+OrbitBranch ToOrbitBranch(const OrbitContinuationProblem& problem, Branch branch) {
   OrbitBranch result;
   result.shooting = problem.system->equations().shooting();
   result.columns = problem.monitor->Columns();
+  result.branch = std::move(branch);
+  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(problem.system->ToOrbit(p.u));
+  return result;
+}
+
+OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
+                          const std::function<void(const Branch&)>& observer) {
+  OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
   Continuation continuation(*problem.system, problem.monitor.get(), problem.options, problem.start);
   while (continuation.Step()) {
     if (observer) observer(continuation.branch());
   }
-  result.branch = continuation.branch();
-  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(problem.system->ToOrbit(p.u));
-  return result;
+  return ToOrbitBranch(problem, continuation.branch());
 }
 
 }  // namespace stickslip

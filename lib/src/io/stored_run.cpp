@@ -27,6 +27,15 @@ NamedValues SolutionColumns(const Orbit& orbit) {
   return columns;
 }
 
+std::vector<std::string> PointLabels(const Branch& branch) {
+  std::vector<std::string> labels(branch.points.size());
+  int counter = 0;
+  for (std::size_t i = 0; i < branch.points.size(); ++i) {
+    if (!branch.points[i].label.empty()) labels[i] = fmt::format("{}{}", branch.points[i].label, ++counter);
+  }
+  return labels;
+}
+
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
   // The monitor's columns by name: its margins, then what it records of the stability.
   auto record = [&](int i, std::string label) {
@@ -59,13 +68,8 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
   StoredRun stored;
   stored.summary = {run.path, STICKSLIP_VERSION, run.output, b.orbits.front().signature.ToString(), run.parameter,
                     ToString(b.shooting), ToString(b.branch.end), b.branch.end_message};
-  // AUTO-style labels: the type and a running number, in branch order.
-  std::vector<std::string> labels(b.branch.points.size());
-  int counter = 0;
-  for (std::size_t i = 0; i < b.branch.points.size(); ++i) {
-    if (!b.branch.points[i].label.empty()) labels[i] = fmt::format("{}{}", b.branch.points[i].label, ++counter);
-    stored.branch.push_back(record(static_cast<int>(i), labels[i]));
-  }
+  const std::vector<std::string> labels = PointLabels(b.branch);
+  for (std::size_t i = 0; i < b.branch.points.size(); ++i) stored.branch.push_back(record(static_cast<int>(i), labels[i]));
   for (const SpecialPoint& s : b.branch.special_points) {
     // An end that coincides with a located point keeps that point's label.
     const std::string label = labels[s.point].empty() ? s.type : labels[s.point];

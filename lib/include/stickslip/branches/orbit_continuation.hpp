@@ -46,5 +46,8 @@ struct OrbitContinuationProblem {
   Eigen::VectorXd start;
 };
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup);
+// The branch of a continuation stepped by hand on `problem`, as ContinueOrbit returns it: the
+// orbit of every point, the shooting and the monitor's columns.
+OrbitBranch ToOrbitBranch(const OrbitContinuationProblem& problem, Branch branch);
 
 }  // namespace stickslip

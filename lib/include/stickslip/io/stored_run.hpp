@@ -68,6 +68,10 @@ struct StoredRun {
 // x20, v10, d1..dn.
 NamedValues SolutionColumns(const Orbit& orbit);
 
+// The AUTO-style labels of a branch's points: the type and a running number in branch order
+// ("LP4"), empty for a regular point.
+std::vector<std::string> PointLabels(const Branch& branch);
+
 // The stored form of a branch just computed from `run`: the one place that reads the
 // continuation engine's Branch, so that a change there changes only this function.
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& branch);

@@ -1,0 +1,86 @@
+// The options of the front ends beyond the start problem, checked in one place: the command
+// line's simulate and continue and the Python module (lib/python/) call these, so that the same
+// input gives the same one-line message (InvalidInput) whichever way it arrives.
+//
+//   RunFile run;
+//   run.path = kOneOffRunPath;
+//   SetRunFileStart(input, &run);
+//   run.direction = ContinuationDirection("up");
+//   CheckOneOffRun(run, "0.3,0.9");
+//   OrbitContinuationSetup setup = MakeSetup(run, "results");
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <vector>
+
+#include "stickslip/analysis/sweep.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/start_problem.hpp"
+
+namespace stickslip {
+
+// The start builder's and a one-off run's errors with their field named as the front ends'
+// options name it: the restart point is `point` (--point, point=); a one-off run's run-file keys
+// are their options ("start.set" is set); the other fields are the options' names already.
+InvalidInput AsOption(const InvalidInput& error);
+// The path of a one-off run's RunFile, which its messages start with.
+inline constexpr std::string_view kOneOffRunPath = "(command line)";
+
+// A labelled point given as "RUN:LABEL", read from results_root/RUN for a restart. Throws
+// InvalidInput naming "restart" when the text is not RUN:LABEL, and as ReadRestartPoint
+// (io/start_input.hpp) when the point cannot be read.
+RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::string_view run_and_label);
+
+// simulate: `periods` forcing periods 2 pi/omega of simulated time (0 < periods <= 1e6), and a
+// sample every 1/samples_per_period of a period (1 <= samples_per_period <= 1e5) when `sampled`.
+// Throws InvalidInput naming "periods" or "samples-per-period".
+SimulationOptions SimulationOver(const Parameters& p, double periods, double samples_per_period, bool sampled);
+
+// A continuation run given by its keys instead of a run file (`stickslip continue`, Python's
+// continue_orbit): the start of `input` as the run file's [start] and [unknowns]. A value given
+// with a fix becomes the last guess of that variable, which is what a fix's value means to the
+// builder; MakeSetup reads the restart point again, by run and label.
+void SetRunFileStart(const StartInput& input, RunFile* run);
+
+// "up" -> +1, "down" -> -1. Throws InvalidInput naming "direction".
+int ContinuationDirection(std::string_view direction);
+
+// What the run-file reader checks at its keys, for a run given by its keys: range_min <
+// range_max (`range_text` is the range as the user wrote it, "MIN,MAX"), 0 < ds_min <= ds <=
+// ds_max, 1 <= max_points <= 1e6, and output a run name (IsRunName). Throws InvalidInput naming
+// "range", "ds", "max-points" or "output".
+void CheckOneOffRun(const RunFile& run, std::string_view range_text);
+
+// sweep: the options as given, numbers not yet checked to be whole or in range. The defaults are
+// the command line's and Python's.
+struct SweepCommand {
+  std::string parameter = "omega";  // chi, eta, omega, u_s or u_r
+  double from = 0.0;
+  double to = 0.0;
+  double steps = 40;        // whole numbers, each in the range SweepOptionRange gives
+  double transients = 500;
+  double periods = 20;
+  std::string start = "chained";  // or "fixed"
+  double chains = 4;
+  double scatter = 1.0;  // 0 <= scatter <= 1e6
+  double seed = 1;
+  double threads = 0;
+};
+// The valid range of a sweep option ("1 <= steps <= 100000"), for help texts and messages.
+std::string SweepOptionRange(std::string_view field);
+
+// The sweep `command` describes from `origin`: its options, and its chains' starting states
+// (ScatteredStarts around the origin's state). Throws InvalidInput naming "parameter", "start",
+// or the whole-number option out of its range; the swept values are checked by Sweep.
+struct SweepPlan {
+  SweepOptions options;
+  std::vector<State> starts;
+};
+SweepPlan PlanSweep(const SweepCommand& command, const ModelStart& origin);
+
+}  // namespace stickslip

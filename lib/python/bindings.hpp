@@ -1,0 +1,43 @@
+// What the two translation units of the Python module share: the start of a computation as the
+// Python layer hands it over, and the module's errors. The Pythonic signatures, keyword
+// defaults and docstrings live in stickslip/__init__.py; the functions bound here take the start
+// as one dict and compute with the GIL released.
+#pragma once
+
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "stickslip/numerics/newton.hpp"
+#include "stickslip/orbits/start_problem.hpp"
+
+namespace stickslip::python {
+
+namespace py = pybind11;
+
+// The start dict of stickslip/__init__.py (_start): preset, point, results, signature, set, guess
+// (lists of (name, value)), free (names), fix (list of (name, value or None)), tie_u_r,
+// paper_choice. The restart point is read here from results/RUN. Throws InvalidInput.
+StartInput ToStartInput(const py::dict& start);
+
+// Raises stickslip.ConvergenceError(message) with its `summary` attribute set (a dict).
+[[noreturn]] void RaiseConvergenceError(const std::string& message, py::dict summary);
+py::dict SummaryDict(const NewtonSummary& summary);
+
+// (t, x): `count` equally spaced times over one period of `orbit`, from 0 to the period, and the
+// state at each, by the orbit's closed-form flows. Throws InvalidInput naming "n".
+py::tuple SampleOrbit(const Orbit& orbit, int count);
+
+// A list of 4-vectors as an (n, 4) array.
+py::array_t<double> StateArray(const std::vector<State>& states);
+
+// The bindings of orbit_bindings.cpp (model, single orbits) and branch_bindings.cpp (branches,
+// continuation stepping, sweeps, runs). A new capability (find, trace) adds a function to one of
+// them and a wrapper to __init__.py.
+void BindErrors(py::module_& m);  // ConvergenceError, and InvalidInput as ValueError
+void BindOrbits(py::module_& m);
+void BindBranches(py::module_& m);
+
+}  // namespace stickslip::python

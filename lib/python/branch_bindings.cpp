@@ -1,0 +1,368 @@
+// Branches for Python: a continuation run given by keywords (as `stickslip continue`) or by a run
+// file (as `stickslip run`), continued in one call or stepped by hand, its stored form with the
+// library's one writer and reader of result files, and brute-force sweeps.
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bindings.hpp"
+#include "stickslip/analysis/sweep.hpp"
+#include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/command_options.hpp"
+#include "stickslip/io/result_files.hpp"
+#include "stickslip/io/run.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/io/stored_run.hpp"
+#include "stickslip/numerics/parallel_for.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The run a continuation computes: from a run file, or from keywords as `stickslip continue`
+// makes one (its summary.json records "(command line)" as the run file, as the command's does),
+// with the results root its restart point is read from.
+struct RunInput {
+  RunFile run;
+  std::string results = "results";
+};
+
+RunInput OneOffRun(const py::dict& start, const py::dict& o) {
+  RunInput input;
+  RunFile& run = input.run;
+  input.results = o["results"].cast<std::string>();
+  run.path = kOneOffRunPath;
+  SetRunFileStart(ToStartInput(start), &run);
+  run.output = o["output"].cast<std::string>();
+  run.parameter = o["parameter"].cast<std::string>();
+  run.direction = ContinuationDirection(o["direction"].cast<std::string>());
+  const auto range = o["range"].cast<std::pair<double, double>>();
+  run.range_min = range.first;
+  run.range_max = range.second;
+  run.ds = o["ds"].cast<double>();
+  run.ds_min = o["ds_min"].cast<double>();
+  run.ds_max = o["ds_max"].cast<double>();
+  run.max_points = o["max_points"].cast<int>();
+  CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
+  run.shooting = o["shooting"].cast<std::string>();
+  if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
+  run.linear_solver = o["linear_solver"].cast<std::string>();
+  if (!LinearSolverFromString(run.linear_solver)) {
+    throw InvalidInput("linear_solver", "'" + run.linear_solver + "'", "klu, umfpack, dense");
+  }
+  run.detect_folds = o["detect_folds"].cast<bool>();
+  run.detect_branch_points = o["detect_branch_points"].cast<bool>();
+  run.continue_past_type_changes = o["continue_past_type_changes"].cast<bool>();
+  for (double v : o["user_values"].cast<std::vector<double>>()) run.user_values.emplace_back(run.parameter, v);
+  for (const auto& [name, values] : o["user_values_of"].cast<py::dict>()) {
+    for (double v : values.cast<std::vector<double>>()) run.user_values.emplace_back(name.cast<std::string>(), v);
+  }
+  return input;
+}
+
+RunInput RunFileInput(const std::string& path, const std::string& results) {
+  return RunInput{ReadRunFile(path), results};
+}
+
+// A start that did not converge ends nothing: it raises, as the command line exits 3.
+void RaiseIfStartFailed(const RunInput& input, const Branch& branch) {
+  if (branch.end != BranchEnd::kStartFailed) return;
+  py::dict summary;
+  summary["termination"] = ToString(branch.end);
+  summary["message"] = branch.end_message;
+  RaiseConvergenceError(fmt::format("{}: {}", input.run.path, branch.end_message), summary);
+}
+
+StoredRun Continue(const RunInput& input) {
+  OrbitBranch branch;
+  {
+    py::gil_scoped_release release;
+    // Between steps the GIL is taken for a moment to see Ctrl-C (KeyboardInterrupt), which ends
+    // the continuation there.
+    branch = ContinueOrbit(MakeSetup(input.run, input.results), [](const Branch&) {
+      const py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    });
+  }
+  RaiseIfStartFailed(input, branch.branch);
+  return RecordRun(input.run, branch);
+}
+
+// A run's directory: its three files through the library's one writer, the name of the directory
+// in summary.json's "output" (so that a restart by name finds it), other files kept.
+std::vector<std::string> Save(const StoredRun& run, const std::string& directory) {
+  const fs::path path = fs::absolute(fs::path(directory)).lexically_normal();
+  const fs::path name = path.filename().empty() ? path.parent_path().filename() : path.filename();
+  const fs::path root = path.filename().empty() ? path.parent_path().parent_path() : path.parent_path();
+  StoredRun named = run;
+  named.summary.output = name.string();
+  if (!IsRunName(named.summary.output)) {
+    throw InvalidInput("directory", "'" + directory + "'", std::string(kRunNameRule));
+  }
+  return WriteRunFiles(root, named);
+}
+
+py::dict SummaryOf(const StoredRun& run) {
+  const StoredSummary& s = run.summary;
+  py::dict d;
+  d["run_file"] = s.run_file;
+  d["stickslip_version"] = s.stickslip_version;
+  d["output"] = s.output;
+  d["signature"] = s.signature;
+  d["parameter"] = s.parameter;
+  d["shooting"] = s.shooting;
+  d["termination"] = s.termination;
+  d["message"] = s.message;
+  return d;
+}
+
+// The continuation stepped by hand: the setup, the orbit problem and the engine, owned together
+// so that the engine's references stay valid as long as Python holds the object.
+class Stepper {
+ public:
+  explicit Stepper(RunInput input)
+      : input_(std::move(input)),
+        setup_(MakeSetup(input_.run, input_.results)),
+        problem_(MakeOrbitContinuation(setup_)),
+        continuation_(std::make_unique<Continuation>(*problem_.system, problem_.monitor.get(), problem_.options,
+                                                     problem_.start)) {}
+
+  bool Step() {
+    bool more = false;
+    std::optional<Branch> failed;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);  // one step at a time, whatever the threads
+      more = continuation_->Step();
+      if (!more && continuation_->branch().end == BranchEnd::kStartFailed) failed = continuation_->branch();
+    }
+    if (failed) RaiseIfStartFailed(input_, *failed);
+    return more;
+  }
+
+  // The inspections wait for a step running in another thread.
+  int Size() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return static_cast<int>(continuation_->branch().points.size());
+  }
+  bool Ended() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return continuation_->branch().end != BranchEnd::kRunning;
+  }
+  std::string End() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return ToString(continuation_->branch().end);
+  }
+  std::string EndMessage() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return continuation_->branch().end_message;
+  }
+
+  // Point i (0-based) as the result files have it: the orbit's variables, then every column.
+  py::dict Point(int i) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const Branch& branch = continuation_->branch();
+    const int size = static_cast<int>(branch.points.size());
+    if (i < 0) i += size;
+    if (i < 0 || i >= size) throw py::index_error(fmt::format("point {} of {}", i, size));
+    const BranchPoint& p = branch.points[i];
+    py::dict d;
+    d["pt"] = i + 1;
+    d["label"] = PointLabels(branch)[i];
+    d["lambda"] = p.lambda;
+    for (const auto& [name, value] : SolutionColumns(problem_.system->ToOrbit(p.u))) d[py::str(name)] = value;
+    const std::vector<PointColumn>& columns = problem_.monitor->Columns();
+    const std::vector<double> values = ColumnValues(columns, p);
+    for (std::size_t k = 0; k < columns.size(); ++k) d[py::str(columns[k].name)] = values[k];
+    d["newton_iterations"] = p.newton_iterations;
+    d["step_size"] = p.ds;
+    return d;
+  }
+
+  StoredRun Stored() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return RecordRun(input_.run, ToOrbitBranch(problem_, continuation_->branch()));
+  }
+
+ private:
+  RunInput input_;
+  OrbitContinuationSetup setup_;
+  OrbitContinuationProblem problem_;
+  std::unique_ptr<Continuation> continuation_;
+  mutable std::mutex mutex_;
+};
+
+// ---- sweep
+
+struct SweepResult {
+  std::vector<SweepPoint> points;
+  ParameterId parameter = ParameterId::kOmega;
+  double phi_section = 0.0;
+  int threads = 1;  // the threads the sweep ran on
+  int chains = 1;
+};
+
+SweepResult RunSweep(const py::dict& start, const py::dict& o) {
+  const ModelStart origin = BuildModelStart(ToStartInput(start));
+  SweepCommand command;
+  command.parameter = o["parameter"].cast<std::string>();
+  command.from = o["from"].cast<double>();
+  command.to = o["to"].cast<double>();
+  command.steps = o["steps"].cast<double>();
+  command.transients = o["transients"].cast<double>();
+  command.periods = o["periods"].cast<double>();
+  command.start = o["start"].cast<std::string>();
+  command.chains = o["chains"].cast<double>();
+  command.scatter = o["scatter"].cast<double>();
+  command.seed = o["seed"].cast<double>();
+  command.threads = o["threads"].cast<double>();
+  const SweepPlan plan = PlanSweep(command, origin);
+  SweepResult result;
+  result.parameter = plan.options.parameter;
+  result.phi_section = origin.phi;
+  result.chains = static_cast<int>(plan.starts.size());
+  const int items = plan.options.start == SweepStart::kChained ? result.chains
+                                                                : result.chains * (plan.options.steps + 1);
+  result.threads = WorkerCount(plan.options.threads, items);
+  {
+    py::gil_scoped_release release;
+    result.points = Sweep(origin.parameters, plan.starts, origin.phi, plan.options);
+  }
+  return result;
+}
+
+template <typename T, typename Get>
+py::array_t<T> Column(const SweepResult& r, Get get) {
+  py::array_t<T> a(static_cast<py::ssize_t>(r.points.size()));
+  for (std::size_t i = 0; i < r.points.size(); ++i) a.mutable_at(i) = get(r.points[i]);
+  return a;
+}
+
+void BindSweep(py::module_& m) {
+  py::class_<SweepResult>(m, "SweepResult",
+                          "A brute-force sweep: one row per (chain, pass, step), ordered by chain, pass (up\n"
+                          "before down) and step whatever the threads; `section` holds the recorded\n"
+                          "stroboscopic states, shape (rows, periods, 4).")
+      .def_property_readonly("parameter", [](const SweepResult& r) { return std::string(ToString(r.parameter)); })
+      .def_property_readonly("section_phase", [](const SweepResult& r) { return r.phi_section; })
+      .def_property_readonly("threads", [](const SweepResult& r) { return r.threads; },
+                             "the threads the sweep ran on")
+      .def_property_readonly("chains", [](const SweepResult& r) { return r.chains; })
+      .def_property_readonly("value", [](const SweepResult& r) { return Column<double>(r, [](auto& p) { return p.value; }); },
+                             "the swept parameter's value")
+      .def_property_readonly("chain", [](const SweepResult& r) { return Column<int>(r, [](auto& p) { return p.chain; }); })
+      .def_property_readonly("step", [](const SweepResult& r) { return Column<int>(r, [](auto& p) { return p.step; }); })
+      .def_property_readonly("passes",
+                             [](const SweepResult& r) {
+                               py::list l;
+                               for (const SweepPoint& p : r.points) l.append(ToString(p.pass));
+                               return l;
+                             },
+                             "'up', 'down' or 'fixed' per row")
+      .def_property_readonly("stops_per_period",
+                             [](const SweepResult& r) { return Column<double>(r, [](auto& p) { return p.stops_per_period; }); })
+      .def_property_readonly("sticks_per_period",
+                             [](const SweepResult& r) { return Column<double>(r, [](auto& p) { return p.sticks_per_period; }); })
+      .def_property_readonly("period", [](const SweepResult& r) { return Column<int>(r, [](auto& p) { return p.period; }); },
+                             "the period of the motion in forcing periods; 0 if none was found")
+      .def_property_readonly("section",
+                             [](const SweepResult& r) {
+                               const py::ssize_t rows = static_cast<py::ssize_t>(r.points.size());
+                               const py::ssize_t k = rows == 0 ? 0 : static_cast<py::ssize_t>(r.points[0].section.size());
+                               py::array_t<double> a({rows, k, py::ssize_t{4}});
+                               for (py::ssize_t i = 0; i < rows; ++i) {
+                                 for (py::ssize_t j = 0; j < k; ++j) {
+                                   for (int c = 0; c < 4; ++c) a.mutable_at(i, j, c) = r.points[i].section[j](c);
+                                 }
+                               }
+                               return a;
+                             })
+      .def("csv", [](const SweepResult& r) { return SweepCsv(r.points, r.parameter, r.phi_section); },
+           "The CSV text `stickslip sweep --output` writes for the same sweep")
+      .def("__len__", [](const SweepResult& r) { return r.points.size(); });
+  m.def("_sweep", &RunSweep, py::arg("start"), py::arg("options"));
+}
+
+}  // namespace
+
+void BindBranches(py::module_& m) {
+  py::class_<RunInput>(m, "_RunInput")
+      .def_property_readonly("output", [](const RunInput& r) { return r.run.output; })
+      .def_property_readonly("parameter", [](const RunInput& r) { return r.run.parameter; })
+      .def_property_readonly("path", [](const RunInput& r) { return r.run.path; });
+  m.def("_one_off_run", &OneOffRun, py::arg("start"), py::arg("options"));
+  m.def("_run_file", &RunFileInput, py::arg("path"), py::arg("results"));
+  m.def("_continue", &Continue, py::arg("run"));
+  // The defaults of the keywords, stated once: a run file's (the engine's) and the sweep's.
+  m.def("_continuation_defaults", [] {
+    const RunFile run;
+    py::dict d;
+    d["ds"] = run.ds;
+    d["ds_min"] = run.ds_min;
+    d["ds_max"] = run.ds_max;
+    d["max_points"] = run.max_points;
+    d["shooting"] = run.shooting;
+    d["linear_solver"] = run.linear_solver;
+    d["detect_folds"] = run.detect_folds;
+    d["detect_branch_points"] = run.detect_branch_points;
+    d["continue_past_type_changes"] = run.continue_past_type_changes;
+    return d;
+  });
+  m.def("_sweep_defaults", [] {
+    const SweepCommand c;
+    py::dict d;
+    d["parameter"] = c.parameter;
+    d["steps"] = static_cast<int>(c.steps);
+    d["transients"] = static_cast<int>(c.transients);
+    d["periods"] = static_cast<int>(c.periods);
+    d["start"] = c.start;
+    d["chains"] = static_cast<int>(c.chains);
+    d["scatter"] = c.scatter;
+    d["seed"] = static_cast<int>(c.seed);
+    d["threads"] = static_cast<int>(c.threads);
+    return d;
+  });
+
+  py::class_<StoredRun>(m, "_StoredRun")
+      .def("files",
+           [](const StoredRun& r) {
+             const RunFiles f = FormatRunFiles(r);
+             return py::make_tuple(f.branch_csv, f.special_points_csv, f.summary_json);
+           })
+      .def("save", &Save, py::arg("directory"))
+      .def_static("load", [](const std::string& directory) { return ReadRunFiles(directory); }, py::arg("directory"))
+      .def_property_readonly("summary", &SummaryOf)
+      .def(
+          "sample",
+          [](const StoredRun& r, int point, int n) {
+            const int size = static_cast<int>(r.branch.size());
+            if (point < 0) point += size;
+            if (point < 0 || point >= size) throw py::index_error(fmt::format("point {} of {}", point, size));
+            return SampleOrbit(r.branch[point].orbit, n);
+          },
+          py::arg("point"), py::arg("n"))
+      .def("__len__", [](const StoredRun& r) { return r.branch.size(); });
+
+  py::class_<Stepper>(m, "_Stepper")
+      .def(py::init<RunInput>(), py::arg("run"))
+      .def("step", &Stepper::Step)
+      .def("__len__", &Stepper::Size)
+      .def("point", &Stepper::Point, py::arg("index"))
+      .def_property_readonly("ended", &Stepper::Ended)
+      .def_property_readonly("end", &Stepper::End)
+      .def_property_readonly("end_message", &Stepper::EndMessage)
+      .def("stored", &Stepper::Stored);
+
+  BindSweep(m);
+}
+
+}  // namespace stickslip::python

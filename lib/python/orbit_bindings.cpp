@@ -1,0 +1,505 @@
+// The model and single orbits for Python: Parameters, the paper presets, simulate, Signature,
+// solve and the Orbit it returns; the module's errors; the start dict every computation takes.
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include <pybind11/operators.h>
+
+#include "bindings.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/command_options.hpp"
+#include "stickslip/io/stored_run.hpp"
+#include "stickslip/model/modal.hpp"
+#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
+#include "stickslip/orbits/paper_presets.hpp"
+#include "stickslip/orbits/stability.hpp"
+#include "stickslip/orbits/verification.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+namespace ov = orbit_variables;
+
+// stickslip.ConvergenceError, created once when the module is imported; the module holds the
+// reference, so that nothing is released after the interpreter has ended.
+PyObject* convergence_error_type = nullptr;
+
+NamedValues ToNamedValues(const py::handle& list) {
+  NamedValues values;
+  for (const py::handle item : list) {
+    const auto pair = item.cast<std::pair<std::string, double>>();
+    values.push_back(pair);
+  }
+  return values;
+}
+
+py::list ModeList(const std::vector<Mode>& modes) {
+  py::list list;
+  for (Mode m : modes) list.append(ToString(m));
+  return list;
+}
+
+// ---- Parameters
+
+Parameters MakeParameters(double chi, double eta, double omega, double u_s, double u_r) {
+  const Parameters p{chi, eta, omega, u_s, u_r};
+  if (const std::optional<InvalidInput> invalid = Validate(p)) throw *invalid;
+  return p;
+}
+
+std::string DescribeParameters(const Parameters& p) {
+  std::string text;
+  for (ParameterId id : kAllParameters) text += fmt::format("{}{}={}", text.empty() ? "" : ", ", ToString(id), p[id]);
+  return text;
+}
+
+// ---- simulate
+
+py::dict SimulationDict(const SimulationResult& r) {
+  const std::size_t n_events = r.events.size();
+  py::array_t<double> t_events(static_cast<py::ssize_t>(n_events));
+  std::vector<State> event_states;
+  py::list kinds, before, after;
+  for (std::size_t i = 0; i < n_events; ++i) {
+    const Event& e = r.events[i];
+    t_events.mutable_at(i) = e.t;
+    event_states.push_back(e.state);
+    kinds.append(e.IsAbnormalStop() ? "abnormal-stop" : ToString(e.kind));
+    before.append(ToString(e.mode_before));
+    after.append(ToString(e.mode_after));
+  }
+  py::dict events;
+  events["t"] = t_events;
+  events["kind"] = kinds;
+  events["mode_before"] = before;
+  events["mode_after"] = after;
+  events["state"] = StateArray(event_states);
+
+  py::array_t<double> t_samples(static_cast<py::ssize_t>(r.samples.size()));
+  std::vector<State> sample_states;
+  py::list sample_modes;
+  std::size_t segment = 0;
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    const TimeSample& s = r.samples[i];
+    while (segment + 1 < r.segments.size() && r.segments[segment].t_end < s.t) ++segment;
+    t_samples.mutable_at(i) = s.t;
+    sample_states.push_back(s.state);
+    sample_modes.append(r.segments.empty() ? "" : ToString(r.segments[segment].mode));
+  }
+  py::dict samples;
+  samples["t"] = t_samples;
+  samples["state"] = StateArray(sample_states);
+  samples["mode"] = sample_modes;
+
+  py::list segments;
+  for (const Segment& s : r.segments) {
+    segments.append(py::dict(py::arg("mode") = ToString(s.mode), py::arg("t_start") = s.t_start,
+                             py::arg("t_end") = s.t_end, py::arg("end") = ToString(s.end_reason)));
+  }
+  py::dict out;
+  out["parameters"] = r.parameters;
+  out["phi"] = r.phi;
+  out["events"] = events;
+  out["samples"] = samples;
+  out["segments"] = segments;
+  out["end"] = ToString(r.end);
+  out["message"] = r.message;
+  out["completed"] = r.Completed();
+  return out;
+}
+
+py::dict Simulate(const py::dict& start, double periods, const std::string& method, double samples_per_period) {
+  const ModelStart input = BuildModelStart(ToStartInput(start));
+  const SimulationOptions options = SimulationOver(input.parameters, periods, samples_per_period, true);
+  if (method != "exact" && method != "odeint") throw InvalidInput("method", "'" + method + "'", "exact, odeint");
+  SimulationResult result;
+  {
+    py::gil_scoped_release release;
+    result = method == "exact" ? SimulateExact(input.parameters, input.initial_state, input.phi, options)
+                               : SimulateOdeint(input.parameters, input.initial_state, input.phi, options);
+  }
+  py::dict out = SimulationDict(result);
+  out["initial_state"] = py::array_t<double>(4, input.initial_state.data());
+  return out;
+}
+
+// ---- solve
+
+// A solved orbit with everything `stickslip solve` reports about it.
+struct SolvedOrbit {
+  Orbit orbit;
+  NewtonSummary summary;
+  Shooting shooting = Shooting::kSingle;
+  std::vector<std::string> unknowns;  // the free variables' names
+  bool tie_u_r = false;
+  std::vector<Margin> margins;
+  Stability stability;
+  Verification verification;
+};
+
+SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std::string& linear_solver) {
+  const StartProblem problem = BuildStartProblem(ToStartInput(start));
+  OrbitSolverOptions options;
+  const std::optional<ShootingChoice> choice = ShootingChoiceFromString(shooting);
+  if (!choice) throw InvalidInput("shooting", "'" + shooting + "'", "auto, single, multiple");
+  options.shooting = *choice;
+  const std::optional<LinearSolverType> solver = LinearSolverFromString(linear_solver);
+  if (!solver) throw InvalidInput("linear-solver", "'" + linear_solver + "'", "klu, umfpack, dense");
+  options.sparse_solver = *solver;
+  std::vector<std::string> unknowns;
+  for (int index : problem.free) unknowns.push_back(ov::Name(problem.orbit.signature.size(), index));
+  std::optional<SolvedOrbit> solved;
+  NewtonSummary failed;
+  {
+    py::gil_scoped_release release;
+    OrbitSolution solution = SolveOrbit(problem.orbit, problem.free, problem.unknowns.tie_static_friction, options);
+    if (solution.summary.Converged()) {
+      std::vector<Margin> margins = AdmissibilityMargins(solution.orbit);
+      Stability stability = StabilityOf(solution.orbit);
+      Verification verification = VerifyOrbit(solution.orbit);
+      solved = SolvedOrbit{std::move(solution.orbit), std::move(solution.summary), solution.shooting,
+                           std::move(unknowns), problem.unknowns.tie_static_friction, std::move(margins),
+                           std::move(stability), std::move(verification)};
+    } else {
+      failed = std::move(solution.summary);
+    }
+  }
+  if (!solved) RaiseConvergenceError("Newton did not converge: " + failed.BriefReport(), SummaryDict(failed));
+  return std::move(*solved);
+}
+
+py::dict SimulatorCheckDict(const SimulatorCheck& c, bool simulated) {
+  py::dict d;
+  d["events"] = ModeList(c.modes);
+  d["sequence_matches"] = c.sequence_matches;
+  d["max_mismatch"] = simulated ? py::cast(c.periodicity_mismatch) : py::none();
+  d["max_event_time_difference"] = simulated ? py::cast(c.max_event_time_difference) : py::none();
+  return d;
+}
+
+py::dict VerificationDict(const Verification& v) {
+  const bool simulated = v.not_simulated.empty();
+  py::dict d;
+  d["passed"] = v.Passed();
+  d["not_simulated"] = simulated ? py::none() : py::cast(v.not_simulated);
+  d["expected"] = ModeList(v.expected);
+  d["exact"] = SimulatorCheckDict(v.exact, simulated);
+  d["odeint"] = SimulatorCheckDict(v.odeint, simulated);
+  d["report"] = v.Report();
+  return d;
+}
+
+py::dict VariablesDict(const Orbit& orbit) {
+  py::dict d;
+  for (const auto& [name, value] : SolutionColumns(orbit)) d[py::str(name)] = value;
+  return d;
+}
+
+void BindSolvedOrbit(py::module_& m) {
+  py::class_<SolvedOrbit>(m, "Orbit",
+                          "A periodic orbit solved by stickslip.solve: its unknowns, the Newton summary, the\n"
+                          "admissibility margins (> 0 admissible), the Floquet multipliers and the verification by\n"
+                          "the exact and the Odeint simulators, as `stickslip solve` reports them. Time is the\n"
+                          "paper's scaled time t.")
+      .def_property_readonly("signature", [](const SolvedOrbit& s) { return s.orbit.signature; })
+      .def_property_readonly("parameters", [](const SolvedOrbit& s) { return s.orbit.parameters; })
+      .def_property_readonly("x10", [](const SolvedOrbit& s) { return s.orbit.x10; }, "x1 at the start (a stop)")
+      .def_property_readonly("x20", [](const SolvedOrbit& s) { return s.orbit.x20; }, "x2 at the start")
+      .def_property_readonly("v10", [](const SolvedOrbit& s) { return s.orbit.v10; }, "x1' at the start (x2' = 0)")
+      .def_property_readonly("phi", [](const SolvedOrbit& s) { return s.orbit.phi; }, "forcing phase at t = 0 (rad)")
+      .def_property_readonly(
+          "durations", [](const SolvedOrbit& s) { return py::array_t<double>(py::cast(s.orbit.durations)); },
+          "d1..dn: the listed segments' durations (scaled time)")
+      .def_property_readonly("period", [](const SolvedOrbit& s) { return s.orbit.Period(); },
+                             "K 2 pi/omega, the time after which the orbit repeats")
+      .def_property_readonly("variables", [](const SolvedOrbit& s) { return VariablesDict(s.orbit); },
+                             "every orbit variable by name, in the order of the result files")
+      .def_property_readonly(
+          "unknowns",
+          [](const SolvedOrbit& s) {
+            py::dict d;
+            const Eigen::VectorXd all = ov::Pack(s.orbit);
+            for (const std::string& name : s.unknowns) {
+              d[py::str(name)] = all(*ov::IndexOf(s.orbit.signature.size(), name));
+            }
+            return d;
+          },
+          "the solved variables and their values (u_r follows u_s when tie_u_r)")
+      .def_property_readonly("tie_u_r", [](const SolvedOrbit& s) { return s.tie_u_r; })
+      .def_property_readonly("newton", [](const SolvedOrbit& s) { return SummaryDict(s.summary); },
+                             "the Newton summary: termination, iterations, residual norms, condition number")
+      .def_property_readonly("shooting", [](const SolvedOrbit& s) { return std::string(ToString(s.shooting)); })
+      .def_property_readonly(
+          "margins",
+          [](const SolvedOrbit& s) {
+            py::dict d;
+            for (const Margin& margin : s.margins) d[py::str(margin.Name())] = margin.value;
+            return d;
+          },
+          "admissibility margins by name (> 0: admissible; NaN: not defined)")
+      .def_property_readonly(
+          "smallest_margin",
+          [](const SolvedOrbit& s) {
+            const Margin smallest = SmallestMargin(s.margins);
+            return py::make_tuple(smallest.Name(), smallest.value);
+          },
+          "(name, value) of the smallest margin: the distance to the nearest change of orbit type")
+      .def_property_readonly(
+          "admissible",
+          [](const SolvedOrbit& s) { return SmallestMargin(s.margins).value > 0; },
+          "every margin > 0: the orbit is a motion of the system")
+      .def_property_readonly(
+          "multipliers",
+          [](const SolvedOrbit& s) {
+            py::array_t<std::complex<double>> mu(4);
+            for (int k = 0; k < 4; ++k) mu.mutable_at(k) = s.stability.multipliers[k];
+            return mu;
+          },
+          "Floquet multipliers (monodromy with saltation matrices), by decreasing modulus")
+      .def_property_readonly(
+          "monodromy",
+          [](const SolvedOrbit& s) {
+            py::array_t<double> monodromy({4, 4});
+            for (int i = 0; i < 4; ++i) {
+              for (int j = 0; j < 4; ++j) monodromy.mutable_at(i, j) = s.stability.monodromy(i, j);
+            }
+            return monodromy;
+          },
+          "the 4x4 monodromy matrix of the period map")
+      .def_property_readonly("stable", [](const SolvedOrbit& s) { return s.stability.stable; },
+                             "every |multiplier| < 1")
+      .def_property_readonly("multipliers_one_sided", [](const SolvedOrbit& s) { return s.stability.one_sided; },
+                             "the multipliers are one-sided (abnormal stops, section 4.2)")
+      .def_property_readonly("verification", [](const SolvedOrbit& s) { return VerificationDict(s.verification); },
+                             "one period simulated by the exact and the Odeint simulators")
+      .def("sample", [](const SolvedOrbit& s, int n) { return SampleOrbit(s.orbit, n); }, py::arg("n") = 200,
+           "(t, x): n >= 2 equally spaced times over one period, from 0 to the period, and the state\n"
+           "(x1, x2, x1', x2') at each, as arrays of shapes (n,) and (n, 4)")
+      .def("__repr__", [](const SolvedOrbit& s) {
+        return fmt::format("<stickslip.Orbit '{}' {}, period {}>", s.orbit.signature.ToString(),
+                           DescribeParameters(s.orbit.parameters), s.orbit.Period());
+      });
+}
+
+void BindSignature(py::module_& m) {
+  py::class_<Signature>(m, "Signature",
+                        "An orbit type: the cyclic sequence of slip and stick segments, then options after a\n"
+                        "slash: Signature(\"slip- slip+ stick slip+\"), \"slip- stick slip- / antisymmetric\",\n"
+                        "\"slip- slip+ / period 2\". Bad text raises ValueError.")
+      .def(py::init([](const std::string& text) { return Signature::Parse(text); }), py::arg("text"))
+      .def_property_readonly("segments", [](const Signature& s) { return ModeList(s.segments()); },
+                             "the listed segments' modes")
+      .def_property_readonly("antisymmetric", &Signature::antisymmetric)
+      .def_property_readonly("period_multiple", &Signature::period_multiple)
+      .def_property_readonly("full_period", [](const Signature& s) { return ModeList(s.FullPeriod()); },
+                             "the segments over a whole period (the mirror image added when antisymmetric)")
+      .def_property_readonly(
+          "end_kinds",
+          [](const Signature& s) {
+            py::list kinds;
+            for (int i = 0; i < s.size(); ++i) kinds.append(ToString(s.EndKind(i)));
+            return kinds;
+          },
+          "what ends each listed segment")
+      .def("__len__", &Signature::size)
+      .def("__str__", &Signature::ToString)
+      .def("__repr__", [](const Signature& s) { return fmt::format("stickslip.Signature('{}')", s.ToString()); })
+      .def(py::self == py::self)
+      .def("__hash__", [](const Signature& s) { return py::hash(py::str(s.ToString())); });
+}
+
+void BindParameters(py::module_& m) {
+  py::class_<Parameters>(m, "Parameters",
+                         "The oscillator's dimensionless data (Pascal 2014, eq. 3), checked on construction:\n"
+                         "  chi    stiffness ratio k2/(k1+k2), 0.01 <= chi <= 0.99\n"
+                         "  eta    mass ratio m1/m2, 0.01 <= eta <= 100\n"
+                         "  omega  forcing frequency, 0.01 <= omega <= 100, not a natural frequency\n"
+                         "  u_s    sliding friction level, 1e-06 <= u_s <= 1000\n"
+                         "  u_r    static friction level, u_s <= u_r <= 1000\n"
+                         "Bad values raise ValueError with the command line's message.")
+      .def(py::init(&MakeParameters), py::kw_only(), py::arg("chi"), py::arg("eta"), py::arg("omega"),
+           py::arg("u_s"), py::arg("u_r"))
+      .def_property_readonly("chi", [](const Parameters& p) { return p.chi; })
+      .def_property_readonly("eta", [](const Parameters& p) { return p.eta; })
+      .def_property_readonly("omega", [](const Parameters& p) { return p.omega; })
+      .def_property_readonly("u_s", [](const Parameters& p) { return p.u_s; })
+      .def_property_readonly("u_r", [](const Parameters& p) { return p.u_r; })
+      .def_property_readonly(
+          "natural_frequencies",
+          [](const Parameters& p) {
+            const auto [w1, w2] = NaturalFrequencies(p.chi, p.eta);
+            return py::make_tuple(w1, w2);
+          },
+          "(omega1, omega2): the natural frequencies of the slip (eq. 56), where the forced amplitude\n"
+          "is singular")
+      .def(
+          "replace",
+          [](const Parameters& p, const py::kwargs& changes) {
+            Parameters q = p;
+            for (const auto& [key, value] : changes) {
+              const std::string name = py::str(key);
+              const std::optional<ParameterId> id = ParameterFromString(name);
+              if (!id) throw InvalidInput("parameter", "'" + name + "'", "chi, eta, omega, u_s, u_r");
+              q[*id] = value.cast<double>();
+            }
+            return MakeParameters(q.chi, q.eta, q.omega, q.u_s, q.u_r);
+          },
+          "A copy with the given values changed, checked: p.replace(omega=0.58)")
+      .def("as_dict",
+           [](const Parameters& p) {
+             py::dict d;
+             for (ParameterId id : kAllParameters) d[ToString(id)] = p[id];
+             return d;
+           })
+      .def("__eq__",
+           [](const Parameters& a, const Parameters& b) {
+             return a.chi == b.chi && a.eta == b.eta && a.omega == b.omega && a.u_s == b.u_s && a.u_r == b.u_r;
+           })
+      .def("__repr__", [](const Parameters& p) { return "stickslip.Parameters(" + DescribeParameters(p) + ")"; })
+      .def(py::pickle([](const Parameters& p) { return py::make_tuple(p.chi, p.eta, p.omega, p.u_s, p.u_r); },
+                      [](const py::tuple& t) {
+                        return MakeParameters(t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>(),
+                                              t[3].cast<double>(), t[4].cast<double>());
+                      }));
+}
+
+py::dict PresetDict(const std::string& name) {
+  StartInput input;
+  input.preset = name;
+  const ModelStart start = BuildModelStart(input);  // InvalidInput for an unknown name
+  const PaperPreset* preset = FindPaperPreset(name);
+  py::dict d;
+  d["name"] = name;
+  d["equation"] = std::string(preset->example->equation);
+  d["title"] = std::string(preset->example->title);
+  d["parameters"] = start.parameters;
+  d["state"] = py::array_t<double>(4, start.initial_state.data());
+  d["phi"] = start.phi;
+  d["signature"] = Signature::Parse(preset->signature);
+  d["durations"] = py::array_t<double>(py::cast(preset->durations));
+  return d;
+}
+
+}  // namespace
+
+StartInput ToStartInput(const py::dict& start) {
+  StartInput input;
+  auto text = [&](const char* key) {
+    return start.contains(key) && !start[key].is_none() ? start[key].cast<std::string>() : std::string();
+  };
+  input.preset = text("preset");
+  input.signature = text("signature");
+  const std::string point = text("point");
+  if (!point.empty()) input.restart = ReadRestartPoint(text("results"), point);
+  if (start.contains("set")) input.set = ToNamedValues(start["set"]);
+  if (start.contains("guess")) input.guess = ToNamedValues(start["guess"]);
+  if (start.contains("free")) input.free = start["free"].cast<std::vector<std::string>>();
+  if (start.contains("fix")) {
+    for (const py::handle item : start["fix"]) {
+      const auto fix = item.cast<std::pair<std::string, std::optional<double>>>();
+      input.fix.push_back({fix.first, fix.second});
+    }
+  }
+  if (start.contains("tie_u_r")) input.tie_u_r = start["tie_u_r"].cast<bool>();
+  if (start.contains("paper_choice")) input.paper_choice = start["paper_choice"].cast<bool>();
+  return input;
+}
+
+void RaiseConvergenceError(const std::string& message, py::dict summary) {
+  py::object error = py::handle(convergence_error_type)(message);
+  error.attr("summary") = std::move(summary);
+  PyErr_SetObject(convergence_error_type, error.ptr());
+  throw py::error_already_set();
+}
+
+py::dict SummaryDict(const NewtonSummary& s) {
+  py::dict d;
+  d["converged"] = s.Converged();
+  d["termination"] = ToString(s.termination);
+  d["message"] = s.message;
+  d["iterations"] = s.iterations;
+  d["residual_norms"] = py::array_t<double>(py::cast(s.residual_norms));
+  d["condition_number"] = s.condition_number;
+  d["report"] = s.BriefReport();
+  return d;
+}
+
+py::tuple SampleOrbit(const Orbit& orbit, int count) {
+  if (count < 2 || count > 10000000) throw InvalidInput("n", count, "2 <= n <= 1e7");
+  std::vector<State> states;
+  {
+    py::gil_scoped_release release;
+    states = orbit.Sample(count);
+  }
+  const double period = orbit.Period();
+  py::array_t<double> t(count);
+  for (int k = 0; k < count; ++k) t.mutable_at(k) = period * k / (count - 1);
+  return py::make_tuple(t, StateArray(states));
+}
+
+py::array_t<double> StateArray(const std::vector<State>& states) {
+  py::array_t<double> a({static_cast<py::ssize_t>(states.size()), py::ssize_t{4}});
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    for (int j = 0; j < 4; ++j) a.mutable_at(i, j) = states[i](j);
+  }
+  return a;
+}
+
+void BindOrbits(py::module_& m) {
+  BindParameters(m);
+  BindSignature(m);
+  BindSolvedOrbit(m);
+  m.def("_preset_names", [] {
+    py::list names;
+    for (const PaperExample& e : PaperExamples()) names.append(std::string(e.name));
+    return names;
+  });
+  m.def("_preset", &PresetDict, py::arg("name"));
+  m.def("_simulate", &Simulate, py::arg("start"), py::arg("periods"), py::arg("method"), py::arg("samples_per_period"));
+  m.def("_solve", &Solve, py::arg("start"), py::arg("shooting"), py::arg("linear_solver"));
+  m.def("_set_keys", [] {
+    py::list keys;
+    for (const SetKey& k : SetKeys()) {
+      keys.append(py::make_tuple(std::string(k.key), std::string(k.meaning), std::string(k.valid_range)));
+    }
+    return keys;
+  });
+}
+
+void BindErrors(py::module_& m) {
+  m.attr("ConvergenceError") = py::reinterpret_steal<py::object>(
+      PyErr_NewExceptionWithDoc("stickslip.ConvergenceError",
+                                "Newton did not converge (a solve, or the start of a continuation); `summary` "
+                                "holds the Newton summary.",
+                                PyExc_RuntimeError, nullptr));
+  convergence_error_type = m.attr("ConvergenceError").ptr();
+  // Bad input is ValueError with the command line's one line, the fields named as the options.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InvalidInput& e) {
+      PyErr_SetString(PyExc_ValueError, AsOption(e).what());
+    }
+  });
+}
+
+}  // namespace stickslip::python
+
+PYBIND11_MODULE(_stickslip, m) {
+  m.doc() = "The compiled core of the stickslip package; use `import stickslip`.";
+  stickslip::python::BindErrors(m);
+  stickslip::python::BindOrbits(m);
+  stickslip::python::BindBranches(m);
+}

@@ -1,0 +1,192 @@
+"""stickslip: periodic orbits of the two-degree-of-freedom dry-friction oscillator of
+M. Pascal, Nonlinear Dyn. 77 (2014) 267-276, from Python.
+
+The same computations as the command line, with the same keys and the same checks:
+
+    import stickslip
+    p = stickslip.Parameters.preset("paper-5.1")          # or Parameters(chi=..., eta=..., ...)
+    sim = stickslip.simulate(p, state=(1, 0, 0, 0), phi=0, periods=2)
+    orbit = stickslip.solve(preset="paper-5.1")            # -> Orbit: unknowns, margins, multipliers
+    branch = stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", ds=0.005)
+    branch["omega"], branch.special_points, branch.save("results/my-run")
+    cont = stickslip.Continuation("omega", (0.3, 0.9), preset="paper-5.1")
+    for point in cont: ...                                 # one point at a time
+    sweep = stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), steps=50)
+
+Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
+ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
+range>"); a Newton method that does not converge raises ConvergenceError, whose `summary`
+attribute holds the Newton summary. Long computations release the GIL; a sweep runs its chains
+on every core.
+"""
+
+import inspect as _inspect
+from dataclasses import dataclass as _dataclass
+
+import numpy as _np
+
+from . import _stickslip as _core
+from ._stickslip import ConvergenceError, Orbit, Parameters, Signature, SweepResult
+from ._branch import Branch, Continuation
+from ._inputs import _one_off_run, _start
+
+__all__ = [
+    "Branch", "Continuation", "ConvergenceError", "Orbit", "Parameters", "Preset", "Signature",
+    "Simulation", "SweepResult", "continue_orbit", "natural_frequencies", "presets", "run",
+    "simulate", "solve", "sweep",
+]
+
+
+@_dataclass(frozen=True)
+class Preset:
+    """One of the paper's five examples: its data, printed initial state and phase, orbit type
+    and printed durations (a starting guess; the printed numbers are rounded, see ERRATA)."""
+
+    name: str
+    equation: str
+    title: str
+    parameters: Parameters
+    state: _np.ndarray
+    phi: float
+    signature: Signature
+    durations: _np.ndarray
+
+
+#: The paper presets by name: "paper-4.1", "paper-4.2", "paper-5.1", "paper-5.2", "paper-6".
+presets = {name: Preset(**_core._preset(name)) for name in _core._preset_names()}
+
+
+def _parameters_of_preset(name):
+    """The data of the paper preset `name` ("paper-5.1", ...); an unknown name raises
+    ValueError listing the valid ones."""
+    return _core._preset(name)["parameters"]
+
+
+Parameters.preset = staticmethod(_parameters_of_preset)
+
+
+def natural_frequencies(parameters):
+    """(omega1, omega2): the natural frequencies of the slip for `parameters` (eq. 56). The forced
+    amplitude is singular there, so omega must stay away from them."""
+    return parameters.natural_frequencies
+
+
+class Simulation:
+    """A simulated motion: `events` (t, kind, mode_before, mode_after, state (n, 4)), `samples`
+    (t, state (n, 4), mode), `segments`, and how it ended (`end`, `message`, `completed`)."""
+
+    def __init__(self, d):
+        self.parameters = d["parameters"]
+        self.initial_state = d["initial_state"]
+        self.phi = d["phi"]
+        self.events = {k: (v if isinstance(v, _np.ndarray) else _np.array(v, dtype=str)) for k, v in d["events"].items()}
+        self.samples = {k: (v if isinstance(v, _np.ndarray) else _np.array(v, dtype=str)) for k, v in d["samples"].items()}
+        self.segments = d["segments"]
+        self.end = d["end"]
+        self.message = d["message"]
+        self.completed = d["completed"]
+
+    def __repr__(self):
+        return (f"<stickslip.Simulation {len(self.events['t'])} events, {len(self.samples['t'])} samples, "
+                f"end {self.end}>")
+
+
+def simulate(parameters=None, state=None, phi=None, *, periods=2.0, method="exact", samples_per_period=200,
+             preset=None, point=None, results="results", set=None):
+    """Simulate the oscillator under Coulomb's law, as `stickslip simulate`.
+
+    parameters  Parameters (or give preset=, point= or set=)
+    state       (x10, x20, v10, v20) at t = 0 (|value| <= 1e6)
+    phi         forcing phase at t = 0, rad (|phi| <= 1e6)
+    periods     simulated time in forcing periods 2 pi/omega (0 < periods <= 1e6)
+    method      "exact" (closed-form flows, events to 1e-13 in time) or "odeint" (Boost.Odeint
+                dopri5 at 1e-12, independent of the closed form)
+    samples_per_period  time-series density (1 to 1e5 samples per forcing period)
+    preset, point ("RUN:LABEL" under `results`), set ({key: value}): as --preset, --point, --set;
+                later values win over the preset's, a key given twice is an error.
+    Returns a Simulation: events and the sampled time series as NumPy arrays. A simulation that
+    stops early (chattering) is returned with completed False and the reason in `message`.
+    """
+    start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    return Simulation(_core._simulate(start, float(periods), str(method), float(samples_per_period)))
+
+
+def solve(parameters=None, signature=None, *, preset=None, point=None, results="results", set=None, guess=None,
+          free=None, fix=None, tie_u_r=False, paper_choice=False, shooting="auto", linear_solver="klu"):
+    """Solve the periodicity equations of an orbit type for one periodic orbit, as `stickslip solve`.
+
+    parameters  Parameters of the model (or preset=, point=, set=)
+    signature   an orbit type: Signature or its text ("slip- slip+ stick slip+", "... / antisymmetric")
+    guess       {name: value} starting values of any orbit variable: x10 x20 v10 phi d1..dn (durations,
+                scaled time, >= 0) chi eta omega u_s u_r
+    free        variables released as unknowns (usually a parameter), a name or a list
+    fix         variables held: a list of names (held at their guess) or {name: value}
+    tie_u_r     hold u_r = u_s (abnormal stops need it, eq. 25)
+    paper_choice  with preset: the paper's own choice of unknowns (see ERRATA)
+    shooting    "auto", "single" or "multiple"; linear_solver "klu", "umfpack" or "dense" (multiple)
+    Returns an Orbit. Raises ConvergenceError if Newton does not converge. A converged orbit that is
+    not a motion (a margin <= 0, orbit.admissible False) or fails its verification is returned: the
+    command line exits 4 for it.
+    """
+    start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
+                   guess=guess, free=free, fix=fix, tie_u_r=tie_u_r, paper_choice=paper_choice)
+    return _core._solve(start, str(shooting), str(linear_solver))
+
+
+def continue_orbit(parameter, range, **keywords):
+    """Continue a periodic orbit in `parameter` over `range` = (min, max), as `stickslip continue`
+    (the keys of a run file's [continuation] table as keywords; left out, the engine's defaults).
+
+    parameter   the continued variable: omega, u_r, u_s, chi, eta (or any held orbit variable)
+    direction   "up" or "down"
+    output      the run's name, recorded in summary.json (save() records its directory's name)
+    ds, ds_min, ds_max  initial, smallest and largest arclength step (0 < ds_min <= ds <= ds_max)
+    max_points  accepted points (1 to 1e6)
+    shooting, linear_solver, detect_folds, detect_branch_points, continue_past_type_changes: as in
+                run files
+    user_values     values of the parameter at which to record a UZ point
+    user_values_of  {variable: [values]}: UZ points of other unknowns
+    The start keywords are solve()'s. Returns a Branch; raises ConvergenceError if the start does
+    not converge, ValueError for bad input (the command line's message).
+    """
+    return Branch(_core._continue(_one_off_run(parameter, range, **keywords)))
+
+
+continue_orbit.__signature__ = _inspect.signature(_one_off_run)
+
+
+def run(path, results="results"):
+    """Run a run file (TOML, continuation-scripts/), as `stickslip run`, without writing: returns the
+    Branch; branch.save(f"{results}/{branch.output}") writes the files `stickslip run` writes.
+    Restart points are read from `results`."""
+    return Branch(_core._continue(_core._run_file(str(path), str(results))))
+
+
+_SWEEP_DEFAULTS = _core._sweep_defaults()
+
+
+def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFAULTS["parameter"],
+          steps=_SWEEP_DEFAULTS["steps"], transients=_SWEEP_DEFAULTS["transients"],
+          periods=_SWEEP_DEFAULTS["periods"], start=_SWEEP_DEFAULTS["start"], chains=_SWEEP_DEFAULTS["chains"],
+          scatter=_SWEEP_DEFAULTS["scatter"], seed=_SWEEP_DEFAULTS["seed"], threads=_SWEEP_DEFAULTS["threads"],
+          preset=None, point=None, results="results", set=None):
+    """A brute-force bifurcation diagram by simulation, as `stickslip sweep`.
+
+    range       (from, to) of `parameter` (chi, eta, omega, u_s or u_r), in its valid range
+    steps       intervals between from and to (1 to 1e5)
+    transients  forcing periods simulated and discarded at each point (0 to 1e6)
+    periods     forcing periods recorded at each point (1 to 1e5)
+    start       "chained" (up then down, each point from the last state) or "fixed" (every point
+                from its chain's start, one pass)
+    chains      starting states, the first the given one (1 to 1e4); scatter: half-width of the
+                box the others are drawn from (0 to 1e6); seed (0 to 1e9)
+    threads     0: every core (0 to 1024); the result does not depend on it
+    The section is taken at the forcing phase phi. Returns a SweepResult with NumPy arrays;
+    result.csv() is the file `stickslip sweep --output` writes.
+    """
+    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    low, high = range
+    options = {"parameter": str(parameter), "from": float(low), "to": float(high), "steps": float(steps),
+               "transients": float(transients), "periods": float(periods), "start": str(start),
+               "chains": float(chains), "scatter": float(scatter), "seed": float(seed), "threads": float(threads)}
+    return _core._sweep(origin, options)

@@ -1,0 +1,72 @@
+"""The inputs of every computation, as the command line's options: the start (--preset, --point,
+--set, --signature, --guess, --free, --fix, --tie-u_r) as the dict the compiled core takes, and a
+continuation run given by keywords (`stickslip continue`'s, and a run file's [continuation] keys)."""
+
+import numpy as _np
+
+from . import _stickslip as _core
+from ._stickslip import Parameters
+
+_DEFAULTS = _core._continuation_defaults()
+
+
+def _named_values(values, field):
+    if values is None:
+        return []
+    if not isinstance(values, dict):
+        raise TypeError(f"{field} must be a dict of name: value, got {type(values).__name__}")
+    return [(str(name), float(value)) for name, value in values.items()]
+
+
+def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, results="results", set=None,
+           signature=None, guess=None, free=None, fix=None, tie_u_r=False, paper_choice=False):
+    pairs = []
+    if parameters is not None:
+        if not isinstance(parameters, Parameters):
+            raise TypeError(f"parameters must be a stickslip.Parameters, got {type(parameters).__name__}")
+        pairs += list(parameters.as_dict().items())
+    if state is not None:
+        values = [float(x) for x in _np.asarray(state, dtype=float).ravel()]
+        if len(values) != 4:
+            raise TypeError(f"state must hold (x10, x20, v10, v20), got {len(values)} values")
+        pairs += list(zip(("x10", "x20", "v10", "v20"), values))
+    if phi is not None:
+        pairs.append(("phi", float(phi)))
+    pairs += _named_values(set, "set")
+    if isinstance(free, str):
+        free = [free]
+    fixes = []
+    if isinstance(fix, str):
+        fix = [fix]
+    if isinstance(fix, dict):
+        fixes = [(str(k), None if v is None else float(v)) for k, v in fix.items()]
+    elif fix is not None:
+        fixes = [(str(k), None) for k in fix]
+    return {
+        "preset": preset or "", "point": point or "", "results": str(results),
+        "signature": "" if signature is None else str(signature),
+        "set": pairs, "guess": _named_values(guess, "guess"), "free": [str(f) for f in (free or [])],
+        "fix": fixes, "tie_u_r": bool(tie_u_r), "paper_choice": bool(paper_choice),
+    }
+
+
+def _one_off_run(parameter, range, *, direction="up", output="python", parameters=None, signature=None, preset=None,
+                 point=None, results="results", set=None, guess=None, free=None, fix=None, tie_u_r=False, ds=None,
+                 ds_min=None, ds_max=None, max_points=None, shooting=None, linear_solver=None, detect_folds=None,
+                 detect_branch_points=None, continue_past_type_changes=None, user_values=(), user_values_of=None):
+    """The run `stickslip continue` makes of its options (checked by the library, as there)."""
+    if range is None or len(range) != 2:
+        raise TypeError("range must be (min, max)")
+    given = {"ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points, "shooting": shooting,
+             "linear_solver": linear_solver, "detect_folds": detect_folds,
+             "detect_branch_points": detect_branch_points, "continue_past_type_changes": continue_past_type_changes}
+    options = {key: (_DEFAULTS[key] if value is None else value) for key, value in given.items()}
+    options.update({
+        "parameter": str(parameter), "range": (float(range[0]), float(range[1])), "direction": str(direction),
+        "output": str(output), "results": str(results),
+        "user_values": [float(v) for v in user_values],
+        "user_values_of": {str(k): [float(v) for v in vs] for k, vs in (user_values_of or {}).items()},
+    })
+    start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
+                   guess=guess, free=free, fix=fix, tie_u_r=tie_u_r)
+    return _core._one_off_run(start, options)

@@ -1,0 +1,172 @@
+#include "stickslip/io/command_options.hpp"
+
+#include <array>
+#include <numbers>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "stickslip/io/start_input.hpp"
+
+namespace stickslip {
+
+InvalidInput AsOption(const InvalidInput& error) {
+  if (error.field() == "restart") return error.Renamed("point");
+  // A one-off run goes through MakeSetup as a run file "(command line)", whose complaints name
+  // its keys: "(command line): key 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r'
+  // twice ...", and "(command line): key 'start' gives invalid data: d1 = 1e+308 is invalid: ..."
+  // the value's own message.
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kOptions = {{
+      {"start.set", "set"},
+      {"start.guess", "guess"},
+      {"start.preset", "preset"},
+      {"start.signature", "signature"},
+      {"start.restart", "point"},
+      {"unknowns.free", "free"},
+      {"unknowns.fix", "fix"},
+      {"unknowns.tie_u_r", "tie-u_r"},
+      {"continuation.range", "range"},
+      {"continuation.parameter", "parameter"},
+      {"continuation.user_values_of", "user-value"},
+  }};
+  const std::string_view what = error.what();
+  if (!what.starts_with(kOneOffRunPath)) return error;  // a run file's own: its keys name the fields
+  for (const auto& [key, option] : kOptions) {
+    if (error.field() != key) continue;
+    const std::string quoted = fmt::format("key '{}' ", key);
+    const auto at = what.find(quoted);
+    return InvalidInput::WithMessage(std::string(option),
+                                     fmt::format("{} {}", option, at == std::string_view::npos ? what : what.substr(at + quoted.size())));
+  }
+  constexpr std::string_view kInvalidData = "key 'start' gives invalid data: ";
+  if (const auto at = what.find(kInvalidData); error.field() == "start" && at != std::string_view::npos) {
+    const std::string_view message = what.substr(at + kInvalidData.size());
+    const auto equals = message.find(" = ");
+    return InvalidInput::WithMessage(std::string(message.substr(0, equals == std::string_view::npos ? 0 : equals)),
+                                     std::string(message));
+  }
+  return error;
+}
+
+RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::string_view run_and_label) {
+  const auto colon = run_and_label.find(':');
+  if (colon == std::string_view::npos || colon == 0 || colon + 1 == run_and_label.size()) {
+    throw InvalidInput::WithMessage(
+        "restart", fmt::format("restart = '{}' is invalid: valid RUN:LABEL, a labelled point of results/RUN", run_and_label));
+  }
+  return ReadRestartPoint(results_root, std::string(run_and_label.substr(0, colon)),
+                          std::string(run_and_label.substr(colon + 1)));
+}
+
+SimulationOptions SimulationOver(const Parameters& p, double periods, double samples_per_period, bool sampled) {
+  if (!(periods > 0.0 && periods <= 1e6)) throw InvalidInput("periods", periods, "0 < periods <= 1e6");
+  if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
+    throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
+  }
+  const double period = 2.0 * std::numbers::pi / p.omega;
+  SimulationOptions options;
+  options.duration = periods * period;
+  if (sampled) options.sample_step = period / samples_per_period;
+  return options;
+}
+
+void SetRunFileStart(const StartInput& input, RunFile* run) {
+  run->preset = input.preset;
+  run->signature = input.signature;
+  if (input.restart) {
+    run->restart_run = input.restart->run;
+    run->restart_label = input.restart->label;
+  }
+  run->set = input.set;
+  run->guess = input.guess;
+  run->free = input.free;
+  for (const FixedVariable& f : input.fix) {
+    run->fix.push_back(f.name);
+    if (f.value) run->guess.emplace_back(f.name, *f.value);
+  }
+  run->tie_u_r = input.tie_u_r;
+}
+
+int ContinuationDirection(std::string_view direction) {
+  if (direction == "up") return 1;
+  if (direction == "down") return -1;
+  throw InvalidInput("direction", fmt::format("'{}'", direction), "up, down");
+}
+
+void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
+  if (!(run.range_min < run.range_max)) {
+    throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX with MIN < MAX");
+  }
+  if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
+    throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
+  }
+  if (run.max_points < 1 || run.max_points > 1000000) {
+    throw InvalidInput("max-points", run.max_points, "1 <= max-points <= 1000000");
+  }
+  if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
+}
+
+namespace {
+
+struct WholeRange {
+  std::string_view field;
+  int low;
+  int high;
+};
+constexpr std::array<WholeRange, 6> kSweepWholeNumbers = {{{"steps", 1, 100000},
+                                                           {"transients", 0, 1000000},
+                                                           {"periods", 1, 100000},
+                                                           {"chains", 1, 10000},
+                                                           {"seed", 0, 1000000000},
+                                                           {"threads", 0, 1024}}};
+
+int WholeNumber(std::string_view field, double value) {
+  for (const WholeRange& r : kSweepWholeNumbers) {
+    if (r.field != field) continue;
+    if (!(value >= r.low && value <= r.high) || value != static_cast<int>(value)) {
+      throw InvalidInput(std::string(field), value, fmt::format("whole numbers {}", SweepOptionRange(field)));
+    }
+    return static_cast<int>(value);
+  }
+  throw std::logic_error(fmt::format("no sweep option '{}'", field));
+}
+
+}  // namespace
+
+std::string SweepOptionRange(std::string_view field) {
+  if (field == "scatter") return "0 <= scatter <= 1e6";
+  for (const WholeRange& r : kSweepWholeNumbers) {
+    if (r.field == field) return fmt::format("{} <= {} <= {}", r.low, field, r.high);
+  }
+  return std::string(SetKeyRange(field));  // from, to: the swept parameter's range
+}
+
+SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
+  const std::optional<ParameterId> parameter = ParameterFromString(c.parameter);
+  if (!parameter) throw InvalidInput("parameter", "'" + c.parameter + "'", "chi, eta, omega, u_s, u_r");
+  SweepPlan plan;
+  SweepOptions& options = plan.options;
+  options.parameter = *parameter;
+  options.from = c.from;
+  options.to = c.to;
+  options.steps = WholeNumber("steps", c.steps);
+  options.transient_periods = WholeNumber("transients", c.transients);
+  options.recorded_periods = WholeNumber("periods", c.periods);
+  if (c.start == "chained") {
+    options.start = SweepStart::kChained;
+  } else if (c.start == "fixed") {
+    options.start = SweepStart::kFixed;
+  } else {
+    throw InvalidInput("start", "'" + c.start + "'", "chained, fixed");
+  }
+  const int chains = WholeNumber("chains", c.chains);
+  if (!(c.scatter >= 0.0 && c.scatter <= 1e6)) throw InvalidInput("scatter", c.scatter, SweepOptionRange("scatter"));
+  const int seed = WholeNumber("seed", c.seed);
+  options.threads = WholeNumber("threads", c.threads);
+  plan.starts = ScatteredStarts(origin.initial_state, c.scatter, chains, static_cast<std::uint64_t>(seed));
+  return plan;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,119 @@
+"""Bad input from Python raises ValueError with the command line's one-line message for the same
+input (the library's InvalidInput, checked once)."""
+import pytest
+
+import stickslip
+from conftest import RESULTS, cli_error
+
+P51 = ["--set", "chi=0.22", "--set", "eta=4.2", "--set", "omega=0.57", "--set", "u_s=0.2", "--set", "u_r=0.5"]
+DATA = {"chi": 0.22, "eta": 4.2, "omega": 0.57, "u_s": 0.2, "u_r": 0.5}
+CONTINUE = ["continue", "--preset", "paper-5.1", "--parameter", "omega", "--output", "t"]
+
+# (Python call, the command line's arguments for the same input)
+CASES = {
+    "unknown preset": (lambda: stickslip.solve(preset="paper-9"), ["solve", "--preset", "paper-9"]),
+    "unknown preset of Parameters": (lambda: stickslip.Parameters.preset("paper-9"),
+                                     ["simulate", "--preset", "paper-9"]),
+    "chi out of range": (lambda: stickslip.simulate(set=dict(DATA, chi=2.0)),
+                         ["simulate", *P51[:0], "--set", "chi=2", *P51[2:]]),
+    "chi out of range in Parameters": (lambda: stickslip.Parameters(**dict(DATA, chi=2.0)),
+                                       ["simulate", "--set", "chi=2", *P51[2:]]),
+    "u_r below u_s": (lambda: stickslip.Parameters(**dict(DATA, u_r=0.1)), ["simulate", *P51[:8], "--set", "u_r=0.1"]),
+    "omega on a natural frequency": (
+        lambda: stickslip.Parameters(**dict(DATA, omega=stickslip.Parameters(**DATA).natural_frequencies[0])),
+        ["simulate", *P51[:4], "--set", f"omega={stickslip.Parameters(**DATA).natural_frequencies[0]!r}", *P51[6:]]),
+    "state too large": (lambda: stickslip.simulate(stickslip.Parameters(**DATA), state=(1e7, 0, 0, 0)),
+                        ["simulate", *P51, "--set", "x10=1e7"]),
+    "unknown set key": (lambda: stickslip.simulate(preset="paper-5.1", set={"omgea": 0.5}),
+                        ["simulate", "--preset", "paper-5.1", "--set", "omgea=0.5"]),
+    "periods zero": (lambda: stickslip.simulate(preset="paper-5.1", periods=0),
+                     ["simulate", "--preset", "paper-5.1", "--periods", "0"]),
+    "samples per period": (lambda: stickslip.simulate(preset="paper-5.1", samples_per_period=0.5),
+                           ["simulate", "--preset", "paper-5.1", "--samples-per-period", "0.5"]),
+    "bad signature": (lambda: stickslip.solve(signature="slip- stik", set=DATA),
+                      ["solve", "--signature", "slip- stik", *P51]),
+    "bad Signature": (lambda: stickslip.Signature("slip- stik"), ["solve", "--signature", "slip- stik", *P51]),
+    "stick after stick": (lambda: stickslip.Signature("stick stick"), ["solve", "--signature", "stick stick", *P51]),
+    "missing duration": (lambda: stickslip.solve(signature="slip- slip+", set=DATA),
+                         ["solve", "--signature", "slip- slip+", *P51]),
+    "free an unknown": (lambda: stickslip.solve(preset="paper-5.1", free="x10"),
+                        ["solve", "--preset", "paper-5.1", "--free", "x10"]),
+    "not square": (lambda: stickslip.solve(preset="paper-5.1", free="u_r"),
+                   ["solve", "--preset", "paper-5.1", "--free", "u_r"]),
+    "fix a non-variable": (lambda: stickslip.solve(preset="paper-5.1", fix="d9"),
+                           ["solve", "--preset", "paper-5.1", "--fix", "d9"]),
+    "guess twice": (lambda: stickslip.solve(preset="paper-5.1", set={"omega": 0.57}, guess={"omega": 0.58}),
+                    ["solve", "--preset", "paper-5.1", "--set", "omega=0.57", "--guess", "omega=0.58"]),
+    "duration beyond the period": (lambda: stickslip.solve(preset="paper-5.1", guess={"d1": 1e7}),
+                                   ["solve", "--preset", "paper-5.1", "--guess", "d1=1e7"]),
+    "point without a label": (lambda: stickslip.solve(point="paper-5.1-omega-up", results=RESULTS),
+                              ["solve", "--point", "paper-5.1-omega-up", "--results", RESULTS]),
+    "point with an unknown label": (lambda: stickslip.solve(point="paper-5.1-omega-up:XX9", results=RESULTS),
+                                    ["solve", "--point", "paper-5.1-omega-up:XX9", "--results", RESULTS]),
+    "continue range order": (lambda: stickslip.continue_orbit("omega", (0.9, 0.3), preset="paper-5.1", output="t"),
+                             [*CONTINUE, "--range", "0.9,0.3"]),
+    "continue range excludes the start": (
+        lambda: stickslip.continue_orbit("omega", (0.7, 0.9), preset="paper-5.1", output="t"),
+        [*CONTINUE, "--range", "0.7,0.9"]),
+    "continue ds": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", ds=1.0),
+                    [*CONTINUE, "--range", "0.3,0.9", "--ds", "1"]),
+    "continue max points": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t",
+                                                             max_points=0),
+                            [*CONTINUE, "--range", "0.3,0.9", "--max-points", "0"]),
+    "continue output": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="a/b"),
+                        ["continue", "--preset", "paper-5.1", "--parameter", "omega", "--range", "0.3,0.9",
+                         "--output", "a/b"]),
+    "continue parameter": (lambda: stickslip.continue_orbit("omgea", (0.3, 0.9), preset="paper-5.1", output="t"),
+                           ["continue", "--preset", "paper-5.1", "--parameter", "omgea", "--range", "0.3,0.9",
+                            "--output", "t"]),
+    "continue a free parameter": (
+        lambda: stickslip.continue_orbit("x10", (-9, 9), preset="paper-5.1", output="t"),
+        ["continue", "--preset", "paper-5.1", "--parameter", "x10", "--range", "-9,9", "--output", "t"]),
+    "sweep steps": (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), steps=0),
+                    ["sweep", "--preset", "paper-5.1", "--from", "0.55", "--to", "0.6", "--steps", "0"]),
+    "sweep fractional chains": (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), chains=1.5),
+                                ["sweep", "--preset", "paper-5.1", "--from", "0.55", "--to", "0.6", "--chains", "1.5"]),
+    "sweep start": (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), start="random"),
+                    ["sweep", "--preset", "paper-5.1", "--from", "0.55", "--to", "0.6", "--start", "random"]),
+    "sweep parameter": (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), parameter="mu"),
+                        ["sweep", "--preset", "paper-5.1", "--from", "0.55", "--to", "0.6", "--parameter", "mu"]),
+    "sweep scatter": (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), scatter=-1),
+                      ["sweep", "--preset", "paper-5.1", "--from", "0.55", "--to", "0.6", "--scatter", "-1"]),
+    "sweep to beyond the range": (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 200)),
+                                  ["sweep", "--preset", "paper-5.1", "--from", "0.55", "--to", "200"]),
+    "sweep through a natural frequency": (  # omega1 = 0.7012301668996977 of section 4.1 is step 1 of 2
+        lambda: stickslip.sweep(preset="paper-4.1", range=(0.6512301668996977, 0.7512301668996978), steps=2),
+        ["sweep", "--preset", "paper-4.1", "--from", "0.6512301668996977", "--to", "0.7512301668996978", "--steps",
+         "2"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_bad_input_raises_value_error_with_the_command_line_message(case, tmp_path):
+    call, args = CASES[case]
+    if args[0] == "sweep":
+        args = [*args, "--output", tmp_path / "sweep.csv"]
+    expected = cli_error(*args)
+    with pytest.raises(ValueError) as error:
+        call()
+    assert str(error.value) == expected
+
+
+def test_continue_orbit_takes_one_direction_where_the_command_line_also_takes_both():
+    # One call continues one branch; `stickslip continue --direction both` writes two runs.
+    with pytest.raises(ValueError) as error:
+        stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", direction="sideways")
+    assert str(error.value) == "direction = 'sideways' is invalid: valid range up, down"
+    assert cli_error(*CONTINUE, "--range", "0.3,0.9", "--direction", "sideways") == \
+        "direction = 'sideways' is invalid: valid range up, down, both"
+
+
+def test_a_saved_run_does_not_replace_a_directory_of_the_user(tmp_path):
+    branch = stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3)
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "notes.txt").write_text("keep")
+    with pytest.raises(ValueError, match="output"):
+        branch.save(mine)
+    assert (mine / "notes.txt").read_text() == "keep"
+    assert sorted(p.name for p in mine.iterdir()) == ["notes.txt"]
