@@ -33,14 +33,6 @@ struct SweepArgs {
   std::string output;
 };
 
-int Count(const char* field, const std::string& text, int low, int high) {
-  const double value = ParseNumber(field, text, fmt::format("{} <= {} <= {}", low, field, high));
-  if (!(value >= low && value <= high) || value != static_cast<int>(value)) {
-    throw InvalidInput(field, text, fmt::format("whole numbers {} <= {} <= {}", low, field, high));
-  }
-  return static_cast<int>(value);
-}
-
 int RunSweep(const SweepArgs& args) {
   CheckOutputFile(args.output, "output");
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
@@ -52,9 +44,9 @@ int RunSweep(const SweepArgs& args) {
   options.parameter = *parameter;
   options.from = ParseNumber("from", args.from, SetKeyRange(args.parameter));
   options.to = ParseNumber("to", args.to, SetKeyRange(args.parameter));
-  options.steps = Count("steps", args.steps, 1, 100000);
-  options.transient_periods = Count("transients", args.transients, 0, 1000000);
-  options.recorded_periods = Count("periods", args.periods, 1, 100000);
+  options.steps = ParseCount("steps", args.steps, 1, 100000);
+  options.transient_periods = ParseCount("transients", args.transients, 0, 1000000);
+  options.recorded_periods = ParseCount("periods", args.periods, 1, 100000);
   if (args.start == "chained") {
     options.start = SweepStart::kChained;
   } else if (args.start == "fixed") {
@@ -62,13 +54,13 @@ int RunSweep(const SweepArgs& args) {
   } else {
     throw InvalidInput("start", "'" + args.start + "'", "chained, fixed");
   }
-  const int chains = Count("chains", args.chains, 1, 10000);
+  const int chains = ParseCount("chains", args.chains, 1, 10000);
   const double scatter = ParseNumber("scatter", args.scatter, "0 <= scatter <= 1e6");
   if (!(scatter >= 0.0 && scatter <= 1e6)) {
     throw InvalidInput("scatter", args.scatter, "0 <= scatter <= 1e6");
   }
-  const int seed = Count("seed", args.seed, 0, 1000000000);
-  options.threads = Count("threads", args.threads, 0, 1024);
+  const int seed = ParseCount("seed", args.seed, 0, 1000000000);
+  options.threads = ParseCount("threads", args.threads, 0, 1024);
   const std::vector<State> starts = ScatteredStarts(input.initial_state, scatter, chains, seed);
   ProgressLine line("sweep");
   if (line.enabled()) options.progress = line.Callback();
@@ -100,23 +92,23 @@ Command AddSweepCommand(CLI::App& app) {
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
-  cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->required();
-  cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->required();
-  cmd->add_option("--steps", args->steps, "intervals between --from and --to (1 to 1e5)")->capture_default_str();
+  cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->type_name("FLOAT")->required();
+  cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->type_name("FLOAT")->required();
+  cmd->add_option("--steps", args->steps, "intervals between --from and --to (1 to 1e5)")->type_name("INT")->capture_default_str();
   cmd->add_option("--transients", args->transients, "forcing periods discarded per point (0 to 1e6)")
-      ->capture_default_str();
-  cmd->add_option("--periods", args->periods, "forcing periods recorded per point (1 to 1e5)")->capture_default_str();
+      ->type_name("INT")->capture_default_str();
+  cmd->add_option("--periods", args->periods, "forcing periods recorded per point (1 to 1e5)")->type_name("INT")->capture_default_str();
   cmd->add_option("--start", args->start,
                   "chained: up then down, each point from the last state; fixed: every point from its "
                   "chain's start, one pass")
       ->capture_default_str();
   cmd->add_option("--chains", args->chains, "starting states, the first the given one (1 to 1e4)")
-      ->capture_default_str();
+      ->type_name("INT")->capture_default_str();
   cmd->add_option("--scatter", args->scatter,
                   "half-width of the box around the given state that the other starts are drawn from (0 to 1e6)")
-      ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "seed of the scattered starts (0 to 1e9)")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "threads (0: every core; 0 to 1024)")->capture_default_str();
+      ->type_name("FLOAT")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed of the scattered starts (0 to 1e9)")->type_name("INT")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "threads (0: every core; 0 to 1024)")->type_name("INT")->capture_default_str();
   cmd->add_option("--output", args->output,
                   "CSV file: chain,pass,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period")
       ->required();
