@@ -1,6 +1,5 @@
 #include "cli_common.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -9,17 +8,28 @@
 
 namespace stickslip::cli {
 
-double ParseNumber(std::string_view field, std::string_view text, std::string_view valid_range) {
-  double value = 0.0;
-  std::string_view digits = text;
-  if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+'
-  const char* end = digits.data() + digits.size();
-  const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
-    throw InvalidInput::WithMessage(
-        std::string(field), fmt::format("{} = '{}' is not a finite number: valid range {}", field, text, valid_range));
-  }
-  return value;
+namespace {
+
+std::string FieldOf(const std::string& name) { return name.substr(name.find_first_not_of('-')); }
+
+}  // namespace
+
+CLI::Option* AddNumberOption(CLI::App& cmd, const std::string& name, double* value, const std::string& valid_range,
+                             const std::string& help) {
+  return cmd
+      .add_option_function<std::string>(
+          name, [=](const std::string& text) { *value = ParseNumber(FieldOf(name), text, valid_range); }, help)
+      ->type_name("FLOAT")
+      ->default_str(fmt::format("{}", *value));
+}
+
+CLI::Option* AddCountOption(CLI::App& cmd, const std::string& name, int* value, int low, int high,
+                            const std::string& help) {
+  return cmd
+      .add_option_function<std::string>(
+          name, [=](const std::string& text) { *value = ParseCount(FieldOf(name), text, low, high); }, help)
+      ->type_name("INT")
+      ->default_str(fmt::format("{}", *value));
 }
 
 int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason) {
@@ -38,13 +48,6 @@ int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification
     return kExitNotAMotion;
   }
   return kExitOk;
-}
-
-int ParseCount(std::string_view field, const std::string& text, int lo, int hi) {
-  const std::string range = fmt::format("{} <= {} <= {}, a whole number", lo, field, hi);
-  const double value = ParseNumber(field, text, range);
-  if (!(value >= lo && value <= hi && value == std::floor(value))) throw InvalidInput(std::string(field), text, range);
-  return static_cast<int>(value);
 }
 
 std::string SetKeysHelp() {

@@ -5,6 +5,9 @@
 #include <string>
 #include <string_view>
 
+#include <CLI/CLI.hpp>
+
+#include "number_text.hpp"
 #include "stickslip/model/parameters.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/verification.hpp"
@@ -29,12 +32,14 @@ inline constexpr int kExitNotPeriodic = 5;
 // failed; kExitOk otherwise.
 int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason);
 
-// A decimal number, the whole text, finite; otherwise InvalidInput
-// "<field> = '<text>' is not a finite number: valid range <valid_range>".
-double ParseNumber(std::string_view field, std::string_view text, std::string_view valid_range);
-// A whole number of the option `field` within [lo, hi] ("1e3" included); InvalidInput
-// "field = text is invalid: valid range lo <= field <= hi, a whole number" otherwise.
-int ParseCount(std::string_view field, const std::string& text, int lo, int hi);
+// Numeric options read by ParseNumber and ParseCount instead of CLI11's conversion, so that
+// "--max-points 2.5" gets the one-line form naming the option, the value and the valid range
+// (InvalidInput, thrown while the command line is parsed) rather than "Could not convert"; --help
+// shows FLOAT or INT and the default.
+CLI::Option* AddNumberOption(CLI::App& cmd, const std::string& name, double* value, const std::string& valid_range,
+                             const std::string& help);
+CLI::Option* AddCountOption(CLI::App& cmd, const std::string& name, int* value, int low, int high,
+                            const std::string& help);
 
 // The help text of --set, listing every key with its meaning and valid range (SetKeys).
 std::string SetKeysHelp();

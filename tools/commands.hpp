@@ -23,5 +23,6 @@ Command AddCheckCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddExportCommand(CLI::App& app);
 Command AddFindCommand(CLI::App& app);
+Command AddPlotCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

@@ -53,7 +53,7 @@ Command AddExportCommand(CLI::App& app) {
       "export", "Export a run's results (results/<run>/) as AUTO-07p's b.<run> and s.<run> files, beside them.");
   cmd->add_option("directory", args->directory, "results/<run>/ of a continuation run")->required();
   cmd->add_flag("--auto", args->auto07p, "AUTO-07p's bifurcation (b.) and solution (s.) files");
-  cmd->add_option("--samples", args->samples, "orbit samples per labelled solution (2 to 1e5)")->capture_default_str();
+  AddCountOption(*cmd, "--samples", &args->samples, 2, 100000, "orbit samples per labelled solution (2 to 1e5)");
   return {cmd, [args] { return RunExport(*args); }};
 }
 

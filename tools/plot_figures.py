@@ -24,34 +24,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from bifurcation_diagram import SIZE, draw_run, label_points, read_run, runs_of, save  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SIZE = (8, 6)  # inches, at 100 dpi: 800 x 600 pixels
 STYLE = {"slip-": dict(color="black", lw=0.8), "slip+": dict(color="black", lw=2.6),
          "stick": dict(color="0.6", lw=1.6)}
-
-
-def save(figure, path):
-    """Writes the PNG whole or not at all, without volatile metadata."""
-    temporary = path + ".tmp.png"
-    figure.savefig(temporary, dpi=100, metadata={"Software": None})
-    plt.close(figure)
-    os.replace(temporary, path)
-    print("wrote", path)
-
-
-def runs_of(rows, key):
-    """Consecutive pieces of rows with the same value of key, the boundary row repeated."""
-    pieces, current = [], []
-    for row in rows:
-        if current and row[key] != current[-1][key]:
-            current.append(row)
-            pieces.append(current)
-            current = [row]
-        else:
-            current.append(row)
-    if current:
-        pieces.append(current)
-    return pieces
 
 
 def paper_figures(program, preset, paper_choice, out):
@@ -135,24 +112,10 @@ def section_x2(program, row, phase):
 
 def bifurcation_figure(program, results, run, out):
     directory = os.path.join(results, run)
-    summary = json.load(open(os.path.join(directory, "summary.json")))
+    summary, rows, _ = read_run(directory)
     parameter = summary["parameter"]
-    rows = list(csv.DictReader(open(os.path.join(directory, "branch.csv"))))
-    special = list(csv.DictReader(open(os.path.join(directory, "special-points.csv"))))
-    durations = [c for c in rows[0] if c.startswith("d") and c[1:].isdigit()]
     figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=SIZE)
-    for index, piece in enumerate(runs_of(rows, "stable")):
-        style = "-" if piece[0]["stable"] == "1" else "--"
-        xs = [float(r[parameter]) for r in piece]
-        top.plot(xs, [float(r["x20"]) for r in piece], style, color="C0", label="x20 (orbit origin)" if index == 0 else None)
-        for k, d in enumerate(durations):
-            bottom.plot(xs, [float(r[d]) for r in piece], style, color=f"C{k + 1}", label=d if index == 0 else None)
-    for row in special:
-        if row["test_function"] in ("start", summary["termination"]):
-            continue
-        x = float(row[parameter])
-        top.plot(x, float(row["x20"]), "o", color="red", ms=4)
-        top.annotate(row["label"], (x, float(row["x20"])), textcoords="offset points", xytext=(4, 4), fontsize=8)
+    labels, legend = draw_run(top, bottom, directory)
     family = run.split("-")[0] + "-" + run.split("-")[1]
     # Every sweep of the family over this parameter: sweeps/<family>-<parameter>[-<what>].csv.
     sweeps = (glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}.csv")) +
@@ -175,12 +138,12 @@ def bifurcation_figure(program, results, run, out):
         top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".",
                  color="0.4" if number == 0 else "C3", ms=3 if number == 0 else 4,
                  label=f"brute force {name}: x2 at phase {phase:.4g} (period 1)")
-    top.legend(fontsize=7, loc="best")
+    top.legend(handles=legend + top.get_legend_handles_labels()[0], fontsize=7, loc="best")
     top.set_ylabel("x20")
     bottom.set_ylabel("segment durations")
     bottom.set_xlabel(parameter)
-    bottom.legend(fontsize=8)
-    top.set_title(f"{run}: {summary['signature']} (solid stable, dashed unstable)")
+    top.set_title(f"{run}: {summary['signature']}\n(solid stable, dashed unstable, grey no motion)", fontsize=10)
+    label_points(figure, top, labels)
     save(figure, os.path.join(out, f"{run}-bifurcation.png"))
 
 

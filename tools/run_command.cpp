@@ -144,6 +144,7 @@ struct ContinueArgs {
   std::vector<std::string> user_values;  // NAME=VALUE
   std::string detect_folds = "true";
   std::string detect_branch_points = "true";
+  bool linear_solver_given = false;  // refused with --shooting single, where it would be ignored
 };
 
 // "true" or "false", as the run file's booleans.
@@ -172,6 +173,12 @@ int RunContinue(ContinueArgs args) {
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
   run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
   CheckOneOffRun(run, args.range);
+  if (args.linear_solver_given && run.shooting == "single") {
+    throw InvalidInput::WithMessage(
+        "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
+                                     "multiple or auto (single shooting solves its dense system directly)",
+                                     run.linear_solver));
+  }
   for (const std::string& text : args.user_values) {
     const auto equals = text.find('=');
     if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");
@@ -231,11 +238,11 @@ Command AddContinueCommand(CLI::App& app) {
                   "results/<output>-up (each a run of its own, to restart from, check and export)")
       ->type_name("up|down|both")
       ->capture_default_str();
-  cmd->add_option("--range", args->range, "MIN,MAX of the parameter")->required();
-  cmd->add_option("--ds", args->run.ds, "initial arclength step (> 0)")->capture_default_str();
-  cmd->add_option("--ds-min", args->run.ds_min, "smallest step (> 0)")->capture_default_str();
-  cmd->add_option("--ds-max", args->run.ds_max, "largest step")->capture_default_str();
-  cmd->add_option("--max-points", args->run.max_points, "accepted points (1 to 1e6)")->capture_default_str();
+  cmd->add_option("--range", args->range, "MIN,MAX of the parameter")->type_name("MIN,MAX")->required();
+  AddNumberOption(*cmd, "--ds", &args->run.ds, "0 < ds-min <= ds <= ds-max", "initial arclength step (> 0)");
+  AddNumberOption(*cmd, "--ds-min", &args->run.ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)");
+  AddNumberOption(*cmd, "--ds-max", &args->run.ds_max, "0 < ds-min <= ds <= ds-max", "largest step");
+  AddCountOption(*cmd, "--max-points", &args->run.max_points, 1, 1000000, "accepted points (1 to 1e6)");
   cmd->add_option("--user-value", args->user_values,
                   "report a UZ point where the variable NAME (the parameter or another unknown) passes VALUE; "
                   "repeatable (the run file's user_values and user_values_of)")
@@ -244,9 +251,11 @@ Command AddContinueCommand(CLI::App& app) {
                   "single (dense), multiple (block-sparse), or auto (single up to 6 listed segments)")
       ->check(CLI::IsMember({"auto", "single", "multiple"}))
       ->capture_default_str();
-  cmd->add_option("--linear-solver", args->run.linear_solver, "sparse solver for multiple shooting")
+  cmd->add_option("--linear-solver", args->run.linear_solver,
+                  "sparse solver for multiple shooting (with --shooting multiple or auto; refused with single)")
       ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each([args](const std::string&) { args->linear_solver_given = true; });
   cmd->add_option("--detect-folds", args->detect_folds, "locate folds (LP): true or false")
       ->type_name("true|false")
       ->capture_default_str();

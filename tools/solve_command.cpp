@@ -27,7 +27,7 @@ struct SolveArgs {
   StartFlags start;
   bool paper_choice = false;
   std::string shooting = "auto";
-  std::string linear_solver = "klu";
+  std::string linear_solver;  // empty: not given (klu where multiple shooting is used)
   bool json = false;
   bool compare_paper = false;
 };
@@ -102,7 +102,15 @@ int RunSolve(const SolveArgs& args) {
 
   OrbitSolverOptions options;
   options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
-  options.sparse_solver = *LinearSolverFromString(args.linear_solver);
+  // A sparse solver means something only where multiple shooting may be chosen: given with single
+  // shooting it would be silently ignored, so the contradiction is refused.
+  if (!args.linear_solver.empty() && options.shooting == ShootingChoice::kSingle) {
+    throw InvalidInput::WithMessage(
+        "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
+                                     "multiple or auto (single shooting solves its dense system directly)",
+                                     args.linear_solver));
+  }
+  options.sparse_solver = *LinearSolverFromString(args.linear_solver.empty() ? "klu" : args.linear_solver);
   const OrbitSolution solution = SolveOrbit(start.orbit, start.free, start.unknowns.tie_static_friction, options);
   const Orbit& orbit = solution.orbit;
   if (!solution.summary.Converged()) {
@@ -119,7 +127,7 @@ int RunSolve(const SolveArgs& args) {
     fmt::print("{}", PaperComparison(*preset, orbit, args.paper_choice ? std::string(preset->paper_choice_note) : "paper's data held"));
     return SolvedOrbitOutcome(margins, verification);
   }
-  fmt::print("{}", OrbitReport(solution, start.free, start.unknowns.tie_static_friction, args.linear_solver, margins,
+  fmt::print("{}", OrbitReport(solution, start.free, start.unknowns.tie_static_friction, ToString(options.sparse_solver), margins,
                                verification));
   return SolvedOrbitOutcome(margins, verification);
 }
@@ -144,9 +152,10 @@ Command AddSolveCommand(CLI::App& app) {
                   "listed segments)")
       ->check(CLI::IsMember({"auto", "single", "multiple"}))
       ->capture_default_str();
-  cmd->add_option("--linear-solver", args->linear_solver, "sparse solver for multiple shooting")
+  cmd->add_option("--linear-solver", args->linear_solver,
+                  "sparse solver for multiple shooting (with --shooting multiple or auto; refused with single)")
       ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
-      ->capture_default_str();
+      ->default_str("klu");
   cmd->add_flag("--json", args->json,
                 "print one JSON object: signature, parameters, phi, x10, x20, v10, segments, "
                 "converged, residual_norm, margins, verification");

@@ -23,17 +23,20 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app),
-                                         AddExportCommand(app), AddFindCommand(app)};
+                                         AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const stickslip::InvalidInput& e) {  // a number option read by ParseNumber or ParseCount
+    fmt::print(stderr, "error: {}\n", stickslip::AsOption(e).what());
+    return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep, export, find", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep, export, find, plot", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

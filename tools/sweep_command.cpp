@@ -88,23 +88,23 @@ Command AddSweepCommand(CLI::App& app) {
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
-  cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->required();
-  cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->required();
-  cmd->add_option("--steps", args->steps, "intervals between --from and --to (1 to 1e5)")->capture_default_str();
+  cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->type_name("FLOAT")->required();
+  cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->type_name("FLOAT")->required();
+  cmd->add_option("--steps", args->steps, "intervals between --from and --to (1 to 1e5)")->type_name("INT")->capture_default_str();
   cmd->add_option("--transients", args->transients, "forcing periods discarded per point (0 to 1e6)")
-      ->capture_default_str();
-  cmd->add_option("--periods", args->periods, "forcing periods recorded per point (1 to 1e5)")->capture_default_str();
+      ->type_name("INT")->capture_default_str();
+  cmd->add_option("--periods", args->periods, "forcing periods recorded per point (1 to 1e5)")->type_name("INT")->capture_default_str();
   cmd->add_option("--start", args->start,
                   "chained: up then down, each point from the last state; fixed: every point from its "
                   "chain's start, one pass")
       ->capture_default_str();
   cmd->add_option("--chains", args->chains, "starting states, the first the given one (1 to 1e4)")
-      ->capture_default_str();
+      ->type_name("INT")->capture_default_str();
   cmd->add_option("--scatter", args->scatter,
                   "half-width of the box around the given state that the other starts are drawn from (0 to 1e6)")
-      ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "seed of the scattered starts (0 to 1e9)")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "threads (0: every core; 0 to 1024)")->capture_default_str();
+      ->type_name("FLOAT")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed of the scattered starts (0 to 1e9)")->type_name("INT")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "threads (0: every core; 0 to 1024)")->type_name("INT")->capture_default_str();
   cmd->add_option("--output", args->output,
                   "CSV file: chain,pass,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period")
       ->required();

@@ -6,9 +6,32 @@
 
 namespace stickslip {
 
+namespace {
+
+// The message is one line whatever the input held: control characters are written as escapes
+// (a run name with a newline in it is shown as 'two\nlines').
+std::string OneLine(std::string_view text) {
+  std::string line;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      line += "\\n";
+    } else if (c == '\t') {
+      line += "\\t";
+    } else if (u < 0x20 || u == 0x7f) {
+      line += fmt::format("\\x{:02x}", u);
+    } else {
+      line += c;
+    }
+  }
+  return line;
+}
+
+}  // namespace
+
 InvalidInput::InvalidInput(std::string field, std::string value, std::string valid_range,
                            std::string message)
-    : std::invalid_argument(std::move(message)), field_(std::move(field)), value_(std::move(value)),
+    : std::invalid_argument(OneLine(message)), field_(std::move(field)), value_(std::move(value)),
       valid_range_(std::move(valid_range)) {}
 
 InvalidInput::InvalidInput(std::string field, std::string value, std::string valid_range)

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/modal.hpp"
+#include "stickslip/model/simulation.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 
@@ -127,6 +128,28 @@ TEST(Sweep, RecognisesThePeriodOneMotionOfSection41) {
   EXPECT_EQ(p.period, 1);
   EXPECT_DOUBLE_EQ(p.stops_per_period, 2.0);
   EXPECT_DOUBLE_EQ(p.sticks_per_period, 0.0);
+}
+
+// Issue 11, item 9: --transients 1e6 failed with max_events (2e6 events in one simulation). The
+// transients run in chunks, each under the bound: 30000 periods of section 4.1 (60000 events)
+// under a bound of 30000 events, settling where one simulation without that bound settles.
+TEST(Sweep, TransientsLongerThanTheEventBoundRunInChunks) {
+  const PaperExample& e = *FindPaperExample("paper-4.1");
+  SweepOptions o;
+  o.from = o.to = e.parameters.omega;
+  o.steps = 1;
+  o.start = SweepStart::kFixed;
+  o.transient_periods = 30000;
+  o.recorded_periods = 2;
+  o.max_events_per_simulation = 30000;
+  const SweepPoint p = Sweep(e.parameters, {e.initial_state}, e.phi, o).front();
+  SimulationOptions whole;
+  whole.duration = o.transient_periods * 2.0 * std::numbers::pi / e.parameters.omega;
+  const SimulationResult r = SimulateExact(e.parameters, e.initial_state, e.phi, whole);
+  ASSERT_TRUE(r.Completed()) << r.message;
+  ASSERT_GT(r.events.size(), 30000u);
+  EXPECT_LT((p.section.front() - r.segments.back().end).lpNorm<Eigen::Infinity>(), 1e-9);
+  EXPECT_EQ(p.period, 1);
 }
 
 TEST(Sweep, RejectsNoStartsAndCountsOutOfRange) {

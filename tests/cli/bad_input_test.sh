@@ -59,7 +59,7 @@ expect_rejected point "valid RUN:LABEL" --point paper-5.1-omega-up
 expect_rejected point "valid labels EP1" --point paper-5.1-omega-up:XX9 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "cannot read" --point no-such-run:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "at most one" --point paper-5.1-omega-up:TR2 --preset paper-5.1 --results "${STICKSLIP_SOURCE:?}/results"
-expect_rejected point "without '/' or '..'" --point ./b:EP1 --results "${STICKSLIP_SOURCE:?}/results"
+expect_rejected point "without '/', '..'" --point ./b:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 expect_rejected point "not '.'" --point .:EP1 --results "${STICKSLIP_SOURCE:?}/results"
 
 command=sweep

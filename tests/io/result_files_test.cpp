@@ -4,6 +4,8 @@
 #include "stickslip/io/result_files.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -53,6 +55,23 @@ TEST(ResultFiles, ReadingThenWritingEveryStoredRunGivesItsBytes) {
     EXPECT_EQ(written.special_points_csv, stored.special_points_csv);
     EXPECT_EQ(written.summary_json, stored.summary_json);
   }
+}
+
+// The tables write a non-finite number as fmt does (inf, -inf, nan), the form numpy, pandas and
+// Python's float() read, and their reader takes it back; summary.json holds no such number.
+TEST(ResultFiles, NonFiniteNumbersInTheTablesRoundTrip) {
+  StoredRun run = ReadRunFiles(kResults / "paper-5.1-omega-up");
+  const double inf = std::numeric_limits<double>::infinity();
+  run.branch[1].margins[0].second = inf;
+  run.branch[1].margins[1].second = -inf;
+  run.branch[1].fold_test = std::numeric_limits<double>::quiet_NaN();
+  const RunFiles files = FormatRunFiles(run);
+  EXPECT_NE(files.branch_csv.find(",inf,-inf,"), std::string::npos);
+  const StoredRun back = ParseRunFiles(files, kResults / "paper-5.1-omega-up");
+  EXPECT_EQ(back.branch[1].margins[0].second, inf);
+  EXPECT_EQ(back.branch[1].margins[1].second, -inf);
+  EXPECT_TRUE(std::isnan(back.branch[1].fold_test));
+  EXPECT_EQ(FormatRunFiles(back).branch_csv, files.branch_csv);
 }
 
 // The first row of paper-5.1-omega-up/branch.csv, field by field (the values are the file's text).
@@ -105,6 +124,37 @@ TEST(ResultFiles, LabelledPointGivesTheOrbitVariablesOfTheSpecialPoint) {
   ASSERT_EQ(point.variables.size(), 13u);  // 5 parameters, phi, x10, x20, v10, 4 durations
   EXPECT_EQ(point.variables[2], std::make_pair(std::string("omega"), 0.5868188660921189));
   EXPECT_EQ(point.variables.back().first, "d4");
+}
+
+// Issue 11: a branch ending at a located fold wrote two rows "LP3" (the fold, then the end's EP).
+TEST(ResultFiles, EverySpecialPointOfAStoredRunHasALabelOfItsOwn) {
+  int runs = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(kResults)) {
+    if (!fs::exists(entry.path() / "summary.json")) continue;
+    ++runs;
+    const StoredRun run = ReadRunFiles(entry.path());
+    std::vector<std::string> labels;
+    for (const StoredSpecialPoint& s : run.special_points) {
+      EXPECT_EQ(std::count(labels.begin(), labels.end(), s.point.label), 0)
+          << entry.path().filename() << ": " << s.point.label << " twice";
+      labels.push_back(s.point.label);
+      EXPECT_TRUE(s.point.label.starts_with(s.type)) << entry.path().filename() << ": " << s.point.label << " is a " << s.type;
+    }
+  }
+  EXPECT_GE(runs, 19);
+}
+
+TEST(ResultFiles, TheEndAtALocatedFoldIsAnEndPointWithTheNextLabel) {
+  const StoredRun run = ReadRunFiles(kResults / "paper-5.2-omega-up");
+  ASSERT_GE(run.special_points.size(), 2u);
+  const StoredSpecialPoint& fold = run.special_points[run.special_points.size() - 2];
+  const StoredSpecialPoint& end = run.special_points.back();
+  EXPECT_EQ(fold.point.label, "LP3");
+  EXPECT_EQ(end.type, "EP");
+  EXPECT_EQ(end.point.label, "EP4");
+  EXPECT_EQ(end.point.pt, fold.point.pt);
+  EXPECT_EQ(ReadLabelledPoint(kResults, "paper-5.2-omega-up", "EP4").variables,
+            ReadLabelledPoint(kResults, "paper-5.2-omega-up", "LP3").variables);
 }
 
 // ---- Damaged files: each is one InvalidInput whose message names where.

@@ -335,5 +335,37 @@ TEST(SimulationProgress, ReportsEveryEventInForcingPeriods) {
   }
 }
 
+// A streamed simulation (SimulationOptions::on_sample) gives the samples a stored one keeps, in
+// the same order, each with the mode of the first segment that reaches its time; section 5.1
+// (stops and sticks every period), both simulators.
+TEST(Simulators, StreamTheSamplesTheyWouldStoreWithTheirSegmentsModes) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  SimulationOptions options;
+  options.duration = 3.3 * 2.0 * std::numbers::pi / e.parameters.omega;
+  options.sample_step = 0.0137;
+  for (const bool exact : {true, false}) {
+    SCOPED_TRACE(exact ? "exact" : "odeint");
+    auto simulate = [&](const SimulationOptions& o) {
+      return exact ? SimulateExact(e.parameters, e.initial_state, e.phi, o)
+                   : SimulateOdeint(e.parameters, e.initial_state, e.phi, o);
+    };
+    const SimulationResult stored = simulate(options);
+    std::vector<std::pair<TimeSample, Mode>> streamed;
+    SimulationOptions streaming = options;
+    streaming.on_sample = [&](const TimeSample& s, Mode m) { streamed.emplace_back(s, m); };
+    const SimulationResult result = simulate(streaming);
+    EXPECT_TRUE(result.samples.empty());
+    ASSERT_EQ(streamed.size(), stored.samples.size());
+    ASSERT_GT(streamed.size(), 1000u);
+    for (std::size_t k = 0; k < streamed.size(); ++k) {
+      ASSERT_EQ(streamed[k].first.t, stored.samples[k].t);
+      ASSERT_EQ(streamed[k].first.state, stored.samples[k].state);
+      std::size_t segment = 0;
+      while (segment + 1 < stored.segments.size() && stored.segments[segment].t_end < streamed[k].first.t) ++segment;
+      ASSERT_EQ(streamed[k].second, stored.segments[segment].mode) << "t = " << streamed[k].first.t;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stickslip

@@ -1,5 +1,6 @@
 // Bad input, the one error convention of the library: a value a caller gave lies outside its
-// valid range. The message is one line naming the field, the value and the valid range,
+// valid range. The message is one line naming the field, the value and the valid range (control
+// characters in it are written as escapes: \n, \t, \x1b),
 //   "omega = -1 is invalid: valid range omega > 0",
 // and the command line maps the exception to exit code 2 with nothing written (Python will map
 // it to ValueError). Numerical outcomes (no convergence, a branch that ended, a verification

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/model/transient.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip {
@@ -23,6 +24,13 @@ double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
   return pass == SweepPass::kDown ? o.to - fraction * (o.to - o.from) : o.from + fraction * (o.to - o.from);
 }
 
+// A simulation of the point that stopped early, named.
+std::runtime_error PointError(const SweepOptions& o, int chain, SweepPass pass, int step, const Parameters& p,
+                              const std::string& message) {
+  return std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
+                                        ToString(pass), step, ToString(o.parameter), p[o.parameter], message));
+}
+
 // The simulation of one point, or an error naming the point.
 SimulationResult SimulateOrThrow(const Parameters& p, const State& x0, double phi, double duration,
                                  const SweepOptions& o, int chain, SweepPass pass, int step) {
@@ -30,10 +38,7 @@ SimulationResult SimulateOrThrow(const Parameters& p, const State& x0, double ph
   options.duration = duration;
   options.max_events = o.max_events_per_simulation;
   SimulationResult r = SimulateExact(p, x0, phi, options);
-  if (!r.Completed()) {
-    throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
-                                         ToString(pass), step, ToString(o.parameter), p[o.parameter], r.message));
-  }
+  if (!r.Completed()) throw PointError(o, chain, pass, step, p, r.message);
   return r;
 }
 
@@ -44,12 +49,14 @@ SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_
   Parameters p = base;
   p[o.parameter] = ValueAt(o, pass, step);
   const double period = 2.0 * std::numbers::pi / p.omega;
-  State settled = start;
-  if (o.transient_periods > 0) {
-    settled = SimulateOrThrow(p, start, phi_section, o.transient_periods * period, o, chain, pass, step)
-                  .segments.back()
-                  .end;
-  }
+  // The transients in chunks (SimulateTransient), each a simulation under max_events_per_simulation,
+  // so that the largest --transients (1e6 periods, millions of events) runs.
+  TransientOptions transient;
+  transient.periods = o.transient_periods;
+  transient.simulation.max_events = o.max_events_per_simulation;
+  const Transient settled_transient = SimulateTransient(SimulateExact, p, start, phi_section, transient);
+  if (!settled_transient.Completed()) throw PointError(o, chain, pass, step, p, settled_transient.message);
+  const State settled = settled_transient.state;
   const SimulationResult r =
       SimulateOrThrow(p, settled, phi_section, o.recorded_periods * period, o, chain, pass, step);
   SweepPoint point{chain, pass, step, p[o.parameter], {}, 0.0, 0.0, 0};

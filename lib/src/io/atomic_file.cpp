@@ -14,38 +14,54 @@
 
 namespace stickslip {
 
-void WriteFileAtomically(const std::filesystem::path& link_or_path, std::string_view content) {
+// A symbolic link is followed: its target is written and the link stays.
+AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& link_or_path) {
   namespace fs = std::filesystem;
   std::error_code not_a_link;
-  const fs::path path = fs::is_symlink(link_or_path, not_a_link) ? fs::weakly_canonical(link_or_path) : link_or_path;
-  const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  path_ = fs::is_symlink(link_or_path, not_a_link) ? fs::weakly_canonical(link_or_path) : link_or_path;
+  const fs::path directory = path_.has_parent_path() ? path_.parent_path() : fs::path(".");
   if (!fs::is_directory(directory)) {
     throw std::runtime_error(
-        fmt::format("cannot write '{}': directory '{}' does not exist", path.string(),
+        fmt::format("cannot write '{}': directory '{}' does not exist", path_.string(),
                     directory.string()));
   }
   // The process id keeps concurrent writers of the same target apart.
-  const fs::path temporary = directory / fmt::format(".{}.tmp.{}", path.filename().string(),
-                                                     static_cast<long>(::getpid()));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw std::runtime_error(fmt::format("cannot write '{}'", temporary.string()));
-    }
-  }
+  temporary_ = directory / fmt::format(".{}.tmp.{}", path_.filename().string(), static_cast<long>(::getpid()));
+  out_.open(temporary_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw std::runtime_error(fmt::format("cannot write '{}'", temporary_.string()));
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (committed_) return;
+  out_.close();
+  std::error_code ignored;
+  std::filesystem::remove(temporary_, ignored);
+}
+
+void AtomicFileWriter::Write(std::string_view piece) {
+  out_.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+}
+
+void AtomicFileWriter::Commit() {
+  namespace fs = std::filesystem;
+  out_.flush();
+  const bool written = static_cast<bool>(out_);
+  out_.close();
+  if (!written || out_.fail()) throw std::runtime_error(fmt::format("cannot write '{}'", temporary_.string()));
   std::error_code error;
-  fs::rename(temporary, path, error);
+  fs::rename(temporary_, path_, error);
   if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
     throw std::runtime_error(
-        fmt::format("cannot rename '{}' to '{}': {}", temporary.string(), path.string(),
+        fmt::format("cannot rename '{}' to '{}': {}", temporary_.string(), path_.string(),
                     error.message()));
   }
+  committed_ = true;
+}
+
+void WriteFileAtomically(const std::filesystem::path& path, std::string_view content) {
+  AtomicFileWriter out(path);
+  out.Write(content);
+  out.Commit();
 }
 
 void CheckOutputFile(const std::filesystem::path& path, const std::string& field) {

@@ -103,7 +103,7 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
     throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
   }
   if (run.max_points < 1 || run.max_points > 1000000) {
-    throw InvalidInput("max-points", run.max_points, "1 <= max-points <= 1000000");
+    throw InvalidInput("max-points", run.max_points, "whole numbers 1 <= max-points <= 1000000");
   }
   if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
 }

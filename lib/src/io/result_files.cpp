@@ -442,7 +442,7 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   std::vector<std::string> labels;
   for (const StoredSpecialPoint& s : stored.special_points) {
     if (s.point.label == label) return {stored.summary.signature, SolutionColumns(s.point.orbit)};
-    if (labels.empty() || labels.back() != s.point.label) labels.push_back(s.point.label);  // an end repeats its label
+    labels.push_back(s.point.label);
   }
   throw InvalidInput::WithMessage(
       "label", fmt::format("label '{}' is not in '{}': valid labels {}", label,

@@ -29,8 +29,8 @@ namespace {
 // multi-line strings, so that the screen knows exactly where comments are.
 void Screen(std::string_view content, std::string_view path) {
   if (content.size() > kMaxRunFileBytes) {
-    throw RunFileError(fmt::format("{}: run file is {} bytes: valid size <= {} bytes", path,
-                                   content.size(), kMaxRunFileBytes));
+    throw RunFileError(fmt::format("{}: run file size = more than {} bytes is invalid: valid size <= {} bytes", path,
+                                   kMaxRunFileBytes, kMaxRunFileBytes));
   }
   int line = 1, column = 0, depth = 0;
   bool comment = false, escaped = false;
@@ -228,7 +228,13 @@ class TableReader {
 }  // namespace
 
 bool IsRunName(std::string_view name) {
-  return !name.empty() && name != "." && name.find('/') == std::string_view::npos && name.find("..") == std::string_view::npos;
+  // A control character would break the one-line messages and listings that name the run.
+  const bool control = std::any_of(name.begin(), name.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7f;
+  });
+  return !name.empty() && name != "." && !control && name.find('/') == std::string_view::npos &&
+         name.find("..") == std::string_view::npos;
 }
 
 RunFile ParseRunFile(std::string_view content, std::string_view path) {
@@ -331,6 +337,11 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   };
   check_member("shooting", run.shooting, {"auto", "single", "multiple"});
   check_member("linear_solver", run.linear_solver, {"klu", "umfpack", "dense"});
+  if (run.shooting == "single" && c.Get("linear_solver")) {  // it would be silently ignored
+    c.Fail(*c.Get("linear_solver"), "linear_solver",
+           fmt::format("= '{}' is invalid with shooting = \"single\": valid only with shooting \"multiple\" or \"auto\"",
+                       run.linear_solver));
+  }
   c.RejectUnknown();
   top.RejectUnknown();
   return run;
@@ -339,6 +350,15 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
 RunFile ReadRunFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw RunFileError(fmt::format("{}: cannot read the run file", path.string()));
+  // The size of the whole file, not of what was read of it before stopping (a 10 MB file read
+  // up to the limit was reported as 69632 bytes); a pipe, whose size is unknown, is read up to
+  // the limit and reported as larger than it.
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (!error && size > kMaxRunFileBytes) {
+    throw RunFileError(fmt::format("{}: run file size = {} bytes is invalid: valid size <= {} bytes", path.string(),
+                                   size, kMaxRunFileBytes));
+  }
   std::string content;
   char buffer[4096];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {

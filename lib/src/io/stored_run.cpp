@@ -1,5 +1,6 @@
 #include "stickslip/io/stored_run.hpp"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -70,9 +71,15 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
                     ToString(b.shooting), ToString(b.branch.end), b.branch.end_message};
   const std::vector<std::string> labels = PointLabels(b.branch);
   for (std::size_t i = 0; i < b.branch.points.size(); ++i) stored.branch.push_back(record(static_cast<int>(i), labels[i]));
+  // Every special point has a label of its own: the first at a point takes the point's label, a
+  // second one there (the branch's end at a located point: LP3, then the end's EP) the next
+  // number (EP4), so that no two rows of special-points.csv share a label.
+  int counter = static_cast<int>(std::count_if(labels.begin(), labels.end(), [](const std::string& l) { return !l.empty(); }));
+  std::vector<bool> taken(b.branch.points.size(), false);
   for (const SpecialPoint& s : b.branch.special_points) {
-    // An end that coincides with a located point keeps that point's label.
-    const std::string label = labels[s.point].empty() ? s.type : labels[s.point];
+    std::string label = labels[s.point];
+    if (label.empty() || taken[s.point]) label = fmt::format("{}{}", s.type, ++counter);
+    taken[s.point] = true;
     stored.special_points.push_back({record(s.point, label), s.type, s.test_function, s.located});
   }
   return stored;

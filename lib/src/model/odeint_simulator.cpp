@@ -409,7 +409,12 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
       const double covered = end ? end->tau : hi;
       for (; next_sample < sample_count && sample_time(next_sample) - t <= covered; ++next_sample) {
         const double tau = std::clamp(sample_time(next_sample) - t, lo, covered);
-        result.samples.push_back({sample_time(next_sample), FromOde(integrator.Interpolated(tau))});
+        const TimeSample sample{sample_time(next_sample), FromOde(integrator.Interpolated(tau))};
+        if (options.on_sample) {
+          options.on_sample(sample, mode);
+        } else {
+          result.samples.push_back(sample);
+        }
       }
     }
 

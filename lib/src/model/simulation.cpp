@@ -159,6 +159,25 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
   State x = x0;
   Mode mode = InitialMode(x0, phi, p);
   if (AtRest(x0)) x(3) = 0.0;
+  // Samples at k sample_step, each from the first segment that reaches it, as soon as that segment
+  // is known. A duration meant as a whole number of sample steps may come out a rounding error
+  // short of it (N T / T < N): its last sample still belongs in.
+  const long sample_count = options.sample_step > 0.0
+                                ? static_cast<long>(std::floor(options.duration / options.sample_step * (1.0 + 1e-12))) + 1
+                                : 0;
+  long next_sample = 0;
+  auto sample_segment = [&](const Segment& s) {
+    for (; next_sample < sample_count; ++next_sample) {
+      const double ts = std::min(static_cast<double>(next_sample) * options.sample_step, options.duration);
+      if (ts > s.t_end) break;
+      const TimeSample sample{ts, Flow(s.mode, s.start, p.omega * s.t_start + phi, ts - s.t_start, p)};
+      if (options.on_sample) {
+        options.on_sample(sample, s.mode);
+      } else {
+        result.samples.push_back(sample);
+      }
+    }
+  };
   while (true) {
     const double phase = p.omega * t + phi;
     const double horizon = options.duration - t;
@@ -176,6 +195,7 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     if (!end) {
       segment.end = motion.StateAt(horizon);
       result.segments.push_back(segment);
+      sample_segment(segment);
       break;
     }
     segment.t_end = t + end->elapsed;
@@ -183,6 +203,7 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
     segment.end(3) = 0.0;  // both events happen at rest: x2' = 0 exactly
     segment.end_reason = end->reason;
     result.segments.push_back(segment);
+    sample_segment(segment);
     result.events.push_back({segment.t_end,
                              end->reason == SegmentEnd::kStop ? EventKind::kStop
                                                               : EventKind::kStickExit,
@@ -196,16 +217,6 @@ SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
       result.message = fmt::format("stopped after {} events at t = {} (max_events)",
                                    result.events.size(), t);
       break;
-    }
-  }
-  if (options.sample_step > 0.0 && !result.segments.empty()) {
-    // A duration meant as a whole number of sample steps may come out a rounding error short of
-    // it (N T / T < N): its last sample still belongs in.
-    const auto count = static_cast<long>(std::floor(options.duration / options.sample_step * (1.0 + 1e-12)));
-    for (long k = 0; k <= count; ++k) {
-      const double ts = std::min(static_cast<double>(k) * options.sample_step, options.duration);
-      if (ts > result.segments.back().t_end) break;
-      result.samples.push_back({ts, StateAt(result, ts)});
     }
   }
   return result;

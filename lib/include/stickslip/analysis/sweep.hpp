@@ -31,11 +31,13 @@ struct SweepOptions {
   double from = 0.0;           // first value of the up (or only) pass
   double to = 0.0;             // last value of the up (or only) pass
   int steps = 50;              // intervals between from and to (>= 1)
-  int transient_periods = 200;  // forcing periods simulated and discarded at each point (>= 0)
+  // Forcing periods simulated and discarded at each point (0 to kMaxTransientPeriods), in chunks
+  // (SimulateTransient, model/transient.hpp), each a simulation of its own from the last one's end.
+  int transient_periods = 200;
   int recorded_periods = 20;    // forcing periods recorded at each point (>= 1)
   double periodicity_tolerance = 1e-6;  // section points this close repeat
   SweepStart start = SweepStart::kChained;
-  // The simulator's guard against chattering, per simulation; reaching it fails the sweep with
+  // The simulator's guard against chattering, per simulation (per transient chunk); reaching it fails the sweep with
   // an error naming the point, rather than recording a motion cut short.
   int max_events_per_simulation = 1000000;
   int threads = 0;  // 0: every hardware thread. The result does not depend on it.

@@ -81,10 +81,12 @@ struct RunFile {
 };
 
 // A run's name is the folder of its results under the results root: one path component, so
-// not empty, not ".", without '/' and without "..".
+// not empty, not ".", without '/' and without ".."; and without control characters, which would
+// break the one-line messages that name it.
 bool IsRunName(std::string_view name);
 // The rule, as error messages state the valid values.
-inline constexpr std::string_view kRunNameRule = "a run name: not empty, not '.', without '/' or '..'";
+inline constexpr std::string_view kRunNameRule =
+    "a run name: not empty, not '.', without '/', '..' or control characters (newline, tab, DEL)";
 
 // Largest run file accepted (a guard against feeding the parser arbitrary data).
 inline constexpr std::size_t kMaxRunFileBytes = 64 * 1024;

@@ -39,7 +39,7 @@ struct StoredPoint {
 
 // One row of special-points.csv: the point's row, then type, test_function and located.
 struct StoredSpecialPoint {
-  StoredPoint point;           // its label is the located point's, or the type at an end
+  StoredPoint point;           // its label, unique in the run: the point's, or a number of its own for a second special point there (the end at a located LP3 is EP4)
   std::string type;            // "LP", "BP", "UZ", "EP", "TR", "PD" or an orbit-type change code
   std::string test_function;   // which function changed sign, or why the branch ended
   bool located = true;         // false if the corrector failed inside the bracket

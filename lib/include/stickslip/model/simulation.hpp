@@ -3,6 +3,7 @@
 // advances the closed-form flows (flows.hpp) from event to event.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,11 +52,18 @@ struct TimeSample {
 struct SimulationOptions {
   double duration = 0.0;      // simulated time from t = 0, > 0
   double sample_step = 0.0;   // > 0: also record the state every sample_step (for CSV output)
-  int max_events = 1000000;   // a guard against chattering; reaching it is reported
+  // A guard against chattering (infinitely many events in finite time) and a bound on the memory
+  // of the stored events and segments (about 150 bytes each); reaching it ends the simulation
+  // with SimulationEnd::kMaxEvents and a message naming it.
+  int max_events = 1000000;
   ZeroSearchOptions zeros;    // event location accuracy (time tolerance 1e-13)
   // Called after every event with done = the time simulated and total = duration, both in
   // forcing periods 2 pi/omega (unit "periods"). Empty: no reports.
   ProgressCallback progress = {};
+  // When set, every sample goes to it in time order, with the mode of the segment that holds it
+  // (at an event, the segment that ends there), instead of into SimulationResult::samples: a long,
+  // finely sampled simulation is then streamed rather than held in memory.
+  std::function<void(const TimeSample&, Mode)> on_sample;
 };
 
 // options.progress, if any, at time t of a simulation of p (both simulators report this way).

@@ -1,0 +1,120 @@
+// stickslip plot: the bifurcation diagram of one stored run as a PNG, drawn by
+// bifurcation_diagram.py (beside the program, or in the source tree's tools/) through
+// /usr/bin/python3 and Debian's matplotlib.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/result_files.hpp"
+#include "stickslip/io/run_file.hpp"
+
+extern char** environ;
+
+namespace stickslip::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PlotArgs {
+  std::string run;
+  std::string results = "results";
+  std::string output = "";  // <run>-bifurcation.png when not given
+  bool output_given = false;  // --output "" is refused, not taken as the default
+};
+
+// The drawing script: beside the program (as the build and an installation put it), else in the
+// source tree it was built from.
+fs::path DrawingScript() {
+  constexpr const char* kScript = "bifurcation_diagram.py";
+  std::error_code error;
+  const fs::path program = fs::read_symlink("/proc/self/exe", error);
+  if (!error && fs::is_regular_file(program.parent_path() / kScript)) return program.parent_path() / kScript;
+  return fs::path(STICKSLIP_SOURCE_DIR) / "tools" / kScript;
+}
+
+// bifurcation_diagram.py's exit code when matplotlib cannot be imported.
+constexpr int kScriptNeedsMatplotlib = 3;
+
+// Runs `argv` without a shell and returns its exit status, or -1 with *why if it could not start.
+int RunProgram(const std::vector<std::string>& argv, std::string* why) {
+  std::vector<char*> pointers;
+  for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
+  pointers.push_back(nullptr);
+  pid_t pid = 0;
+  const int started = posix_spawn(&pid, pointers[0], nullptr, nullptr, pointers.data(), environ);
+  if (started != 0) {
+    *why = std::strerror(started);
+    return -1;
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) {
+      *why = std::strerror(errno);
+      return -1;
+    }
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  *why = fmt::format("it ended by signal {}", WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  return -1;
+}
+
+int RunPlot(const PlotArgs& args) {
+  if (!IsRunName(args.run)) throw InvalidInput("run", "'" + args.run + "'", std::string(kRunNameRule));
+  const fs::path directory = fs::path(args.results) / args.run;
+  ReadRunFiles(directory);  // a missing or damaged run is bad input, before any work
+  const fs::path output = args.output_given ? fs::path(args.output) : fs::path(args.run + "-bifurcation.png");
+  CheckOutputFile(output, "output");
+  if (output.extension() != ".png") {
+    throw InvalidInput("output", "'" + output.string() + "'", "a file name ending in .png");
+  }
+  // STICKSLIP_PYTHON: another interpreter (the tests use it to see a missing one reported).
+  const char* python = std::getenv("STICKSLIP_PYTHON");
+  const std::string interpreter = python && *python ? python : "/usr/bin/python3";
+  const fs::path script = DrawingScript();
+  std::string why;
+  const int status = RunProgram({interpreter, script.string(), directory.string(), output.string()}, &why);
+  if (status == -1 || status == kScriptNeedsMatplotlib) {
+    fmt::print(stderr, "error: plot needs {} with matplotlib (Debian: apt-get install python3 python3-matplotlib): {}\n",
+               interpreter, status == -1 ? why : "matplotlib cannot be imported");
+    return kExitFailure;
+  }
+  if (status != 0) {
+    fmt::print(stderr, "error: {} {} failed (exit {}); nothing was written\n", interpreter, script.string(), status);
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command AddPlotCommand(CLI::App& app) {
+  auto args = std::make_shared<PlotArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "plot",
+      "Draw the bifurcation diagram of a stored run as a PNG (800 x 600): x20 and the segment durations over the "
+      "continued parameter, stable solid, unstable dashed, stretches that are no motion (a margin < 0) grey, special "
+      "points marked and labelled without overprinting. Runs /usr/bin/python3 with matplotlib (python3-matplotlib); "
+      "exit 1 if it is missing.");
+  cmd->add_option("run", args->run, "the run: results/<run>/ (e.g. paper-5.1-omega-up)")->type_name("RUN")->required();
+  cmd->add_option("--results", args->results, "where the run is stored")->type_name("DIR")->capture_default_str();
+  cmd->add_option("--output", args->output, "the PNG file, written whole or not at all (default <run>-bifurcation.png)")
+      ->type_name("FILE.png")
+      ->each([args](const std::string&) { args->output_given = true; });
+  return {cmd, [args] { return RunPlot(*args); }};
+}
+
+}  // namespace stickslip::cli
