@@ -114,7 +114,8 @@ def bifurcation_figure(program, results, run, out):
     directory = os.path.join(results, run)
     summary, rows, _ = read_run(directory)
     parameter = summary["parameter"]
-    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=SIZE)
+    # Wider than the plain diagram: the legend of the orbit and the sweeps stands beside the data.
+    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(SIZE[0] + 3.5, SIZE[1]))
     labels, legend = draw_run(top, bottom, directory)
     family = run.split("-")[0] + "-" + run.split("-")[1]
     # Every sweep of the family over this parameter: sweeps/<family>-<parameter>[-<what>].csv.
@@ -138,11 +139,13 @@ def bifurcation_figure(program, results, run, out):
         top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".",
                  color="0.4" if number == 0 else "C3", ms=3 if number == 0 else 4,
                  label=f"brute force {name}: x2 at phase {phase:.4g} (period 1)")
-    top.legend(handles=legend + top.get_legend_handles_labels()[0], fontsize=7, loc="best")
+    top.legend(handles=legend + top.get_legend_handles_labels()[0], fontsize=7, loc="upper left",
+               bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     top.set_ylabel("x20")
     bottom.set_ylabel("segment durations")
     bottom.set_xlabel(parameter)
     top.set_title(f"{run}: {summary['signature']}\n(solid stable, dashed unstable, grey no motion)", fontsize=10)
+    figure.tight_layout()
     label_points(figure, top, labels)
     save(figure, os.path.join(out, f"{run}-bifurcation.png"))
 
