@@ -16,6 +16,7 @@
 #include "start_options.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip::cli {
@@ -91,15 +92,14 @@ int ExitCode(FindOrbitStatus status) {
 int RunFind(const FindArgs& args) {
   if (!args.write_run.empty()) CheckOutputFile(args.write_run, "write-run");
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
-  FindOrbitOptions options;
-  options.transient_periods = ParseCount("transients", args.transients, 0, FindOrbitOptions::kMaxTransient);
-  options.max_multiple = ParseCount("max-multiple", args.max_multiple, 1, FindOrbitOptions::kMaxMultiple);
-  options.confirmations = ParseCount("confirmations", args.confirmations, 1, 100);
-  const std::string tolerance_range = "1e-12 <= tolerance <= 0.01";
-  options.periodicity_tolerance = ParseNumber("tolerance", args.tolerance, tolerance_range);
-  if (!(options.periodicity_tolerance >= 1e-12 && options.periodicity_tolerance <= 1e-2)) {
-    throw InvalidInput("tolerance", options.periodicity_tolerance, tolerance_range);
-  }
+  // The texts become numbers here; FindOptionsOf checks them, as it does for Python's find.
+  auto number = [](const char* field, const std::string& text) { return ParseNumber(field, text, FindOptionRange(field)); };
+  FindCommand command;
+  command.transients = number("transients", args.transients);
+  command.max_multiple = number("max-multiple", args.max_multiple);
+  command.tolerance = number("tolerance", args.tolerance);
+  command.confirmations = number("confirmations", args.confirmations);
+  FindOrbitOptions options = FindOptionsOf(command);
 
   ProgressLine line("find: transient");
   options.progress = line.Callback();

@@ -26,12 +26,8 @@ double ParseNumber(std::string_view field, std::string_view text, std::string_vi
 }
 
 int ParseCount(std::string_view field, std::string_view text, int low, int high) {
-  const std::string range = fmt::format("whole numbers {} <= {} <= {}", low, field, high);
-  const double value = ParseNumber(field, text, range);
-  if (!(value >= low && value <= high) || value != std::trunc(value)) {
-    throw InvalidInput(std::string(field), value, range);
-  }
-  return static_cast<int>(value);
+  return WholeNumber(field, ParseNumber(field, text, fmt::format("whole numbers {} <= {} <= {}", low, field, high)), low,
+                     high);
 }
 
 }  // namespace stickslip::cli

@@ -13,6 +13,7 @@
 #include <pybind11/operators.h>
 
 #include "bindings.hpp"
+#include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/stored_run.hpp"
@@ -178,6 +179,39 @@ SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std:
   }
   if (!solved) RaiseConvergenceError("Newton did not converge: " + failed.BriefReport(), SummaryDict(failed));
   return std::move(*solved);
+}
+
+// ---- find
+
+// From a simulated motion to its exact orbit, as `stickslip find`: the section's verdict, and the
+// solved orbit (as solve returns it) when Newton converged.
+py::dict Find(const py::dict& start, const FindCommand& command) {
+  const ModelStart input = BuildModelStart(ToStartInput(start));
+  const FindOrbitOptions options = FindOptionsOf(command);
+  FindOrbitResult found;
+  std::optional<SolvedOrbit> solved;
+  {
+    py::gil_scoped_release release;
+    found = FindOrbit(input.parameters, input.initial_state, input.phi, options);
+    if (found.solution && found.solution->summary.Converged()) {
+      std::vector<std::string> unknowns;
+      for (int index : found.problem->free) unknowns.push_back(ov::Name(found.solution->orbit.signature.size(), index));
+      solved = SolvedOrbit{found.solution->orbit, found.solution->summary, found.solution->shooting,
+                           std::move(unknowns), found.problem->unknowns.tie_static_friction, found.margins,
+                           StabilityOf(found.solution->orbit), *found.verification};
+    }
+  }
+  py::dict out;
+  out["status"] = ToString(found.status);
+  out["message"] = found.message;
+  out["transient_periods"] = found.transient_periods;
+  out["period_multiple"] = found.period_multiple;
+  out["mismatch"] = found.mismatch;
+  out["closest_multiple"] = found.closest_multiple;
+  out["antisymmetric"] = found.antisymmetric;
+  out["signature"] = found.start ? py::cast(found.start->signature) : py::none();
+  out["orbit"] = solved ? py::cast(std::move(*solved)) : py::none();
+  return out;
 }
 
 py::dict SimulatorCheckDict(const SimulatorCheck& c, bool simulated) {
@@ -469,6 +503,12 @@ void BindOrbits(py::module_& m) {
   m.def("_preset", &PresetDict, py::arg("name"));
   m.def("_simulate", &Simulate, py::arg("start"), py::arg("periods"), py::arg("method"), py::arg("samples_per_period"));
   m.def("_solve", &Solve, py::arg("start"), py::arg("shooting"), py::arg("linear_solver"));
+  m.def(
+      "_find",
+      [](const py::dict& start, double transients, double max_multiple, double tolerance, double confirmations) {
+        return Find(start, FindCommand{transients, max_multiple, tolerance, confirmations});
+      },
+      py::arg("start"), py::arg("transients"), py::arg("max_multiple"), py::arg("tolerance"), py::arg("confirmations"));
   m.def("_set_keys", [] {
     py::list keys;
     for (const SetKey& k : SetKeys()) {

@@ -1,5 +1,6 @@
 #include "stickslip/invalid_input.hpp"
 
+#include <cmath>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -55,6 +56,13 @@ InvalidInput InvalidInput::Renamed(std::string field) const {
   const bool leading = Predicate().size() != std::string_view(what()).size();
   std::string message = leading ? fmt::format("{} {}", field, Predicate()) : std::string(what());
   return InvalidInput(std::move(field), value_, valid_range_, std::move(message));
+}
+
+int WholeNumber(std::string_view field, double value, int low, int high) {
+  if (!(value >= low && value <= high) || value != std::trunc(value)) {
+    throw InvalidInput(std::string(field), value, fmt::format("whole numbers {} <= {} <= {}", low, field, high));
+  }
+  return static_cast<int>(value);
 }
 
 }  // namespace stickslip

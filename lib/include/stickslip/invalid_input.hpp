@@ -9,6 +9,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace stickslip {
 
@@ -38,5 +39,10 @@ class InvalidInput : public std::invalid_argument {
   std::string value_;
   std::string valid_range_;
 };
+
+// A count given as a number (an option such as steps or max-points): the whole number low <=
+// value <= high, or InvalidInput "<field> = <value> is invalid: valid range whole numbers low <=
+// <field> <= high".
+int WholeNumber(std::string_view field, double value, int low, int high);
 
 }  // namespace stickslip

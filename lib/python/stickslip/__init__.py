@@ -32,8 +32,8 @@ from ._inputs import _one_off_run, _start
 
 __all__ = [
     "Branch", "Continuation", "ConvergenceError", "Orbit", "Parameters", "Preset", "Signature",
-    "Simulation", "SweepResult", "continue_orbit", "natural_frequencies", "presets", "run",
-    "simulate", "solve", "sweep",
+    "Found", "Simulation", "SweepResult", "continue_orbit", "find", "natural_frequencies", "presets",
+    "run", "simulate", "solve", "sweep",
 ]
 
 
@@ -131,6 +131,44 @@ def solve(parameters=None, signature=None, *, preset=None, point=None, results="
     start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
                    guess=guess, free=free, fix=fix, tie_u_r=tie_u_r, paper_choice=paper_choice)
     return _core._solve(start, str(shooting), str(linear_solver))
+
+
+@_dataclass(frozen=True)
+class Found:
+    """What stickslip.find found: `status` ("found", "not-periodic", "no-orbit-type",
+    "simulation-incomplete", "solve-failed", "not-a-motion") and `message`; the period multiple k
+    (0 when none repeats), the section mismatch, whether the motion is antisymmetric, the transient
+    periods simulated; the orbit type read off the motion (`signature`), and the solved `orbit`
+    (an Orbit, as solve returns it) when Newton converged."""
+    status: str
+    message: str
+    transient_periods: int
+    period_multiple: int
+    mismatch: float
+    closest_multiple: int
+    antisymmetric: bool
+    signature: object
+    orbit: object
+
+    @property
+    def found(self):
+        return self.status == "found"
+
+
+def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple=8, tolerance=1e-6,
+         confirmations=3, preset=None, point=None, results="results", set=None):
+    """From a simulated motion to its exact periodic orbit, as `stickslip find`.
+
+    Simulates `transients` forcing periods (0 to 1e6; more while the motion has not settled), finds
+    the smallest k <= max_multiple (1 to 999) after which the stroboscopic section repeats to
+    `tolerance` (relative, 1e-12 to 1e-2) over `confirmations` (1 to 100) more periods of k T, reads
+    the orbit type, durations, phase and state off one period, solves the periodicity equations and
+    verifies the orbit by both simulators. parameters, state, phi, preset, point, set: as simulate.
+    Returns a Found; every numerical outcome is its status (the command line's exit codes 0, 1, 3,
+    4, 5). Bad input raises ValueError.
+    """
+    start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    return Found(**_core._find(start, float(transients), float(max_multiple), float(tolerance), float(confirmations)))
 
 
 def continue_orbit(parameter, range, **keywords):

@@ -1,6 +1,7 @@
 #include "stickslip/io/command_options.hpp"
 
 #include <array>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string_view>
@@ -122,18 +123,15 @@ constexpr std::array<WholeRange, 6> kSweepWholeNumbers = {{{"steps", 1, 100000},
                                                            {"seed", 0, 1000000000},
                                                            {"threads", 0, 1024}}};
 
-int WholeNumber(std::string_view field, double value) {
+int SweepWholeNumber(std::string_view field, double value) {
   for (const WholeRange& r : kSweepWholeNumbers) {
-    if (r.field != field) continue;
-    if (!(value >= r.low && value <= r.high) || value != static_cast<int>(value)) {
-      throw InvalidInput(std::string(field), value, fmt::format("whole numbers {}", SweepOptionRange(field)));
-    }
-    return static_cast<int>(value);
+    if (r.field == field) return WholeNumber(field, value, r.low, r.high);
   }
   throw std::logic_error(fmt::format("no sweep option '{}'", field));
 }
 
 }  // namespace
+
 
 std::string SweepOptionRange(std::string_view field) {
   if (field == "scatter") return "0 <= scatter <= 1e6";
@@ -151,9 +149,9 @@ SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
   options.parameter = *parameter;
   options.from = c.from;
   options.to = c.to;
-  options.steps = WholeNumber("steps", c.steps);
-  options.transient_periods = WholeNumber("transients", c.transients);
-  options.recorded_periods = WholeNumber("periods", c.periods);
+  options.steps = SweepWholeNumber("steps", c.steps);
+  options.transient_periods = SweepWholeNumber("transients", c.transients);
+  options.recorded_periods = SweepWholeNumber("periods", c.periods);
   if (c.start == "chained") {
     options.start = SweepStart::kChained;
   } else if (c.start == "fixed") {
@@ -161,12 +159,32 @@ SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
   } else {
     throw InvalidInput("start", "'" + c.start + "'", "chained, fixed");
   }
-  const int chains = WholeNumber("chains", c.chains);
+  const int chains = SweepWholeNumber("chains", c.chains);
   if (!(c.scatter >= 0.0 && c.scatter <= 1e6)) throw InvalidInput("scatter", c.scatter, SweepOptionRange("scatter"));
-  const int seed = WholeNumber("seed", c.seed);
-  options.threads = WholeNumber("threads", c.threads);
+  const int seed = SweepWholeNumber("seed", c.seed);
+  options.threads = SweepWholeNumber("threads", c.threads);
   plan.starts = ScatteredStarts(origin.initial_state, c.scatter, chains, static_cast<std::uint64_t>(seed));
   return plan;
+}
+
+std::string FindOptionRange(std::string_view field) {
+  if (field == "transients") return fmt::format("whole numbers 0 <= transients <= {}", FindOrbitOptions::kMaxTransient);
+  if (field == "max-multiple") return fmt::format("whole numbers 1 <= max-multiple <= {}", FindOrbitOptions::kMaxMultiple);
+  if (field == "confirmations") return "whole numbers 1 <= confirmations <= 100";
+  if (field == "tolerance") return "1e-12 <= tolerance <= 0.01";
+  throw std::logic_error(fmt::format("no find option '{}'", field));
+}
+
+FindOrbitOptions FindOptionsOf(const FindCommand& command) {
+  FindOrbitOptions options;
+  options.transient_periods = WholeNumber("transients", command.transients, 0, FindOrbitOptions::kMaxTransient);
+  options.max_multiple = WholeNumber("max-multiple", command.max_multiple, 1, FindOrbitOptions::kMaxMultiple);
+  options.confirmations = WholeNumber("confirmations", command.confirmations, 1, 100);
+  if (!(command.tolerance >= 1e-12 && command.tolerance <= 1e-2)) {
+    throw InvalidInput("tolerance", command.tolerance, FindOptionRange("tolerance"));
+  }
+  options.periodicity_tolerance = command.tolerance;
+  return options;
 }
 
 }  // namespace stickslip

@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/model/parameters.hpp"
@@ -82,5 +83,17 @@ struct SweepPlan {
   std::vector<State> starts;
 };
 SweepPlan PlanSweep(const SweepCommand& command, const ModelStart& origin);
+
+// find: the options as given (numbers not yet checked to be whole or in range), the defaults the
+// library's. FindOptionsOf checks them, naming "transients", "max-multiple", "tolerance" or
+// "confirmations"; FindOptionRange(field) is the valid range of one, for help texts and messages.
+struct FindCommand {
+  double transients = FindOrbitOptions{}.transient_periods;
+  double max_multiple = FindOrbitOptions{}.max_multiple;
+  double tolerance = FindOrbitOptions{}.periodicity_tolerance;
+  double confirmations = FindOrbitOptions{}.confirmations;
+};
+std::string FindOptionRange(std::string_view field);
+FindOrbitOptions FindOptionsOf(const FindCommand& command);
 
 }  // namespace stickslip
