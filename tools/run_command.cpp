@@ -92,6 +92,16 @@ int RunRuns(const RunArgs& args) {
   std::vector<RunFile> runs;
   for (const std::string& f : args.files) runs.push_back(ReadRunFile(f));
   for (const RunFile& run : runs) CheckRunOutput(run, args.results);
+  // Two run files with one output: the second would replace the first's results unseen.
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (runs[j].output != runs[i].output) continue;
+      throw RunFileError(fmt::format("{}: key 'output' = '{}' is invalid: valid an output no other run file of the "
+                                     "command has ({} has it too)",
+                                     runs[i].Location("output"), runs[i].output, runs[j].path),
+                         "output");
+    }
+  }
   int code = kExitOk;
   for (const RunFile& run : runs) {
     std::optional<Executed> e = Execute(run, args.results);

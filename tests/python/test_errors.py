@@ -60,6 +60,12 @@ CASES = {
     "continue max points": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t",
                                                              max_points=0),
                             [*CONTINUE, "--range", "0.3,0.9", "--max-points", "0"]),
+    "continue fractional max points": (
+        lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", max_points=2.5),
+        [*CONTINUE, "--range", "0.3,0.9", "--max-points", "2.5"]),
+    "continue holding its parameter": (
+        lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", fix=["omega"]),
+        [*CONTINUE, "--range", "0.3,0.9", "--fix", "omega"]),
     "continue output": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="a/b"),
                         ["continue", "--preset", "paper-5.1", "--parameter", "omega", "--range", "0.3,0.9",
                          "--output", "a/b"]),
@@ -117,3 +123,23 @@ def test_a_saved_run_does_not_replace_a_directory_of_the_user(tmp_path):
         branch.save(mine)
     assert (mine / "notes.txt").read_text() == "keep"
     assert sorted(p.name for p in mine.iterdir()) == ["notes.txt"]
+
+
+# Keywords of a continuation that pybind11 could not cast ("Unable to cast Python instance to C++
+# type", a RuntimeError) or that passed unchecked (a NaN user value) are ValueErrors naming them.
+@pytest.mark.parametrize("keywords, message", [
+    ({"max_points": 10**30}, "max-points = 1000000000000000000000000000000 is invalid"),
+    ({"max_points": "3"}, "max-points = '3' is invalid: valid range whole numbers"),
+    ({"max_points": True}, "max-points = True is invalid"),
+    ({"detect_folds": "maybe"}, "detect_folds = 'maybe' is invalid: valid range True or False"),
+    ({"detect_branch_points": 1}, "detect_branch_points = 1 is invalid: valid range True or False"),
+    ({"user_values": [float("nan")]}, "user_values = nan is invalid: valid range finite numbers"),
+    ({"user_values_of": {"u_r": [float("inf")]}}, "user_values_of = inf is invalid: valid range finite numbers"),
+])
+def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(keywords, message):
+    with pytest.raises(ValueError, match=message.replace("(", r"\(")):
+        stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", output="t", **keywords)
+
+
+def test_a_whole_max_points_given_as_a_float_is_taken():
+    assert len(stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3.0)) == 3

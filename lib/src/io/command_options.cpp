@@ -18,7 +18,7 @@ InvalidInput AsOption(const InvalidInput& error) {
   // its keys: "(command line): key 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r'
   // twice ...", and "(command line): key 'start' gives invalid data: d1 = 1e+308 is invalid: ..."
   // the value's own message.
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kOptions = {{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 12> kOptions = {{
       {"start.set", "set"},
       {"start.guess", "guess"},
       {"start.preset", "preset"},
@@ -27,6 +27,7 @@ InvalidInput AsOption(const InvalidInput& error) {
       {"unknowns.free", "free"},
       {"unknowns.fix", "fix"},
       {"unknowns.tie_u_r", "tie-u_r"},
+      {"unknowns", "unknowns"},  // --free and --fix together: "unknowns is invalid: the system is not square ..."
       {"continuation.range", "range"},
       {"continuation.parameter", "parameter"},
       {"continuation.user_values_of", "user-value"},
