@@ -143,3 +143,17 @@ def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(k
 
 def test_a_whole_max_points_given_as_a_float_is_taken():
     assert len(stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3.0)) == 3
+
+
+def test_a_stored_run_with_a_non_finite_orbit_variable_is_refused_on_load(tmp_path):
+    # Branch.load took omega = nan with no complaint (found by the hostile-input pass).
+    import shutil
+    run = tmp_path / "damaged"
+    shutil.copytree(f"{RESULTS}/paper-5.1-omega-up", run)
+    lines = (run / "branch.csv").read_text().splitlines()
+    fields = lines[2].split(",")
+    fields[lines[0].split(",").index("omega")] = "nan"
+    lines[2] = ",".join(fields)
+    (run / "branch.csv").write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=r"branch.csv:3: column 'omega' = 'nan' is not a finite number"):
+        stickslip.Branch.load(run)
