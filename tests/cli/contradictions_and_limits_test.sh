@@ -69,31 +69,21 @@ assert first["margin:velocity:1"] == "inf" and float(first["margin:velocity:1"])
 PY
 then pass; else fail "non-finite numbers: solve --json is not strict JSON with null, or branch.csv has no inf"; fi
 
-# Found by the hostile-input pass: holding the continued parameter (--fix omega with
-# --parameter omega, or fix = ["omega"] in a run file) was accepted and the run went on in omega.
-expect 2 "fix = 'omega' is invalid: valid range a variable other than the continued parameter omega" \
-  "$bin" "${cont[@]}" --fix omega
-expect 2 "fix = 'omega' is invalid: valid range a variable other than the continued parameter omega" \
-  "$bin" "${cont[@]}" --fix omega=0.6
-cat > "$work/fix-parameter.toml" <<'TOML'
-output = "fix-parameter"
-[start]
-preset = "paper-4.1"
-[unknowns]
-fix = ["omega"]
-[continuation]
-parameter = "omega"
-direction = "up"
-range = [0.5, 0.7]
-TOML
-expect 2 "key 'unknowns.fix' = 'omega' is invalid: valid range a variable other than the continued parameter" \
-  "$bin" run --results "$work/out" "$work/fix-parameter.toml"
+# Found by the hostile-input pass:
 # A system that is not square is named as the options, not as a run file's key '(command line): key ...'.
 expect 2 "error: unknowns is invalid: the system is not square" "$bin" "${cont[@]}" --fix phi
 # An empty --write-run is refused, not taken as no --write-run (find exited 0 and wrote nothing).
 expect 2 "write-run = '' is invalid: it is empty" "$bin" find --preset paper-4.1 --transients 10 --write-run ""
 # Two run files of one command with one output: the second replaced the first's results unseen.
-sed 's/fix-parameter/one-output/; /^fix = /d' "$work/fix-parameter.toml" > "$work/first.toml"
+cat > "$work/first.toml" <<'TOML'
+output = "one-output"
+[start]
+preset = "paper-4.1"
+[continuation]
+parameter = "omega"
+direction = "up"
+range = [0.5, 0.7]
+TOML
 sed 's/0.5, 0.7/0.55, 0.7/' "$work/first.toml" > "$work/second.toml"
 expect 2 "key 'output' = 'one-output' is invalid: valid an output no other run file of the command has" \
   "$bin" run --results "$work/out" "$work/first.toml" "$work/second.toml"

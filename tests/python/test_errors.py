@@ -63,9 +63,6 @@ CASES = {
     "continue fractional max points": (
         lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", max_points=2.5),
         [*CONTINUE, "--range", "0.3,0.9", "--max-points", "2.5"]),
-    "continue holding its parameter": (
-        lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", fix=["omega"]),
-        [*CONTINUE, "--range", "0.3,0.9", "--fix", "omega"]),
     "continue output": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="a/b"),
                         ["continue", "--preset", "paper-5.1", "--parameter", "omega", "--range", "0.3,0.9",
                          "--output", "a/b"]),

@@ -232,11 +232,6 @@ StartProblem BuildStartProblem(const StartInput& input) {
 
   std::optional<int> parameter;
   if (input.parameter) {
-    // The continued parameter varies along the branch: holding it too is a contradiction.
-    if (std::find(unknowns.fix.begin(), unknowns.fix.end(), *input.parameter) != unknowns.fix.end()) {
-      throw InvalidInput("fix", "'" + *input.parameter + "'",
-                         fmt::format("a variable other than the continued parameter {}", *input.parameter));
-    }
     parameter = ContinuedVariable(signature, free, unknowns.tie_static_friction, *input.parameter);
   }
   return {std::move(orbit), unknowns, free, parameter};
