@@ -183,12 +183,7 @@ int RunContinue(ContinueArgs args) {
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
   run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
   CheckOneOffRun(run, args.range);
-  if (args.linear_solver_given && run.shooting == "single") {
-    throw InvalidInput::WithMessage(
-        "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
-                                     "multiple or auto (single shooting solves its dense system directly)",
-                                     run.linear_solver));
-  }
+  CheckLinearSolverIsUsed(args.linear_solver_given ? run.linear_solver : "", run.shooting);
   for (const std::string& text : args.user_values) {
     const auto equals = text.find('=');
     if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");

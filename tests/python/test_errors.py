@@ -40,6 +40,9 @@ CASES = {
                         ["solve", "--preset", "paper-5.1", "--free", "x10"]),
     "not square": (lambda: stickslip.solve(preset="paper-5.1", free="u_r"),
                    ["solve", "--preset", "paper-5.1", "--free", "u_r"]),
+    "linear solver with single shooting": (  # was taken and ignored (found by the hostile-input pass)
+        lambda: stickslip.solve(preset="paper-5.1", shooting="single", linear_solver="umfpack"),
+        ["solve", "--preset", "paper-5.1", "--shooting", "single", "--linear-solver", "umfpack"]),
     "fix a non-variable": (lambda: stickslip.solve(preset="paper-5.1", fix="d9"),
                            ["solve", "--preset", "paper-5.1", "--fix", "d9"]),
     "guess twice": (lambda: stickslip.solve(preset="paper-5.1", set={"omega": 0.57}, guess={"omega": 0.58}),

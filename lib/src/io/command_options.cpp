@@ -109,6 +109,14 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
   if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
 }
 
+void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view shooting) {
+  if (linear_solver.empty() || shooting != "single") return;
+  throw InvalidInput::WithMessage(
+      "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
+                                   "multiple or auto (single shooting solves its dense system directly)",
+                                   linear_solver));
+}
+
 namespace {
 
 struct WholeRange {
