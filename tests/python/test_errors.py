@@ -40,6 +40,8 @@ CASES = {
                         ["solve", "--preset", "paper-5.1", "--free", "x10"]),
     "not square": (lambda: stickslip.solve(preset="paper-5.1", free="u_r"),
                    ["solve", "--preset", "paper-5.1", "--free", "u_r"]),
+    "u_r beside tie_u_r": (lambda: stickslip.solve(preset="paper-4.2", set={"u_r": 0.9}),
+                           ["solve", "--preset", "paper-4.2", "--set", "u_r=0.9"]),
     "linear solver with single shooting": (  # was taken and ignored (found by the hostile-input pass)
         lambda: stickslip.solve(preset="paper-5.1", shooting="single", linear_solver="umfpack"),
         ["solve", "--preset", "paper-5.1", "--shooting", "single", "--linear-solver", "umfpack"]),
