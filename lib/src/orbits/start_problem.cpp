@@ -211,15 +211,6 @@ StartProblem BuildStartProblem(const StartInput& input) {
   for (const FixedVariable& f : input.fix) {
     if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Checked(f.name, *f.value));
   }
-  // Under tie_u_r, u_r follows u_s: a different u_r of the user's was dropped silently.
-  if (unknowns.tie_static_friction) {
-    const double u_s = v.x(ov::Parameter(n, ParameterId::kSlidingFriction));
-    for (const auto& [name, value] : values) {
-      if (name != "u_r" || value == u_s) continue;
-      throw InvalidInput::WithMessage(
-          "u_r", fmt::format("u_r = {} is invalid with tie-u_r: valid u_r = u_s = {}, or no u_r (it follows u_s)", value, u_s));
-    }
-  }
   Orbit orbit = ov::Unpack(signature, v.x);
   orbit.parameters = CheckedParameters(v, n, unknowns.tie_static_friction);
   for (int i = 0; i < n; ++i) {
@@ -242,6 +233,15 @@ StartProblem BuildStartProblem(const StartInput& input) {
   std::optional<int> parameter;
   if (input.parameter) {
     parameter = ContinuedVariable(signature, free, unknowns.tie_static_friction, *input.parameter);
+  }
+  // Under tie_u_r, u_r follows u_s: a different u_r of the user's was dropped silently.
+  if (unknowns.tie_static_friction) {
+    const double u_s = orbit.parameters.u_s;
+    for (const auto& [name, value] : values) {
+      if (name != "u_r" || value == u_s) continue;
+      throw InvalidInput::WithMessage(
+          "u_r", fmt::format("u_r = {} is invalid with tie-u_r: valid u_r = u_s = {}, or no u_r (it follows u_s)", value, u_s));
+    }
   }
   return {std::move(orbit), unknowns, free, parameter};
 }
