@@ -30,6 +30,7 @@ struct FindArgs {
   std::string tolerance = fmt::format("{}", FindOrbitOptions{}.periodicity_tolerance);
   std::string confirmations = std::to_string(FindOrbitOptions{}.confirmations);
   std::string write_run;
+  bool write_run_given = false;  // --write-run "" is refused, not taken as no --write-run
 };
 
 std::string Number(double x) {
@@ -90,7 +91,7 @@ int ExitCode(FindOrbitStatus status) {
 }
 
 int RunFind(const FindArgs& args) {
-  if (!args.write_run.empty()) CheckOutputFile(args.write_run, "write-run");
+  if (args.write_run_given) CheckOutputFile(args.write_run, "write-run");
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   // The texts become numbers here; FindOptionsOf checks them, as it does for Python's find.
   auto number = [](const char* field, const std::string& text) { return ParseNumber(field, text, FindOptionRange(field)); };
@@ -118,7 +119,7 @@ int RunFind(const FindArgs& args) {
     fmt::print("{}", OrbitReport(*found.solution, found.problem->free, found.problem->unknowns.tie_static_friction,
                                  ToString(options.solver.sparse_solver), found.margins, *found.verification));
     fmt::print("solve it again, or continue from it, with:\n  {}\n", SolveCommandLine(solved));
-    if (!args.write_run.empty()) {
+    if (args.write_run_given) {
       WriteFileAtomically(args.write_run, RunFileText(solved, args.write_run));
       fmt::print("run file   {} (stickslip run {})\n", args.write_run, args.write_run);
     }
@@ -170,7 +171,8 @@ Command AddFindCommand(CLI::App& app) {
   cmd->add_option("--write-run", args->write_run,
                   "also write a run file for stickslip run with the found orbit as its [start] (a continuation in "
                   "omega over +-10%, to edit); written whole or not at all, checked before the work")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->each([args](const std::string&) { args->write_run_given = true; });
   return {cmd, [args] { return RunFind(*args); }};
 }
 

@@ -92,6 +92,16 @@ int RunRuns(const RunArgs& args) {
   std::vector<RunFile> runs;
   for (const std::string& f : args.files) runs.push_back(ReadRunFile(f));
   for (const RunFile& run : runs) CheckRunOutput(run, args.results);
+  // Two run files with one output: the second would replace the first's results unseen.
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (runs[j].output != runs[i].output) continue;
+      throw RunFileError(fmt::format("{}: key 'output' = '{}' is invalid: valid an output no other run file of the "
+                                     "command has ({} has it too)",
+                                     runs[i].Location("output"), runs[i].output, runs[j].path),
+                         "output");
+    }
+  }
   int code = kExitOk;
   for (const RunFile& run : runs) {
     std::optional<Executed> e = Execute(run, args.results);
@@ -173,12 +183,7 @@ int RunContinue(ContinueArgs args) {
   run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
   run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
   CheckOneOffRun(run, args.range);
-  if (args.linear_solver_given && run.shooting == "single") {
-    throw InvalidInput::WithMessage(
-        "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
-                                     "multiple or auto (single shooting solves its dense system directly)",
-                                     run.linear_solver));
-  }
+  CheckLinearSolverIsUsed(args.linear_solver_given ? run.linear_solver : "", run.shooting);
   for (const std::string& text : args.user_values) {
     const auto equals = text.find('=');
     if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "orbit_report.hpp"
 #include "start_options.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
@@ -104,12 +105,7 @@ int RunSolve(const SolveArgs& args) {
   options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
   // A sparse solver means something only where multiple shooting may be chosen: given with single
   // shooting it would be silently ignored, so the contradiction is refused.
-  if (!args.linear_solver.empty() && options.shooting == ShootingChoice::kSingle) {
-    throw InvalidInput::WithMessage(
-        "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
-                                     "multiple or auto (single shooting solves its dense system directly)",
-                                     args.linear_solver));
-  }
+  CheckLinearSolverIsUsed(args.linear_solver, args.shooting);
   options.sparse_solver = *LinearSolverFromString(args.linear_solver.empty() ? "klu" : args.linear_solver);
   const OrbitSolution solution = SolveOrbit(start.orbit, start.free, start.unknowns.tie_static_friction, options);
   const Orbit& orbit = solution.orbit;

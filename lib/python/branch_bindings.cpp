@@ -1,7 +1,9 @@
 // Branches for Python: a continuation run given by keywords (as `stickslip continue`) or by a run
 // file (as `stickslip run`), continued in one call or stepped by hand, its stored form with the
 // library's one writer and reader of result files, and brute-force sweeps.
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -36,6 +38,35 @@ struct RunInput {
   std::string results = "results";
 };
 
+// A keyword's value as the run takes it, refused in the command line's words (InvalidInput, a
+// ValueError) rather than by pybind11's bare cast error: a whole number (2.5 or 10**30 would not
+// fit the run's int), True or False, finite numbers.
+int WholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
+  const auto refuse = [&] { return InvalidInput(field, std::string(py::repr(value)), std::string(valid)); };
+  if (py::isinstance<py::bool_>(value) || !(PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()))) throw refuse();
+  double x = 0;
+  try {
+    x = py::float_(py::reinterpret_borrow<py::object>(value));
+  } catch (const py::error_already_set&) {  // an int too large for a double
+    throw refuse();
+  }
+  if (!(std::trunc(x) == x && std::abs(x) <= std::numeric_limits<int>::max())) throw refuse();
+  return static_cast<int>(x);
+}
+
+bool TrueOrFalse(const py::handle& value, const std::string& field) {
+  if (!py::isinstance<py::bool_>(value)) throw InvalidInput(field, std::string(py::repr(value)), "True or False");
+  return value.cast<bool>();
+}
+
+std::vector<double> FiniteNumbers(const py::handle& values, const std::string& field) {
+  std::vector<double> numbers = values.cast<std::vector<double>>();
+  for (double v : numbers) {
+    if (!std::isfinite(v)) throw InvalidInput(field, v, "finite numbers");
+  }
+  return numbers;
+}
+
 RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   RunInput input;
   RunFile& run = input.run;
@@ -51,7 +82,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.ds = o["ds"].cast<double>();
   run.ds_min = o["ds_min"].cast<double>();
   run.ds_max = o["ds_max"].cast<double>();
-  run.max_points = o["max_points"].cast<int>();
+  run.max_points = WholeNumber(o["max_points"], "max-points", "whole numbers 1 <= max-points <= 1000000");
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
@@ -59,12 +90,13 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   if (!LinearSolverFromString(run.linear_solver)) {
     throw InvalidInput("linear_solver", "'" + run.linear_solver + "'", "klu, umfpack, dense");
   }
-  run.detect_folds = o["detect_folds"].cast<bool>();
-  run.detect_branch_points = o["detect_branch_points"].cast<bool>();
-  run.continue_past_type_changes = o["continue_past_type_changes"].cast<bool>();
-  for (double v : o["user_values"].cast<std::vector<double>>()) run.user_values.emplace_back(run.parameter, v);
+  run.detect_folds = TrueOrFalse(o["detect_folds"], "detect_folds");
+  run.detect_branch_points = TrueOrFalse(o["detect_branch_points"], "detect_branch_points");
+  run.continue_past_type_changes = TrueOrFalse(o["continue_past_type_changes"], "continue_past_type_changes");
+  for (double v : FiniteNumbers(o["user_values"], "user_values")) run.user_values.emplace_back(run.parameter, v);
   for (const auto& [name, values] : o["user_values_of"].cast<py::dict>()) {
-    for (double v : values.cast<std::vector<double>>()) run.user_values.emplace_back(name.cast<std::string>(), v);
+    const std::string key = name.cast<std::string>();
+    for (double v : FiniteNumbers(values, "user_values_of")) run.user_values.emplace_back(key, v);
   }
   return input;
 }

@@ -156,7 +156,9 @@ SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std:
   const std::optional<ShootingChoice> choice = ShootingChoiceFromString(shooting);
   if (!choice) throw InvalidInput("shooting", "'" + shooting + "'", "auto, single, multiple");
   options.shooting = *choice;
-  const std::optional<LinearSolverType> solver = LinearSolverFromString(linear_solver);
+  // An empty linear_solver is one not given (klu where multiple shooting is used).
+  CheckLinearSolverIsUsed(linear_solver, shooting);
+  const std::optional<LinearSolverType> solver = LinearSolverFromString(linear_solver.empty() ? "klu" : linear_solver);
   if (!solver) throw InvalidInput("linear-solver", "'" + linear_solver + "'", "klu, umfpack, dense");
   options.sparse_solver = *solver;
   std::vector<std::string> unknowns;

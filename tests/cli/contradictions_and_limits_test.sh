@@ -69,6 +69,20 @@ assert first["margin:velocity:1"] == "inf" and float(first["margin:velocity:1"])
 PY
 then pass; else fail "non-finite numbers: solve --json is not strict JSON with null, or branch.csv has no inf"; fi
 
+# Found by the hostile-input pass:
+# A system that is not square is named as the options, not as a run file's key '(command line): key ...'.
+expect 2 "error: unknowns is invalid: the system is not square" "$bin" "${cont[@]}" --fix phi
+# Under tie-u_r a u_r of the user's other than u_s was dropped silently (paper-4.2 ties u_r to u_s).
+expect 2 "u_r = 0.9 is invalid with tie-u_r: valid u_r = u_s = 0.1717, or no u_r" "$bin" solve --preset paper-4.2 --set u_r=0.9
+expect 2 "u_r = 0.9 is invalid with tie-u_r" "$bin" solve --preset paper-5.1 --tie-u_r --guess u_r=0.9
+# An empty --write-run is refused, not taken as no --write-run (find exited 0 and wrote nothing).
+expect 2 "write-run = '' is invalid: it is empty" "$bin" find --preset paper-4.1 --transients 10 --write-run ""
+# Two run files of one command with one output: the second replaced the first's results unseen.
+sed '/^shooting = /d; /^linear_solver = /d; s/single-klu/one-output/' "$work/single.toml" > "$work/first.toml"
+sed 's/0.5, 0.7/0.55, 0.7/' "$work/first.toml" > "$work/second.toml"
+expect 2 "key 'output' = 'one-output' is invalid: valid an output no other run file of the command has" \
+  "$bin" run --results "$work/out" "$work/first.toml" "$work/second.toml"
+
 # ---- Item 9: the documented maxima are reached.
 # 1e6 forcing periods of section 4.1's orbit (two stops a period): 2e6 events, under the
 # default --max-events 1e7; the CSV of 1e6 periods x 1 sample is streamed to the file.

@@ -56,6 +56,14 @@ damage special-points.csv 'f = lines[5].split(","); f[4] = "0.58.1"; lines[5] = 
 expect_rejected "results/$run/special-points.csv:6: column 'omega' = '0.58.1' is not a number" export --auto "results/$run"
 expect_rejected "key 'start.restart' = '$run:UZ5' cannot be used: results/$run/special-points.csv:6: column 'omega'" run --results results "$restart_file"
 
+# A non-finite orbit variable (an orbit is never stored with one): export and plot used to pass
+# it on with exit 0 (found by the hostile-input pass); a restart refused it already.
+damage branch.csv 'f = lines[2].split(","); f[4] = "nan"; lines[2] = ",".join(f)'
+expect_rejected "results/$run/branch.csv:3: column 'omega' = 'nan' is not a finite number" export --auto "results/$run"
+damage special-points.csv 'f = lines[1].split(","); f[8] = "inf"; lines[1] = ",".join(f)'
+expect_rejected "results/$run/special-points.csv:2: column 'x10' = 'inf' is not a finite number" export --auto "results/$run"
+expect_rejected "results/$run/special-points.csv:2: column 'x10' = 'inf' is not a finite number" simulate --point "$run:EP1" --results results --periods 1
+
 # A key missing from summary.json.
 damage summary.json 'lines[:] = [l for l in lines if "\"parameter\"" not in l]'
 expect_rejected "results/$run/summary.json: key 'parameter' is missing" export --auto "results/$run"

@@ -40,6 +40,11 @@ CASES = {
                         ["solve", "--preset", "paper-5.1", "--free", "x10"]),
     "not square": (lambda: stickslip.solve(preset="paper-5.1", free="u_r"),
                    ["solve", "--preset", "paper-5.1", "--free", "u_r"]),
+    "u_r beside tie_u_r": (lambda: stickslip.solve(preset="paper-4.2", set={"u_r": 0.9}),
+                           ["solve", "--preset", "paper-4.2", "--set", "u_r=0.9"]),
+    "linear solver with single shooting": (  # was taken and ignored (found by the hostile-input pass)
+        lambda: stickslip.solve(preset="paper-5.1", shooting="single", linear_solver="umfpack"),
+        ["solve", "--preset", "paper-5.1", "--shooting", "single", "--linear-solver", "umfpack"]),
     "fix a non-variable": (lambda: stickslip.solve(preset="paper-5.1", fix="d9"),
                            ["solve", "--preset", "paper-5.1", "--fix", "d9"]),
     "guess twice": (lambda: stickslip.solve(preset="paper-5.1", set={"omega": 0.57}, guess={"omega": 0.58}),
@@ -60,6 +65,9 @@ CASES = {
     "continue max points": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t",
                                                              max_points=0),
                             [*CONTINUE, "--range", "0.3,0.9", "--max-points", "0"]),
+    "continue fractional max points": (
+        lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="t", max_points=2.5),
+        [*CONTINUE, "--range", "0.3,0.9", "--max-points", "2.5"]),
     "continue output": (lambda: stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", output="a/b"),
                         ["continue", "--preset", "paper-5.1", "--parameter", "omega", "--range", "0.3,0.9",
                          "--output", "a/b"]),
@@ -117,3 +125,37 @@ def test_a_saved_run_does_not_replace_a_directory_of_the_user(tmp_path):
         branch.save(mine)
     assert (mine / "notes.txt").read_text() == "keep"
     assert sorted(p.name for p in mine.iterdir()) == ["notes.txt"]
+
+
+# Keywords of a continuation that pybind11 could not cast ("Unable to cast Python instance to C++
+# type", a RuntimeError) or that passed unchecked (a NaN user value) are ValueErrors naming them.
+@pytest.mark.parametrize("keywords, message", [
+    ({"max_points": 10**30}, "max-points = 1000000000000000000000000000000 is invalid"),
+    ({"max_points": "3"}, "max-points = '3' is invalid: valid range whole numbers"),
+    ({"max_points": True}, "max-points = True is invalid"),
+    ({"detect_folds": "maybe"}, "detect_folds = 'maybe' is invalid: valid range True or False"),
+    ({"detect_branch_points": 1}, "detect_branch_points = 1 is invalid: valid range True or False"),
+    ({"user_values": [float("nan")]}, "user_values = nan is invalid: valid range finite numbers"),
+    ({"user_values_of": {"u_r": [float("inf")]}}, "user_values_of = inf is invalid: valid range finite numbers"),
+])
+def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(keywords, message):
+    with pytest.raises(ValueError, match=message.replace("(", r"\(")):
+        stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", output="t", **keywords)
+
+
+def test_a_whole_max_points_given_as_a_float_is_taken():
+    assert len(stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3.0)) == 3
+
+
+def test_a_stored_run_with_a_non_finite_orbit_variable_is_refused_on_load(tmp_path):
+    # Branch.load took omega = nan with no complaint (found by the hostile-input pass).
+    import shutil
+    run = tmp_path / "damaged"
+    shutil.copytree(f"{RESULTS}/paper-5.1-omega-up", run)
+    lines = (run / "branch.csv").read_text().splitlines()
+    fields = lines[2].split(",")
+    fields[lines[0].split(",").index("omega")] = "nan"
+    lines[2] = ",".join(fields)
+    (run / "branch.csv").write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=r"branch.csv:3: column 'omega' = 'nan' is not a finite number"):
+        stickslip.Branch.load(run)

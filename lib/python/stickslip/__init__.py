@@ -112,7 +112,7 @@ def simulate(parameters=None, state=None, phi=None, *, periods=2.0, method="exac
 
 
 def solve(parameters=None, signature=None, *, preset=None, point=None, results="results", set=None, guess=None,
-          free=None, fix=None, tie_u_r=False, paper_choice=False, shooting="auto", linear_solver="klu"):
+          free=None, fix=None, tie_u_r=False, paper_choice=False, shooting="auto", linear_solver=None):
     """Solve the periodicity equations of an orbit type for one periodic orbit, as `stickslip solve`.
 
     parameters  Parameters of the model (or preset=, point=, set=)
@@ -123,14 +123,15 @@ def solve(parameters=None, signature=None, *, preset=None, point=None, results="
     fix         variables held: a list of names (held at their guess) or {name: value}
     tie_u_r     hold u_r = u_s (abnormal stops need it, eq. 25)
     paper_choice  with preset: the paper's own choice of unknowns (see ERRATA)
-    shooting    "auto", "single" or "multiple"; linear_solver "klu", "umfpack" or "dense" (multiple)
+    shooting    "auto", "single" or "multiple"; linear_solver "klu" (default), "umfpack" or "dense"
+                where multiple shooting is used (refused with shooting="single", where it is not)
     Returns an Orbit. Raises ConvergenceError if Newton does not converge. A converged orbit that is
     not a motion (a margin <= 0, orbit.admissible False) or fails its verification is returned: the
     command line exits 4 for it.
     """
     start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
                    guess=guess, free=free, fix=fix, tie_u_r=tie_u_r, paper_choice=paper_choice)
-    return _core._solve(start, str(shooting), str(linear_solver))
+    return _core._solve(start, str(shooting), "" if linear_solver is None else str(linear_solver))
 
 
 @_dataclass(frozen=True)

@@ -19,7 +19,7 @@ InvalidInput AsOption(const InvalidInput& error) {
   // its keys: "(command line): key 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r'
   // twice ...", and "(command line): key 'start' gives invalid data: d1 = 1e+308 is invalid: ..."
   // the value's own message.
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kOptions = {{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 12> kOptions = {{
       {"start.set", "set"},
       {"start.guess", "guess"},
       {"start.preset", "preset"},
@@ -28,6 +28,7 @@ InvalidInput AsOption(const InvalidInput& error) {
       {"unknowns.free", "free"},
       {"unknowns.fix", "fix"},
       {"unknowns.tie_u_r", "tie-u_r"},
+      {"unknowns", "unknowns"},  // --free and --fix together: "unknowns is invalid: the system is not square ..."
       {"continuation.range", "range"},
       {"continuation.parameter", "parameter"},
       {"continuation.user_values_of", "user-value"},
@@ -107,6 +108,14 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
     throw InvalidInput("max-points", run.max_points, "whole numbers 1 <= max-points <= 1000000");
   }
   if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
+}
+
+void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view shooting) {
+  if (linear_solver.empty() || shooting != "single") return;
+  throw InvalidInput::WithMessage(
+      "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
+                                   "multiple or auto (single shooting solves its dense system directly)",
+                                   linear_solver));
 }
 
 namespace {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -68,6 +69,12 @@ int CsvTable::Column(std::string_view name) const {
 double CsvTable::Number(int row, int column) const {
   double value = 0.0;
   if (!ParseWhole(Text(row, column), &value)) throw Error(row, column, "is not a number");
+  return value;
+}
+
+double CsvTable::FiniteNumber(int row, int column) const {
+  const double value = Number(row, column);
+  if (!std::isfinite(value)) throw Error(row, column, "is not a finite number");
   return value;
 }
 

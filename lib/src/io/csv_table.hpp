@@ -29,6 +29,8 @@ class CsvTable {
   const std::string& Text(int row, int column) const { return rows_[row].fields[column]; }
   // The whole field as a double in the form fmt writes ("0.5", "1e-08", "inf", "-inf", "nan").
   double Number(int row, int column) const;
+  // Number, finite: for the columns a writer never leaves non-finite (an orbit's variables).
+  double FiniteNumber(int row, int column) const;
   int Integer(int row, int column) const;
   bool Flag(int row, int column) const;  // "1" or "0"
 

@@ -207,7 +207,7 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
 
 StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
   Eigen::VectorXd variables(ov::Count(signature.size()));
-  for (const auto& [column, index] : c.variables) variables(index) = t.Number(row, column);
+  for (const auto& [column, index] : c.variables) variables(index) = t.FiniteNumber(row, column);
   StoredPoint p{.pt = t.Integer(row, c.pt), .label = t.Text(row, c.label), .orbit = ov::Unpack(signature, variables)};
   for (int column : c.margins) {
     p.margins.emplace_back(t.header()[column].substr(kMarginPrefix.size()), t.Number(row, column));

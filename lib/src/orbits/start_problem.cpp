@@ -234,6 +234,15 @@ StartProblem BuildStartProblem(const StartInput& input) {
   if (input.parameter) {
     parameter = ContinuedVariable(signature, free, unknowns.tie_static_friction, *input.parameter);
   }
+  // Under tie_u_r, u_r follows u_s: a different u_r of the user's was dropped silently.
+  if (unknowns.tie_static_friction) {
+    const double u_s = orbit.parameters.u_s;
+    for (const auto& [name, value] : values) {
+      if (name != "u_r" || value == u_s) continue;
+      throw InvalidInput::WithMessage(
+          "u_r", fmt::format("u_r = {} is invalid with tie-u_r: valid u_r = u_s = {}, or no u_r (it follows u_s)", value, u_s));
+    }
+  }
   return {std::move(orbit), unknowns, free, parameter};
 }
 

@@ -57,6 +57,11 @@ int ContinuationDirection(std::string_view direction);
 // "range", "ds", "max-points" or "output".
 void CheckOneOffRun(const RunFile& run, std::string_view range_text);
 
+// A linear solver given (non-empty `linear_solver`) with shooting "single" would be ignored: single
+// shooting solves its dense system directly. Throws InvalidInput naming "linear-solver"; the
+// command line's --linear-solver and Python's linear_solver= alike.
+void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view shooting);
+
 // sweep: the options as given, numbers not yet checked to be whole or in range. The defaults are
 // the command line's and Python's.
 struct SweepCommand {
