@@ -533,11 +533,37 @@ TEST(ClosedLoop, AnOpenBranchIsNotClosed) {
   EXPECT_EQ(b.end, BranchEnd::kParameterBound) << b.end_message;
 }
 
+// A thin Z, lambda = y^3 - 3y with y = x/a: three sheets 3.4a apart at the start's lambda, closer
+// than a step. The branch passes near its start on the third sheet, heading the same way, but
+// never returns to it: it runs on to its bound.
+struct ThinZ : ScalarProblem {
+  double a = 1e-3;
+  double F(double x, double l) const override { return l - (x * x * x / (a * a * a) - 3.0 * x / a); }
+  double Fx(double x, double) const override { return -(3.0 * x * x / (a * a * a) - 3.0 / a); }
+  double Fl(double, double) const override { return 1.0; }
+};
+
+TEST(ClosedLoop, ABranchPassingNearItsStartOnAnotherSheetIsNotClosed) {
+  for (double a : {1e-2, 3e-3, 1e-3}) {
+    ThinZ z;
+    z.a = a;
+    ContinuationOptions o;
+    o.parameter_index = 1;
+    o.lambda_min = -10.0;
+    o.lambda_max = 10.0;
+    o.step.ds_max = 0.2;
+    const Branch b = Continuation(z, nullptr, o, Eigen::Vector2d(-1.5 * a, 1.125)).Run();
+    EXPECT_EQ(b.end, BranchEnd::kParameterBound) << "a = " << a << ": " << b.end_message;
+    EXPECT_EQ(OfType(b, "LP").size(), 2u) << "a = " << a;
+  }
+}
+
 TEST(ClosedLoopOptions, RejectValuesOutOfRange) {
   for (const auto& [invalidate, field] : std::vector<std::pair<std::function<void(ClosedLoopOptions*)>, std::string>>{
            {[](ClosedLoopOptions* c) { c->tolerance = 0.0; }, "closed_loop.tolerance"},
            {[](ClosedLoopOptions* c) { c->alignment = 1.5; }, "closed_loop.alignment"},
-           {[](ClosedLoopOptions* c) { c->departure = 0.5; }, "closed_loop.departure"}}) {
+           {[](ClosedLoopOptions* c) { c->departure = 0.5; }, "closed_loop.departure"},
+           {[](ClosedLoopOptions* c) { c->landing = 0.0; }, "closed_loop.landing"}}) {
     ContinuationOptions o;
     o.parameter_index = 1;
     invalidate(&o.closed_loop);

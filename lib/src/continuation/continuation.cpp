@@ -32,6 +32,7 @@ void ClosedLoopOptions::Validate() const {
   if (!(departure >= 1.0 && departure <= 1e6)) {
     throw InvalidInput("closed_loop.departure", departure, "1 <= departure <= 1e6");
   }
+  if (!(landing > 0.0 && landing <= 1e-3)) throw InvalidInput("closed_loop.landing", landing, "0 < landing <= 1e-3");
 }
 
 void ContinuationOptions::Validate() const {
@@ -275,14 +276,15 @@ bool Continuation::ClosesTheLoop() {
   const double along = std::clamp(to_start.dot(chord) / (length * length), 0.0, 1.0);
   if (!((to_start - along * chord).norm() <= o.tolerance * length)) return true;
   if (!(st.start_tangent.dot(chord) >= o.alignment * length)) return true;
+  // The step onto the start must land on it: a sheet of the branch that merely passes near the
+  // start (a thin Z, its sheets closer than a step) lands elsewhere, and the step stands as it was.
   const double s = st.last.tangent.dot(to_start);
-  if (s > 0.0) {
-    if (std::optional<detail::Sample> onto = st.corrector.Corrected(st.last, s, detail::Attempt::kStep)) {
-      st.next = std::move(*onto);
-      st.next_ds = s;
-      st.on_bound = false;
-    }
-  }
+  if (!(s > 0.0)) return true;
+  std::optional<detail::Sample> onto = st.corrector.Corrected(st.last, s, detail::Attempt::kStep);
+  if (!onto || !((onto->u - st.start_u).norm() <= o.landing * (1.0 + st.start_u.norm()))) return true;
+  st.next = std::move(*onto);
+  st.next_ds = s;
+  st.on_bound = false;
   st.closes_loop = true;
   return true;
 }

@@ -71,6 +71,9 @@ struct ClosedLoopOptions {
   // Only looked for once a point of the branch lay farther from the start than this many of the
   // longest step so far (the first steps pass the start: they leave it).
   double departure = 3.0;
+  // The step retaken onto the start must land within this of it, relative to 1 + |start|; else
+  // the branch passed near the start without returning to it (another sheet) and goes on.
+  double landing = 1e-8;
 
   void Validate() const;  // throws InvalidInput naming the first field out of range
 };
