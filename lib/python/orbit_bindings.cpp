@@ -124,6 +124,12 @@ py::dict SimulationDict(const SimulationResult& r) {
 py::dict Simulate(const py::dict& start, double periods, const std::string& method, double samples_per_period) {
   const ModelStart input = BuildModelStart(ToStartInput(start));
   const SimulationOptions options = SimulationOver(input.parameters, periods, samples_per_period, true);
+  // The samples are returned as arrays, so they are kept: at most 1e7 (320 MB); the command
+  // line streams its CSV instead.
+  if (!(periods * samples_per_period <= 1e7)) {
+    throw InvalidInput("samples-per-period", samples_per_period,
+                       fmt::format("periods ({}) x samples-per-period <= 1e7: the samples are kept in memory", periods));
+  }
   if (method != "exact" && method != "odeint") throw InvalidInput("method", "'" + method + "'", "exact, odeint");
   SimulationResult result;
   {

@@ -40,6 +40,9 @@ expect 2 "linear_solver' = 'umfpack' is invalid with shooting = \"single\"" "$bi
 # A run name with a control character breaks every message and listing that names it.
 expect 2 "control characters" "$bin" "${base[@]}" --output $'two\nlines'
 expect 2 "control characters" "$bin" "${base[@]}" --output $'tab\there'
+# A name the file system would refuse is refused before the work (it once failed after it, exit 1).
+expect 2 "1 to 200 bytes" "$bin" "${base[@]}" --output "$(printf 'n%.0s' {1..201})"
+expect 2 "1 to 200 bytes" "$bin" "${base[@]}" --output "$(printf 'n%.0s' {1..250})" --direction both
 # A run file over the size limit: its size and the limit.
 head -c 10485760 /dev/zero | tr '\0' '#' > "$work/big.toml"
 expect 2 "run file size = 10485760 bytes is invalid: valid size <= 65536 bytes" "$bin" run --results "$work/out" "$work/big.toml"

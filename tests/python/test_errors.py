@@ -107,6 +107,13 @@ def test_bad_input_raises_value_error_with_the_command_line_message(case, tmp_pa
     assert str(error.value) == expected
 
 
+def test_a_simulation_keeps_at_most_ten_million_samples_in_memory():
+    with pytest.raises(ValueError) as error:
+        stickslip.simulate(preset="paper-5.1", periods=1e6, samples_per_period=1e5)
+    assert str(error.value) == ("samples-per-period = 100000 is invalid: valid range periods (1000000) x "
+                                "samples-per-period <= 1e7: the samples are kept in memory")
+
+
 def test_continue_orbit_takes_one_direction_where_the_command_line_also_takes_both():
     # One call continues one branch; `stickslip continue --direction both` writes two runs.
     with pytest.raises(ValueError) as error:

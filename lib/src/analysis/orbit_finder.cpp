@@ -224,7 +224,11 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
     TransientOptions transient;
     transient.periods = next;
     transient.simulation = sim;
-    transient.simulation.progress = options.progress;
+    if (options.progress) {  // counted over every round: done never decreases
+      transient.simulation.progress = [&options, before = result.transient_periods, next](const Progress& p) {
+        options.progress({before + p.done, static_cast<double>(before + next), p.unit, p.value});
+      };
+    }
     const Transient settling = SimulateTransient(SimulateExact, parameters, settled, phi, transient);
     if (!settling.Completed()) {
       result.status = FindOrbitStatus::kSimulationIncomplete;

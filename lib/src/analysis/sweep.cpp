@@ -108,8 +108,9 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& 
                               const SweepOptions& options) {
   if (starts.empty()) throw InvalidInput("starts", "none", "at least one starting state");
   if (options.steps < 1) throw InvalidInput("steps", options.steps, "steps >= 1");
-  if (options.transient_periods < 0) {
-    throw InvalidInput("transient_periods", options.transient_periods, "transient_periods >= 0");
+  if (options.transient_periods < 0 || options.transient_periods > kMaxTransientPeriods) {
+    throw InvalidInput("transient_periods", options.transient_periods,
+                       fmt::format("0 <= transient_periods <= {}", kMaxTransientPeriods));
   }
   if (options.recorded_periods < 1) {
     throw InvalidInput("recorded_periods", options.recorded_periods, "recorded_periods >= 1");

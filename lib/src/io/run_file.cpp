@@ -233,7 +233,7 @@ bool IsRunName(std::string_view name) {
     const auto u = static_cast<unsigned char>(c);
     return u < 0x20 || u == 0x7f;
   });
-  return !name.empty() && name != "." && !control && name.find('/') == std::string_view::npos &&
+  return !name.empty() && name.size() <= kMaxRunNameLength && name != "." && !control && name.find('/') == std::string_view::npos &&
          name.find("..") == std::string_view::npos;
 }
 

@@ -56,7 +56,7 @@ struct FindOrbitOptions {
   // Newton on the periodicity equations.
   OrbitSolverOptions solver;
 
-  // Reports the transient's simulated periods (each round's transient counted from 0).
+  // Reports the transient periods simulated over every round (total: those of the rounds so far).
   ProgressCallback progress = {};
 
   static constexpr int kMaxTransient = kMaxTransientPeriods;

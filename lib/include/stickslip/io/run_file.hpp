@@ -81,12 +81,15 @@ struct RunFile {
 };
 
 // A run's name is the folder of its results under the results root: one path component, so
-// not empty, not ".", without '/' and without ".."; and without control characters, which would
-// break the one-line messages that name it.
+// not empty, not ".", without '/' and without ".."; without control characters, which would
+// break the one-line messages that name it; and at most kMaxRunNameLength bytes (a file system
+// takes 255: the rest is room for "-down"/"-up" and the temporary names beside it, so that a long
+// name is refused before the work, not after it).
+inline constexpr std::size_t kMaxRunNameLength = 200;
 bool IsRunName(std::string_view name);
 // The rule, as error messages state the valid values.
 inline constexpr std::string_view kRunNameRule =
-    "a run name: not empty, not '.', without '/', '..' or control characters (newline, tab, DEL)";
+    "a run name: 1 to 200 bytes, not '.', without '/', '..' or control characters (newline, tab, DEL)";
 
 // Largest run file accepted (a guard against feeding the parser arbitrary data).
 inline constexpr std::size_t kMaxRunFileBytes = 64 * 1024;
