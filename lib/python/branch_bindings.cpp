@@ -88,8 +88,9 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
   run.linear_solver = o["linear_solver"].cast<std::string>();
   if (!LinearSolverFromString(run.linear_solver)) {
-    throw InvalidInput("linear_solver", "'" + run.linear_solver + "'", "klu, umfpack, dense");
+    throw InvalidInput("linear-solver", "'" + run.linear_solver + "'", "klu, umfpack, dense");
   }
+  CheckLinearSolverIsUsed(o["linear_solver_given"].cast<bool>() ? run.linear_solver : "", run.shooting);
   run.detect_folds = TrueOrFalse(o["detect_folds"], "detect_folds");
   run.detect_branch_points = TrueOrFalse(o["detect_branch_points"], "detect_branch_points");
   run.continue_past_type_changes = TrueOrFalse(o["continue_past_type_changes"], "continue_past_type_changes");

@@ -107,6 +107,13 @@ def test_bad_input_raises_value_error_with_the_command_line_message(case, tmp_pa
     assert str(error.value) == expected
 
 
+def test_a_linear_solver_with_single_shooting_is_refused_as_on_the_command_line():
+    with pytest.raises(ValueError) as error:
+        stickslip.continue_orbit("omega", (0.3, 0.9), preset="paper-5.1", shooting="single", linear_solver="umfpack")
+    assert str(error.value) == cli_error(*CONTINUE, "--range", "0.3,0.9", "--shooting", "single",
+                                         "--linear-solver", "umfpack")
+
+
 def test_a_simulation_keeps_at_most_ten_million_samples_in_memory():
     with pytest.raises(ValueError) as error:
         stickslip.simulate(preset="paper-5.1", periods=1e6, samples_per_period=1e5)

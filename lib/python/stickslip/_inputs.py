@@ -63,7 +63,7 @@ def _one_off_run(parameter, range, *, direction="up", output="python", parameter
     options = {key: (_DEFAULTS[key] if value is None else value) for key, value in given.items()}
     options.update({
         "parameter": str(parameter), "range": (float(range[0]), float(range[1])), "direction": str(direction),
-        "output": str(output), "results": str(results),
+        "output": str(output), "results": str(results), "linear_solver_given": linear_solver is not None,
         "user_values": [float(v) for v in user_values],
         "user_values_of": {str(k): [float(v) for v in vs] for k, vs in (user_values_of or {}).items()},
     })
