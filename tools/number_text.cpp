@@ -26,8 +26,7 @@ double ParseNumber(std::string_view field, std::string_view text, std::string_vi
 }
 
 int ParseCount(std::string_view field, std::string_view text, int low, int high) {
-  return WholeNumber(field, ParseNumber(field, text, fmt::format("whole numbers {} <= {} <= {}", low, field, high)), low,
-                     high);
+  return WholeNumber(field, ParseNumber(field, text, WholeNumberRange(field, low, high)), low, high);
 }
 
 }  // namespace stickslip::cli

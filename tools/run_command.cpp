@@ -36,7 +36,7 @@ std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path&
   ProgressLineOptions line_options;
   line_options.value_name = run.parameter;
   ProgressLine line(run.output, line_options);
-  if (line.enabled()) setup.options.progress = line.Callback();
+  setup.options.progress = line.Callback();
   const auto started = std::chrono::steady_clock::now();
   OrbitBranch branch = ContinueOrbit(setup);
   line.Clear();
@@ -247,7 +247,7 @@ Command AddContinueCommand(CLI::App& app) {
   AddNumberOption(*cmd, "--ds", &args->run.ds, "0 < ds-min <= ds <= ds-max", "initial arclength step (> 0)");
   AddNumberOption(*cmd, "--ds-min", &args->run.ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)");
   AddNumberOption(*cmd, "--ds-max", &args->run.ds_max, "0 < ds-min <= ds <= ds-max", "largest step");
-  AddCountOption(*cmd, "--max-points", &args->run.max_points, 1, 1000000, "accepted points (1 to 1e6)");
+  AddCountOption(*cmd, "--max-points", &args->run.max_points, 1, kMaxRunPoints, "accepted points (1 to 1e6)");
   cmd->add_option("--user-value", args->user_values,
                   "report a UZ point where the variable NAME (the parameter or another unknown) passes VALUE; "
                   "repeatable (the run file's user_values and user_values_of)")

@@ -82,7 +82,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.ds = o["ds"].cast<double>();
   run.ds_min = o["ds_min"].cast<double>();
   run.ds_max = o["ds_max"].cast<double>();
-  run.max_points = WholeNumber(o["max_points"], "max-points", "whole numbers 1 <= max-points <= 1000000");
+  run.max_points = WholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");

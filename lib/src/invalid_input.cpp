@@ -60,9 +60,13 @@ InvalidInput InvalidInput::Renamed(std::string field) const {
 
 int WholeNumber(std::string_view field, double value, int low, int high) {
   if (!(value >= low && value <= high) || value != std::trunc(value)) {
-    throw InvalidInput(std::string(field), value, fmt::format("whole numbers {} <= {} <= {}", low, field, high));
+    throw InvalidInput(std::string(field), value, WholeNumberRange(field, low, high));
   }
   return static_cast<int>(value);
+}
+
+std::string WholeNumberRange(std::string_view field, int low, int high) {
+  return fmt::format("whole numbers {} <= {} <= {}", low, field, high);
 }
 
 }  // namespace stickslip

@@ -44,5 +44,7 @@ class InvalidInput : public std::invalid_argument {
 // value <= high, or InvalidInput "<field> = <value> is invalid: valid range whole numbers low <=
 // <field> <= high".
 int WholeNumber(std::string_view field, double value, int low, int high);
+// That valid range as messages and help texts state it: "whole numbers low <= <field> <= high".
+std::string WholeNumberRange(std::string_view field, int low, int high);
 
 }  // namespace stickslip

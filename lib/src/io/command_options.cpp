@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/io/start_input.hpp"
+#include "stickslip/model/transient.hpp"
 
 namespace stickslip {
 
@@ -104,9 +106,7 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
   if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
     throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
   }
-  if (run.max_points < 1 || run.max_points > 1000000) {
-    throw InvalidInput("max-points", run.max_points, "whole numbers 1 <= max-points <= 1000000");
-  }
+  WholeNumber("max-points", run.max_points, 1, kMaxRunPoints);
   if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
 }
 
@@ -126,27 +126,34 @@ struct WholeRange {
   int high;
 };
 constexpr std::array<WholeRange, 6> kSweepWholeNumbers = {{{"steps", 1, 100000},
-                                                           {"transients", 0, 1000000},
+                                                           {"transients", 0, kMaxTransientPeriods},
                                                            {"periods", 1, 100000},
                                                            {"chains", 1, 10000},
                                                            {"seed", 0, 1000000000},
                                                            {"threads", 0, 1024}}};
+constexpr std::array<WholeRange, 3> kFindWholeNumbers = {{{"transients", 0, FindOrbitOptions::kMaxTransient},
+                                                          {"max-multiple", 1, FindOrbitOptions::kMaxMultiple},
+                                                          {"confirmations", 1, FindOrbitOptions::kMaxConfirmations}}};
 
-int SweepWholeNumber(std::string_view field, double value) {
-  for (const WholeRange& r : kSweepWholeNumbers) {
-    if (r.field == field) return WholeNumber(field, value, r.low, r.high);
+// The range of the whole-number option `field` in `table`, or null when it has none.
+const WholeRange* RangeOf(std::span<const WholeRange> table, std::string_view field) {
+  for (const WholeRange& r : table) {
+    if (r.field == field) return &r;
   }
-  throw std::logic_error(fmt::format("no sweep option '{}'", field));
+  return nullptr;
+}
+
+int WholeNumberOf(std::span<const WholeRange> table, std::string_view field, double value) {
+  const WholeRange* r = RangeOf(table, field);
+  if (!r) throw std::logic_error(fmt::format("no whole-number option '{}'", field));
+  return WholeNumber(field, value, r->low, r->high);
 }
 
 }  // namespace
 
-
 std::string SweepOptionRange(std::string_view field) {
   if (field == "scatter") return "0 <= scatter <= 1e6";
-  for (const WholeRange& r : kSweepWholeNumbers) {
-    if (r.field == field) return fmt::format("{} <= {} <= {}", r.low, field, r.high);
-  }
+  if (const WholeRange* r = RangeOf(kSweepWholeNumbers, field)) return fmt::format("{} <= {} <= {}", r->low, field, r->high);
   return std::string(SetKeyRange(field));  // from, to: the swept parameter's range
 }
 
@@ -158,9 +165,9 @@ SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
   options.parameter = *parameter;
   options.from = c.from;
   options.to = c.to;
-  options.steps = SweepWholeNumber("steps", c.steps);
-  options.transient_periods = SweepWholeNumber("transients", c.transients);
-  options.recorded_periods = SweepWholeNumber("periods", c.periods);
+  options.steps = WholeNumberOf(kSweepWholeNumbers, "steps", c.steps);
+  options.transient_periods = WholeNumberOf(kSweepWholeNumbers, "transients", c.transients);
+  options.recorded_periods = WholeNumberOf(kSweepWholeNumbers, "periods", c.periods);
   if (c.start == "chained") {
     options.start = SweepStart::kChained;
   } else if (c.start == "fixed") {
@@ -168,28 +175,28 @@ SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
   } else {
     throw InvalidInput("start", "'" + c.start + "'", "chained, fixed");
   }
-  const int chains = SweepWholeNumber("chains", c.chains);
+  const int chains = WholeNumberOf(kSweepWholeNumbers, "chains", c.chains);
   if (!(c.scatter >= 0.0 && c.scatter <= 1e6)) throw InvalidInput("scatter", c.scatter, SweepOptionRange("scatter"));
-  const int seed = SweepWholeNumber("seed", c.seed);
-  options.threads = SweepWholeNumber("threads", c.threads);
+  const int seed = WholeNumberOf(kSweepWholeNumbers, "seed", c.seed);
+  options.threads = WholeNumberOf(kSweepWholeNumbers, "threads", c.threads);
   plan.starts = ScatteredStarts(origin.initial_state, c.scatter, chains, static_cast<std::uint64_t>(seed));
   return plan;
 }
 
 std::string FindOptionRange(std::string_view field) {
-  if (field == "transients") return fmt::format("whole numbers 0 <= transients <= {}", FindOrbitOptions::kMaxTransient);
-  if (field == "max-multiple") return fmt::format("whole numbers 1 <= max-multiple <= {}", FindOrbitOptions::kMaxMultiple);
-  if (field == "confirmations") return "whole numbers 1 <= confirmations <= 100";
-  if (field == "tolerance") return "1e-12 <= tolerance <= 0.01";
+  if (const WholeRange* r = RangeOf(kFindWholeNumbers, field)) return WholeNumberRange(field, r->low, r->high);
+  if (field == "tolerance") {
+    return fmt::format("{} <= tolerance <= {}", FindOrbitOptions::kMinTolerance, FindOrbitOptions::kMaxTolerance);
+  }
   throw std::logic_error(fmt::format("no find option '{}'", field));
 }
 
 FindOrbitOptions FindOptionsOf(const FindCommand& command) {
   FindOrbitOptions options;
-  options.transient_periods = WholeNumber("transients", command.transients, 0, FindOrbitOptions::kMaxTransient);
-  options.max_multiple = WholeNumber("max-multiple", command.max_multiple, 1, FindOrbitOptions::kMaxMultiple);
-  options.confirmations = WholeNumber("confirmations", command.confirmations, 1, 100);
-  if (!(command.tolerance >= 1e-12 && command.tolerance <= 1e-2)) {
+  options.transient_periods = WholeNumberOf(kFindWholeNumbers, "transients", command.transients);
+  options.max_multiple = WholeNumberOf(kFindWholeNumbers, "max-multiple", command.max_multiple);
+  options.confirmations = WholeNumberOf(kFindWholeNumbers, "confirmations", command.confirmations);
+  if (!(command.tolerance >= FindOrbitOptions::kMinTolerance && command.tolerance <= FindOrbitOptions::kMaxTolerance)) {
     throw InvalidInput("tolerance", command.tolerance, FindOptionRange("tolerance"));
   }
   options.periodicity_tolerance = command.tolerance;

@@ -138,7 +138,7 @@ class TableReader {
     if (!n) return;
     if (!n->is_integer()) Fail(*n, key, "must be an integer");
     const std::int64_t v = n->as_integer()->get();
-    if (v < 1 || v > 1000000) Fail(*n, key, fmt::format("= {} is invalid: valid range 1 to 1000000", v));
+    if (v < 1 || v > kMaxRunPoints) Fail(*n, key, fmt::format("= {} is invalid: valid range 1 to {}", v, kMaxRunPoints));
     *out = static_cast<int>(v);
   }
   void Boolean(std::string_view key, bool* out) {

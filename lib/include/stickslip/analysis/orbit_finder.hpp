@@ -44,9 +44,9 @@ struct FindOrbitOptions {
   // kMaxMultiple).
   int max_multiple = 8;
   // Section points repeat when |X(t + k T) - X(t)|_inf <= tolerance (1 + |X(t)|_inf), T = 2 pi/omega
-  // (1e-12 to 1e-2). The same test decides antisymmetry, X(t + k T/2) = -X(t) for odd k.
+  // (kMinTolerance to kMaxTolerance). The same test decides antisymmetry, X(t + k T/2) = -X(t) for odd k.
   double periodicity_tolerance = 1e-6;
-  // How many whole periods of k T every section comparison is repeated over (1 to 100).
+  // How many whole periods of k T every section comparison is repeated over (1 to kMaxConfirmations).
   int confirmations = 3;
   // The largest number of listed segments of a found orbit type (1 to 1000): a bound on the
   // equations solved.
@@ -61,6 +61,9 @@ struct FindOrbitOptions {
 
   static constexpr int kMaxTransient = kMaxTransientPeriods;
   static constexpr int kMaxMultiple = 999;  // the signature's "period K" range
+  static constexpr int kMaxConfirmations = 100;
+  static constexpr double kMinTolerance = 1e-12;
+  static constexpr double kMaxTolerance = 1e-2;
   // Throws InvalidInput naming the member ("transient_periods", ...) when one is out of range.
   void Validate() const;
 };

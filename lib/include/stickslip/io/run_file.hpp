@@ -71,7 +71,7 @@ struct RunFile {
   double ds = StepSizeOptions{}.ds;
   double ds_min = StepSizeOptions{}.ds_min;
   double ds_max = StepSizeOptions{}.ds_max;
-  int max_points = ContinuationOptions{}.max_points;
+  int max_points = ContinuationOptions{}.max_points;  // 1 to kMaxRunPoints
   std::string shooting = "auto";
   std::string linear_solver = "klu";
   bool detect_folds = ContinuationOptions{}.detect_folds;
@@ -90,6 +90,9 @@ bool IsRunName(std::string_view name);
 // The rule, as error messages state the valid values.
 inline constexpr std::string_view kRunNameRule =
     "a run name: 1 to 200 bytes, not '.', without '/', '..' or control characters (newline, tab, DEL)";
+
+// The most points a run may ask for (max_points), however it is given.
+inline constexpr int kMaxRunPoints = 1000000;
 
 // Largest run file accepted (a guard against feeding the parser arbitrary data).
 inline constexpr std::size_t kMaxRunFileBytes = 64 * 1024;
