@@ -64,6 +64,7 @@ void ProgressLine::Update(const Progress& progress) {
 }
 
 ProgressCallback ProgressLine::Callback() {
+  if (!enabled_) return {};  // no line: the library need not report at all
   return [this](const Progress& progress) { Update(progress); };
 }
 

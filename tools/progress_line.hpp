@@ -45,7 +45,8 @@ class ProgressLine {
 
   // Redraws the line if it is due. Thread-safe.
   void Update(const Progress& progress);
-  // A callback for the library's options that calls Update; valid while this line lives.
+  // A callback for the library's options that calls Update, valid while this line lives; empty
+  // when no line is drawn, so that the library does not report for nothing.
   ProgressCallback Callback();
   // Erases the line, if one was drawn. Thread-safe; Update after it draws again.
   void Clear();

@@ -59,7 +59,7 @@ int RunSweep(const SweepArgs& args) {
   SweepOptions options = plan.options;
   const int chains = static_cast<int>(plan.starts.size());
   ProgressLine line("sweep");
-  if (line.enabled()) options.progress = line.Callback();
+  options.progress = line.Callback();
   const std::vector<SweepPoint> points = Sweep(input.parameters, plan.starts, input.phi, options);
   line.Clear();
   WriteFileAtomically(args.output, SweepCsv(points, options.parameter, input.phi));

@@ -58,9 +58,10 @@ TEST(ProgressLine, DrawsNothingWhenDisabled) {
   {
     ProgressLine line("run", {}, f, false, [&] { return clock.now; });
     EXPECT_FALSE(line.enabled());
+    EXPECT_FALSE(line.Callback());  // the library is not asked to report
     for (int k = 0; k < 10; ++k) {
       clock.Advance(1.0);
-      line.Callback()({static_cast<double>(k), 10, "points"});
+      line.Update({static_cast<double>(k), 10, "points"});
     }
     line.Clear();
   }

@@ -35,11 +35,12 @@ void FindOrbitOptions::Validate() const {
   check_int("transient_periods", transient_periods, 0, kMaxTransient);
   check_int("settle_rounds", settle_rounds, 0, 10);
   check_int("max_multiple", max_multiple, 1, kMaxMultiple);
-  check_int("confirmations", confirmations, 1, 100);
+  check_int("confirmations", confirmations, 1, kMaxConfirmations);
   check_int("max_segments", max_segments, 1, 1000);
   check_int("max_events", max_events, 1, 100000000);
-  if (!(periodicity_tolerance >= 1e-12 && periodicity_tolerance <= 1e-2)) {
-    throw InvalidInput("periodicity_tolerance", periodicity_tolerance, "1e-12 <= periodicity_tolerance <= 0.01");
+  if (!(periodicity_tolerance >= kMinTolerance && periodicity_tolerance <= kMaxTolerance)) {
+    throw InvalidInput("periodicity_tolerance", periodicity_tolerance,
+                       fmt::format("{} <= periodicity_tolerance <= {}", kMinTolerance, kMaxTolerance));
   }
 }
 
@@ -200,9 +201,9 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
   const double period = 2.0 * std::numbers::pi / parameters.omega;
   SimulationOptions sim;
   sim.max_events = options.max_events;
-  auto incomplete = [&](const SimulationResult& r, const char* which) {
+  auto incomplete = [&](const char* which, const std::string& why) {
     result.status = FindOrbitStatus::kSimulationIncomplete;
-    result.message = fmt::format("the {} simulation stopped early: {}", which, r.message);
+    result.message = fmt::format("the {} simulation stopped early: {}", which, why);
     return result;
   };
 
@@ -230,16 +231,12 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
       };
     }
     const Transient settling = SimulateTransient(SimulateExact, parameters, settled, phi, transient);
-    if (!settling.Completed()) {
-      result.status = FindOrbitStatus::kSimulationIncomplete;
-      result.message = fmt::format("the transient simulation stopped early: {}", settling.message);
-      return result;
-    }
+    if (!settling.Completed()) return incomplete("transient", settling.message);
     settled = settling.state;
     result.transient_periods += next;
     sim.duration = record_periods * period;
     record = SimulateExact(parameters, settled, phi, sim);
-    if (!record.Completed()) return incomplete(record, "recorded");
+    if (!record.Completed()) return incomplete("recorded", record.message);
     section.clear();
     for (int n = 0; n <= recorded; ++n) section.push_back(StateAt(record, n * period));
     // The smallest k whose section repeats and whose events repeat with it (a section that
