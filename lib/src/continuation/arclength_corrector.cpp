@@ -29,6 +29,14 @@ bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, bool record,
 }
 
 std::optional<Sample> ArclengthCorrector::Start(const Eigen::VectorXd& guess, std::string* failure) {
+  if (options_.start_direction.size() > 0) {
+    Sample branch_point;
+    branch_point.u = guess;
+    branch_point.tangent = options_.start_direction.normalized();
+    std::optional<Sample> first = Corrected(branch_point, options_.step.ds, Attempt::kLocated);
+    if (!first) *failure = "the first point along start_direction does not converge: " + last_failure_;
+    return first;
+  }
   const FixedParameterSystem fixed(problem_, guess, options_.parameter_index);
   NewtonOptions newton = options_.corrector;
   newton.max_iterations = std::max(newton.max_iterations, options_.start_iterations);

@@ -34,7 +34,8 @@ class ArclengthCorrector {
   ArclengthCorrector(const NonlinearSystem& problem, const Monitor* monitor, const ContinuationOptions& options);
 
   // `guess` corrected at its lambda, with the tangent towards options.direction in lambda (at a
-  // fold, across the lambda axis, either way);
+  // fold, across the lambda axis, either way); with options.start_direction, the point at
+  // arclength options.step.ds from `guess` along it;
   // nullopt with the reason in *failure if Newton fails or the bordered Jacobian is singular.
   std::optional<Sample> Start(const Eigen::VectorXd& guess, std::string* failure);
   // The point at arclength s from `from` along its tangent; nullopt if the corrector fails

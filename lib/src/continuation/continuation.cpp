@@ -44,6 +44,9 @@ void ContinuationOptions::Validate() const {
   }
   if (max_points < 1) throw InvalidInput("max_points", max_points, "max_points >= 1");
   if (start_iterations < 1) throw InvalidInput("start_iterations", start_iterations, "start_iterations >= 1");
+  if (start_direction.size() > 0 && !(start_direction.allFinite() && start_direction.norm() > 0.0)) {
+    throw InvalidInput("start_direction", start_direction.norm(), "a finite nonzero vector, or empty");
+  }
   if (!(bound_tolerance >= 0.0)) throw InvalidInput("bound_tolerance", bound_tolerance, "bound_tolerance >= 0");
   if (!(start_boundary_tolerance >= 0.0)) {
     throw InvalidInput("start_boundary_tolerance", start_boundary_tolerance, "start_boundary_tolerance >= 0");
@@ -116,6 +119,10 @@ Continuation::Continuation(const NonlinearSystem& problem, const Monitor* monito
   if (start.size() != problem.UnknownCount()) {
     throw std::invalid_argument(fmt::format("the start point has {} unknowns, the problem {}", start.size(),
                                             problem.UnknownCount()));
+  }
+  if (options.start_direction.size() != 0 && options.start_direction.size() != start.size()) {
+    throw std::invalid_argument(fmt::format("start_direction has {} components, the problem {} unknowns",
+                                            options.start_direction.size(), start.size()));
   }
   if (options.parameter_index >= start.size()) {
     throw InvalidInput("parameter_index", options.parameter_index,

@@ -93,6 +93,13 @@ struct ContinuationOptions {
   }();
   // Corrector iterations (at least) for the start, which may be a rough guess of a point.
   int start_iterations = 30;
+  // Branch switching (continuation/branch_switching.hpp): a start on a branch point, where the
+  // Jacobian at fixed lambda is singular, left along this direction (any length, either sign). The
+  // first point of the branch is then the start corrected on the hyperplane
+  // start_direction.(u - start) = step.ds, and the branch goes on the way the direction points
+  // (`direction` is not used). Empty: the start is corrected at its lambda and heads towards
+  // `direction`.
+  Eigen::VectorXd start_direction;
   // A corrected point within this distance of a parameter bound, relative to 1 + |bound|, is
   // moved onto the bound (the corrector keeps lambda there only to second order in the step).
   double bound_tolerance = 1e-10;
