@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/periodicity.hpp"
 #include "support/solved_presets.hpp"
 
@@ -125,6 +126,26 @@ TEST(OrbitEdits, ZeroLengthStickSolvesTheAdjacentTypeWhereTheReversalForceIsAtIt
   Eigen::VectorXd residual;
   adjacent.Evaluate(adjacent.Variables(edited), &residual, nullptr);
   EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12) << residual.transpose();
+}
+
+TEST(Unfolded, ListsTheWholePeriodAsOftenAsAsked) {
+  EXPECT_EQ(Unfolded(Parsed("slip- stick slip- / antisymmetric"), 1), Parsed("slip- stick slip- slip+ stick slip+"));
+  EXPECT_EQ(Unfolded(Parsed("slip- slip+ stick"), 2), Parsed("slip- slip+ stick slip- slip+ stick / period 2"));
+  EXPECT_EQ(Unfolded(Parsed("slip- / antisymmetric"), 2).ToString(), "slip- slip+ slip- slip+ / period 2");
+  EXPECT_THROW(Unfolded(Parsed("slip- slip+"), 0), InvalidInput);
+}
+
+TEST(Unfolded, IsTheSameMotion) {
+  for (const char* preset : {"paper-6", "paper-5.1", "paper-4.1"}) {
+    SCOPED_TRACE(preset);
+    const Orbit o = SolvedPreset(preset);
+    EXPECT_LT(SampledDistance(Unfolded(o, 1), o), 1e-12);
+    // Over two periods: the same states at the same times, twice.
+    const std::vector<State> once = o.Sample(401), twice = Unfolded(o, 2).Sample(801);
+    for (int k = 0; k < 801; ++k) {
+      EXPECT_LT((twice[k] - once[k % 400]).lpNorm<Eigen::Infinity>(), 1e-11) << k;
+    }
+  }
 }
 
 }  // namespace

@@ -99,6 +99,25 @@ Orbit RemoveSegment(const Orbit& orbit, int i, bool join_equal_neighbours) {
   return edited;
 }
 
+Signature Unfolded(const Signature& signature, int copies) {
+  if (!(copies >= 1 && copies <= 64)) throw InvalidInput("copies", copies, "1 <= copies <= 64");
+  const std::vector<Mode> period = signature.FullPeriod();
+  std::vector<Mode> segments;
+  for (int k = 0; k < copies; ++k) segments.insert(segments.end(), period.begin(), period.end());
+  return Signature(std::move(segments), false, signature.period_multiple() * copies);
+}
+
+Orbit Unfolded(const Orbit& orbit, int copies) {
+  Orbit unfolded = orbit;
+  unfolded.signature = Unfolded(orbit.signature, copies);
+  const int repeats = unfolded.signature.size() / orbit.signature.size();
+  unfolded.durations.clear();
+  for (int k = 0; k < repeats; ++k) {
+    unfolded.durations.insert(unfolded.durations.end(), orbit.durations.begin(), orbit.durations.end());
+  }
+  return unfolded;
+}
+
 Orbit SplitSegment(const Orbit& orbit, int i, double tau, Mode inserted) {
   Orbit edited = orbit;
   edited.signature = SplitSegment(orbit.signature, i, inserted).signature;

@@ -50,4 +50,13 @@ Orbit RemoveSegment(const Orbit& orbit, int i, bool join_equal_neighbours);
 // Segment i split at time tau after its start (0 <= tau <= d_i) around a zero-length segment.
 Orbit SplitSegment(const Orbit& orbit, int i, double tau, Mode inserted);
 
+// The same motion as an orbit over `copies` whole periods without the half-period symmetry: the
+// whole period's segments (the listed half, then its mirror image, for an antisymmetric orbit)
+// listed `copies` times, the period multiple times `copies`, the durations repeated. Listed
+// segment i of the original is segment i + k n of the result, n = its listed count, k = 0, 1, ...
+// (the type a period doubling leads to: copies = 2; a symmetry breaking: copies = 1). Throws
+// InvalidInput naming "copies" unless 1 <= copies <= 64.
+Signature Unfolded(const Signature& signature, int copies);
+Orbit Unfolded(const Orbit& orbit, int copies);
+
 }  // namespace stickslip

@@ -1,0 +1,33 @@
+// The branch that leaves a smooth bifurcation of a branch of orbits (AUTO's ISW = -1):
+//   BP  the second branch through the point, of the same orbit type;
+//   PD  a multiplier through -1: the period-2 orbits, of the type unfolded over two periods
+//       (orbits/signature_edits.hpp: the whole period's segments twice, period multiple doubled),
+//       cross the period-1 orbit traversed twice. In the period-2 problem that orbit is a branch
+//       point (shifting the orbit by one period is a symmetry of the problem): the period-2
+//       branch leaves it along the null vector of the period-2 Jacobian orthogonal to the
+//       traversed-twice branch (continuation/branch_switching.hpp), the eigenvector of the
+//       multiplier -1 in the states.
+// The returned setup starts on the point; its first point lies ds along the new branch. The new
+// problem is solved by single shooting (the traversed-twice tangent is exact there: a repetition
+// of the period-1 tangent).
+#pragma once
+
+#include "stickslip/branches/orbit_continuation.hpp"
+
+namespace stickslip {
+
+struct BifurcationBranchStart {
+  OrbitContinuationSetup setup;  // ContinueOrbit(setup) follows the new branch
+  // sigma_n / sigma_1 of the new problem's Jacobian at the point: zero at an exact branch point,
+  // the location's rounding at a located one; not small where the point is no bifurcation.
+  double singularity = 0.0;
+  Orbit at;  // the bifurcation point's orbit as an orbit of the new type (traversed twice at a PD)
+};
+
+// The branch that leaves `special` (a "BP" or "PD" of the branch continued from `setup`) on the
+// side `side` (+1 or -1: the two halves of the new branch; at a PD they are the same orbits,
+// shifted by one period). Throws InvalidInput naming "special point" for another type, and "side".
+BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const OrbitContinuationSetup& setup,
+                                             int side = 1);
+
+}  // namespace stickslip
