@@ -27,13 +27,14 @@ std::vector<std::complex<double>> Sorted(const Eigen::Matrix4d& m) {
 // The period map sampled half-way through the first segment, where it is smooth: the state one
 // forcing period later, by the exact simulator. Its Jacobian by differences has the same
 // eigenvalues as the monodromy matrix at t = 0.
-Eigen::Matrix4d PeriodMapJacobian(const Orbit& o) {
+// ... over `fraction` of the period (one half for the half-period map of an antisymmetric orbit).
+Eigen::Matrix4d PeriodMapJacobian(const Orbit& o, double fraction) {
   const double t = 0.5 * o.durations[0];
   const Parameters& p = o.parameters;
   const State x = Flow(o.signature.segments()[0], o.InitialState(), o.phi, t, p);
   const double phase = o.phi + p.omega * t;
   SimulationOptions options;
-  options.duration = o.Period();
+  options.duration = fraction * o.Period();
   auto map = [&](const State& start) { return SimulateExact(p, start, phase, options); };
   Eigen::Matrix4d j;
   for (int k = 0; k < 4; ++k) {
@@ -45,6 +46,8 @@ Eigen::Matrix4d PeriodMapJacobian(const Orbit& o) {
   }
   return j;
 }
+
+Eigen::Matrix4d PeriodMapJacobian(const Orbit& o) { return PeriodMapJacobian(o, 1.0); }
 
 class FloquetMultipliers : public ::testing::TestWithParam<std::pair<const char*, bool>> {};
 
@@ -120,6 +123,19 @@ TEST(FloquetMultipliers, IncludeZeroForAStickingOrbit) {
 
 TEST(FloquetMultipliers, AreOneSidedAtAbnormalStops) {
   EXPECT_TRUE(StabilityOf(SolvedPreset("paper-4.2", false)).one_sided);
+}
+
+// The symmetry-breaking test of an antisymmetric orbit, det(I - M_half), against the half-period
+// map of the exact simulator (sampled where it is smooth: similar to M_half, so its det(I - J) is
+// the same); not defined for an orbit without the symmetry.
+TEST(SymmetryTest, IsDetOfIMinusTheFiniteDifferenceHalfPeriodMap) {
+  for (const char* preset : {"paper-4.1", "paper-6"}) {
+    const Orbit o = SolvedPreset(preset);
+    const double expected = (Eigen::Matrix4d::Identity() - PeriodMapJacobian(o, 0.5)).determinant();
+    const double test = StabilityOf(o).symmetry_test;
+    EXPECT_NEAR(test, expected, 1e-6 * (1.0 + std::abs(expected))) << preset;
+  }
+  EXPECT_TRUE(std::isnan(StabilityOf(SolvedPreset("paper-5.1")).symmetry_test));
 }
 
 }  // namespace

@@ -34,9 +34,13 @@ Stability StabilityOf(const Orbit& orbit) {
   // The whole period: the listed segments, then their mirror images for an antisymmetric orbit,
   // flowed from the actual states (the symmetry is not assumed).
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  int visited = 0;
   WalkSegments(orbit, Extent::kFullPeriod, PhaseRule::kAccumulated, [&](const SegmentVisit<double>& s) {
     result.one_sided = result.one_sided || s.spec.end == SegmentEndKind::kAbnormalStop;
     m = SaltationMatrix(s.spec.mode, s.spec.next, s.end, s.end_phase, p) * TransitionMatrix(s.spec.mode, s.duration, p) * m;
+    if (++visited == orbit.signature.size() && orbit.signature.antisymmetric()) {
+      result.symmetry_test = (Eigen::Matrix4d::Identity() - m).determinant();
+    }
   });
   result.monodromy = m;
   const Eigen::EigenSolver<Eigen::Matrix4d> eigen(m, /*computeEigenvectors=*/false);

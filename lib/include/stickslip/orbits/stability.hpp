@@ -12,6 +12,7 @@
 
 #include <array>
 #include <complex>
+#include <limits>
 
 #include <Eigen/Core>
 
@@ -27,6 +28,12 @@ struct Stability {
   double fold_test = 0.0;   // det(M - I): a multiplier through +1 (LP)
   double flip_test = 0.0;   // det(M + I): a multiplier through -1 (PD)
   double torus_test = 0.0;  // prod_{i<j} (mu_i mu_j - 1): a complex pair on the unit circle (TR)
+  // Antisymmetric orbits only (NaN for the others): det(I - M_half) = det(H + I), where H =
+  // -M_half is the half-period map followed by the mirror X -> -X, and M = H^2. Zero where a
+  // multiplier of H passes -1: a symmetry-breaking pitchfork (SB), where the orbit's
+  // non-antisymmetric twins branch off. M then has a multiplier +1 without a fold of the branch,
+  // and det(M + I) = |det(H - iI)|^2 cannot change sign, so no other test sees it.
+  double symmetry_test = std::numeric_limits<double>::quiet_NaN();
   // An abnormal stop is a grazing of x2' = 0: perturbations on one side cross zero and stick
   // for an instant, so the period map has only one-sided derivatives there. The multipliers are
   // those of the side that keeps x2' off zero (S = I at the abnormal stop).
