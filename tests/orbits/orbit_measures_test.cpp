@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -127,6 +128,25 @@ TEST(OrbitMeasures, CountEachHalfOfAnAntisymmetricOrbit) {
   const OrbitMeasures m = Measure(SolvedPreset("paper-6"));
   EXPECT_EQ(m.stops, 4);
   EXPECT_EQ(m.sticks, 2);
+}
+
+// The section 5.1 orbit traversed twice, as an orbit of period 2 forcing periods: the same
+// amplitudes and stick fraction, twice the stops and sticks per (doubled) period.
+TEST(OrbitMeasures, OfAnOrbitTraversedTwiceCountPerItsWholePeriod) {
+  const Orbit once = SolvedPreset("paper-5.1");
+  Orbit twice = once;
+  std::vector<Mode> modes = once.signature.segments();
+  modes.insert(modes.end(), modes.begin(), modes.end());
+  twice.signature = Signature(modes, false, 2);
+  twice.durations.insert(twice.durations.end(), once.durations.begin(), once.durations.end());
+  const OrbitMeasures a = Measure(once);
+  const OrbitMeasures b = Measure(twice);
+  EXPECT_NEAR(b.amplitude_x1, a.amplitude_x1, 1e-9);
+  EXPECT_NEAR(b.amplitude_x2, a.amplitude_x2, 1e-9);
+  EXPECT_NEAR(b.peak_to_peak_x2, a.peak_to_peak_x2, 1e-9);
+  EXPECT_NEAR(b.stick_fraction, a.stick_fraction, 1e-15);
+  EXPECT_EQ(b.stops, 2 * a.stops);
+  EXPECT_EQ(b.sticks, 2 * a.sticks);
 }
 
 // max |x1| of the section 5.1 orbit lies inside a segment, at a zero of x1', not at a stop or a
