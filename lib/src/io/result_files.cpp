@@ -11,7 +11,6 @@
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
-#include <type_traits>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -214,6 +213,10 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   return c;
 }
 
+// A measure from its column: a count as a whole number, any other as a number.
+void ReadField(const CsvTable& t, int row, int column, int* count) { *count = t.Integer(row, column); }
+void ReadField(const CsvTable& t, int row, int column, double* value) { *value = t.Number(row, column); }
+
 StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
   Eigen::VectorXd variables(ov::Count(signature.size()));
   for (const auto& [column, index] : c.variables) variables(index) = t.FiniteNumber(row, column);
@@ -227,14 +230,8 @@ StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const
   p.flip_test = t.Number(row, c.stability[2]);
   p.torus_test = t.Number(row, c.stability[3]);
   p.admissible = t.Flag(row, c.admissible);
-  orbit_columns::ForEachMeasure(p.measures, [&, k = 0](const char*, auto& field) mutable {
-    const int column = c.measures[k++];
-    if constexpr (std::is_same_v<std::remove_reference_t<decltype(field)>, int>) {
-      field = t.Integer(row, column);
-    } else {
-      field = t.Number(row, column);
-    }
-  });
+  orbit_columns::ForEachMeasure(p.measures,
+                                [&, k = 0](const char*, auto& field) mutable { ReadField(t, row, c.measures[k++], &field); });
   p.newton_iterations = t.Integer(row, c.step[0]);
   p.step_size = t.Number(row, c.step[1]);
   return p;
