@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -58,13 +60,9 @@ TEST(CompareWithStored, ReportsAMeasureBeyondTheSolutionToleranceAndACountThatDi
   EXPECT_TRUE(CompareWithStored(fresh, stored).empty());
   fold.measures.amplitude_x2 = stored.special_points[3].point.measures.amplitude_x2 + 1e-5;
   fold.measures.sticks = 2;
-  const std::vector<Difference> differences = CompareWithStored(fresh, stored);
-  ASSERT_EQ(differences.size(), 2u);
-  EXPECT_EQ(differences[0].row, "LP4");
-  EXPECT_EQ(differences[0].column, "amplitude:x2");
-  EXPECT_EQ(differences[1].column, "sticks");
-  EXPECT_EQ(differences[1].stored, "1");
-  EXPECT_EQ(differences[1].fresh, "2");
+  std::vector<std::string> found;
+  for (const Difference& d : CompareWithStored(fresh, stored)) found.push_back(d.row + " " + d.column);
+  EXPECT_EQ(found, (std::vector<std::string>{"LP4 amplitude:x2", "LP4 sticks"}));
 }
 
 }  // namespace
