@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "cli_common.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/stability.hpp"
 
 namespace stickslip::cli {
@@ -43,6 +45,11 @@ std::string OrbitReport(const OrbitSolution& solution, const std::vector<int>& f
     out += fmt::format("  {:>+14.8f} {:+.8f}i  |mu| = {:.8f}\n", mu.real(), mu.imag(), std::abs(mu));
   }
   out += fmt::format("stability  {}\n", stability.stable ? "stable" : "unstable");
+  out += "measures over one period (exact: extrema of the closed forms)\n";
+  const OrbitMeasures measures = Measure(orbit);
+  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto& value) {
+    out += fmt::format("  {:<16} {:>14.10g}\n", name, static_cast<double>(value));  // a count prints as one
+  });
   out += fmt::format("verification {}\n{}", verification.Passed() ? "passed" : "FAILED", verification.Report());
   return out;
 }

@@ -1,5 +1,6 @@
 // A solved orbit as solve and find print it: signature, parameters, unknowns, Newton summary,
-// the solution, the admissibility margins, the Floquet multipliers and the verification; and
+// the solution, the admissibility margins, the Floquet multipliers, the orbit's measures
+// (amplitudes, peak-to-peak, stick fraction, stops and sticks) and the verification; and
 // the exit code it earns (SolvedOrbitExitCode), with the reason on stderr.
 #pragma once
 

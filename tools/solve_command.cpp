@@ -13,8 +13,10 @@
 #include "commands.hpp"
 #include "orbit_report.hpp"
 #include "start_options.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/stability.hpp"
@@ -71,6 +73,11 @@ std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margi
     out["multipliers"].push_back({number(mu.real()), number(mu.imag())});
   }
   out.update(Json{{"stable", stability.stable}, {"multipliers_one_sided", stability.one_sided}});
+  out["measures"] = Json::object();
+  const OrbitMeasures measures = Measure(o);
+  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto& value) {
+    out["measures"][name] = std::isfinite(static_cast<double>(value)) ? Json(value) : Json(nullptr);  // counts stay integers
+  });
   out["verification"] = {{"passed", v.Passed()},
                          {"not_simulated", v.not_simulated.empty() ? Json(nullptr) : Json(v.not_simulated)},
                          {"expected", modes(v.expected)},
@@ -154,7 +161,8 @@ Command AddSolveCommand(CLI::App& app) {
       ->default_str("klu");
   cmd->add_flag("--json", args->json,
                 "print one JSON object: signature, parameters, phi, x10, x20, v10, segments, "
-                "converged, residual_norm, margins, verification");
+                "converged, residual_norm, margins, multipliers, stable, measures (amplitude:x1, "
+                "amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks), verification");
   cmd->add_flag("--compare-paper", args->compare_paper,
                 "with --preset: print a Markdown table of the paper's printed values beside "
                 "stickslip's");

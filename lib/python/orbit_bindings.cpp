@@ -14,6 +14,7 @@
 
 #include "bindings.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/stored_run.hpp"
@@ -22,6 +23,7 @@
 #include "stickslip/model/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/stability.hpp"
@@ -324,6 +326,16 @@ void BindSolvedOrbit(py::module_& m) {
                              "every |multiplier| < 1")
       .def_property_readonly("multipliers_one_sided", [](const SolvedOrbit& s) { return s.stability.one_sided; },
                              "the multipliers are one-sided (abnormal stops, section 4.2)")
+      .def_property_readonly(
+          "measures",
+          [](const SolvedOrbit& s) {
+            py::dict d;
+            const OrbitMeasures measures = Measure(s.orbit);
+            orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto& value) { d[py::str(name)] = value; });
+            return d;
+          },
+          "what users plot, over one whole period, by the names of a branch's columns: amplitude:x1\n"
+          "(max |x1|), amplitude:x2 (max |x2|), peak-to-peak:x2, stick-fraction, stops and sticks (ints)")
       .def_property_readonly("verification", [](const SolvedOrbit& s) { return VerificationDict(s.verification); },
                              "one period simulated by the exact and the Odeint simulators")
       .def("sample", [](const SolvedOrbit& s, int n) { return SampleOrbit(s.orbit, n); }, py::arg("n") = 200,

@@ -22,8 +22,20 @@ assert [s["mode"] for s in o["segments"]] == ["slip-", "slip+", "stick", "slip+"
 assert abs(o["segments"][1]["duration"] - 2) < 2e-4 and abs(o["segments"][3]["duration"] - 3) < 2e-4
 assert min(v for v in o["margins"].values() if v is not None) > 0
 assert o["verification"]["passed"] is True
+# The orbit's measures by the branch columns' names; the counts of section 5.1 per period: three
+# slips ending at stops, one stick.
+m = o["measures"]
+assert list(m) == ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks"], m
+assert m["stops"] == 3 and m["sticks"] == 1 and isinstance(m["stops"], int)
+assert abs(m["stick-fraction"] - o["segments"][2]["duration"] * o["parameters"]["omega"] / (2 * 3.141592653589793)) < 1e-15
+assert 0 < m["peak-to-peak:x2"] <= 2 * m["amplitude:x2"]
 print("solve json ok")
 PY
+# The report lists the same measures.
+"$bin" solve --preset paper-5.1 > "$work/s.txt" || fail "paper-5.1 report exit $?"
+grep -q "^measures over one period" "$work/s.txt" || fail "paper-5.1 report has no measures"
+grep -Eq "^  stops +3$" "$work/s.txt" || fail "paper-5.1 report: stops not 3"
+grep -Eq "^  sticks +1$" "$work/s.txt" || fail "paper-5.1 report: sticks not 1"
 
 # Newton converges past section 4.2's family end (u_s < 0 at omega = 0.63): the verification says
 # the orbit is no motion of the system (it used to read an empty simulation: SIGSEGV).

@@ -1,10 +1,12 @@
 // Regression checks compare the stored records themselves: a stored run agrees with itself, a
-// moved fold is reported with its label and column, and multipliers are matched to the nearest
-// rather than by position.
+// moved fold is reported with its label and column, multipliers are matched to the nearest
+// rather than by position, and the orbit's measures are compared as the solution is.
 #include "stickslip/io/check.hpp"
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -48,6 +50,19 @@ TEST(CompareWithStored, MatchesMultipliersToTheNearestWhateverTheirOrder) {
   ASSERT_EQ(differences.size(), 1u);
   EXPECT_EQ(differences[0].row, "EP1");
   EXPECT_EQ(differences[0].column, "multiplier 4");
+}
+
+TEST(CompareWithStored, ReportsAMeasureBeyondTheSolutionToleranceAndACountThatDiffers) {
+  const StoredRun stored = ReadRunFiles(kRun);
+  StoredRun fresh = stored;
+  StoredPoint& fold = fresh.special_points[3].point;
+  fold.measures.amplitude_x2 += 1e-8 * fold.measures.amplitude_x2;  // within 1e-7 (1 + |x|)
+  EXPECT_TRUE(CompareWithStored(fresh, stored).empty());
+  fold.measures.amplitude_x2 = stored.special_points[3].point.measures.amplitude_x2 + 1e-5;
+  fold.measures.sticks = 2;
+  std::vector<std::string> found;
+  for (const Difference& d : CompareWithStored(fresh, stored)) found.push_back(d.row + " " + d.column);
+  EXPECT_EQ(found, (std::vector<std::string>{"LP4 amplitude:x2", "LP4 sticks"}));
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 
 namespace stickslip {
 namespace {
@@ -54,6 +55,27 @@ TEST(ResultFiles, ReadingThenWritingEveryStoredRunGivesItsBytes) {
     EXPECT_EQ(written.branch_csv, stored.branch_csv);
     EXPECT_EQ(written.special_points_csv, stored.special_points_csv);
     EXPECT_EQ(written.summary_json, stored.summary_json);
+  }
+}
+
+// The measure columns of every stored row are those of the row's own orbit, to the last bit: the
+// monitor computed them from the orbit the row stores.
+TEST(ResultFiles, EveryStoredRowCarriesTheMeasuresOfItsOwnOrbit) {
+  for (const fs::path& dir : StoredRuns()) {
+    SCOPED_TRACE(dir.string());
+    const StoredRun run = ReadRunFiles(dir);
+    std::vector<const StoredPoint*> points;
+    for (const StoredPoint& p : run.branch) points.push_back(&p);
+    for (const StoredSpecialPoint& s : run.special_points) points.push_back(&s.point);
+    for (const StoredPoint* p : points) {
+      const OrbitMeasures m = Measure(p->orbit);
+      EXPECT_EQ(p->measures.amplitude_x1, m.amplitude_x1) << p->pt;
+      EXPECT_EQ(p->measures.amplitude_x2, m.amplitude_x2) << p->pt;
+      EXPECT_EQ(p->measures.peak_to_peak_x2, m.peak_to_peak_x2) << p->pt;
+      EXPECT_EQ(p->measures.stick_fraction, m.stick_fraction) << p->pt;
+      EXPECT_EQ(p->measures.stops, m.stops) << p->pt;
+      EXPECT_EQ(p->measures.sticks, m.sticks) << p->pt;
+    }
   }
 }
 
@@ -104,6 +126,14 @@ TEST(ResultFiles, ReaderGivesEachColumnItsMeaning) {
   EXPECT_FALSE(p.stable);  // |mu1| = 1.06
   EXPECT_EQ(p.flip_test, 5.191639239866712);
   EXPECT_TRUE(p.admissible);
+  // The measures are those of the row's own orbit, to the last bit; per period 3 stops, 1 stick.
+  const OrbitMeasures m = Measure(p.orbit);
+  EXPECT_EQ(p.measures.amplitude_x1, m.amplitude_x1);
+  EXPECT_EQ(p.measures.amplitude_x2, m.amplitude_x2);
+  EXPECT_EQ(p.measures.peak_to_peak_x2, m.peak_to_peak_x2);
+  EXPECT_EQ(p.measures.stick_fraction, m.stick_fraction);
+  EXPECT_EQ(p.measures.stops, 3);
+  EXPECT_EQ(p.measures.sticks, 1);
   EXPECT_EQ(p.newton_iterations, 2);
   EXPECT_EQ(p.step_size, 0.0);
   EXPECT_EQ(run.branch[1].step_size, 0.005);
@@ -194,7 +224,7 @@ std::string Join(const std::vector<std::string>& fields) {
 TEST(ResultFiles, RowShorterThanItsHeaderNamesFileAndLine) {
   RunFiles files = StoredTexts(kRun);
   files.branch_csv = EditLine(files.branch_csv, 3, [](std::string l) { return l.substr(0, l.rfind(',')); });
-  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 46 fields, the header 47: valid one field per column");
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 52 fields, the header 53: valid one field per column");
 }
 
 TEST(ResultFiles, MissingColumnNamesFileAndColumn) {
@@ -208,6 +238,33 @@ TEST(ResultFiles, MissingColumnNamesFileAndColumn) {
     });
   }
   EXPECT_EQ(ParseError(files), "stored/special-points.csv:1: column 'omega' is missing");
+}
+
+// A run stored before the measure columns existed is refused by name (run it again to regenerate).
+TEST(ResultFiles, FileWithoutTheMeasureColumnsNamesTheFirstMissing) {
+  RunFiles files = StoredTexts(kRun);
+  const std::vector<std::string> header = Fields(files.branch_csv.substr(0, files.branch_csv.find('\n')));
+  const auto first = std::find(header.begin(), header.end(), "amplitude:x1") - header.begin();
+  ASSERT_EQ(header[first + 5], "sticks");
+  auto drop = [&](const std::string& l) {
+    std::vector<std::string> fields = Fields(l);
+    fields.erase(fields.begin() + first, fields.begin() + first + 6);
+    return Join(fields);
+  };
+  for (int line = 1; line <= 107; ++line) files.branch_csv = EditLine(files.branch_csv, line, drop);
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:1: column 'amplitude:x1' is missing");
+}
+
+TEST(ResultFiles, CountThatIsNotAWholeNumberNamesLineAndColumn) {
+  RunFiles files = StoredTexts(kRun);
+  const std::vector<std::string> header = Fields(files.branch_csv.substr(0, files.branch_csv.find('\n')));
+  const auto stops = std::find(header.begin(), header.end(), "stops") - header.begin();
+  files.branch_csv = EditLine(files.branch_csv, 4, [&](const std::string& l) {
+    std::vector<std::string> fields = Fields(l);
+    fields[stops] = "3.5";
+    return Join(fields);
+  });
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:4: column 'stops' = '3.5' is not an integer");
 }
 
 TEST(ResultFiles, UnknownColumnIsAnError) {

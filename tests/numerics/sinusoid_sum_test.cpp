@@ -107,6 +107,33 @@ TEST(SinusoidSumMinimum, ReturnsAnEndPointWhenTheFunctionIsMonotone) {
   EXPECT_DOUBLE_EQ(m.value, std::sin(0.1));
 }
 
+TEST(SinusoidSumMinimumAndMaximum, FindsBothInteriorExtremaFromOneSearch) {
+  // sin t - 0.3 t on [0, 2 pi]: f' = cos t - 0.3 = 0 at acos(0.3) (the maximum, 0.574 > f(0) = 0)
+  // and 2 pi - acos(0.3) (the minimum, -2.459 < f(2 pi) = -0.6 pi), both inside.
+  const SinusoidSum f(0.0, -0.3, {{1.0, 0.0, 1.0}});
+  const Extrema e = MinimumAndMaximum(f, 0.0, 2 * kPi);
+  const double t_max = std::acos(0.3);
+  const double t_min = 2 * kPi - t_max;
+  EXPECT_NEAR(e.maximum.t, t_max, 1e-10);
+  EXPECT_NEAR(e.maximum.value, std::sin(t_max) - 0.3 * t_max, 1e-14);
+  EXPECT_NEAR(e.minimum.t, t_min, 1e-10);
+  EXPECT_NEAR(e.minimum.value, std::sin(t_min) - 0.3 * t_min, 1e-14);
+  EXPECT_EQ(Minimum(f, 0.0, 2 * kPi).t, e.minimum.t);
+  // On [2, 4] f decreases: both are ends.
+  const Extrema ends = MinimumAndMaximum(f, 2.0, 4.0);
+  EXPECT_EQ(ends.maximum.t, 2.0);
+  EXPECT_EQ(ends.minimum.t, 4.0);
+}
+
+TEST(SinusoidSumMinimumAndMaximum, IsNaNWhenTheSearchForCriticalPointsIsCutShort) {
+  const SinusoidSum f(0.0, 0.0, {{1.0, 0.0, 1.0}});
+  ZeroSearchOptions options;
+  options.max_intervals = 10;
+  const Extrema e = MinimumAndMaximum(f, 0.0, 1e6, options);
+  EXPECT_TRUE(std::isnan(e.minimum.value));
+  EXPECT_TRUE(std::isnan(e.maximum.value));
+}
+
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -1,5 +1,6 @@
 """Branches from Python: continue_orbit, run, the Continuation stepped by hand, and the result
 files, against the command line's files byte for byte."""
+import numpy as np
 import pytest
 
 import stickslip
@@ -56,6 +57,17 @@ def test_columns_are_the_files_numbers_and_special_points_are_labelled():
     t, x = branch.sample(-1, 50)
     assert x.shape == (50, 4) and t[-1] > 0
     assert abs(branch["x10"][-1] - x[0, 0]) < 1e-14
+    # The orbit's measures, after `admissible`: the counts as integers, the amplitudes bounding the
+    # sampled orbit of each row.
+    measures = ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks"]
+    at = branch.columns.index("admissible")
+    assert branch.columns[at + 1:at + 7] == measures
+    assert branch["stops"].dtype.kind == "i" and set(branch["stops"]) == {3} and set(branch["sticks"]) == {1}
+    for i in (0, len(branch) // 2, len(branch) - 1):
+        _, x = branch.sample(i, 2000)
+        assert np.max(np.abs(x[:, 0])) <= branch["amplitude:x1"][i] + 1e-12
+        assert np.max(np.abs(x[:, 0])) >= branch["amplitude:x1"][i] - 1e-4
+        assert np.ptp(x[:, 1]) <= branch["peak-to-peak:x2"][i] + 1e-12
 
 
 def test_save_and_load_round_trip_byte_for_byte(tmp_path):

@@ -40,6 +40,8 @@ def test_paper_orbits_equal_the_command_line_bit_for_bit(name):
     assert [[mu.real, mu.imag] for mu in orbit.multipliers] == expected["multipliers"]
     assert orbit.stable == expected["stable"]
     assert orbit.multipliers_one_sided == expected["multipliers_one_sided"]
+    assert orbit.measures == expected["measures"]
+    assert isinstance(orbit.measures["stops"], int) and isinstance(orbit.measures["sticks"], int)
     v = orbit.verification
     assert v["passed"] == expected["verification"]["passed"]
     for simulator in ("exact", "odeint"):

@@ -11,7 +11,7 @@ from . import _stickslip as _core
 from ._inputs import _one_off_run
 
 _TEXT_COLUMNS = ("label", "type", "test_function")
-_INTEGER_COLUMNS = ("pt", "stable", "admissible", "newton_iterations", "located")
+_INTEGER_COLUMNS = ("pt", "stable", "admissible", "stops", "sticks", "newton_iterations", "located")
 
 
 def _read_table(text):

@@ -34,7 +34,19 @@ std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const 
 struct OrbitMonitor::Evaluated {
   std::vector<Margin> margins;
   Stability stability;
+  std::vector<double> measures;  // in column order, only where the recorded values are asked for
 };
+
+namespace {
+
+std::vector<double> MeasureValues(const Orbit& orbit) {
+  const OrbitMeasures measures = Measure(orbit);
+  std::vector<double> values;
+  orbit_columns::ForEachMeasure(measures, [&](const char*, const auto& value) { values.push_back(value); });
+  return values;
+}
+
+}  // namespace
 
 void OrbitMonitor::AddTestFunction(TestFunctionInfo info, Value value) {
   columns_.push_back({info.name, true, static_cast<int>(info_.size())});
@@ -80,11 +92,17 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : syst
     }
     return 1.0;
   });
+  const OrbitMeasures measures{};
+  orbit_columns::ForEachMeasure(measures, [&, k = 0](const char* name, const auto&) mutable {
+    AddRecorded(name, [k](const Evaluated& e) { return e.measures[k]; });
+    ++k;
+  });
 }
 
 void OrbitMonitor::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const {
   const Orbit orbit = system_.ToOrbit(u);
-  const Evaluated evaluated{AdmissibilityMargins(orbit), StabilityOf(orbit)};
+  const Evaluated evaluated{AdmissibilityMargins(orbit), StabilityOf(orbit),
+                            recorded ? MeasureValues(orbit) : std::vector<double>{}};
   tests->resize(static_cast<int>(info_.size()));
   if (recorded) recorded->resize(static_cast<int>(recorded_.size()));
   for (std::size_t c = 0; c < columns_.size(); ++c) {

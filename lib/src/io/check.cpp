@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/io/result_files.hpp"
 
 namespace stickslip {
@@ -49,6 +50,7 @@ bool MultipliersClearOfUnitCircle(const std::vector<std::complex<double>>& mu, d
 }
 
 std::string Text(double v) { return fmt::format("{}", v); }
+std::string Text(int count) { return std::to_string(count); }
 std::string Text(bool flag) { return flag ? "1" : "0"; }
 
 // Appends the differences of one point, `where` naming it (its label, or "row N").
@@ -72,6 +74,15 @@ void ComparePoints(const std::string& file, const std::string& where, const Stor
                                              : tol.solution * std::max(1.0, std::abs(x));
     if (!(Distance(x, y) <= limit)) out->push_back({file, where, column, Text(x), Text(y)});
   }
+  // The measures follow from the solution: to the same tolerance, the counts exactly.
+  std::vector<std::pair<const char*, double>> fresh_measures;
+  orbit_columns::ForEachMeasure(s.measures, [&](const char* column, const auto& y) { fresh_measures.emplace_back(column, y); });
+  orbit_columns::ForEachMeasure(r.measures, [&, k = 0](const char* column, const auto& x) mutable {
+    const double y = fresh_measures[k++].second;
+    if (!(Distance(x, y) <= tol.solution * std::max(1.0, std::abs(static_cast<double>(x))))) {
+      out->push_back({file, where, column, Text(x), Text(y)});
+    }
+  });
   if (MultipliersClearOfUnitCircle(r.multipliers, tol.flag_clearance) && r.stable != s.stable) {
     out->push_back({file, where, "stable", Text(r.stable), Text(s.stable)});
   }

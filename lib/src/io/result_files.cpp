@@ -35,11 +35,12 @@ constexpr const char* kBranchFile = "branch.csv";
 constexpr const char* kSpecialPointsFile = "special-points.csv";
 constexpr const char* kSummaryFile = "summary.json";
 
-// The columns of a point after its margins and multipliers, and those a special point adds.
+// The columns of a point after its margins and multipliers: the stability, admissible, the
+// measures (orbit_columns::ForEachMeasure), the step; and those a special point adds.
 using orbit_columns::kMarginPrefix;
 constexpr std::array<const char*, 4> kStabilityColumns = {orbit_columns::kStable, orbit_columns::kFoldTest,
                                                           orbit_columns::kFlipTest, orbit_columns::kTorusTest};
-constexpr std::array<const char*, 3> kStepColumns = {orbit_columns::kAdmissible, "newton_iterations", "step_size"};
+constexpr std::array<const char*, 2> kStepColumns = {"newton_iterations", "step_size"};
 constexpr std::array<const char*, 3> kSpecialColumns = {"type", "test_function", "located"};
 
 std::string MultiplierColumn(std::size_t k, const char* part) {
@@ -71,6 +72,7 @@ std::map<std::string, std::size_t> CountsByType(const std::vector<StoredSpecialP
 // ---- Writing
 
 std::string Number(double v) { return fmt::format("{}", v); }
+std::string Number(int count) { return std::to_string(count); }
 const char* Flag(bool b) { return b ? "1" : "0"; }
 
 std::string Row(const StoredPoint& p) {
@@ -84,6 +86,7 @@ std::string Row(const StoredPoint& p) {
   fields.push_back(Flag(p.stable));
   for (double v : {p.fold_test, p.flip_test, p.torus_test}) fields.push_back(Number(v));
   fields.push_back(Flag(p.admissible));
+  orbit_columns::ForEachMeasure(p.measures, [&](const char*, const auto& value) { fields.push_back(Number(value)); });
   fields.push_back(std::to_string(p.newton_iterations));
   fields.push_back(Number(p.step_size));
   return fmt::format("{}", fmt::join(fields, ","));
@@ -174,6 +177,8 @@ struct ColumnIndices {
   std::vector<int> margins;
   std::vector<std::pair<int, int>> multipliers;  // (real part, imaginary part)
   std::array<int, kStabilityColumns.size()> stability{};
+  int admissible = 0;
+  std::vector<int> measures;  // in ForEachMeasure's order
   std::array<int, kStepColumns.size()> step{};
   std::array<int, kSpecialColumns.size()> special{};  // special-points.csv only
 };
@@ -197,6 +202,9 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
     c.multipliers.emplace_back(column(MultiplierColumn(k, "re")), column(MultiplierColumn(k, "im")));
   }
   for (std::size_t k = 0; k < kStabilityColumns.size(); ++k) c.stability[k] = column(kStabilityColumns[k]);
+  c.admissible = column(orbit_columns::kAdmissible);
+  const OrbitMeasures measures{};
+  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) { c.measures.push_back(column(name)); });
   for (std::size_t k = 0; k < kStepColumns.size(); ++k) c.step[k] = column(kStepColumns[k]);
   for (std::size_t k = 0; special_points && k < kSpecialColumns.size(); ++k) c.special[k] = column(kSpecialColumns[k]);
   for (std::size_t k = 0; k < used.size(); ++k) {
@@ -204,6 +212,10 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   }
   return c;
 }
+
+// A measure from its column: a count as a whole number, any other as a number.
+void ReadField(const CsvTable& t, int row, int column, int* count) { *count = t.Integer(row, column); }
+void ReadField(const CsvTable& t, int row, int column, double* value) { *value = t.Number(row, column); }
 
 StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
   Eigen::VectorXd variables(ov::Count(signature.size()));
@@ -217,9 +229,11 @@ StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const
   p.fold_test = t.Number(row, c.stability[1]);
   p.flip_test = t.Number(row, c.stability[2]);
   p.torus_test = t.Number(row, c.stability[3]);
-  p.admissible = t.Flag(row, c.step[0]);
-  p.newton_iterations = t.Integer(row, c.step[1]);
-  p.step_size = t.Number(row, c.step[2]);
+  p.admissible = t.Flag(row, c.admissible);
+  orbit_columns::ForEachMeasure(p.measures,
+                                [&, k = 0](const char*, auto& field) mutable { ReadField(t, row, c.measures[k++], &field); });
+  p.newton_iterations = t.Integer(row, c.step[0]);
+  p.step_size = t.Number(row, c.step[1]);
   return p;
 }
 
@@ -269,6 +283,8 @@ std::vector<std::string> ColumnNames(const StoredPoint& p) {
     columns.push_back(MultiplierColumn(k, "im"));
   }
   columns.insert(columns.end(), kStabilityColumns.begin(), kStabilityColumns.end());
+  columns.push_back(orbit_columns::kAdmissible);
+  orbit_columns::ForEachMeasure(p.measures, [&](const char* name, const auto&) { columns.push_back(name); });
   columns.insert(columns.end(), kStepColumns.begin(), kStepColumns.end());
   return columns;
 }

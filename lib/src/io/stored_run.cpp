@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -38,7 +39,8 @@ std::vector<std::string> PointLabels(const Branch& branch) {
 }
 
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
-  // The monitor's columns by name: its margins, then what it records of the stability.
+  // The monitor's columns by name: its margins, then what it records of the stability and the
+  // orbit's measures.
   auto record = [&](int i, std::string label) {
     const BranchPoint& p = b.branch.points[i];
     StoredPoint point{.pt = i + 1, .label = std::move(label), .orbit = b.orbits[i]};
@@ -61,6 +63,9 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
     point.flip_test = recorded.at(orbit_columns::kFlipTest);
     point.torus_test = recorded.at(orbit_columns::kTorusTest);
     point.admissible = recorded.at(orbit_columns::kAdmissible) != 0.0;
+    orbit_columns::ForEachMeasure(point.measures, [&](const char* name, auto& field) {
+      field = static_cast<std::remove_reference_t<decltype(field)>>(recorded.at(name));
+    });
     point.newton_iterations = p.newton_iterations;
     point.step_size = p.ds;
     return point;

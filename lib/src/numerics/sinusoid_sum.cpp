@@ -233,15 +233,23 @@ ZeroSearch Zeros(const SinusoidSum& f, double a, double b, int max_count, const 
 }
 
 Extremum Minimum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options) {
-  Extremum best{a, f(a)};
-  const double fb = f(b);
-  if (fb < best.value) best = {b, fb};
+  return MinimumAndMaximum(f, a, b, options).minimum;
+}
+
+Extrema MinimumAndMaximum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options) {
+  const double fa = f(a);
+  Extrema best{{a, fa}, {a, fa}};
+  auto consider = [&best](double t, double value) {
+    if (value < best.minimum.value) best.minimum = {t, value};
+    if (value > best.maximum.value) best.maximum = {t, value};
+  };
+  consider(b, f(b));
   const ZeroSearch critical = Zeros(f.Derivative(), a, b, std::numeric_limits<int>::max(), options);
-  if (!critical.Complete()) return {a, std::numeric_limits<double>::quiet_NaN()};
-  for (const Zero& z : critical.zeros) {
-    const double value = f(z.t);
-    if (value < best.value) best = {z.t, value};
+  if (!critical.Complete()) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {{a, nan}, {a, nan}};
   }
+  for (const Zero& z : critical.zeros) consider(z.t, f(z.t));
   return best;
 }
 

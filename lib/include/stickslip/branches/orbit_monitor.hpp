@@ -16,7 +16,8 @@
 // appears or leaves (to or from +inf).
 //
 // Recorded with each point: the Floquet multipliers, whether the orbit is stable, det(M - I)
-// (zero at a fold) and whether it is admissible (every defined margin positive).
+// (zero at a fold), whether it is admissible (every defined margin positive) and the orbit's
+// measures (orbits/orbit_measures.hpp: amplitudes, peak-to-peak, stick fraction, stops, sticks).
 #pragma once
 
 #include <functional>
@@ -26,6 +27,7 @@
 
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/periodicity.hpp"
 
 namespace stickslip {
@@ -41,6 +43,25 @@ inline constexpr const char* kTorusTest = "floquet:torus";
 inline constexpr const char* kAdmissible = "admissible";
 // "floquet:mu<k>_re" or "_im", k from 1.
 std::string Multiplier(int k, const char* part);
+// The orbit's measures (orbits/orbit_measures.hpp), after `admissible`.
+inline constexpr const char* kAmplitudeX1 = "amplitude:x1";
+inline constexpr const char* kAmplitudeX2 = "amplitude:x2";
+inline constexpr const char* kPeakToPeakX2 = "peak-to-peak:x2";
+inline constexpr const char* kStickFraction = "stick-fraction";
+inline constexpr const char* kStops = "stops";
+inline constexpr const char* kSticks = "sticks";
+// Calls visit(name, field) for each measure in column order, with `measures` an OrbitMeasures,
+// const or not: the field is a double&, or an int& for the counts (stops, sticks). The one list of
+// which column holds which measure, for the monitor, the result files and the front ends.
+template <typename Measures, typename Visit>
+void ForEachMeasure(Measures& measures, Visit&& visit) {
+  visit(kAmplitudeX1, measures.amplitude_x1);
+  visit(kAmplitudeX2, measures.amplitude_x2);
+  visit(kPeakToPeakX2, measures.peak_to_peak_x2);
+  visit(kStickFraction, measures.stick_fraction);
+  visit(kStops, measures.stops);
+  visit(kSticks, measures.sticks);
+}
 }  // namespace orbit_columns
 
 // The special-point code of a margin's sign change.
@@ -63,7 +84,7 @@ class OrbitMonitor final : public Monitor {
   std::vector<std::string> RecordedNames() const override { return recorded_; }
   void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const override;
   // Every column, monitored and recorded, in the order of the result files: the margins, the
-  // multipliers, stable, det(M - I), det(M + I), the torus test, admissible.
+  // multipliers, stable, det(M - I), det(M + I), the torus test, admissible, the measures.
   const std::vector<PointColumn>& Columns() const { return columns_; }
 
  private:

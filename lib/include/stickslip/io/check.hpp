@@ -1,7 +1,8 @@
 // Regression checks: a fresh run's special points and labelled branch points against the files
 // stored in results/. Special points must agree in type, order, test function and `located`;
-// the continuation parameter to a relative 1e-8, every other variable of the solution to 1e-7
-// and the Floquet multipliers to 1e-6. The `stable` and `admissible` flags must agree wherever
+// the continuation parameter to a relative 1e-8, every other variable of the solution and every
+// measure of the orbit (amplitudes, peak-to-peak, stick fraction; the counts of stops and sticks
+// exactly) to 1e-7 and the Floquet multipliers to 1e-6. The `stable` and `admissible` flags must agree wherever
 // the stored point is clear of their boundary (multipliers off the unit circle, margins off
 // zero, by flag_clearance); on the boundary, at a TR or a grazing, rounding decides them.
 #pragma once

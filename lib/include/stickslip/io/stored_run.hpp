@@ -13,6 +13,7 @@
 
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 
 namespace stickslip {
 
@@ -20,8 +21,9 @@ struct OrbitBranch;
 
 // One branch point, one CSV row. The columns are, in this order: pt, label, the orbit's
 // variables (SolutionColumns), margin:<name> per margin, floquet:mu<k>_re and _im per multiplier,
-// stable, floquet:det(M-I), floquet:det(M+I), floquet:torus, admissible, newton_iterations,
-// step_size.
+// stable, floquet:det(M-I), floquet:det(M+I), floquet:torus, admissible, the measures
+// (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks: orbit_columns::
+// ForEachMeasure), newton_iterations, step_size.
 struct StoredPoint {
   int pt = 0;                  // 1-based position on the branch
   std::string label;           // AUTO-style type and running number ("LP2"); empty if regular
@@ -33,6 +35,7 @@ struct StoredPoint {
   double flip_test = 0.0;      // det(M + I)
   double torus_test = 0.0;     // prod_{i<j} (mu_i mu_j - 1)
   bool admissible = true;      // every terminal margin positive
+  OrbitMeasures measures{};    // amplitudes, peak-to-peak, stick fraction, stops and sticks per period
   int newton_iterations = 0;
   double step_size = 0.0;      // the step that reached it (0 at the start and at located points)
 };

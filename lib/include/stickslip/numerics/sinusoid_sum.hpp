@@ -94,4 +94,12 @@ struct Extremum {
 };
 Extremum Minimum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options = {});
 
+// The minimum and the maximum of f over [a, b] from one search for the zeros of f' (the
+// candidates are a, b and those zeros); both values are NaN if that search was not complete.
+struct Extrema {
+  Extremum minimum;
+  Extremum maximum;
+};
+Extrema MinimumAndMaximum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options = {});
+
 }  // namespace stickslip
