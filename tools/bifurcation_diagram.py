@@ -21,8 +21,8 @@ SIZE = (8, 6)  # inches, at 100 dpi: 800 x 600 pixels
 INADMISSIBLE = dict(color="0.65", lw=0.9)
 # Marker and colour by kind of special point: smooth bifurcations, user values, ends, and the
 # nonsmooth orbit-type changes (SK, GR, ... : every other code).
-MARKERS = {"LP": ("s", "red"), "BP": ("^", "red"), "PD": ("v", "red"), "TR": ("D", "red"), "NS": ("D", "red"),
-           "UZ": ("o", "C0"), "EP": ("o", "black")}
+MARKERS = {"LP": ("s", "red"), "BP": ("^", "red"), "SB": ("^", "red"), "PD": ("v", "red"), "TR": ("D", "red"),
+           "NS": ("D", "red"), "UZ": ("o", "C0"), "EP": ("o", "black")}
 TYPE_CHANGE_MARKER = ("o", "darkorange")
 
 

@@ -224,7 +224,7 @@ std::string Join(const std::vector<std::string>& fields) {
 TEST(ResultFiles, RowShorterThanItsHeaderNamesFileAndLine) {
   RunFiles files = StoredTexts(kRun);
   files.branch_csv = EditLine(files.branch_csv, 3, [](std::string l) { return l.substr(0, l.rfind(',')); });
-  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 52 fields, the header 53: valid one field per column");
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 53 fields, the header 54: valid one field per column");
 }
 
 TEST(ResultFiles, MissingColumnNamesFileAndColumn) {

@@ -35,8 +35,9 @@ UnknownChoice Unfolded(const UnknownChoice& choice, int listed, int repeats) {
 
 BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const OrbitContinuationSetup& setup,
                                              int side) {
-  if (special.type != "BP" && special.type != "PD") {
-    throw InvalidInput("special point", special.type, "a branch point (BP) or a period doubling (PD)");
+  if (special.type != "BP" && special.type != "PD" && special.type != "SB") {
+    throw InvalidInput("special point", special.type,
+                       "a branch point (BP), a period doubling (PD) or a symmetry breaking (SB)");
   }
   if (side != 1 && side != -1) throw InvalidInput("side", side, "+1 or -1");
   const OrbitContinuationProblem original = MakeOrbitContinuation(setup);
@@ -48,8 +49,8 @@ BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const 
     next.options.start_direction = side * d.second;
     return {std::move(next), d.singularity, at};
   }
-  // The period-1 tangent on the orbit's variables (the leading unknowns are variables, in the
-  // order of free(); multiple shooting's interior states follow), repeated over two periods.
+  // The tangent on the orbit's variables (the leading unknowns are variables, in the order of
+  // free(); multiple shooting's interior states follow), repeated over the unfolded segments.
   const int n = at.signature.size();
   const std::vector<int>& free = original.system->free();
   Eigen::VectorXd tangent = Eigen::VectorXd::Zero(ov::Count(n));
@@ -57,7 +58,7 @@ BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const 
   if (setup.unknowns.tie_static_friction) {
     tangent(ov::Parameter(n, ParameterId::kStaticFriction)) = tangent(ov::Parameter(n, ParameterId::kSlidingFriction));
   }
-  next.start = Unfolded(at, 2);
+  next.start = Unfolded(at, special.type == "PD" ? 2 : 1);
   const int m = next.start.signature.size();
   next.unknowns = Unfolded(setup.unknowns, n, m / n);
   next.shooting = ShootingChoice::kSingle;

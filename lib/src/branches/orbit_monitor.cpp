@@ -86,6 +86,12 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : syst
                   [](const Evaluated& e) { return e.stability.flip_test; });
   AddTestFunction({.name = orbit_columns::kTorusTest, .type = "TR", .may_have_poles = true},
                   [](const Evaluated& e) { return e.stability.torus_test; });
+  auto symmetry_test = [](const Evaluated& e) { return e.stability.symmetry_test; };
+  if (start.signature.antisymmetric()) {
+    AddTestFunction({.name = orbit_columns::kSymmetryTest, .type = "SB", .may_have_poles = true}, symmetry_test);
+  } else {
+    AddRecorded(orbit_columns::kSymmetryTest, symmetry_test);
+  }
   AddRecorded(orbit_columns::kAdmissible, [](const Evaluated& e) {
     for (const Margin& m : e.margins) {
       if (std::isfinite(m.value) && m.value <= 0.0) return 0.0;  // non-finite: not defined here

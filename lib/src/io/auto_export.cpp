@@ -17,7 +17,7 @@ namespace {
 
 // AUTO-07p's point type codes.
 int AutoTypeCode(const std::string& type) {
-  static const std::map<std::string, int> codes = {{"LP", 2}, {"BP", 1}, {"UZ", -4}, {"EP", 9}, {"PD", 7}, {"TR", 8}};
+  static const std::map<std::string, int> codes = {{"LP", 2}, {"BP", 1}, {"UZ", -4}, {"EP", 9}, {"PD", 7}, {"TR", 8}, {"SB", 1}};
   const auto it = codes.find(type);
   return it == codes.end() ? -4 : it->second;
 }

@@ -38,8 +38,9 @@ constexpr const char* kSummaryFile = "summary.json";
 // The columns of a point after its margins and multipliers: the stability, admissible, the
 // measures (orbit_columns::ForEachMeasure), the step; and those a special point adds.
 using orbit_columns::kMarginPrefix;
-constexpr std::array<const char*, 4> kStabilityColumns = {orbit_columns::kStable, orbit_columns::kFoldTest,
-                                                          orbit_columns::kFlipTest, orbit_columns::kTorusTest};
+constexpr std::array<const char*, 5> kStabilityColumns = {orbit_columns::kStable, orbit_columns::kFoldTest,
+                                                          orbit_columns::kFlipTest, orbit_columns::kTorusTest,
+                                                          orbit_columns::kSymmetryTest};
 constexpr std::array<const char*, 2> kStepColumns = {"newton_iterations", "step_size"};
 constexpr std::array<const char*, 3> kSpecialColumns = {"type", "test_function", "located"};
 
@@ -84,7 +85,7 @@ std::string Row(const StoredPoint& p) {
     fields.push_back(Number(mu.imag()));
   }
   fields.push_back(Flag(p.stable));
-  for (double v : {p.fold_test, p.flip_test, p.torus_test}) fields.push_back(Number(v));
+  for (double v : {p.fold_test, p.flip_test, p.torus_test, p.symmetry_test}) fields.push_back(Number(v));
   fields.push_back(Flag(p.admissible));
   orbit_columns::ForEachMeasure(p.measures, [&](const char*, const auto& value) { fields.push_back(Number(value)); });
   fields.push_back(std::to_string(p.newton_iterations));
@@ -229,6 +230,7 @@ StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const
   p.fold_test = t.Number(row, c.stability[1]);
   p.flip_test = t.Number(row, c.stability[2]);
   p.torus_test = t.Number(row, c.stability[3]);
+  p.symmetry_test = t.Number(row, c.stability[4]);
   p.admissible = t.Flag(row, c.admissible);
   orbit_columns::ForEachMeasure(p.measures,
                                 [&, k = 0](const char*, auto& field) mutable { ReadField(t, row, c.measures[k++], &field); });

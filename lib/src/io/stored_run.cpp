@@ -62,6 +62,7 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
     point.fold_test = recorded.at(orbit_columns::kFoldTest);
     point.flip_test = recorded.at(orbit_columns::kFlipTest);
     point.torus_test = recorded.at(orbit_columns::kTorusTest);
+    point.symmetry_test = recorded.at(orbit_columns::kSymmetryTest);
     point.admissible = recorded.at(orbit_columns::kAdmissible) != 0.0;
     orbit_columns::ForEachMeasure(point.measures, [&](const char* name, auto& field) {
       field = static_cast<std::remove_reference_t<decltype(field)>>(recorded.at(name));

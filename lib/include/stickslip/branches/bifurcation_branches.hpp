@@ -6,10 +6,13 @@
 //       point (shifting the orbit by one period is a symmetry of the problem): the period-2
 //       branch leaves it along the null vector of the period-2 Jacobian orthogonal to the
 //       traversed-twice branch (continuation/branch_switching.hpp), the eigenvector of the
-//       multiplier -1 in the states.
-// The returned setup starts on the point; its first point lies ds along the new branch. The new
-// problem is solved by single shooting (the traversed-twice tangent is exact there: a repetition
-// of the period-1 tangent).
+//       multiplier -1 in the states;
+//   SB  a symmetry breaking of an antisymmetric orbit (a multiplier -1 of the half-period map
+//       with the mirror, orbits/stability.hpp): the orbits without the symmetry, of the type over
+//       the whole period, cross the antisymmetric one there, again as a branch point.
+// The returned setup starts on the point; its first point lies ds along the new branch. At a PD
+// and an SB the new problem is solved by single shooting (the known branch's tangent is exact
+// there: a repetition of the original tangent).
 #pragma once
 
 #include "stickslip/branches/orbit_continuation.hpp"
@@ -24,9 +27,10 @@ struct BifurcationBranchStart {
   Orbit at;  // the bifurcation point's orbit as an orbit of the new type (traversed twice at a PD)
 };
 
-// The branch that leaves `special` (a "BP" or "PD" of the branch continued from `setup`) on the
-// side `side` (+1 or -1: the two halves of the new branch; at a PD they are the same orbits,
-// shifted by one period). Throws InvalidInput naming "special point" for another type, and "side".
+// The branch that leaves `special` (a "BP", "PD" or "SB" of the branch continued from `setup`) on
+// the side `side` (+1 or -1: the two halves of the new branch; at a PD they are the same orbits
+// shifted by one period, at an SB mirror images). Throws InvalidInput naming "special point" for
+// another type, and "side".
 BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const OrbitContinuationSetup& setup,
                                              int side = 1);
 

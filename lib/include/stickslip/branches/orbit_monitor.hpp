@@ -10,8 +10,9 @@
 //   SK  the force condition at a stop crossing its threshold (reversal:i, stick-entry:i,
 //       abnormal-stop:i)
 //   EP  the sliding friction level u_s reaching zero: the end of the physical family
-// and det(M + I) (PD, a multiplier through -1) and the torus test (TR, a complex pair on the
-// unit circle). All may jump through a pole rather than pass through zero: the saltation
+// and det(M + I) (PD, a multiplier through -1), the torus test (TR, a complex pair on the unit
+// circle) and, for an antisymmetric orbit, det(H + I) (SB, a multiplier -1 of the half-period map
+// with the mirror: a symmetry-breaking pitchfork, orbits/stability.hpp). All may jump through a pole rather than pass through zero: the saltation
 // matrices blow up where an event becomes tangent, and a margin jumps where an interior minimum
 // appears or leaves (to or from +inf).
 //
@@ -40,6 +41,9 @@ inline constexpr const char* kStable = "stable";
 inline constexpr const char* kFoldTest = "floquet:det(M-I)";
 inline constexpr const char* kFlipTest = "floquet:det(M+I)";
 inline constexpr const char* kTorusTest = "floquet:torus";
+// det(H + I) of an antisymmetric orbit (orbits/stability.hpp): a test function there (SB), nan
+// for the others.
+inline constexpr const char* kSymmetryTest = "floquet:det(H+I)";
 inline constexpr const char* kAdmissible = "admissible";
 // "floquet:mu<k>_re" or "_im", k from 1.
 std::string Multiplier(int k, const char* part);

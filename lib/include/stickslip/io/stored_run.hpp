@@ -21,7 +21,7 @@ struct OrbitBranch;
 
 // One branch point, one CSV row. The columns are, in this order: pt, label, the orbit's
 // variables (SolutionColumns), margin:<name> per margin, floquet:mu<k>_re and _im per multiplier,
-// stable, floquet:det(M-I), floquet:det(M+I), floquet:torus, admissible, the measures
+// stable, floquet:det(M-I), floquet:det(M+I), floquet:torus, floquet:det(H+I), admissible, the measures
 // (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks: orbit_columns::
 // ForEachMeasure), newton_iterations, step_size.
 struct StoredPoint {
@@ -34,6 +34,7 @@ struct StoredPoint {
   double fold_test = 0.0;      // det(M - I)
   double flip_test = 0.0;      // det(M + I)
   double torus_test = 0.0;     // prod_{i<j} (mu_i mu_j - 1)
+  double symmetry_test = 0.0;  // det(H + I) of an antisymmetric orbit; nan for the others
   bool admissible = true;      // every terminal margin positive
   OrbitMeasures measures{};    // amplitudes, peak-to-peak, stick fraction, stops and sticks per period
   int newton_iterations = 0;
