@@ -77,4 +77,28 @@ BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const 
   return {std::move(next), d.singularity, std::move(twice)};
 }
 
+BifurcationBranchStart BranchFromBifurcation(const std::string& type, const OrbitContinuationSetup& setup,
+                                             int side) {
+  if (type != "PD" && type != "SB") {
+    throw InvalidInput("special point", type,
+                       "a period doubling (PD) or a symmetry breaking (SB): at a branch point (BP) the "
+                       "branch's own tangent is needed, which result files do not keep");
+  }
+  OrbitContinuationSetup on_point = setup;
+  on_point.options.max_points = 1;
+  on_point.options.start_direction.resize(0);
+  const OrbitContinuationProblem problem = MakeOrbitContinuation(on_point);
+  const Branch branch = Continuation(*problem.system, nullptr, problem.options, problem.start).Run();
+  if (branch.points.empty()) {
+    throw InvalidInput::WithMessage("special point", fmt::format("special point: the {} does not lie on a branch of its "
+                                                                 "type: {}", type, branch.end_message));
+  }
+  SpecialPoint special;
+  special.type = type;
+  special.u = branch.points.front().u;
+  special.lambda = branch.points.front().lambda;
+  special.tangent = branch.points.front().tangent;
+  return BranchFromBifurcation(special, setup, side);
+}
+
 }  // namespace stickslip

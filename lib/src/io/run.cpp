@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/branches/bifurcation_branches.hpp"
 #include "stickslip/io/start_input.hpp"
 
 namespace stickslip {
@@ -43,11 +44,23 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   o.detect_folds = run.detect_folds;
   o.detect_branch_points = run.detect_branch_points;
   o.continue_past_terminal = run.continue_past_type_changes;
-  // User values address unknowns: the free variables in their order, then the parameter.
-  std::vector<int> order = free;
-  order.push_back(parameter);
+  if (run.restart_switch_branch) {
+    // The label's letters are its type (LP2: LP).
+    const std::string& label = run.restart_label;
+    const std::string type = label.substr(0, label.find_first_of("0123456789"));
+    try {
+      setup = BranchFromBifurcation(type, setup, run.direction).setup;
+    } catch (const InvalidInput& e) {
+      throw fail("start.restart.switch_branch", fmt::format("= true is invalid at '{}': {}", label, e.Predicate()));
+    }
+  }
+  // User values address unknowns: the free variables in their order, then the parameter (of the
+  // branch that leaves the point, after a switch).
+  const int n = setup.start.signature.size();
+  std::vector<int> order = run.restart_switch_branch ? FreeIndices(setup.start.signature, setup.unknowns) : free;
+  order.push_back(run.restart_switch_branch ? *ov::IndexOf(n, run.parameter) : parameter);
   for (const auto& [name, value] : run.user_values) {
-    const std::optional<int> index = ov::IndexOf(start.orbit.signature.size(), name);
+    const std::optional<int> index = ov::IndexOf(n, name);
     const auto position = index ? std::find(order.begin(), order.end(), *index) : order.end();
     if (position == order.end()) {
       throw fail("continuation.user_values_of", fmt::format("names '{}', which is not an unknown of the run", name));

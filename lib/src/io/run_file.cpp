@@ -267,6 +267,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
       r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid {}", run.restart_run, kRunNameRule));
     }
     r.String("label", &run.restart_label, true);
+    r.Boolean("switch_branch", &run.restart_switch_branch);
     r.RejectUnknown();
   }
   if (run.preset.empty() == run.signature.empty() && run.restart_run.empty()) {

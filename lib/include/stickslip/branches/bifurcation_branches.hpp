@@ -34,4 +34,12 @@ struct BifurcationBranchStart {
 BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const OrbitContinuationSetup& setup,
                                              int side = 1);
 
+// The same from a stored point (a restart: `setup.start` is the orbit of a PD or an SB, `type`
+// its type), whose tangent on the branch of `setup` is computed there: the branch is regular at
+// a PD and an SB (the crossing lies in the unfolded problem). A BP needs the tangent of the branch
+// that located it (the overload above): throws InvalidInput naming "special point" for it, for
+// any other type, and where the start does not converge on its branch.
+BifurcationBranchStart BranchFromBifurcation(const std::string& type, const OrbitContinuationSetup& setup,
+                                             int side = 1);
+
 }  // namespace stickslip

@@ -8,6 +8,7 @@
 //   set = { u_r = 0.5 }                # model data and start: chi eta omega u_s u_r x10 x20 v10 phi
 //   guess = { d1 = 3.2 }               # any orbit variable
 //   restart = { run = "paper-5.1-omega-up", label = "LP1" }   # start from a labelled point
+//                                      # (switch_branch = true: the branch leaving a PD or SB)
 //   [unknowns]
 //   free = ["u_r"]                     # released variables
 //   fix = ["phi"]                      # held variables
@@ -58,6 +59,9 @@ struct RunFile {
   NamedValues guess;
   std::string restart_run;
   std::string restart_label;
+  // At a restart from a PD or an SB: the branch that leaves it, not the branch it lies on (AUTO's
+  // ISW = -1; branches/bifurcation_branches.hpp), on the side `direction` names.
+  bool restart_switch_branch = false;
   // [unknowns]
   std::vector<std::string> free;
   std::vector<std::string> fix;
