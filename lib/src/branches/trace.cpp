@@ -76,6 +76,12 @@ class BranchRunner {
       for (; to_next_change && special_checked < b.special_points.size(); ++special_checked) {
         const SpecialPoint& s = b.special_points[special_checked];
         if (!IsMarginChange(s) || s.point == 0 || (stop && s.point >= stop->first)) continue;
+        // The change the branch starts on, located again a rounding error away (its margin is zero
+        // there only to the location's tolerance): no change of its own.
+        const Eigen::VectorXd& u0 = b.points.front().u;
+        if ((s.u - u0).lpNorm<Eigen::Infinity>() <= options_.loop_tolerance * (1.0 + u0.lpNorm<Eigen::Infinity>())) {
+          continue;
+        }
         stop.emplace(s.point, fmt::format("{} ({}) changed sign at {} = {:.10g}", s.test_function, s.type,
                                           setup.parameter, s.lambda));
         why = BranchEnd::kTerminalEvent;
