@@ -7,10 +7,15 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
+#include <limits>
+#include <utility>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/trace_files.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/verification.hpp"
 
@@ -84,6 +89,152 @@ TEST(Trace, Section41DownwardsGoesOnPastTheCrossingSlidingOnTheStickingOrbit) {
   // Upwards the nonsticking orbit goes on to the range's end.
   ASSERT_FALSE(trace.up.links.empty());
   EXPECT_EQ(trace.up.links.front().signature, "slip- / antisymmetric");
+}
+
+// The special points of a set of branches but their ends (EP), as (function, lambda), sorted, with
+// the points located twice (a branch's end, and a start on it) counted once.
+std::vector<std::pair<std::string, double>> SpecialPoints(const std::vector<const OrbitBranch*>& branches) {
+  std::vector<std::pair<std::string, double>> points;
+  for (const OrbitBranch* b : branches) {
+    for (const SpecialPoint& s : b->branch.special_points) {
+      if (s.type == "EP") continue;
+      const std::string name = s.test_function.starts_with("margin:") ? s.test_function : s.type;
+      const bool seen = std::any_of(points.begin(), points.end(), [&](const auto& p) {
+        return p.first == name && std::abs(p.second - s.lambda) < 1e-8;
+      });
+      if (!seen) points.emplace_back(name, s.lambda);
+    }
+  }
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  return points;
+}
+
+// Section 5.1 over omega: none of its changes of type switches (the new segments are long), so the
+// trace follows the orbit type past them; it goes round the family's closed loop and ends there,
+// both chains meeting. Its special points are those of the one branch continued past every change
+// of type round the loop (the engine's closed-loop end): the fold, the torus point and the changes of
+// type, at the same omega.
+TEST(Trace, Section51OverOmegaClosesItsLoopWithItsFoldAndTypeChanges) {
+  OrbitContinuationSetup setup = RunFileSetup("paper-5.1-omega-up");
+  setup.options.user_values.clear();
+  TraceOptions options;
+  options.follow_past_unswitched = true;
+  const TraceResult trace = TraceOrbits(setup, options);
+  SCOPED_TRACE(Describe(trace));
+  EXPECT_EQ(trace.down.end, TraceEnd::kLoop) << trace.down.message;
+  EXPECT_EQ(trace.up.end, TraceEnd::kLoop) << trace.up.message;
+  ASSERT_FALSE(trace.down.links.empty());
+  ASSERT_FALSE(trace.up.links.empty());
+  // The chains met: both end on one orbit.
+  const Orbit& down_end = trace.down.links.back().branch.orbits.back();
+  const Orbit& up_end = trace.up.links.back().branch.orbits.back();
+  EXPECT_LE(OrbitDistance(down_end, up_end), 1e-7);
+  EXPECT_NEAR(down_end.parameters.omega, up_end.parameters.omega, 1e-7);
+  std::vector<const OrbitBranch*> traced;
+  for (const TraceDirection* chain : {&trace.down, &trace.up}) {
+    for (const TraceLink& link : chain->links) {
+      EXPECT_EQ(link.signature, "slip- slip+ stick slip+");
+      EXPECT_NE(link.end, TraceEnd::kSwitched);
+      traced.push_back(&link.branch);
+    }
+  }
+
+  // The one branch round the loop, past every change of type.
+  OrbitContinuationSetup round = setup;
+  round.options.continue_past_terminal = true;
+  round.options.max_points = 100000;
+  const OrbitBranch loop = ContinueOrbit(round);
+  ASSERT_EQ(loop.branch.end, BranchEnd::kClosedLoop) << loop.branch.end_message;
+  const auto expected = SpecialPoints({&loop});
+  const auto found = SpecialPoints(traced);
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(found[k].first, expected[k].first) << k;
+    // G born at the stick's exit (where exit-slope passes zero, next to it) grows quadratically
+    // along the branch: a zero located to rounding in its value fixes omega only to about the square
+    // root of that (1.7e-8 apart here, both with |G| < 1e-12).
+    const bool born_at_the_exit = found[k].first.starts_with("margin:G:");
+    EXPECT_NEAR(found[k].second, expected[k].second, born_at_the_exit ? 1e-7 : 1e-8) << found[k].first;
+  }
+  for (const OrbitBranch* b : traced) {
+    for (const SpecialPoint& s : b->branch.special_points) {
+      if (s.test_function.starts_with("margin:")) EXPECT_LE(std::abs(s.test_value), 1e-12) << s.test_function;
+    }
+  }
+  const auto count = [&](const std::string& name) {
+    return std::count_if(found.begin(), found.end(), [&](const auto& p) { return p.first == name; });
+  };
+  EXPECT_GE(count("LP"), 1);
+  EXPECT_GE(count("TR"), 1);
+  EXPECT_GE(std::count_if(found.begin(), found.end(), [](const auto& p) { return p.first.starts_with("margin:"); }), 3);
+}
+
+// The same trace twice gives the same files, byte for byte.
+TEST(Trace, GivesTheSameFilesFromRunToRun) {
+  const fs::path root(STICKSLIP_SOURCE_DIR);
+  RunFile run = ReadRunFile(root / "continuation-scripts" / "paper-4.1-omega-down.toml");
+  run.trace = TraceOptions{};
+  const OrbitContinuationSetup setup = MakeSetup(run, root / "results");
+  const TraceFiles a = FormatTraceFiles(RecordTrace(run, TraceOrbits(setup, *run.trace)));
+  const TraceFiles b = FormatTraceFiles(RecordTrace(run, TraceOrbits(setup, *run.trace)));
+  EXPECT_EQ(a.trace_csv, b.trace_csv);
+  EXPECT_EQ(a.trace_json, b.trace_json);
+}
+
+TEST(Trace, RefusesInvalidOptions) {
+  const OrbitContinuationSetup setup = RunFileSetup("paper-4.1-omega-down");
+  for (const auto& [field, change] : std::vector<std::pair<std::string, std::function<void(TraceOptions*)>>>{
+           {"max_branches", [](TraceOptions* o) { o->max_branches = 0; }},
+           {"max_branches", [](TraceOptions* o) { o->max_branches = kMaxTraceBranches + 1; }},
+           {"max_amplitude", [](TraceOptions* o) { o->max_amplitude = 0.0; }},
+           {"max_amplitude", [](TraceOptions* o) { o->max_amplitude = std::numeric_limits<double>::infinity(); }},
+           {"amplitude_samples", [](TraceOptions* o) { o->amplitude_samples = 1; }},
+           {"loop_tolerance", [](TraceOptions* o) { o->loop_tolerance = 0.0; }},
+           {"loop_tolerance", [](TraceOptions* o) { o->loop_tolerance = 1e300; }},
+           {"nudge", [](TraceOptions* o) { o->type_switch.nudge = -1.0; }}}) {
+    TraceOptions options;
+    change(&options);
+    try {
+      TraceOrbits(setup, options);
+      ADD_FAILURE() << field << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), field) << e.what();
+    }
+  }
+  OrbitContinuationSetup past = setup;
+  past.options.continue_past_terminal = true;
+  EXPECT_THROW(TraceOrbits(past), InvalidInput);
+}
+
+// A resonance bound below the orbit's amplitude ends both directions at the start.
+TEST(Trace, EndsAtAResonanceWhereTheAmplitudePassesItsBound) {
+  const OrbitContinuationSetup setup = RunFileSetup("paper-4.1-omega-down");
+  TraceOptions options;
+  // Section 4.1's x20 is 3.33 at the start: an amplitude of at least that.
+  options.max_amplitude = 3.0;
+  const TraceResult trace = TraceOrbits(setup, options);
+  EXPECT_EQ(trace.down.end, TraceEnd::kResonance) << trace.down.message;
+  EXPECT_EQ(trace.up.end, TraceEnd::kResonance) << trace.up.message;
+  ASSERT_EQ(trace.down.links.size(), 1u);
+  EXPECT_EQ(trace.down.links[0].branch.orbits.size(), 1u);
+  EXPECT_EQ(trace.down.links[0].branch.branch.end, BranchEnd::kStopped);
+  // A bound above the whole range's amplitude never ends it.
+  options.max_amplitude = 1e3;
+  const TraceResult wide = TraceOrbits(setup, options);
+  EXPECT_EQ(wide.up.end, TraceEnd::kParameterBound) << wide.up.message;
+}
+
+// max_branches bounds each chain.
+TEST(Trace, StopsAfterMaxBranches) {
+  OrbitContinuationSetup setup = RunFileSetup("paper-5.1-omega-up");
+  setup.options.user_values.clear();
+  TraceOptions options;
+  options.follow_past_unswitched = true;
+  options.max_branches = 2;
+  const TraceResult trace = TraceOrbits(setup, options);
+  EXPECT_EQ(trace.down.end, TraceEnd::kMaxBranches) << trace.down.message;
+  EXPECT_EQ(trace.down.links.size(), 2u);
+  EXPECT_EQ(trace.up.links.size(), 2u);
 }
 
 }  // namespace
