@@ -52,7 +52,7 @@ for f in trace.csv trace.json branch-1/branch.csv branch-2/special-points.csv br
 done
 
 # Each branch is a run: a restart from its labelled point, and the AUTO export.
-"$bin" continue --results "$r/t41" --point branch-2:EP1 --parameter omega --range 0.3,0.69 \
+"$bin" continue --results "$r/t41" --point branch-2:EP1 --parameter omega --range 0.3,0.69 --ds 0.005 --ds-max 0.05 \
   --direction down --max-points 5 --output again > /dev/null && pass || fail "restart from branch-2"
 cmp -s <(sed -n 2,5p "$r/t41/again/branch.csv" | cut -d, -f3-12) <(sed -n 2,5p "$r/t41/branch-2/branch.csv" | cut -d, -f3-12) &&
   pass || fail "the restart does not retrace branch-2"
