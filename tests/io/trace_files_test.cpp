@@ -28,7 +28,7 @@ std::string Slurp(const fs::path& path) {
 
 void Spit(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
-class TraceFiles : public ::testing::Test {
+class StoredTraceFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     const fs::path root(STICKSLIP_SOURCE_DIR);
@@ -47,7 +47,7 @@ class TraceFiles : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(TraceFiles, ReadingThenWritingGivesTheSameBytesAndEveryBranchIsARun) {
+TEST_F(StoredTraceFiles, ReadingThenWritingGivesTheSameBytesAndEveryBranchIsARun) {
   const StoredTrace read = ReadTraceFiles(dir_ / "trace");
   ASSERT_EQ(read.branches.size(), stored_.branches.size());
   ASSERT_GE(read.branches.size(), 3u);
@@ -71,7 +71,7 @@ TEST_F(TraceFiles, ReadingThenWritingGivesTheSameBytesAndEveryBranchIsARun) {
   EXPECT_EQ(Slurp(dir_ / "trace" / "trace.csv"), a.trace_csv);
 }
 
-TEST_F(TraceFiles, ADamagedFileIsAnErrorNamingItsFile) {
+TEST_F(StoredTraceFiles, ADamagedFileIsAnErrorNamingItsFile) {
   const fs::path t = dir_ / "trace";
   const std::string json = Slurp(t / "trace.json");
   const std::string csv = Slurp(t / "trace.csv");
@@ -107,7 +107,7 @@ TEST_F(TraceFiles, ADamagedFileIsAnErrorNamingItsFile) {
   expect_error("a branch without its summary", "summary.json");
 }
 
-TEST_F(TraceFiles, ADirectoryOfTheUsersIsNotReplaced) {
+TEST_F(StoredTraceFiles, ADirectoryOfTheUsersIsNotReplaced) {
   fs::create_directories(dir_ / "mine");
   Spit(dir_ / "mine" / "notes.txt", "mine");
   StoredTrace other = stored_;

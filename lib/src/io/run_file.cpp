@@ -368,7 +368,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
     t.Number("loop_tolerance", &options.loop_tolerance);
     t.Boolean("follow_past_unswitched", &options.follow_past_unswitched);
     try {
-      options.Validate();
+      options.ValidateOwnFields();
     } catch (const InvalidInput& e) {
       if (const toml::node* n = t.Get(e.field())) t.Fail(*n, e.field(), e.Predicate());
       throw;

@@ -1,16 +1,13 @@
 #include "stickslip/io/trace_files.hpp"
 
 #include <algorithm>
-#include <array>
-#include <fstream>
-#include <sstream>
 #include <system_error>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include "csv_table.hpp"
+#include "result_directory.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
@@ -23,6 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace ov = orbit_variables;
 using detail::CsvTable;
+using detail::KeyError;
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kTraceCsv = "trace.csv";
@@ -38,22 +36,7 @@ std::vector<std::string> CsvHeader(const std::string& parameter) {
   return {"branch", "signature", "pt", "label", parameter, "phi", "period", "x10", "x20", "v10", "stable", "admissible"};
 }
 
-std::string ReadText(const fs::path& path) {
-  std::error_code ignored;
-  std::ifstream in(path, std::ios::binary);
-  if (!fs::is_regular_file(path, ignored) || !in) {
-    throw InvalidInput::WithMessage(path.string(), fmt::format("cannot read '{}'", path.string()));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // ---- trace.json
-
-InvalidInput KeyError(const fs::path& file, const std::string& key, const std::string& what) {
-  return InvalidInput::WithMessage(key, fmt::format("{}: key '{}' {}", file.string(), key, what));
-}
 
 // Typed access to one JSON object of trace.json; every key read is required, and Done() refuses
 // the keys not read.
@@ -68,22 +51,16 @@ class JsonObject {
     read_.push_back(key);
     return *it;
   }
-  std::string Text(const std::string& key) {
-    const Json& v = Get(key);
-    if (!v.is_string()) throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid a string", v.dump()));
-    return v.get<std::string>();
-  }
-  bool Flag(const std::string& key) {
-    const Json& v = Get(key);
-    if (!v.is_boolean()) throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid true or false", v.dump()));
-    return v.get<bool>();
-  }
+  std::string Text(const std::string& key) { return Typed<std::string>(key, &Json::is_string, "a string"); }
+  bool Flag(const std::string& key) { return Typed<bool>(key, &Json::is_boolean, "true or false"); }
   std::size_t Count(const std::string& key) {
+    return Typed<std::size_t>(key, &Json::is_number_unsigned, "a count (an integer >= 0)");
+  }
+  template <class T>
+  T Typed(const std::string& key, bool (Json::*is)() const noexcept, const char* valid) {
     const Json& v = Get(key);
-    if (!v.is_number_unsigned()) {
-      throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid a count (an integer >= 0)", v.dump()));
-    }
-    return v.get<std::size_t>();
+    if (!(v.*is)()) throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid {}", v.dump(), valid));
+    return v.get<T>();
   }
   std::string Name(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   void Done() const {
@@ -148,16 +125,7 @@ std::string FormatJson(const StoredTrace& t) {
 }
 
 StoredTrace ParseJson(const std::string& text, const fs::path& file) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    const std::string what = e.what();
-    const auto start = what.find("] ");
-    throw InvalidInput::WithMessage(
-        file.string(),
-        fmt::format("{}: invalid JSON: {}", file.string(), start == std::string::npos ? what : what.substr(start + 2)));
-  }
+  const Json json = detail::ParseJsonObject(text, file);
   JsonObject top(json, file, "");
   StoredTrace t;
   t.run_file = top.Text("run_file");
@@ -346,7 +314,7 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
   const fs::path target = results_root / output;
   if (IsTraceDirectory(target)) {
     try {
-      ParseJson(ReadText(target / kTraceJson), target / kTraceJson);
+      ParseJson(detail::ReadTextFile(target / kTraceJson), target / kTraceJson);
     } catch (const InvalidInput& e) {
       throw InvalidInput::WithMessage(
           "output", fmt::format("output = '{}' is invalid: '{}' holds no stickslip trace ({}): valid a new name or the "
@@ -367,51 +335,24 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
 std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
   const TraceFiles files = FormatTraceFiles(trace);
   CheckTraceOutputDirectory(results_root, trace.output);
-  fs::create_directories(results_root);
-  const fs::path target = results_root / trace.output;
-  const auto pid = static_cast<long>(::getpid());
-  const fs::path temporary = results_root / fmt::format(".{}.tmp.{}", trace.output, pid);
-  const fs::path old = results_root / fmt::format(".{}.old.{}", trace.output, pid);
-  std::error_code ignored;
-  fs::remove_all(temporary, ignored);
-  fs::create_directories(temporary);
   // The files a trace or a run writes; every other entry of the old directory is the user's.
   auto ours = [](const std::string& name) {
     return name == kTraceCsv || name == kTraceJson || name.starts_with(kBranchPrefix) || name == "branch.csv" ||
            name == "special-points.csv" || name == "summary.json";
   };
-  std::vector<std::string> kept;
-  try {
-    for (const StoredRun& run : trace.runs) WriteRunFiles(temporary, run);
-    WriteFileAtomically(temporary / kTraceCsv, files.trace_csv);
-    WriteFileAtomically(temporary / kTraceJson, files.trace_json);
-    if (fs::exists(target)) {
-      std::vector<std::string> others;
-      for (const fs::directory_entry& entry : fs::directory_iterator(target)) {
-        const std::string name = entry.path().filename().string();
-        if (!ours(name)) others.push_back(name);
-      }
-      for (const std::string& name : others) {
-        fs::rename(target / name, temporary / name);
-        kept.push_back(name);
-      }
-      fs::rename(target, old);
-    }
-    fs::rename(temporary, target);
-  } catch (...) {
-    if (!fs::exists(target) && fs::exists(old)) fs::rename(old, target, ignored);
-    for (const std::string& name : kept) fs::rename(temporary / name, target / name, ignored);
-    fs::remove_all(temporary, ignored);
-    throw;
-  }
-  fs::remove_all(old, ignored);
-  std::sort(kept.begin(), kept.end());
-  return kept;
+  return detail::ReplaceDirectory(
+      results_root, trace.output,
+      [&](const fs::path& directory) {
+        for (const StoredRun& run : trace.runs) WriteRunFiles(directory, run);
+        WriteFileAtomically(directory / kTraceCsv, files.trace_csv);
+        WriteFileAtomically(directory / kTraceJson, files.trace_json);
+      },
+      ours);
 }
 
 StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
   const fs::path json_file = trace_directory / kTraceJson;
-  StoredTrace t = ParseJson(ReadText(json_file), json_file);
+  StoredTrace t = ParseJson(detail::ReadTextFile(json_file), json_file);
   for (const StoredTraceBranch& b : t.branches) {
     StoredRun run = ReadRunFiles(trace_directory / b.name);
     if (run.branch.size() != b.points || run.summary.signature != b.signature) {
@@ -422,7 +363,7 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
     t.runs.push_back(std::move(run));
   }
   const fs::path csv_file = trace_directory / kTraceCsv;
-  t.points = ParseCsv(ReadText(csv_file), csv_file, t.parameter);
+  t.points = ParseCsv(detail::ReadTextFile(csv_file), csv_file, t.parameter);
   if (FormatCsv(t) != FormatCsv({.parameter = t.parameter, .points = PointsOf(t.runs, t.parameter)})) {
     throw InvalidInput::WithMessage(csv_file.string(),
                                     fmt::format("{}: differs from the branches' files: valid one row per point of "

@@ -58,6 +58,8 @@ struct TraceOptions {
 
   // Throws InvalidInput naming the first field out of its valid range.
   void Validate() const;
+  // The trace's own fields only (not type_switch), for the run-file reader; in trace_options.cpp.
+  void ValidateOwnFields() const;
 };
 
 // The most branches a direction may hold, however the bound is given.
