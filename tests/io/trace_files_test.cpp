@@ -36,7 +36,9 @@ class StoredTraceFiles : public ::testing::Test {
     run_.output = "trace";
     run_.trace = TraceOptions{};
     stored_ = RecordTrace(run_, TraceOrbits(MakeSetup(run_, root / "results"), *run_.trace));
-    dir_ = fs::path(::testing::TempDir()) / "trace_files_test";
+    // One directory per test: ctest runs them in parallel.
+    dir_ = fs::path(::testing::TempDir()) /
+           (std::string("trace_files_test_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     WriteTraceFiles(dir_, stored_);
   }

@@ -88,38 +88,26 @@ std::string FormatJson(const StoredTrace& t) {
   json["signature"] = t.signature;
   json["directions"] = Json::array();
   for (const StoredTraceDirection& d : t.directions) {
-    Json j = Json::object();
-    j["direction"] = d.direction;
-    j["end"] = d.end;
-    j["message"] = d.message;
-    j["branches"] = d.branches;
-    json["directions"].push_back(std::move(j));
+    json["directions"].push_back(
+        {{"direction", d.direction}, {"end", d.end}, {"message", d.message}, {"branches", d.branches}});
   }
   json["branches"] = Json::array();
   for (const StoredTraceBranch& b : t.branches) {
-    Json j = Json::object();
-    j["name"] = b.name;
-    j["chain"] = b.chain;
-    j["direction"] = b.direction;
-    j["signature"] = b.signature;
-    j["points"] = b.points;
-    j["start"] = b.start;
-    j["margin"] = b.margin;
-    if (b.has_switch) {
-      Json s = Json::object();
-      s["status"] = b.type_switch.status;
-      s["bifurcation"] = b.type_switch.bifurcation;
-      s["edit"] = b.type_switch.edit;
-      s["adjacent"] = b.type_switch.adjacent;
-      s["persists"] = b.type_switch.persists;
-      s["from_past"] = b.type_switch.from_past;
-      j["switch"] = std::move(s);
-    } else {
-      j["switch"] = nullptr;
-    }
-    j["end"] = b.end;
-    j["message"] = b.message;
-    json["branches"].push_back(std::move(j));
+    const StoredSwitch& w = b.type_switch;
+    const Json sw = b.has_switch ? Json{{"status", w.status},     {"bifurcation", w.bifurcation},
+                                        {"edit", w.edit},         {"adjacent", w.adjacent},
+                                        {"persists", w.persists}, {"from_past", w.from_past}}
+                                 : Json(nullptr);
+    json["branches"].push_back({{"name", b.name},
+                                {"chain", b.chain},
+                                {"direction", b.direction},
+                                {"signature", b.signature},
+                                {"points", b.points},
+                                {"start", b.start},
+                                {"margin", b.margin},
+                                {"switch", sw},
+                                {"end", b.end},
+                                {"message", b.message}});
   }
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
