@@ -61,7 +61,7 @@ int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::fi
   const int code = TraceExitCode(trace.result);
   if (code != kExitOk) {
     for (const StoredTraceDirection& d : trace.stored.directions) {
-      if (d.end != "parameter-bound" && d.end != "loop" && d.end != "resonance" && d.end != "max-points" &&
+      if (d.end != "parameter-bound" && d.end != "family-end" && d.end != "loop" && d.end != "resonance" && d.end != "max-points" &&
           d.end != "max-branches") {
         fmt::print(stderr, "{}: the {} chain ended: {}: {}\n", run.output, d.direction, d.end, d.message);
       }
@@ -108,7 +108,7 @@ Command AddTraceCommand(CLI::App& app) {
       "Follow the chain of orbit branches through every change of orbit type, both ways from the start, "
       "within --range: at each change the adjacent types are tried and the one confirmed by simulation is "
       "continued. Writes results/<output>/: branch-<k>/ (an ordinary run per branch), trace.csv and trace.json. "
-      "Exit 0 when both directions end at a range bound, a loop, a resonance, --max-points or "
+      "Exit 0 when both directions end at a range bound, the family's end (u_s = 0), a loop, a resonance, --max-points or "
       "--max-branches; 3 when a branch does not converge; 6 when a direction ends at a change of type that "
       "switched nowhere (the trace is written, the reason on stderr).");
   AddContinuationFlags(*cmd, &args->continuation);

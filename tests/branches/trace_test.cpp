@@ -91,6 +91,59 @@ TEST(Trace, Section41DownwardsGoesOnPastTheCrossingSlidingOnTheStickingOrbit) {
   EXPECT_EQ(trace.up.links.front().signature, "slip- / antisymmetric");
 }
 
+// Section 4.2 (u_r = u_s) downwards: the stop turns into a stick (crossing-sliding), s grazes
+// +eta u_r inside that stick at omega = 0.3211122863 (adding-sliding: the new slip- is found with its
+// length given, so its branch starts from the confirmed orbit past the grazing), and further down
+// the first part of the split stick vanishes (T0), where the chain goes on on the type with that
+// stick removed, the same motion. Each new orbit type is a motion on its branch by the exact simulator.
+TEST(Trace, Section42DownwardsSwitchesAtACrossingAGrazingAndAVanishingStick) {
+  OrbitContinuationSetup setup = RunFileSetup("paper-4.2-omega-down");
+  setup.options.lambda_min = 0.25;
+  setup.options.lambda_max = 0.7;
+  const TraceResult trace = TraceOrbits(setup);
+  SCOPED_TRACE(Describe(trace));
+  ASSERT_EQ(trace.down.links.size(), 4u);
+  EXPECT_EQ(trace.down.end, TraceEnd::kParameterBound);
+  EXPECT_EQ(trace.up.end, TraceEnd::kFamilyEnd) << "u_s = u_r reaches 0 upwards";
+  const std::vector<TraceLink>& chain = trace.down.links;
+  EXPECT_EQ(chain[1].signature, "slip- slip- stick / antisymmetric");
+  EXPECT_EQ(chain[2].signature, "slip- slip- stick slip- stick / antisymmetric");
+  EXPECT_EQ(chain[3].signature, "slip- slip- stick / antisymmetric");
+  EXPECT_STREQ(chain[1].type_switch->adjacent->bifurcation, "crossing-sliding");
+  EXPECT_STREQ(chain[2].type_switch->adjacent->bifurcation, "adding-sliding");
+  EXPECT_EQ(chain[3].margin, "duration:3");
+
+  // The grazing: its branch starts past it, on the confirmed orbit, with the new slip short.
+  const TypeSwitch& grazing = *chain[2].type_switch;
+  EXPECT_TRUE(grazing.singular_start);
+  EXPECT_NEAR(chain[1].branch.orbits.back().parameters.omega, 0.3211122863, 1e-9);
+  const Orbit& first = chain[2].branch.orbits.front();
+  EXPECT_LE(OrbitDistance(first, *grazing.past), 1e-10);
+  EXPECT_LT(first.parameters.omega, 0.3211122863);
+  EXPECT_GT(first.durations[3], 0.0);
+  EXPECT_LT(first.durations[3], 1e-2 * first.Period());
+  // The crossing and the vanishing stick: the same state, phase and period on both sides.
+  for (const std::size_t k : {std::size_t{1}, std::size_t{3}}) {
+    const Orbit& before = chain[k - 1].branch.orbits.back();
+    const Orbit& after = chain[k].branch.orbits.front();
+    EXPECT_FALSE(chain[k].type_switch->singular_start) << k;
+    EXPECT_NEAR(after.parameters.omega, before.parameters.omega, 1e-12) << k;  // events located together
+    EXPECT_LE((after.InitialState() - before.InitialState()).lpNorm<Eigen::Infinity>(), 1e-10) << k;
+    EXPECT_LE(std::abs(after.phi - before.phi), 1e-10) << k;
+    EXPECT_LE(std::abs(after.Period() - before.Period()), 1e-10) << k;
+  }
+  for (std::size_t k = 1; k < chain.size(); ++k) {
+    const std::vector<Orbit>& orbits = chain[k].branch.orbits;
+    ASSERT_GE(orbits.size(), 4u) << k;
+    const Orbit& o = orbits[orbits.size() / 2];
+    EXPECT_GT(SmallestMargin(AdmissibilityMargins(o)).value, 0.0) << k;
+    const Verification v = VerifyOrbit(o);
+    // Odeint, at its tolerances, merges a short slip between two sticks: the exact simulator
+    // resolves every segment.
+    EXPECT_TRUE(v.exact.sequence_matches && v.exact.periodicity_mismatch <= 1e-9) << k << ": " << v.Report();
+  }
+}
+
 // The special points of a set of branches but their ends (EP), as (function, lambda), sorted, with
 // the points located twice (a branch's end, and a start on it) counted once.
 std::vector<std::pair<std::string, double>> SpecialPoints(const std::vector<const OrbitBranch*>& branches) {

@@ -235,9 +235,17 @@ class Tracer {
     if (b.branch.end == BranchEnd::kTerminalEvent) {
       const Visit* visited = Visited(last, lambda, d, link_index);
       visits_.push_back({link.signature, lambda, last, d, link_index, true});
+      // The changes located at the end: several events at one place are stored as consecutive
+      // points of the same orbit (EventLocationOptions::same_point).
+      const Eigen::VectorXd& u_end = b.branch.points.back().u;
+      const double same = options_.loop_tolerance * (1.0 + u_end.lpNorm<Eigen::Infinity>());
+      int first_at_end = static_cast<int>(b.branch.points.size()) - 1;
+      while (first_at_end > 0 && (b.branch.points[first_at_end - 1].u - u_end).lpNorm<Eigen::Infinity>() <= same) {
+        --first_at_end;
+      }
       std::vector<const SpecialPoint*> changes;
       for (const SpecialPoint& s : b.branch.special_points) {
-        if (IsMarginChange(s) && s.point == static_cast<int>(b.orbits.size()) - 1) changes.push_back(&s);
+        if (IsMarginChange(s) && s.point >= first_at_end) changes.push_back(&s);
       }
       if (visited != nullptr) {
         link.end = TraceEnd::kLoop;
@@ -312,6 +320,14 @@ class Tracer {
       if (!first) first = std::move(sw);
     }
     const std::string why = fmt::format("{}", fmt::join(reasons, "; "));
+    // u_s reaching 0 ends the physical family: an end of the trace like a bound, not a failure, and
+    // no type goes past it.
+    const std::string family_end = std::string(orbit_columns::kMarginPrefix) + "sliding-friction";
+    if (std::any_of(changes.begin(), changes.end(), [&](const SpecialPoint* s) { return s->test_function == family_end; })) {
+      link->end = TraceEnd::kFamilyEnd;
+      link->message = why;
+      return false;
+    }
     if (options_.follow_past_unswitched) {
       link->end = TraceEnd::kSameTypeOn;
       link->message = fmt::format("no switch ({}); the same type followed on past the change", why);
@@ -344,6 +360,7 @@ const char* ToString(TraceEnd end) {
     case TraceEnd::kResonance: return "resonance";
     case TraceEnd::kNotConfirmed: return "not-confirmed";
     case TraceEnd::kNoAdjacentType: return "no-adjacent-type";
+    case TraceEnd::kFamilyEnd: return "family-end";
     case TraceEnd::kContinuationFailed: return "continuation-failed";
     case TraceEnd::kMaxPoints: return "max-points";
     case TraceEnd::kMaxBranches: break;
@@ -368,7 +385,7 @@ void TraceOptions::Validate() const {
 
 bool TraceResult::Completed() const {
   auto ok = [](TraceEnd e) {
-    return e == TraceEnd::kParameterBound || e == TraceEnd::kLoop || e == TraceEnd::kResonance ||
+    return e == TraceEnd::kParameterBound || e == TraceEnd::kFamilyEnd || e == TraceEnd::kLoop || e == TraceEnd::kResonance ||
            e == TraceEnd::kMaxPoints || e == TraceEnd::kMaxBranches;
   };
   return ok(down.end) && ok(up.end);

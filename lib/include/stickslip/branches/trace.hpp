@@ -16,7 +16,8 @@
 //                        is read from the orbit sampled at amplitude_samples times a period (a lower
 //                        bound of the exact amplitude, until the monitor records it exactly)
 //   not-confirmed        no adjacent type confirmed by simulation (SwitchAt's reasons, per margin)
-//   no-adjacent-type     the margin has none (a tangential end, the family's end u_s = 0)
+//   no-adjacent-type     the margin has none (a tangential end)
+//   family-end           u_s reached 0 (sliding-friction), the end of the physical family
 //   continuation-failed  a branch's start did not converge, or its step fell below ds_min
 //   max-points           a branch reached setup.options.max_points
 //   max-branches         the direction holds max_branches branches
@@ -74,6 +75,7 @@ enum class TraceEnd {
   kResonance,
   kNotConfirmed,
   kNoAdjacentType,
+  kFamilyEnd,
   kContinuationFailed,
   kMaxPoints,
   kMaxBranches,
@@ -113,7 +115,7 @@ struct TraceResult {
   std::string parameter;
   TraceDirection down{-1, {}, TraceEnd::kContinuationFailed, {}};
   TraceDirection up{1, {}, TraceEnd::kContinuationFailed, {}};
-  // Both directions ended at a bound, a loop, a resonance, max-points or max-branches.
+  // Both directions ended at a bound, the family's end, a loop, a resonance, max-points or max-branches.
   bool Completed() const;
   // Some branch failed to converge (continuation-failed).
   bool Failed() const;
