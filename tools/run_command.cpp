@@ -244,7 +244,9 @@ Command AddRunCommand(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Run continuation run files (TOML, see continuation-scripts/) and write results/<output>/: "
-             "branch.csv, special-points.csv, summary.json. The main job.");
+             "branch.csv, special-points.csv, summary.json; or, for a run file with a [trace] table, the trace "
+             "(branch-<k>/, trace.csv, trace.json; exit 6 when a direction ends at a change of type that switched "
+             "nowhere). The main job.");
   cmd->add_option("files", args->files, "run files")->required();
   cmd->add_option("--results", args->results, "results directory")->capture_default_str();
   return {cmd, [args] { return RunRuns(*args); }};
@@ -255,7 +257,8 @@ Command AddCheckCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "check", "Re-run run files and compare their special points (type, order, parameter to a relative "
                "1e-8, solution to 1e-7) and labelled branch points with the stored results; print the "
-               "differences; exit 1 on any.");
+               "differences; exit 1 on any. A trace's run file: the chain (each branch's signature, start and end, "
+               "each direction's end) and every branch.");
   cmd->add_option("files", args->files, "run files")->required();
   cmd->add_option("--results", args->results, "results directory holding the stored runs")->capture_default_str();
   return {cmd, [args] { return RunCheck(*args); }};
