@@ -28,6 +28,9 @@ double Lambda(const Orbit& orbit, const std::string& parameter) {
 }
 
 bool IsMarginChange(const SpecialPoint& s) { return s.test_function.starts_with(orbit_columns::kMarginPrefix); }
+bool IsFamilyEnd(const SpecialPoint* s) {
+  return s->test_function == std::string(orbit_columns::kMarginPrefix) + "sliding-friction";
+}
 
 // The branch ends at its point p (a located special point or a regular one), as the engine ends a
 // branch: the points after it dropped, an EP there.
@@ -259,6 +262,11 @@ class Tracer {
           End(o, TraceEnd::kLoop,
               fmt::format("the {} chain came to its end at {}: the chains met", DirectionName(chain.direction), where));
         }
+      } else if (std::any_of(changes.begin(), changes.end(), IsFamilyEnd)) {
+        // u_s reaching 0 ends the physical family: an end of the trace like a bound, not a failure,
+        // and no type goes past it.
+        link.end = TraceEnd::kFamilyEnd;
+        link.message = fmt::format("u_s reached 0 at {}: the end of the physical family", where);
       } else if (changes.empty()) {
         link.end = TraceEnd::kContinuationFailed;
       } else if (next.past) {
@@ -320,14 +328,6 @@ class Tracer {
       if (!first) first = std::move(sw);
     }
     const std::string why = fmt::format("{}", fmt::join(reasons, "; "));
-    // u_s reaching 0 ends the physical family: an end of the trace like a bound, not a failure, and
-    // no type goes past it.
-    const std::string family_end = std::string(orbit_columns::kMarginPrefix) + "sliding-friction";
-    if (std::any_of(changes.begin(), changes.end(), [&](const SpecialPoint* s) { return s->test_function == family_end; })) {
-      link->end = TraceEnd::kFamilyEnd;
-      link->message = why;
-      return false;
-    }
     if (options_.follow_past_unswitched) {
       link->end = TraceEnd::kSameTypeOn;
       link->message = fmt::format("no switch ({}); the same type followed on past the change", why);
