@@ -24,5 +24,6 @@ Command AddSweepCommand(CLI::App& app);
 Command AddExportCommand(CLI::App& app);
 Command AddFindCommand(CLI::App& app);
 Command AddPlotCommand(CLI::App& app);
+Command AddTraceCommand(CLI::App& app);
 
 }  // namespace stickslip::cli

@@ -12,6 +12,8 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "continue_flags.hpp"
+#include "trace_run.hpp"
 #include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/check.hpp"
@@ -74,7 +76,11 @@ void WriteAndReport(const RunFile& run, const Executed& e, const std::filesystem
 // CheckOutputDirectory, with a refused output placed at the run file's key 'output'.
 void CheckRunOutput(const RunFile& run, const std::filesystem::path& results) {
   try {
-    CheckOutputDirectory(results, run.output);
+    if (run.trace) {
+      CheckTraceOutputDirectory(results, run.output);
+    } else {
+      CheckOutputDirectory(results, run.output);
+    }
   } catch (const InvalidInput& e) {
     if (e.field() != "output") throw;
     throw RunFileError(fmt::format("{}: key 'output' {}", run.Location("output"), e.Predicate()), "output");
@@ -104,6 +110,12 @@ int RunRuns(const RunArgs& args) {
   }
   int code = kExitOk;
   for (const RunFile& run : runs) {
+    if (run.trace) {
+      std::optional<TraceRun> trace = ExecuteTrace(run, args.results);
+      const int traced = trace ? WriteAndReportTrace(run, *trace, args.results) : kExitNoConvergence;
+      if (code == kExitOk) code = traced;
+      continue;
+    }
     std::optional<Executed> e = Execute(run, args.results);
     if (!e) {
       code = kExitNoConvergence;
@@ -119,48 +131,79 @@ struct CheckArgs {
   std::string results = "results";
 };
 
+// Prints the differences of one run (or one branch of a trace) under `name`; true if none.
+bool ReportDifferences(const std::string& name, const std::vector<Difference>& differences, std::size_t special) {
+  if (differences.empty()) {
+    fmt::print("check {}: ok ({} special points)\n", name, special);
+    return true;
+  }
+  fmt::print("check {}: {} difference(s)\n{:<20} {:<10} {:<24} {:>24} {:>24}\n", name, differences.size(), "file",
+             "point", "column", "stored", "fresh");
+  for (const Difference& d : differences) {
+    fmt::print("{:<20} {:<10} {:<24} {:>24} {:>24}\n", d.file, d.row, d.column, d.stored, d.fresh);
+  }
+  return false;
+}
+
+// A trace against its stored files: the same chain (each branch's signature, start and end, each
+// direction's end), and every branch as `check` compares a run.
+bool CheckTrace(const RunFile& run, const StoredTrace& stored, const TraceRun& fresh) {
+  std::vector<Difference> chain;
+  auto compare = [&](const std::string& row, const std::string& column, const std::string& a, const std::string& b) {
+    if (a != b) chain.push_back({"trace.json", row, column, a, b});
+  };
+  for (std::size_t k = 0; k < 2; ++k) {
+    compare(stored.directions[k].direction, "end", stored.directions[k].end, fresh.stored.directions[k].end);
+  }
+  compare("trace", "branches", std::to_string(stored.branches.size()), std::to_string(fresh.stored.branches.size()));
+  bool ok = true;
+  for (std::size_t k = 0; k < std::min(stored.branches.size(), fresh.stored.branches.size()); ++k) {
+    const StoredTraceBranch& a = stored.branches[k];
+    const StoredTraceBranch& b = fresh.stored.branches[k];
+    compare(a.name, "signature", a.signature, b.signature);
+    compare(a.name, "start", a.start, b.start);
+    compare(a.name, "end", a.end, b.end);
+    if (a.signature != b.signature) continue;
+    ok = ReportDifferences(run.output + "/" + a.name, CompareWithStored(fresh.stored.runs[k], stored.runs[k]),
+                           fresh.stored.runs[k].special_points.size()) && ok;
+  }
+  return ReportDifferences(run.output + "/trace.json", chain, 0) && ok;
+}
+
 int RunCheck(const CheckArgs& args) {
   // Every run file and stored run is read first: a missing one fails before anything is computed.
-  std::vector<std::pair<RunFile, StoredRun>> checks;
+  struct Stored {
+    RunFile run;
+    std::optional<StoredRun> branch;
+    std::optional<StoredTrace> trace;
+  };
+  std::vector<Stored> checks;
   for (const std::string& path : args.files) {
     RunFile run = ReadRunFile(path);
-    StoredRun stored = ReadRunFiles(std::filesystem::path(args.results) / run.output);
-    checks.emplace_back(std::move(run), std::move(stored));
+    const std::filesystem::path directory = std::filesystem::path(args.results) / run.output;
+    if (run.trace) {
+      StoredTrace trace = ReadTraceFiles(directory);
+      checks.push_back({std::move(run), std::nullopt, std::move(trace)});
+    } else {
+      StoredRun stored = ReadRunFiles(directory);
+      checks.push_back({std::move(run), std::move(stored), std::nullopt});
+    }
   }
   int code = kExitOk;
-  for (const auto& [run, stored] : checks) {
-    std::optional<Executed> e = Execute(run, args.results);
-    if (!e) return kExitNoConvergence;
-    const std::vector<Difference> differences = CompareWithStored(e->stored, stored);
-    if (differences.empty()) {
-      fmt::print("check {}: ok ({} special points)\n", run.output, e->branch.branch.special_points.size());
+  for (const Stored& c : checks) {
+    if (c.trace) {
+      std::optional<TraceRun> fresh = ExecuteTrace(c.run, args.results);
+      if (!fresh) return kExitNoConvergence;
+      if (!CheckTrace(c.run, *c.trace, *fresh)) code = kExitFailure;
       continue;
     }
-    code = kExitFailure;
-    fmt::print("check {}: {} difference(s)\n{:<20} {:<10} {:<24} {:>24} {:>24}\n", run.output, differences.size(),
-               "file", "point", "column", "stored", "fresh");
-    for (const Difference& d : differences) {
-      fmt::print("{:<20} {:<10} {:<24} {:>24} {:>24}\n", d.file, d.row, d.column, d.stored, d.fresh);
+    std::optional<Executed> e = Execute(c.run, args.results);
+    if (!e) return kExitNoConvergence;
+    if (!ReportDifferences(c.run.output, CompareWithStored(e->stored, *c.branch), e->branch.branch.special_points.size())) {
+      code = kExitFailure;
     }
   }
   return code;
-}
-
-struct ContinueArgs {
-  StartFlags start;
-  RunFile run;
-  std::string range;
-  std::string direction = "up";
-  std::vector<std::string> user_values;  // NAME=VALUE
-  std::string detect_folds = "true";
-  std::string detect_branch_points = "true";
-  bool linear_solver_given = false;  // refused with --shooting single, where it would be ignored
-};
-
-// "true" or "false", as the run file's booleans.
-bool ParseSwitch(const char* field, const std::string& text) {
-  if (text != "true" && text != "false") throw InvalidInput(field, "'" + text + "'", "true, false");
-  return text == "true";
 }
 
 // The run's directions and outputs: one run, or with --direction both the two runs
@@ -176,22 +219,7 @@ std::vector<std::pair<int, std::string>> Directions(const ContinueArgs& args) {
 
 int RunContinue(ContinueArgs args) {
   RunFile& run = args.run;
-  run.path = kOneOffRunPath;
-  SetRunFileStart(ToStartInput(args.start), &run);
-  const auto comma = args.range.find(',');
-  if (comma == std::string::npos) throw InvalidInput("range", "'" + args.range + "'", "MIN,MAX");
-  run.range_min = ParseNumber("range", args.range.substr(0, comma), "MIN,MAX with MIN < MAX");
-  run.range_max = ParseNumber("range", args.range.substr(comma + 1), "MIN,MAX with MIN < MAX");
-  CheckOneOffRun(run, args.range);
-  CheckLinearSolverIsUsed(args.linear_solver_given ? run.linear_solver : "", run.shooting);
-  for (const std::string& text : args.user_values) {
-    const auto equals = text.find('=');
-    if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");
-    const std::string name = text.substr(0, equals);
-    run.user_values.emplace_back(name, ParseNumber("user-value", text.substr(equals + 1), "a finite number"));
-  }
-  run.detect_folds = ParseSwitch("detect-folds", args.detect_folds);
-  run.detect_branch_points = ParseSwitch("detect-branch-points", args.detect_branch_points);
+  BuildOneOffRun(&args);
   // Every output is checked before anything is computed.
   const std::vector<std::pair<int, std::string>> directions = Directions(args);
   for (const auto& [direction, output] : directions) CheckOutputDirectory(args.start.results, output);
@@ -216,7 +244,9 @@ Command AddRunCommand(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Run continuation run files (TOML, see continuation-scripts/) and write results/<output>/: "
-             "branch.csv, special-points.csv, summary.json. The main job.");
+             "branch.csv, special-points.csv, summary.json; or, for a run file with a [trace] table, the trace "
+             "(branch-<k>/, trace.csv, trace.json; exit 6 when a direction ends at a change of type that switched "
+             "nowhere). The main job.");
   cmd->add_option("files", args->files, "run files")->required();
   cmd->add_option("--results", args->results, "results directory")->capture_default_str();
   return {cmd, [args] { return RunRuns(*args); }};
@@ -227,7 +257,8 @@ Command AddCheckCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "check", "Re-run run files and compare their special points (type, order, parameter to a relative "
                "1e-8, solution to 1e-7) and labelled branch points with the stored results; print the "
-               "differences; exit 1 on any.");
+               "differences; exit 1 on any. A trace's run file: the chain (each branch's signature, start and end, "
+               "each direction's end) and every branch.");
   cmd->add_option("files", args->files, "run files")->required();
   cmd->add_option("--results", args->results, "results directory holding the stored runs")->capture_default_str();
   return {cmd, [args] { return RunCheck(*args); }};
@@ -236,42 +267,14 @@ Command AddCheckCommand(CLI::App& app) {
 Command AddContinueCommand(CLI::App& app) {
   auto args = std::make_shared<ContinueArgs>();
   CLI::App* cmd = app.add_subcommand("continue", "A one-off continuation run from flags (the keys of a run file).");
-  AddStartOptions(*cmd, &args->start, StartOptions::kOrbit);
-  cmd->add_option("--parameter", args->run.parameter, "continued variable (omega, u_r, u_s, chi, eta, ...)")->required();
+  AddContinuationFlags(*cmd, args.get());
   cmd->add_option("--direction", args->direction,
                   "up, down, or both: two runs from the one start, written to results/<output>-down and "
                   "results/<output>-up (each a run of its own, to restart from, check and export)")
       ->type_name("up|down|both")
       ->capture_default_str();
-  cmd->add_option("--range", args->range, "MIN,MAX of the parameter")->type_name("MIN,MAX")->required();
-  AddNumberOption(*cmd, "--ds", &args->run.ds, "0 < ds-min <= ds <= ds-max", "initial arclength step (> 0)");
-  AddNumberOption(*cmd, "--ds-min", &args->run.ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)");
-  AddNumberOption(*cmd, "--ds-max", &args->run.ds_max, "0 < ds-min <= ds <= ds-max", "largest step");
-  AddCountOption(*cmd, "--max-points", &args->run.max_points, 1, kMaxRunPoints, "accepted points (1 to 1e6)");
-  cmd->add_option("--user-value", args->user_values,
-                  "report a UZ point where the variable NAME (the parameter or another unknown) passes VALUE; "
-                  "repeatable (the run file's user_values and user_values_of)")
-      ->type_name("NAME=VALUE");
-  cmd->add_option("--shooting", args->run.shooting,
-                  "single (dense), multiple (block-sparse), or auto (single up to 6 listed segments)")
-      ->check(CLI::IsMember({"auto", "single", "multiple"}))
-      ->capture_default_str();
-  cmd->add_option("--linear-solver", args->run.linear_solver,
-                  "sparse solver for multiple shooting (with --shooting multiple or auto; refused with single)")
-      ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
-      ->capture_default_str()
-      ->each([args](const std::string&) { args->linear_solver_given = true; });
-  cmd->add_option("--detect-folds", args->detect_folds, "locate folds (LP): true or false")
-      ->type_name("true|false")
-      ->capture_default_str();
-  cmd->add_option("--detect-branch-points", args->detect_branch_points, "locate branch points (BP): true or false")
-      ->type_name("true|false")
-      ->capture_default_str();
   cmd->add_flag("--continue-past-type-changes", args->run.continue_past_type_changes,
                 "go on past orbit-type changes, flagging the points beyond inadmissible");
-  cmd->add_option("--output", args->run.output, "results/<output>/")->required();
-  cmd->add_option("--results", args->start.results, "results directory: where --point is read and <output>/ written")
-      ->capture_default_str();
   return {cmd, [args] { return RunContinue(*args); }};
 }
 

@@ -18,10 +18,11 @@ int main(int argc, char** argv) {
       "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276.\n"
       "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence, 4 solve, find: the "
       "solution is not a motion of the system (a margin <= 0) or failed its verification, 5 find: the motion "
-      "is not periodic within k <= --max-multiple forcing periods (or has no stop or stick exit).",
+      "is not periodic within k <= --max-multiple forcing periods (or has no stop or stick exit), 6 trace: a "
+      "direction ended at a change of type that switched nowhere (the trace is written).",
       "stickslip");
   app.require_subcommand(1);
-  const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddCheckCommand(app),
+  const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app),
                                          AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
   try {
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, check, solve, simulate, sweep, export, find, plot", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, export, find, plot", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

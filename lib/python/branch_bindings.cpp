@@ -103,7 +103,15 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
 }
 
 RunInput RunFileInput(const std::string& path, const std::string& results) {
-  return RunInput{ReadRunFile(path), results};
+  RunFile run = ReadRunFile(path);
+  // A trace is not one branch: refused rather than continued as one (traces are not bound yet).
+  if (run.trace) {
+    throw RunFileError(fmt::format("{}: [trace] is invalid here: valid a run file of one branch (run a trace with "
+                                   "`stickslip run` or `stickslip trace`)",
+                                   run.path),
+                       "trace");
+  }
+  return RunInput{std::move(run), results};
 }
 
 // A start that did not converge ends nothing: it raises, as the command line exits 3.

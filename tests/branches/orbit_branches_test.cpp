@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 std::vector<std::string> RunFiles() {
   std::vector<std::string> files;
   for (const auto& entry : fs::directory_iterator(fs::path(STICKSLIP_SOURCE_DIR) / "continuation-scripts")) {
-    if (entry.path().extension() == ".toml") files.push_back(entry.path().string());
+    // A trace's run file (a [trace] table) is tested as a trace (trace_test.cpp).
+    if (entry.path().extension() == ".toml" && !ReadRunFile(entry.path()).trace) files.push_back(entry.path().string());
   }
   std::sort(files.begin(), files.end());
   return files;

@@ -77,7 +77,8 @@ std::string NotConfirmed(const Orbit& past, const AdjacentType& adjacent, const 
 }
 
 TypeSwitch Confirmed(const LocatedTypeChange& located, const AdjacentType& adjacent, const Orbit& start,
-                     const Orbit& past, const std::string& side, const UnknownChoice& unknowns, double lambda) {
+                     const Orbit& past, const std::string& side, const UnknownChoice& unknowns, double lambda,
+                     bool singular_start) {
   const ParameterId parameter = ParameterIdOf(located.parameter);
   const int direction = past.parameters[parameter] > lambda ? 1 : -1;
   return {.status = TypeSwitchStatus::kConfirmed,
@@ -88,6 +89,7 @@ TypeSwitch Confirmed(const LocatedTypeChange& located, const AdjacentType& adjac
           .past = past,
           .direction = direction,
           .persists = direction == located.past,
+          .singular_start = singular_start,
           .unknowns = unknowns};
 }
 
@@ -234,7 +236,7 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
       for (const auto& [past, side] : tries) {
         const std::string why =
             past.summary.Converged() ? NotConfirmed(past.orbit, adjacent, options) : "no convergence on the new type";
-        if (why.empty()) return Confirmed(located, adjacent, start.orbit, past.orbit, side, unknowns, lambda);
+        if (why.empty()) return Confirmed(located, adjacent, start.orbit, past.orbit, side, unknowns, lambda, false);
         reasons.push_back(fmt::format("{} {}: {}", name, side, why));
       }
       // Where the new segment's length grows as a root of the parameter step (a grazing, where the
@@ -258,7 +260,7 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
         const std::string side = fmt::format("with the new segment's duration given ({:g} of the period)", fraction);
         const std::string why =
             given.summary.Converged() ? NotConfirmed(given.orbit, adjacent, options) : "no convergence on the new type";
-        if (why.empty()) return Confirmed(located, adjacent, start.orbit, given.orbit, side, unknowns, lambda);
+        if (why.empty()) return Confirmed(located, adjacent, start.orbit, given.orbit, side, unknowns, lambda, true);
         reasons.push_back(fmt::format("{} {}: {}", name, side, why));
       }
     } catch (const InvalidInput& e) {

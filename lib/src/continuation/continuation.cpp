@@ -21,6 +21,7 @@ const char* ToString(BranchEnd end) {
     case BranchEnd::kTerminalEvent: return "terminal-event";
     case BranchEnd::kStartFailed: return "start-failed";
     case BranchEnd::kFoldAtStart: return "fold-at-start";
+    case BranchEnd::kStopped: return "stopped";
     case BranchEnd::kClosedLoop: break;
   }
   return "closed-loop";

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "csv_table.hpp"
+#include "result_directory.hpp"
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
@@ -28,6 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace ov = orbit_variables;
 using detail::CsvTable;
+using detail::KeyError;
+using detail::ReadTextFile;
 // Keys stay in the order they are written in.
 using Json = nlohmann::ordered_json;
 
@@ -106,10 +109,6 @@ std::string FormatSummary(const StoredRun& run) {
 
 // ---- Reading
 
-InvalidInput KeyError(const fs::path& file, const std::string& key, const std::string& what) {
-  return InvalidInput::WithMessage(key, fmt::format("{}: key '{}' {}", file.string(), key, what));
-}
-
 // summary.json as written by FormatSummary, with its counts.
 struct Summary {
   StoredSummary fields;
@@ -125,19 +124,7 @@ std::size_t Count(const Json& value, const fs::path& file, const std::string& ke
 }
 
 Summary ParseSummary(const std::string& text, const fs::path& file) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...".
-    const std::string what = e.what();
-    const auto start = what.find("] ");
-    throw InvalidInput::WithMessage(file.string(), fmt::format("{}: invalid JSON: {}", file.string(),
-                                                               start == std::string::npos ? what : what.substr(start + 2)));
-  }
-  if (!json.is_object()) {
-    throw InvalidInput::WithMessage(file.string(), fmt::format("{}: is invalid: valid a JSON object", file.string()));
-  }
+  const Json json = detail::ParseJsonObject(text, file);
   Summary summary;
   std::vector<std::string> known = {kPointsKey, kSpecialPointsKey};
   auto required = [&](const std::string& key) -> const Json& {
@@ -245,16 +232,6 @@ std::string DescribeCounts(const std::map<std::string, std::size_t>& counts) {
   return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, ", "));
 }
 
-std::string ReadTextFile(const fs::path& path) {
-  std::error_code ignored;
-  std::ifstream in(path, std::ios::binary);
-  if (!fs::is_regular_file(path, ignored) || !in) {
-    throw InvalidInput::WithMessage(path.string(), fmt::format("cannot read '{}'", path.string()));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // Whether `directory` can be created, found by creating what is missing of it and removing that
 // again; the error of the first directory that could not be.
@@ -406,44 +383,17 @@ std::vector<std::string> WriteRunFiles(const fs::path& results_root, const Store
   const RunFiles files = FormatRunFiles(run);
   const std::string& output = run.summary.output;
   CheckOutputDirectory(results_root, output);
-  fs::create_directories(results_root);
-  const fs::path target = results_root / output;
-  const fs::path temporary = results_root / fmt::format(".{}.tmp.{}", output, static_cast<long>(::getpid()));
-  const fs::path old = results_root / fmt::format(".{}.old.{}", output, static_cast<long>(::getpid()));
   constexpr std::array<const char*, 3> kResultFiles = {kBranchFile, kSpecialPointsFile, kSummaryFile};
-  std::error_code ignored;
-  fs::remove_all(temporary, ignored);
-  fs::create_directories(temporary);
-  std::vector<std::string> kept;
-  try {
-    WriteFileAtomically(temporary / kBranchFile, files.branch_csv);
-    WriteFileAtomically(temporary / kSpecialPointsFile, files.special_points_csv);
-    WriteFileAtomically(temporary / kSummaryFile, files.summary_json);
-    if (fs::exists(target)) {
-      // Listed first: POSIX leaves open what a directory listing shows of entries moved during it.
-      std::vector<std::string> others;
-      for (const fs::directory_entry& entry : fs::directory_iterator(target)) {
-        const std::string name = entry.path().filename().string();
-        if (std::find(kResultFiles.begin(), kResultFiles.end(), name) == kResultFiles.end()) others.push_back(name);
-      }
-      for (const std::string& name : others) {
-        fs::rename(target / name, temporary / name);
-        kept.push_back(name);
-      }
-      fs::rename(target, old);
-    }
-    fs::rename(temporary, target);
-  } catch (...) {
-    if (!fs::exists(target) && fs::exists(old)) fs::rename(old, target, ignored);
-    for (const std::string& name : kept) fs::rename(temporary / name, target / name, ignored);
-    // Not remove_all: a file of the user's that could not be moved back stays where it is.
-    for (const char* name : kResultFiles) fs::remove(temporary / name, ignored);
-    fs::remove(temporary, ignored);
-    throw;
-  }
-  fs::remove_all(old, ignored);
-  std::sort(kept.begin(), kept.end());
-  return kept;
+  return detail::ReplaceDirectory(
+      results_root, output,
+      [&](const fs::path& directory) {
+        WriteFileAtomically(directory / kBranchFile, files.branch_csv);
+        WriteFileAtomically(directory / kSpecialPointsFile, files.special_points_csv);
+        WriteFileAtomically(directory / kSummaryFile, files.summary_json);
+      },
+      [&](const std::string& name) {
+        return std::find(kResultFiles.begin(), kResultFiles.end(), name) != kResultFiles.end();
+      });
 }
 
 StoredRun ReadRunFiles(const fs::path& run_directory) {

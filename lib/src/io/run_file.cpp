@@ -287,12 +287,19 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   const toml::table* continuation = top.Table("continuation", true);
   TableReader c(*continuation, "continuation.", path, &run);
   c.String("parameter", &run.parameter, true);
+  // A trace goes both ways from its start: its direction is "both" or left out.
+  const toml::table* trace = top.Table("trace", false);
   std::string direction;
-  c.String("direction", &direction, true);
-  if (direction != "up" && direction != "down") {
+  c.String("direction", &direction, trace == nullptr);
+  if (trace != nullptr && c.Get("direction") && direction != "both") {
+    c.Fail(*c.Get("direction"), "direction",
+           fmt::format("= '{}' is invalid with a [trace] table: valid \"both\" or left out (a trace goes both ways)",
+                       direction));
+  }
+  if (trace == nullptr && direction != "up" && direction != "down") {
     c.Fail(*c.Get("direction"), "direction", fmt::format("= '{}' is invalid: valid \"up\" or \"down\"", direction));
   }
-  run.direction = direction == "up" ? 1 : -1;
+  run.direction = direction == "down" ? -1 : 1;
   std::vector<double> range;
   c.Numbers("range", &range);
   if (!c.Get("range")) c.Missing("range", "give [min, max]");
@@ -343,7 +350,33 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
            fmt::format("= '{}' is invalid with shooting = \"single\": valid only with shooting \"multiple\" or \"auto\"",
                        run.linear_solver));
   }
+  if (trace != nullptr && run.continue_past_type_changes) {
+    c.Fail(*c.Get("continue_past_type_changes"), "continue_past_type_changes",
+           "= true is invalid with a [trace] table: valid false (a trace switches at every change of type; "
+           "trace.follow_past_unswitched follows a type past one)");
+  }
   c.RejectUnknown();
+  if (trace != nullptr) {
+    TableReader t(*trace, "trace.", path, &run);
+    TraceOptions options;
+    if (const toml::node* n = t.Get("max_branches")) {
+      if (!n->is_integer() || n->as_integer()->get() < 1 || n->as_integer()->get() > kMaxTraceBranches) {
+        t.Fail(*n, "max_branches", fmt::format("is invalid: valid {}", WholeNumberRange("max_branches", 1, kMaxTraceBranches)));
+      }
+      options.max_branches = static_cast<int>(n->as_integer()->get());
+    }
+    t.Number("max_amplitude", &options.max_amplitude);
+    t.Number("loop_tolerance", &options.loop_tolerance);
+    t.Boolean("follow_past_unswitched", &options.follow_past_unswitched);
+    try {
+      options.ValidateOwnFields();
+    } catch (const InvalidInput& e) {
+      if (const toml::node* n = t.Get(e.field())) t.Fail(*n, e.field(), e.Predicate());
+      throw;
+    }
+    t.RejectUnknown();
+    run.trace = options;
+  }
   top.RejectUnknown();
   return run;
 }

@@ -80,6 +80,10 @@ struct TypeSwitch {
   std::optional<Orbit> past;  // on the adjacent type at the nudged parameter, confirmed by simulation
   int direction = 0;          // +1 or -1: the parameter's direction on the new branch
   bool persists = false;      // direction == LocatedTypeChange::past; else a nonsmooth fold
+  // The new segment's length grows as a root of the parameter step (the switch was found with that
+  // length given): the new type's Jacobian is singular at `start`, so its branch starts from `past`.
+  bool singular_start = false;
+  const Orbit& BranchStart() const { return singular_start ? *past : *start; }  // where confirmed
   UnknownChoice unknowns;     // the located unknowns renamed for the adjacent signature
 };
 

@@ -134,6 +134,7 @@ enum class BranchEnd {
   kStartFailed,
   kFoldAtStart,  // the start is a fold and the branch runs only against the asked direction
   kClosedLoop,   // the branch came back to its start (ClosedLoopOptions): a closed branch
+  kStopped,      // ended by its caller between two steps (a trace at a resonance: branches/trace.hpp)
 };
 const char* ToString(BranchEnd end);
 

@@ -20,15 +20,22 @@
 //   ds = 0.01                          # optional: ds_min, ds_max, max_points, shooting,
 //   user_values = [0.6]                # linear_solver, detect_folds, detect_branch_points,
 //                                      # continue_past_type_changes, user_values_of
+//   [trace]                            # optional: a trace (branches/trace.hpp) instead of one
+//   max_branches = 50                  # branch; then direction is "both" or left out, and
+//   max_amplitude = 1e3                # continue_past_type_changes is refused. Keys left out
+//   loop_tolerance = 1e-7              # take TraceOptions' defaults.
+//   follow_past_unswitched = false
 #pragma once
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "stickslip/branches/trace.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/named_values.hpp"
@@ -82,6 +89,8 @@ struct RunFile {
   bool detect_branch_points = ContinuationOptions{}.detect_branch_points;
   bool continue_past_type_changes = ContinuationOptions{}.continue_past_terminal;
   NamedValues user_values;  // (variable, value); the continuation parameter's from user_values
+  // [trace]: present for a trace, with its keys (the rest of TraceOptions at its defaults).
+  std::optional<TraceOptions> trace;
 };
 
 // A run's name is the folder of its results under the results root: one path component, so

@@ -1,0 +1,132 @@
+// A trace: the chain of orbit branches through the changes of orbit type, from one start in both
+// directions of the continued parameter (as AUTO-07p's users chain runs with ch("IRS", ...); run(),
+// and BifurcationKit's branch switching, automatically). Each branch ends as ContinueOrbit ends it:
+// at a change of type (a margin leaving its admissible side). There SwitchAt (type_switch.hpp) tries
+// the adjacent types of every margin located at that end, and the next branch starts on the first
+// confirmed one, from its start (the located orbit on the new type) or, where that start is
+// singular (a grazing), from the confirmed orbit past the boundary, in the direction the switch
+// gives. A direction ends (TraceEnd):
+//   parameter-bound      the branch reached the range bound (setup.options.lambda_min/max)
+//   loop                 the chain came back to a point it visited: a branch ended where an earlier
+//                        branch (of either direction) began or ended, with the same signature, the
+//                        parameter and the orbit within loop_tolerance; where that is the other
+//                        direction's last end, the chains met and both end so. A branch that closes
+//                        on itself (BranchEnd::kClosedLoop) is a loop too
+//   resonance            the amplitude, max |x1| and |x2| over the orbit, passed max_amplitude. It
+//                        is read from the orbit sampled at amplitude_samples times a period (a lower
+//                        bound of the exact amplitude, until the monitor records it exactly)
+//   not-confirmed        no adjacent type confirmed by simulation (SwitchAt's reasons, per margin)
+//   no-adjacent-type     the margin has none (a tangential end)
+//   family-end           u_s reached 0 (sliding-friction), the end of the physical family
+//   continuation-failed  a branch's start did not converge, or its step fell below ds_min
+//   max-points           a branch reached setup.options.max_points
+//   max-branches         the direction holds max_branches branches
+// With follow_past_unswitched, a change of type with no confirmed switch does not end the direction:
+// the same type is followed on past it (its points are not a motion: admissible = 0), up to the next
+// located sign change of a margin, where the next branch starts: a regular one where the orbit is
+// admissible again, else the same type on. The §5.1 family over omega, whose changes of type switch
+// nowhere, is traced so round its loop.
+//
+//   OrbitContinuationSetup setup = MakeSetup(ReadRunFile("continuation-scripts/paper-4.1-omega-down.toml"), "results");
+//   const TraceResult trace = TraceOrbits(setup, {});
+//   for (const TraceLink& link : trace.down.links) use(link.branch, link.signature);
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/branches/type_switch.hpp"
+#include "stickslip/progress.hpp"
+
+namespace stickslip {
+
+struct TraceOptions {
+  int max_branches = 50;        // per direction, 1 to kMaxTraceBranches
+  double max_amplitude = 1e3;   // a resonance: max |x1|, |x2| over an orbit above this (> 0)
+  int amplitude_samples = 64;   // times a period the amplitude is read at, 2 to 1e5
+  // Two points are one (a loop) when their signatures agree and the parameter (relative to
+  // 1 + |lambda|), the start state, the phase and the period (OrbitDistance) differ by at most this.
+  double loop_tolerance = 1e-7;
+  // Follow the same type on past a change of type that switches nowhere (see above), instead of
+  // ending the direction there.
+  bool follow_past_unswitched = false;
+  TypeSwitchOptions type_switch;  // at every change of type
+  // Called after every accepted point of every branch: done = the points so far, total =
+  // 2 max_branches max_points (an upper bound), unit "points", value = lambda. Empty: no reports.
+  ProgressCallback progress = {};
+
+  // Throws InvalidInput naming the first field out of its valid range.
+  void Validate() const;
+  // The trace's own fields only (not type_switch), for the run-file reader; in trace_options.cpp.
+  void ValidateOwnFields() const;
+};
+
+// The most branches a direction may hold, however the bound is given.
+inline constexpr int kMaxTraceBranches = 10000;
+
+enum class TraceEnd {
+  kSwitched,        // (a branch's end) a switch was confirmed: the next branch starts on the new type
+  kSameTypeOn,      // (a branch's end) the next branch is of the same type: followed on past a change
+                    // that switched nowhere, or on from where it is admissible again
+  kParameterBound,
+  kLoop,
+  kResonance,
+  kNotConfirmed,
+  kNoAdjacentType,
+  kFamilyEnd,
+  kContinuationFailed,
+  kMaxPoints,
+  kMaxBranches,
+};
+const char* ToString(TraceEnd end);
+
+// How a branch of the chain began.
+enum class LinkStart {
+  kTraceStart,     // the trace's start
+  kSwitch,         // a confirmed switch at the previous branch's end
+  kFollowedPast,   // the same type followed past a change that switched nowhere
+  kAdmissibleAgain,  // the same type, where its orbit is admissible again after a stretch followed past
+};
+const char* ToString(LinkStart start);
+
+struct TraceLink {
+  OrbitBranch branch;
+  std::string signature;  // Signature::ToString of the branch's orbits
+  int direction = 1;      // the parameter's way at the branch's start: +1 up, -1 down
+  LinkStart start = LinkStart::kTraceStart;
+  std::string margin;     // the previous branch's margin that the switch (or the following) was at
+  // kSwitch: the confirmed switch (margin, adjacent kind, persists or a nonsmooth fold, start and
+  // past orbits); kFollowedPast: the one that confirmed nothing.
+  std::optional<TypeSwitch> type_switch;
+  TraceEnd end = TraceEnd::kContinuationFailed;  // how the branch ended, in the trace's terms
+  std::string message;
+};
+
+struct TraceDirection {
+  int direction = 1;               // -1 down, +1 up
+  std::vector<TraceLink> links;    // in chain order; empty only if the first start failed
+  TraceEnd end = TraceEnd::kContinuationFailed;
+  std::string message;
+};
+
+struct TraceResult {
+  std::string parameter;
+  TraceDirection down{-1, {}, TraceEnd::kContinuationFailed, {}};
+  TraceDirection up{1, {}, TraceEnd::kContinuationFailed, {}};
+  // Both directions ended at a bound, the family's end, a loop, a resonance, max-points or max-branches.
+  bool Completed() const;
+  // Some branch failed to converge (continuation-failed).
+  bool Failed() const;
+};
+
+// The trace from `start` (its orbit, unknowns, parameter and shooting, and the options of every
+// branch: setup.options, whose lambda_min and lambda_max bound the whole trace and whose direction
+// is not used, since the trace goes both ways; its user values apply to the branches of the start's
+// signature only, whose unknowns they address). Throws InvalidInput for invalid options (also
+// continue_past_terminal set: the trace decides at every change of type), as ContinueOrbit does for
+// an invalid setup.
+TraceResult TraceOrbits(const OrbitContinuationSetup& start, const TraceOptions& options = {});
+
+}  // namespace stickslip

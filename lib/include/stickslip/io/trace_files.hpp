@@ -1,0 +1,114 @@
+// The result files of a trace (branches/trace.hpp), results/<output>/, and their one writer and one
+// reader:
+//   branch-<k>/   one ordinary run directory per branch of the chain (result_files.hpp: branch.csv,
+//                 special-points.csv, summary.json with output "branch-<k>"), k = 1, 2, ...: the
+//                 down chain first, then the up chain, each in chain order. `check`, a restart
+//                 (--results results/<output> --point branch-<k>:LABEL) and `export --auto` work
+//                 on each as on any run.
+//   trace.csv     one row per point of every branch: branch (k), signature, pt, label, the
+//                 continued parameter, phi, period, x10, x20, v10, stable, admissible
+//   trace.json    the run file, version, output, parameter and start signature; per direction its
+//                 end, message and branches (their k); per branch its name, direction, signature,
+//                 points, how it began (start, margin, and for a switch the bifurcation, the edit,
+//                 the adjacent signature, persists or a nonsmooth fold, from the orbit past the
+//                 boundary), its end and message
+// Numbers in shortest round-trip form, no time or host: the same trace gives the same bytes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "stickslip/io/stored_run.hpp"
+
+namespace stickslip {
+
+struct TraceResult;
+
+// How a branch of a stored trace began at a confirmed switch (or, followed past, at one that
+// confirmed nothing: bifurcation empty).
+struct StoredSwitch {
+  std::string status;       // ToString(TypeSwitchStatus)
+  std::string bifurcation;  // "crossing-sliding", ...; "" when not confirmed
+  std::string edit;         // ToString(TypeEdit); "" when not confirmed
+  std::string adjacent;     // the new signature; "" when not confirmed
+  bool persists = false;    // else a nonsmooth fold (the new branch turns back)
+  bool from_past = false;   // the branch starts from the orbit past the boundary (a singular start)
+};
+
+struct StoredTraceBranch {
+  std::string name;       // "branch-<k>", its directory
+  std::string chain;      // "down" or "up": the chain it belongs to
+  std::string direction;  // "down" or "up": the parameter's way at its start
+  std::string signature;
+  std::size_t points = 0;
+  std::string start;      // ToString(LinkStart)
+  std::string margin;     // the previous branch's margin it began at ("" for the trace's start)
+  bool has_switch = false;
+  StoredSwitch type_switch;  // when has_switch
+  std::string end;        // ToString(TraceEnd)
+  std::string message;
+};
+
+struct StoredTraceDirection {
+  std::string direction;  // "down" or "up"
+  std::string end;        // ToString(TraceEnd)
+  std::string message;
+  std::vector<std::size_t> branches;  // 1-based k of its branches, in chain order
+};
+
+// One row of trace.csv.
+struct StoredTracePoint {
+  std::size_t branch = 0;  // k
+  std::string signature;
+  int pt = 0;
+  std::string label;
+  double lambda = 0.0;
+  double phi = 0.0;
+  double period = 0.0;
+  double x10 = 0.0;
+  double x20 = 0.0;
+  double v10 = 0.0;
+  bool stable = false;
+  bool admissible = false;
+};
+
+struct StoredTrace {
+  std::string run_file;
+  std::string stickslip_version;
+  std::string output;
+  std::string parameter;
+  std::string signature;  // the start's
+  std::vector<StoredTraceDirection> directions;  // down, then up
+  std::vector<StoredTraceBranch> branches;       // branch-1, branch-2, ...
+  std::vector<StoredRun> runs;                   // one per branch, its directory's files
+  std::vector<StoredTracePoint> points;          // trace.csv
+};
+
+// The stored form of a trace just computed from `run`.
+StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace);
+
+struct TraceFiles {
+  std::string trace_csv;
+  std::string trace_json;
+};
+TraceFiles FormatTraceFiles(const StoredTrace& trace);
+
+// Throws InvalidInput as CheckOutputDirectory (result_files.hpp), except that a directory holding
+// a trace (its trace.json reads as one) may be replaced too.
+void CheckTraceOutputDirectory(const std::filesystem::path& results_root, const std::string& output);
+
+// Writes results_root/<trace.output>/ as a whole (into a temporary directory first, which then
+// replaces the old one); other files of the old directory move into the new one, and their names are
+// returned, sorted.
+std::vector<std::string> WriteTraceFiles(const std::filesystem::path& results_root, const StoredTrace& trace);
+
+// Reads results_root/<output>/: trace.json, trace.csv and every branch's directory. Throws
+// InvalidInput naming the file and the key, line or column of the first problem (also counts that
+// differ between the files).
+StoredTrace ReadTraceFiles(const std::filesystem::path& trace_directory);
+
+// Whether `directory` holds a trace (a trace.json), for the front ends that take a run or a trace.
+bool IsTraceDirectory(const std::filesystem::path& directory);
+
+}  // namespace stickslip

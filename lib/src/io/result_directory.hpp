@@ -1,0 +1,36 @@
+// Internal to io/: what the writers and readers of result directories share (result_files.cpp for
+// a run, trace_files.cpp for a trace): reading a file whole, JSON read with messages naming the file
+// and the key, and a directory replaced as a whole.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stickslip/invalid_input.hpp"
+
+namespace stickslip::detail {
+
+// The whole file; InvalidInput "cannot read '<path>'" if it is no readable regular file.
+std::string ReadTextFile(const std::filesystem::path& path);
+
+// "<file>: key '<key>' <what>", naming the key as the field.
+InvalidInput KeyError(const std::filesystem::path& file, const std::string& key, const std::string& what);
+
+// The JSON text, keys in their order; InvalidInput "<file>: invalid JSON: ..." naming the line and
+// column, or "<file>: is invalid: valid a JSON object" for any other value.
+nlohmann::ordered_json ParseJsonObject(const std::string& text, const std::filesystem::path& file);
+
+// Writes results_root/<output>/ as a whole: `write` fills a temporary directory beside it, which
+// then replaces the old one. Every entry of the old directory for which `ours` is false (a file of
+// the user's, an export) moves into the new one first; their names are returned, sorted. On a
+// failure the old directory stays as it was, and of the temporary one only `ours` entries are
+// removed (a file of the user's that could not be moved back stays where it is).
+std::vector<std::string> ReplaceDirectory(const std::filesystem::path& results_root, const std::string& output,
+                                          const std::function<void(const std::filesystem::path&)>& write,
+                                          const std::function<bool(const std::string&)>& ours);
+
+}  // namespace stickslip::detail

@@ -1,0 +1,364 @@
+#include "stickslip/io/trace_files.hpp"
+
+#include <algorithm>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "csv_table.hpp"
+#include "result_directory.hpp"
+#include "stickslip/branches/trace.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/result_files.hpp"
+
+namespace stickslip {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace ov = orbit_variables;
+using detail::CsvTable;
+using detail::KeyError;
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kTraceCsv = "trace.csv";
+constexpr const char* kTraceJson = "trace.json";
+constexpr const char* kBranchPrefix = "branch-";
+
+const char* WayName(int direction) { return direction > 0 ? "up" : "down"; }
+
+std::string Number(double v) { return fmt::format("{}", v); }
+
+// trace.csv's columns; the parameter's name stands second after the label.
+std::vector<std::string> CsvHeader(const std::string& parameter) {
+  return {"branch", "signature", "pt", "label", parameter, "phi", "period", "x10", "x20", "v10", "stable", "admissible"};
+}
+
+// ---- trace.json
+
+// Typed access to one JSON object of trace.json; every key read is required, and Done() refuses
+// the keys not read.
+class JsonObject {
+ public:
+  JsonObject(const Json& json, fs::path file, std::string path) : json_(json), file_(std::move(file)), path_(std::move(path)) {
+    if (!json_.is_object()) throw KeyError(file_, path_, fmt::format("= {} is invalid: valid a JSON object", json_.dump()));
+  }
+  const Json& Get(const std::string& key) {
+    const auto it = json_.find(key);
+    if (it == json_.end()) throw KeyError(file_, Name(key), "is missing");
+    read_.push_back(key);
+    return *it;
+  }
+  std::string Text(const std::string& key) { return Typed<std::string>(key, &Json::is_string, "a string"); }
+  bool Flag(const std::string& key) { return Typed<bool>(key, &Json::is_boolean, "true or false"); }
+  std::size_t Count(const std::string& key) {
+    return Typed<std::size_t>(key, &Json::is_number_unsigned, "a count (an integer >= 0)");
+  }
+  template <class T>
+  T Typed(const std::string& key, bool (Json::*is)() const noexcept, const char* valid) {
+    const Json& v = Get(key);
+    if (!(v.*is)()) throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid {}", v.dump(), valid));
+    return v.get<T>();
+  }
+  std::string Name(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  void Done() const {
+    for (const auto& [key, value] : json_.items()) {
+      if (std::find(read_.begin(), read_.end(), key) == read_.end()) {
+        throw KeyError(file_, Name(key), fmt::format("is unknown: valid {}", fmt::join(read_, ", ")));
+      }
+    }
+  }
+  const fs::path& file() const { return file_; }
+
+ private:
+  const Json& json_;
+  fs::path file_;
+  std::string path_;
+  std::vector<std::string> read_;
+};
+
+std::string FormatJson(const StoredTrace& t) {
+  Json json = Json::object();
+  json["run_file"] = t.run_file;
+  json["stickslip_version"] = t.stickslip_version;
+  json["output"] = t.output;
+  json["parameter"] = t.parameter;
+  json["signature"] = t.signature;
+  json["directions"] = Json::array();
+  for (const StoredTraceDirection& d : t.directions) {
+    json["directions"].push_back(
+        {{"direction", d.direction}, {"end", d.end}, {"message", d.message}, {"branches", d.branches}});
+  }
+  json["branches"] = Json::array();
+  for (const StoredTraceBranch& b : t.branches) {
+    const StoredSwitch& w = b.type_switch;
+    const Json sw = b.has_switch ? Json{{"status", w.status},     {"bifurcation", w.bifurcation},
+                                        {"edit", w.edit},         {"adjacent", w.adjacent},
+                                        {"persists", w.persists}, {"from_past", w.from_past}}
+                                 : Json(nullptr);
+    json["branches"].push_back({{"name", b.name},
+                                {"chain", b.chain},
+                                {"direction", b.direction},
+                                {"signature", b.signature},
+                                {"points", b.points},
+                                {"start", b.start},
+                                {"margin", b.margin},
+                                {"switch", sw},
+                                {"end", b.end},
+                                {"message", b.message}});
+  }
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+StoredTrace ParseJson(const std::string& text, const fs::path& file) {
+  const Json json = detail::ParseJsonObject(text, file);
+  JsonObject top(json, file, "");
+  StoredTrace t;
+  t.run_file = top.Text("run_file");
+  t.stickslip_version = top.Text("stickslip_version");
+  t.output = top.Text("output");
+  t.parameter = top.Text("parameter");
+  t.signature = top.Text("signature");
+  const Json& directions = top.Get("directions");
+  if (!directions.is_array() || directions.size() != 2) {
+    throw KeyError(file, "directions", "is invalid: valid an array of two directions, down and up");
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    JsonObject d(directions[k], file, fmt::format("directions[{}]", k));
+    StoredTraceDirection direction{.direction = d.Text("direction"), .end = d.Text("end"), .message = d.Text("message")};
+    if (direction.direction != (k == 0 ? "down" : "up")) {
+      throw KeyError(file, d.Name("direction"), fmt::format("= '{}' is invalid: valid '{}'", direction.direction, k == 0 ? "down" : "up"));
+    }
+    const Json& branches = d.Get("branches");
+    if (!branches.is_array()) throw KeyError(file, d.Name("branches"), "is invalid: valid an array of branch numbers");
+    for (const Json& b : branches) {
+      if (!b.is_number_unsigned()) throw KeyError(file, d.Name("branches"), "is invalid: valid an array of branch numbers");
+      direction.branches.push_back(b.get<std::size_t>());
+    }
+    d.Done();
+    t.directions.push_back(std::move(direction));
+  }
+  const Json& branches = top.Get("branches");
+  if (!branches.is_array()) throw KeyError(file, "branches", "is invalid: valid an array of branches");
+  for (std::size_t k = 0; k < branches.size(); ++k) {
+    JsonObject b(branches[k], file, fmt::format("branches[{}]", k));
+    StoredTraceBranch branch{.name = b.Text("name"),
+                             .chain = b.Text("chain"),
+                             .direction = b.Text("direction"),
+                             .signature = b.Text("signature"),
+                             .points = b.Count("points"),
+                             .start = b.Text("start"),
+                             .margin = b.Text("margin")};
+    if (branch.name != fmt::format("{}{}", kBranchPrefix, k + 1)) {
+      throw KeyError(file, b.Name("name"), fmt::format("= '{}' is invalid: valid '{}{}'", branch.name, kBranchPrefix, k + 1));
+    }
+    const Json& sw = b.Get("switch");
+    if (!sw.is_null()) {
+      JsonObject s(sw, file, b.Name("switch"));
+      branch.has_switch = true;
+      branch.type_switch = {.status = s.Text("status"),
+                            .bifurcation = s.Text("bifurcation"),
+                            .edit = s.Text("edit"),
+                            .adjacent = s.Text("adjacent"),
+                            .persists = s.Flag("persists"),
+                            .from_past = s.Flag("from_past")};
+      s.Done();
+    }
+    branch.end = b.Text("end");
+    branch.message = b.Text("message");
+    b.Done();
+    t.branches.push_back(std::move(branch));
+  }
+  top.Done();
+  // Every branch belongs to one direction, in the order the files number them.
+  std::vector<std::size_t> listed;
+  for (const StoredTraceDirection& d : t.directions) listed.insert(listed.end(), d.branches.begin(), d.branches.end());
+  for (std::size_t k = 0; k < listed.size() || k < t.branches.size(); ++k) {
+    if (k >= listed.size() || k >= t.branches.size() || listed[k] != k + 1) {
+      throw KeyError(file, "directions", fmt::format("list branches {}: valid 1 to {} in order, the down chain first",
+                                                     fmt::join(listed, ", "), t.branches.size()));
+    }
+  }
+  return t;
+}
+
+// ---- trace.csv
+
+std::string FormatCsv(const StoredTrace& t) {
+  std::string text = fmt::format("{}\n", fmt::join(CsvHeader(t.parameter), ","));
+  for (const StoredTracePoint& p : t.points) {
+    text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", p.branch, p.signature, p.pt, p.label, Number(p.lambda),
+                        Number(p.phi), Number(p.period), Number(p.x10), Number(p.x20), Number(p.v10),
+                        p.stable ? 1 : 0, p.admissible ? 1 : 0);
+  }
+  return text;
+}
+
+std::vector<StoredTracePoint> ParseCsv(const std::string& text, const fs::path& file, const std::string& parameter) {
+  const CsvTable table(text, file);
+  const std::vector<std::string> header = CsvHeader(parameter);
+  if (table.header() != header) {
+    throw table.HeaderError(fmt::format("the columns are invalid: valid {}", fmt::join(header, ",")));
+  }
+  std::vector<StoredTracePoint> points;
+  for (int r = 0; r < table.rows(); ++r) {
+    const int branch = table.Integer(r, 0);
+    if (branch < 1) throw table.Error(r, 0, "is invalid: valid a branch number >= 1");
+    points.push_back({.branch = static_cast<std::size_t>(branch),
+                      .signature = table.Text(r, 1),
+                      .pt = table.Integer(r, 2),
+                      .label = table.Text(r, 3),
+                      .lambda = table.FiniteNumber(r, 4),
+                      .phi = table.FiniteNumber(r, 5),
+                      .period = table.FiniteNumber(r, 6),
+                      .x10 = table.FiniteNumber(r, 7),
+                      .x20 = table.FiniteNumber(r, 8),
+                      .v10 = table.FiniteNumber(r, 9),
+                      .stable = table.Flag(r, 10),
+                      .admissible = table.Flag(r, 11)});
+  }
+  return points;
+}
+
+std::vector<StoredTracePoint> PointsOf(const std::vector<StoredRun>& runs, const std::string& parameter) {
+  std::vector<StoredTracePoint> points;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    for (const StoredPoint& p : runs[k].branch) {
+      const Eigen::VectorXd variables = ov::Pack(p.orbit);
+      const int n = p.orbit.signature.size();
+      points.push_back({.branch = k + 1,
+                        .signature = runs[k].summary.signature,
+                        .pt = p.pt,
+                        .label = p.label,
+                        .lambda = variables(*ov::IndexOf(n, parameter)),
+                        .phi = p.orbit.phi,
+                        .period = p.orbit.Period(),
+                        .x10 = p.orbit.x10,
+                        .x20 = p.orbit.x20,
+                        .v10 = p.orbit.v10,
+                        .stable = p.stable,
+                        .admissible = p.admissible});
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
+  StoredTrace t;
+  t.run_file = run.path;
+  t.output = run.output;
+  t.parameter = trace.parameter;
+  for (const TraceDirection* chain : {&trace.down, &trace.up}) {
+    StoredTraceDirection direction{.direction = WayName(chain->direction), .end = ToString(chain->end), .message = chain->message};
+    for (const TraceLink& link : chain->links) {
+      const std::size_t k = t.branches.size() + 1;
+      RunFile branch_run = run;
+      branch_run.output = fmt::format("{}{}", kBranchPrefix, k);
+      StoredRun stored = RecordRun(branch_run, link.branch);
+      if (t.stickslip_version.empty()) t.stickslip_version = stored.summary.stickslip_version;
+      if (t.signature.empty()) t.signature = link.signature;
+      StoredTraceBranch b{.name = branch_run.output,
+                          .chain = direction.direction,
+                          .direction = WayName(link.direction),
+                          .signature = link.signature,
+                          .points = stored.branch.size(),
+                          .start = ToString(link.start),
+                          .margin = link.margin,
+                          .end = ToString(link.end),
+                          .message = link.message};
+      if (link.type_switch) {
+        const TypeSwitch& sw = *link.type_switch;
+        const bool confirmed = sw.status == TypeSwitchStatus::kConfirmed;
+        b.has_switch = true;
+        b.type_switch = {.status = ToString(sw.status),
+                         .bifurcation = confirmed ? sw.adjacent->bifurcation : "",
+                         .edit = confirmed ? ToString(sw.adjacent->kind) : "",
+                         .adjacent = confirmed ? sw.adjacent->edit.signature.ToString() : "",
+                         .persists = confirmed && sw.persists,
+                         .from_past = confirmed && sw.singular_start};
+      }
+      t.branches.push_back(std::move(b));
+      t.runs.push_back(std::move(stored));
+      direction.branches.push_back(k);
+    }
+    t.directions.push_back(std::move(direction));
+  }
+  t.points = PointsOf(t.runs, t.parameter);
+  return t;
+}
+
+TraceFiles FormatTraceFiles(const StoredTrace& trace) { return {FormatCsv(trace), FormatJson(trace)}; }
+
+bool IsTraceDirectory(const fs::path& directory) {
+  std::error_code ignored;
+  return fs::is_directory(fs::symlink_status(directory, ignored)) && fs::exists(directory / kTraceJson, ignored);
+}
+
+void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& output) {
+  const fs::path target = results_root / output;
+  if (IsTraceDirectory(target)) {
+    try {
+      ParseJson(detail::ReadTextFile(target / kTraceJson), target / kTraceJson);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput::WithMessage(
+          "output", fmt::format("output = '{}' is invalid: '{}' holds no stickslip trace ({}): valid a new name or the "
+                                "directory of a stickslip run or trace",
+                                output, target.string(), e.what()));
+    }
+    if (const std::error_code failed = CanCreateFileIn(results_root)) {
+      throw InvalidInput::WithMessage(
+          "results", fmt::format("results = '{}' is invalid: no file can be created in it ({}): valid a directory, or a "
+                                 "path where one can be created",
+                                 results_root.string(), failed.message()));
+    }
+    return;
+  }
+  CheckOutputDirectory(results_root, output);
+}
+
+std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
+  const TraceFiles files = FormatTraceFiles(trace);
+  CheckTraceOutputDirectory(results_root, trace.output);
+  // The files a trace or a run writes; every other entry of the old directory is the user's.
+  auto ours = [](const std::string& name) {
+    return name == kTraceCsv || name == kTraceJson || name.starts_with(kBranchPrefix) || name == "branch.csv" ||
+           name == "special-points.csv" || name == "summary.json";
+  };
+  return detail::ReplaceDirectory(
+      results_root, trace.output,
+      [&](const fs::path& directory) {
+        for (const StoredRun& run : trace.runs) WriteRunFiles(directory, run);
+        WriteFileAtomically(directory / kTraceCsv, files.trace_csv);
+        WriteFileAtomically(directory / kTraceJson, files.trace_json);
+      },
+      ours);
+}
+
+StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
+  const fs::path json_file = trace_directory / kTraceJson;
+  StoredTrace t = ParseJson(detail::ReadTextFile(json_file), json_file);
+  for (const StoredTraceBranch& b : t.branches) {
+    StoredRun run = ReadRunFiles(trace_directory / b.name);
+    if (run.branch.size() != b.points || run.summary.signature != b.signature) {
+      throw KeyError(json_file, b.name,
+                     fmt::format("says {} points of '{}': {} has {} of '{}'", b.points, b.signature, b.name,
+                                 run.branch.size(), run.summary.signature));
+    }
+    t.runs.push_back(std::move(run));
+  }
+  const fs::path csv_file = trace_directory / kTraceCsv;
+  t.points = ParseCsv(detail::ReadTextFile(csv_file), csv_file, t.parameter);
+  if (FormatCsv(t) != FormatCsv({.parameter = t.parameter, .points = PointsOf(t.runs, t.parameter)})) {
+    throw InvalidInput::WithMessage(csv_file.string(),
+                                    fmt::format("{}: differs from the branches' files: valid one row per point of "
+                                                "every branch, as they have them",
+                                                csv_file.string()));
+  }
+  return t;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,71 @@
+#include "continue_flags.hpp"
+
+#include "cli_common.hpp"
+#include "number_text.hpp"
+#include "stickslip/io/command_options.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+// "true" or "false", as the run file's booleans.
+bool ParseSwitch(const char* field, const std::string& text) {
+  if (text != "true" && text != "false") throw InvalidInput(field, "'" + text + "'", "true, false");
+  return text == "true";
+}
+
+}  // namespace
+
+void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
+  AddStartOptions(cmd, &args->start, StartOptions::kOrbit);
+  cmd.add_option("--parameter", args->run.parameter, "continued variable (omega, u_r, u_s, chi, eta, ...)")->required();
+  cmd.add_option("--range", args->range, "MIN,MAX of the parameter")->type_name("MIN,MAX")->required();
+  AddNumberOption(cmd, "--ds", &args->run.ds, "0 < ds-min <= ds <= ds-max", "initial arclength step (> 0)");
+  AddNumberOption(cmd, "--ds-min", &args->run.ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)");
+  AddNumberOption(cmd, "--ds-max", &args->run.ds_max, "0 < ds-min <= ds <= ds-max", "largest step");
+  AddCountOption(cmd, "--max-points", &args->run.max_points, 1, kMaxRunPoints, "accepted points (1 to 1e6)");
+  cmd.add_option("--user-value", args->user_values,
+                 "report a UZ point where the variable NAME (the parameter or another unknown) passes VALUE; "
+                 "repeatable (the run file's user_values and user_values_of)")
+      ->type_name("NAME=VALUE");
+  cmd.add_option("--shooting", args->run.shooting,
+                 "single (dense), multiple (block-sparse), or auto (single up to 6 listed segments)")
+      ->check(CLI::IsMember({"auto", "single", "multiple"}))
+      ->capture_default_str();
+  cmd.add_option("--linear-solver", args->run.linear_solver,
+                 "sparse solver for multiple shooting (with --shooting multiple or auto; refused with single)")
+      ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
+      ->capture_default_str()
+      ->each([args](const std::string&) { args->linear_solver_given = true; });
+  cmd.add_option("--detect-folds", args->detect_folds, "locate folds (LP): true or false")
+      ->type_name("true|false")
+      ->capture_default_str();
+  cmd.add_option("--detect-branch-points", args->detect_branch_points, "locate branch points (BP): true or false")
+      ->type_name("true|false")
+      ->capture_default_str();
+  cmd.add_option("--output", args->run.output, "results/<output>/")->required();
+  cmd.add_option("--results", args->start.results, "results directory: where --point is read and <output>/ written")
+      ->capture_default_str();
+}
+
+void BuildOneOffRun(ContinueArgs* args) {
+  RunFile& run = args->run;
+  run.path = kOneOffRunPath;
+  SetRunFileStart(ToStartInput(args->start), &run);
+  const auto comma = args->range.find(',');
+  if (comma == std::string::npos) throw InvalidInput("range", "'" + args->range + "'", "MIN,MAX");
+  run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX with MIN < MAX");
+  run.range_max = ParseNumber("range", args->range.substr(comma + 1), "MIN,MAX with MIN < MAX");
+  CheckOneOffRun(run, args->range);
+  CheckLinearSolverIsUsed(args->linear_solver_given ? run.linear_solver : "", run.shooting);
+  for (const std::string& text : args->user_values) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos || equals == 0) throw InvalidInput("user-value", "'" + text + "'", "NAME=VALUE");
+    const std::string name = text.substr(0, equals);
+    run.user_values.emplace_back(name, ParseNumber("user-value", text.substr(equals + 1), "a finite number"));
+  }
+  run.detect_folds = ParseSwitch("detect-folds", args->detect_folds);
+  run.detect_branch_points = ParseSwitch("detect-branch-points", args->detect_branch_points);
+}
+
+}  // namespace stickslip::cli

@@ -1,0 +1,129 @@
+// stickslip trace: the chain of branches through the changes of orbit type, both ways from one
+// start (branches/trace.hpp), from flags as `continue` takes them; written to results/<output>/
+// (io/trace_files.hpp).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "continue_flags.hpp"
+#include "number_text.hpp"
+#include "progress_line.hpp"
+#include "stickslip/io/command_options.hpp"
+#include "stickslip/io/run.hpp"
+#include "trace_run.hpp"
+
+namespace stickslip::cli {
+
+std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results) {
+  const OrbitContinuationSetup setup = MakeSetup(run, results);
+  TraceOptions options = *run.trace;
+  ProgressLineOptions line_options;
+  line_options.value_name = run.parameter;
+  ProgressLine line(run.output, line_options);
+  options.progress = line.Callback();
+  const auto started = std::chrono::steady_clock::now();
+  TraceResult result = TraceOrbits(setup, options);
+  line.Clear();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (result.down.links.empty() && result.up.links.empty()) {
+    fmt::print(stderr, "error: {}: {}\n", run.path, result.down.message);
+    return std::nullopt;
+  }
+  StoredTrace stored = RecordTrace(run, result);
+  return TraceRun{std::move(result), std::move(stored), seconds};
+}
+
+int TraceExitCode(const TraceResult& trace) {
+  if (trace.Completed()) return kExitOk;
+  if (trace.Failed()) return kExitNoConvergence;
+  return kExitTraceUnswitched;
+}
+
+int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::filesystem::path& results) {
+  const std::vector<std::string> kept = WriteTraceFiles(results, trace.stored);
+  fmt::print("{}: {} branches in {:.3f} s\n", run.output, trace.stored.branches.size(), trace.seconds);
+  for (const StoredTraceBranch& b : trace.stored.branches) {
+    fmt::print("  {} ({} chain) '{}' {} from {}{}: {} points, {}\n", b.name, b.chain, b.signature, b.direction, b.start,
+               b.margin.empty() ? "" : " at " + b.margin, b.points, b.end);
+  }
+  for (const StoredTraceDirection& d : trace.stored.directions) {
+    fmt::print("  {}: {}: {}\n", d.direction, d.end, d.message);
+  }
+  if (!kept.empty()) {
+    fmt::print("{}: kept {} other file(s) of {}: {}\n", run.output, kept.size(), (results / run.output).string(),
+               fmt::join(kept, ", "));
+  }
+  const int code = TraceExitCode(trace.result);
+  if (code != kExitOk) {
+    for (const StoredTraceDirection& d : trace.stored.directions) {
+      if (d.end != "parameter-bound" && d.end != "family-end" && d.end != "loop" && d.end != "resonance" && d.end != "max-points" &&
+          d.end != "max-branches") {
+        fmt::print(stderr, "{}: the {} chain ended: {}: {}\n", run.output, d.direction, d.end, d.message);
+      }
+    }
+  }
+  return code;
+}
+
+namespace {
+
+struct TraceArgs {
+  ContinueArgs continuation;
+  TraceOptions options;
+};
+
+int RunTrace(TraceArgs args) {
+  BuildOneOffRun(&args.continuation);
+  RunFile& run = args.continuation.run;
+  try {
+    args.options.Validate();
+  } catch (const InvalidInput& e) {  // named as the options are: max_amplitude is --max-amplitude
+    std::string option = e.field();
+    std::replace(option.begin(), option.end(), '_', '-');
+    throw e.Renamed(option);
+  }
+  run.trace = args.options;
+  CheckTraceOutputDirectory(args.continuation.start.results, run.output);
+  std::optional<TraceRun> trace;
+  try {
+    trace = ExecuteTrace(run, args.continuation.start.results);
+  } catch (const InvalidInput& error) {
+    throw AsOption(error);
+  }
+  if (!trace) return kExitNoConvergence;
+  return WriteAndReportTrace(run, *trace, args.continuation.start.results);
+}
+
+}  // namespace
+
+Command AddTraceCommand(CLI::App& app) {
+  auto args = std::make_shared<TraceArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "trace",
+      "Follow the chain of orbit branches through every change of orbit type, both ways from the start, "
+      "within --range: at each change the adjacent types are tried and the one confirmed by simulation is "
+      "continued. Writes results/<output>/: branch-<k>/ (an ordinary run per branch), trace.csv and trace.json. "
+      "Exit 0 when both directions end at a range bound, the family's end (u_s = 0), a loop, a resonance, --max-points or "
+      "--max-branches; 3 when a branch does not converge; 6 when a direction ends at a change of type that "
+      "switched nowhere (the trace is written, the reason on stderr).");
+  AddContinuationFlags(*cmd, &args->continuation);
+  AddCountOption(*cmd, "--max-branches", &args->options.max_branches, 1, kMaxTraceBranches,
+                 fmt::format("branches per direction (1 to {})", kMaxTraceBranches));
+  AddNumberOption(*cmd, "--max-amplitude", &args->options.max_amplitude, "a finite max-amplitude > 0",
+                  "a resonance ends the direction where max |x1|, |x2| over the orbit (scaled displacement, "
+                  "sampled 64 times a period) passes this (> 0)");
+  AddNumberOption(*cmd, "--loop-tolerance", &args->options.loop_tolerance, "0 < loop-tolerance <= 1e-2",
+                  "the chain has come back to a point it visited when the signature agrees and the parameter "
+                  "(relative), start state, phase and period differ by at most this (0 < tol <= 1e-2)");
+  cmd->add_flag("--follow-past-unswitched", args->options.follow_past_unswitched,
+                "at a change of type that switches nowhere, follow the same type on past it (not a motion there, "
+                "admissible = 0) to where it is admissible again, instead of ending the direction");
+  return {cmd, [args] { return RunTrace(*args); }};
+}
+
+}  // namespace stickslip::cli
