@@ -24,5 +24,6 @@ Command AddSweepCommand(CLI::App& app);
 Command AddExportCommand(CLI::App& app);
 Command AddFindCommand(CLI::App& app);
 Command AddPlotCommand(CLI::App& app);
+// map_sweep_command.hpp: Command AddMapSweepCommand(CLI::App& app, ...).
 
 }  // namespace stickslip::cli
