@@ -43,6 +43,10 @@ struct MapSweepArgs {
 
 constexpr const char* kShardRange = "k/N with whole numbers 1 <= k <= N <= 100000";
 
+std::string ToleranceRange() {
+  return fmt::format("{} <= tolerance <= {}", BruteForceMapOptions::kMinTolerance, BruteForceMapOptions::kMaxTolerance);
+}
+
 // "k/N" -> (k, N).
 std::pair<int, int> ParseShard(const std::string& text) {
   const auto slash = text.find('/');
@@ -97,6 +101,9 @@ MapSweepPlan PlanOf(const MapSweepArgs& args) {
   o.centre = input.initial_state;
   o.scatter = args.scatter;
   o.seed = static_cast<std::uint64_t>(args.seed);
+  if (!(args.tolerance >= BruteForceMapOptions::kMinTolerance && args.tolerance <= BruteForceMapOptions::kMaxTolerance)) {
+    throw InvalidInput("tolerance", args.tolerance, ToleranceRange());
+  }
   o.periodicity_tolerance = args.tolerance;
   o.threads = args.threads;
   std::tie(o.shard, o.shards) = ParseShard(args.shard);
@@ -168,8 +175,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
   AddNumberOption(*cmd, "--scatter", &args->scatter, "0 <= scatter <= 1e6",
                   "half-width of the box around the given state the scattered starts are drawn from (0 to 1e6)");
   AddCountOption(*cmd, "--seed", &args->seed, 0, 1000000000, "seed of the scattered starts (0 to 1e9)");
-  AddNumberOption(*cmd, "--tolerance", &args->tolerance,
-                  fmt::format("{} <= tolerance <= {}", BruteForceMapOptions::kMinTolerance, BruteForceMapOptions::kMaxTolerance),
+  AddNumberOption(*cmd, "--tolerance", &args->tolerance, ToleranceRange(),
                   "section points repeat, and two runs' orbits agree, within this (absolute, max norm; 1e-14 to 1e-2)");
   AddCountOption(*cmd, "--threads", &args->threads, 0, 1024, "threads (0: every core; 0 to 1024)");
   cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")
@@ -181,8 +187,8 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");
     cmd->add_option("shards", args->shards, "with --merge: the shard files (every cell of one map once)");
   }
-  return {cmd, [args, runner, cmd] {
-            if (cmd->count("--merge") > 0) return RunMerge(*args);
+  return {cmd, [args, runner, cmd, merge] {
+            if (merge && cmd->count("--merge") > 0) return RunMerge(*args);
             if (!args->shards.empty()) {
               throw InvalidInput("shards", "'" + args->shards.front() + "'", "shard files only with --merge OUT");
             }

@@ -4,21 +4,42 @@
 # different grids, with a cell twice or one missing, is refused; with the MPI front end
 # (STICKSLIP_MPI), 1 and 2 ranks write the threaded run's bytes.
 source "$(dirname "$0")/expect.sh"
-map=(map-sweep --preset paper-6 --first omega --first-from 0.55 --first-to 0.6 --first-steps 3
-     --second u_r --second-from 1.2 --second-to 1.5 --second-steps 2 --transients 30 --periods 6 --starts 2)
-
-expect 2 "first-steps = '2.5' is invalid" "$bin" "${map[@]}" --first-steps 2.5 --output "$work/out/m.csv"
-expect 2 "second = 'omega' is invalid" "$bin" "${map[@]}" --second omega --output "$work/out/m.csv"
-expect 2 "first = 'mu' is invalid" "$bin" "${map[@]}" --first mu --output "$work/out/m.csv"
-expect 2 "shard = '3/2' is invalid" "$bin" "${map[@]}" --shard 3/2 --output "$work/out/m.csv"
-expect 2 "shard = '0/2' is invalid" "$bin" "${map[@]}" --shard 0/2 --output "$work/out/m.csv"
-expect 2 "periods = 1 is invalid" "$bin" "${map[@]}" --periods 1 --output "$work/out/m.csv"
-expect 2 "tolerance = '0' is invalid" "$bin" "${map[@]}" --tolerance 0 --output "$work/out/m.csv"
-expect 2 "grid cell (i, j) = (0, 0)" "$bin" "${map[@]}" --second-from 0.01 --output "$work/out/m.csv"
-expect 2 "output = (not given) is invalid" "$bin" "${map[@]}"
-expect 2 "output" "$bin" "${map[@]}" --output "$work/out/missing/m.csv"
+# The map's options, with KEY VALUE pairs replacing or adding options: map_args --periods 1 ...
+map_args() {
+  declare -A o=([--preset]=paper-6 [--first]=omega [--first-from]=0.55 [--first-to]=0.6 [--first-steps]=3
+                [--second]=u_r [--second-from]=1.2 [--second-to]=1.5 [--second-steps]=2 [--transients]=30
+                [--periods]=6 [--starts]=2)
+  while [ $# -gt 0 ]; do o[$1]=$2; shift 2; done
+  args=(map-sweep)
+  for key in "${!o[@]}"; do args+=("$key" "${o[$key]}"); done
+}
+# expect_map CODE TEXT KEY VALUE...: map-sweep with those options exits with CODE, TEXT on stderr.
+expect_map() {
+  local code=$1 text=$2
+  shift 2
+  map_args "$@"
+  expect "$code" "$text" "$bin" "${args[@]}"
+}
+m="$work/out/m.csv"
+expect_map 2 "first-steps = 2.5 is invalid" --first-steps 2.5 --output "$m"
+expect_map 2 "first-steps = 10001 is invalid" --first-steps 10001 --output "$m"
+expect_map 2 "second = 'omega' is invalid" --second omega --output "$m"
+expect_map 2 "first = 'mu' is invalid" --first mu --output "$m"
+expect_map 2 "shard = '3/2' is invalid" --shard 3/2 --output "$m"
+expect_map 2 "shard = '0/2' is invalid" --shard 0/2 --output "$m"
+expect_map 2 "shard = '1' is invalid" --shard 1 --output "$m"
+expect_map 2 "periods = 1 is invalid" --periods 1 --output "$m"
+expect_map 2 "tolerance = 0 is invalid" --tolerance 0 --output "$m"
+expect_map 2 "scatter = -1 is invalid" --scatter -1 --output "$m"
+expect_map 2 "first-from = '0.6x' is not a finite number" --first-from 0.6x --output "$m"
+expect_map 2 "grid cell (i, j) = (0, 0)" --second-from 0.01 --output "$m"
+expect_map 2 "output = (not given) is invalid"
+expect_map 2 "output" --output "$work/out/missing/m.csv"
 
 # Threads, shards and merge.
+map_args
+map=("${args[@]}")
+expect 2 "shards = '$work/out/stray.csv' is invalid" "$bin" "${map[@]}" --output "$m" "$work/out/stray.csv"
 "$bin" "${map[@]}" --threads 1 --output "$work/one.csv" > /dev/null || fail "1 thread"
 "$bin" "${map[@]}" --threads 2 --output "$work/two.csv" > /dev/null || fail "2 threads"
 cmp -s "$work/one.csv" "$work/two.csv" && pass || fail "1 and 2 threads differ"
@@ -32,7 +53,8 @@ cp "$work/shard1.csv" "$work/out/"
 expect 2 "is in no shard" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv"
 expect 2 "is in '$work/out/shard1.csv' and in '$work/out/shard1.csv'" \
   "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv" "$work/out/shard1.csv"
-"$bin" "${map[@]}" --first-to 0.61 --shard 2/2 --output "$work/out/other.csv" > /dev/null
+map_args --first-to 0.61 --shard 2/2 --output "$work/out/other.csv"
+"$bin" "${args[@]}" > /dev/null || fail "other grid"
 expect 2 "at omega" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv" "$work/out/other.csv"
 rm "$work/out/other.csv"
 expect 2 "merge = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
@@ -44,7 +66,8 @@ if [ -n "${STICKSLIP_MPI:-}" ]; then
   cmp -s "$work/one.csv" "$work/rank1.csv" && pass || fail "1 rank differs from the threaded run"
   cmp -s "$work/one.csv" "$work/rank2.csv" && pass || fail "2 ranks differ from the threaded run"
   # Bad input on every rank: one line, exit 2.
-  "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${map[@]}" --periods 1 --output "$work/out/m.csv" > "$work/stdout" 2> "$work/stderr"
+  map_args --periods 1 --output "$work/out/m.csv"
+  "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${args[@]}" > "$work/stdout" 2> "$work/stderr"
   code=$?
   [ "$code" -eq 2 ] && [ "$(grep -c 'periods = 1 is invalid' "$work/stderr")" -eq 1 ] && [ ! -e "$work/out/m.csv" ] \
     && pass || fail "MPI bad input: exit $code, $(cat "$work/stderr")"

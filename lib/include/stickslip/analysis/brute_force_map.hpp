@@ -51,7 +51,7 @@ struct MapAxis {
 struct BruteForceMapOptions {
   MapAxis first{ParameterId::kOmega};               // index i; the neighbour chain runs along it
   MapAxis second{ParameterId::kStaticFriction};     // index j; each value is a row
-  int transient_periods = 200;  // forcing periods discarded per run (0 to kMaxTransientPeriods)
+  int transient_periods = 500;  // forcing periods discarded per run (0 to kMaxTransientPeriods)
   // Forcing periods recorded per run (2 to kMaxRecordedPeriods): periods up to recorded/2 are
   // detected; a signature is read when the record holds the origin and one whole period after it
   // (about 2 k + 1 forcing periods for period k).
