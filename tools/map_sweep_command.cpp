@@ -142,7 +142,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
   auto args = std::make_shared<MapSweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "map-sweep",
-      "Brute-force map of motions over two parameters: a grid of (--first-steps + 1) x (--second-steps + 1) "
+      "Brute-force map of motions over two parameters (exit codes as stickslip's): a grid of (--first-steps + 1) x (--second-steps + 1) "
       "cells, and in each cell the attractors that simulation finds from rest, from where the run of the "
       "neighbouring cell (i - 1, same j) ended, and from --starts states: the given one (--preset's, --set "
       "x10=...) and states scattered around it (--scatter, --seed): --transients forcing periods simulated out, then --periods recorded on the stroboscopic "
@@ -156,12 +156,12 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   const std::string range = "the parameter's valid range (every cell is checked)";
   cmd->add_option("--first", args->first, "the parameter stepped along i: chi, eta, omega, u_s or u_r")->capture_default_str();
-  AddNumberOption(*cmd, "--first-from", &args->first_from, range, "its value at i = 0");
+  AddNumberOption(*cmd, "--first-from", &args->first_from, range, "its value at i = 0 (its range under --set; every cell is checked)");
   AddNumberOption(*cmd, "--first-to", &args->first_to, range, "its value at i = --first-steps");
   AddCountOption(*cmd, "--first-steps", &args->first_steps, 0, BruteForceMapOptions::kMaxSteps,
                  "intervals along i (0 to 1e4)");
   cmd->add_option("--second", args->second, "the parameter stepped along j (a row per value)")->capture_default_str();
-  AddNumberOption(*cmd, "--second-from", &args->second_from, range, "its value at j = 0");
+  AddNumberOption(*cmd, "--second-from", &args->second_from, range, "its value at j = 0 (its range under --set)");
   AddNumberOption(*cmd, "--second-to", &args->second_to, range, "its value at j = --second-steps");
   AddCountOption(*cmd, "--second-steps", &args->second_steps, 0, BruteForceMapOptions::kMaxSteps,
                  "intervals along j (0 to 1e4)");

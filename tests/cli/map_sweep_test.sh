@@ -59,6 +59,10 @@ expect 2 "at omega" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1
 rm "$work/out/other.csv"
 expect 2 "merge = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
 
+# The figure (tools/map_figure.py, python3-matplotlib): a PNG.
+/usr/bin/python3 "$root/tools/map_figure.py" "$work/one.csv" "$work/map.png" && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \
+  && pass || fail "the map's figure"
+
 if [ -n "${STICKSLIP_MPI:-}" ]; then
   mpi=("${MPIEXEC:-mpirun}" --allow-run-as-root --oversubscribe)
   "${mpi[@]}" -np 1 "$STICKSLIP_MPI" "${map[@]}" --output "$work/rank1.csv" > /dev/null || fail "mpirun -np 1"
