@@ -174,10 +174,6 @@ BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, cons
   std::map<int, std::pair<double, std::size_t>> first_values, second_values;
   for (std::size_t s = 0; s < shards.size(); ++s) {
     for (const MapCell& cell : shards[s].cells) {
-      const auto [it, inserted] = cells.try_emplace({cell.j, cell.i}, &cell, s);
-      if (!inserted) {
-        throw refuse(fmt::format("cell (i, j) = ({}, {}) is in '{}' and in '{}'", cell.i, cell.j, names[it->second.second], names[s]));
-      }
       for (const auto& [values, index, value, axis] :
            {std::tuple{&first_values, cell.i, cell.first, "i"}, std::tuple{&second_values, cell.j, cell.second, "j"}}) {
         const auto [v, added] = values->try_emplace(index, value, s);
@@ -186,6 +182,10 @@ BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, cons
                                    axis == std::string_view("i") ? ToString(grid->first) : ToString(grid->second), value,
                                    names[v->second.second], v->second.first));
         }
+      }
+      const auto [it, inserted] = cells.try_emplace({cell.j, cell.i}, &cell, s);
+      if (!inserted) {
+        throw refuse(fmt::format("cell (i, j) = ({}, {}) is in '{}' and in '{}'", cell.i, cell.j, names[it->second.second], names[s]));
       }
     }
   }
