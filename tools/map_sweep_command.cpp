@@ -142,16 +142,17 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
   auto args = std::make_shared<MapSweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "map-sweep",
-      "Brute-force map of motions over two parameters (exit codes as stickslip's): a grid of (--first-steps + 1) x (--second-steps + 1) "
-      "cells, and in each cell the attractors that simulation finds from rest, from where the run of the "
-      "neighbouring cell (i - 1, same j) ended, and from --starts states: the given one (--preset's, --set "
-      "x10=...) and states scattered around it (--scatter, --seed): --transients forcing periods simulated out, then --periods recorded on the stroboscopic "
-      "section (the state at forcing phase phi). Runs that end on the same periodic section orbit (to "
-      "--tolerance, any shift) are one attractor, listed with its period, stops and sticks per period, "
-      "signature (orbit type) and how many starts found it; motions that do not settle are listed as "
-      "not-settled. The file does not depend on --threads, --shard or MPI ranks. --shard k/N computes "
-      "the rows j with j mod N = k - 1; --merge OUT SHARD.csv... joins the shards into the file the whole "
-      "run writes. Time is the paper's scaled time.");
+      "Brute-force map of motions over two parameters (exit codes as stickslip's): a grid of (--first-steps"
+      " + 1) x (--second-steps + 1) cells, and in each cell the attractors that simulation finds from rest,"
+      " from where the run of the neighbouring cell (i - 1, same j) ended, and from --starts states: the "
+      "given one (--preset's, --set x10=...) and states scattered around it (--scatter, --seed): "
+      "--transients forcing periods simulated out, then --periods recorded on the stroboscopic section (the"
+      " state at forcing phase phi). Runs that end on the same periodic section orbit (to --tolerance, any "
+      "shift) are one attractor, listed with its period, stops and sticks per period, signature (orbit "
+      "type) and how many starts found it; motions that do not settle are listed as not-settled. The file "
+      "does not depend on --threads, --shard or MPI ranks. --shard k/N computes the rows j with j mod N = k"
+      " - 1; --merge OUT SHARD.csv... joins the shards into the file the whole run writes. Time is the "
+      "paper's scaled time.");
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   const std::string range = "the parameter's valid range (every cell is checked)";
