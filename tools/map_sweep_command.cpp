@@ -22,26 +22,29 @@ namespace stickslip::cli {
 
 namespace {
 
+// The options as given, with the library's defaults (BruteForceMapOptions).
+const BruteForceMapOptions kDefaults;
 struct MapSweepArgs {
   StartFlags origin;
-  std::string first = "omega";
-  std::string second = "u_r";
-  double first_from = 0.0, first_to = 0.0, second_from = 0.0, second_to = 0.0;
-  int first_steps = 10, second_steps = 10;
-  int transients = BruteForceMapOptions{}.transient_periods;
-  int periods = BruteForceMapOptions{}.recorded_periods;
-  int starts = BruteForceMapOptions{}.scattered_starts;
-  double scatter = BruteForceMapOptions{}.scatter;
-  int seed = 1;
-  double tolerance = BruteForceMapOptions{}.periodicity_tolerance;
-  int threads = 0;
-  std::string shard = "1/1";
+  std::string first = ToString(kDefaults.first.parameter);
+  std::string second = ToString(kDefaults.second.parameter);
+  double first_from = 0.0, first_to = 0.0, second_from = 0.0, second_to = 0.0;  // required
+  int first_steps = kDefaults.first.steps;
+  int second_steps = kDefaults.second.steps;
+  int transients = kDefaults.transient_periods;
+  int periods = kDefaults.recorded_periods;
+  int starts = kDefaults.scattered_starts;
+  double scatter = kDefaults.scatter;
+  int seed = static_cast<int>(kDefaults.seed);
+  double tolerance = kDefaults.periodicity_tolerance;
+  int threads = kDefaults.threads;
+  std::string shard = fmt::format("{}/{}", kDefaults.shard, kDefaults.shards);
   std::string output;
   std::string merge;  // the merged file
   std::vector<std::string> shards;
 };
 
-constexpr const char* kShardRange = "k/N with whole numbers 1 <= k <= N <= 100000";
+const std::string kShardRange = fmt::format("k/N with whole numbers 1 <= k <= N <= {}", BruteForceMapOptions::kMaxShards);
 
 std::string ToleranceRange() {
   return fmt::format("{} <= tolerance <= {}", BruteForceMapOptions::kMinTolerance, BruteForceMapOptions::kMaxTolerance);
