@@ -33,6 +33,8 @@ expect_map 2 "tolerance = 0 is invalid" --tolerance 0 --output "$m"
 expect_map 2 "scatter = -1 is invalid" --scatter -1 --output "$m"
 expect_map 2 "first-from = '0.6x' is not a finite number" --first-from 0.6x --output "$m"
 expect_map 2 "grid cell (i, j) = (0, 0)" --second-from 0.01 --output "$m"
+expect_map 2 "grid = 12024012 runs (1001 rows of 1001 cells, 12 runs a cell) is invalid" \
+  --first-steps 1000 --second-steps 1000 --starts 10 --output "$m"
 expect_map 2 "output = (not given) is invalid"
 expect_map 2 "output" --output "$work/out/missing/m.csv"
 

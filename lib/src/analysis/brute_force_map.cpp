@@ -92,9 +92,11 @@ Run SimulateRun(const Parameters& p, const State& start, double phi, const Brute
   }
   run.status = AttractorStatus::kPeriodic;
   run.period = motion.period;
-  // One confirmation: the record holds recorded_periods >= 2 k periods.
-  const MotionType type = ReadMotionType(motion.record, motion.period, 2.0 * std::numbers::pi / p.omega,
-                                         {o.periodicity_tolerance, 1, 200});
+  // Antisymmetry over one period of k T (the record holds recorded_periods >= 2 k periods).
+  MotionTypeOptions reading;
+  reading.periodicity_tolerance = o.periodicity_tolerance;
+  reading.confirmations = 1;
+  const MotionType type = ReadMotionType(motion.record, motion.period, 2.0 * std::numbers::pi / p.omega, reading);
   if (type.signature) run.signature = type.signature->ToString();
   motion.section.resize(motion.period);
   run.section = std::move(motion.section);
@@ -166,6 +168,15 @@ void BruteForceMapOptions::Validate(const Parameters& base) const {
   CheckWhole("shards", shards, 1, kMaxShards);
   CheckWhole("shard", shard, 1, shards);
   CheckWhole("threads", threads, 0, 1024);
+  // The rows j = shard - 1, shard - 1 + shards, ... below second.Count().
+  const long long rows_in_shard = second.Count() >= shard ? (second.Count() - shard) / shards + 1 : 0;
+  const long long runs = rows_in_shard * first.Count() * (2 + scattered_starts);
+  if (runs > kMaxRuns) {
+    throw InvalidInput("grid",
+                       fmt::format("{} runs ({} rows of {} cells, {} runs a cell)", runs, rows_in_shard, first.Count(),
+                                   2 + scattered_starts),
+                       fmt::format("at most {} runs in one shard (fewer cells or starts, or more shards)", kMaxRuns));
+  }
   // Every cell, not only the corners: u_r >= u_s and the natural frequencies depend on both.
   for (int j = 0; j < second.Count(); ++j) {
     for (int i = 0; i < first.Count(); ++i) {

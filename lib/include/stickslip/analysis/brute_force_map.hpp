@@ -77,12 +77,16 @@ struct BruteForceMapOptions {
   static constexpr int kMaxRecordedPeriods = 100000;
   static constexpr int kMaxScatteredStarts = 1000;
   static constexpr int kMaxShards = 100000;
+  // The runs one computation (one shard) holds in memory, at most: rows of the shard x cells of a
+  // row x (2 + scattered_starts). A larger grid is computed in shards (or MPI ranks).
+  static constexpr long long kMaxRuns = 10000000;
   static constexpr double kMinTolerance = 1e-14;
   static constexpr double kMaxTolerance = 1e-2;
 
   // Throws InvalidInput naming the member ("first.steps", "recorded_periods", "shard", ...) out of
   // range, the two axes' parameter when they are the same ("second.parameter"), or "grid" for a
-  // cell whose parameters fail Validate (u_r < u_s, a natural frequency, ...).
+  // cell whose parameters fail Validate (u_r < u_s, a natural frequency, ...) or a shard of more
+  // than kMaxRuns runs.
   void Validate(const Parameters& base) const;
 };
 
