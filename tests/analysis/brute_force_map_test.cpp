@@ -133,6 +133,11 @@ TEST(BruteForceMap, FileReadsBackToTheSameBytes) {
   std::string damaged = text;
   damaged.replace(damaged.find(",periodic,"), 10, ",periodik,");
   EXPECT_THROW(ReadBruteForceMapCsv(damaged, "map.csv"), InvalidInput);
+  // A cell count beyond the grid's bound (a merge would loop over it) is refused.
+  std::string huge = text;
+  const std::size_t row = huge.find('\n') + 1;  // "0,0,4,3,..."
+  huge.replace(huge.find(",4,", row), 3, ",2000000000,");
+  EXPECT_THROW(ReadBruteForceMapCsv(huge, "map.csv"), InvalidInput);
 }
 
 // Every run accounted for: each cell's attractors hold all its runs (rest, the neighbour but in

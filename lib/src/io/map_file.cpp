@@ -73,6 +73,11 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
       map.second_count = nj;
       map.section_phase = phase;
     }
+    for (const int c : {cni, cnj}) {
+      if (!(table.Integer(row, c) >= 1 && table.Integer(row, c) <= BruteForceMapOptions::kMaxSteps + 1)) {
+        throw table.Error(row, c, fmt::format("is invalid: valid 1 to {} cells", BruteForceMapOptions::kMaxSteps + 1));
+      }
+    }
     if (ni != map.first_count) throw table.Error(row, cni, fmt::format("differs from the first row's {}", map.first_count));
     if (nj != map.second_count) throw table.Error(row, cnj, fmt::format("differs from the first row's {}", map.second_count));
     if (phase != map.section_phase) throw table.Error(row, cphase, "differs from the first row's");
