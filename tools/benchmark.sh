@@ -10,13 +10,15 @@ trap 'rm -f "$json"' EXIT
 /usr/bin/python3 - "$json" "$root/results/benchmark.md" <<'PY'
 import json, os, sys
 data = json.load(open(sys.argv[1]))
-median, sweep, per_period = {}, {}, {}
+median, sweep, per_period, map_cells = {}, {}, {}, {}
 for b in data["benchmarks"]:
     if b.get("aggregate_name") != "median":
         continue
     name, arg = b["run_name"].split("/")[:2]
     if name == "SweepWallTime":
         sweep[arg] = (int(b["workers"]), b["real_time"])  # threads:1 / threads:0; milliseconds
+    elif name == "MapCellsPerCore":
+        map_cells[arg] = (int(b["workers"]), b["cells_per_s_per_core"])  # threads:1 / threads:0
     elif name == "SimulationPerPeriod":
         per_period[int(arg.split(":")[1])] = b["us_per_period"]
     else:
@@ -40,6 +42,9 @@ lines += ["", "Brute-force sweep (§5.1 over ω, 4 chains up and down, 11 values
           f"| 1 | {serial:.0f} | 1.00x |",
           f"| {cores} (every core) | {parallel:.0f} | {serial / parallel:.2f}x |",
           "", f"Target: the chains spread over the cores, a speed-up near {cores} on {cores} cores."]
+(_, one), (cores, every) = map_cells["threads:1"], map_cells["threads:0"]
+lines += ["", "Brute-force map (§6 over (ω, u_r), 6 x 4 cells, 6 starts and 500 + 24 periods per cell: the command "
+          f"line's defaults): {one:.1f} cells/s per core on 1 thread, {every:.1f} per core on {cores} threads."]
 short, long = min(per_period), max(per_period)
 lines += ["", f"Exact simulator, §5.1 motion: {per_period[short]:.2f} µs per forcing period over {short} periods, "
           f"{per_period[long]:.2f} µs over {long} (ratio {per_period[long] / per_period[short]:.2f}).", "",

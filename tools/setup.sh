@@ -7,6 +7,7 @@ STICKSLIP_PACKAGES=(
   cmake ninja-build g++
   libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
   clang libclang-rt-14-dev
   auto-07p python3-numpy python3-matplotlib
   python3-dev pybind11-dev python3-pybind11 python3-pytest

@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "map_sweep_command.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/command_options.hpp"
 
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
       "stickslip");
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddCheckCommand(app),
-                                         AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app),
+                                         AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app),
                                          AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
   try {
     app.parse(argc, argv);
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, export, find, plot", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, map-sweep, export, find, plot", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

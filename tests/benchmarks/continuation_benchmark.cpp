@@ -10,7 +10,7 @@
 //
 // Also the brute-force sweep's wall time on 1 thread and on every core, for the parallel
 // speed-up of its chains, and the exact simulator's cost per forcing period over a short and a
-// long run.
+// long run; and the brute-force map's cells per second per core.
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -22,6 +22,7 @@
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
@@ -83,6 +84,27 @@ void SweepWallTime(benchmark::State& state) {
   state.counters["workers"] = WorkerCount(options.threads, static_cast<int>(starts.size()));
 }
 BENCHMARK(SweepWallTime)->ArgName("threads")->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// The brute-force map of section 6 over (omega, u_r), 6 x 4 cells with the command line's
+// defaults (500 transient and 24 recorded periods, rest, the neighbour and 4 more starts per
+// cell), on range(0) threads (0: every core): cells per second per core.
+void MapCellsPerCore(benchmark::State& state) {
+  const PaperExample& e = *FindPaperExample("paper-6");
+  BruteForceMapOptions options;
+  options.first = {ParameterId::kOmega, 0.55, 0.6, 5};
+  options.second = {ParameterId::kStaticFriction, 1.2, 1.5, 3};
+  options.centre = e.initial_state;
+  options.threads = static_cast<int>(state.range(0));
+  const int cells = options.first.Count() * options.second.Count();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ComputeBruteForceMap(e.parameters, e.phi, options).cells.size());
+  }
+  const int workers = WorkerCount(options.threads, cells);
+  state.counters["workers"] = workers;
+  state.counters["cells_per_s_per_core"] =
+      benchmark::Counter(static_cast<double>(cells) / workers, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(MapCellsPerCore)->ArgName("threads")->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // The exact simulator over range(0) forcing periods of section 5.1's motion: the cost per period
 // must not grow with the duration (a stick's exit is searched with a reach doubled from one

@@ -29,4 +29,12 @@ grep -q $'\rsimulate: [0-9.e+]*/500001 periods' "$work/sim" || { od -c "$work/si
 [ ! -s "$work/sim-stderr" ]
 script -qec "'$bin' find --preset paper-4.1 --transients 200000 > /dev/null" /dev/null > "$work/find"
 grep -q $'\rfind: transient: [0-9.e+]*/200000 periods' "$work/find" || { od -c "$work/find" | head; exit 1; }
+# map-sweep: cells done. 4 x 3 cells, 3 runs each of 8000 + 4 periods, on one thread (2 s and more).
+map="map-sweep --preset paper-6 --first omega --first-from 0.55 --first-to 0.57 --first-steps 3 --second u_r"
+map+=" --second-from 1.3 --second-to 1.4 --second-steps 2 --transients 8000 --periods 4 --starts 1 --threads 1"
+script -qec "'$bin' $map --output '$work/map.csv' > /dev/null" /dev/null > "$work/map"
+grep -q $'\rmap-sweep: [0-9]*/12 cells (' "$work/map" || { od -c "$work/map" | head; exit 1; }
+"$bin" $map --output "$work/map-piped.csv" 2> "$work/map-stderr" > /dev/null
+[ ! -s "$work/map-stderr" ]
+cmp "$work/map.csv" "$work/map-piped.csv"
 echo "progress line ok"

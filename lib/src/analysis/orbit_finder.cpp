@@ -10,6 +10,7 @@
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/analysis/motion_type.hpp"
 #include "stickslip/orbits/signature.hpp"
 
 namespace stickslip {
@@ -46,113 +47,10 @@ void FindOrbitOptions::Validate() const {
 
 namespace {
 
-
-// |a - b|_inf relative to 1 + |b|_inf, as the tolerance is stated; infinite for non-finite states.
-double RelativeDistance(const State& a, const State& b) {
-  const double d = (a - b).lpNorm<Eigen::Infinity>() / (1.0 + b.lpNorm<Eigen::Infinity>());
-  return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
-}
-
-// The preference of an event as the orbit's origin: lower is better (see the header).
-int OriginRank(const Event& e) {
-  if (e.mode_after != Mode::kSlipNegative) return 3;
-  if (e.kind == EventKind::kStop && e.mode_before == Mode::kSlipPositive) return 0;
-  if (e.kind == EventKind::kStickExit) return 1;
-  return 2;
-}
-
-bool SameEvent(const Event& a, const Event& b, bool mirrored) {
-  auto m = [&](Mode mode) { return mirrored ? Mirror(mode) : mode; };
-  return a.kind == b.kind && m(a.mode_before) == b.mode_before && m(a.mode_after) == b.mode_after;
-}
-
 double ReducedPhase(double phase) {
   double reduced = std::fmod(phase, 2.0 * std::numbers::pi);
   if (reduced < 0.0) reduced += 2.0 * std::numbers::pi;
   return reduced;
-}
-
-// One period's events: the origin's index and the number of listed segments, or why there is
-// none. The period's end is the event like the origin (its mirror image when antisymmetric)
-// nearest to origin + covered time; it must fall within kEndSlack periods of it.
-struct PeriodEvents {
-  int origin = -1;
-  int segments = 0;
-  std::string problem;
-  bool unsettled = false;  // the origin's event comes back, but off the period: not settled yet
-};
-
-PeriodEvents ReadPeriod(const std::vector<Event>& events, double covered, double period_time, double period,
-                        bool antisymmetric, int max_segments) {
-  constexpr double kEndSlack = 1e-3;  // forcing periods
-  constexpr const char* kNoEvent = "no stop or stick exit in a period (a permanent stick has no orbit type)";
-  PeriodEvents found;
-  if (events.empty()) {
-    found.problem = kNoEvent;
-    return found;
-  }
-  // Every kind of event of the period occurs once in the period from the first event on (the
-  // record's start is no event, even where it lies on one).
-  const double window_end = events.front().t + period_time - kEndSlack * period;
-  int best_rank = 4;
-  for (int i = 0; i < static_cast<int>(events.size()) && events[i].t < window_end; ++i) {
-    if (OriginRank(events[i]) < best_rank) {
-      best_rank = OriginRank(events[i]);
-      found.origin = i;
-    }
-  }
-  if (found.origin < 0 || events.front().t >= period_time) {
-    found.problem = kNoEvent;
-    found.origin = -1;
-    return found;
-  }
-  const Event& origin = events[found.origin];
-  const double end_time = origin.t + covered;
-  double best = std::numeric_limits<double>::infinity();
-  for (int j = found.origin + 1; j < static_cast<int>(events.size()) && j - found.origin <= max_segments + 1; ++j) {
-    const double distance = std::abs(events[j].t - end_time);
-    if (SameEvent(origin, events[j], antisymmetric) && distance < best) {
-      best = distance;
-      found.segments = j - found.origin;
-    }
-  }
-  if (!(best <= kEndSlack * period)) {
-    found.problem = found.segments == 0 || found.segments > max_segments
-                        ? fmt::format("the origin's event does not come back within {} segments", max_segments)
-                        : fmt::format("the origin's event comes back {:.3g} off the period", best);
-    found.unsettled = found.segments > 0 && found.segments <= max_segments;
-    found.segments = 0;
-  } else if (found.segments > max_segments) {
-    found.problem = fmt::format("{} segments in a period, more than max_segments = {}", found.segments, max_segments);
-    found.segments = 0;
-  }
-  return found;
-}
-
-// For the k of result->period_multiple: antisymmetry X(t + k T/2) = -X(t), on the section and
-// half a period later (odd k only: the forcing must change sign), into *result; then one
-// period's events from the origin on (the whole period when the events do not bear out the
-// antisymmetry the section showed).
-PeriodEvents ReadOnePeriod(const SimulationResult& record, const std::vector<State>& section, double period,
-                           const FindOrbitOptions& options, FindOrbitResult* result) {
-  const int k = result->period_multiple;
-  result->antisymmetry_mismatch = std::numeric_limits<double>::quiet_NaN();
-  result->antisymmetric = false;
-  if (k % 2 == 1) {
-    double mismatch = 0.0;
-    for (int n = 0; n < options.confirmations * k; ++n) {
-      const State half = StateAt(record, n * period + 0.5 * k * period);
-      mismatch = std::max(mismatch, RelativeDistance(-half, section[n]));
-    }
-    result->antisymmetry_mismatch = mismatch;
-    result->antisymmetric = mismatch <= options.periodicity_tolerance;
-  }
-  if (result->antisymmetric) {
-    const PeriodEvents half = ReadPeriod(record.events, 0.5 * k * period, k * period, period, true, options.max_segments);
-    if (half.segments > 0) return half;
-    result->antisymmetric = false;
-  }
-  return ReadPeriod(record.events, k * period, k * period, period, false, options.max_segments);
 }
 
 // The section mismatch of every k = 1..max_multiple (index k - 1): the largest relative distance
@@ -218,7 +116,7 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
   State settled = x0;
   SimulationResult record;
   std::vector<State> section;
-  PeriodEvents period_events;
+  MotionType period_events;
   std::string unsettled;  // why the last round's section repeat was not taken
   int next = options.transient_periods;
   for (int round = 0;; ++round) {
@@ -254,7 +152,10 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
       if (mismatches[k - 1] > options.periodicity_tolerance) continue;
       result.period_multiple = k;
       result.mismatch = mismatches[k - 1];
-      period_events = ReadOnePeriod(record, section, period, options, &result);
+      period_events = ReadMotionType(record, k, period,
+                                     {options.periodicity_tolerance, options.confirmations, options.max_segments});
+      result.antisymmetric = period_events.antisymmetric;
+      result.antisymmetry_mismatch = period_events.antisymmetry_mismatch;
       if (period_events.unsettled) {
         unsettled = fmt::format("the section repeats after k = {} forcing periods to {:.3g}, but {}", k,
                                 mismatches[k - 1], period_events.problem);
@@ -280,31 +181,18 @@ FindOrbitResult FindOrbit(const Parameters& parameters, const State& x0, double 
                           unsettled);
     return result;
   }
-  if (period_events.segments == 0) {
+  if (!period_events.signature) {
     result.status = FindOrbitStatus::kNoOrbitType;
     result.message = fmt::format("the motion repeats after k = {} forcing periods, but {}", k, period_events.problem);
     return result;
   }
-  const bool antisymmetric = result.antisymmetric;
   const int first = period_events.origin;
   const int m = period_events.segments;
-  std::vector<Mode> modes;
-  for (int j = first; j < first + m; ++j) {
-    modes.push_back(record.events[j].mode_after);
-  }
-  std::optional<Signature> signature;
-  try {
-    signature.emplace(modes, antisymmetric, k);
-  } catch (const InvalidInput& e) {
-    result.status = FindOrbitStatus::kNoOrbitType;
-    result.message = fmt::format("the motion repeats after k = {} forcing periods, but its events are no orbit type: {}",
-                                 k, e.what());
-    return result;
-  }
+  const Signature& signature = *period_events.signature;
 
   const Event& origin = record.events[first];
   result.origin_time = origin.t;
-  Orbit read_off{*signature, parameters, origin.state(0), origin.state(1), origin.state(2),
+  Orbit read_off{signature, parameters, origin.state(0), origin.state(1), origin.state(2),
                  ReducedPhase(parameters.omega * origin.t + phi), {}};
   for (int j = first; j < first + m; ++j) read_off.durations.push_back(record.events[j + 1].t - record.events[j].t);
   const StartInput start = StartInputOf(read_off);

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "stickslip/model/simulation.hpp"
+#include "stickslip/analysis/settled_motion.hpp"
 #include "stickslip/model/transient.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
@@ -31,51 +31,18 @@ std::runtime_error PointError(const SweepOptions& o, int chain, SweepPass pass, 
                                         ToString(pass), step, ToString(o.parameter), p[o.parameter], message));
 }
 
-// The simulation of one point, or an error naming the point.
-SimulationResult SimulateOrThrow(const Parameters& p, const State& x0, double phi, double duration,
-                                 const SweepOptions& o, int chain, SweepPass pass, int step) {
-  SimulationOptions options;
-  options.duration = duration;
-  options.max_events = o.max_events_per_simulation;
-  SimulationResult r = SimulateExact(p, x0, phi, options);
-  if (!r.Completed()) throw PointError(o, chain, pass, step, p, r.message);
-  return r;
-}
-
-// One point: transients from `start`, then the recorded section. Time 0 is a section time (the
-// forcing phase there is phi_section, as at every multiple of the period).
+// One point: transients from `start`, then the recorded section (SimulateSettled). Time 0 is a
+// section time (the forcing phase there is phi_section, as at every multiple of the period).
 SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_section, const SweepOptions& o,
                          int chain, SweepPass pass, int step) {
   Parameters p = base;
   p[o.parameter] = ValueAt(o, pass, step);
-  const double period = 2.0 * std::numbers::pi / p.omega;
-  // The transients in chunks (SimulateTransient), each a simulation under max_events_per_simulation,
-  // so that the largest --transients (1e6 periods, millions of events) runs.
-  TransientOptions transient;
-  transient.periods = o.transient_periods;
-  transient.simulation.max_events = o.max_events_per_simulation;
-  const Transient settled_transient = SimulateTransient(SimulateExact, p, start, phi_section, transient);
-  if (!settled_transient.Completed()) throw PointError(o, chain, pass, step, p, settled_transient.message);
-  const State settled = settled_transient.state;
-  const SimulationResult r =
-      SimulateOrThrow(p, settled, phi_section, o.recorded_periods * period, o, chain, pass, step);
-  SweepPoint point{chain, pass, step, p[o.parameter], {}, 0.0, 0.0, 0};
-  for (int k = 1; k <= o.recorded_periods; ++k) point.section.push_back(StateAt(r, k * period));
-  for (const Event& e : r.events) {
-    point.stops_per_period += e.kind == EventKind::kStop;
-    point.sticks_per_period += e.mode_after == Mode::kStick;
-  }
-  point.stops_per_period /= o.recorded_periods;
-  point.sticks_per_period /= o.recorded_periods;
-  const int n = static_cast<int>(point.section.size());
-  for (int candidate = 1; candidate <= n / 2 && point.period == 0; ++candidate) {
-    bool repeats = true;
-    for (int k = 0; k + candidate < n && repeats; ++k) {
-      repeats = (point.section[k + candidate] - point.section[k]).lpNorm<Eigen::Infinity>() <= o.periodicity_tolerance;
-    }
-    if (repeats) point.period = candidate;
-  }
-  return point;
+  const SettleOptions settle{o.transient_periods, o.recorded_periods, o.periodicity_tolerance,
+                             o.max_events_per_simulation};
+  SettledMotion motion = SimulateSettled(p, start, phi_section, settle);
+  if (!motion.Completed()) throw PointError(o, chain, pass, step, p, motion.message);
+  return SweepPoint{chain,    pass, step, p[o.parameter], std::move(motion.section), motion.stops_per_period,
+                    motion.sticks_per_period, motion.period};
 }
 
 // A chain's up pass and then its down pass, each point from the last section state before it.

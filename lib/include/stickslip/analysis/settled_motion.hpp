@@ -1,0 +1,51 @@
+// A motion simulated until it has settled, as the brute-force sweep and map see it: transients
+// simulated out with the exact simulator (in chunks, model/transient.hpp), then a record of
+// recorded_periods forcing periods whose stroboscopic section (the state at the forcing phase
+// phi_section, once per period), stops and sticks per period and period on the section are read.
+// The one per-point computation of analysis/sweep.hpp and analysis/brute_force_map.hpp.
+//
+//   const SettledMotion m = SimulateSettled(p, x0, phi, SettleOptions{});
+//   if (m.Completed() && m.period > 0) use(m.section);
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/model/flows.hpp"
+#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/simulation.hpp"
+
+namespace stickslip {
+
+struct SettleOptions {
+  // Forcing periods simulated and discarded (0 to kMaxTransientPeriods), in chunks of 1000.
+  int transient_periods = 200;
+  int recorded_periods = 20;  // forcing periods recorded (>= 1)
+  // Section points repeat when |X - Y|_inf <= periodicity_tolerance (absolute).
+  double periodicity_tolerance = 1e-6;
+  // The simulator's guard against chattering, per simulation (per transient chunk).
+  int max_events_per_simulation = 1000000;
+};
+
+struct SettledMotion {
+  // The section after the transient: the states at t = k 2 pi/omega, k = 1..recorded_periods,
+  // time 0 being the end of the transient. Empty when the simulation stopped early.
+  std::vector<State> section;
+  double stops_per_period = 0.0;
+  double sticks_per_period = 0.0;
+  int period = 0;  // smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none
+  // The recorded periods (events and segments), from the end of the transient at t = 0.
+  SimulationResult record;
+  // Where the motion got to: the last section state, or where a simulation stopped early.
+  State last = State::Zero();
+  SimulationEnd end = SimulationEnd::kDuration;
+  std::string message;  // why a simulation stopped early, if one did
+  bool Completed() const { return end == SimulationEnd::kDuration; }
+};
+
+// From `start` at t = 0 (forcing phase phi_section) at p. Preconditions: Validate(p) passed,
+// options in range (the callers check them). A simulation that stops early (max events, the event
+// search's bound) is reported in `end` and `message`, not thrown.
+SettledMotion SimulateSettled(const Parameters& p, const State& start, double phi_section, const SettleOptions& options);
+
+}  // namespace stickslip

@@ -1,0 +1,35 @@
+// The brute-force map's file (analysis/brute_force_map.hpp): one writer, one reader, and the merge
+// of shards. A CSV table, one row per section point of each attractor of each cell:
+//
+//   i,j,ni,nj,<first>,<second>,section_phase,attractors,attractor,status,period,stops_per_period,
+//   sticks_per_period,starts,signature,k,x1,x2,v1,v2
+//
+// i, j the cell (ni, nj cells along each axis); <first>, <second> the two parameters' names and
+// their values in the cell; attractors the number found in the cell, attractor its index (from
+// 0); status periodic, not-settled or incomplete; starts the runs that ended on it; signature its
+// orbit type (empty if none was read); k = 0..period-1 its section points (one row, k = 0, the
+// last state, when not periodic). Numbers in shortest round-trip form, so a file read and written
+// again is the same bytes, and the file does not depend on threads, shards or ranks.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stickslip/analysis/brute_force_map.hpp"
+
+namespace stickslip {
+
+std::string BruteForceMapCsv(const BruteForceMap& map);
+
+// The map of a file written by BruteForceMapCsv; `name` (the file's path) starts every message.
+// Throws InvalidInput naming the file, the line and the column of the first problem.
+BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& name);
+
+// The shards of one map (computed with shard = 1..N of N, in any order) as the one map: every cell
+// once, by j then i. Throws InvalidInput naming "merge" when the shards are of different grids
+// (parameters, cell counts, values or section phase) or a cell is missing or in two shards; the
+// message names the shard (`names[s]` for shards[s]) and the cell.
+BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, const std::vector<std::string>& names);
+
+}  // namespace stickslip

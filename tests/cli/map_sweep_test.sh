@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# stickslip map-sweep: bad input (one line naming the field, exit 2, nothing written); the file
+# the same bytes for 1 and 2 threads; shards merged give the unsharded file; a merge of shards of
+# different grids, with a cell twice or one missing, is refused; with the MPI front end
+# (STICKSLIP_MPI), 1 and 2 ranks write the threaded run's bytes.
+source "$(dirname "$0")/expect.sh"
+# The map's options, with KEY VALUE pairs replacing or adding options: map_args --periods 1 ...
+map_args() {
+  declare -A o=([--preset]=paper-6 [--first]=omega [--first-from]=0.55 [--first-to]=0.6 [--first-steps]=3
+                [--second]=u_r [--second-from]=1.2 [--second-to]=1.5 [--second-steps]=2 [--transients]=30
+                [--periods]=6 [--starts]=2)
+  while [ $# -gt 0 ]; do o[$1]=$2; shift 2; done
+  args=(map-sweep)
+  for key in "${!o[@]}"; do args+=("$key" "${o[$key]}"); done
+}
+# expect_map CODE TEXT KEY VALUE...: map-sweep with those options exits with CODE, TEXT on stderr.
+expect_map() {
+  local code=$1 text=$2
+  shift 2
+  map_args "$@"
+  expect "$code" "$text" "$bin" "${args[@]}"
+}
+m="$work/out/m.csv"
+expect_map 2 "first-steps = 2.5 is invalid" --first-steps 2.5 --output "$m"
+expect_map 2 "first-steps = 10001 is invalid" --first-steps 10001 --output "$m"
+expect_map 2 "second = 'omega' is invalid" --second omega --output "$m"
+expect_map 2 "first = 'mu' is invalid" --first mu --output "$m"
+expect_map 2 "shard = '3/2' is invalid" --shard 3/2 --output "$m"
+expect_map 2 "shard = '0/2' is invalid" --shard 0/2 --output "$m"
+expect_map 2 "shard = '1' is invalid" --shard 1 --output "$m"
+expect_map 2 "periods = 1 is invalid" --periods 1 --output "$m"
+expect_map 2 "tolerance = 0 is invalid" --tolerance 0 --output "$m"
+expect_map 2 "scatter = -1 is invalid" --scatter -1 --output "$m"
+expect_map 2 "first-from = '0.6x' is not a finite number" --first-from 0.6x --output "$m"
+expect_map 2 "grid cell (i, j) = (0, 0)" --second-from 0.01 --output "$m"
+expect_map 2 "grid = 12024012 runs (1001 rows of 1001 cells, 12 runs a cell) is invalid" \
+  --first-steps 1000 --second-steps 1000 --starts 10 --output "$m"
+expect_map 2 "output = (not given) is invalid"
+expect_map 2 "output" --output "$work/out/missing/m.csv"
+
+# Threads, shards and merge.
+map_args
+map=("${args[@]}")
+expect 2 "shards = '$work/out/stray.csv' is invalid" "$bin" "${map[@]}" --output "$m" "$work/out/stray.csv"
+"$bin" "${map[@]}" --threads 1 --output "$work/one.csv" > /dev/null || fail "1 thread"
+"$bin" "${map[@]}" --threads 2 --output "$work/two.csv" > /dev/null || fail "2 threads"
+cmp -s "$work/one.csv" "$work/two.csv" && pass || fail "1 and 2 threads differ"
+head -1 "$work/one.csv" | grep -qx "i,j,ni,nj,omega,u_r,section_phase,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2" \
+  && pass || fail "header"
+for k in 1 2; do "$bin" "${map[@]}" --shard $k/2 --output "$work/shard$k.csv" > /dev/null || fail "shard $k"; done
+"$bin" map-sweep --merge "$work/merged.csv" "$work/shard2.csv" "$work/shard1.csv" > /dev/null || fail "merge"
+cmp -s "$work/one.csv" "$work/merged.csv" && pass || fail "merged shards differ from the whole run"
+
+cp "$work/shard1.csv" "$work/out/"
+expect 2 "is in no shard" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv"
+expect 2 "is in '$work/out/shard1.csv' and in '$work/out/shard1.csv'" \
+  "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv" "$work/out/shard1.csv"
+map_args --first-to 0.61 --shard 2/2 --output "$work/out/other.csv"
+"$bin" "${args[@]}" > /dev/null || fail "other grid"
+expect 2 "at omega" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv" "$work/out/other.csv"
+rm "$work/out/other.csv"
+expect 2 "merge = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
+
+# The figure (tools/map_figure.py, python3-matplotlib): a PNG.
+/usr/bin/python3 "$root/tools/map_figure.py" "$work/one.csv" "$work/map.png" && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \
+  && pass || fail "the map's figure"
+
+if [ -n "${STICKSLIP_MPI:-}" ]; then
+  # As root (CI): --allow-run-as-root; 2 ranks on any machine: --oversubscribe. Shared-memory
+  # messages copied through a buffer rather than across address spaces (CMA), which containers that
+  # restrict ptrace refuse.
+  export OMPI_MCA_btl_vader_single_copy_mechanism=none
+  mpi=("${MPIEXEC:-mpirun}" --allow-run-as-root --oversubscribe)
+  "${mpi[@]}" -np 1 "$STICKSLIP_MPI" "${map[@]}" --output "$work/rank1.csv" > /dev/null || fail "mpirun -np 1"
+  "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${map[@]}" --threads 1 --output "$work/rank2.csv" > /dev/null || fail "mpirun -np 2"
+  cmp -s "$work/one.csv" "$work/rank1.csv" && pass || fail "1 rank differs from the threaded run"
+  cmp -s "$work/one.csv" "$work/rank2.csv" && pass || fail "2 ranks differ from the threaded run"
+  # Bad input on every rank: one line, exit 2.
+  map_args --periods 1 --output "$work/out/m.csv"
+  "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${args[@]}" > "$work/stdout" 2> "$work/stderr"
+  code=$?
+  [ "$code" -eq 2 ] && [ "$(grep -c 'periods = 1 is invalid' "$work/stderr")" -eq 1 ] && [ ! -e "$work/out/m.csv" ] \
+    && pass || fail "MPI bad input: exit $code, $(cat "$work/stderr")"
+else
+  echo "the MPI front end is not built: MPI checks skipped"
+fi
+finish

@@ -1,0 +1,31 @@
+// stickslip map-sweep: the brute-force map over two parameters (analysis/brute_force_map.hpp),
+// its --shard option and its --merge step. Declared here for the MPI front end
+// (map_sweep_mpi_main.cpp), which parses the same options and computes the map on every rank.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "commands.hpp"
+#include "stickslip/analysis/brute_force_map.hpp"
+
+namespace stickslip::cli {
+
+// What the options describe: checked, the output not yet (the runner checks it where it writes).
+struct MapSweepPlan {
+  Parameters base;
+  double phi = 0.0;  // the section phase
+  BruteForceMapOptions options;
+  std::string output;
+};
+using MapSweepRunner = std::function<int(const MapSweepPlan&)>;
+
+// In this process, on --threads threads; writes the map file whole.
+int RunMapSweepHere(const MapSweepPlan& plan);
+// The line printed after a map is written.
+std::string MapSweepSummary(const BruteForceMap& map, const std::string& output);
+
+// The subcommand; `runner` computes and writes the map. With `merge`, --merge OUT SHARD... too.
+Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner = RunMapSweepHere, bool merge = true);
+
+}  // namespace stickslip::cli
