@@ -45,6 +45,7 @@ TEST_P(PaperBranch, StartsOnThePaperOrbitWhenTheRunKeepsThePresetUnknowns) {
   const RunFile run = ReadRunFile(GetParam());
   if (run.preset.empty()) GTEST_SKIP() << "the run restarts from an earlier run's point";
   if (!run.free.empty() || !run.fix.empty()) GTEST_SKIP() << "the run solves for other unknowns";
+  if (!run.set.empty() || !run.guess.empty()) GTEST_SKIP() << "the run starts from other data or another guess";
   const PaperPreset& preset = *FindPaperPreset(run.preset);
   const Orbit guess = preset.Guess();
   const OrbitSolution solved = SolveOrbit(guess, FreeIndices(guess.signature, preset.unknowns),
