@@ -116,7 +116,7 @@ Command AddTraceCommand(CLI::App& app) {
                  fmt::format("branches per direction (1 to {})", kMaxTraceBranches));
   AddNumberOption(*cmd, "--max-amplitude", &args->options.max_amplitude, "a finite max-amplitude > 0",
                   "a resonance ends the direction where max |x1|, |x2| over the orbit (scaled displacement, "
-                  "sampled 64 times a period) passes this (> 0)");
+                  "exact) passes this (> 0)");
   AddNumberOption(*cmd, "--loop-tolerance", &args->options.loop_tolerance, "0 < loop-tolerance <= 1e-2",
                   "the chain has come back to a point it visited when the signature agrees and the parameter "
                   "(relative), start state, phase and period differ by at most this (0 < tol <= 1e-2)");

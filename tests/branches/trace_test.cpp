@@ -241,7 +241,6 @@ TEST(Trace, RefusesInvalidOptions) {
            {"max_branches", [](TraceOptions* o) { o->max_branches = kMaxTraceBranches + 1; }},
            {"max_amplitude", [](TraceOptions* o) { o->max_amplitude = 0.0; }},
            {"max_amplitude", [](TraceOptions* o) { o->max_amplitude = std::numeric_limits<double>::infinity(); }},
-           {"amplitude_samples", [](TraceOptions* o) { o->amplitude_samples = 1; }},
            {"loop_tolerance", [](TraceOptions* o) { o->loop_tolerance = 0.0; }},
            {"loop_tolerance", [](TraceOptions* o) { o->loop_tolerance = 1e300; }},
            {"nudge", [](TraceOptions* o) { o->type_switch.nudge = -1.0; }}}) {

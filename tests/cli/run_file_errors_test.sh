@@ -81,5 +81,20 @@ expect 3 "does not converge" "$good
 x10 = 40.0
 d1 = 0.01"
 
+# switch_branch (the branch leaving a PD or SB): at another label, and with multiple shooting.
+"$bin" run --results "$work/results" "$(dirname "$0")/../../continuation-scripts/paper-5.2-omega-to-pd.toml" > /dev/null ||
+  { echo "FAIL: the run to switch from"; failures=$((failures + 1)); }
+switched='output = "t"
+[start]
+restart = { run = "paper-5.2-omega-to-pd", label = "PD2", switch_branch = true }
+[continuation]
+parameter = "omega"
+direction = "up"
+range = [0.6, 0.8]'
+expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (a EP): valid at a period doubling (PD) or a symmetry breaking (SB)" "${switched/PD2/EP1}"
+expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" "$switched
+shooting = \"multiple\""
+expect 2 "key 'start.restart.switch_branch' must be true or false" "${switched/switch_branch = true/switch_branch = 1}"
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 
 namespace stickslip {
 
@@ -17,10 +18,10 @@ namespace ov = orbit_variables;
 
 const char* DirectionName(int direction) { return direction > 0 ? "up" : "down"; }
 
-double Amplitude(const Orbit& orbit, int samples) {
-  double amplitude = 0.0;
-  for (const State& s : orbit.Sample(samples)) amplitude = std::max({amplitude, std::abs(s(0)), std::abs(s(1))});
-  return amplitude;
+// max |x1|, |x2| over the orbit, exact (nan where the extrema's search was cut short: no bound).
+double Amplitude(const Orbit& orbit) {
+  const OrbitMeasures m = Measure(orbit);
+  return std::max(m.amplitude_x1, m.amplitude_x2);
 }
 
 double Lambda(const Orbit& orbit, const std::string& parameter) {
@@ -66,7 +67,7 @@ class BranchRunner {
       BranchEnd why = BranchEnd::kStopped;
       for (; checked < b.points.size() && !stop; ++checked) {
         const BranchPoint& point = b.points[checked];
-        const double amplitude = Amplitude(problem.system->ToOrbit(point.u), options_.amplitude_samples);
+        const double amplitude = Amplitude(problem.system->ToOrbit(point.u));
         if (!(amplitude <= options_.max_amplitude)) {
           stop.emplace(static_cast<int>(checked),
                        fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} passed max_amplitude = {:g} at "

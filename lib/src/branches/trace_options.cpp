@@ -16,9 +16,6 @@ void TraceOptions::ValidateOwnFields() const {
   if (!(max_amplitude > 0.0 && std::isfinite(max_amplitude))) {
     throw InvalidInput("max_amplitude", max_amplitude, "a finite max_amplitude > 0");
   }
-  if (!(amplitude_samples >= 2 && amplitude_samples <= 100000)) {
-    throw InvalidInput("amplitude_samples", amplitude_samples, WholeNumberRange("amplitude_samples", 2, 100000));
-  }
   if (!(loop_tolerance > 0.0 && loop_tolerance <= 1e-2)) {
     throw InvalidInput("loop_tolerance", loop_tolerance, "0 < loop_tolerance <= 1e-2");
   }

@@ -45,13 +45,20 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   o.detect_branch_points = run.detect_branch_points;
   o.continue_past_terminal = run.continue_past_type_changes;
   if (run.restart_switch_branch) {
+    if (setup.shooting == ShootingChoice::kMultiple) {
+      throw fail("continuation.shooting", "= \"multiple\" is invalid with start.restart.switch_branch: valid \"auto\" "
+                                          "or \"single\" (the branch that leaves a bifurcation is solved by single shooting)");
+    }
     // The label's letters are its type (LP2: LP).
     const std::string& label = run.restart_label;
     const std::string type = label.substr(0, label.find_first_of("0123456789"));
     try {
       setup = BranchFromBifurcation(type, setup, run.direction).setup;
     } catch (const InvalidInput& e) {
-      throw fail("start.restart.switch_branch", fmt::format("= true is invalid at '{}': {}", label, e.Predicate()));
+      throw fail("start.restart.switch_branch",
+                 e.valid_range().empty()
+                     ? fmt::format("= true is invalid at '{}': {}", label, e.Predicate())
+                     : fmt::format("= true is invalid at '{}' (a {}): valid at {}", label, type, e.valid_range()));
     }
   }
   // User values address unknowns: the free variables in their order, then the parameter (of the

@@ -12,9 +12,8 @@
 //                        parameter and the orbit within loop_tolerance; where that is the other
 //                        direction's last end, the chains met and both end so. A branch that closes
 //                        on itself (BranchEnd::kClosedLoop) is a loop too
-//   resonance            the amplitude, max |x1| and |x2| over the orbit, passed max_amplitude. It
-//                        is read from the orbit sampled at amplitude_samples times a period (a lower
-//                        bound of the exact amplitude, until the monitor records it exactly)
+//   resonance            the amplitude, max |x1| and |x2| over the orbit (exact: the measures of
+//                        orbits/orbit_measures.hpp), passed max_amplitude
 //   not-confirmed        no adjacent type confirmed by simulation (SwitchAt's reasons, per margin)
 //   no-adjacent-type     the margin has none (a tangential end)
 //   family-end           u_s reached 0 (sliding-friction), the end of the physical family
@@ -45,7 +44,6 @@ namespace stickslip {
 struct TraceOptions {
   int max_branches = 50;        // per direction, 1 to kMaxTraceBranches
   double max_amplitude = 1e3;   // a resonance: max |x1|, |x2| over an orbit above this (> 0)
-  int amplitude_samples = 64;   // times a period the amplitude is read at, 2 to 1e5
   // Two points are one (a loop) when their signatures agree and the parameter (relative to
   // 1 + |lambda|), the start state, the phase and the period (OrbitDistance) differ by at most this.
   double loop_tolerance = 1e-7;
