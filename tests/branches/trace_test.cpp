@@ -234,6 +234,31 @@ TEST(Trace, GivesTheSameFilesFromRunToRun) {
   EXPECT_EQ(a.trace_json, b.trace_json);
 }
 
+// The §5.2 type's admissible stretch holds a period doubling (paper-5.2-omega-to-pd): the trace
+// records the period-2 branch that leaves it, with the period-1 orbit traversed twice singular there
+// in the period-2 problem, and does not follow it.
+TEST(Trace, RecordsTheBranchLeavingAPeriodDoublingWithoutFollowingIt) {
+  OrbitContinuationSetup setup = RunFileSetup("paper-5.2-omega-to-pd");
+  setup.options.lambda_min = 0.7;
+  const TraceResult trace = TraceOrbits(setup);
+  std::vector<BifurcationMet> met;
+  std::size_t links = 0;
+  for (const TraceDirection* chain : {&trace.down, &trace.up}) {
+    for (const TraceLink& link : chain->links) {
+      met.insert(met.end(), link.bifurcations.begin(), link.bifurcations.end());
+      ++links;
+      EXPECT_EQ(link.signature.find("period 2"), std::string::npos);  // not followed
+    }
+  }
+  ASSERT_EQ(met.size(), 1u);
+  EXPECT_EQ(met[0].type, "PD");
+  EXPECT_NEAR(met[0].lambda, 0.7354877530, 1e-9);  // where ContinueOrbit locates it (README)
+  EXPECT_EQ(met[0].signature, "slip- slip+ stick slip- slip+ stick / period 2");
+  EXPECT_LT(met[0].singularity, 1e-7);
+  EXPECT_TRUE(met[0].message.empty());
+  EXPECT_GE(links, 1u);
+}
+
 TEST(Trace, RefusesInvalidOptions) {
   const OrbitContinuationSetup setup = RunFileSetup("paper-4.1-omega-down");
   for (const auto& [field, change] : std::vector<std::pair<std::string, std::function<void(TraceOptions*)>>>{

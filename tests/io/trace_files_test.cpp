@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
@@ -117,6 +118,23 @@ TEST_F(StoredTraceFiles, ADirectoryOfTheUsersIsNotReplaced) {
   EXPECT_THROW(WriteTraceFiles(dir_, other), InvalidInput);
   EXPECT_EQ(Slurp(dir_ / "mine" / "notes.txt"), "mine");
   EXPECT_FALSE(fs::exists(dir_ / "mine" / "trace.json"));
+}
+
+// A trace written by an older stickslip (its trace.json without a key added since) is still a
+// trace, replaced by a new run; a trace.json that is not one of ours is not.
+TEST_F(StoredTraceFiles, AnOlderTraceIsReplacedButNotAForeignTraceJson) {
+  nlohmann::ordered_json old = nlohmann::ordered_json::parse(Slurp(dir_ / "trace" / "trace.json"));
+  for (auto& branch : old["branches"]) ASSERT_EQ(branch.erase("bifurcations"), 1u);
+  Spit(dir_ / "trace" / "trace.json", old.dump(2));
+  ASSERT_THROW(ReadTraceFiles(dir_ / "trace"), InvalidInput);  // not this version's trace.json
+  EXPECT_NO_THROW(WriteTraceFiles(dir_, stored_));
+  EXPECT_EQ(Slurp(dir_ / "trace" / "trace.json"), FormatTraceFiles(stored_).trace_json);
+  fs::create_directories(dir_ / "foreign");
+  Spit(dir_ / "foreign" / "trace.json", "{\"name\": \"someone else's\"}");
+  StoredTrace other = stored_;
+  other.output = "foreign";
+  EXPECT_THROW(WriteTraceFiles(dir_, other), InvalidInput);
+  EXPECT_EQ(Slurp(dir_ / "foreign" / "trace.json"), "{\"name\": \"someone else's\"}");
 }
 
 }  // namespace

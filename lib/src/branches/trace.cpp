@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 
+#include "stickslip/branches/bifurcation_branches.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 
@@ -201,6 +202,24 @@ class Tracer {
     return branch.branch.points[last - 1].tests(function - functions.begin()) < 0.0;
   }
 
+  // The branches that leave the located BP, PD and SB of `branch`: where each starts.
+  static std::vector<BifurcationMet> BifurcationsOn(const OrbitBranch& branch, const OrbitContinuationSetup& setup) {
+    std::vector<BifurcationMet> met;
+    for (const SpecialPoint& s : branch.branch.special_points) {
+      if (!s.located || (s.type != "BP" && s.type != "PD" && s.type != "SB")) continue;
+      BifurcationMet m{.point = s.point, .type = s.type, .lambda = s.lambda};
+      try {
+        const BifurcationBranchStart start = BranchFromBifurcation(s, setup);
+        m.signature = start.at.signature.ToString();
+        m.singularity = start.singularity;
+      } catch (const std::exception& e) {
+        m.message = e.what();
+      }
+      met.push_back(std::move(m));
+    }
+    return met;
+  }
+
   void Advance(int d) {
     TraceDirection& chain = Chain(d);
     Next& next = next_[d];
@@ -221,6 +240,7 @@ class Tracer {
                    .type_switch = next.type_switch};
     const OrbitBranch& b = link.branch;
     link.signature = b.orbits.front().signature.ToString();
+    link.bifurcations = BifurcationsOn(b, setup);
     visits_.push_back({link.signature, Lambda(b.orbits.front(), start_.parameter), b.orbits.front(), d, link_index, false});
     const Orbit& last = b.orbits.back();
     const double lambda = Lambda(last, start_.parameter);

@@ -53,6 +53,7 @@ class JsonObject {
   }
   std::string Text(const std::string& key) { return Typed<std::string>(key, &Json::is_string, "a string"); }
   bool Flag(const std::string& key) { return Typed<bool>(key, &Json::is_boolean, "true or false"); }
+  double Number(const std::string& key) { return Typed<double>(key, &Json::is_number, "a number"); }
   std::size_t Count(const std::string& key) {
     return Typed<std::size_t>(key, &Json::is_number_unsigned, "a count (an integer >= 0)");
   }
@@ -78,6 +79,15 @@ class JsonObject {
   std::string path_;
   std::vector<std::string> read_;
 };
+
+Json Bifurcations(const std::vector<StoredBifurcation>& met) {
+  Json list = Json::array();
+  for (const StoredBifurcation& m : met) {
+    list.push_back({{"label", m.label}, {"type", m.type}, {"parameter", m.lambda}, {"signature", m.signature},
+                    {"singularity", m.singularity}, {"message", m.message}});
+  }
+  return list;
+}
 
 std::string FormatJson(const StoredTrace& t) {
   Json json = Json::object();
@@ -107,7 +117,8 @@ std::string FormatJson(const StoredTrace& t) {
                                 {"margin", b.margin},
                                 {"switch", sw},
                                 {"end", b.end},
-                                {"message", b.message}});
+                                {"message", b.message},
+                                {"bifurcations", Bifurcations(b.bifurcations)}});
   }
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
@@ -168,6 +179,18 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
     }
     branch.end = b.Text("end");
     branch.message = b.Text("message");
+    const Json& met = b.Get("bifurcations");
+    if (!met.is_array()) throw KeyError(file, b.Name("bifurcations"), "is invalid: valid an array");
+    for (std::size_t i = 0; i < met.size(); ++i) {
+      JsonObject m(met[i], file, fmt::format("{}[{}]", b.Name("bifurcations"), i));
+      branch.bifurcations.push_back({.label = m.Text("label"),
+                                     .type = m.Text("type"),
+                                     .lambda = m.Number("parameter"),
+                                     .signature = m.Text("signature"),
+                                     .singularity = m.Number("singularity"),
+                                     .message = m.Text("message")});
+      m.Done();
+    }
     b.Done();
     t.branches.push_back(std::move(branch));
   }
@@ -281,6 +304,14 @@ StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
                          .persists = confirmed && sw.persists,
                          .from_past = confirmed && sw.singular_start};
       }
+      for (const BifurcationMet& m : link.bifurcations) {
+        // Its label, as the branch's special-points.csv has it.
+        std::string label;
+        for (const StoredSpecialPoint& s : stored.special_points) {
+          if (s.point.pt == m.point + 1 && s.type == m.type) label = s.point.label;
+        }
+        b.bifurcations.push_back({label, m.type, m.lambda, m.signature, m.singularity, m.message});
+      }
       t.branches.push_back(std::move(b));
       t.runs.push_back(std::move(stored));
       direction.branches.push_back(k);
@@ -301,8 +332,14 @@ bool IsTraceDirectory(const fs::path& directory) {
 void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& output) {
   const fs::path target = results_root / output;
   if (IsTraceDirectory(target)) {
+    // Recognised by what any version's trace.json has, not read whole: a trace written by an older
+    // stickslip (fewer keys) is replaced, as a run is by its summary.json.
     try {
-      ParseJson(detail::ReadTextFile(target / kTraceJson), target / kTraceJson);
+      const fs::path file = target / kTraceJson;
+      const Json json = detail::ParseJsonObject(detail::ReadTextFile(file), file);
+      for (const char* key : {"stickslip_version", "directions", "branches"}) {
+        if (!json.contains(key)) throw KeyError(file, key, "is missing");
+      }
     } catch (const InvalidInput& e) {
       throw InvalidInput::WithMessage(
           "output", fmt::format("output = '{}' is invalid: '{}' holds no stickslip trace ({}): valid a new name or the "

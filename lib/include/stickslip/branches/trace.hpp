@@ -89,6 +89,18 @@ enum class LinkStart {
 };
 const char* ToString(LinkStart start);
 
+// A branch met on the way, at a BP, PD or SB of a link's branch (branches/bifurcation_branches.hpp):
+// its start is computed and recorded, the branch is not followed (a run file that restarts from the
+// stored label with switch_branch follows it).
+struct BifurcationMet {
+  int point = 0;           // the special point's point on the link's branch (SpecialPoint::point)
+  std::string type;        // "BP", "PD" or "SB"
+  double lambda = 0.0;
+  std::string signature;   // the type of the branch that leaves it; "" where its start failed
+  double singularity = 0.0;  // BifurcationBranchStart::singularity
+  std::string message;     // why the start failed, if it did
+};
+
 struct TraceLink {
   OrbitBranch branch;
   std::string signature;  // Signature::ToString of the branch's orbits
@@ -100,6 +112,7 @@ struct TraceLink {
   std::optional<TypeSwitch> type_switch;
   TraceEnd end = TraceEnd::kContinuationFailed;  // how the branch ended, in the trace's terms
   std::string message;
+  std::vector<BifurcationMet> bifurcations;  // at its located BP, PD and SB, in branch order
 };
 
 struct TraceDirection {

@@ -11,7 +11,8 @@
 //                 end, message and branches (their k); per branch its name, direction, signature,
 //                 points, how it began (start, margin, and for a switch the bifurcation, the edit,
 //                 the adjacent signature, persists or a nonsmooth fold, from the orbit past the
-//                 boundary), its end and message
+//                 boundary), its end and message, and the branches met at its BP, PD and SB
+//                 (label, type, parameter, the leaving branch's signature, the singularity there)
 // Numbers in shortest round-trip form, no time or host: the same trace gives the same bytes.
 #pragma once
 
@@ -36,6 +37,16 @@ struct StoredSwitch {
   bool from_past = false;   // the branch starts from the orbit past the boundary (a singular start)
 };
 
+// A branch met at a BP, PD or SB of a trace's branch (BifurcationMet): recorded, not followed.
+struct StoredBifurcation {
+  std::string label;      // the special point's label in the branch's directory ("PD2")
+  std::string type;       // "BP", "PD" or "SB"
+  double lambda = 0.0;
+  std::string signature;  // the type of the branch that leaves it; "" where its start failed
+  double singularity = 0.0;
+  std::string message;
+};
+
 struct StoredTraceBranch {
   std::string name;       // "branch-<k>", its directory
   std::string chain;      // "down" or "up": the chain it belongs to
@@ -48,6 +59,7 @@ struct StoredTraceBranch {
   StoredSwitch type_switch;  // when has_switch
   std::string end;        // ToString(TraceEnd)
   std::string message;
+  std::vector<StoredBifurcation> bifurcations;
 };
 
 struct StoredTraceDirection {
