@@ -10,7 +10,7 @@ trap 'rm -f "$json"' EXIT
 /usr/bin/python3 - "$json" "$root/results/benchmark.md" <<'PY'
 import json, os, sys
 data = json.load(open(sys.argv[1]))
-median, sweep, per_period, map_cells = {}, {}, {}, {}
+median, sweep, per_period, map_cells, traces = {}, {}, {}, {}, {}
 for b in data["benchmarks"]:
     if b.get("aggregate_name") != "median":
         continue
@@ -19,6 +19,8 @@ for b in data["benchmarks"]:
         sweep[arg] = (int(b["workers"]), b["real_time"])  # threads:1 / threads:0; milliseconds
     elif name == "MapCellsPerCore":
         map_cells[arg] = (int(b["workers"]), b["cells_per_s_per_core"])  # threads:1 / threads:0
+    elif name == "TraceWallTime":
+        traces[arg] = (b["real_time"], int(b["points"]), b["us_per_point"])  # milliseconds, points, µs/point
     elif name == "SimulationPerPeriod":
         per_period[int(arg.split(":")[1])] = b["us_per_period"]
     else:
@@ -45,6 +47,15 @@ lines += ["", "Brute-force sweep (§5.1 over ω, 4 chains up and down, 11 values
 (_, one), (cores, every) = map_cells["threads:1"], map_cells["threads:0"]
 lines += ["", "Brute-force map (§6 over (ω, u_r), 6 x 4 cells, 6 starts and 500 + 24 periods per cell: the command "
           f"line's defaults): {one:.1f} cells/s per core on 1 thread, {every:.1f} per core on {cores} threads."]
+lines += ["", "Whole traces (every branch, switch and confirming simulation; the run files with a [trace] table), "
+          "median wall time on one core:", "",
+          "| trace | points | closed form (ms) | µs/point | Odeint (ms) | Odeint / closed form |", "|---|---|---|---|---|---|"]
+for key in sorted(k for k in traces if k.startswith("closed_form_")):
+    family = key[len("closed_form_"):]
+    (closed, points, per_point), (odeint, _, _) = traces[key], traces["odeint_" + family]
+    lines.append(f"| {family.replace('paper_', '§').replace('_', '.')} | {points} | {closed:.1f} | {per_point:.0f} | "
+                 f"{odeint:.0f} | {odeint / closed:.0f}x |")
+lines += ["", "Target: a whole paper trace in well under a second on one core."]
 short, long = min(per_period), max(per_period)
 lines += ["", f"Exact simulator, §5.1 motion: {per_period[short]:.2f} µs per forcing period over {short} periods, "
           f"{per_period[long]:.2f} µs over {long} (ratio {per_period[long] / per_period[short]:.2f}).", "",

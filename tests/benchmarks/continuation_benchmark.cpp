@@ -10,7 +10,8 @@
 //
 // Also the brute-force sweep's wall time on 1 thread and on every core, for the parallel
 // speed-up of its chains, and the exact simulator's cost per forcing period over a short and a
-// long run; and the brute-force map's cells per second per core.
+// long run; and the brute-force map's cells per second per core; and the wall time of whole traces
+// (every branch, switch and confirming simulation), closed form against Odeint.
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -18,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/branches/trace.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
@@ -70,6 +72,34 @@ STICKSLIP_FAMILY(paper_4_2, "paper-4.2-omega-up.toml")
 STICKSLIP_FAMILY(paper_5_1, "paper-5.1-omega-up.toml")
 STICKSLIP_FAMILY(paper_5_2, "paper-5.2-omega-down.toml")
 STICKSLIP_FAMILY(paper_6, "paper-6-omega-up.toml")
+
+// A whole trace of a run file with a [trace] table, its branches' flows by `flow` (the switches
+// are confirmed by the exact simulator either way). Counters: points (all branches') and
+// us_per_point.
+void TraceWallTime(benchmark::State& state, const std::string& run_file, FlowEvaluator flow) {
+  const std::filesystem::path source(STICKSLIP_SOURCE_DIR);
+  const RunFile run = ReadRunFile(source / "continuation-scripts" / run_file);
+  OrbitContinuationSetup setup = MakeSetup(run, source / "results");
+  setup.flow = flow;
+  double points = 0.0, per_trace = 0.0;
+  for (auto _ : state) {
+    const TraceResult trace = TraceOrbits(setup, *run.trace);
+    per_trace = 0.0;
+    for (const TraceDirection* chain : {&trace.down, &trace.up}) {
+      for (const TraceLink& link : chain->links) per_trace += static_cast<double>(link.branch.branch.points.size());
+    }
+    points += per_trace;
+  }
+  state.counters["points"] = per_trace;
+  state.counters["us_per_point"] = benchmark::Counter(points * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+#define STICKSLIP_TRACE(name, file)                                                                         \
+  BENCHMARK_CAPTURE(TraceWallTime, closed_form_##name, file, kClosedForm)->UseRealTime()->Unit(benchmark::kMillisecond); \
+  BENCHMARK_CAPTURE(TraceWallTime, odeint_##name, file, kOdeint)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+STICKSLIP_TRACE(paper_4_1, "paper-4.1-omega-trace.toml")
+STICKSLIP_TRACE(paper_5_1, "paper-5.1-omega-trace.toml")
 
 // Section 5.1 over omega, 11 values, with the command line's default chains (four, up and down)
 // and periods (500 transient and 20 recorded per point), on range(0) threads (0: every core).
