@@ -45,7 +45,7 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   OrbitContinuationProblem problem;
   problem.system = std::make_unique<OrbitSystem>(setup.start, unknowns, setup.unknowns.tie_static_friction,
                                                  shooting, setup.flow);
-  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start);
+  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, setup.unwatched);
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.size());
   KeepInPhysicalRanges(setup, free, unknowns.back(), &problem.options);

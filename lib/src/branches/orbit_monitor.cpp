@@ -1,5 +1,7 @@
 #include "stickslip/branches/orbit_monitor.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <complex>
 
@@ -49,6 +51,10 @@ std::vector<double> MeasureValues(const Orbit& orbit) {
 }  // namespace
 
 void OrbitMonitor::AddTestFunction(TestFunctionInfo info, Value value) {
+  if (std::find(unwatched_.begin(), unwatched_.end(), info.name) != unwatched_.end()) {
+    AddRecorded(std::move(info.name), std::move(value));
+    return;
+  }
   columns_.push_back({info.name, true, static_cast<int>(info_.size())});
   info_.push_back(std::move(info));
   values_.push_back(std::move(value));
@@ -60,7 +66,8 @@ void OrbitMonitor::AddRecorded(std::string name, Value value) {
   values_.push_back(std::move(value));
 }
 
-OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start) : system_(system) {
+OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched)
+    : system_(system), unwatched_(std::move(unwatched)) {
   const std::vector<Margin> margins = AdmissibilityMargins(start);
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];

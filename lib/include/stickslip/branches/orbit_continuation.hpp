@@ -23,6 +23,9 @@ struct OrbitContinuationSetup {
   LinearSolverType sparse_solver = LinearSolverType::kKlu;
   ContinuationOptions options;  // parameter_index is set here
   FlowEvaluator flow;  // the closed form; the benchmark compares Odeint
+  // Test functions (by column name: "margin:G:2", "floquet:torus") recorded but not watched:
+  // those that sit on zero or mean nothing along a type boundary (branches/type_boundary.hpp).
+  std::vector<std::string> unwatched;
 };
 
 struct OrbitBranch {

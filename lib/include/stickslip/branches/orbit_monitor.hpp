@@ -82,8 +82,11 @@ std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const 
 
 class OrbitMonitor final : public Monitor {
  public:
-  // `start` is any orbit of the system's signature (the names depend on the signature only).
-  OrbitMonitor(const OrbitSystem& system, const Orbit& start);
+  // `start` is any orbit of the system's signature (the names depend on the signature only). The
+  // test functions named in `unwatched` (column names: "margin:G:2", "floquet:torus") are
+  // recorded, not watched (those that sit on zero or mean nothing along a type boundary:
+  // branches/type_boundary.hpp).
+  OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched = {});
   std::vector<TestFunctionInfo> TestFunctions() const override { return info_; }
   std::vector<std::string> RecordedNames() const override { return recorded_; }
   void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const override;
@@ -99,6 +102,7 @@ class OrbitMonitor final : public Monitor {
   void AddRecorded(std::string name, Value value);
 
   const OrbitSystem& system_;
+  std::vector<std::string> unwatched_;
   std::vector<TestFunctionInfo> info_;
   std::vector<std::string> recorded_;
   std::vector<PointColumn> columns_;
