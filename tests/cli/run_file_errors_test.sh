@@ -96,5 +96,20 @@ expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.resta
 shooting = \"multiple\""
 expect 2 "key 'start.restart.switch_branch' must be true or false" "${switched/switch_branch = true/switch_branch = 1}"
 
+# boundary (a type boundary in two parameters): at a label that is no such change, in the continued
+# parameter, with switch_branch.
+"$bin" run --results "$work/results" "$(dirname "$0")/../../continuation-scripts/paper-4.1-omega-down.toml" > /dev/null ||
+  { echo "FAIL: the run to start a boundary from"; failures=$((failures + 1)); }
+bounded='output = "t"
+[start]
+restart = { run = "paper-4.1-omega-down", label = "SK2", boundary = "u_r" }
+[continuation]
+parameter = "omega"
+direction = "down"
+range = [0.3, 0.69]'
+expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (start): margin = start is invalid: valid range reversal:i" "${bounded/SK2/EP1}"
+expect 2 "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): second = omega is invalid" "${bounded/boundary = \"u_r\"/boundary = \"omega\"}"
+expect 2 "key 'start.restart.boundary' cannot go with switch_branch" "${bounded/boundary = \"u_r\"/boundary = \"u_r\", switch_branch = true}"
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

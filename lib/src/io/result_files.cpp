@@ -409,7 +409,7 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   const StoredRun stored = ReadRunFiles(results_root / run);
   std::vector<std::string> labels;
   for (const StoredSpecialPoint& s : stored.special_points) {
-    if (s.point.label == label) return {stored.summary.signature, SolutionColumns(s.point.orbit)};
+    if (s.point.label == label) return {stored.summary.signature, SolutionColumns(s.point.orbit), s.test_function};
     labels.push_back(s.point.label);
   }
   throw InvalidInput::WithMessage(

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "stickslip/branches/bifurcation_branches.hpp"
+#include "stickslip/branches/type_boundary.hpp"
+#include "stickslip/io/result_files.hpp"
 #include "stickslip/io/start_input.hpp"
 
 namespace stickslip {
@@ -44,6 +46,9 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   o.detect_folds = run.detect_folds;
   o.detect_branch_points = run.detect_branch_points;
   o.continue_past_terminal = run.continue_past_type_changes;
+  if (run.restart_switch_branch && !run.restart_boundary.empty()) {
+    throw fail("start.restart.boundary", "cannot go with switch_branch: give one of them");
+  }
   if (run.restart_switch_branch) {
     if (setup.shooting == ShootingChoice::kMultiple) {
       throw fail("continuation.shooting", "= \"multiple\" is invalid with start.restart.switch_branch: valid \"auto\" "
@@ -61,11 +66,27 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
                      : fmt::format("= true is invalid at '{}' (a {}): valid at {}", label, type, e.valid_range()));
     }
   }
+  if (!run.restart_boundary.empty()) {
+    const std::string margin = ReadLabelledPoint(results_root, run.restart_run, run.restart_label).test_function;
+    const std::string_view prefix = orbit_columns::kMarginPrefix;
+    const LocatedTypeChange located{.orbit = setup.start,
+                                    .margin = margin.starts_with(prefix) ? margin.substr(prefix.size()) : margin,
+                                    .parameter = run.parameter,
+                                    .past = 1,
+                                    .unknowns = setup.unknowns};
+    try {
+      setup = TypeBoundary(located, setup, run.restart_boundary).setup;
+    } catch (const InvalidInput& e) {
+      throw fail("start.restart.boundary", fmt::format("= '{}' is invalid at '{}' ({}): {} {}", run.restart_boundary,
+                                                       run.restart_label, margin, e.field(), e.Predicate()));
+    }
+  }
   // User values address unknowns: the free variables in their order, then the parameter (of the
-  // branch that leaves the point, after a switch).
+  // branch that leaves the point, or of the boundary, where the start's type changed).
+  const bool retyped = run.restart_switch_branch || !run.restart_boundary.empty();
   const int n = setup.start.signature.size();
-  std::vector<int> order = run.restart_switch_branch ? FreeIndices(setup.start.signature, setup.unknowns) : free;
-  order.push_back(run.restart_switch_branch ? *ov::IndexOf(n, run.parameter) : parameter);
+  std::vector<int> order = retyped ? FreeIndices(setup.start.signature, setup.unknowns) : free;
+  order.push_back(retyped ? *ov::IndexOf(n, run.parameter) : parameter);
   for (const auto& [name, value] : run.user_values) {
     const std::optional<int> index = ov::IndexOf(n, name);
     const auto position = index ? std::find(order.begin(), order.end(), *index) : order.end();

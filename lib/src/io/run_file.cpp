@@ -268,6 +268,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
     }
     r.String("label", &run.restart_label, true);
     r.Boolean("switch_branch", &run.restart_switch_branch);
+    r.String("boundary", &run.restart_boundary);
     r.RejectUnknown();
   }
   if (run.preset.empty() == run.signature.empty() && run.restart_run.empty()) {

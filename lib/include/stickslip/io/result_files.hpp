@@ -64,6 +64,7 @@ StoredRun ReadRunFiles(const std::filesystem::path& run_directory);
 struct LabelledPoint {
   std::string signature;
   NamedValues variables;
+  std::string test_function;  // the special point's: "margin:reversal:1", "floquet:det(M+I)", ...
 };
 LabelledPoint ReadLabelledPoint(const std::filesystem::path& results_root, const std::string& run,
                                 const std::string& label);

@@ -8,7 +8,8 @@
 //   set = { u_r = 0.5 }                # model data and start: chi eta omega u_s u_r x10 x20 v10 phi
 //   guess = { d1 = 3.2 }               # any orbit variable
 //   restart = { run = "paper-5.1-omega-up", label = "LP1" }   # start from a labelled point
-//                                      # (switch_branch = true: the branch leaving a PD or SB)
+//                                      # (switch_branch = true: the branch leaving a PD or SB;
+//                                      #  boundary = "u_r": an SK or T0 boundary in two parameters)
 //   [unknowns]
 //   free = ["u_r"]                     # released variables
 //   fix = ["phi"]                      # held variables
@@ -69,6 +70,9 @@ struct RunFile {
   // At a restart from a PD or an SB: the branch that leaves it, not the branch it lies on (AUTO's
   // ISW = -1; branches/bifurcation_branches.hpp), on the side `direction` names.
   bool restart_switch_branch = false;
+  // At a restart from a change of type held by a zero-length stick (SK at a reversal, T0): the
+  // boundary continued in the plane of the parameter and this second one (branches/type_boundary.hpp).
+  std::string restart_boundary;
   // [unknowns]
   std::vector<std::string> free;
   std::vector<std::string> fix;
