@@ -48,6 +48,13 @@ def read_trace(directory):
     return trace, branches
 
 
+def holds_data(branches):
+    """Whether the model's data (chi, eta, u_s, u_r) are the same at every point of the trace, so
+    that a sweep at those data is a brute force of the same system (not where u_s = u_r is solved)."""
+    values = {(r["chi"], r["eta"], r["u_s"], r["u_r"]) for _, _, rows, _ in branches for r in rows}
+    return len(values) == 1
+
+
 def draw_branches(ax, trace, branches):
     """The branches' curves and the special points' markers on `ax`. Returns the labels to place
     (label_points) and the legend handles: the orbit types, the line styles, the marker kinds."""
@@ -130,8 +137,9 @@ def draw_sweeps(ax, parameter, sweeps):
     return handles
 
 
-def plot_trace(directory, output, sweeps=()):
-    """The frequency response of the trace in `directory`, written to `output` (PNG, 1150 x 600)."""
+def frequency_response(directory, sweeps=()):
+    """The figure of the trace in `directory` and its axes, the labels and where they were placed
+    (label_points)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -152,8 +160,12 @@ def plot_trace(directory, output, sweeps=()):
     ax.set_title(f"{trace['output']}: frequency response from '{trace['signature']}'\n"
                  f"{len(branches)} branches; ended {ends}", fontsize=10)
     figure.tight_layout()
-    label_points(figure, ax, labels)
-    save(figure, output)
+    return figure, ax, labels, label_points(figure, ax, labels)
+
+
+def plot_trace(directory, output, sweeps=()):
+    """The frequency response of the trace in `directory`, written to `output` (PNG, 1150 x 600)."""
+    save(frequency_response(directory, sweeps)[0], output)
 
 
 def main(argv):
