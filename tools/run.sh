@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
-# and regenerates the tables (results/paper-table.md, results/runs.md) and figures.
+# and regenerates the tables (results/paper-table.md, results/runs.md, results/trace-intervals.md)
+# and figures.
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 stickslip_install_packages
@@ -31,3 +32,4 @@ mkdir -p results/sweeps/wide
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results
+/usr/bin/python3 tools/trace_intervals.py results
