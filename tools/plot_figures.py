@@ -9,7 +9,7 @@ x20 and the durations, stable solid and unstable dashed, special points marked a
 the brute-force sweep of the family (results/sweeps/) overlaid.
 For each trace in <results>/: its frequency response (trace_figure.py), max |x2| over the period
 on every branch, and the brute force's max |x2| over its settled periods (the family's sweeps and
-results/sweeps/wide/) where the trace holds the sweep's data (not where u_s = u_r is solved).
+results/sweeps/traces/) where the trace holds the sweep's data (not where u_s = u_r is solved).
 
 Usage: /usr/bin/python3 tools/plot_figures.py [--stickslip PROGRAM] [--results DIR]
 """
@@ -114,21 +114,21 @@ def section_x2(program, row, phase):
     return samples[-1][1]
 
 
-def family_sweeps(results, run, parameter, wide=False):
+def family_sweeps(results, run, parameter, traced=False):
     """Every sweep of the run's family over this parameter: sweeps/<family>-<parameter>[-<what>].csv,
-    and with `wide` the one over a trace's range, sweeps/wide/<family>-<parameter>.csv."""
+    and with `traced` those over a trace's range, sweeps/traces/<family>-<parameter>[-<what>].csv."""
     family = run.split("-")[0] + "-" + run.split("-")[1]
     return (glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}.csv")) +
             sorted(glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}-*.csv"))) +
-            (glob.glob(os.path.join(results, "sweeps", "wide", f"{family}-{parameter}.csv")) if wide else []))
+            (sorted(glob.glob(os.path.join(results, "sweeps", "traces", f"{family}-{parameter}*.csv"))) if traced else []))
 
 
 def frequency_response_figure(results, run, out):
-    """The trace's frequency response, with the family's sweeps and its wide sweep
-    (sweeps/wide/<family>-<parameter>.csv, over the trace's range) where the trace holds their data."""
+    """The trace's frequency response, with the family's sweeps and those over the trace's range
+    (sweeps/traces/) where the trace holds their data."""
     directory = os.path.join(results, run)
     trace, branches = read_trace(directory)
-    sweeps = family_sweeps(results, run, trace["parameter"], wide=True) if holds_data(branches) else []
+    sweeps = family_sweeps(results, run, trace["parameter"], traced=True) if holds_data(branches) else []
     plot_trace(directory, os.path.join(out, f"{run}-frequency-response.png"), sweeps)
 
 

@@ -69,12 +69,20 @@ def draw_branches(ax, trace, branches):
         if key in drawn:
             return
         drawn.add(key)
-        ax.plot(x, y, marker, color=face, ms=size, mec="black", mew=0.6, zorder=5)
+        # A switch over the other marks at its point (several margins may reach zero there).
+        ax.plot(x, y, marker, color=face, ms=size, mec="black", mew=0.6, zorder=6 if marker == SWITCH_MARKER[0] else 5)
         markers.setdefault(name, Line2D([], [], ls="", marker=marker, color=face, ms=size, mec="black", mew=0.6,
                                         label=name))
         if kind:
             labels.append((kind, x, y))
 
+    # The margin each branch switched at: the next branch of its chain began there by a switch.
+    switched_at = {}
+    for direction in trace["directions"]:
+        for k, following in zip(direction["branches"], direction["branches"][1:]):
+            entry = branches[following - 1][0]
+            if entry["start"] == "switch":
+                switched_at[branches[k - 1][0]["name"]] = "margin:" + entry["margin"]
     for entry, summary, rows, special in branches:
         signature = entry["signature"]
         colour = colours.setdefault(signature, COLOURS[len(colours) % len(COLOURS)])
@@ -85,6 +93,7 @@ def draw_branches(ax, trace, branches):
             spans[key] = max(spans.get(key, 0.0), max(xs) - min(xs))
             ax.plot(xs, [float(r["amplitude:x2"]) for r in piece], "-" if key[0] else "--",
                     **(dict(color=colour, lw=1.8) if key[1] else INADMISSIBLE))
+        switch = ([None] + [r for r in special if r["test_function"] == switched_at.get(entry["name"])])[-1]
         if entry["start"] == "trace-start":
             mark("", xs_all[0], float(rows[0]["amplitude:x2"]), "o", "white", 7, "the trace's start")
         for row in special:
@@ -93,7 +102,7 @@ def draw_branches(ax, trace, branches):
             kind, x, y = row["type"], float(row[parameter]), float(row["amplitude:x2"])
             if kind in SMOOTH:
                 mark(kind, x, y, *MARKERS[kind], 6, SMOOTH[kind])
-            elif entry["end"] == "switched" and int(row["pt"]) == len(rows):
+            elif row is switch:
                 mark(kind, x, y, *SWITCH_MARKER, 12, "switch to the adjacent type")
             else:
                 mark(kind, x, y, *TYPE_CHANGE_MARKER, 6, "change of type, not switched")
