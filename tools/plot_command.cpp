@@ -1,6 +1,6 @@
-// stickslip plot: the bifurcation diagram of one stored run as a PNG, drawn by
-// bifurcation_diagram.py (beside the program, or in the source tree's tools/) through
-// /usr/bin/python3 and Debian's matplotlib.
+// stickslip plot: the bifurcation diagram of one stored run, or the frequency response of one stored
+// trace, as a PNG, drawn by bifurcation_diagram.py or trace_figure.py (beside the program, or in
+// the source tree's tools/) through /usr/bin/python3 and Debian's matplotlib.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,6 +20,7 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run_file.hpp"
+#include "stickslip/io/trace_files.hpp"
 
 extern char** environ;
 
@@ -32,21 +33,20 @@ namespace fs = std::filesystem;
 struct PlotArgs {
   std::string run;
   std::string results = "results";
-  std::string output = "";  // <run>-bifurcation.png when not given
+  std::string output = "";  // <run>-bifurcation.png (a trace: <run>-frequency-response.png) when not given
   bool output_given = false;  // --output "" is refused, not taken as the default
 };
 
-// The drawing script: beside the program (as the build and an installation put it), else in the
-// source tree it was built from.
-fs::path DrawingScript() {
-  constexpr const char* kScript = "bifurcation_diagram.py";
+// The drawing script `name`: beside the program (as the build and an installation put it), else in
+// the source tree it was built from.
+fs::path DrawingScript(const char* name) {
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  if (!error && fs::is_regular_file(program.parent_path() / kScript)) return program.parent_path() / kScript;
-  return fs::path(STICKSLIP_SOURCE_DIR) / "tools" / kScript;
+  if (!error && fs::is_regular_file(program.parent_path() / name)) return program.parent_path() / name;
+  return fs::path(STICKSLIP_SOURCE_DIR) / "tools" / name;
 }
 
-// bifurcation_diagram.py's exit code when matplotlib cannot be imported.
+// The scripts' exit code when matplotlib cannot be imported.
 constexpr int kScriptNeedsMatplotlib = 3;
 
 // Runs `argv` without a shell and returns its exit status, or -1 with *why if it could not start.
@@ -75,8 +75,15 @@ int RunProgram(const std::vector<std::string>& argv, std::string* why) {
 int RunPlot(const PlotArgs& args) {
   if (!IsRunName(args.run)) throw InvalidInput("run", "'" + args.run + "'", std::string(kRunNameRule));
   const fs::path directory = fs::path(args.results) / args.run;
-  ReadRunFiles(directory);  // a missing or damaged run is bad input, before any work
-  const fs::path output = args.output_given ? fs::path(args.output) : fs::path(args.run + "-bifurcation.png");
+  // A missing or damaged run or trace is bad input, before any work.
+  const bool trace = IsTraceDirectory(directory);
+  if (trace) {
+    ReadTraceFiles(directory);
+  } else {
+    ReadRunFiles(directory);
+  }
+  const fs::path output = args.output_given ? fs::path(args.output)
+                                            : fs::path(args.run + (trace ? "-frequency-response.png" : "-bifurcation.png"));
   CheckOutputFile(output, "output");
   if (output.extension() != ".png") {
     throw InvalidInput("output", "'" + output.string() + "'", "a file name ending in .png");
@@ -84,7 +91,7 @@ int RunPlot(const PlotArgs& args) {
   // STICKSLIP_PYTHON: another interpreter (the tests use it to see a missing one reported).
   const char* python = std::getenv("STICKSLIP_PYTHON");
   const std::string interpreter = python && *python ? python : "/usr/bin/python3";
-  const fs::path script = DrawingScript();
+  const fs::path script = DrawingScript(trace ? "trace_figure.py" : "bifurcation_diagram.py");
   std::string why;
   const int status = RunProgram({interpreter, script.string(), directory.string(), output.string()}, &why);
   if (status == -1 || status == kScriptNeedsMatplotlib) {
@@ -107,11 +114,17 @@ Command AddPlotCommand(CLI::App& app) {
       "plot",
       "Draw the bifurcation diagram of a stored run as a PNG (800 x 600): x20 and the segment durations over the "
       "continued parameter, stable solid, unstable dashed, stretches that are no motion (a margin < 0) grey, special "
-      "points marked and labelled without overprinting. Runs /usr/bin/python3 with matplotlib (python3-matplotlib); "
-      "exit 1 if it is missing.");
-  cmd->add_option("run", args->run, "the run: results/<run>/ (e.g. paper-5.1-omega-up)")->type_name("RUN")->required();
+      "points marked and labelled without overprinting. Of a stored trace (stickslip trace), its frequency response "
+      "(1150 x 600): max |x2| over the period against the parameter on every branch, each orbit type in its own "
+      "colour, switches and special points marked and labelled. Runs /usr/bin/python3 with matplotlib "
+      "(python3-matplotlib); exit 1 if it is missing.");
+  cmd->add_option("run", args->run, "the run or trace: results/<run>/ (e.g. paper-5.1-omega-up, paper-4.1-omega-trace)")
+      ->type_name("RUN")
+      ->required();
   cmd->add_option("--results", args->results, "where the run is stored")->type_name("DIR")->capture_default_str();
-  cmd->add_option("--output", args->output, "the PNG file, written whole or not at all (default <run>-bifurcation.png)")
+  cmd->add_option("--output", args->output,
+                  "the PNG file, written whole or not at all (default <run>-bifurcation.png, for a trace "
+                  "<run>-frequency-response.png)")
       ->type_name("FILE.png")
       ->each([args](const std::string&) { args->output_given = true; });
   return {cmd, [args] { return RunPlot(*args); }};

@@ -7,6 +7,9 @@ sticking orbits, the stick constraints G and G1 over the stick (Figs. 6, 9, 12).
 For each continuation run in <results>/: a bifurcation diagram over the continuation parameter,
 x20 and the durations, stable solid and unstable dashed, special points marked and labelled, and
 the brute-force sweep of the family (results/sweeps/) overlaid.
+For each trace in <results>/: its frequency response (trace_figure.py), max |x2| over the period
+on every branch, and the brute force's max |x2| over its settled periods (the family's sweeps and
+results/sweeps/traces/) where the trace holds the sweep's data (not where u_s = u_r is solved).
 
 Usage: /usr/bin/python3 tools/plot_figures.py [--stickslip PROGRAM] [--results DIR]
 """
@@ -25,6 +28,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from bifurcation_diagram import SIZE, draw_run, label_points, read_run, runs_of, save  # noqa: E402
+from trace_figure import holds_data, plot_trace, read_trace  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STYLE = {"slip-": dict(color="black", lw=0.8), "slip+": dict(color="black", lw=2.6),
@@ -110,6 +114,24 @@ def section_x2(program, row, phase):
     return samples[-1][1]
 
 
+def family_sweeps(results, run, parameter, traced=False):
+    """Every sweep of the run's family over this parameter: sweeps/<family>-<parameter>[-<what>].csv,
+    and with `traced` those over a trace's range, sweeps/traces/<family>-<parameter>[-<what>].csv."""
+    family = run.split("-")[0] + "-" + run.split("-")[1]
+    return (glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}.csv")) +
+            sorted(glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}-*.csv"))) +
+            (sorted(glob.glob(os.path.join(results, "sweeps", "traces", f"{family}-{parameter}*.csv"))) if traced else []))
+
+
+def frequency_response_figure(results, run, out):
+    """The trace's frequency response, with the family's sweeps and those over the trace's range
+    (sweeps/traces/) where the trace holds their data."""
+    directory = os.path.join(results, run)
+    trace, branches = read_trace(directory)
+    sweeps = family_sweeps(results, run, trace["parameter"], traced=True) if holds_data(branches) else []
+    plot_trace(directory, os.path.join(out, f"{run}-frequency-response.png"), sweeps)
+
+
 def bifurcation_figure(program, results, run, out):
     directory = os.path.join(results, run)
     summary, rows, _ = read_run(directory)
@@ -117,10 +139,7 @@ def bifurcation_figure(program, results, run, out):
     # Wider than the plain diagram: the legend of the orbit and the sweeps stands beside the data.
     figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(SIZE[0] + 3.5, SIZE[1]))
     labels, legend = draw_run(top, bottom, directory)
-    family = run.split("-")[0] + "-" + run.split("-")[1]
-    # Every sweep of the family over this parameter: sweeps/<family>-<parameter>[-<what>].csv.
-    sweeps = (glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}.csv")) +
-              sorted(glob.glob(os.path.join(results, "sweeps", f"{family}-{parameter}-*.csv"))))
+    sweeps = family_sweeps(results, run, parameter)
     phases_drawn = set()
     for number, sweep in enumerate(sweeps):
         # Compare like with like: x2 at the sweep's section phase, for the brute-force motions
@@ -163,6 +182,8 @@ def main():
     for run in sorted(os.listdir(args.results)):
         if os.path.isfile(os.path.join(args.results, run, "summary.json")):
             bifurcation_figure(args.stickslip, args.results, run, out)
+        elif os.path.isfile(os.path.join(args.results, run, "trace.json")):
+            frequency_response_figure(args.results, run, out)
 
 
 if __name__ == "__main__":

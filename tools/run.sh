@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
-# and regenerates the tables (results/paper-table.md, results/runs.md) and figures.
+# and regenerates the tables (results/paper-table.md, results/runs.md, results/trace-intervals.md)
+# and figures.
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 stickslip_install_packages
@@ -21,6 +22,18 @@ mkdir -p results/sweeps
 # fall into; a chain started on the continued orbit at TR2 follows it.
 "$bin" sweep --point paper-5.1-omega-up:TR2 --from 0.5785 --to 0.5865 --steps 16 --chains 1 \
   --output results/sweeps/paper-5.1-omega-from-TR2.csv
+# Over the traces' ranges (the frequency responses, results/figures/*-frequency-response.png), at
+# the data the traces hold (not section 4.2's, whose trace solves u_s = u_r).
+mkdir -p results/sweeps/traces
+"$bin" sweep --preset paper-4.1 --from 0.3 --to 0.69 --steps 78 --chains 4 --output results/sweeps/traces/paper-4.1-omega.csv
+"$bin" sweep --preset paper-5.1 --from 0.53 --to 0.59 --steps 60 --chains 4 --output results/sweeps/traces/paper-5.1-omega.csv
+"$bin" sweep --preset paper-5.2 --from 0.57 --to 0.68 --steps 55 --chains 4 --output results/sweeps/traces/paper-5.2-omega.csv
+"$bin" sweep --preset paper-6 --from 0.55 --to 0.575 --steps 50 --chains 4 --output results/sweeps/traces/paper-6-omega.csv
+# Section 5.2's stable stretch of 'slip- slip+ stick' coexists with the larger motion the chains
+# above settle on; a chain started on the trace at its crossing-sliding (SK3) follows it.
+"$bin" sweep --results results/paper-5.2-omega-trace --point branch-1:SK3 --from 0.6045 --to 0.6585 --steps 27 \
+  --chains 1 --output results/sweeps/traces/paper-5.2-omega-from-SK3.csv
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results
+/usr/bin/python3 tools/trace_intervals.py results

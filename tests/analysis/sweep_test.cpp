@@ -3,8 +3,10 @@
 // other, and an output that does not depend on the number of threads.
 #include "stickslip/analysis/sweep.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <string>
@@ -16,6 +18,8 @@
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
+#include "support/solved_presets.hpp"
 
 namespace stickslip {
 namespace {
@@ -128,6 +132,45 @@ TEST(Sweep, RecognisesThePeriodOneMotionOfSection41) {
   EXPECT_EQ(p.period, 1);
   EXPECT_DOUBLE_EQ(p.stops_per_period, 2.0);
   EXPECT_DOUBLE_EQ(p.sticks_per_period, 0.0);
+}
+
+// The amplitude of x2 over the recorded periods against the independent Odeint simulator, densely
+// sampled over the same periods (transients included, from the same start): the samples can only
+// miss the true maximum, by ~h^2 |x2''|/2 (h = period/20000), plus Odeint's error (1e-7 here).
+TEST(Sweep, AmplitudeOfX2IsTheMaximumOfTheSimulatedMotionOverTheRecordedPeriods) {
+  const PaperExample& e = *FindPaperExample("paper-5.1");
+  const SweepOptions o = ShortSweep(SweepStart::kFixed);
+  const std::vector<SweepPoint> points = Sweep(e.parameters, {e.initial_state}, e.phi, o);
+  for (const SweepPoint& point : points) {
+    const Parameters p = WithOmega(e.parameters, point.value);
+    const double period = 2.0 * std::numbers::pi / p.omega;
+    SimulationOptions options;
+    options.duration = (o.transient_periods + o.recorded_periods) * period;
+    options.sample_step = period / 20000;
+    const SimulationResult r = SimulateOdeint(p, e.initial_state, e.phi, options);
+    ASSERT_TRUE(r.Completed()) << r.message;
+    double sampled = 0.0;
+    for (const TimeSample& s : r.samples) {
+      if (s.t >= o.transient_periods * period) sampled = std::max(sampled, std::abs(s.state(1)));
+    }
+    EXPECT_LE(sampled, point.amplitude_x2 + 1e-6) << "omega = " << point.value;
+    EXPECT_GE(sampled, point.amplitude_x2 - 1e-5) << "omega = " << point.value;
+  }
+}
+
+// Settled on the stable section 4.1 orbit, the sweep's amplitude is the orbit's own (the measure a
+// branch records, from the solved orbit's closed forms, not from a simulation).
+TEST(Sweep, AmplitudeOfX2OnASettledOrbitIsTheOrbitsMeasure) {
+  const Orbit orbit = SolvedPreset("paper-4.1");
+  SweepOptions o;
+  o.from = o.to = orbit.parameters.omega;
+  o.steps = 1;
+  o.transient_periods = 50;
+  o.recorded_periods = 4;
+  o.start = SweepStart::kFixed;
+  const SweepPoint p = Sweep(orbit.parameters, {orbit.InitialState()}, orbit.phi, o).front();
+  ASSERT_EQ(p.period, 1);
+  EXPECT_NEAR(p.amplitude_x2, Measure(orbit).amplitude_x2, 1e-9);
 }
 
 // Issue 11, item 9: --transients 1e6 failed with max_events (2e6 events in one simulation). The

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# stickslip plot RUN: writes a valid PNG (PNG signature, 800 x 600) for a stored run; refuses a
+# stickslip plot RUN: writes a valid PNG (PNG signature, 800 x 600) for a stored run, and the
+# frequency response (1150 x 600, default name <trace>-frequency-response.png) for a stored trace; refuses a
 # missing or ill-named run and every bad --output with exit 2 and nothing written; a missing
 # python3 or matplotlib is exit 1 with a message saying what to install, and nothing written.
 source "$(dirname "$0")/expect.sh"
@@ -20,6 +21,20 @@ fi
 # The default output name, in the current directory.
 (cd "$work" && "$bin" plot paper-6-u_r-up --results "$root/results" > /dev/null) && [ -s "$work/paper-6-u_r-up-bifurcation.png" ] &&
   pass || fail "plot without --output wrote no <run>-bifurcation.png"
+
+# A trace: its frequency response, under its default name in the current directory.
+if (cd "$work" && "$bin" plot paper-4.1-omega-trace --results "$root/results" > /dev/null); then
+  size=$(/usr/bin/python3 -c "import matplotlib.image as i, sys; h, w = i.imread(sys.argv[1]).shape[:2]; print(w, h)" "$work/paper-4.1-omega-trace-frequency-response.png")
+  [ "$size" = "1150 600" ] && pass || fail "plot of a trace: $size, expected 1150 600"
+else
+  fail "plot of a stored trace failed"
+fi
+# A damaged trace (a branch's directory missing) is refused before any drawing.
+cp -r "$root/results/paper-4.1-omega-trace" "$work/out/paper-4.1-omega-trace"
+rm -r "$work/out/paper-4.1-omega-trace/branch-2"
+expect 2 "branch-2" "$bin" plot paper-4.1-omega-trace --results "$work/out" --output "$work/out/trace.png"
+[ ! -e "$work/out/trace.png" ] && pass || fail "plot of a damaged trace wrote a file"
+rm -r "$work/out/paper-4.1-omega-trace"
 
 png="$work/out/new.png"
 expect 2 "paper-9-omega-up" "$bin" plot paper-9-omega-up --results "$root/results" --output "$png"

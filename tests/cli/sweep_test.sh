@@ -10,7 +10,7 @@ sweep=(sweep --preset paper-6 --from 0.55 --to 0.57 --steps 4 --transients 20 --
 "$bin" "${sweep[@]}" --threads 1 --output "$work/one.csv" > /dev/null
 "$bin" "${sweep[@]}" --threads 2 --output "$work/two.csv" > /dev/null
 cmp "$work/one.csv" "$work/two.csv"
-head -1 "$work/one.csv" | grep -qx "chain,pass,step,omega,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period"
+head -1 "$work/one.csv" | grep -qx "chain,pass,step,omega,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2"
 # 3 chains x (up + down) x 5 values x 3 periods, and a header.
 [ "$(wc -l < "$work/one.csv")" -eq $((3 * 2 * 5 * 3 + 1)) ]
 [ "$(cut -d, -f1 "$work/one.csv" | sort -u | tr '\n' ' ')" = "0 1 2 chain " ]

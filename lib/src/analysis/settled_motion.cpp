@@ -1,10 +1,36 @@
 #include "stickslip/analysis/settled_motion.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
+#include "stickslip/model/events.hpp"
 #include "stickslip/model/transient.hpp"
 
 namespace stickslip {
+
+namespace {
+
+// max |x2| over the simulated segments of `r`: at each segment's ends, and inside a slip also at
+// the extrema of its closed form (MinimumAndMaximum: the zeros of x2'); NaN if a search was cut short.
+double AmplitudeX2(const SimulationResult& r) {
+  const Parameters& p = r.parameters;
+  double amplitude = 0.0;
+  for (const Segment& s : r.segments) {
+    double low = std::min(s.start(1), s.end(1)), high = std::max(s.start(1), s.end(1));
+    if (s.mode != Mode::kStick) {
+      const ModeMotion<double> motion = MotionInMode(s.mode, s.start, p.omega * s.t_start + r.phi, p);
+      const Extrema e = MinimumAndMaximum(CoordinateAlong(motion, 1), 0.0, s.t_end - s.t_start);
+      if (std::isnan(e.minimum.value) || std::isnan(e.maximum.value)) return std::numeric_limits<double>::quiet_NaN();
+      low = std::min(low, e.minimum.value);
+      high = std::max(high, e.maximum.value);
+    }
+    amplitude = std::max({amplitude, high, -low});
+  }
+  return amplitude;
+}
+
+}  // namespace
 
 SettledMotion SimulateSettled(const Parameters& p, const State& start, double phi_section, const SettleOptions& o) {
   const double period = 2.0 * std::numbers::pi / p.omega;
@@ -38,6 +64,7 @@ SettledMotion SimulateSettled(const Parameters& p, const State& start, double ph
     motion.stops_per_period += e.kind == EventKind::kStop;
     motion.sticks_per_period += e.mode_after == Mode::kStick;
   }
+  motion.amplitude_x2 = AmplitudeX2(r);
   motion.stops_per_period /= o.recorded_periods;
   motion.sticks_per_period /= o.recorded_periods;
   const std::vector<State>& section = motion.section;

@@ -42,7 +42,7 @@ SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_
   SettledMotion motion = SimulateSettled(p, start, phi_section, settle);
   if (!motion.Completed()) throw PointError(o, chain, pass, step, p, motion.message);
   return SweepPoint{chain,    pass, step, p[o.parameter], std::move(motion.section), motion.stops_per_period,
-                    motion.sticks_per_period, motion.period};
+                    motion.sticks_per_period, motion.period, motion.amplitude_x2};
 }
 
 // A chain's up pass and then its down pass, each point from the last section state before it.
@@ -158,13 +158,14 @@ std::vector<State> ScatteredStarts(const State& centre, double half_width, int c
 
 std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section) {
   std::string out = fmt::format(
-      "chain,pass,step,{},section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period\n",
+      "chain,pass,step,{},section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2\n",
       ToString(parameter));
   for (const SweepPoint& p : points) {
     for (std::size_t k = 0; k < p.section.size(); ++k) {
       const State& x = p.section[k];
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", p.chain, ToString(p.pass), p.step, p.value,
-                         phi_section, k, x(0), x(1), x(2), x(3), p.stops_per_period, p.sticks_per_period, p.period);
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", p.chain, ToString(p.pass), p.step, p.value,
+                         phi_section, k, x(0), x(1), x(2), x(3), p.stops_per_period, p.sticks_per_period, p.period,
+                         p.amplitude_x2);
     }
   }
   return out;

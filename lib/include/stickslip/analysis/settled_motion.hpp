@@ -8,6 +8,7 @@
 //   if (m.Completed() && m.period > 0) use(m.section);
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,11 @@ struct SettledMotion {
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
   int period = 0;  // smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none
+  // max |x2(t)| over the recorded periods, exact as orbits/orbit_measures.hpp's amplitude_x2: over
+  // each recorded segment, the extrema of x2 on its closed form (at its ends or at the zeros of x2',
+  // found by the root finder that cannot miss one); x2 held in a stick. NaN when the simulation
+  // stopped early or the search for a zero was cut short.
+  double amplitude_x2 = std::numeric_limits<double>::quiet_NaN();
   // The recorded periods (events and segments), from the end of the transient at t = 0.
   SimulationResult record;
   // Where the motion got to: the last section state, or where a simulation stopped early.

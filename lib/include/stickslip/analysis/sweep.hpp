@@ -59,6 +59,9 @@ struct SweepPoint {
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
   int period = 0;  // smallest p with section[k + p] == section[k] (to tolerance); 0 if none
+  // max |x2(t)| over the recorded periods, exact (SettledMotion::amplitude_x2): the quantity a
+  // branch's `amplitude:x2` measures over its period, so the two are drawn on one axis.
+  double amplitude_x2 = 0.0;
 };
 
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
@@ -76,7 +79,8 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& 
 std::vector<State> ScatteredStarts(const State& centre, double half_width, int count, std::uint64_t seed);
 
 // One CSV row per recorded section point: chain, pass, step, <parameter>, section_phase, k, x1,
-// x2, v1, v2, stops_per_period, sticks_per_period, period. Deterministic: shortest round-trip
+// x2, v1, v2, stops_per_period, sticks_per_period, period, amplitude:x2 (the point's, repeated on
+// each of its rows). Deterministic: shortest round-trip
 // numbers.
 std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section);
 
