@@ -197,15 +197,8 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
     const py::gil_scoped_release release;
     return BranchFromBifurcation(from.special_points[row - rows.begin()], from.setup, side).setup;
   }();
-  ContinuationOptions& options = setup.options;
-  options.direction = side;
-  options.lambda_min = run.range_min;
-  options.lambda_max = run.range_max;
-  options.step.ds = run.ds;
-  options.step.ds_min = run.ds_min;
-  options.step.ds_max = run.ds_max;
-  options.max_points = run.max_points;
-  options.user_values.clear();
+  SetContinuationOptions(run, &setup.options);  // the direction is the side, as MakeSetup has it
+  setup.options.user_values.clear();
   return ContinueSetup(next, std::move(setup));
 }
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -239,14 +240,18 @@ py::dict AttractorColumns(const BruteForceMap& map) {
       section.append(StateArray(attractor.section));
     }
   }
+  const auto array = [](const auto& values) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
+  };
   py::dict d;
-  d["cell"] = py::array_t<int>(static_cast<py::ssize_t>(cell.size()), cell.data());
-  d["attractor"] = py::array_t<int>(static_cast<py::ssize_t>(index.size()), index.data());
+  d["cell"] = array(cell);
+  d["attractor"] = array(index);
   d["status"] = status;
-  d["period"] = py::array_t<int>(static_cast<py::ssize_t>(period.size()), period.data());
-  d["stops_per_period"] = py::array_t<double>(static_cast<py::ssize_t>(stops.size()), stops.data());
-  d["sticks_per_period"] = py::array_t<double>(static_cast<py::ssize_t>(sticks.size()), sticks.data());
-  d["starts"] = py::array_t<int>(static_cast<py::ssize_t>(starts.size()), starts.data());
+  d["period"] = array(period);
+  d["stops_per_period"] = array(stops);
+  d["sticks_per_period"] = array(sticks);
+  d["starts"] = array(starts);
   d["signature"] = signature;
   d["section"] = section;
   return d;

@@ -31,7 +31,40 @@ def _read_table(text, text_columns=_TEXT_COLUMNS, integer_columns=_INTEGER_COLUM
     return table
 
 
-class Branch:
+class _Table:
+    """What a branch and a trace share: their CSV table's columns as arrays by name (self._table) and
+    the names of summary.json or trace.json (self.summary)."""
+
+    @property
+    def columns(self):
+        return list(self._table)
+
+    def __getitem__(self, column):
+        if column not in self._table:
+            raise KeyError(f"{column!r}: valid columns {', '.join(self._table)}")
+        return self._table[column]
+
+    def __contains__(self, column):
+        return column in self._table
+
+    def keys(self):
+        return self._table.keys()
+
+    @property
+    def output(self):
+        return self.summary["output"]
+
+    @property
+    def parameter(self):
+        return self.summary["parameter"]
+
+    @property
+    def signature(self):
+        """The orbit type (of a trace: its start's)."""
+        return self.summary["signature"]
+
+
+class Branch(_Table):
     """A branch of periodic orbits as its result files hold it.
 
     branch["omega"], branch["margin:G:3"], branch["stable"]: the columns of branch.csv as NumPy
@@ -75,23 +108,8 @@ class Branch:
         """{file name: text} of the three result files."""
         return dict(self._files)
 
-    @property
-    def columns(self):
-        return list(self._table)
-
-    def __getitem__(self, column):
-        if column not in self._table:
-            raise KeyError(f"{column!r}: valid columns {', '.join(self._table)}")
-        return self._table[column]
-
-    def __contains__(self, column):
-        return column in self._table
-
     def __len__(self):
         return len(self._table["pt"])
-
-    def keys(self):
-        return self._table.keys()
 
     def sample(self, point, n=200):
         """(t, x) over one period of the orbit at branch point `point` (0-based, negative from the
@@ -104,18 +122,6 @@ class Branch:
             if s["label"] == label:
                 return s
         raise KeyError(f"{label!r}: valid labels {', '.join(s['label'] for s in self.special_points)}")
-
-    @property
-    def output(self):
-        return self.summary["output"]
-
-    @property
-    def parameter(self):
-        return self.summary["parameter"]
-
-    @property
-    def signature(self):
-        return self.summary["signature"]
 
     @property
     def termination(self):

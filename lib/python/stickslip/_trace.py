@@ -3,10 +3,10 @@ start (stickslip.trace), as its result files hold it: every branch a Branch, tra
 NumPy arrays, how each branch began and ended and how each direction ended (trace.json)."""
 
 from . import _stickslip as _core
-from ._branch import Branch, _read_table
+from ._branch import Branch, _read_table, _Table
 
 
-class Trace:
+class Trace(_Table):
     """A trace as its result files hold it (`stickslip trace`, a run file with [trace]).
 
     trace.branches      the branches in file order (branch-1, branch-2, ...: the down chain first,
@@ -54,28 +54,6 @@ class Trace:
     @property
     def ends(self):
         return {direction: d["end"] for direction, d in self.directions.items()}
-
-    @property
-    def output(self):
-        return self.summary["output"]
-
-    @property
-    def parameter(self):
-        return self.summary["parameter"]
-
-    @property
-    def signature(self):
-        """The start's orbit type."""
-        return self.summary["signature"]
-
-    @property
-    def columns(self):
-        return list(self._table)
-
-    def __getitem__(self, column):
-        if column not in self._table:
-            raise KeyError(f"{column!r}: valid columns {', '.join(self._table)}")
-        return self._table[column]
 
     def __len__(self):
         return len(self.branches)
