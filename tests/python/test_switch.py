@@ -82,3 +82,25 @@ def test_bad_switches_raise_value_error(tmp_path):
     with pytest.raises(ValueError, match=r"switch_branch' = true is invalid at 'EP1' \(a EP\): valid at a period "
                                          r"doubling \(PD\) or a symmetry breaking \(SB\)"):
         stickslip.continue_orbit("omega", (0.6, 0.8), results=tmp_path, point="to-pd:EP1", switch_branch=True)
+
+
+def test_a_switch_at_a_symmetry_breaking_leaves_on_mirror_image_orbits_without_the_symmetry():
+    # The §6 type continued down in omega past its type changes (no motion there: a test of the
+    # algebra) meets a multiplier -1 of its half-period map at omega = 0.55014
+    # (tests/branches/bifurcation_branches_test.cpp).
+    antisymmetric = stickslip.continue_orbit(
+        "omega", (0.54, 0.56), preset="paper-6", set={"omega": 0.5501955483169749},
+        guess={"x10": 9.936832707872899, "x20": 11.737822390429132, "v10": -6.552116682904398,
+               "phi": 3.586861573229454, "d1": 3.129379765497387, "d2": 1.8950732856966541,
+               "d3": 0.6855034600859811},
+        direction="down", ds=0.01, ds_max=0.02, max_points=30, continue_past_type_changes=True)
+    sb = [s for s in antisymmetric.special_points if s["type"] == "SB" and s["located"]]
+    assert len(sb) == 1 and abs(sb[0]["omega"] - 0.55014) < 1e-5
+    sides = [antisymmetric.switch(sb[0]["label"], side=side, max_points=12) for side in (1, -1)]
+    for branch in sides:
+        assert branch.signature == "slip- stick slip- slip+ stick slip+" and len(branch) == 12
+    # Without the symmetry the two halves' durations differ, more so away from the point; the two
+    # sides are mirror images, whose halves are swapped: d1 - d4 of opposite signs.
+    asymmetry = [branch["d1"] - branch["d4"] for branch in sides]
+    assert all(abs(asymmetry[0][1:]) > abs(asymmetry[0][:-1]))
+    assert all(asymmetry[0] * asymmetry[1] < 0)
