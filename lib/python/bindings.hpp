@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <pybind11/numpy.h>
@@ -36,6 +37,12 @@ struct RunInput {
 // A directory given to save(): (the results root, the run's name, its last component). Throws
 // InvalidInput naming "directory" when the name is not a run name.
 std::pair<std::filesystem::path, std::string> SplitRunDirectory(const std::string& directory);
+
+// A keyword's value as a run takes it, refused in the command line's words (InvalidInput, a
+// ValueError) rather than by pybind11's bare cast error: a whole number (2.5 or 10**30 would not
+// fit an int; `valid` is the range the message states), True or False.
+int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid);
+bool KeywordTrueOrFalse(const py::handle& value, const std::string& field);
 
 // Raises stickslip.ConvergenceError(message) with its `summary` attribute set (a dict).
 [[noreturn]] void RaiseConvergenceError(const std::string& message, py::dict summary);

@@ -33,27 +33,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A keyword's value as the run takes it, refused in the command line's words (InvalidInput, a
-// ValueError) rather than by pybind11's bare cast error: a whole number (2.5 or 10**30 would not
-// fit the run's int), True or False, finite numbers.
-int WholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
-  const auto refuse = [&] { return InvalidInput(field, std::string(py::repr(value)), std::string(valid)); };
-  if (py::isinstance<py::bool_>(value) || !(PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()))) throw refuse();
-  double x = 0;
-  try {
-    x = py::float_(py::reinterpret_borrow<py::object>(value));
-  } catch (const py::error_already_set&) {  // an int too large for a double
-    throw refuse();
-  }
-  if (!(std::trunc(x) == x && std::abs(x) <= std::numeric_limits<int>::max())) throw refuse();
-  return static_cast<int>(x);
-}
-
-bool TrueOrFalse(const py::handle& value, const std::string& field) {
-  if (!py::isinstance<py::bool_>(value)) throw InvalidInput(field, std::string(py::repr(value)), "True or False");
-  return value.cast<bool>();
-}
-
 std::vector<double> FiniteNumbers(const py::handle& values, const std::string& field) {
   std::vector<double> numbers = values.cast<std::vector<double>>();
   for (double v : numbers) {
@@ -68,7 +47,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   input.results = o["results"].cast<std::string>();
   run.path = kOneOffRunPath;
   SetRunFileStart(ToStartInput(start), &run);
-  run.restart_switch_branch = TrueOrFalse(o["switch_branch"], "switch_branch");
+  run.restart_switch_branch = KeywordTrueOrFalse(o["switch_branch"], "switch_branch");
   if (run.restart_switch_branch && run.restart_label.empty()) {
     throw InvalidInput("switch_branch", "True", "True with point='RUN:LABEL' at a PD or an SB; False");
   }
@@ -81,7 +60,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.ds = o["ds"].cast<double>();
   run.ds_min = o["ds_min"].cast<double>();
   run.ds_max = o["ds_max"].cast<double>();
-  run.max_points = WholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
+  run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
@@ -90,9 +69,9 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
     throw InvalidInput("linear-solver", "'" + run.linear_solver + "'", "klu, umfpack, dense");
   }
   CheckLinearSolverIsUsed(o["linear_solver_given"].cast<bool>() ? run.linear_solver : "", run.shooting);
-  run.detect_folds = TrueOrFalse(o["detect_folds"], "detect_folds");
-  run.detect_branch_points = TrueOrFalse(o["detect_branch_points"], "detect_branch_points");
-  run.continue_past_type_changes = TrueOrFalse(o["continue_past_type_changes"], "continue_past_type_changes");
+  run.detect_folds = KeywordTrueOrFalse(o["detect_folds"], "detect_folds");
+  run.detect_branch_points = KeywordTrueOrFalse(o["detect_branch_points"], "detect_branch_points");
+  run.continue_past_type_changes = KeywordTrueOrFalse(o["continue_past_type_changes"], "continue_past_type_changes");
   for (double v : FiniteNumbers(o["user_values"], "user_values")) run.user_values.emplace_back(run.parameter, v);
   for (const auto& [name, values] : o["user_values_of"].cast<py::dict>()) {
     const std::string key = name.cast<std::string>();
@@ -190,7 +169,7 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
   if (given("ds_min")) run.ds_min = o["ds_min"].cast<double>();
   if (given("ds_max")) run.ds_max = o["ds_max"].cast<double>();
   if (given("max_points")) {
-    run.max_points = WholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
+    run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   }
   CheckOneOffRun(run, fmt::format("{},{}", run.range_min, run.range_max));
   OrbitContinuationSetup setup = [&] {
@@ -394,6 +373,24 @@ void BindSweep(py::module_& m) {
 }
 
 }  // namespace
+
+int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
+  const auto refuse = [&] { return InvalidInput(field, std::string(py::repr(value)), std::string(valid)); };
+  if (py::isinstance<py::bool_>(value) || !(PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()))) throw refuse();
+  double x = 0;
+  try {
+    x = py::float_(py::reinterpret_borrow<py::object>(value));
+  } catch (const py::error_already_set&) {  // an int too large for a double
+    throw refuse();
+  }
+  if (!(std::trunc(x) == x && std::abs(x) <= std::numeric_limits<int>::max())) throw refuse();
+  return static_cast<int>(x);
+}
+
+bool KeywordTrueOrFalse(const py::handle& value, const std::string& field) {
+  if (!py::isinstance<py::bool_>(value)) throw InvalidInput(field, std::string(py::repr(value)), "True or False");
+  return value.cast<bool>();
+}
 
 std::pair<fs::path, std::string> SplitRunDirectory(const std::string& directory) {
   const fs::path path = fs::absolute(fs::path(directory)).lexically_normal();

@@ -36,18 +36,12 @@ namespace fs = std::filesystem;
 // as it names them (--max-branches, --max-amplitude, --loop-tolerance).
 TraceOptions TraceOptionsOf(const py::dict& o) {
   TraceOptions options;
-  const py::handle branches = o["max_branches"];
-  if (py::isinstance<py::bool_>(branches) || !(PyIndex_Check(branches.ptr()) || PyFloat_Check(branches.ptr()))) {
-    throw InvalidInput("max-branches", std::string(py::repr(branches)), WholeNumberRange("max-branches", 1, kMaxTraceBranches));
-  }
-  options.max_branches = WholeNumber("max-branches", branches.cast<double>(), 1, kMaxTraceBranches);
+  const std::string branches = WholeNumberRange("max-branches", 1, kMaxTraceBranches);
+  options.max_branches = stickslip::WholeNumber("max-branches", KeywordWholeNumber(o["max_branches"], "max-branches", branches),
+                                                1, kMaxTraceBranches);
   options.max_amplitude = o["max_amplitude"].cast<double>();
   options.loop_tolerance = o["loop_tolerance"].cast<double>();
-  const py::handle follow = o["follow_past_unswitched"];
-  if (!py::isinstance<py::bool_>(follow)) {
-    throw InvalidInput("follow_past_unswitched", std::string(py::repr(follow)), "True or False");
-  }
-  options.follow_past_unswitched = follow.cast<bool>();
+  options.follow_past_unswitched = KeywordTrueOrFalse(o["follow_past_unswitched"], "follow_past_unswitched");
   try {
     options.Validate();
   } catch (const InvalidInput& e) {

@@ -94,6 +94,7 @@ def test_a_loaded_trace_saves_the_same_bytes(trace41, tmp_path):
 @pytest.mark.parametrize("keywords, options", [
     (dict(max_branches=0), ["--max-branches", "0"]),
     (dict(max_branches=10001), ["--max-branches", "10001"]),
+    (dict(max_branches=2.5), ["--max-branches", "2.5"]),
     (dict(max_amplitude=-1.0), ["--max-amplitude", "-1"]),
     (dict(loop_tolerance=0.1), ["--loop-tolerance", "0.1"]),
     (dict(max_points=0), ["--max-points", "0"]),
@@ -111,5 +112,7 @@ def test_bad_input_raises_the_command_lines_message(tmp_path, keywords, options)
 def test_a_trace_takes_no_direction_and_a_branch_run_no_trace_file():
     with pytest.raises(TypeError, match="direction"):
         stickslip.trace("omega", (0.3, 0.69), direction="up", **KEYWORDS)
+    with pytest.raises(ValueError, match=r"^follow_past_unswitched = 1 is invalid: valid range True or False$"):
+        stickslip.trace("omega", (0.3, 0.69), follow_past_unswitched=1, **KEYWORDS)
     with pytest.raises(ValueError, match=r"\[trace\] is invalid here"):
         stickslip.Continuation.from_run_file(SOURCE / "continuation-scripts" / "paper-4.1-omega-trace.toml")
