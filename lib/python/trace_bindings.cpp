@@ -3,6 +3,8 @@
 // the library's one writer and reader of trace files; the brute-force map over two parameters (as
 // `stickslip map-sweep`) with its one CSV writer and reader.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -167,24 +169,29 @@ void BindTrace(py::module_& m) {
 
 // ---- brute-force map
 
+// The numeric keywords of map_sweep and the members they set; the defaults are MapSweepCommand's.
+constexpr std::array<std::pair<const char*, double MapSweepCommand::*>, 13> kMapNumbers = {{
+    {"first_from", &MapSweepCommand::first_from},
+    {"first_to", &MapSweepCommand::first_to},
+    {"first_steps", &MapSweepCommand::first_steps},
+    {"second_from", &MapSweepCommand::second_from},
+    {"second_to", &MapSweepCommand::second_to},
+    {"second_steps", &MapSweepCommand::second_steps},
+    {"transients", &MapSweepCommand::transients},
+    {"periods", &MapSweepCommand::periods},
+    {"starts", &MapSweepCommand::starts},
+    {"scatter", &MapSweepCommand::scatter},
+    {"seed", &MapSweepCommand::seed},
+    {"tolerance", &MapSweepCommand::tolerance},
+    {"threads", &MapSweepCommand::threads},
+}};
+
 BruteForceMap MapSweep(const py::dict& start, const py::dict& o) {
   const ModelStart origin = BuildModelStart(ToStartInput(start));
   MapSweepCommand c;
   c.first = o["first"].cast<std::string>();
   c.second = o["second"].cast<std::string>();
-  c.first_from = o["first_from"].cast<double>();
-  c.first_to = o["first_to"].cast<double>();
-  c.first_steps = o["first_steps"].cast<double>();
-  c.second_from = o["second_from"].cast<double>();
-  c.second_to = o["second_to"].cast<double>();
-  c.second_steps = o["second_steps"].cast<double>();
-  c.transients = o["transients"].cast<double>();
-  c.periods = o["periods"].cast<double>();
-  c.starts = o["starts"].cast<double>();
-  c.scatter = o["scatter"].cast<double>();
-  c.seed = o["seed"].cast<double>();
-  c.tolerance = o["tolerance"].cast<double>();
-  c.threads = o["threads"].cast<double>();
+  for (const auto& [key, member] : kMapNumbers) c.*member = o[key].cast<double>();
   const BruteForceMapOptions options = MapOptionsOf(c, origin);
   const py::gil_scoped_release release;
   return ComputeBruteForceMap(origin.parameters, origin.phi, options);
@@ -289,20 +296,16 @@ void BindMap(py::module_& m) {
           py::arg("path"), "The map of a file `stickslip map-sweep` (or save) wrote")
       .def("__len__", [](const BruteForceMap& map) { return map.cells.size(); });
   m.def("_map_sweep", &MapSweep, py::arg("start"), py::arg("options"));
+  // The defaults of the keywords, stated once (MapSweepCommand): whole numbers as int.
   m.def("_map_sweep_defaults", [] {
     const MapSweepCommand c;
     py::dict d;
     d["first"] = c.first;
     d["second"] = c.second;
-    d["first_steps"] = static_cast<int>(c.first_steps);
-    d["second_steps"] = static_cast<int>(c.second_steps);
-    d["transients"] = static_cast<int>(c.transients);
-    d["periods"] = static_cast<int>(c.periods);
-    d["starts"] = static_cast<int>(c.starts);
-    d["scatter"] = c.scatter;
-    d["seed"] = static_cast<int>(c.seed);
-    d["tolerance"] = c.tolerance;
-    d["threads"] = static_cast<int>(c.threads);
+    for (const auto& [key, member] : kMapNumbers) {
+      const double value = c.*member;
+      d[key] = std::trunc(value) == value ? py::object(py::int_(static_cast<long long>(value))) : py::object(py::float_(value));
+    }
     return d;
   });
 }
