@@ -12,9 +12,9 @@ The same computations as the command line, with the same keys and the same check
     cont = stickslip.Continuation("omega", (0.3, 0.9), preset="paper-5.1")
     for point in cont: ...                                 # one point at a time
     sweep = stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), steps=50)
-    trace = stickslip.trace("omega", (0.3, 1.0), preset="paper-4.1")   # -> Trace: Branches, ends
-    period2 = branch.switch("PD2")                         # the branch leaving a PD, SB or BP
-    m = stickslip.map_sweep(preset="paper-6", first_range=(0.5, 0.7), second_range=(0.2, 0.6))
+    trace = stickslip.trace("omega", (0.3, 0.69), preset="paper-4.1")  # -> Trace: Branches, ends
+    other = branch.switch("PD2", side=1)                   # the branch leaving a PD, SB or BP label
+    m = stickslip.map_sweep(preset="paper-6", first_range=(0.55, 0.6), second_range=(1.2, 1.5))
 
 Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
 ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
