@@ -15,6 +15,7 @@
 #include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/map_file.hpp"
 #include "stickslip/model/transient.hpp"
 
@@ -46,10 +47,6 @@ struct MapSweepArgs {
 
 const std::string kShardRange = fmt::format("k/N with whole numbers 1 <= k <= N <= {}", BruteForceMapOptions::kMaxShards);
 
-std::string ToleranceRange() {
-  return fmt::format("{} <= tolerance <= {}", BruteForceMapOptions::kMinTolerance, BruteForceMapOptions::kMaxTolerance);
-}
-
 // "k/N" -> (k, N).
 std::pair<int, int> ParseShard(const std::string& text) {
   const auto slash = text.find('/');
@@ -62,12 +59,6 @@ std::pair<int, int> ParseShard(const std::string& text) {
     }
   }
   throw InvalidInput("shard", "'" + text + "'", kShardRange);
-}
-
-ParameterId AxisParameter(const char* field, const std::string& name) {
-  const std::optional<ParameterId> id = ParameterFromString(name);
-  if (!id) throw InvalidInput(field, "'" + name + "'", "chi, eta, omega, u_s, u_r");
-  return *id;
 }
 
 std::string ReadWholeFile(const std::string& path) {
@@ -91,27 +82,24 @@ int RunMerge(const MapSweepArgs& args) {
 
 MapSweepPlan PlanOf(const MapSweepArgs& args) {
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
-  MapSweepPlan plan{input.parameters, input.phi, {}, args.output};
-  BruteForceMapOptions& o = plan.options;
-  o.first = {AxisParameter("first", args.first), args.first_from, args.first_to, args.first_steps};
-  o.second = {AxisParameter("second", args.second), args.second_from, args.second_to, args.second_steps};
-  if (o.first.parameter == o.second.parameter) {
-    throw InvalidInput("second", "'" + args.second + "'", "chi, eta, omega, u_s, u_r other than --first");
-  }
-  o.transient_periods = args.transients;
-  o.recorded_periods = args.periods;
-  o.scattered_starts = args.starts;
-  o.centre = input.initial_state;
-  o.scatter = args.scatter;
-  o.seed = static_cast<std::uint64_t>(args.seed);
-  if (!(args.tolerance >= BruteForceMapOptions::kMinTolerance && args.tolerance <= BruteForceMapOptions::kMaxTolerance)) {
-    throw InvalidInput("tolerance", args.tolerance, ToleranceRange());
-  }
-  o.periodicity_tolerance = args.tolerance;
-  o.threads = args.threads;
-  std::tie(o.shard, o.shards) = ParseShard(args.shard);
-  o.Validate(plan.base);  // the cells' parameters ("grid ..."); every other field is checked above
-  return plan;
+  MapSweepCommand c;
+  c.first = args.first;
+  c.second = args.second;
+  c.first_from = args.first_from;
+  c.first_to = args.first_to;
+  c.first_steps = args.first_steps;
+  c.second_from = args.second_from;
+  c.second_to = args.second_to;
+  c.second_steps = args.second_steps;
+  c.transients = args.transients;
+  c.periods = args.periods;
+  c.starts = args.starts;
+  c.scatter = args.scatter;
+  c.seed = args.seed;
+  c.tolerance = args.tolerance;
+  c.threads = args.threads;
+  std::tie(c.shard, c.shards) = ParseShard(args.shard);
+  return {input.parameters, input.phi, MapOptionsOf(c, input), args.output};
 }
 
 }  // namespace
@@ -179,7 +167,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
   AddNumberOption(*cmd, "--scatter", &args->scatter, "0 <= scatter <= 1e6",
                   "half-width of the box around the given state the scattered starts are drawn from (0 to 1e6)");
   AddCountOption(*cmd, "--seed", &args->seed, 0, 1000000000, "seed of the scattered starts (0 to 1e9)");
-  AddNumberOption(*cmd, "--tolerance", &args->tolerance, ToleranceRange(),
+  AddNumberOption(*cmd, "--tolerance", &args->tolerance, MapSweepOptionRange("tolerance"),
                   "section points repeat, and two runs' orbits agree, within this (absolute, max norm; 1e-14 to 1e-2)");
   AddCountOption(*cmd, "--threads", &args->threads, 0, 1024, "threads (0: every core; 0 to 1024)");
   cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")

@@ -4,12 +4,16 @@
 // as one dict and compute with the GIL released.
 #pragma once
 
+#include <filesystem>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "stickslip/io/run_file.hpp"
 #include "stickslip/numerics/newton.hpp"
 #include "stickslip/orbits/start_problem.hpp"
 
@@ -21,6 +25,24 @@ namespace py = pybind11;
 // (lists of (name, value)), free (names), fix (list of (name, value or None)), tie_u_r,
 // paper_choice. The restart point is read here from results/RUN. Throws InvalidInput.
 StartInput ToStartInput(const py::dict& start);
+
+// The run a continuation or a trace computes: from a run file, or from keywords as `stickslip
+// continue` and `stickslip trace` make one (summary.json and trace.json record "(command line)" as
+// the run file, as the commands' do), with the results root its restart point is read from.
+struct RunInput {
+  RunFile run;
+  std::string results = "results";
+};
+
+// A directory given to save(): (the results root, the run's name, its last component). Throws
+// InvalidInput naming "directory" when the name is not a run name.
+std::pair<std::filesystem::path, std::string> SplitRunDirectory(const std::string& directory);
+
+// A keyword's value as a run takes it, refused in the command line's words (InvalidInput, a
+// ValueError) rather than by pybind11's bare cast error: a whole number (2.5 or 10**30 would not
+// fit an int; `valid` is the range the message states), True or False.
+int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid);
+bool KeywordTrueOrFalse(const py::handle& value, const std::string& field);
 
 // Raises stickslip.ConvergenceError(message) with its `summary` attribute set (a dict).
 [[noreturn]] void RaiseConvergenceError(const std::string& message, py::dict summary);
@@ -34,10 +56,11 @@ py::tuple SampleOrbit(const Orbit& orbit, int count);
 py::array_t<double> StateArray(const std::vector<State>& states);
 
 // The bindings of orbit_bindings.cpp (model, single orbits) and branch_bindings.cpp (branches,
-// continuation stepping, sweeps, runs). A new capability (find, trace) adds a function to one of
+// continuation stepping, sweeps, runs) and trace_bindings.cpp (traces, maps). A new capability (find, trace) adds a function to one of
 // them and a wrapper to __init__.py.
 void BindErrors(py::module_& m);  // ConvergenceError, and InvalidInput as ValueError
 void BindOrbits(py::module_& m);
 void BindBranches(py::module_& m);
+void BindTraces(py::module_& m);  // trace_bindings.cpp: traces and brute-force maps
 
 }  // namespace stickslip::python

@@ -1,6 +1,7 @@
 // Branches for Python: a continuation run given by keywords (as `stickslip continue`) or by a run
 // file (as `stickslip run`), continued in one call or stepped by hand, its stored form with the
 // library's one writer and reader of result files, and brute-force sweeps.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -12,9 +13,11 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "bindings.hpp"
 #include "stickslip/analysis/sweep.hpp"
+#include "stickslip/branches/bifurcation_branches.hpp"
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
@@ -30,35 +33,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The run a continuation computes: from a run file, or from keywords as `stickslip continue`
-// makes one (its summary.json records "(command line)" as the run file, as the command's does),
-// with the results root its restart point is read from.
-struct RunInput {
-  RunFile run;
-  std::string results = "results";
-};
-
-// A keyword's value as the run takes it, refused in the command line's words (InvalidInput, a
-// ValueError) rather than by pybind11's bare cast error: a whole number (2.5 or 10**30 would not
-// fit the run's int), True or False, finite numbers.
-int WholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
-  const auto refuse = [&] { return InvalidInput(field, std::string(py::repr(value)), std::string(valid)); };
-  if (py::isinstance<py::bool_>(value) || !(PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()))) throw refuse();
-  double x = 0;
-  try {
-    x = py::float_(py::reinterpret_borrow<py::object>(value));
-  } catch (const py::error_already_set&) {  // an int too large for a double
-    throw refuse();
-  }
-  if (!(std::trunc(x) == x && std::abs(x) <= std::numeric_limits<int>::max())) throw refuse();
-  return static_cast<int>(x);
-}
-
-bool TrueOrFalse(const py::handle& value, const std::string& field) {
-  if (!py::isinstance<py::bool_>(value)) throw InvalidInput(field, std::string(py::repr(value)), "True or False");
-  return value.cast<bool>();
-}
-
 std::vector<double> FiniteNumbers(const py::handle& values, const std::string& field) {
   std::vector<double> numbers = values.cast<std::vector<double>>();
   for (double v : numbers) {
@@ -73,6 +47,10 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   input.results = o["results"].cast<std::string>();
   run.path = kOneOffRunPath;
   SetRunFileStart(ToStartInput(start), &run);
+  run.restart_switch_branch = KeywordTrueOrFalse(o["switch_branch"], "switch_branch");
+  if (run.restart_switch_branch && run.restart_label.empty()) {
+    throw InvalidInput("switch_branch", "True", "True with point='RUN:LABEL' at a PD or an SB; False");
+  }
   run.output = o["output"].cast<std::string>();
   run.parameter = o["parameter"].cast<std::string>();
   run.direction = ContinuationDirection(o["direction"].cast<std::string>());
@@ -82,7 +60,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.ds = o["ds"].cast<double>();
   run.ds_min = o["ds_min"].cast<double>();
   run.ds_max = o["ds_max"].cast<double>();
-  run.max_points = WholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
+  run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
@@ -91,9 +69,9 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
     throw InvalidInput("linear-solver", "'" + run.linear_solver + "'", "klu, umfpack, dense");
   }
   CheckLinearSolverIsUsed(o["linear_solver_given"].cast<bool>() ? run.linear_solver : "", run.shooting);
-  run.detect_folds = TrueOrFalse(o["detect_folds"], "detect_folds");
-  run.detect_branch_points = TrueOrFalse(o["detect_branch_points"], "detect_branch_points");
-  run.continue_past_type_changes = TrueOrFalse(o["continue_past_type_changes"], "continue_past_type_changes");
+  run.detect_folds = KeywordTrueOrFalse(o["detect_folds"], "detect_folds");
+  run.detect_branch_points = KeywordTrueOrFalse(o["detect_branch_points"], "detect_branch_points");
+  run.continue_past_type_changes = KeywordTrueOrFalse(o["continue_past_type_changes"], "continue_past_type_changes");
   for (double v : FiniteNumbers(o["user_values"], "user_values")) run.user_values.emplace_back(run.parameter, v);
   for (const auto& [name, values] : o["user_values_of"].cast<py::dict>()) {
     const std::string key = name.cast<std::string>();
@@ -102,16 +80,18 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   return input;
 }
 
-RunInput RunFileInput(const std::string& path, const std::string& results) {
-  RunFile run = ReadRunFile(path);
-  // A trace is not one branch: refused rather than continued as one (traces are not bound yet).
-  if (run.trace) {
-    throw RunFileError(fmt::format("{}: [trace] is invalid here: valid a run file of one branch (run a trace with "
-                                   "`stickslip run` or `stickslip trace`)",
-                                   run.path),
+// A run file of one branch or of a trace ([trace]): the Python layer runs the one it is.
+RunInput RunFileInput(const std::string& path, const std::string& results) { return RunInput{ReadRunFile(path), results}; }
+
+// A continuation's run: one branch. A trace run file is refused here (stickslip.run traces it).
+const RunInput& OneBranch(const RunInput& input) {
+  if (input.run.trace) {
+    throw RunFileError(fmt::format("{}: [trace] is invalid here: valid a run file of one branch (trace it with "
+                                   "stickslip.run or stickslip.trace)",
+                                   input.run.path),
                        "trace");
   }
-  return RunInput{std::move(run), results};
+  return input;
 }
 
 // A start that did not converge ends nothing: it raises, as the command line exits 3.
@@ -123,32 +103,90 @@ void RaiseIfStartFailed(const RunInput& input, const Branch& branch) {
   RaiseConvergenceError(fmt::format("{}: {}", input.run.path, branch.end_message), summary);
 }
 
-StoredRun Continue(const RunInput& input) {
+// A branch computed in this process: its stored form, and what the engine knew of it, so that the
+// branch leaving one of its bifurcations starts from the engine's own point and tangent (a BP
+// needs them: result files do not keep the tangent).
+struct ComputedRun {
+  RunInput input;
+  OrbitContinuationSetup setup;
+  std::vector<SpecialPoint> special_points;  // the engine's, one per row of stored.special_points
+  StoredRun stored;
+};
+
+ComputedRun Computed(const RunInput& input, OrbitContinuationSetup setup, const OrbitBranch& branch) {
+  RaiseIfStartFailed(input, branch.branch);
+  StoredRun stored = RecordRun(input.run, branch);
+  return {input, std::move(setup), branch.branch.special_points, std::move(stored)};
+}
+
+// The continuation of `setup` with the GIL released. Between steps the GIL is taken for a moment to
+// see Ctrl-C (KeyboardInterrupt), which ends the continuation there.
+ComputedRun ContinueSetup(const RunInput& input, OrbitContinuationSetup setup) {
   OrbitBranch branch;
   {
     py::gil_scoped_release release;
-    // Between steps the GIL is taken for a moment to see Ctrl-C (KeyboardInterrupt), which ends
-    // the continuation there.
-    branch = ContinueOrbit(MakeSetup(input.run, input.results), [](const Branch&) {
+    branch = ContinueOrbit(setup, [](const Branch&) {
       const py::gil_scoped_acquire acquire;
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     });
   }
-  RaiseIfStartFailed(input, branch.branch);
-  return RecordRun(input.run, branch);
+  return Computed(input, std::move(setup), branch);
+}
+
+ComputedRun Continue(const RunInput& input) {
+  OneBranch(input);
+  OrbitContinuationSetup setup = [&] {
+    const py::gil_scoped_release release;  // a restart from a PD or an SB solves its point first
+    return MakeSetup(input.run, input.results);
+  }();
+  return ContinueSetup(input, std::move(setup));
+}
+
+// The branch that leaves the special point `label` of `from` on the side `side` (BranchFromBifurcation
+// with the engine's tangent), continued with `from`'s options but those given in `o` (range, ds,
+// ds_min, ds_max, max_points, output; None: from's). Recorded as a one-off run restarted at the
+// label with switch_branch, as `restart = { run, label, switch_branch = true }` describes it.
+ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, const py::dict& o) {
+  const std::vector<StoredSpecialPoint>& rows = from.stored.special_points;
+  const auto row = std::find_if(rows.begin(), rows.end(), [&](const StoredSpecialPoint& s) { return s.point.label == label; });
+  if (row == rows.end()) {
+    std::vector<std::string> labels;
+    for (const StoredSpecialPoint& s : rows) labels.push_back(s.point.label);
+    throw InvalidInput("label", "'" + label + "'", fmt::format("a label of the branch: {}", fmt::join(labels, ", ")));
+  }
+  RunInput next = from.input;
+  RunFile& run = next.run;
+  run.path = kOneOffRunPath;
+  run.restart_run = from.stored.summary.output;
+  run.restart_label = label;
+  run.restart_switch_branch = true;
+  run.direction = side;
+  run.user_values.clear();  // they address the unknowns of `from`'s problem
+  const auto given = [&](const char* key) { return o.contains(key) && !o[key].is_none(); };
+  if (given("output")) run.output = o["output"].cast<std::string>();
+  if (given("range")) std::tie(run.range_min, run.range_max) = o["range"].cast<std::pair<double, double>>();
+  if (given("ds")) run.ds = o["ds"].cast<double>();
+  if (given("ds_min")) run.ds_min = o["ds_min"].cast<double>();
+  if (given("ds_max")) run.ds_max = o["ds_max"].cast<double>();
+  if (given("max_points")) {
+    run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
+  }
+  CheckOneOffRun(run, fmt::format("{},{}", run.range_min, run.range_max));
+  OrbitContinuationSetup setup = [&] {
+    const py::gil_scoped_release release;
+    return BranchFromBifurcation(from.special_points[row - rows.begin()], from.setup, side).setup;
+  }();
+  SetContinuationOptions(run, &setup.options);  // the direction is the side, as MakeSetup has it
+  setup.options.user_values.clear();
+  return ContinueSetup(next, std::move(setup));
 }
 
 // A run's directory: its three files through the library's one writer, the name of the directory
 // in summary.json's "output" (so that a restart by name finds it), other files kept.
 std::vector<std::string> Save(const StoredRun& run, const std::string& directory) {
-  const fs::path path = fs::absolute(fs::path(directory)).lexically_normal();
-  const fs::path name = path.filename().empty() ? path.parent_path().filename() : path.filename();
-  const fs::path root = path.filename().empty() ? path.parent_path().parent_path() : path.parent_path();
+  const auto [root, name] = SplitRunDirectory(directory);
   StoredRun named = run;
-  named.summary.output = name.string();
-  if (!IsRunName(named.summary.output)) {
-    throw InvalidInput("directory", "'" + directory + "'", std::string(kRunNameRule));
-  }
+  named.summary.output = name;
   return WriteRunFiles(root, named);
 }
 
@@ -170,8 +208,8 @@ py::dict SummaryOf(const StoredRun& run) {
 // so that the engine's references stay valid as long as Python holds the object.
 class Stepper {
  public:
-  explicit Stepper(RunInput input)
-      : input_(std::move(input)),
+  explicit Stepper(const RunInput& input)
+      : input_(OneBranch(input)),
         setup_(MakeSetup(input_.run, input_.results)),
         problem_(MakeOrbitContinuation(setup_)),
         continuation_(std::make_unique<Continuation>(*problem_.system, problem_.monitor.get(), problem_.options,
@@ -229,9 +267,10 @@ class Stepper {
     return d;
   }
 
-  StoredRun Stored() const {
+  ComputedRun Stored() const {
     const std::lock_guard<std::mutex> lock(mutex_);
-    return RecordRun(input_.run, ToOrbitBranch(problem_, continuation_->branch()));
+    const OrbitBranch branch = ToOrbitBranch(problem_, continuation_->branch());
+    return {input_, setup_, branch.branch.special_points, RecordRun(input_.run, branch)};
   }
 
  private:
@@ -335,14 +374,44 @@ void BindSweep(py::module_& m) {
 
 }  // namespace
 
+int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
+  const auto refuse = [&] { return InvalidInput(field, std::string(py::repr(value)), std::string(valid)); };
+  if (py::isinstance<py::bool_>(value) || !(PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()))) throw refuse();
+  double x = 0;
+  try {
+    x = py::float_(py::reinterpret_borrow<py::object>(value));
+  } catch (const py::error_already_set&) {  // an int too large for a double
+    throw refuse();
+  }
+  if (!(std::trunc(x) == x && std::abs(x) <= std::numeric_limits<int>::max())) throw refuse();
+  return static_cast<int>(x);
+}
+
+bool KeywordTrueOrFalse(const py::handle& value, const std::string& field) {
+  if (!py::isinstance<py::bool_>(value)) throw InvalidInput(field, std::string(py::repr(value)), "True or False");
+  return value.cast<bool>();
+}
+
+std::pair<fs::path, std::string> SplitRunDirectory(const std::string& directory) {
+  const fs::path path = fs::absolute(fs::path(directory)).lexically_normal();
+  const fs::path name = path.filename().empty() ? path.parent_path().filename() : path.filename();
+  const fs::path root = path.filename().empty() ? path.parent_path().parent_path() : path.parent_path();
+  if (!IsRunName(name.string())) throw InvalidInput("directory", "'" + directory + "'", std::string(kRunNameRule));
+  return {root, name.string()};
+}
+
 void BindBranches(py::module_& m) {
   py::class_<RunInput>(m, "_RunInput")
       .def_property_readonly("output", [](const RunInput& r) { return r.run.output; })
       .def_property_readonly("parameter", [](const RunInput& r) { return r.run.parameter; })
-      .def_property_readonly("path", [](const RunInput& r) { return r.run.path; });
+      .def_property_readonly("path", [](const RunInput& r) { return r.run.path; })
+      .def_property_readonly("is_trace", [](const RunInput& r) { return r.run.trace.has_value(); });
   m.def("_one_off_run", &OneOffRun, py::arg("start"), py::arg("options"));
   m.def("_run_file", &RunFileInput, py::arg("path"), py::arg("results"));
   m.def("_continue", &Continue, py::arg("run"));
+  py::class_<ComputedRun>(m, "_ComputedRun")
+      .def_property_readonly("stored", [](const ComputedRun& r) { return r.stored; })
+      .def("switch", &Switch, py::arg("label"), py::arg("side"), py::arg("options"));
   // The defaults of the keywords, stated once: a run file's (the engine's) and the sweep's.
   m.def("_continuation_defaults", [] {
     const RunFile run;

@@ -562,4 +562,5 @@ PYBIND11_MODULE(_stickslip, m) {
   stickslip::python::BindErrors(m);
   stickslip::python::BindOrbits(m);
   stickslip::python::BindBranches(m);
+  stickslip::python::BindTraces(m);
 }

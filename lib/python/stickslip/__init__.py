@@ -12,6 +12,9 @@ The same computations as the command line, with the same keys and the same check
     cont = stickslip.Continuation("omega", (0.3, 0.9), preset="paper-5.1")
     for point in cont: ...                                 # one point at a time
     sweep = stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), steps=50)
+    trace = stickslip.trace("omega", (0.3, 0.69), preset="paper-4.1")  # -> Trace: Branches, ends
+    other = branch.switch("PD2", side=1)                   # the branch leaving a PD, SB or BP label
+    m = stickslip.map_sweep(preset="paper-6", first_range=(0.55, 0.6), second_range=(1.2, 1.5))
 
 Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
 ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
@@ -26,14 +29,15 @@ from dataclasses import dataclass as _dataclass
 import numpy as _np
 
 from . import _stickslip as _core
-from ._stickslip import ConvergenceError, Orbit, Parameters, Signature, SweepResult
+from ._stickslip import ConvergenceError, MapSweepResult, Orbit, Parameters, Signature, SweepResult
 from ._branch import Branch, Continuation
+from ._trace import Trace
 from ._inputs import _one_off_run, _start
 
 __all__ = [
-    "Branch", "Continuation", "ConvergenceError", "Orbit", "Parameters", "Preset", "Signature",
-    "Found", "Simulation", "SweepResult", "continue_orbit", "find", "natural_frequencies", "presets",
-    "run", "simulate", "solve", "sweep",
+    "Branch", "Continuation", "ConvergenceError", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
+    "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
+    "presets", "run", "simulate", "solve", "sweep", "trace",
 ]
 
 
@@ -185,6 +189,10 @@ def continue_orbit(parameter, range, **keywords):
                 run files
     user_values     values of the parameter at which to record a UZ point
     user_values_of  {variable: [values]}: UZ points of other unknowns
+    switch_branch   with point="RUN:LABEL" at a PD or an SB: the branch that leaves the point (the
+                run file's restart = { ..., switch_branch = true }), on the side `direction` names
+                ("up" +1, "down" -1); single shooting. Branch.switch does the same from a branch in
+                memory, also at a BP.
     The start keywords are solve()'s. Returns a Branch; raises ConvergenceError if the start does
     not converge, ValueError for bad input (the command line's message).
     """
@@ -193,12 +201,49 @@ def continue_orbit(parameter, range, **keywords):
 
 continue_orbit.__signature__ = _inspect.signature(_one_off_run)
 
+_TRACE_DEFAULTS = _core._trace_defaults()
+# The keywords of continue_orbit that a trace does not take: it goes both ways and decides at every
+# change of type.
+_NOT_TRACE_KEYWORDS = ("direction", "continue_past_type_changes", "switch_branch")
+
+
+def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
+          max_amplitude=_TRACE_DEFAULTS["max_amplitude"], loop_tolerance=_TRACE_DEFAULTS["loop_tolerance"],
+          follow_past_unswitched=_TRACE_DEFAULTS["follow_past_unswitched"], **keywords):
+    """Follow the chain of orbit branches through every change of orbit type, both ways from the
+    start within `range`, as `stickslip trace`: at each change the adjacent types are tried and the
+    one confirmed by simulation is continued.
+
+    max_branches    branches per direction (1 to 1e4)
+    max_amplitude   a resonance ends a direction where max |x1|, |x2| over the orbit (scaled
+                    displacement, exact) passes this (> 0)
+    loop_tolerance  the chain has come back to a point it visited when the signature agrees and
+                    the parameter (relative), start state, phase and period differ by at most this
+                    (0 < loop_tolerance <= 1e-2)
+    follow_past_unswitched  at a change of type that switches nowhere, follow the same type on past
+                    it (not a motion there, admissible 0) instead of ending the direction
+    The other keywords are continue_orbit's but direction, continue_past_type_changes and
+    switch_branch (the range bounds the whole trace; ds, max_points, ... apply to every branch).
+    Returns a Trace whether or not a direction ended at a change of type that switched nowhere (the
+    command line's exit 6: see trace.ends); raises ConvergenceError when no branch started,
+    ValueError for bad input (the command line's message).
+    """
+    for key in _NOT_TRACE_KEYWORDS:
+        if key in keywords:
+            raise TypeError(f"trace() got an unexpected keyword argument '{key}' (a trace goes both ways)")
+    options = {"max_branches": max_branches, "max_amplitude": float(max_amplitude),
+               "loop_tolerance": float(loop_tolerance), "follow_past_unswitched": follow_past_unswitched}
+    return Trace(_core._trace(_one_off_run(parameter, range, **keywords), options))
+
 
 def run(path, results="results"):
     """Run a run file (TOML, continuation-scripts/), as `stickslip run`, without writing: returns the
-    Branch; branch.save(f"{results}/{branch.output}") writes the files `stickslip run` writes.
-    Restart points are read from `results`."""
-    return Branch(_core._continue(_core._run_file(str(path), str(results))))
+    Branch, or the Trace of a run file with a [trace] table; result.save(f"{results}/{result.output}")
+    writes the files `stickslip run` writes. Restart points are read from `results`."""
+    run_input = _core._run_file(str(path), str(results))
+    if run_input.is_trace:
+        return Trace(_core._trace(run_input, None))
+    return Branch(_core._continue(run_input))
 
 
 _SWEEP_DEFAULTS = _core._sweep_defaults()
@@ -229,3 +274,40 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
                "transients": float(transients), "periods": float(periods), "start": str(start),
                "chains": float(chains), "scatter": float(scatter), "seed": float(seed), "threads": float(threads)}
     return _core._sweep(origin, options)
+
+
+_MAP_DEFAULTS = _core._map_sweep_defaults()
+
+
+def map_sweep(parameters=None, state=None, phi=None, *, first_range, second_range,
+              first=_MAP_DEFAULTS["first"], second=_MAP_DEFAULTS["second"],
+              first_steps=_MAP_DEFAULTS["first_steps"], second_steps=_MAP_DEFAULTS["second_steps"],
+              transients=_MAP_DEFAULTS["transients"], periods=_MAP_DEFAULTS["periods"], starts=_MAP_DEFAULTS["starts"],
+              scatter=_MAP_DEFAULTS["scatter"], seed=_MAP_DEFAULTS["seed"], tolerance=_MAP_DEFAULTS["tolerance"],
+              threads=_MAP_DEFAULTS["threads"], preset=None, point=None, results="results", set=None):
+    """The brute-force map of motions over two parameters, as `stickslip map-sweep`.
+
+    first, second   the parameters stepped along i and along j (chi, eta, omega, u_s, u_r; different)
+    first_range, second_range  (from, to) of each, in the parameter's valid range (every cell is
+                    checked: u_r >= u_s, away from the natural frequencies)
+    first_steps, second_steps  intervals along i and j (0 to 1e4): (steps + 1) cells each
+    transients      forcing periods discarded per run (0 to 1e6)
+    periods         forcing periods recorded per run (2 to 1e5): periods up to half of it are found
+    starts          starts per cell besides rest and the neighbour cell's end (0 to 1000): the given
+                    state (state=, the preset's; rest if none) and states scattered around it
+    scatter         half-width of the box the scattered starts are drawn from (0 to 1e6); seed (0 to 1e9)
+    tolerance       section points repeat, and two runs' orbits agree, within this (absolute, max
+                    norm; 1e-14 to 1e-2)
+    threads         0: every core (0 to 1024); the map does not depend on it
+    The section is taken at the forcing phase phi (time 0 of every run). Returns a MapSweepResult:
+    per cell and per attractor NumPy arrays; result.csv() / result.save(path) is the file
+    `stickslip map-sweep --output` writes. The GIL is released while the map is computed.
+    """
+    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    options = {"first": str(first), "second": str(second), "first_from": float(first_range[0]),
+               "first_to": float(first_range[1]), "first_steps": float(first_steps),
+               "second_from": float(second_range[0]), "second_to": float(second_range[1]),
+               "second_steps": float(second_steps), "transients": float(transients), "periods": float(periods),
+               "starts": float(starts), "scatter": float(scatter), "seed": float(seed),
+               "tolerance": float(tolerance), "threads": float(threads)}
+    return _core._map_sweep(origin, options)

@@ -14,7 +14,7 @@ _TEXT_COLUMNS = ("label", "type", "test_function")
 _INTEGER_COLUMNS = ("pt", "stable", "admissible", "stops", "sticks", "newton_iterations", "located")
 
 
-def _read_table(text):
+def _read_table(text, text_columns=_TEXT_COLUMNS, integer_columns=_INTEGER_COLUMNS):
     """A result file's CSV text as {column: array}: numbers as float (int for counts and flags),
     the text columns as str arrays."""
     rows = list(_csv.reader(_io.StringIO(text)))
@@ -22,16 +22,49 @@ def _read_table(text):
     table = {}
     for k, name in enumerate(header):
         values = [row[k] for row in body]
-        if name in _TEXT_COLUMNS:
+        if name in text_columns:
             table[name] = _np.array(values, dtype=str)
-        elif name in _INTEGER_COLUMNS:
+        elif name in integer_columns:
             table[name] = _np.array([int(v) for v in values], dtype=int)
         else:
             table[name] = _np.array([float(v) for v in values], dtype=float)
     return table
 
 
-class Branch:
+class _Table:
+    """What a branch and a trace share: their CSV table's columns as arrays by name (self._table) and
+    the names of summary.json or trace.json (self.summary)."""
+
+    @property
+    def columns(self):
+        return list(self._table)
+
+    def __getitem__(self, column):
+        if column not in self._table:
+            raise KeyError(f"{column!r}: valid columns {', '.join(self._table)}")
+        return self._table[column]
+
+    def __contains__(self, column):
+        return column in self._table
+
+    def keys(self):
+        return self._table.keys()
+
+    @property
+    def output(self):
+        return self.summary["output"]
+
+    @property
+    def parameter(self):
+        return self.summary["parameter"]
+
+    @property
+    def signature(self):
+        """The orbit type (of a trace: its start's)."""
+        return self.summary["signature"]
+
+
+class Branch(_Table):
     """A branch of periodic orbits as its result files hold it.
 
     branch["omega"], branch["margin:G:3"], branch["stable"]: the columns of branch.csv as NumPy
@@ -42,8 +75,15 @@ class Branch:
     library's one writer and reader, the same bytes as the command line's for the same run.
     """
 
-    def __init__(self, stored):
+    def __init__(self, run, link=None):
+        # A branch computed in this process also keeps the engine's special points and setup, from
+        # which switch() starts; a loaded one (or a trace's) holds its files only.
+        self._computed = run if isinstance(run, _core._ComputedRun) else None
+        stored = run.stored if self._computed is not None else run
         self._stored = stored
+        #: In a trace: how the branch began and ended ({name, chain, direction, signature, points,
+        #: start, margin, switch, end, message}, as trace.json has it); None otherwise.
+        self.link = link
         branch_csv, special_csv, summary = stored.files()
         self._files = {"branch.csv": branch_csv, "special-points.csv": special_csv, "summary.json": summary}
         self._table = _read_table(branch_csv)
@@ -68,23 +108,8 @@ class Branch:
         """{file name: text} of the three result files."""
         return dict(self._files)
 
-    @property
-    def columns(self):
-        return list(self._table)
-
-    def __getitem__(self, column):
-        if column not in self._table:
-            raise KeyError(f"{column!r}: valid columns {', '.join(self._table)}")
-        return self._table[column]
-
-    def __contains__(self, column):
-        return column in self._table
-
     def __len__(self):
         return len(self._table["pt"])
-
-    def keys(self):
-        return self._table.keys()
 
     def sample(self, point, n=200):
         """(t, x) over one period of the orbit at branch point `point` (0-based, negative from the
@@ -99,24 +124,33 @@ class Branch:
         raise KeyError(f"{label!r}: valid labels {', '.join(s['label'] for s in self.special_points)}")
 
     @property
-    def output(self):
-        return self.summary["output"]
-
-    @property
-    def parameter(self):
-        return self.summary["parameter"]
-
-    @property
-    def signature(self):
-        return self.summary["signature"]
-
-    @property
     def termination(self):
         return self.summary["termination"]
 
     @property
     def message(self):
         return self.summary["message"]
+
+    def switch(self, label, side=1, *, range=None, output=None, ds=None, ds_min=None, ds_max=None, max_points=None):
+        """Continues the branch that leaves the special point `label` of this branch (AUTO's ISW = -1):
+        at a "PD" the period-2 orbits (the type unfolded over two periods), at an "SB" the orbits
+        without the symmetry, at a "BP" the second branch through the point, of the same type. It
+        starts from the point and the tangent the continuation computed (a BP needs that tangent,
+        which result files do not keep: for a loaded branch use continue_orbit(point="RUN:LABEL",
+        switch_branch=True) at a PD or an SB).
+
+        side        +1 or -1: the two halves of the new branch (at a PD the same orbits shifted by
+                    one period, at an SB mirror images; at a BP the two ways along it)
+        range, ds, ds_min, ds_max, max_points, output: as continue_orbit's; left out, this branch's.
+        Returns a Branch; raises ValueError for a label that is not a BP, PD or SB of this branch,
+        ConvergenceError if the new branch does not start.
+        """
+        if self._computed is None:
+            raise ValueError(f"switch = {label!r} is invalid: valid on a branch computed in this process "
+                             "(a loaded branch: continue_orbit(point='RUN:LABEL', switch_branch=True) at a PD or an SB)")
+        options = {"range": None if range is None else (float(range[0]), float(range[1])), "output": output,
+                   "ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
+        return Branch(self._computed.switch(str(label), int(side), options))
 
     def to_pandas(self):
         """The branch as a pandas DataFrame, one row per point (needs pandas: python3-pandas)."""

@@ -131,6 +131,13 @@ constexpr std::array<WholeRange, 6> kSweepWholeNumbers = {{{"steps", 1, 100000},
                                                            {"chains", 1, 10000},
                                                            {"seed", 0, 1000000000},
                                                            {"threads", 0, 1024}}};
+constexpr std::array<WholeRange, 7> kMapWholeNumbers = {{{"first-steps", 0, BruteForceMapOptions::kMaxSteps},
+                                                         {"second-steps", 0, BruteForceMapOptions::kMaxSteps},
+                                                         {"transients", 0, kMaxTransientPeriods},
+                                                         {"periods", 2, BruteForceMapOptions::kMaxRecordedPeriods},
+                                                         {"starts", 0, BruteForceMapOptions::kMaxScatteredStarts},
+                                                         {"seed", 0, 1000000000},
+                                                         {"threads", 0, 1024}}};
 constexpr std::array<WholeRange, 3> kFindWholeNumbers = {{{"transients", 0, FindOrbitOptions::kMaxTransient},
                                                           {"max-multiple", 1, FindOrbitOptions::kMaxMultiple},
                                                           {"confirmations", 1, FindOrbitOptions::kMaxConfirmations}}};
@@ -201,6 +208,45 @@ FindOrbitOptions FindOptionsOf(const FindCommand& command) {
   }
   options.periodicity_tolerance = command.tolerance;
   return options;
+}
+
+std::string MapSweepOptionRange(std::string_view field) {
+  if (const WholeRange* r = RangeOf(kMapWholeNumbers, field)) return WholeNumberRange(field, r->low, r->high);
+  if (field == "tolerance") {
+    return fmt::format("{} <= tolerance <= {}", BruteForceMapOptions::kMinTolerance, BruteForceMapOptions::kMaxTolerance);
+  }
+  if (field == "scatter") return "0 <= scatter <= 1e6";
+  throw std::logic_error(fmt::format("no map-sweep option '{}'", field));
+}
+
+BruteForceMapOptions MapOptionsOf(const MapSweepCommand& c, const ModelStart& origin) {
+  const auto axis = [](const char* field, const std::string& name) {
+    const std::optional<ParameterId> id = ParameterFromString(name);
+    if (!id) throw InvalidInput(field, "'" + name + "'", "chi, eta, omega, u_s, u_r");
+    return *id;
+  };
+  BruteForceMapOptions o;
+  o.first = {axis("first", c.first), c.first_from, c.first_to, WholeNumberOf(kMapWholeNumbers, "first-steps", c.first_steps)};
+  o.second = {axis("second", c.second), c.second_from, c.second_to,
+              WholeNumberOf(kMapWholeNumbers, "second-steps", c.second_steps)};
+  if (o.first.parameter == o.second.parameter) {
+    throw InvalidInput("second", "'" + c.second + "'", "chi, eta, omega, u_s, u_r other than --first");
+  }
+  o.transient_periods = WholeNumberOf(kMapWholeNumbers, "transients", c.transients);
+  o.recorded_periods = WholeNumberOf(kMapWholeNumbers, "periods", c.periods);
+  o.scattered_starts = WholeNumberOf(kMapWholeNumbers, "starts", c.starts);
+  o.centre = origin.initial_state;
+  o.scatter = c.scatter;
+  o.seed = static_cast<std::uint64_t>(WholeNumberOf(kMapWholeNumbers, "seed", c.seed));
+  if (!(c.tolerance >= BruteForceMapOptions::kMinTolerance && c.tolerance <= BruteForceMapOptions::kMaxTolerance)) {
+    throw InvalidInput("tolerance", c.tolerance, MapSweepOptionRange("tolerance"));
+  }
+  o.periodicity_tolerance = c.tolerance;
+  o.threads = WholeNumberOf(kMapWholeNumbers, "threads", c.threads);
+  o.shard = c.shard;
+  o.shards = c.shards;
+  o.Validate(origin.parameters);  // scatter, the shard, the cells' parameters ("grid ...")
+  return o;
 }
 
 }  // namespace stickslip

@@ -13,6 +13,20 @@ namespace stickslip {
 
 namespace ov = orbit_variables;
 
+void SetContinuationOptions(const RunFile& run, ContinuationOptions* options) {
+  ContinuationOptions& o = *options;
+  o.direction = run.direction;
+  o.lambda_min = run.range_min;
+  o.lambda_max = run.range_max;
+  o.step.ds = run.ds;
+  o.step.ds_min = run.ds_min;
+  o.step.ds_max = run.ds_max;
+  o.max_points = run.max_points;
+  o.detect_folds = run.detect_folds;
+  o.detect_branch_points = run.detect_branch_points;
+  o.continue_past_terminal = run.continue_past_type_changes;
+}
+
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root) {
   auto fail = [&](const std::string& key, const std::string& what) -> RunFileError {
     return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
@@ -36,16 +50,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   setup.shooting = *ShootingChoiceFromString(run.shooting);  // checked by the run-file reader
   setup.sparse_solver = *LinearSolverFromString(run.linear_solver);
   ContinuationOptions& o = setup.options;
-  o.direction = run.direction;
-  o.lambda_min = run.range_min;
-  o.lambda_max = run.range_max;
-  o.step.ds = run.ds;
-  o.step.ds_min = run.ds_min;
-  o.step.ds_max = run.ds_max;
-  o.max_points = run.max_points;
-  o.detect_folds = run.detect_folds;
-  o.detect_branch_points = run.detect_branch_points;
-  o.continue_past_terminal = run.continue_past_type_changes;
+  SetContinuationOptions(run, &o);
   if (run.restart_switch_branch && !run.restart_boundary.empty()) {
     throw fail("start.restart.boundary", "cannot go with switch_branch: give one of them");
   }

@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/io/run_file.hpp"
@@ -100,5 +101,34 @@ struct FindCommand {
 };
 std::string FindOptionRange(std::string_view field);
 FindOrbitOptions FindOptionsOf(const FindCommand& command);
+
+// map-sweep: the options as given (numbers not yet checked to be whole or in range), the defaults
+// the library's (BruteForceMapOptions); shard and shards already read from the command line's
+// "k/N". MapOptionsOf checks them as the command line names them ("first", "first-steps",
+// "transients", "periods", "starts", "seed", "tolerance", "threads"; the cells' parameters as
+// "grid"), the centre of the scattered starts being the origin's state.
+struct MapSweepCommand {
+  std::string first = ToString(BruteForceMapOptions{}.first.parameter);
+  std::string second = ToString(BruteForceMapOptions{}.second.parameter);
+  double first_from = 0.0;
+  double first_to = 0.0;
+  double first_steps = BruteForceMapOptions{}.first.steps;
+  double second_from = 0.0;
+  double second_to = 0.0;
+  double second_steps = BruteForceMapOptions{}.second.steps;
+  double transients = BruteForceMapOptions{}.transient_periods;
+  double periods = BruteForceMapOptions{}.recorded_periods;
+  double starts = BruteForceMapOptions{}.scattered_starts;
+  double scatter = BruteForceMapOptions{}.scatter;
+  double seed = static_cast<double>(BruteForceMapOptions{}.seed);
+  double tolerance = BruteForceMapOptions{}.periodicity_tolerance;
+  double threads = BruteForceMapOptions{}.threads;
+  int shard = 1;
+  int shards = 1;
+};
+// The valid range of a map-sweep option ("whole numbers 0 <= first-steps <= 10000"), for help
+// texts and messages.
+std::string MapSweepOptionRange(std::string_view field);
+BruteForceMapOptions MapOptionsOf(const MapSweepCommand& command, const ModelStart& origin);
 
 }  // namespace stickslip
