@@ -3,6 +3,7 @@
 // (stickslip-mpi map-sweep).
 #include "map_sweep_command.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -70,9 +71,14 @@ ParameterId AxisParameter(const char* field, const std::string& name) {
   return *id;
 }
 
-std::string ReadWholeFile(const std::string& path) {
+// A shard file whole. Regular files only: a device would be read without end (/dev/zero) and a
+// pipe would block.
+std::string ReadShardFile(const std::string& path) {
+  const auto refuse = [&] { return InvalidInput("shards", "'" + path + "'", "a readable map file of stickslip map-sweep"); };
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw refuse();
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("merge", "'" + path + "'", "a readable map file of stickslip map-sweep");
+  if (!in) throw refuse();
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -81,15 +87,23 @@ std::string ReadWholeFile(const std::string& path) {
 int RunMerge(const MapSweepArgs& args) {
   if (args.shards.empty()) throw InvalidInput("merge", "'" + args.merge + "'", "--merge OUT SHARD.csv... with at least one shard file");
   CheckOutputFile(args.merge, "merge");
+  for (const std::string& path : args.shards) {
+    std::error_code error;  // none when OUT does not exist yet
+    if (std::filesystem::equivalent(args.merge, path, error)) {
+      throw InvalidInput::WithMessage("merge", fmt::format("merge = '{}' is invalid: it is the shard '{}': valid a file "
+                                                           "other than the shards (the merge would replace it)",
+                                                           args.merge, path));
+    }
+  }
   std::vector<BruteForceMap> maps;
-  for (const std::string& path : args.shards) maps.push_back(ReadBruteForceMapCsv(ReadWholeFile(path), path));
+  for (const std::string& path : args.shards) maps.push_back(ReadBruteForceMapCsv(ReadShardFile(path), path));
   const BruteForceMap merged = MergeBruteForceMaps(maps, args.shards);
   WriteFileAtomically(args.merge, BruteForceMapCsv(merged));
   fmt::print("merged {} shard(s): {}", args.shards.size(), MapSweepSummary(merged, args.merge));
   return kExitOk;
 }
 
-MapSweepPlan PlanOf(const MapSweepArgs& args) {
+MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
   MapSweepPlan plan{input.parameters, input.phi, {}, args.output};
   BruteForceMapOptions& o = plan.options;
@@ -110,7 +124,12 @@ MapSweepPlan PlanOf(const MapSweepArgs& args) {
   o.periodicity_tolerance = args.tolerance;
   o.threads = args.threads;
   std::tie(o.shard, o.shards) = ParseShard(args.shard);
-  o.Validate(plan.base);  // the cells' parameters ("grid ..."); every other field is checked above
+  // The cells' parameters and the runs of a shard ("grid ..."); every other field is checked above.
+  // Ranks split the rows as shards do (rank 0, the first shard, has the most), so the bound on the
+  // runs applies to a rank's rows.
+  BruteForceMapOptions checked = o;
+  if (ranks > 1 && o.shards == 1) checked.shards = ranks;
+  checked.Validate(plan.base);
   return plan;
 }
 
@@ -141,7 +160,7 @@ int RunMapSweepHere(const MapSweepPlan& plan) {
   return kExitOk;
 }
 
-Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
+Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge, int ranks) {
   auto args = std::make_shared<MapSweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "map-sweep",
@@ -191,7 +210,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");
     cmd->add_option("shards", args->shards, "with --merge: the shard files (every cell of one map once)");
   }
-  return {cmd, [args, runner, cmd, merge] {
+  return {cmd, [args, runner, cmd, merge, ranks] {
             if (merge && cmd->count("--merge") > 0) return RunMerge(*args);
             if (!args->shards.empty()) {
               throw InvalidInput("shards", "'" + args->shards.front() + "'", "shard files only with --merge OUT");
@@ -201,7 +220,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
                 throw InvalidInput(option, "(not given)", fmt::format("--{} is required unless --merge", option));
               }
             }
-            return runner(PlanOf(*args));
+            return runner(PlanOf(*args, ranks));
           }};
 }
 

@@ -59,7 +59,7 @@ map_args --first-to 0.61 --shard 2/2 --output "$work/out/other.csv"
 "$bin" "${args[@]}" > /dev/null || fail "other grid"
 expect 2 "at omega" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv" "$work/out/other.csv"
 rm "$work/out/other.csv"
-expect 2 "merge = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
+expect 2 "shards = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
 
 # The figure (tools/map_figure.py, python3-matplotlib): a PNG.
 /usr/bin/python3 "$root/tools/map_figure.py" "$work/one.csv" "$work/map.png" && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \
