@@ -101,6 +101,27 @@ TEST(SecondBranchDirection, LeadsOntoThePitchforksOtherBranchOnEitherSide) {
   }
 }
 
+// The direction's and the tangent's lengths do not matter, even where their norms overflow or
+// underflow.
+TEST(SecondBranchDirection, TakesATangentAndADirectionOfAnyLength) {
+  const SlavedPitchfork problem;
+  const SpecialPoint bp = TrivialBranchPoint(problem, 2);
+  const BranchPointDirections unit = SecondBranchDirection(problem, bp.u, bp.tangent);
+  ContinuationOptions o = Options(2);
+  o.start_direction = unit.second;
+  o.max_points = 3;
+  const Branch reference = Continuation(problem, nullptr, o, bp.u).Run();
+  ASSERT_EQ(reference.points.size(), 3u) << reference.end_message;
+  for (const double scale : {1e300, 1e-300}) {
+    const BranchPointDirections d = SecondBranchDirection(problem, bp.u, scale * bp.tangent);
+    EXPECT_NEAR((d.second - unit.second).norm(), 0.0, 1e-15) << scale;
+    o.start_direction = scale * unit.second;
+    const Branch branch = Continuation(problem, nullptr, o, bp.u).Run();
+    ASSERT_EQ(branch.points.size(), 3u) << scale << ": " << branch.end_message;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR((branch.points[k].u - reference.points[k].u).norm(), 0.0, 1e-14) << scale;
+  }
+}
+
 TEST(SecondBranchDirection, LeadsOntoATranscriticalBranchThatIsNotOrthogonal) {
   const Transcritical problem;
   const SpecialPoint bp = TrivialBranchPoint(problem, 1);

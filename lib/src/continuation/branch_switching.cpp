@@ -17,7 +17,7 @@ BranchPointDirections SecondBranchDirection(const NonlinearSystem& problem, cons
         "equations, {} unknowns, point {}, tangent {}",
         n, problem.UnknownCount(), u.size(), known_tangent.size()));
   }
-  if (!(known_tangent.allFinite() && known_tangent.norm() > 0.0)) {
+  if (!(known_tangent.allFinite() && known_tangent.cwiseAbs().maxCoeff() > 0.0)) {
     throw std::invalid_argument("branch switching needs a finite nonzero tangent of the known branch");
   }
   Eigen::VectorXd residual;
@@ -27,7 +27,7 @@ BranchPointDirections SecondBranchDirection(const NonlinearSystem& problem, cons
   // The right singular vectors of the two smallest singular values (the (n+1)-th is zero: J has
   // one column more than rows) span the null space at a branch point.
   const Eigen::VectorXd a = svd.matrixV().col(n - 1), b = svd.matrixV().col(n);
-  const Eigen::VectorXd t = known_tangent.normalized();
+  const Eigen::VectorXd t = known_tangent.stableNormalized();  // any length (1e300, 1e-300)
   // The known tangent is (to rounding) alpha a + beta b; the second direction is orthogonal to it
   // in that plane.
   const double alpha = a.dot(t), beta = b.dot(t);
