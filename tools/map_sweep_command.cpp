@@ -204,7 +204,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge, int
   cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")
       ->type_name("K/N")->capture_default_str();
   cmd->add_option("--output", args->output,
-                  "CSV file: i,j,ni,nj,<first>,<second>,section_phase,attractors,attractor,status,period,"
+                  "CSV file: i,j,ni,nj,<first>,<second>,section_phase,run,attractors,attractor,status,period,"
                   "stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2");
   if (merge) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");

@@ -2,7 +2,7 @@
 # stickslip map-sweep against hostile files and names: a shard that is a device (read without end),
 # a pipe (would block), a directory; --merge OUT that is one of its shards (directly or through a
 # link: the merge would replace it); an output name that its directory takes but whose temporary
-# name beside it is too long (refused before the work, not after it); with the MPI front end
+# name beside it is too long (refused before the work, not after it); shards of other runs; with the MPI front end
 # (STICKSLIP_MPI), a grid too large for one computation that two ranks split is not refused.
 source "$(dirname "$0")/expect.sh"
 map=(map-sweep --preset paper-6 --first omega --first-from 0.55 --first-to 0.6 --first-steps 3 --second u_r
@@ -23,6 +23,19 @@ expect 2 "merge = '$work/out/s1.csv' is invalid: it is the shard '$work/out/s1.c
 expect 2 "merge = '$work/out/link.csv' is invalid: it is the shard '$work/out/s1.csv'" \
   "$bin" map-sweep --merge "$work/out/link.csv" "$work/out/s1.csv" "$work/s2.csv"
 "$bin" map-sweep --merge "$work/merged.csv" "$work/s1.csv" "$work/s2.csv" > /dev/null && pass || fail "the merge"
+
+# Shards of the same grid from other runs (other data, another seed of the scattered starts): refused,
+# where they merged into a map of mixed runs.
+for other in "--set chi=0.69" "--seed 2"; do
+  "$bin" "${map[@]}" $other --shard 2/2 --output "$work/foreign.csv" > /dev/null || fail "foreign shard $other"
+  expect 2 "merge: '$work/foreign.csv' is of run" "$bin" map-sweep --merge "$m" "$work/s1.csv" "$work/foreign.csv"
+done
+
+# A run fingerprint edited in one row.
+awk -F, -v OFS=, 'NR == 3 { $8 = "00000000000000zz" } { print }' "$work/s1.csv" > "$work/edited.csv"
+expect 2 "$work/edited.csv:3: column 'run' = '00000000000000zz' is invalid" "$bin" map-sweep --merge "$m" "$work/edited.csv"
+awk -F, -v OFS=, 'NR == 3 { $8 = "0000000000000000" } { print }' "$work/s1.csv" > "$work/edited.csv"
+expect 2 "$work/edited.csv:3: column 'run' = '0000000000000000' differs from the first row's" "$bin" map-sweep --merge "$m" "$work/edited.csv"
 
 # A name of 250 bytes (a file may have 255): its temporary name is longer.
 long="$work/out/$(printf 'a%.0s' $(seq 246)).csv"

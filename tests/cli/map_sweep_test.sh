@@ -45,7 +45,7 @@ expect 2 "shards = '$work/out/stray.csv' is invalid" "$bin" "${map[@]}" --output
 "$bin" "${map[@]}" --threads 1 --output "$work/one.csv" > /dev/null || fail "1 thread"
 "$bin" "${map[@]}" --threads 2 --output "$work/two.csv" > /dev/null || fail "2 threads"
 cmp -s "$work/one.csv" "$work/two.csv" && pass || fail "1 and 2 threads differ"
-head -1 "$work/one.csv" | grep -qx "i,j,ni,nj,omega,u_r,section_phase,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2" \
+head -1 "$work/one.csv" | grep -qx "i,j,ni,nj,omega,u_r,section_phase,run,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2" \
   && pass || fail "header"
 for k in 1 2; do "$bin" "${map[@]}" --shard $k/2 --output "$work/shard$k.csv" > /dev/null || fail "shard $k"; done
 "$bin" map-sweep --merge "$work/merged.csv" "$work/shard2.csv" "$work/shard1.csv" > /dev/null || fail "merge"
