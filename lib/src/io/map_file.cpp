@@ -105,6 +105,12 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
       }
       map.cells.push_back({i, j, table.FiniteNumber(row, cfirst), table.FiniteNumber(row, csecond), {}});
     }
+    // A cell's rows agree on its attractor count, an attractor's rows on all but k and the state
+    // (rows of one cell, and of one attractor, are consecutive): else the file is not one a
+    // writer wrote, and would be written back otherwise.
+    if (!new_cell && table.Text(row, ccount) != table.Text(row - 1, ccount)) {
+      throw table.Error(row, ccount, "differs from the cell's first row");
+    }
     MapCell& cell = map.cells.back();
     if (table.FiniteNumber(row, cfirst) != cell.first) throw table.Error(row, cfirst, "differs from the cell's first row");
     if (table.FiniteNumber(row, csecond) != cell.second) throw table.Error(row, csecond, "differs from the cell's first row");
@@ -130,6 +136,11 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
       }
       if (a.starts < 1) throw table.Error(row, cstarts, "is invalid: valid starts >= 1");
       cell.attractors.push_back(std::move(a));
+    }
+    if (!new_attractor) {
+      for (const int c : {cstatus, cperiod, cstops, csticks, cstarts, csignature}) {
+        if (table.Text(row, c) != table.Text(row - 1, c)) throw table.Error(row, c, "differs from the attractor's first row");
+      }
     }
     Attractor& a = cell.attractors.back();
     const int points = a.status == AttractorStatus::kPeriodic ? a.period : 1;
