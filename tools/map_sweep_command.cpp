@@ -3,6 +3,7 @@
 // (stickslip-mpi map-sweep).
 #include "map_sweep_command.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -61,9 +62,14 @@ std::pair<int, int> ParseShard(const std::string& text) {
   throw InvalidInput("shard", "'" + text + "'", kShardRange);
 }
 
-std::string ReadWholeFile(const std::string& path) {
+// A shard file whole. Regular files only: a device would be read without end (/dev/zero) and a
+// pipe would block.
+std::string ReadShardFile(const std::string& path) {
+  const auto refuse = [&] { return InvalidInput("shards", "'" + path + "'", "a readable map file of stickslip map-sweep"); };
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw refuse();
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("merge", "'" + path + "'", "a readable map file of stickslip map-sweep");
+  if (!in) throw refuse();
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -72,15 +78,23 @@ std::string ReadWholeFile(const std::string& path) {
 int RunMerge(const MapSweepArgs& args) {
   if (args.shards.empty()) throw InvalidInput("merge", "'" + args.merge + "'", "--merge OUT SHARD.csv... with at least one shard file");
   CheckOutputFile(args.merge, "merge");
+  for (const std::string& path : args.shards) {
+    std::error_code error;  // none when OUT does not exist yet
+    if (std::filesystem::equivalent(args.merge, path, error)) {
+      throw InvalidInput::WithMessage("merge", fmt::format("merge = '{}' is invalid: it is the shard '{}': valid a file "
+                                                           "other than the shards (the merge would replace it)",
+                                                           args.merge, path));
+    }
+  }
   std::vector<BruteForceMap> maps;
-  for (const std::string& path : args.shards) maps.push_back(ReadBruteForceMapCsv(ReadWholeFile(path), path));
+  for (const std::string& path : args.shards) maps.push_back(ReadBruteForceMapCsv(ReadShardFile(path), path));
   const BruteForceMap merged = MergeBruteForceMaps(maps, args.shards);
   WriteFileAtomically(args.merge, BruteForceMapCsv(merged));
   fmt::print("merged {} shard(s): {}", args.shards.size(), MapSweepSummary(merged, args.merge));
   return kExitOk;
 }
 
-MapSweepPlan PlanOf(const MapSweepArgs& args) {
+MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
   MapSweepCommand c;
   c.first = args.first;
@@ -99,7 +113,14 @@ MapSweepPlan PlanOf(const MapSweepArgs& args) {
   c.tolerance = args.tolerance;
   c.threads = args.threads;
   std::tie(c.shard, c.shards) = ParseShard(args.shard);
-  return {input.parameters, input.phi, MapOptionsOf(c, input), args.output};
+  // Ranks split the rows as shards do (rank 0, the first shard, has the most), so the bound on the
+  // runs is checked for a rank's rows.
+  MapSweepCommand checked = c;
+  if (ranks > 1 && c.shards == 1) checked.shards = ranks;
+  BruteForceMapOptions options = MapOptionsOf(checked, input);
+  options.shard = c.shard;
+  options.shards = c.shards;
+  return {input.parameters, input.phi, options, args.output};
 }
 
 }  // namespace
@@ -129,7 +150,7 @@ int RunMapSweepHere(const MapSweepPlan& plan) {
   return kExitOk;
 }
 
-Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
+Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge, int ranks) {
   auto args = std::make_shared<MapSweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "map-sweep",
@@ -173,13 +194,13 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
   cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")
       ->type_name("K/N")->capture_default_str();
   cmd->add_option("--output", args->output,
-                  "CSV file: i,j,ni,nj,<first>,<second>,section_phase,attractors,attractor,status,period,"
+                  "CSV file: i,j,ni,nj,<first>,<second>,section_phase,run,attractors,attractor,status,period,"
                   "stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2");
   if (merge) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");
     cmd->add_option("shards", args->shards, "with --merge: the shard files (every cell of one map once)");
   }
-  return {cmd, [args, runner, cmd, merge] {
+  return {cmd, [args, runner, cmd, merge, ranks] {
             if (merge && cmd->count("--merge") > 0) return RunMerge(*args);
             if (!args->shards.empty()) {
               throw InvalidInput("shards", "'" + args->shards.front() + "'", "shard files only with --merge OUT");
@@ -189,7 +210,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge) {
                 throw InvalidInput(option, "(not given)", fmt::format("--{} is required unless --merge", option));
               }
             }
-            return runner(PlanOf(*args));
+            return runner(PlanOf(*args, ranks));
           }};
 }
 

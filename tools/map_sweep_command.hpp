@@ -26,6 +26,8 @@ int RunMapSweepHere(const MapSweepPlan& plan);
 std::string MapSweepSummary(const BruteForceMap& map, const std::string& output);
 
 // The subcommand; `runner` computes and writes the map. With `merge`, --merge OUT SHARD... too.
-Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner = RunMapSweepHere, bool merge = true);
+// `ranks`: the MPI job's ranks, which split the rows as --shard does (the grid's bound on the runs
+// of one computation is checked for one rank's rows).
+Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner = RunMapSweepHere, bool merge = true, int ranks = 1);
 
 }  // namespace stickslip::cli

@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const Command command =
       AddMapSweepCommand(app, [rank, ranks](const MapSweepPlan& plan) { return RunAcrossRanks(plan, rank, ranks); },
-                         /*merge=*/false);
+                         /*merge=*/false, ranks);
   int code = kExitFailure;
   try {
     app.parse(argc, argv);

@@ -82,10 +82,15 @@ int RunTrace(TraceArgs args) {
   RunFile& run = args.continuation.run;
   try {
     args.options.Validate();
-  } catch (const InvalidInput& e) {  // named as the options are: max_amplitude is --max-amplitude
+  } catch (const InvalidInput& e) {  // named as the options are: max_amplitude is --max-amplitude, in the range too
     std::string option = e.field();
     std::replace(option.begin(), option.end(), '_', '-');
-    throw e.Renamed(option);
+    std::string range = e.valid_range();
+    if (range.empty()) throw e.Renamed(option);
+    for (auto at = range.find(e.field()); at != std::string::npos; at = range.find(e.field(), at + option.size())) {
+      range.replace(at, e.field().size(), option);
+    }
+    throw InvalidInput(option, e.value(), range);
   }
   run.trace = args.options;
   CheckTraceOutputDirectory(args.continuation.start.results, run.output);

@@ -140,6 +140,25 @@ TEST(BruteForceMap, FileReadsBackToTheSameBytes) {
   EXPECT_THROW(ReadBruteForceMapCsv(huge, "map.csv"), InvalidInput);
 }
 
+// The rows of one attractor agree on everything but k and the state, the rows of one cell on its
+// attractor count: a file that does not is refused, not read as its first rows say.
+TEST(BruteForceMap, FileWhoseRowsOfOneAttractorDisagreeIsRefused) {
+  const std::string header =
+      "i,j,ni,nj,omega,u_r,section_phase,run,attractors,attractor,status,period,stops_per_period,sticks_per_period,"
+      "starts,signature,k,x1,x2,v1,v2\n";
+  const std::string first = "0,0,1,1,0.5,1,0,0123456789abcdef,2,0,periodic,2,1,0,3,,0,1,2,3,4\n";
+  const std::string second = "0,0,1,1,0.5,1,0,0123456789abcdef,2,0,periodic,2,1,0,3,,1,5,6,7,8\n";
+  const std::string other = "0,0,1,1,0.5,1,0,0123456789abcdef,2,1,not-settled,0,0,0,1,,0,0,0,0,0\n";
+  const std::string text = header + first + second + other;
+  EXPECT_EQ(BruteForceMapCsv(ReadBruteForceMapCsv(text, "map.csv")), text);
+  for (const auto& [from, to] : {std::pair{",3,,1,", ",4,,1,"}, std::pair{",periodic,2,1,0,3,,1", ",periodic,2,1,1,3,,1"},
+                                 std::pair{",2,0,periodic,2,1,0,3,,1", ",3,0,periodic,2,1,0,3,,1"}}) {
+    std::string damaged = text;
+    damaged.replace(damaged.find(from), std::string(from).size(), to);
+    EXPECT_THROW(ReadBruteForceMapCsv(damaged, "map.csv"), InvalidInput) << from;
+  }
+}
+
 // Every run accounted for: each cell's attractors hold all its runs (rest, the neighbour but in
 // cell 0, the scattered starts), and a periodic attractor lists `period` section points.
 TEST(BruteForceMap, EveryRunEndsOnOneListedAttractor) {

@@ -45,7 +45,7 @@ expect 2 "shards = '$work/out/stray.csv' is invalid" "$bin" "${map[@]}" --output
 "$bin" "${map[@]}" --threads 1 --output "$work/one.csv" > /dev/null || fail "1 thread"
 "$bin" "${map[@]}" --threads 2 --output "$work/two.csv" > /dev/null || fail "2 threads"
 cmp -s "$work/one.csv" "$work/two.csv" && pass || fail "1 and 2 threads differ"
-head -1 "$work/one.csv" | grep -qx "i,j,ni,nj,omega,u_r,section_phase,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2" \
+head -1 "$work/one.csv" | grep -qx "i,j,ni,nj,omega,u_r,section_phase,run,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2" \
   && pass || fail "header"
 for k in 1 2; do "$bin" "${map[@]}" --shard $k/2 --output "$work/shard$k.csv" > /dev/null || fail "shard $k"; done
 "$bin" map-sweep --merge "$work/merged.csv" "$work/shard2.csv" "$work/shard1.csv" > /dev/null || fail "merge"
@@ -59,7 +59,7 @@ map_args --first-to 0.61 --shard 2/2 --output "$work/out/other.csv"
 "$bin" "${args[@]}" > /dev/null || fail "other grid"
 expect 2 "at omega" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv" "$work/out/other.csv"
 rm "$work/out/other.csv"
-expect 2 "merge = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
+expect 2 "shards = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
 
 # The figure (tools/map_figure.py, python3-matplotlib): a PNG.
 /usr/bin/python3 "$root/tools/map_figure.py" "$work/one.csv" "$work/map.png" && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \

@@ -95,6 +95,9 @@ expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (a EP): v
 expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" "$switched
 shooting = \"multiple\""
 expect 2 "key 'start.restart.switch_branch' must be true or false" "${switched/switch_branch = true/switch_branch = 1}"
+# With a [trace] (no direction: the switch would take one side, the trace's down chain come back up it).
+expect 2 "key 'start.restart.switch_branch' = true is invalid with a .trace. table" "${switched/direction = \"up\"/}
+[trace]"
 
 # boundary (a type boundary in two parameters): at a label that is no such change, in the continued
 # parameter, with switch_branch.

@@ -93,8 +93,8 @@ o=(--preset paper-4.1 --parameter omega --range 0.3,0.69 --results "$work/out" -
 expect 2 "max-branches = 0 is invalid" "$bin" trace "${o[@]}" --max-branches 0
 expect 2 "max-branches = 2.5 is invalid" "$bin" trace "${o[@]}" --max-branches 2.5
 expect 2 "max-branches = 1e+300 is invalid" "$bin" trace "${o[@]}" --max-branches 1e300
-expect 2 "max-amplitude = -1 is invalid" "$bin" trace "${o[@]}" --max-amplitude -1
-expect 2 "loop-tolerance = 1 is invalid" "$bin" trace "${o[@]}" --loop-tolerance 1
+expect 2 "max-amplitude = -1 is invalid: valid range a finite max-amplitude > 0" "$bin" trace "${o[@]}" --max-amplitude -1
+expect 2 "loop-tolerance = 1 is invalid: valid range 0 < loop-tolerance <= 1e-2" "$bin" trace "${o[@]}" --loop-tolerance 1
 expect 2 "loop-tolerance = 0 is invalid" "$bin" trace "${o[@]}" --loop-tolerance 0
 expect 2 "range" "$bin" trace "${o[@]/0.3,0.69/0.7,0.9}"
 mkdir -p "$work/out/mine" && touch "$work/out/mine/notes.txt"

@@ -71,6 +71,15 @@ SpecialPoint TrivialBranchPoint(const NonlinearSystem& problem, int parameter_in
   return {};
 }
 
+// The branch started on `at` along `direction`, of at most max_points points.
+Branch BranchAlong(const NonlinearSystem& problem, int parameter_index, const Eigen::VectorXd& at,
+                   const Eigen::VectorXd& direction, int max_points) {
+  ContinuationOptions o = Options(parameter_index);
+  o.start_direction = direction;
+  o.max_points = max_points;
+  return Continuation(problem, nullptr, o, at).Run();
+}
+
 TEST(SecondBranchDirection, IsTheNullVectorOrthogonalToTheTrivialBranch) {
   const SlavedPitchfork problem;
   const SpecialPoint bp = TrivialBranchPoint(problem, 2);
@@ -87,10 +96,7 @@ TEST(SecondBranchDirection, LeadsOntoThePitchforksOtherBranchOnEitherSide) {
   const SpecialPoint bp = TrivialBranchPoint(problem, 2);
   const BranchPointDirections d = SecondBranchDirection(problem, bp.u, bp.tangent);
   for (const double sign : {1.0, -1.0}) {
-    ContinuationOptions o = Options(2);
-    o.start_direction = sign * d.second;
-    o.max_points = 10;
-    const Branch branch = Continuation(problem, nullptr, o, bp.u).Run();
+    const Branch branch = BranchAlong(problem, 2, bp.u, sign * d.second, 10);
     ASSERT_EQ(branch.points.size(), 10u) << branch.end_message;
     for (const BranchPoint& p : branch.points) {
       const double x = p.u(0);
@@ -101,14 +107,28 @@ TEST(SecondBranchDirection, LeadsOntoThePitchforksOtherBranchOnEitherSide) {
   }
 }
 
+// The direction's and the tangent's lengths do not matter, even where their norms overflow or
+// underflow.
+TEST(SecondBranchDirection, TakesATangentAndADirectionOfAnyLength) {
+  const SlavedPitchfork problem;
+  const SpecialPoint bp = TrivialBranchPoint(problem, 2);
+  const BranchPointDirections unit = SecondBranchDirection(problem, bp.u, bp.tangent);
+  const Branch reference = BranchAlong(problem, 2, bp.u, unit.second, 3);
+  ASSERT_EQ(reference.points.size(), 3u) << reference.end_message;
+  for (const double scale : {1e300, 1e-300}) {
+    const BranchPointDirections d = SecondBranchDirection(problem, bp.u, scale * bp.tangent);
+    EXPECT_NEAR((d.second - unit.second).norm(), 0.0, 1e-15) << scale;
+    const Branch branch = BranchAlong(problem, 2, bp.u, scale * unit.second, 3);
+    ASSERT_EQ(branch.points.size(), 3u) << scale << ": " << branch.end_message;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR((branch.points[k].u - reference.points[k].u).norm(), 0.0, 1e-14) << scale;
+  }
+}
+
 TEST(SecondBranchDirection, LeadsOntoATranscriticalBranchThatIsNotOrthogonal) {
   const Transcritical problem;
   const SpecialPoint bp = TrivialBranchPoint(problem, 1);
   const BranchPointDirections d = SecondBranchDirection(problem, bp.u, bp.tangent);
-  ContinuationOptions o = Options(1);
-  o.start_direction = d.second;
-  o.max_points = 10;
-  const Branch branch = Continuation(problem, nullptr, o, bp.u).Run();
+  const Branch branch = BranchAlong(problem, 1, bp.u, d.second, 10);
   ASSERT_EQ(branch.points.size(), 10u) << branch.end_message;
   for (const BranchPoint& p : branch.points) {
     EXPECT_GT(std::abs(p.u(0)), 0.01);

@@ -1,6 +1,7 @@
 #include "stickslip/analysis/brute_force_map.hpp"
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <mutex>
 #include <numbers>
@@ -190,10 +191,37 @@ void BruteForceMapOptions::Validate(const Parameters& base) const {
   }
 }
 
+std::uint64_t MapRunFingerprint(const Parameters& base, double phi_section, const BruteForceMapOptions& o) {
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits
+  const auto add = [&hash](std::uint64_t value) {
+    for (int byte = 0; byte < 8; ++byte) {
+      hash = (hash ^ ((value >> (8 * byte)) & 0xffu)) * 1099511628211ull;
+    }
+  };
+  const auto add_number = [&add](double value) { add(std::bit_cast<std::uint64_t>(value)); };
+  for (const ParameterId id : kAllParameters) add_number(base[id]);
+  add_number(phi_section);
+  for (const MapAxis* axis : {&o.first, &o.second}) {
+    add(static_cast<std::uint64_t>(axis->parameter));
+    add_number(axis->from);
+    add_number(axis->to);
+    add(static_cast<std::uint64_t>(axis->steps));
+  }
+  for (const long long count : {o.transient_periods, o.recorded_periods, o.scattered_starts, o.max_events_per_simulation}) {
+    add(static_cast<std::uint64_t>(count));
+  }
+  for (int k = 0; k < 4; ++k) add_number(o.centre(k));
+  add_number(o.scatter);
+  add(o.seed);
+  add_number(o.periodicity_tolerance);
+  return hash;
+}
+
 BruteForceMap ComputeBruteForceMap(const Parameters& base, double phi_section, const BruteForceMapOptions& o) {
   o.Validate(base);
   if (auto invalid = ValidateStateValue("phi", phi_section)) throw *invalid;
-  BruteForceMap map{o.first.parameter, o.second.parameter, o.first.Count(), o.second.Count(), phi_section, {}};
+  BruteForceMap map{o.first.parameter, o.second.parameter, o.first.Count(),   o.second.Count(),
+                    phi_section,       MapRunFingerprint(base, phi_section, o), {}};
   std::vector<int> rows;
   for (int j = 0; j < o.second.Count(); ++j) {
     if (RowInShard(j, o.shard, o.shards)) rows.push_back(j);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bordered_systems.hpp"
+#include "stickslip/continuation/branch_switching.hpp"
 
 namespace stickslip::detail {
 
@@ -32,7 +33,7 @@ std::optional<Sample> ArclengthCorrector::Start(const Eigen::VectorXd& guess, st
   if (options_.start_direction.size() > 0) {
     Sample branch_point;
     branch_point.u = guess;
-    branch_point.tangent = options_.start_direction.normalized();
+    branch_point.tangent = UnitDirection(options_.start_direction);
     std::optional<Sample> first = Corrected(branch_point, options_.step.ds, Attempt::kLocated);
     if (!first) *failure = "the first point along start_direction does not converge: " + last_failure_;
     return first;

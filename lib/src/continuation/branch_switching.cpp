@@ -1,12 +1,19 @@
 #include "stickslip/continuation/branch_switching.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/SVD>
 #include <fmt/format.h>
 
 namespace stickslip {
+
+Eigen::VectorXd UnitDirection(const Eigen::VectorXd& v) {
+  const double squared = v.squaredNorm();
+  if (squared >= std::numeric_limits<double>::min() && std::isfinite(squared)) return v / std::sqrt(squared);
+  return v.stableNormalized();
+}
 
 BranchPointDirections SecondBranchDirection(const NonlinearSystem& problem, const Eigen::VectorXd& u,
                                             const Eigen::VectorXd& known_tangent) {
@@ -17,7 +24,7 @@ BranchPointDirections SecondBranchDirection(const NonlinearSystem& problem, cons
         "equations, {} unknowns, point {}, tangent {}",
         n, problem.UnknownCount(), u.size(), known_tangent.size()));
   }
-  if (!(known_tangent.allFinite() && known_tangent.norm() > 0.0)) {
+  if (!(known_tangent.allFinite() && known_tangent.cwiseAbs().maxCoeff() > 0.0)) {
     throw std::invalid_argument("branch switching needs a finite nonzero tangent of the known branch");
   }
   Eigen::VectorXd residual;
@@ -27,7 +34,7 @@ BranchPointDirections SecondBranchDirection(const NonlinearSystem& problem, cons
   // The right singular vectors of the two smallest singular values (the (n+1)-th is zero: J has
   // one column more than rows) span the null space at a branch point.
   const Eigen::VectorXd a = svd.matrixV().col(n - 1), b = svd.matrixV().col(n);
-  const Eigen::VectorXd t = known_tangent.normalized();
+  const Eigen::VectorXd t = UnitDirection(known_tangent);
   // The known tangent is (to rounding) alpha a + beta b; the second direction is orthogonal to it
   // in that plane.
   const double alpha = a.dot(t), beta = b.dot(t);

@@ -45,8 +45,9 @@ void ContinuationOptions::Validate() const {
   }
   if (max_points < 1) throw InvalidInput("max_points", max_points, "max_points >= 1");
   if (start_iterations < 1) throw InvalidInput("start_iterations", start_iterations, "start_iterations >= 1");
-  if (start_direction.size() > 0 && !(start_direction.allFinite() && start_direction.norm() > 0.0)) {
-    throw InvalidInput("start_direction", start_direction.norm(), "a finite nonzero vector, or empty");
+  // Any length: the norm may overflow (components of 1e300) or underflow (1e-300) where the vector does not.
+  if (start_direction.size() > 0 && !(start_direction.allFinite() && start_direction.cwiseAbs().maxCoeff() > 0.0)) {
+    throw InvalidInput("start_direction", start_direction.stableNorm(), "a finite nonzero vector, or empty");
   }
   if (!(bound_tolerance >= 0.0)) throw InvalidInput("bound_tolerance", bound_tolerance, "bound_tolerance >= 0");
   if (!(start_boundary_tolerance >= 0.0)) {

@@ -14,6 +14,16 @@
 
 namespace stickslip {
 
+namespace {
+
+// The name the file is written under first, beside its target (the process id keeps concurrent
+// writers of the same target apart).
+std::string TemporaryName(const std::filesystem::path& target) {
+  return fmt::format(".{}.tmp.{}", target.filename().string(), static_cast<long>(::getpid()));
+}
+
+}  // namespace
+
 // A symbolic link is followed: its target is written and the link stays.
 AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& link_or_path) {
   namespace fs = std::filesystem;
@@ -25,8 +35,7 @@ AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& link_or_path) {
         fmt::format("cannot write '{}': directory '{}' does not exist", path_.string(),
                     directory.string()));
   }
-  // The process id keeps concurrent writers of the same target apart.
-  temporary_ = directory / fmt::format(".{}.tmp.{}", path_.filename().string(), static_cast<long>(::getpid()));
+  temporary_ = directory / TemporaryName(path_);
   out_.open(temporary_, std::ios::binary | std::ios::trunc);
   if (!out_) throw std::runtime_error(fmt::format("cannot write '{}'", temporary_.string()));
 }
@@ -83,6 +92,12 @@ void CheckOutputFile(const std::filesystem::path& path, const std::string& field
   if (!fs::is_directory(directory, error)) throw refuse(fmt::format("directory '{}' does not exist", directory.string()));
   if (const std::error_code failed = CanCreateFileIn(directory)) {
     throw refuse(fmt::format("no file can be created in directory '{}' ({})", directory.string(), failed.message()));
+  }
+  // A name the directory takes whose temporary name (longer) it would refuse only after the work.
+  const long name_max = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  if (const std::string temporary = TemporaryName(target); name_max > 0 && static_cast<long>(temporary.size()) > name_max) {
+    throw refuse(fmt::format("its name is too long to be written as '{}' first ({} bytes, more than the {} the directory "
+                             "allows)", temporary, temporary.size(), name_max));
   }
 }
 

@@ -1,6 +1,9 @@
 #include "stickslip/io/map_file.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <system_error>
 #include <map>
 #include <optional>
 #include <string_view>
@@ -19,7 +22,7 @@ namespace {
 
 constexpr const char* kColumnsBefore = "i,j,ni,nj";
 constexpr const char* kColumnsAfter =
-    "section_phase,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,"
+    "section_phase,run,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,"
     "v2";
 
 std::string Header(ParameterId first, ParameterId second) {
@@ -35,8 +38,8 @@ std::string BruteForceMapCsv(const BruteForceMap& map) {
       const Attractor& attractor = cell.attractors[a];
       for (std::size_t k = 0; k < attractor.section.size(); ++k) {
         const State& x = attractor.section[k];
-        out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell.i, cell.j,
-                           map.first_count, map.second_count, cell.first, cell.second, map.section_phase,
+        out += fmt::format("{},{},{},{},{},{},{},{:016x},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell.i, cell.j,
+                           map.first_count, map.second_count, cell.first, cell.second, map.section_phase, map.run,
                            cell.attractors.size(), a, ToString(attractor.status), attractor.period,
                            attractor.stops_per_period, attractor.sticks_per_period, attractor.starts,
                            attractor.signature, k, x(0), x(1), x(2), x(3));
@@ -50,17 +53,17 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
   const detail::CsvTable table(text, name);
   const std::vector<std::string>& header = table.header();
   std::optional<ParameterId> first, second;
-  if (header.size() == 20) {
+  if (header.size() == 21) {
     first = ParameterFromString(header[4]);
     second = ParameterFromString(header[5]);
   }
   if (!first || !second || fmt::format("{}", fmt::join(header, ",")) != Header(*first, *second)) {
     throw table.HeaderError(fmt::format("the header is invalid: valid {}", Header(ParameterId::kOmega, ParameterId::kStaticFriction)));
   }
-  BruteForceMap map{*first, *second, 0, 0, 0.0, {}};
+  BruteForceMap map{*first, *second, 0, 0, 0.0, 0, {}};
   const auto column = [&](const char* c) { return table.Column(c); };
   const int ci = 0, cj = 1, cni = 2, cnj = 3, cfirst = 4, csecond = 5;
-  const int cphase = column("section_phase"), ccount = column("attractors"), cindex = column("attractor"),
+  const int cphase = column("section_phase"), crun = column("run"), ccount = column("attractors"), cindex = column("attractor"),
             cstatus = column("status"), cperiod = column("period"), cstops = column("stops_per_period"),
             csticks = column("sticks_per_period"), cstarts = column("starts"), csignature = column("signature"),
             ck = column("k"), cx = column("x1");
@@ -68,10 +71,17 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
     const int i = table.Integer(row, ci), j = table.Integer(row, cj);
     const int ni = table.Integer(row, cni), nj = table.Integer(row, cnj);
     const double phase = table.FiniteNumber(row, cphase);
+    const std::string& run = table.Text(row, crun);
+    std::uint64_t fingerprint = 0;
+    const auto [end, error] = std::from_chars(run.data(), run.data() + run.size(), fingerprint, 16);
+    if (run.size() != 16 || error != std::errc() || end != run.data() + run.size()) {
+      throw table.Error(row, crun, "is invalid: valid 16 hexadecimal digits");
+    }
     if (row == 0) {
       map.first_count = ni;
       map.second_count = nj;
       map.section_phase = phase;
+      map.run = fingerprint;
     }
     for (const int c : {cni, cnj}) {
       if (!(table.Integer(row, c) >= 1 && table.Integer(row, c) <= BruteForceMapOptions::kMaxSteps + 1)) {
@@ -81,6 +91,7 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
     if (ni != map.first_count) throw table.Error(row, cni, fmt::format("differs from the first row's {}", map.first_count));
     if (nj != map.second_count) throw table.Error(row, cnj, fmt::format("differs from the first row's {}", map.second_count));
     if (phase != map.section_phase) throw table.Error(row, cphase, "differs from the first row's");
+    if (fingerprint != map.run) throw table.Error(row, crun, "differs from the first row's");
     if (!(i >= 0 && i < ni)) throw table.Error(row, ci, fmt::format("is invalid: valid 0 <= i < ni = {}", ni));
     if (!(j >= 0 && j < nj)) throw table.Error(row, cj, fmt::format("is invalid: valid 0 <= j < nj = {}", nj));
     const bool new_cell = map.cells.empty() || map.cells.back().i != i || map.cells.back().j != j;
@@ -93,6 +104,12 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
         throw table.Error(row - 1, ccount, "is not the number of attractors the cell lists");
       }
       map.cells.push_back({i, j, table.FiniteNumber(row, cfirst), table.FiniteNumber(row, csecond), {}});
+    }
+    // A cell's rows agree on its attractor count, an attractor's rows on all but k and the state
+    // (rows of one cell, and of one attractor, are consecutive): else the file is not one a
+    // writer wrote, and would be written back otherwise.
+    if (!new_cell && table.Text(row, ccount) != table.Text(row - 1, ccount)) {
+      throw table.Error(row, ccount, "differs from the cell's first row");
     }
     MapCell& cell = map.cells.back();
     if (table.FiniteNumber(row, cfirst) != cell.first) throw table.Error(row, cfirst, "differs from the cell's first row");
@@ -119,6 +136,11 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
       }
       if (a.starts < 1) throw table.Error(row, cstarts, "is invalid: valid starts >= 1");
       cell.attractors.push_back(std::move(a));
+    }
+    if (!new_attractor) {
+      for (const int c : {cstatus, cperiod, cstops, csticks, cstarts, csignature}) {
+        if (table.Text(row, c) != table.Text(row - 1, c)) throw table.Error(row, c, "differs from the attractor's first row");
+      }
     }
     Attractor& a = cell.attractors.back();
     const int points = a.status == AttractorStatus::kPeriodic ? a.period : 1;
@@ -194,7 +216,16 @@ BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, cons
       }
     }
   }
-  BruteForceMap merged{grid->first, grid->second, grid->first_count, grid->second_count, grid->section_phase, {}};
+  // Last, so that a grid of other values or a cell twice is named as such: the fingerprint holds the axes too.
+  for (std::size_t s = 0; s < shards.size(); ++s) {
+    const BruteForceMap& m = shards[s];
+    if (!m.cells.empty() && m.run != grid->run) {
+      throw refuse(fmt::format("'{}' is of run {:016x}, '{}' of run {:016x} (other data, axes, starts or options)", names[s],
+                               m.run, names[grid_shard], grid->run));
+    }
+  }
+  BruteForceMap merged{grid->first,         grid->second, grid->first_count, grid->second_count,
+                       grid->section_phase, grid->run,    {}};
   for (int j = 0; j < merged.second_count; ++j) {
     for (int i = 0; i < merged.first_count; ++i) {
       const auto it = cells.find({j, i});

@@ -269,6 +269,13 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
     r.String("label", &run.restart_label, true);
     r.Boolean("switch_branch", &run.restart_switch_branch);
     r.String("boundary", &run.restart_boundary);
+    // The branch that leaves a bifurcation leaves it on the side `direction` names; a trace has
+    // none (both ways from its start would go out along one side and back along the other).
+    if (run.restart_switch_branch && root.contains("trace")) {
+      r.Fail(*r.Get("switch_branch"), "switch_branch",
+             "= true is invalid with a [trace] table: valid false (the branch that leaves a bifurcation leaves it on "
+             "one side, continuation.direction; a trace can start from a point of that run)");
+    }
     r.RejectUnknown();
   }
   if (run.preset.empty() == run.signature.empty() && run.restart_run.empty()) {

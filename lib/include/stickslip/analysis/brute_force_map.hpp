@@ -124,8 +124,16 @@ struct BruteForceMap {
   int first_count = 0;   // cells along i
   int second_count = 0;  // cells along j
   double section_phase = 0.0;  // the forcing phase at the section times
+  // What every cell depends on besides its own parameters (MapRunFingerprint): shards of one map
+  // share it, shards of other runs (other data, starts or options) do not.
+  std::uint64_t run = 0;
   std::vector<MapCell> cells;  // the computed cells, by j then i
 };
+
+// A 64-bit hash (FNV-1a over the values' bits, the same on every platform) of the base parameters,
+// the section phase, both axes and every option the cells depend on: all of `options` but shard,
+// shards, threads and progress.
+std::uint64_t MapRunFingerprint(const Parameters& base, double phi_section, const BruteForceMapOptions& options);
 
 // The rows of a shard: j mod shards == shard - 1.
 bool RowInShard(int j, int shard, int shards);

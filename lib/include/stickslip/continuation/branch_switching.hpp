@@ -26,6 +26,11 @@ struct BranchPointDirections {
   double singularity = 0.0;
 };
 
+// v / |v| for a finite nonzero v of any length: where |v|^2 would overflow (components of 1e300)
+// or lose digits to underflow (1e-300), v is scaled first (Eigen's stableNormalized); elsewhere
+// the plain quotient, to the bit.
+Eigen::VectorXd UnitDirection(const Eigen::VectorXd& v);
+
 // Throws std::invalid_argument if u or known_tangent do not have the problem's unknown count or
 // known_tangent is zero or not finite.
 BranchPointDirections SecondBranchDirection(const NonlinearSystem& problem, const Eigen::VectorXd& u,

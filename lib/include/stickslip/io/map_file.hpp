@@ -1,12 +1,13 @@
 // The brute-force map's file (analysis/brute_force_map.hpp): one writer, one reader, and the merge
 // of shards. A CSV table, one row per section point of each attractor of each cell:
 //
-//   i,j,ni,nj,<first>,<second>,section_phase,attractors,attractor,status,period,stops_per_period,
+//   i,j,ni,nj,<first>,<second>,section_phase,run,attractors,attractor,status,period,stops_per_period,
 //   sticks_per_period,starts,signature,k,x1,x2,v1,v2
 //
 // i, j the cell (ni, nj cells along each axis); <first>, <second> the two parameters' names and
-// their values in the cell; attractors the number found in the cell, attractor its index (from
-// 0); status periodic, not-settled or incomplete; starts the runs that ended on it; signature its
+// their values in the cell; run the map's fingerprint (16 hexadecimal digits, MapRunFingerprint:
+// the same in the shards of one map); attractors the number found in the cell, attractor its
+// index (from 0); status periodic, not-settled or incomplete; starts the runs that ended on it; signature its
 // orbit type (empty if none was read); k = 0..period-1 its section points (one row, k = 0, the
 // last state, when not periodic). Numbers in shortest round-trip form, so a file read and written
 // again is the same bytes, and the file does not depend on threads, shards or ranks.
@@ -28,7 +29,7 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
 
 // The shards of one map (computed with shard = 1..N of N, in any order) as the one map: every cell
 // once, by j then i. Throws InvalidInput naming "merge" when the shards are of different grids
-// (parameters, cell counts, values or section phase) or a cell is missing or in two shards; the
+// (parameters, cell counts, values or section phase) or runs (the run fingerprint) or a cell is missing or in two shards; the
 // message names the shard (`names[s]` for shards[s]) and the cell.
 BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, const std::vector<std::string>& names);
 
