@@ -21,6 +21,13 @@ TEST(InvalidInput, RenamingReplacesTheLeadingFieldOnly) {
   EXPECT_STREQ(renamed.what(), "point = 'a:B1' cannot be used: no restart here");
 }
 
+TEST(InvalidInput, RenamingAStandardViolationRenamesTheFieldInItsRangeToo) {
+  const InvalidInput e("loop_tolerance", 1.0, "0 < loop_tolerance <= 1e-2");
+  const InvalidInput renamed = e.Renamed("loop-tolerance");
+  EXPECT_EQ(renamed.valid_range(), "0 < loop-tolerance <= 1e-2");
+  EXPECT_STREQ(renamed.what(), "loop-tolerance = 1 is invalid: valid range 0 < loop-tolerance <= 1e-2");
+}
+
 TEST(InvalidInput, AMessageNotLedByItsFieldKeepsItsText) {
   const InvalidInput e = InvalidInput::WithMessage("unknowns", "the system is not square");
   EXPECT_EQ(e.Predicate(), "the system is not square");

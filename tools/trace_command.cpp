@@ -82,15 +82,10 @@ int RunTrace(TraceArgs args) {
   RunFile& run = args.continuation.run;
   try {
     args.options.Validate();
-  } catch (const InvalidInput& e) {  // named as the options are: max_amplitude is --max-amplitude, in the range too
+  } catch (const InvalidInput& e) {  // named as the options are: max_amplitude is --max-amplitude
     std::string option = e.field();
     std::replace(option.begin(), option.end(), '_', '-');
-    std::string range = e.valid_range();
-    if (range.empty()) throw e.Renamed(option);
-    for (auto at = range.find(e.field()); at != std::string::npos; at = range.find(e.field(), at + option.size())) {
-      range.replace(at, e.field().size(), option);
-    }
-    throw InvalidInput(option, e.value(), range);
+    throw e.Renamed(option);
   }
   run.trace = args.options;
   CheckTraceOutputDirectory(args.continuation.start.results, run.output);

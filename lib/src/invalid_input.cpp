@@ -53,6 +53,16 @@ std::string InvalidInput::Predicate() const {
 }
 
 InvalidInput InvalidInput::Renamed(std::string field) const {
+  // A violation in the standard form names its field in the valid range too ("0 < loop_tolerance
+  // <= 1e-2"): renamed there as well.
+  if (!valid_range_.empty() && !field_.empty() &&
+      std::string_view(what()) == fmt::format("{} = {} is invalid: valid range {}", field_, value_, valid_range_)) {
+    std::string range = valid_range_;
+    for (auto at = range.find(field_); at != std::string::npos; at = range.find(field_, at + field.size())) {
+      range.replace(at, field_.size(), field);
+    }
+    return InvalidInput(std::move(field), value_, std::move(range));
+  }
   const bool leading = Predicate().size() != std::string_view(what()).size();
   std::string message = leading ? fmt::format("{} {}", field, Predicate()) : std::string(what());
   return InvalidInput(std::move(field), value_, valid_range_, std::move(message));

@@ -14,5 +14,14 @@ if setarch "$(uname -m)" -R true 2>/dev/null; then
 else
   echo "note: address-space randomisation stays on (setarch -R refused): the inputs differ from run to run"
 fi
-exec "${fixed_layout[@]}" "$fuzzer" -seed=1 -runs=600000 -reload=0 -max_total_time=600 -max_len=4096 \
-  -print_final_stats=1 -artifact_prefix="$work-" "$work"
+runs=600000
+"${fixed_layout[@]}" "$fuzzer" -seed=1 -runs=$runs -reload=0 -max_total_time=600 -max_len=4096 \
+  -print_final_stats=1 -artifact_prefix="$work-" "$work" 2>&1 | tee "$work.log"
+status=${PIPESTATUS[0]}
+[ "$status" -eq 0 ] || exit "$status"
+# The time bound is a guard: stopping on it would fuzz fewer inputs than every other machine.
+executed=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work.log")
+if [ -z "$executed" ] || [ "$executed" -lt "$runs" ]; then
+  echo "the fuzzer ran ${executed:-no} inputs, not $runs (stopped by -max_total_time)"
+  exit 1
+fi

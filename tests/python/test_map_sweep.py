@@ -47,10 +47,10 @@ def test_the_arrays_hold_the_files_cells_and_attractors(tmp_path):
     rows = result.csv().splitlines()[1:]
     points = sum(max(1, s.shape[0]) for s in attractors["section"])
     assert len(rows) == points
-    first = rows[0].split(",")
-    assert int(first[7]) == cells["attractors"][0] and first[9] == attractors["status"][0]
-    assert int(first[10]) == attractors["period"][0] and int(first[13]) == attractors["starts"][0]
-    assert float(first[16]) == attractors["section"][0][0, 0]
+    first = dict(zip(result.csv().splitlines()[0].split(","), rows[0].split(",")))
+    assert int(first["attractors"]) == cells["attractors"][0] and first["status"] == attractors["status"][0]
+    assert int(first["period"]) == attractors["period"][0] and int(first["starts"]) == attractors["starts"][0]
+    assert float(first["x1"]) == attractors["section"][0][0, 0]
     for status, period, section in zip(attractors["status"], attractors["period"], attractors["section"]):
         assert section.shape == ((period, 4) if status == "periodic" else (1, 4))
 

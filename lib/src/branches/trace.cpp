@@ -140,7 +140,7 @@ class Tracer {
 
   TraceResult Run() {
     // Each round adds a branch to every running direction, and a direction holds at most
-    // max_branches: at most 2 max_branches rounds.
+    // max_branches: at most max_branches rounds.
     for (int round = 0; round < options_.max_branches && (running_[0] || running_[1]); ++round) {
       for (int d = 0; d < 2; ++d) {
         if (running_[d]) Advance(d);

@@ -63,7 +63,13 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
     const std::string& label = run.restart_label;
     const std::string type = label.substr(0, label.find_first_of("0123456789"));
     try {
-      setup = BranchFromBifurcation(type, setup, run.direction).setup;
+      const BifurcationBranchStart start = BranchFromBifurcation(type, setup, run.direction);
+      // The tests see 1e-16 .. 1e-7 at located points; far above, the stored point is no crossing.
+      if (!(start.singularity <= 1e-6)) {
+        throw InvalidInput("special point", fmt::format("{}", start.singularity),
+                           "a crossing of branches: the Jacobian's smallest singular value, relative, <= 1e-6");
+      }
+      setup = start.setup;
     } catch (const InvalidInput& e) {
       throw fail("start.restart.switch_branch",
                  e.valid_range().empty()
