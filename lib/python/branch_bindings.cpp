@@ -51,6 +51,11 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   if (run.restart_switch_branch && run.restart_label.empty()) {
     throw InvalidInput("switch_branch", "True", "True with point='RUN:LABEL' at a PD or an SB; False");
   }
+  run.restart_boundary = o["boundary"].cast<std::string>();
+  if (!run.restart_boundary.empty() && run.restart_label.empty()) {
+    throw InvalidInput("boundary", "'" + run.restart_boundary + "'",
+                       "a second parameter with point='RUN:LABEL' at an SK or a T0; None");
+  }
   run.output = o["output"].cast<std::string>();
   run.parameter = o["parameter"].cast<std::string>();
   run.direction = ContinuationDirection(o["direction"].cast<std::string>());

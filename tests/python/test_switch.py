@@ -104,3 +104,27 @@ def test_a_switch_at_a_symmetry_breaking_leaves_on_mirror_image_orbits_without_t
     asymmetry = [branch["d1"] - branch["d4"] for branch in sides]
     assert all(abs(asymmetry[0][1:]) > abs(asymmetry[0][:-1]))
     assert all(asymmetry[0] * asymmetry[1] < 0)
+
+
+def test_a_type_boundary_from_a_stored_label_gives_the_run_files_curve_byte_for_byte():
+    # continuation-scripts/paper-4.1-sk-boundary.toml: the §4.1 crossing-sliding boundary in (omega, u_r).
+    branch = stickslip.two_parameter("omega", "u_r", (0.3, 0.69), point="paper-4.1-omega-down:SK2", results=RESULTS,
+                                     direction="down", ds=0.01, ds_max=0.05, max_points=400,
+                                     output="paper-4.1-sk-boundary")
+    stored = RESULTS / "paper-4.1-sk-boundary"
+    files = branch.files()
+    assert files["branch.csv"] == (stored / "branch.csv").read_text()
+    assert files["special-points.csv"] == (stored / "special-points.csv").read_text()
+    assert branch.signature == "slip- stick / antisymmetric"
+    assert all(branch["d2"] == 0.0)  # the zero-length stick held on the boundary
+    assert branch["u_r"][-1] < branch["u_r"][0]  # the curve moves in both parameters
+
+
+@pytest.mark.parametrize("keywords, message", [
+    (dict(point=None), "boundary = 'u_r' is invalid: valid range a second parameter with point='RUN:LABEL'"),
+    (dict(point="paper-4.1-omega-down:EP1"), "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1'"),
+])
+def test_a_type_boundary_needs_a_stored_change_of_type(keywords, message):
+    with pytest.raises(ValueError) as error:
+        stickslip.continue_orbit("omega", (0.3, 0.69), boundary="u_r", results=RESULTS, **keywords)
+    assert message in str(error.value)

@@ -37,7 +37,7 @@ from ._inputs import _one_off_run, _start
 __all__ = [
     "Branch", "Continuation", "ConvergenceError", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
     "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
-    "presets", "run", "simulate", "solve", "sweep", "trace",
+    "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
 
 
@@ -193,6 +193,9 @@ def continue_orbit(parameter, range, **keywords):
                 run file's restart = { ..., switch_branch = true }), on the side `direction` names
                 ("up" +1, "down" -1); single shooting. Branch.switch does the same from a branch in
                 memory, also at a BP.
+    boundary    with point="RUN:LABEL" at an SK (reversal) or a T0: the type boundary there,
+                continued in `parameter` and this second parameter (the run file's restart = {
+                ..., boundary = "u_r" }); two_parameter() says it in its own words.
     The start keywords are solve()'s. Returns a Branch; raises ConvergenceError if the start does
     not converge, ValueError for bad input (the command line's message).
     """
@@ -201,10 +204,23 @@ def continue_orbit(parameter, range, **keywords):
 
 continue_orbit.__signature__ = _inspect.signature(_one_off_run)
 
+
+def two_parameter(parameter, second, range, *, point, **keywords):
+    """The type boundary at a stored change of type, continued in two parameters: from
+    point="RUN:LABEL" at an SK (crossing-sliding, margin reversal:i), an abnormal-stop:i or a T0
+    (a stick's duration:i), the orbit with a zero-length stick held there, `second` (chi, eta,
+    u_s, u_r, omega: not `parameter`) released, continued in `parameter` over `range` =
+    (min, max). The other keywords are continue_orbit's. Returns a Branch whose points lie on the
+    boundary (the curve in the plane of the two is branch[parameter], branch[second]); it ends
+    where a second margin reaches zero (a codimension-two point) or at the range. Not yet: the
+    grazing boundaries (velocity, G, G1), folds and period doublings in two parameters.
+    """
+    return continue_orbit(parameter, range, point=point, boundary=second, **keywords)
+
 _TRACE_DEFAULTS = _core._trace_defaults()
 # The keywords of continue_orbit that a trace does not take: it goes both ways and decides at every
 # change of type.
-_NOT_TRACE_KEYWORDS = ("direction", "continue_past_type_changes", "switch_branch")
+_NOT_TRACE_KEYWORDS = ("direction", "continue_past_type_changes", "switch_branch", "boundary")
 
 
 def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],

@@ -51,7 +51,7 @@ def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, re
 
 
 def _one_off_run(parameter, range, *, direction="up", output="python", parameters=None, signature=None, preset=None,
-                 point=None, switch_branch=False, results="results", set=None, guess=None, free=None, fix=None,
+                 point=None, switch_branch=False, boundary=None, results="results", set=None, guess=None, free=None, fix=None,
                  tie_u_r=False, ds=None,
                  ds_min=None, ds_max=None, max_points=None, shooting=None, linear_solver=None, detect_folds=None,
                  detect_branch_points=None, continue_past_type_changes=None, user_values=(), user_values_of=None):
@@ -65,7 +65,7 @@ def _one_off_run(parameter, range, *, direction="up", output="python", parameter
     options.update({
         "parameter": str(parameter), "range": (float(range[0]), float(range[1])), "direction": str(direction),
         "output": str(output), "results": str(results), "linear_solver_given": linear_solver is not None,
-        "switch_branch": switch_branch,
+        "switch_branch": switch_branch, "boundary": "" if boundary is None else str(boundary),
         "user_values": [float(v) for v in user_values],
         "user_values_of": {str(k): [float(v) for v in vs] for k, vs in (user_values_of or {}).items()},
     })
