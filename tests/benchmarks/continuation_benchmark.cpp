@@ -99,7 +99,10 @@ void TraceWallTime(benchmark::State& state, const std::string& run_file, FlowEva
   BENCHMARK_CAPTURE(TraceWallTime, odeint_##name, file, kOdeint)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 STICKSLIP_TRACE(paper_4_1, "paper-4.1-omega-trace.toml")
+STICKSLIP_TRACE(paper_4_2, "paper-4.2-omega-trace.toml")
 STICKSLIP_TRACE(paper_5_1, "paper-5.1-omega-trace.toml")
+STICKSLIP_TRACE(paper_5_2, "paper-5.2-omega-trace.toml")
+STICKSLIP_TRACE(paper_6, "paper-6-omega-trace.toml")
 
 // Section 5.1 over omega, 11 values, with the command line's default chains (four, up and down)
 // and periods (500 transient and 20 recorded per point), on range(0) threads (0: every core).
