@@ -120,6 +120,10 @@ Command AddTraceCommand(CLI::App& app) {
   AddNumberOption(*cmd, "--loop-tolerance", &args->options.loop_tolerance, "0 < loop-tolerance <= 1e-2",
                   "the chain has come back to a point it visited when the signature agrees and the parameter "
                   "(relative), start state, phase and period differ by at most this (0 < tol <= 1e-2)");
+  AddCountOption(*cmd, "--follow-bifurcations", &args->options.follow_bifurcations, 0, kMaxTraceBranches,
+                 fmt::format("branches met at BP, PD and SB to follow, in the order met, each as one branch into "
+                             "branch-<k>-<label>/ (0 to {}); the others are recorded in trace.json only",
+                             kMaxTraceBranches));
   cmd->add_flag("--follow-past-unswitched", args->options.follow_past_unswitched,
                 "at a change of type that switches nowhere, follow the same type on past it (not a motion there, "
                 "admissible = 0) to where it is admissible again, instead of ending the direction");

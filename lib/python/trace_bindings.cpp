@@ -44,6 +44,8 @@ TraceOptions TraceOptionsOf(const py::dict& o) {
   options.max_amplitude = o["max_amplitude"].cast<double>();
   options.loop_tolerance = o["loop_tolerance"].cast<double>();
   options.follow_past_unswitched = KeywordTrueOrFalse(o["follow_past_unswitched"], "follow_past_unswitched");
+  options.follow_bifurcations =
+      KeywordWholeNumber(o["follow_bifurcations"], "follow-bifurcations", WholeNumberRange("follow-bifurcations", 0, kMaxTraceBranches));
   try {
     options.Validate();
   } catch (const InvalidInput& e) {
@@ -163,6 +165,7 @@ void BindTrace(py::module_& m) {
     d["max_amplitude"] = o.max_amplitude;
     d["loop_tolerance"] = o.loop_tolerance;
     d["follow_past_unswitched"] = o.follow_past_unswitched;
+    d["follow_bifurcations"] = o.follow_bifurcations;
     return d;
   });
 }

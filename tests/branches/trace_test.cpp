@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/io/trace_files.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -256,7 +258,52 @@ TEST(Trace, RecordsTheBranchLeavingAPeriodDoublingWithoutFollowingIt) {
   EXPECT_EQ(met[0].signature, "slip- slip+ stick slip- slip+ stick / period 2");
   EXPECT_LT(met[0].singularity, 1e-7);
   EXPECT_TRUE(met[0].message.empty());
+  EXPECT_FALSE(met[0].followed.has_value());
   EXPECT_GE(links, 1u);
+}
+
+// Asked to, the trace follows the period-2 branch that leaves the PD: its orbits repeat after two
+// forcing periods in the exact simulator and not after one; it is written beside the chain as
+// branch-<k>-PD<n>/ and read back to the same bytes.
+TEST(Trace, FollowsTheBranchLeavingAPeriodDoublingWhenAsked) {
+  OrbitContinuationSetup setup = RunFileSetup("paper-5.2-omega-to-pd");
+  setup.options.lambda_min = 0.7;
+  TraceOptions options;
+  options.follow_bifurcations = 1;
+  const TraceResult trace = TraceOrbits(setup, options);
+  const OrbitBranch* followed = nullptr;
+  for (const TraceDirection* chain : {&trace.down, &trace.up}) {
+    for (const TraceLink& link : chain->links) {
+      for (const BifurcationMet& m : link.bifurcations) {
+        if (m.followed) followed = &*m.followed;
+      }
+    }
+  }
+  ASSERT_NE(followed, nullptr);
+  ASSERT_GE(followed->orbits.size(), 10u) << followed->branch.end_message;
+  const Orbit& o = followed->orbits[5];
+  EXPECT_EQ(o.signature.ToString(), "slip- slip+ stick slip- slip+ stick / period 2");
+  SimulationOptions simulation;
+  for (const double periods : {1.0, 2.0}) {
+    simulation.duration = periods * 2.0 * std::numbers::pi / o.parameters.omega;
+    const SimulationResult r = SimulateExact(o.parameters, o.InitialState(), o.phi, simulation);
+    ASSERT_TRUE(r.Completed());
+    const double distance = (StateAt(r, simulation.duration) - o.InitialState()).cwiseAbs().maxCoeff();
+    if (periods == 1.0) EXPECT_GT(distance, 1e-4);
+    else EXPECT_LT(distance, 1e-9);
+  }
+  RunFile run = ReadRunFile(fs::path(STICKSLIP_SOURCE_DIR) / "continuation-scripts" / "paper-5.2-omega-to-pd.toml");
+  run.output = "followed";
+  const StoredTrace stored = RecordTrace(run, trace);
+  ASSERT_EQ(stored.followed_runs.size(), 1u);
+  const fs::path root = fs::path(::testing::TempDir()) / "trace_follows_test";
+  fs::remove_all(root);
+  WriteTraceFiles(root, stored);
+  const StoredTrace read = ReadTraceFiles(root / "followed");
+  ASSERT_EQ(read.followed_runs.size(), 1u);
+  EXPECT_EQ(FormatRunFiles(read.followed_runs[0]).branch_csv, FormatRunFiles(stored.followed_runs[0]).branch_csv);
+  EXPECT_EQ(FormatTraceFiles(read).trace_json, FormatTraceFiles(stored).trace_json);
+  fs::remove_all(root);
 }
 
 TEST(Trace, RefusesInvalidOptions) {

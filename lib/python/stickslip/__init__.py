@@ -225,7 +225,8 @@ _NOT_TRACE_KEYWORDS = ("direction", "continue_past_type_changes", "switch_branch
 
 def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
           max_amplitude=_TRACE_DEFAULTS["max_amplitude"], loop_tolerance=_TRACE_DEFAULTS["loop_tolerance"],
-          follow_past_unswitched=_TRACE_DEFAULTS["follow_past_unswitched"], **keywords):
+          follow_past_unswitched=_TRACE_DEFAULTS["follow_past_unswitched"],
+          follow_bifurcations=_TRACE_DEFAULTS["follow_bifurcations"], **keywords):
     """Follow the chain of orbit branches through every change of orbit type, both ways from the
     start within `range`, as `stickslip trace`: at each change the adjacent types are tried and the
     one confirmed by simulation is continued.
@@ -238,6 +239,8 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
                     (0 < loop_tolerance <= 1e-2)
     follow_past_unswitched  at a change of type that switches nowhere, follow the same type on past
                     it (not a motion there, admissible 0) instead of ending the direction
+    follow_bifurcations  how many of the branches met at BP, PD and SB to follow, in the order met,
+                    each as one branch (0 to 1e4; the others are recorded only)
     The other keywords are continue_orbit's but direction, continue_past_type_changes and
     switch_branch (the range bounds the whole trace; ds, max_points, ... apply to every branch).
     Returns a Trace whether or not a direction ended at a change of type that switched nowhere (the
@@ -248,7 +251,8 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
         if key in keywords:
             raise TypeError(f"trace() got an unexpected keyword argument '{key}' (a trace goes both ways)")
     options = {"max_branches": max_branches, "max_amplitude": float(max_amplitude),
-               "loop_tolerance": float(loop_tolerance), "follow_past_unswitched": follow_past_unswitched}
+               "loop_tolerance": float(loop_tolerance), "follow_past_unswitched": follow_past_unswitched,
+               "follow_bifurcations": follow_bifurcations}
     return Trace(_core._trace(_one_off_run(parameter, range, **keywords), options))
 
 

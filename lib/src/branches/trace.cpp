@@ -202,16 +202,26 @@ class Tracer {
     return branch.branch.points[last - 1].tests(function - functions.begin()) < 0.0;
   }
 
-  // The branches that leave the located BP, PD and SB of `branch`: where each starts.
-  static std::vector<BifurcationMet> BifurcationsOn(const OrbitBranch& branch, const OrbitContinuationSetup& setup) {
+  // The branches that leave the located BP, PD and SB of `branch`: where each starts, and the
+  // branch itself while fewer than follow_bifurcations have been followed.
+  std::vector<BifurcationMet> BifurcationsOn(const OrbitBranch& branch, const OrbitContinuationSetup& setup) {
     std::vector<BifurcationMet> met;
     for (const SpecialPoint& s : branch.branch.special_points) {
       if (!s.located || (s.type != "BP" && s.type != "PD" && s.type != "SB")) continue;
-      BifurcationMet m{.point = s.point, .type = s.type, .lambda = s.lambda};
+      BifurcationMet m;
+      m.point = s.point;
+      m.type = s.type;
+      m.lambda = s.lambda;
       try {
         const BifurcationBranchStart start = BranchFromBifurcation(s, setup);
         m.signature = start.at.signature.ToString();
         m.singularity = start.singularity;
+        if (followed_ < options_.follow_bifurcations) {
+          ++followed_;
+          OrbitContinuationSetup follow = start.setup;
+          follow.options.progress = {};
+          m.followed = ContinueOrbit(follow);
+        }
       } catch (const std::exception& e) {
         m.message = e.what();
       }
@@ -368,6 +378,7 @@ class Tracer {
   std::array<Next, 2> next_;
   std::array<bool, 2> running_ = {true, true};
   std::vector<Visit> visits_;
+  int followed_ = 0;  // branches followed from a BP, PD or SB so far
 };
 
 }  // namespace

@@ -16,6 +16,10 @@ void TraceOptions::ValidateOwnFields() const {
   if (!(max_amplitude > 0.0 && std::isfinite(max_amplitude))) {
     throw InvalidInput("max_amplitude", max_amplitude, "a finite max_amplitude > 0");
   }
+  if (!(follow_bifurcations >= 0 && follow_bifurcations <= kMaxTraceBranches)) {
+    throw InvalidInput("follow_bifurcations", follow_bifurcations,
+                       WholeNumberRange("follow_bifurcations", 0, kMaxTraceBranches));
+  }
   if (!(loop_tolerance > 0.0 && loop_tolerance <= 1e-2)) {
     throw InvalidInput("loop_tolerance", loop_tolerance, "0 < loop_tolerance <= 1e-2");
   }

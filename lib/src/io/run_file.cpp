@@ -373,6 +373,13 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
       }
       options.max_branches = static_cast<int>(n->as_integer()->get());
     }
+    if (const toml::node* n = t.Get("follow_bifurcations")) {
+      if (!n->is_integer() || n->as_integer()->get() < 0 || n->as_integer()->get() > kMaxTraceBranches) {
+        t.Fail(*n, "follow_bifurcations",
+               fmt::format("is invalid: valid {}", WholeNumberRange("follow_bifurcations", 0, kMaxTraceBranches)));
+      }
+      options.follow_bifurcations = static_cast<int>(n->as_integer()->get());
+    }
     t.Number("max_amplitude", &options.max_amplitude);
     t.Number("loop_tolerance", &options.loop_tolerance);
     t.Boolean("follow_past_unswitched", &options.follow_past_unswitched);

@@ -84,7 +84,7 @@ Json Bifurcations(const std::vector<StoredBifurcation>& met) {
   Json list = Json::array();
   for (const StoredBifurcation& m : met) {
     list.push_back({{"label", m.label}, {"type", m.type}, {"parameter", m.lambda}, {"signature", m.signature},
-                    {"singularity", m.singularity}, {"message", m.message}});
+                    {"singularity", m.singularity}, {"message", m.message}, {"followed", m.followed}});
   }
   return list;
 }
@@ -188,8 +188,15 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
                                      .lambda = m.Number("parameter"),
                                      .signature = m.Text("signature"),
                                      .singularity = m.Number("singularity"),
-                                     .message = m.Text("message")});
+                                     .message = m.Text("message"),
+                                     .followed = m.Text("followed")});
       m.Done();
+      // Only the directory the writer names: a trace.json cannot point elsewhere.
+      const StoredBifurcation& read = branch.bifurcations.back();
+      if (!read.followed.empty() && read.followed != fmt::format("{}-{}", branch.name, read.label)) {
+        throw KeyError(file, m.Name("followed"),
+                       fmt::format("= '{}' is invalid: valid '' or '{}-{}'", read.followed, branch.name, read.label));
+      }
     }
     b.Done();
     t.branches.push_back(std::move(branch));
@@ -310,7 +317,14 @@ StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
         for (const StoredSpecialPoint& s : stored.special_points) {
           if (s.point.pt == m.point + 1 && s.type == m.type) label = s.point.label;
         }
-        b.bifurcations.push_back({label, m.type, m.lambda, m.signature, m.singularity, m.message});
+        std::string followed;
+        if (m.followed && !m.followed->orbits.empty()) {
+          followed = fmt::format("{}-{}", branch_run.output, label);
+          RunFile followed_run = run;
+          followed_run.output = followed;
+          t.followed_runs.push_back(RecordRun(followed_run, *m.followed));
+        }
+        b.bifurcations.push_back({label, m.type, m.lambda, m.signature, m.singularity, m.message, followed});
       }
       t.branches.push_back(std::move(b));
       t.runs.push_back(std::move(stored));
@@ -369,6 +383,7 @@ std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const Sto
       results_root, trace.output,
       [&](const fs::path& directory) {
         for (const StoredRun& run : trace.runs) WriteRunFiles(directory, run);
+        for (const StoredRun& run : trace.followed_runs) WriteRunFiles(directory, run);
         WriteFileAtomically(directory / kTraceCsv, files.trace_csv);
         WriteFileAtomically(directory / kTraceJson, files.trace_json);
       },
@@ -386,6 +401,9 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
                                  run.branch.size(), run.summary.signature));
     }
     t.runs.push_back(std::move(run));
+    for (const StoredBifurcation& m : b.bifurcations) {
+      if (!m.followed.empty()) t.followed_runs.push_back(ReadRunFiles(trace_directory / m.followed));
+    }
   }
   const fs::path csv_file = trace_directory / kTraceCsv;
   t.points = ParseCsv(detail::ReadTextFile(csv_file), csv_file, t.parameter);

@@ -50,6 +50,10 @@ struct TraceOptions {
   // Follow the same type on past a change of type that switches nowhere (see above), instead of
   // ending the direction there.
   bool follow_past_unswitched = false;
+  // How many of the branches met at BP, PD and SB are followed, in the order met (0 to
+  // kMaxTraceBranches): each continued as one branch from its start, ending as a branch does (no
+  // switching on it); the others are recorded only.
+  int follow_bifurcations = 0;
   TypeSwitchOptions type_switch;  // at every change of type
   // Called after every accepted point of every branch: done = the points so far, total =
   // 2 max_branches max_points (an upper bound), unit "points", value = lambda. Empty: no reports.
@@ -90,8 +94,9 @@ enum class LinkStart {
 const char* ToString(LinkStart start);
 
 // A branch met on the way, at a BP, PD or SB of a link's branch (branches/bifurcation_branches.hpp):
-// its start is computed and recorded, the branch is not followed (a run file that restarts from the
-// stored label with switch_branch follows it).
+// its start is computed and recorded; the first TraceOptions::follow_bifurcations of them are
+// followed, the others not (a run file that restarts from the stored label with switch_branch
+// follows one).
 struct BifurcationMet {
   int point = 0;           // the special point's point on the link's branch (SpecialPoint::point)
   std::string type;        // "BP", "PD" or "SB"
@@ -99,6 +104,7 @@ struct BifurcationMet {
   std::string signature;   // the type of the branch that leaves it; "" where its start failed
   double singularity = 0.0;  // BifurcationBranchStart::singularity
   std::string message;     // why the start failed, if it did
+  std::optional<OrbitBranch> followed;  // the branch that leaves it, where TraceOptions asked for it
 };
 
 struct TraceLink {

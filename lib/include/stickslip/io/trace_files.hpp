@@ -12,7 +12,10 @@
 //                 points, how it began (start, margin, and for a switch the bifurcation, the edit,
 //                 the adjacent signature, persists or a nonsmooth fold, from the orbit past the
 //                 boundary), its end and message, and the branches met at its BP, PD and SB
-//                 (label, type, parameter, the leaving branch's signature, the singularity there)
+//                 (label, type, parameter, the leaving branch's signature, the singularity there,
+//                 and, where it was followed, its directory)
+//   branch-<k>-<label>/  the branch followed from the special point <label> of branch k (an ordinary
+//                 run directory)
 // Numbers in shortest round-trip form, no time or host: the same trace gives the same bytes.
 #pragma once
 
@@ -45,6 +48,7 @@ struct StoredBifurcation {
   std::string signature;  // the type of the branch that leaves it; "" where its start failed
   double singularity = 0.0;
   std::string message;
+  std::string followed;   // the followed branch's directory ("branch-2-PD3"), "" if recorded only
 };
 
 struct StoredTraceBranch {
@@ -94,6 +98,7 @@ struct StoredTrace {
   std::vector<StoredTraceDirection> directions;  // down, then up
   std::vector<StoredTraceBranch> branches;       // branch-1, branch-2, ...
   std::vector<StoredRun> runs;                   // one per branch, its directory's files
+  std::vector<StoredRun> followed_runs;          // one per followed bifurcation, in the order listed
   std::vector<StoredTracePoint> points;          // trace.csv
 };
 
