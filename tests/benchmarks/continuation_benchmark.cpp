@@ -31,11 +31,13 @@
 namespace stickslip {
 namespace {
 
+// Odeint integrates forward only: a segment of zero length that Newton moves to a tiny negative
+// duration (a trace's new segment, -1e-12) is flowed by the closed form, a handful of evaluations.
 State OdeintState(Mode mode, const State& start, const double& phase, const double& s, const Parameters& p) {
-  return IntegrateMode(mode, start, phase, s, p);
+  return s < 0.0 ? Flow(mode, start, phase, s, p) : IntegrateMode(mode, start, phase, s, p);
 }
 FlowDerivatives OdeintDerivatives(Mode mode, const State& start, double phase, double s, const Parameters& p) {
-  return IntegrateModeWithDerivatives(mode, start, phase, s, p);
+  return s < 0.0 ? FlowWithDerivatives(mode, start, phase, s, p) : IntegrateModeWithDerivatives(mode, start, phase, s, p);
 }
 constexpr FlowEvaluator kClosedForm{};
 constexpr FlowEvaluator kOdeint{&OdeintState, &OdeintDerivatives};
