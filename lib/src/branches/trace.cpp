@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "stickslip/branches/bifurcation_branches.hpp"
 #include "stickslip/invalid_input.hpp"
-#include "stickslip/orbits/orbit_measures.hpp"
 
 namespace stickslip {
 
@@ -19,10 +19,12 @@ namespace ov = orbit_variables;
 
 const char* DirectionName(int direction) { return direction > 0 ? "up" : "down"; }
 
-// max |x1|, |x2| over the orbit, exact (nan where the extrema's search was cut short: no bound).
-double Amplitude(const Orbit& orbit) {
-  const OrbitMeasures m = Measure(orbit);
-  return std::max(m.amplitude_x1, m.amplitude_x2);
+// Where the monitor records the recorded column `name` in BranchPoint::recorded.
+int RecordedIndex(const std::vector<PointColumn>& columns, const char* name) {
+  for (const PointColumn& c : columns) {
+    if (c.name == name && !c.monitored) return c.index;
+  }
+  throw std::logic_error(std::string("the orbit monitor records no ") + name);
 }
 
 double Lambda(const Orbit& orbit, const std::string& parameter) {
@@ -59,6 +61,8 @@ class BranchRunner {
     problem.options.continue_past_terminal = to_next_change;
     problem.options.progress = {};
     Continuation continuation(*problem.system, problem.monitor.get(), problem.options, problem.start);
+    const int amplitude_x1 = RecordedIndex(problem.monitor->Columns(), orbit_columns::kAmplitudeX1);
+    const int amplitude_x2 = RecordedIndex(problem.monitor->Columns(), orbit_columns::kAmplitudeX2);
     std::size_t checked = 0;
     std::size_t special_checked = 0;
     for (bool more = true; more;) {
@@ -68,7 +72,9 @@ class BranchRunner {
       BranchEnd why = BranchEnd::kStopped;
       for (; checked < b.points.size() && !stop; ++checked) {
         const BranchPoint& point = b.points[checked];
-        const double amplitude = Amplitude(problem.system->ToOrbit(point.u));
+        // max |x1|, |x2| over the orbit as the monitor recorded it, exact (nan where the extrema's
+        // search was cut short: no bound).
+        const double amplitude = std::max(point.recorded(amplitude_x1), point.recorded(amplitude_x2));
         if (!(amplitude <= options_.max_amplitude)) {
           stop.emplace(static_cast<int>(checked),
                        fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} passed max_amplitude = {:g} at "
