@@ -33,7 +33,31 @@ void KeepInPhysicalRanges(const OrbitContinuationSetup& setup, const std::vector
   if (parameter == u_s && held_u_r) options->lambda_max = std::min(options->lambda_max, setup.start.parameters.u_r);
 }
 
+// The condition's equations in the unknowns of the periodicity equations.
+class ConditionEquations final : public ExtraEquations {
+ public:
+  ConditionEquations(const OrbitSystem& system, std::shared_ptr<const OrbitCondition> condition)
+      : system_(system), condition_(std::move(condition)) {}
+  int UnknownCount() const override { return condition_->ExtraUnknownCount(); }
+  int EquationCount() const override { return condition_->EquationCount(); }
+  void Evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& e, Eigen::VectorXd* residual, Eigen::MatrixXd* d_u,
+                Eigen::MatrixXd* d_e) const override {
+    Eigen::MatrixXd d_variables;
+    condition_->Evaluate(system_.ToOrbit(u), e, residual, d_u ? &d_variables : nullptr, d_e);
+    if (d_u) *d_u = system_.ToUnknowns(d_variables);
+  }
+
+ private:
+  const OrbitSystem& system_;
+  std::shared_ptr<const OrbitCondition> condition_;
+};
+
 }  // namespace
+
+const NonlinearSystem& OrbitContinuationProblem::Continued() const {
+  if (augmented) return *augmented;
+  return *system;
+}
 
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
   const Signature& signature = setup.start.signature;
@@ -45,7 +69,13 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   OrbitContinuationProblem problem;
   problem.system = std::make_unique<OrbitSystem>(setup.start, unknowns, setup.unknowns.tie_static_friction,
                                                  shooting, setup.flow);
-  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, setup.unwatched);
+  std::vector<std::string> unwatched = setup.unwatched;
+  if (setup.condition) {
+    problem.extra = std::make_unique<ConditionEquations>(*problem.system, setup.condition);
+    problem.augmented = std::make_unique<AugmentedSystem>(*problem.system, *problem.extra);
+    for (std::string& name : setup.condition->Defining()) unwatched.push_back(std::move(name));
+  }
+  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, std::move(unwatched));
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.size());
   KeepInPhysicalRanges(setup, free, unknowns.back(), &problem.options);
@@ -53,6 +83,11 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
     problem.options.corrector.linear_solver = setup.sparse_solver;
   }
   problem.start = problem.system->Unknowns(setup.start);
+  if (setup.condition) {
+    const Eigen::VectorXd extra = setup.condition->ExtraUnknowns(setup.start);
+    problem.start.conservativeResize(problem.start.size() + extra.size());
+    problem.start.tail(extra.size()) = extra;
+  }
   return problem;
 }
 
@@ -61,14 +96,15 @@ OrbitBranch ToOrbitBranch(const OrbitContinuationProblem& problem, Branch branch
   result.shooting = problem.system->equations().shooting();
   result.columns = problem.monitor->Columns();
   result.branch = std::move(branch);
-  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(problem.system->ToOrbit(p.u));
+  const int unknowns = problem.system->UnknownCount();
+  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(problem.system->ToOrbit(p.u.head(unknowns)));
   return result;
 }
 
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer) {
   OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
-  Continuation continuation(*problem.system, problem.monitor.get(), problem.options, problem.start);
+  Continuation continuation(problem.Continued(), problem.monitor.get(), problem.options, problem.start);
   while (continuation.Step()) {
     if (observer) observer(continuation.branch());
   }

@@ -113,7 +113,7 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
 }
 
 void OrbitMonitor::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const {
-  const Orbit orbit = system_.ToOrbit(u);
+  const Orbit orbit = system_.ToOrbit(u.head(system_.UnknownCount()));  // a curve's own unknowns follow
   const Evaluated evaluated{AdmissibilityMargins(orbit), StabilityOf(orbit),
                             recorded ? MeasureValues(orbit) : std::vector<double>{}};
   tests->resize(static_cast<int>(info_.size()));

@@ -60,7 +60,7 @@ class BranchRunner {
     OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
     problem.options.continue_past_terminal = to_next_change;
     problem.options.progress = {};
-    Continuation continuation(*problem.system, problem.monitor.get(), problem.options, problem.start);
+    Continuation continuation(problem.Continued(), problem.monitor.get(), problem.options, problem.start);
     const int amplitude_x1 = RecordedIndex(problem.monitor->Columns(), orbit_columns::kAmplitudeX1);
     const int amplitude_x2 = RecordedIndex(problem.monitor->Columns(), orbit_columns::kAmplitudeX2);
     std::size_t checked = 0;

@@ -255,22 +255,27 @@ void OrbitSystem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual,
   Eigen::MatrixXd full_jacobian;
   equations_.Evaluate(Variables(u), residual, jacobian ? &full_jacobian : nullptr);
   if (!jacobian) return;
-  const int n = equations_.signature().size();
-  const int full = ov::Count(n);
-  const int states = equations_.VariableCount() - full;
-  const int u_s = ov::Parameter(n, ParameterId::kSlidingFriction);
-  const int u_r = ov::Parameter(n, ParameterId::kStaticFriction);
-  Eigen::MatrixXd j(full_jacobian.rows(), UnknownCount());
-  for (std::size_t k = 0; k < free_.size(); ++k) {
-    j.col(static_cast<int>(k)) = full_jacobian.col(free_[k]);
-    if (tie_static_friction_ && free_[k] == u_s) j.col(static_cast<int>(k)) += full_jacobian.col(u_r);
-  }
-  j.rightCols(states) = full_jacobian.rightCols(states);
+  Eigen::MatrixXd j = ToUnknowns(full_jacobian);
   if (equations_.shooting() == Shooting::kMultiple) {
     *jacobian = SparseMatrix(j.sparseView());
   } else {
     *jacobian = std::move(j);
   }
+}
+
+Eigen::MatrixXd OrbitSystem::ToUnknowns(const Eigen::MatrixXd& d_variables) const {
+  const int n = equations_.signature().size();
+  const int full = ov::Count(n);
+  const int states = static_cast<int>(d_variables.cols()) - full;  // the multiple-shooting states', if given
+  const int u_s = ov::Parameter(n, ParameterId::kSlidingFriction);
+  const int u_r = ov::Parameter(n, ParameterId::kStaticFriction);
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(d_variables.rows(), UnknownCount());
+  for (std::size_t k = 0; k < free_.size(); ++k) {
+    j.col(static_cast<int>(k)) = d_variables.col(free_[k]);
+    if (tie_static_friction_ && free_[k] == u_s) j.col(static_cast<int>(k)) += d_variables.col(u_r);
+  }
+  j.rightCols(states) = d_variables.rightCols(states);
+  return j;
 }
 
 std::optional<std::string> OrbitSystem::DomainError(const Eigen::VectorXd& u) const {

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/branches/orbit_condition.hpp"
 #include "stickslip/branches/orbit_monitor.hpp"
+#include "stickslip/continuation/augmented_system.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/periodicity.hpp"
@@ -26,6 +28,10 @@ struct OrbitContinuationSetup {
   // Test functions (by column name: "margin:G:2", "floquet:torus") recorded but not watched:
   // those that sit on zero or mean nothing along a type boundary (branches/type_boundary.hpp).
   std::vector<std::string> unwatched;
+  // With a condition, the branch is a curve in two parameters (branches/boundary_curve.hpp): the
+  // periodicity equations and the condition's, in the unknowns and the condition's own; the
+  // condition's defining test functions are not watched.
+  std::shared_ptr<const OrbitCondition> condition;
 };
 
 struct OrbitBranch {
@@ -43,10 +49,14 @@ OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
 
 // The pieces of ContinueOrbit, for stepping by hand.
 struct OrbitContinuationProblem {
-  std::unique_ptr<OrbitSystem> system;
+  std::unique_ptr<OrbitSystem> system;  // the periodicity equations
+  std::unique_ptr<ExtraEquations> extra;       // with a condition: its equations, and
+  std::unique_ptr<AugmentedSystem> augmented;  // the two together
   std::unique_ptr<OrbitMonitor> monitor;
   ContinuationOptions options;
-  Eigen::VectorXd start;
+  Eigen::VectorXd start;  // the unknowns of Continued()
+  // What the engine continues: the periodicity equations, with the condition's where there is one.
+  const NonlinearSystem& Continued() const;
 };
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup);
 // The branch of a continuation stepped by hand on `problem`, as ContinueOrbit returns it: the

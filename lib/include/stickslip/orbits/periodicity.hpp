@@ -86,6 +86,10 @@ class OrbitSystem final : public NonlinearSystem {
 
   Eigen::VectorXd Unknowns(const Orbit& orbit) const;
   Orbit ToOrbit(const Eigen::VectorXd& u) const;
+  // Derivatives with respect to the full variables (orbit.hpp's order; then, for multiple
+  // shooting, the segment states, or none of them: a function of the orbit alone) as derivatives
+  // with respect to the unknowns (the chain rule of holding, freeing and tying).
+  Eigen::MatrixXd ToUnknowns(const Eigen::MatrixXd& d_variables) const;
   const std::vector<int>& free() const { return free_; }
   const PeriodicityEquations& equations() const { return equations_; }
 

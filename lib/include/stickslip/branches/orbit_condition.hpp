@@ -1,0 +1,40 @@
+// A condition on a periodic orbit that, added to the periodicity equations with a second parameter
+// released, defines a curve of codimension-one points in the plane of two parameters: a margin
+// through zero (a type boundary, branches/boundary_curve.hpp), a Floquet multiplier at +1 or -1
+// (a fold, a period doubling), ... The condition may bring unknowns of its own (the time of an
+// interior extremum) and then one equation more than it has unknowns.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stickslip/orbits/orbit.hpp"
+
+namespace stickslip {
+
+class OrbitCondition {
+ public:
+  virtual ~OrbitCondition() = default;
+  // What the curve is, for files and messages: "LP", "PD", "margin:G:2".
+  virtual std::string Name() const = 0;
+  // Its own unknowns (0 by default); it has one equation more.
+  virtual int ExtraUnknownCount() const { return 0; }
+  int EquationCount() const { return ExtraUnknownCount() + 1; }
+  // Their values at an orbit on the curve (or near it: the start of the curve's continuation).
+  virtual Eigen::VectorXd ExtraUnknowns(const Orbit& orbit) const {
+    (void)orbit;
+    return Eigen::VectorXd();
+  }
+  // The residuals at `orbit` with its own unknowns `extra`, and their exact derivatives with
+  // respect to the orbit's full variables (orbit.hpp's order, ov::Count(n) columns) and to `extra`,
+  // where the pointers are not null.
+  virtual void Evaluate(const Orbit& orbit, const Eigen::VectorXd& extra, Eigen::VectorXd* residual,
+                        Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const = 0;
+  // The monitor's test functions (column names: "margin:G:2", "floquet:det(M+I)") that sit on zero
+  // along the curve by its definition, or mean nothing there: recorded, not watched.
+  virtual std::vector<std::string> Defining() const { return {}; }
+};
+
+}  // namespace stickslip
