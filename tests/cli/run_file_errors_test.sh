@@ -110,7 +110,7 @@ restart = { run = "paper-4.1-omega-down", label = "SK2", boundary = "u_r" }
 parameter = "omega"
 direction = "down"
 range = [0.3, 0.69]'
-expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (start): margin = start is invalid: valid range reversal:i" "${bounded/SK2/EP1}"
+expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (EP): condition = EP is invalid: valid range" "${bounded/SK2/EP1}"
 expect 2 "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): second = omega is invalid" "${bounded/boundary = \"u_r\"/boundary = \"omega\"}"
 expect 2 "key 'start.restart.boundary' cannot go with switch_branch" "${bounded/boundary = \"u_r\"/boundary = \"u_r\", switch_branch = true}"
 

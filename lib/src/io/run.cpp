@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/branches/bifurcation_branches.hpp"
-#include "stickslip/branches/type_boundary.hpp"
+#include "stickslip/branches/boundary_curve.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/start_input.hpp"
 
@@ -78,18 +78,17 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
     }
   }
   if (!run.restart_boundary.empty()) {
-    const std::string margin = ReadLabelledPoint(results_root, run.restart_run, run.restart_label).test_function;
-    const std::string_view prefix = orbit_columns::kMarginPrefix;
-    const LocatedTypeChange located{.orbit = setup.start,
-                                    .margin = margin.starts_with(prefix) ? margin.substr(prefix.size()) : margin,
-                                    .parameter = run.parameter,
-                                    .past = 1,
-                                    .unknowns = setup.unknowns};
+    // A type change is its margin's (the test function), the others their type (LP2: LP).
+    const std::string& label = run.restart_label;
+    const std::string test = ReadLabelledPoint(results_root, run.restart_run, label).test_function;
+    const std::string condition =
+        test.starts_with(orbit_columns::kMarginPrefix) ? test : label.substr(0, label.find_first_of("0123456789"));
+    const CurveStart start{.orbit = setup.start, .condition = condition, .parameter = run.parameter, .unknowns = setup.unknowns};
     try {
-      setup = TypeBoundary(located, setup, run.restart_boundary).setup;
+      setup = BoundaryCurve(start, setup, run.restart_boundary);
     } catch (const InvalidInput& e) {
       throw fail("start.restart.boundary", fmt::format("= '{}' is invalid at '{}' ({}): {} {}", run.restart_boundary,
-                                                       run.restart_label, margin, e.field(), e.Predicate()));
+                                                       label, condition, e.field(), e.Predicate()));
     }
   }
   // User values address unknowns: the free variables in their order, then the parameter (of the
