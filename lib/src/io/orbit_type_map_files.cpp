@@ -60,7 +60,8 @@ Json OrbitJson(const MapOrbit& o) {
               {"durations", o.orbit.durations}};
 }
 
-std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace) {
+std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,
+                              const std::string& brute_force) {
   const MapRectangle& r = map.rectangle;
   const int n = map.options.raster;
   Json rows = Json::array();
@@ -111,6 +112,18 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace)
   for (const MapSkippedStart& s : map.skipped) {
     skipped.push_back(Json{{"from", s.from}, {"condition", s.condition}, {"reason", s.reason}});
   }
+  Json compared = nullptr;
+  if (comparison) {
+    int explained = 0;
+    for (const MapCellComparison& d : comparison->disagreements) explained += d.explained;
+    compared = Json{{"brute_force", brute_force},
+                    {"cells", comparison->cells},
+                    {"compared", comparison->compared},
+                    {"agreeing", comparison->agreeing},
+                    {"agreement", comparison->Agreement()},
+                    {"disagreements", comparison->disagreements.size()},
+                    {"explained", explained}};
+  }
   const Json root{{"trace", trace},
                   {"first", r.first},
                   {"second", r.second},
@@ -120,6 +133,7 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace)
                   {"regions", regions},
                   {"curves", curves},
                   {"skipped", skipped},
+                  {"comparison", compared},
                   {"cells", rows}};
   return root.dump(2) + "\n";
 }
@@ -183,7 +197,7 @@ std::vector<std::string> TraceTypes(const StoredTrace& trace) {
 
 OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,
                                           const std::string& brute_force) {
-  return {FormatCurvesCsv(map), FormatRegionsJson(map, trace),
+  return {FormatCurvesCsv(map), FormatRegionsJson(map, trace, comparison, brute_force),
           comparison ? FormatComparisonMd(map, *comparison, trace, brute_force) : std::string()};
 }
 

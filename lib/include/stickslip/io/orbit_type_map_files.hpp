@@ -12,7 +12,8 @@
 //   regions.json   the rectangle, the raster and its cells (one string of region ids per raster
 //                  row, j from the bottom; -1 cut, -2 sliver), the regions (interior point,
 //                  clearance, label, stable types, every orbit found, failures), the curves (kind,
-//                  start, end, their special points) and the trace's points that gave no curve
+//                  start, end, their special points), the trace's points that gave no curve, and
+//                  the comparison's counts (null without one)
 //   comparison.md  the brute-force comparison (analysis/map_comparison.hpp), when there is one
 // Numbers in shortest round-trip form, no time or host: the same map gives the same bytes.
 #pragma once
