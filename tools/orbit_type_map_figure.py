@@ -135,12 +135,18 @@ def main(directory, out, brute_path=None):
     kinds = sorted({c["kind"] for c in curves.values()})
     strong = plt.get_cmap("tab10").colors
     colours = {k: strong[n % len(strong)] for n, k in enumerate(kinds)}
-    special = []
+    # The curves' special points (not their ends), one label per place: the types met there and
+    # the curves' kinds ("SK (LP, PD)"), points within 1/300 of the axes' ranges taken as one place.
+    places = {}
     for c in regions["curves"]:
         for p in c["special_points"]:
             if p["type"] == "EP":
                 continue
-            special.append((p[first], p[second], f'{p["type"]} ({kind_name(c["kind"])})'))
+            key = (round(p[first] / (extent[1] - extent[0]) * 300), round(p[second] / (extent[3] - extent[2]) * 300))
+            place = places.setdefault(key, dict(x=p[first], y=p[second], types=set(), kinds=set()))
+            place["types"].add(p["type"])
+            place["kinds"].add(kind_name(c["kind"]))
+    special = [(q["x"], q["y"], f'{"/".join(sorted(q["types"]))} ({", ".join(sorted(q["kinds"]))})') for q in places.values()]
     start = trace_start(regions["trace"], first, second)
 
     panels = 2 if brute else 1
