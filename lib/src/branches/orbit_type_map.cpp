@@ -56,6 +56,13 @@ OrbitContinuationSetup SetupAt(const MapTrace& trace, const Orbit& orbit, const 
   return setup;
 }
 
+// The progress steps of the curves: two per special point of the trace (both ways).
+int StartSteps(const MapTrace& trace) {
+  int total = 0;
+  for (const MapTraceBranch& b : trace.branches) total += 2 * static_cast<int>(b.special.size());
+  return total;
+}
+
 void Report(const OrbitTypeMapOptions& options, double done, double total, const char* unit) {
   if (options.progress) options.progress({done, total, unit, std::numeric_limits<double>::quiet_NaN()});
 }
@@ -256,8 +263,7 @@ namespace {
 // The curves through the trace's special points (both ways each), and the points refused.
 void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTypeMapOptions& options, OrbitTypeMap* map) {
   std::vector<std::pair<std::string, Orbit>> started;  // (condition, orbit): a point met twice is one start
-  int total = 0;
-  for (const MapTraceBranch& b : trace.branches) total += 2 * static_cast<int>(b.special.size());
+  const int total = StartSteps(trace);
   int done = 0;
   for (const MapTraceBranch& b : trace.branches) {
     for (const MapStartPoint& p : b.special) {
@@ -317,7 +323,7 @@ void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTyp
         }
         map->curves.push_back(std::move(c));
       }
-      Report(options, done, total, "curves");
+      Report(options, done, total + 1.0, "steps");
     }
   }
 }
@@ -380,7 +386,8 @@ OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectan
   for (std::size_t k = 0; k < map.regions.size(); ++k) {
     MapRegion& region = map.regions[k];
     region.orbits = OrbitsAt(trace, rectangle, region.first, region.second, options, &region.failures);
-    Report(options, static_cast<double>(k + 1), static_cast<double>(map.regions.size()), "regions");
+    const double starts = StartSteps(trace);
+    Report(options, starts + static_cast<double>(k + 1), starts + static_cast<double>(map.regions.size()), "steps");
   }
   return map;
 }

@@ -78,7 +78,9 @@ struct OrbitTypeMapOptions {
   int max_curve_points = 600;    // points per curve (2 to 100000)
   int max_content_points = 400;  // points per continuation to an interior point (2 to 100000)
   double same_orbit = 1e-6;   // two orbits of one type within this (OrbitDistance) are one (0 to 1)
-  // Called after each curve (unit "curves") and each region's content (unit "regions"). Empty: none.
+  // Called after each start of curves (two steps: both ways) and each region's content (one step),
+  // unit "steps", done increasing; the total is known once the regions are (before: the curves'
+  // steps + 1). Empty: no reports.
   ProgressCallback progress = {};
 
   void Validate() const;  // throws InvalidInput naming the first field out of its range
