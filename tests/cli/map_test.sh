@@ -31,8 +31,16 @@ rows = list(csv.DictReader(open(d + "/curves.csv")))
 for r in rows:  # every point in the rectangle (its edges to rounding)
     assert 0.53 - 1e-9 <= float(r["omega"]) <= 0.6 + 1e-9 and 0.4 - 1e-9 <= float(r["u_r"]) <= 0.6 + 1e-9, r
 assert {c["id"] for c in m["curves"]} == {int(r["curve"]) for r in rows}
+last = {}
+for r in rows:
+    last[int(r["curve"])] = r
 for c in m["curves"]:
     assert c["end"] in ("parameter-bound", "terminal-event", "max-points"), c
+    # A curve that leaves the rectangle through its second parameter ends on the edge (located EP).
+    for side, bound in (("u_r_min", 0.4), ("u_r_max", 0.6)):
+        if c["message"].startswith("reached " + side):
+            assert abs(float(last[c["id"]]["u_r"]) - bound) <= 1e-9, (c, last[c["id"]]["u_r"])
+            assert c["special_points"][-1]["type"] == "EP", c
 PY
 
 # A later run restarts from a curve's labelled point (results root: the map's directory).
