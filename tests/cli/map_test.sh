@@ -77,5 +77,8 @@ expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --out
 mkdir -p "$work/out/mine" && echo "mine" > "$work/out/mine/notes.txt"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/mine"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output ""
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file/sub"
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/.."
 
 finish

@@ -202,7 +202,21 @@ OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::st
 }
 
 void CheckOrbitTypeMapDirectory(const fs::path& directory) {
+  const std::string name = directory.filename().string();
+  if (name.empty() || name == "." || name == "..") {
+    throw InvalidInput("output", "'" + directory.string() + "'", "a directory's path ending in its name");
+  }
   std::error_code error;
+  // The nearest existing ancestor must be a directory (the rest is created).
+  for (fs::path up = directory.parent_path(); !up.empty(); up = up.parent_path()) {
+    const fs::file_status s = fs::status(up, error);
+    if (!fs::exists(s)) {
+      if (up == up.parent_path()) break;
+      continue;
+    }
+    if (!fs::is_directory(s)) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
+    break;
+  }
   const fs::file_status status = fs::symlink_status(directory, error);
   if (!fs::exists(status)) return;
   if (!fs::is_directory(status) || !fs::is_regular_file(directory / kRegionsJson, error)) {
