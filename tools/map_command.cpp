@@ -125,7 +125,16 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
                args.brute_force, comparison->agreeing, comparison->compared, comparison->Agreement(),
                comparison->disagreements.size(), explained);
   }
-  return kExitOk;
+  // A curve whose start did not converge, or whose step fell below ds_min, is a failure of the
+  // computation (the map is written all the same); its end elsewhere is the curve's.
+  int failed = 0;
+  for (const MapCurve& c : map.curves) {
+    const BranchEnd end = c.branch.branch.end;
+    if (end != BranchEnd::kStartFailed && end != BranchEnd::kStepTooSmall) continue;
+    ++failed;
+    fmt::print(stderr, "curve {} ({} from {}): {}: {}\n", c.id, c.kind, c.from, ToString(end), c.branch.branch.end_message);
+  }
+  return failed > 0 ? kExitNoConvergence : kExitOk;
 }
 
 }  // namespace
@@ -141,7 +150,8 @@ Command AddMapCommand(CLI::App& app) {
       "or not, stable or not). With --brute-force, the comparison with a map of stickslip map-sweep over the same "
       "parameters. Writes --output/: curves.csv, curve-<k>/ (each curve as a run: restart from its labels with "
       "--results OUTPUT), regions.json, comparison.md. Parameters are the paper's scaled ones. Exit 0 when written; "
-      "2 for bad input (nothing written).");
+      "2 for bad input (nothing written); 3 when a curve's start did not converge or its step fell below ds_min "
+      "(the map is written, the curve named on stderr).");
   cmd->add_option("--trace", args->trace, "the trace's directory (results/<trace>/, with trace.json)");
   cmd->add_option("--second", args->second, "the second parameter: chi, eta, omega, u_s or u_r, not the trace's");
   AddNumberOption(*cmd, "--second-from", &args->second_from, "the parameter's valid range, < second-to",
