@@ -27,8 +27,10 @@ int VariableIndex(int n, std::string_view field, std::string_view name);
 
 // The free variable indices of a choice for a signature. Throws InvalidInput naming "free" or
 // "fix" for a name that is not a variable (or u_r released while tied to u_s), and "unknowns",
-// with both counts, when the system would not be square.
-std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);
+// with both counts, when the system would not be square: the periodicity equations and
+// `more_equations` besides (a curve's condition, branches/orbit_condition.hpp: one equation more
+// than its own unknowns).
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice, int more_equations = 0);
 
 // The index of the continued variable `parameter` (a variable name): one that is held, not in
 // `free`, and not u_r while it is tied to u_s. Throws InvalidInput naming "parameter".
