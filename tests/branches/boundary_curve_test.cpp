@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/margin_condition.hpp"
+#include "stickslip/branches/type_boundary.hpp"
 #include "stickslip/branches/type_switch.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/result_files.hpp"
@@ -268,6 +269,80 @@ TEST(BoundaryCurve, CurvesMeetingAtACodimensionTwoPointFindItFromEachSide) {
   EXPECT_NEAR(grazing.orbit.parameters.omega, from_sk.omega, 1e-9);
   ExpectSamePoint(from_sk, CodimensionTwoPoint(velocity_curve, "velocity:1", "reversal:1"));
   ExpectAlongTheCurve(velocity_curve, velocity);
+}
+
+// The u_r of the curve of `setup` at each of `omegas` (user values), continued `direction`.
+std::vector<double> CurveAt(OrbitContinuationSetup setup, int direction, const std::vector<double>& omegas) {
+  setup.options.direction = direction;
+  setup.options.max_points = 400;
+  setup.options.step.ds = 0.005;
+  setup.options.step.ds_max = 0.02;
+  const int lambda =
+      static_cast<int>(FreeIndices(setup.start.signature, setup.unknowns, NetConditionEquations(setup)).size());
+  for (double omega : omegas) setup.options.user_values.push_back({lambda, omega, "omega"});
+  const OrbitBranch curve = ContinueOrbit(setup);
+  std::vector<double> u_r;
+  for (const SpecialPoint& s : curve.branch.special_points) {
+    if (s.type == "UZ") u_r.push_back(curve.orbits[s.point].parameters.u_r);
+  }
+  EXPECT_EQ(u_r.size(), omegas.size()) << curve.branch.end_message;
+  return u_r;
+}
+
+TEST(BoundaryCurve, AgreesWithTheZeroLengthStickConstruction) {
+  struct Case {
+    const char* results;  // under results/
+    const char* run;
+    const char* label;
+    const char* margin;
+    double step;  // between the values of omega, within the curve's ends each way
+  };
+  // The zero-length stick's exit slope is watched on the T0 curve (the zero-length-stick
+  // construction did not watch it), and reaches zero below omega = 0.58: there the curve ends.
+  for (const Case c : {Case{"", "paper-4.1-omega-down", "SK2", "reversal:1", 0.01},
+                       Case{"", "paper-5.1-omega-down", "SK2", "reversal:1", 0.003},
+                       // the §4.1 sticking type's first point, its stick of zero length (T0)
+                       Case{"paper-4.1-omega-trace", "branch-2", "EP1", "duration:2", 0.005}}) {
+    RunFile file;
+    file.path = "test";
+    file.output = "curve";
+    file.restart_run = c.run;
+    file.restart_label = c.label;
+    file.parameter = "omega";
+    file.range_min = 0.3;
+    file.range_max = 0.9;
+    const OrbitContinuationSetup branch = MakeSetup(file, Results() / c.results);
+    const OrbitContinuationSetup margin = BoundaryCurve(
+        {.orbit = branch.start, .condition = std::string("margin:") + c.margin, .parameter = "omega", .unknowns = branch.unknowns},
+        branch, "u_r");
+    const OrbitContinuationSetup stick =
+        TypeBoundary({.orbit = branch.start, .margin = c.margin, .parameter = "omega", .past = 1, .unknowns = branch.unknowns},
+                     branch, "u_r")
+            .setup;
+    const double omega = branch.start.parameters.omega;
+    for (const int direction : {1, -1}) {
+      std::vector<double> omegas;
+      for (int k = 1; k <= 3; ++k) omegas.push_back(omega + direction * c.step * k);
+      const std::vector<double> a = CurveAt(margin, direction, omegas);
+      const std::vector<double> b = CurveAt(stick, direction, omegas);
+      for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
+        std::printf("%s:%s %s at omega = %.6g: u_r %.16g, zero-length stick %.16g, difference %.2e\n", c.run, c.label,
+                    c.margin, omegas[k], a[k], b[k], a[k] - b[k]);
+        EXPECT_NEAR(a[k], b[k], 1e-9);
+      }
+    }
+    if (std::string(c.margin) == "duration:2") {
+      // Along the T0 curve the zero-length stick's entry force and ending constraint (G1:2) sit
+      // on zero with its duration, and nothing else does; down in omega it ends where the
+      // zero-length stick's exit becomes tangential.
+      OrbitContinuationSetup up = margin;
+      up.options.max_points = 40;
+      ExpectAlongTheCurve(ContinueOrbit(up), up);
+      OrbitContinuationSetup down = margin;
+      down.options.direction = -1;
+      CodimensionTwoPoint(ContinueOrbit(down), "duration:2", "exit-slope:2");
+    }
+  }
 }
 
 TEST(BoundaryCurve, RefusesConditionsAndSecondParametersItGivesNoCurveOf) {
