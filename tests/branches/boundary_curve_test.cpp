@@ -14,11 +14,11 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/margin_condition.hpp"
-#include "stickslip/branches/type_boundary.hpp"
 #include "stickslip/branches/type_switch.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/orbits/adjacent_type.hpp"
 #include "stickslip/model/events.hpp"
 #include "stickslip/model/simulation.hpp"
 
@@ -289,36 +289,49 @@ std::vector<double> CurveAt(OrbitContinuationSetup setup, int direction, const s
   return u_r;
 }
 
+// The zero-length-stick construction of a crossing-sliding boundary (what branches/type_boundary
+// did before margin = 0): the adjacent type with the stick crossing-sliding inserts after the stop,
+// of zero length (orbits/adjacent_type.hpp), held there: the curve of that stick's duration.
+CurveStart ZeroLengthStick(const OrbitContinuationSetup& branch, const std::string& margin) {
+  const std::vector<Margin> margins = AdmissibilityMargins(branch.start);
+  const auto m = std::find_if(margins.begin(), margins.end(), [&](const Margin& x) { return x.Name() == margin; });
+  const bool equal_friction = branch.start.parameters.u_r == branch.start.parameters.u_s;
+  for (const AdjacentType& a : AdjacentTypes(m->base, m->segment, branch.start.signature, equal_friction)) {
+    if (a.kind != TypeEdit::kInsert || a.edit.signature.segments()[a.new_segment] != Mode::kStick) continue;
+    UnknownChoice unknowns = branch.unknowns;
+    for (std::string& name : unknowns.fix) name = a.edit.Renamed(name);
+    for (std::string& name : unknowns.release) name = a.edit.Renamed(name);
+    return {.orbit = AdjacentStart(branch.start, *m, a),
+            .condition = "margin:duration:" + std::to_string(a.new_segment + 1),
+            .parameter = "omega",
+            .unknowns = unknowns};
+  }
+  throw std::runtime_error("no stick inserted at " + margin);
+}
+
 TEST(BoundaryCurve, AgreesWithTheZeroLengthStickConstruction) {
+  // The crossing-sliding boundaries of §4.1 and §5.1: reversal:1 = 0 on the located type against
+  // the adjacent type's inserted stick held at zero length (its duration = 0, T0), at three values
+  // of omega each way (within the curves' ends: the zero-length stick's exit becomes tangential
+  // at omega = 0.5773647 on §4.1, below).
   struct Case {
-    const char* results;  // under results/
     const char* run;
-    const char* label;
-    const char* margin;
-    double step;  // between the values of omega, within the curve's ends each way
+    double step;  // between the values of omega
   };
-  // The zero-length stick's exit slope is watched on the T0 curve (the zero-length-stick
-  // construction did not watch it), and reaches zero below omega = 0.58: there the curve ends.
-  for (const Case c : {Case{"", "paper-4.1-omega-down", "SK2", "reversal:1", 0.01},
-                       Case{"", "paper-5.1-omega-down", "SK2", "reversal:1", 0.003},
-                       // the §4.1 sticking type's first point, its stick of zero length (T0)
-                       Case{"paper-4.1-omega-trace", "branch-2", "EP1", "duration:2", 0.005}}) {
+  for (const Case c : {Case{"paper-4.1-omega-down", 0.007}, Case{"paper-5.1-omega-down", 0.003}}) {
     RunFile file;
     file.path = "test";
     file.output = "curve";
     file.restart_run = c.run;
-    file.restart_label = c.label;
+    file.restart_label = "SK2";
     file.parameter = "omega";
     file.range_min = 0.3;
     file.range_max = 0.9;
-    const OrbitContinuationSetup branch = MakeSetup(file, Results() / c.results);
+    const OrbitContinuationSetup branch = MakeSetup(file, Results());
     const OrbitContinuationSetup margin = BoundaryCurve(
-        {.orbit = branch.start, .condition = std::string("margin:") + c.margin, .parameter = "omega", .unknowns = branch.unknowns},
+        {.orbit = branch.start, .condition = "margin:reversal:1", .parameter = "omega", .unknowns = branch.unknowns},
         branch, "u_r");
-    const OrbitContinuationSetup stick =
-        TypeBoundary({.orbit = branch.start, .margin = c.margin, .parameter = "omega", .past = 1, .unknowns = branch.unknowns},
-                     branch, "u_r")
-            .setup;
+    const OrbitContinuationSetup stick = BoundaryCurve(ZeroLengthStick(branch, "reversal:1"), branch, "u_r");
     const double omega = branch.start.parameters.omega;
     for (const int direction : {1, -1}) {
       std::vector<double> omegas;
@@ -326,23 +339,34 @@ TEST(BoundaryCurve, AgreesWithTheZeroLengthStickConstruction) {
       const std::vector<double> a = CurveAt(margin, direction, omegas);
       const std::vector<double> b = CurveAt(stick, direction, omegas);
       for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
-        std::printf("%s:%s %s at omega = %.6g: u_r %.16g, zero-length stick %.16g, difference %.2e\n", c.run, c.label,
-                    c.margin, omegas[k], a[k], b[k], a[k] - b[k]);
+        std::printf("%s:SK2 reversal:1 at omega = %.6g: u_r %.16g, zero-length stick %.16g, difference %.2e\n", c.run,
+                    omegas[k], a[k], b[k], a[k] - b[k]);
         EXPECT_NEAR(a[k], b[k], 1e-9);
       }
     }
-    if (std::string(c.margin) == "duration:2") {
-      // Along the T0 curve the zero-length stick's entry force and ending constraint (G1:2) sit
-      // on zero with its duration, and nothing else does; down in omega it ends where the
-      // zero-length stick's exit becomes tangential.
-      OrbitContinuationSetup up = margin;
-      up.options.max_points = 40;
-      ExpectAlongTheCurve(ContinueOrbit(up), up);
-      OrbitContinuationSetup down = margin;
-      down.options.direction = -1;
-      CodimensionTwoPoint(ContinueOrbit(down), "duration:2", "exit-slope:2");
-    }
   }
+  // The §4.1 sticking type's own zero-length stick (the trace's second branch starts on it):
+  // along its T0 curve the stick's entry force and its ending constraint G1:2 sit on zero with
+  // its duration, and nothing else does; down in omega the curve ends where the zero-length
+  // stick's exit becomes tangential (which the reversal:1 curve of the nonsticking type, without
+  // that stick, does not see).
+  RunFile file;
+  file.path = "test";
+  file.output = "curve";
+  file.restart_run = "branch-2";
+  file.restart_label = "EP1";
+  file.parameter = "omega";
+  file.range_min = 0.3;
+  file.range_max = 0.9;
+  const OrbitContinuationSetup branch = MakeSetup(file, Results() / "paper-4.1-omega-trace");
+  OrbitContinuationSetup up = BoundaryCurve(
+      {.orbit = branch.start, .condition = "margin:duration:2", .parameter = "omega", .unknowns = branch.unknowns}, branch,
+      "u_r");
+  up.options.max_points = 40;
+  ExpectAlongTheCurve(ContinueOrbit(up), up);
+  OrbitContinuationSetup down = up;
+  down.options.direction = -1;
+  CodimensionTwoPoint(ContinueOrbit(down), "duration:2", "exit-slope:2");
 }
 
 TEST(BoundaryCurve, RefusesConditionsAndSecondParametersItGivesNoCurveOf) {
