@@ -29,25 +29,31 @@ namespace fs = std::filesystem;
 
 fs::path Results() { return fs::path(STICKSLIP_SOURCE_DIR) / "results"; }
 
-// A curve as a run file's restart = { run, label, boundary = second } starts it, continued in
-// omega the way `direction` says, with user values of omega.
-OrbitContinuationSetup CurveFrom(const std::string& run, const std::string& label, int direction,
-                                 const NamedValues& user_values = {}, const fs::path& results = Results()) {
+// A run file restarting in omega from run:label.
+RunFile RestartInOmega(const std::string& run, const std::string& label) {
   RunFile file;
   file.path = "test";
   file.output = "curve";
   file.restart_run = run;
   file.restart_label = label;
-  file.restart_boundary = "u_r";
   file.parameter = "omega";
-  file.direction = direction;
   file.range_min = 0.3;
   file.range_max = 0.9;
+  return file;
+}
+
+// A curve as a run file's restart = { run, label, boundary = "u_r" } starts it, continued in
+// omega the way `direction` says, with user values of omega.
+OrbitContinuationSetup CurveFrom(const std::string& run, const std::string& label, int direction,
+                                 const NamedValues& user_values = {}) {
+  RunFile file = RestartInOmega(run, label);
+  file.restart_boundary = "u_r";
+  file.direction = direction;
   file.ds = 0.005;
   file.ds_max = 0.02;
   file.max_points = 400;
   file.user_values = user_values;
-  return MakeSetup(file, results);
+  return MakeSetup(file, Results());
 }
 
 double Stored(const std::string& run, const std::string& label, const std::string& name) {
@@ -319,15 +325,7 @@ TEST(BoundaryCurve, AgreesWithTheZeroLengthStickConstruction) {
     double step;  // between the values of omega
   };
   for (const Case c : {Case{"paper-4.1-omega-down", 0.007}, Case{"paper-5.1-omega-down", 0.003}}) {
-    RunFile file;
-    file.path = "test";
-    file.output = "curve";
-    file.restart_run = c.run;
-    file.restart_label = "SK2";
-    file.parameter = "omega";
-    file.range_min = 0.3;
-    file.range_max = 0.9;
-    const OrbitContinuationSetup branch = MakeSetup(file, Results());
+    const OrbitContinuationSetup branch = MakeSetup(RestartInOmega(c.run, "SK2"), Results());
     const OrbitContinuationSetup margin = BoundaryCurve(
         {.orbit = branch.start, .condition = "margin:reversal:1", .parameter = "omega", .unknowns = branch.unknowns},
         branch, "u_r");
@@ -350,15 +348,7 @@ TEST(BoundaryCurve, AgreesWithTheZeroLengthStickConstruction) {
   // its duration, and nothing else does; down in omega the curve ends where the zero-length
   // stick's exit becomes tangential (which the reversal:1 curve of the nonsticking type, without
   // that stick, does not see).
-  RunFile file;
-  file.path = "test";
-  file.output = "curve";
-  file.restart_run = "branch-2";
-  file.restart_label = "EP1";
-  file.parameter = "omega";
-  file.range_min = 0.3;
-  file.range_max = 0.9;
-  const OrbitContinuationSetup branch = MakeSetup(file, Results() / "paper-4.1-omega-trace");
+  const OrbitContinuationSetup branch = MakeSetup(RestartInOmega("branch-2", "EP1"), Results() / "paper-4.1-omega-trace");
   OrbitContinuationSetup up = BoundaryCurve(
       {.orbit = branch.start, .condition = "margin:duration:2", .parameter = "omega", .unknowns = branch.unknowns}, branch,
       "u_r");

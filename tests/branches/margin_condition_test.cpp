@@ -4,14 +4,13 @@
 #include "stickslip/branches/margin_condition.hpp"
 
 #include <cmath>
-#include <numbers>
-#include <random>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "support/random_orbits.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -98,24 +97,10 @@ TEST(MarginCondition, DerivativesMatchCentralDifferencesOfItsResiduals) {
     SCOPED_TRACE(name);
     checked.merge(ExpectEveryConditionMatchesDifferences(SolvedPreset(name)));
   }
-  // Random orbits (the residuals need no periodicity) of signatures with every end kind, whose
-  // slips and sticks have interior minima of x2', G and G1.
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
-  for (const char* text : {"slip- slip- slip+ stick slip+ stick", "slip+ stick slip- slip+ / antisymmetric",
-                           "stick slip- stick slip+ / period 2"}) {
-    const Signature signature = Signature::Parse(text);
-    for (int trial = 0; trial < 4; ++trial) {
-      Orbit o{signature, {}, in(-1, 1), in(-1, 1), in(-1, 1), in(0, 2 * std::numbers::pi), {}};
-      for (int i = 0; i < signature.size(); ++i) o.durations.push_back(in(0.5, 6.0));
-      o.parameters = {in(0.2, 0.8), in(0.5, 4.0), in(0.3, 1.6), in(0.05, 0.5), 0.0};
-      o.parameters.u_r = o.parameters.u_s * in(1.0, 2.0);
-      const auto [w1, w2] = NaturalFrequencies(o.parameters.chi, o.parameters.eta);
-      if (std::min(std::abs(o.parameters.omega - w1), std::abs(o.parameters.omega - w2)) < 0.05) continue;
-      SCOPED_TRACE(testing::Message() << text << " trial " << trial);
-      checked.merge(ExpectEveryConditionMatchesDifferences(o));
-    }
+  // Random orbits (the residuals need no periodicity) with every end kind and interior minima.
+  for (const RandomOrbit& r : RandomOrbitsOfEveryEndKind(4)) {
+    SCOPED_TRACE(r.label);
+    checked.merge(ExpectEveryConditionMatchesDifferences(r.orbit));
   }
   for (const char* kind : {"velocity (interior)", "G (interior)", "G1 (interior)", "reversal", "stick-entry",
                            "abnormal-stop", "stop-slope", "exit-slope", "duration", "G", "G1"}) {
