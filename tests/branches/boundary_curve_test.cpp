@@ -284,7 +284,7 @@ std::vector<double> CurveAt(OrbitContinuationSetup setup, int direction, const s
   setup.options.step.ds = 0.005;
   setup.options.step.ds_max = 0.02;
   const int lambda =
-      static_cast<int>(FreeIndices(setup.start.signature, setup.unknowns, NetConditionEquations(setup)).size());
+      static_cast<int>(FreeIndices(setup.start.signature, setup.unknowns).size());
   for (double omega : omegas) setup.options.user_values.push_back({lambda, omega, "omega"});
   const OrbitBranch curve = ContinueOrbit(setup);
   std::vector<double> u_r;

@@ -62,7 +62,7 @@ const NonlinearSystem& OrbitContinuationProblem::Continued() const {
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
   const Signature& signature = setup.start.signature;
   const int n = signature.size();
-  const std::vector<int> free = FreeIndices(signature, setup.unknowns, NetConditionEquations(setup));
+  const std::vector<int> free = FreeIndices(signature, setup.unknowns);
   std::vector<int> unknowns = free;
   unknowns.push_back(ContinuedVariable(signature, free, setup.unknowns.tie_static_friction, setup.parameter));
   const Shooting shooting = ResolveShooting(setup.shooting, n);

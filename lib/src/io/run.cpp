@@ -95,7 +95,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   // branch that leaves the point, or of the boundary, where the start's type changed).
   const bool retyped = run.restart_switch_branch || !run.restart_boundary.empty();
   const int n = setup.start.signature.size();
-  std::vector<int> order = retyped ? FreeIndices(setup.start.signature, setup.unknowns, NetConditionEquations(setup)) : free;
+  std::vector<int> order = retyped ? FreeIndices(setup.start.signature, setup.unknowns) : free;
   order.push_back(retyped ? *ov::IndexOf(n, run.parameter) : parameter);
   for (const auto& [name, value] : run.user_values) {
     const std::optional<int> index = ov::IndexOf(n, name);

@@ -27,7 +27,7 @@ int VariableIndex(int n, std::string_view field, std::string_view name) {
                                                                   name, fmt::join(names, ", ")));
 }
 
-std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice, int more_equations) {
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice) {
   const int n = signature.size();
   std::vector<int> free = {ov::kX10, ov::kX20, ov::kV10, ov::kPhi};
   for (int i = 0; i < n; ++i) free.push_back(ov::Duration(i));
@@ -43,15 +43,16 @@ std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& ch
     if (std::find(free.begin(), free.end(), index) == free.end()) free.push_back(index);
   }
   for (const std::string& name : choice.fix) std::erase(free, VariableIndex(n, "fix", name));
-  const int equations = PeriodicityEquations(signature, Shooting::kSingle).EquationCount() + more_equations;
-  if (static_cast<int>(free.size()) != equations) {
+  const PeriodicityEquations equations(signature, Shooting::kSingle);
+  const int equation_count = equations.EquationCount() + choice.condition_equations;
+  if (static_cast<int>(free.size()) != equation_count) {
     std::string unknowns;
     for (int index : free) unknowns += (unknowns.empty() ? "" : ", ") + ov::Name(n, index);
     throw InvalidInput::WithMessage(
         "unknowns", fmt::format("the system is not square: signature '{}' has {} equations but there "
                                 "are {} unknowns ({}); release or fix {} variable(s)",
-                                signature.ToString(), equations, free.size(), unknowns,
-                                std::abs(static_cast<int>(free.size()) - equations)));
+                                signature.ToString(), equation_count, free.size(), unknowns,
+                                std::abs(static_cast<int>(free.size()) - equation_count)));
   }
   return free;
 }

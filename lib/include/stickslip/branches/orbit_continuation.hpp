@@ -34,12 +34,6 @@ struct OrbitContinuationSetup {
   std::shared_ptr<const OrbitCondition> condition;
 };
 
-// The equations a setup's condition adds net of its own unknowns: 1 with a condition, else 0 (the
-// unknowns then include one released variable more than the periodicity equations have).
-inline int NetConditionEquations(const OrbitContinuationSetup& setup) {
-  return setup.condition ? setup.condition->EquationCount() - setup.condition->ExtraUnknownCount() : 0;
-}
-
 struct OrbitBranch {
   Branch branch;
   std::vector<Orbit> orbits;  // one per branch point

@@ -19,6 +19,9 @@ struct UnknownChoice {
   std::vector<std::string> release;  // variable names, e.g. "u_r"
   std::vector<std::string> fix;      // variable names, e.g. "phi", "d2"
   bool tie_static_friction = false;  // u_r follows u_s (u_r = u_s); u_r may not be released
+  // Equations beside the periodicity equations, beyond their own unknowns: a curve's condition's
+  // (OrbitContinuationSetup::condition), which a second released parameter pays for.
+  int condition_equations = 0;
 };
 
 // The index of the variable `name` of an n-segment orbit (orbit.hpp). Throws InvalidInput
@@ -27,10 +30,8 @@ int VariableIndex(int n, std::string_view field, std::string_view name);
 
 // The free variable indices of a choice for a signature. Throws InvalidInput naming "free" or
 // "fix" for a name that is not a variable (or u_r released while tied to u_s), and "unknowns",
-// with both counts, when the system would not be square: the periodicity equations and
-// `more_equations` besides (a curve's condition, branches/orbit_condition.hpp: one equation more
-// than its own unknowns).
-std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice, int more_equations = 0);
+// with both counts, when the system would not be square.
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);
 
 // The index of the continued variable `parameter` (a variable name): one that is held, not in
 // `free`, and not u_r while it is tied to u_s. Throws InvalidInput naming "parameter".
