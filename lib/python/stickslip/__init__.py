@@ -214,8 +214,7 @@ def two_parameter(parameter, second, range, *, point, **keywords):
     (min, max). The other keywords are continue_orbit's. Returns a Branch whose points lie on the
     boundary (the curve in the plane of the two is branch[parameter], branch[second]); it ends
     where a second margin reaches zero (a codimension-two point) or at the range. Refused: a
-    slip's duration and sliding-friction (no regular curve). Not yet: folds and period doublings
-    in two parameters.
+    slip's duration and sliding-friction (no regular curve).
     """
     return continue_orbit(parameter, range, point=point, boundary=second, **keywords)
 

@@ -87,10 +87,7 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
   // The margins a curve's condition holds at zero (the unwatched ones) say nothing of whether its
   // orbits are motions: they are on the boundary by definition, at +-rounding.
   std::vector<bool> counted;
-  for (const Margin& m : margins) {
-    const std::string name = std::string(orbit_columns::kMarginPrefix) + m.Name();
-    counted.push_back(std::find(unwatched_.begin(), unwatched_.end(), name) == unwatched_.end());
-  }
+  for (const Margin& m : margins) counted.push_back(!Unwatched(std::string(orbit_columns::kMarginPrefix) + m.Name()));
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];
     const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
