@@ -4,13 +4,12 @@
 #include "stickslip/orbits/margin_gradients.hpp"
 
 #include <cmath>
-#include <numbers>
-#include <random>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "support/random_orbits.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -84,23 +83,10 @@ TEST(MarginGradients, MatchCentralDifferencesOnEveryPaperOrbit) {
 // that hold every end kind (abnormal stop, reversal, stick entry, exits into slip+ and slip-)
 // give interior minima of x2' and of G, G1 too.
 TEST(MarginGradients, MatchCentralDifferencesOnRandomOrbitsOfEveryEndKind) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
   std::set<std::string> kinds;
-  for (const char* text : {"slip- slip- slip+ stick slip+ stick", "slip+ stick slip- slip+ / antisymmetric",
-                           "stick slip- stick slip+ / period 2"}) {
-    const Signature signature = Signature::Parse(text);
-    for (int trial = 0; trial < 6; ++trial) {
-      Orbit o{signature, {}, in(-1, 1), in(-1, 1), in(-1, 1), in(0, 2 * std::numbers::pi), {}};
-      for (int i = 0; i < signature.size(); ++i) o.durations.push_back(in(0.5, 6.0));
-      o.parameters = {in(0.2, 0.8), in(0.5, 4.0), in(0.3, 1.6), in(0.05, 0.5), 0.0};
-      o.parameters.u_r = o.parameters.u_s * in(1.0, 2.0);
-      const auto [w1, w2] = NaturalFrequencies(o.parameters.chi, o.parameters.eta);
-      if (std::min(std::abs(o.parameters.omega - w1), std::abs(o.parameters.omega - w2)) < 0.05) continue;
-      SCOPED_TRACE(testing::Message() << text << " trial " << trial);
-      kinds.merge(ExpectGradientsMatchDifferences(o));
-    }
+  for (const RandomOrbit& r : RandomOrbitsOfEveryEndKind(6)) {
+    SCOPED_TRACE(r.label);
+    kinds.merge(ExpectGradientsMatchDifferences(r.orbit));
   }
   for (const char* kind : {"slip-velocity (interior)", "stick-constraint (interior)", "stick-constraint", "stop-force",
                            "stop-slope", "exit-slope"}) {

@@ -193,9 +193,9 @@ def continue_orbit(parameter, range, **keywords):
                 run file's restart = { ..., switch_branch = true }), on the side `direction` names
                 ("up" +1, "down" -1); single shooting. Branch.switch does the same from a branch in
                 memory, also at a BP.
-    boundary    with point="RUN:LABEL" at an SK (reversal) or a T0: the type boundary there,
-                continued in `parameter` and this second parameter (the run file's restart = {
-                ..., boundary = "u_r" }); two_parameter() says it in its own words.
+    boundary    with point="RUN:LABEL" at a change of type: the type boundary there (its margin
+                = 0), continued in `parameter` and this second parameter (the run file's
+                restart = { ..., boundary = "u_r" }); two_parameter() says it in its own words.
     The start keywords are solve()'s. Returns a Branch; raises ConvergenceError if the start does
     not converge, ValueError for bad input (the command line's message).
     """
@@ -207,13 +207,14 @@ continue_orbit.__signature__ = _inspect.signature(_one_off_run)
 
 def two_parameter(parameter, second, range, *, point, **keywords):
     """The type boundary at a stored change of type, continued in two parameters: from
-    point="RUN:LABEL" at an SK (crossing-sliding, margin reversal:i), an abnormal-stop:i or a T0
-    (a stick's duration:i), the orbit with a zero-length stick held there, `second` (chi, eta,
+    point="RUN:LABEL" at a located type change (SK, T0, GR, NS: its margin, e.g. reversal:1,
+    G:3, velocity:2), the orbit of the located type with that margin held at zero (for an
+    interior extremum, velocity or G/G1 inside the stick, also its time), `second` (chi, eta,
     u_s, u_r, omega: not `parameter`) released, continued in `parameter` over `range` =
     (min, max). The other keywords are continue_orbit's. Returns a Branch whose points lie on the
     boundary (the curve in the plane of the two is branch[parameter], branch[second]); it ends
-    where a second margin reaches zero (a codimension-two point) or at the range. Not yet: the
-    grazing boundaries (velocity, G, G1), folds and period doublings in two parameters.
+    where a second margin reaches zero (a codimension-two point) or at the range. Refused: a
+    slip's duration and sliding-friction (no regular curve).
     """
     return continue_orbit(parameter, range, point=point, boundary=second, **keywords)
 

@@ -1,11 +1,13 @@
 #include "stickslip/branches/boundary_curve.hpp"
 
 #include <algorithm>
+#include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "stickslip/branches/floquet_condition.hpp"
-#include "stickslip/branches/type_boundary.hpp"
+#include "stickslip/branches/margin_condition.hpp"
 #include "stickslip/invalid_input.hpp"
 
 namespace stickslip {
@@ -14,15 +16,6 @@ namespace ov = orbit_variables;
 
 OrbitContinuationSetup BoundaryCurve(const CurveStart& start, const OrbitContinuationSetup& branch_setup,
                                      std::string_view second) {
-  const std::string_view prefix = orbit_columns::kMarginPrefix;
-  if (start.condition.starts_with(prefix)) {
-    const LocatedTypeChange located{.orbit = start.orbit,
-                                    .margin = start.condition.substr(prefix.size()),
-                                    .parameter = start.parameter,
-                                    .past = 1,
-                                    .unknowns = start.unknowns};
-    return TypeBoundary(located, branch_setup, second).setup;
-  }
   const int n = start.orbit.signature.size();
   const std::optional<int> second_index = ov::IndexOf(n, second);
   const std::vector<std::string>& released = start.unknowns.release;
@@ -34,12 +27,20 @@ OrbitContinuationSetup BoundaryCurve(const CurveStart& start, const OrbitContinu
                                    start.parameter));
   }
   OrbitContinuationSetup setup = branch_setup;
-  setup.condition = FloquetCondition(start.condition, start.orbit);
+  // A type boundary is its margin's zero (margin_condition.hpp); LP, PD, SB, TR a multiplier's
+  // condition (floquet_condition.hpp).
+  const std::string_view prefix = orbit_columns::kMarginPrefix;
+  if (start.condition.starts_with(prefix)) {
+    setup.condition = std::make_shared<MarginCondition>(start.orbit, start.condition.substr(prefix.size()));
+  } else {
+    setup.condition = FloquetCondition(start.condition, start.orbit);
+  }
   setup.start = start.orbit;
   setup.unknowns = start.unknowns;
   setup.unknowns.release.emplace_back(second);
   setup.unknowns.condition_equations = setup.condition->EquationCount() - setup.condition->ExtraUnknownCount();
   setup.parameter = start.parameter;
+  // The curve ends where a second margin reaches zero: a codimension-two point.
   setup.options.continue_past_terminal = false;
   return setup;
 }

@@ -84,6 +84,10 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
                            std::vector<WatchedColumn> watched)
     : system_(system), unwatched_(std::move(unwatched)), watched_(std::move(watched)) {
   const std::vector<Margin> margins = AdmissibilityMargins(start);
+  // The margins a curve's condition holds at zero (the unwatched ones) say nothing of whether its
+  // orbits are motions: they are on the boundary by definition, at +-rounding.
+  std::vector<bool> counted;
+  for (const Margin& m : margins) counted.push_back(!Unwatched(std::string(orbit_columns::kMarginPrefix) + m.Name()));
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];
     const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
@@ -114,9 +118,10 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
   } else {
     AddRecorded(orbit_columns::kSymmetryTest, symmetry_test);
   }
-  AddRecorded(orbit_columns::kAdmissible, [](const Evaluated& e) {
-    for (const Margin& m : e.margins) {
-      if (std::isfinite(m.value) && m.value <= 0.0) return 0.0;  // non-finite: not defined here
+  AddRecorded(orbit_columns::kAdmissible, [counted](const Evaluated& e) {
+    for (std::size_t k = 0; k < e.margins.size(); ++k) {
+      const double value = e.margins[k].value;
+      if (counted[k] && std::isfinite(value) && value <= 0.0) return 0.0;  // non-finite: not defined here
     }
     return 1.0;
   });

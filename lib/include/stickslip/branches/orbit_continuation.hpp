@@ -25,8 +25,8 @@ struct OrbitContinuationSetup {
   LinearSolverType sparse_solver = LinearSolverType::kKlu;
   ContinuationOptions options;  // parameter_index is set here
   FlowEvaluator flow;  // the closed form; the benchmark compares Odeint
-  // Test functions (by column name: "margin:G:2", "floquet:torus") recorded but not watched:
-  // those that sit on zero or mean nothing along a type boundary (branches/type_boundary.hpp).
+  // Test functions (by column name: "margin:G:2", "floquet:torus") recorded but not watched,
+  // besides the condition's Defining() (those that sit on zero or mean nothing along its curve).
   std::vector<std::string> unwatched;
   // With a condition, the branch is a curve in two parameters (branches/boundary_curve.hpp): the
   // periodicity equations and the condition's, in the unknowns and the condition's own; the

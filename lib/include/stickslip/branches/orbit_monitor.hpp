@@ -17,7 +17,8 @@
 // appears or leaves (to or from +inf).
 //
 // Recorded with each point: the Floquet multipliers, whether the orbit is stable, det(M - I)
-// (zero at a fold), whether it is admissible (every defined margin positive) and the orbit's
+// (zero at a fold), whether it is admissible (every defined margin positive, but those a curve's
+// condition holds at zero, the unwatched ones) and the orbit's
 // measures (orbits/orbit_measures.hpp: amplitudes, peak-to-peak, stick fraction, stops, sticks).
 #pragma once
 
@@ -95,7 +96,7 @@ class OrbitMonitor final : public Monitor {
   // `start` is any orbit of the system's signature (the names depend on the signature only). The
   // test functions named in `unwatched` (column names: "margin:G:2", "floquet:torus") are
   // recorded, not watched (those that sit on zero or mean nothing along a type boundary:
-  // branches/type_boundary.hpp). Those in `watched` are test functions of the type given there.
+  // branches/margin_condition.hpp). Those in `watched` are test functions of the type given there.
   OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched = {},
                std::vector<WatchedColumn> watched = {});
   std::vector<TestFunctionInfo> TestFunctions() const override { return info_; }

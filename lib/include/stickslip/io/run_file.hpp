@@ -70,8 +70,8 @@ struct RunFile {
   // At a restart from a PD or an SB: the branch that leaves it, not the branch it lies on (AUTO's
   // ISW = -1; branches/bifurcation_branches.hpp), on the side `direction` names.
   bool restart_switch_branch = false;
-  // At a restart from a change of type held by a zero-length stick (SK at a reversal, T0): the
-  // boundary continued in the plane of the parameter and this second one (branches/type_boundary.hpp).
+  // At a restart from a located special point (a change of type: its margin = 0): the curve
+  // continued in the plane of the parameter and this second one (branches/boundary_curve.hpp).
   std::string restart_boundary;
   // [unknowns]
   std::vector<std::string> free;

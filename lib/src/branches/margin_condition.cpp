@@ -1,0 +1,143 @@
+#include "stickslip/branches/margin_condition.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "stickslip/branches/orbit_monitor.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/margin_gradients.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
+
+namespace stickslip {
+
+namespace {
+
+constexpr const char* kRegular = "a margin whose zero is a regular curve";
+
+std::string Column(const std::string& name) { return std::string(orbit_columns::kMarginPrefix) + name; }
+
+// The start time of listed segment `segment`, as the margins' walk forms it (margins.cpp), so
+// that a margin attained at the segment's start has exactly this time.
+double SegmentStart(const Orbit& orbit, int segment) {
+  double t0 = 0.0;
+  WalkSegments(orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double>& s) {
+    if (s.spec.listed == segment) t0 = s.t0;
+  });
+  return t0;
+}
+
+const Margin* Named(const std::vector<Margin>& margins, std::string_view name) {
+  const auto it = std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == name; });
+  return it == margins.end() ? nullptr : &*it;
+}
+
+// The margin of the end before segment `segment` (cyclically): the force condition of a slip's
+// stop, or a stick's exit slope.
+const Margin* EndBefore(const std::vector<Margin>& margins, int segment, int count) {
+  const int before = (segment + count - 1) % count;
+  const auto it = std::find_if(margins.begin(), margins.end(), [&](const Margin& m) {
+    return m.segment == before && (m.kind == MarginKind::kStopForce || m.kind == MarginKind::kExitSlope);
+  });
+  return it == margins.end() ? nullptr : &*it;
+}
+
+}  // namespace
+
+MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
+  const std::string value = Column(std::string(margin));
+  const std::vector<Margin> margins = AdmissibilityMargins(start);
+  const Margin* found = Named(margins, margin);
+  if (!found) {
+    std::vector<std::string> names;
+    for (const Margin& m : margins) names.push_back(Column(m.Name()));
+    throw InvalidInput("condition", value,
+                       fmt::format("a margin of {}: {}", start.signature.ToString(), fmt::join(names, ", ")));
+  }
+  margin_ = *found;
+  index_ = static_cast<int>(found - margins.data());
+  const int n = start.signature.size();
+  const int i = margin_.segment;
+  const bool stick = i >= 0 && start.signature.segments()[i] == Mode::kStick;
+  if (margin_.kind == MarginKind::kFrictionLevel) {
+    throw InvalidInput("condition", value,
+                       fmt::format("{}: not sliding-friction (u_s = 0 ends the physical family; it is no boundary "
+                                   "between orbit types)",
+                                   kRegular));
+  }
+  if (margin_.kind == MarginKind::kDuration && !stick) {
+    const Margin* before = EndBefore(margins, i, n);
+    throw InvalidInput("condition", value,
+                       fmt::format("{}: not a slip's duration (at zero length its end condition x2' = 0 holds "
+                                   "identically); a slip shrinks to nothing only where the acceleration at its start "
+                                   "does, at the zero of the margin of the end before it: use {}",
+                                   kRegular, before ? Column(before->Name()) : "none (no end before it)"));
+  }
+  if (margin_.kind == MarginKind::kSlipVelocity) {
+    interior_ = true;
+  } else if (margin_.kind == MarginKind::kStickConstraint) {
+    const double t0 = SegmentStart(start, i);
+    interior_ = margin_.t != t0 && margin_.t != t0 + start.durations[i];
+  }
+  if (interior_ && !std::isfinite(margin_.value)) {
+    throw InvalidInput("condition", value,
+                       fmt::format("an interior margin with a minimum at the start orbit (it is {} there: {})",
+                                   margin_.value, std::isnan(margin_.value) ? "not defined" : "no interior minimum"));
+  }
+
+  defining_.push_back(value);
+  auto also = [&](const Margin* m) {
+    if (m) defining_.push_back(Column(m->Name()));
+  };
+  const std::string next = std::to_string((i + 1) % n + 1);
+  if (margin_.kind == MarginKind::kDuration) {
+    also(EndBefore(margins, i, n));  // the stick entry
+    const bool into_negative = SegmentPlan(start.signature, Extent::kListed)[i].end == SegmentEndKind::kExitToNegative;
+    also(Named(margins, fmt::format("{}:{}", into_negative ? "G1" : "G", i + 1)));
+  } else if (std::string_view(margin_.base) == "stick-entry") {
+    const Margin* g = Named(margins, "G:" + next);
+    const Margin* g1 = Named(margins, "G1:" + next);
+    if (g && g1) also(g->value <= g1->value ? g : g1);
+  } else if (margin_.kind == MarginKind::kStickConstraint && !interior_ && margin_.t == SegmentStart(start, i)) {
+    also(EndBefore(margins, i, n));
+  } else if (margin_.kind == MarginKind::kStopSlope || margin_.kind == MarginKind::kExitSlope) {
+    // A tangential stop or stick exit: the saltation matrix there divides by the slope, and the
+    // multipliers' tests jump through poles all along the curve.
+    for (const char* test : {orbit_columns::kFlipTest, orbit_columns::kTorusTest, orbit_columns::kSymmetryTest}) {
+      defining_.emplace_back(test);
+    }
+  }
+}
+
+std::string MarginCondition::Name() const { return Column(margin_.Name()); }
+
+Eigen::VectorXd MarginCondition::ExtraUnknowns(const Orbit& orbit) const {
+  if (!interior_) return Eigen::VectorXd();
+  const Margin m = AdmissibilityMargins(orbit)[static_cast<std::size_t>(index_)];
+  return Eigen::VectorXd::Constant(1, m.t - SegmentStart(orbit, margin_.segment));
+}
+
+void MarginCondition::Evaluate(const Orbit& orbit, const Eigen::VectorXd& extra, Eigen::VectorXd* residual,
+                               Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const {
+  if (!interior_) {
+    const MarginGradient g = MarginGradients(orbit)[static_cast<std::size_t>(index_)];
+    *residual = Eigen::VectorXd::Constant(1, g.value);
+    if (d_variables) *d_variables = g.d_value;
+    if (d_extra) d_extra->resize(1, 0);
+    return;
+  }
+  const MarginGradient g = MarginGradientAt(orbit, margin_, extra(0));
+  residual->resize(2);
+  *residual << g.value, g.slope;
+  if (d_variables) {
+    d_variables->resize(2, g.d_value.size());
+    *d_variables << g.d_value, g.d_slope;
+  }
+  if (d_extra) {
+    d_extra->resize(2, 1);
+    *d_extra << g.slope, g.curvature;
+  }
+}
+
+}  // namespace stickslip
