@@ -50,8 +50,9 @@ mpi_ready() {
   mpi=(timeout 300 "$MPIEXEC" --quiet --allow-run-as-root --oversubscribe)
   # Sanitized build: what Open MPI's libraries (not built with the sanitizers) still hold at exit is
   # not a leak of stickslip's; the full unwinding at each allocation lets the suppressions see them.
+  # (their statistics, printed to stderr at exit, not shown: a refusal stays one line).
   if [ -n "${STICKSLIP_MPI_LSAN_SUPPRESSIONS:-}" ]; then
-    mpi=(env "LSAN_OPTIONS=suppressions=$STICKSLIP_MPI_LSAN_SUPPRESSIONS:fast_unwind_on_malloc=0" "${mpi[@]}")
+    mpi=(env "LSAN_OPTIONS=suppressions=$STICKSLIP_MPI_LSAN_SUPPRESSIONS:fast_unwind_on_malloc=0:print_suppressions=0" "${mpi[@]}")
   fi
   return 0
 }
