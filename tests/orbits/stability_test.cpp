@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "support/period_map.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -23,31 +24,6 @@ std::vector<std::complex<double>> Sorted(const Eigen::Matrix4d& m) {
   });
   return mu;
 }
-
-// The period map sampled half-way through the first segment, where it is smooth: the state one
-// forcing period later, by the exact simulator. Its Jacobian by differences has the same
-// eigenvalues as the monodromy matrix at t = 0.
-// ... over `fraction` of the period (one half for the half-period map of an antisymmetric orbit).
-Eigen::Matrix4d PeriodMapJacobian(const Orbit& o, double fraction) {
-  const double t = 0.5 * o.durations[0];
-  const Parameters& p = o.parameters;
-  const State x = Flow(o.signature.segments()[0], o.InitialState(), o.phi, t, p);
-  const double phase = o.phi + p.omega * t;
-  SimulationOptions options;
-  options.duration = fraction * o.Period();
-  auto map = [&](const State& start) { return SimulateExact(p, start, phase, options); };
-  Eigen::Matrix4d j;
-  for (int k = 0; k < 4; ++k) {
-    const double h = 1e-6;
-    State plus = x, minus = x;
-    plus(k) += h;
-    minus(k) -= h;
-    j.col(k) = (map(plus).segments.back().end - map(minus).segments.back().end) / (2 * h);
-  }
-  return j;
-}
-
-Eigen::Matrix4d PeriodMapJacobian(const Orbit& o) { return PeriodMapJacobian(o, 1.0); }
 
 class FloquetMultipliers : public ::testing::TestWithParam<std::pair<const char*, bool>> {};
 

@@ -33,10 +33,6 @@ int SlipDirection(Mode mode) {
   return 0;
 }
 
-Eigen::Matrix4d TransitionMatrix(Mode mode, double s, const Parameters& p) {
-  return mode == Mode::kStick ? StickTransition(p.chi, s) : SlipTransition(p.chi, p.eta, s);
-}
-
 FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                     const Parameters& p) {
   // The parameters enter Q, d0, omega_j and Lambda in nested ways: forward-mode automatic

@@ -44,14 +44,15 @@ std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& ch
   }
   for (const std::string& name : choice.fix) std::erase(free, VariableIndex(n, "fix", name));
   const PeriodicityEquations equations(signature, Shooting::kSingle);
-  if (static_cast<int>(free.size()) != equations.EquationCount()) {
+  const int equation_count = equations.EquationCount() + choice.condition_equations;
+  if (static_cast<int>(free.size()) != equation_count) {
     std::string unknowns;
     for (int index : free) unknowns += (unknowns.empty() ? "" : ", ") + ov::Name(n, index);
     throw InvalidInput::WithMessage(
         "unknowns", fmt::format("the system is not square: signature '{}' has {} equations but there "
                                 "are {} unknowns ({}); release or fix {} variable(s)",
-                                signature.ToString(), equations.EquationCount(), free.size(), unknowns,
-                                std::abs(static_cast<int>(free.size()) - equations.EquationCount())));
+                                signature.ToString(), equation_count, free.size(), unknowns,
+                                std::abs(static_cast<int>(free.size()) - equation_count)));
   }
   return free;
 }

@@ -140,8 +140,12 @@ FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase,
                                     const Parameters& p);
 
 // dX(s)/dX(0): the flow is affine in the start state, with the transition matrix H(s) of a slip
-// (eq. 5, 55) or Gamma(s) of a stick (eq. 10, 58) as its linear part.
-Eigen::Matrix4d TransitionMatrix(Mode mode, double s, const Parameters& p);
+// (eq. 5, 55) or Gamma(s) of a stick (eq. 10, 58) as its linear part. Templated: the derivatives
+// of the monodromy matrix come from AD through it (orbits/floquet_gradients.hpp).
+template <typename T>
+Matrix4<T> TransitionMatrix(Mode mode, const T& s, const BasicParameters<T>& p) {
+  return mode == Mode::kStick ? StickTransition(p.chi, s) : SlipTransition(p.chi, p.eta, s);
+}
 
 // Right-hand side of eq. (2) in a mode, at a state and forcing phase: the accelerations
 // (x1'', x2''). In a stick x2'' = 0 (eq. 9).

@@ -19,6 +19,9 @@ struct UnknownChoice {
   std::vector<std::string> release;  // variable names, e.g. "u_r"
   std::vector<std::string> fix;      // variable names, e.g. "phi", "d2"
   bool tie_static_friction = false;  // u_r follows u_s (u_r = u_s); u_r may not be released
+  // Equations beside the periodicity equations, beyond their own unknowns: a curve's condition's
+  // (OrbitContinuationSetup::condition), which a second released parameter pays for.
+  int condition_equations = 0;
 };
 
 // The index of the variable `name` of an n-segment orbit (orbit.hpp). Throws InvalidInput

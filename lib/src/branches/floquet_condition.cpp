@@ -1,0 +1,168 @@
+#include "stickslip/branches/floquet_condition.hpp"
+
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <fmt/format.h>
+
+#include "stickslip/branches/orbit_monitor.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/floquet_gradients.hpp"
+#include "stickslip/orbits/stability.hpp"
+
+namespace stickslip {
+
+namespace {
+
+enum class Kind { kFold, kFlip, kSymmetry, kTorus };
+
+// B(X, Y) over the pairs i < j (rows) and k < l (columns), in lexicographic order: X_ik Y_jl -
+// X_il Y_jk. The second compound of M is B(M, M), its derivative B(dM, M) + B(M, dM).
+Eigen::MatrixXd PairProduct(const Eigen::Matrix4d& x, const Eigen::Matrix4d& y) {
+  Eigen::MatrixXd b(6, 6);
+  int row = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j, ++row) {
+      int column = 0;
+      for (int k = 0; k < 4; ++k) {
+        for (int l = k + 1; l < 4; ++l, ++column) b(row, column) = x(i, k) * y(j, l) - x(i, l) * y(j, k);
+      }
+    }
+  }
+  return b;
+}
+
+// The matrix A whose singularity the condition is, and its derivatives by variable.
+struct TestMatrix {
+  Eigen::MatrixXd a;
+  std::vector<Eigen::MatrixXd> d_a;
+};
+
+TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
+  const MonodromyGradient g = MonodromyGradients(orbit);
+  TestMatrix t;
+  const Eigen::Matrix4d identity = Eigen::Matrix4d::Identity();
+  switch (kind) {
+    case Kind::kFold:
+      t.a = g.period - identity;
+      t.d_a.assign(g.d_period.begin(), g.d_period.end());
+      break;
+    case Kind::kFlip:
+      t.a = g.period + identity;
+      t.d_a.assign(g.d_period.begin(), g.d_period.end());
+      break;
+    case Kind::kSymmetry:
+      t.a = identity - g.listed;
+      for (const Eigen::Matrix4d& d : g.d_listed) t.d_a.push_back(-d);
+      break;
+    case Kind::kTorus:
+      t.a = PairProduct(g.period, g.period) - Eigen::MatrixXd::Identity(6, 6);
+      for (const Eigen::Matrix4d& d : g.d_period) t.d_a.push_back(PairProduct(d, g.period) + PairProduct(g.period, d));
+      break;
+  }
+  return t;
+}
+
+class Floquet final : public OrbitCondition {
+ public:
+  Floquet(Kind kind, std::string name, Eigen::VectorXd b, Eigen::VectorXd c)
+      : kind_(kind), name_(std::move(name)), b_(std::move(b)), c_(std::move(c)) {}
+
+  std::string Name() const override { return name_; }
+
+  void Evaluate(const Orbit& orbit, const Eigen::VectorXd& extra, Eigen::VectorXd* residual,
+                Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const override {
+    (void)extra;
+    const TestMatrix t = TestMatrixOf(kind_, orbit);
+    const int m = static_cast<int>(t.a.rows());
+    Eigen::MatrixXd bordered(m + 1, m + 1);
+    bordered << t.a, b_, c_.transpose(), 0.0;
+    const Eigen::VectorXd last = Eigen::VectorXd::Unit(m + 1, m);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(bordered);
+    const Eigen::VectorXd v = lu.solve(last);  // (v, sigma)
+    *residual = Eigen::VectorXd::Constant(1, v(m));
+    if (d_extra) d_extra->resize(1, 0);
+    if (!d_variables) return;
+    const Eigen::VectorXd w = Eigen::FullPivLU<Eigen::MatrixXd>(bordered.transpose()).solve(last);
+    d_variables->resize(1, static_cast<int>(t.d_a.size()));
+    for (std::size_t k = 0; k < t.d_a.size(); ++k) {
+      (*d_variables)(0, static_cast<int>(k)) = -w.head(m).dot(t.d_a[k] * v.head(m));
+    }
+  }
+
+  std::vector<std::string> Defining() const override {
+    switch (kind_) {
+      case Kind::kFold: break;  // det(M - I) is recorded, not watched
+      case Kind::kFlip: return {orbit_columns::kFlipTest};
+      case Kind::kSymmetry: return {orbit_columns::kSymmetryTest};
+      case Kind::kTorus: return {orbit_columns::kTorusTest};
+    }
+    return {};
+  }
+
+ private:
+  Kind kind_;
+  std::string name_;
+  Eigen::VectorXd b_;
+  Eigen::VectorXd c_;
+};
+
+// The product mu_i mu_j (i < j) nearest 1 is that of a complex pair.
+bool TorusPairNearUnitCircle(const Orbit& orbit) {
+  const Stability s = StabilityOf(orbit);
+  double nearest = INFINITY;
+  bool complex_pair = false;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      const double distance = std::abs(s.multipliers[i] * s.multipliers[j] - 1.0);
+      if (distance < nearest) {
+        nearest = distance;
+        complex_pair = s.multipliers[i].imag() != 0.0 && 
+                        std::abs(s.multipliers[i] - std::conj(s.multipliers[j])) <= 1e-12 * std::abs(s.multipliers[i]);
+      }
+    }
+  }
+  return complex_pair;
+}
+
+}  // namespace
+
+std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, const Orbit& start,
+                                                       double max_singularity) {
+  const bool antisymmetric = start.signature.antisymmetric();
+  Kind kind = Kind::kFold;
+  if (type == "LP") {
+    kind = Kind::kFold;
+  } else if (type == "PD" && !antisymmetric) {
+    kind = Kind::kFlip;
+  } else if (type == "SB" && antisymmetric) {
+    kind = Kind::kSymmetry;
+  } else if (type == "TR") {
+    kind = Kind::kTorus;
+  } else {
+    throw InvalidInput("condition", std::string(type),
+                       antisymmetric ? "LP, SB or TR for an antisymmetric orbit (its PD is no codimension-one point: SB is), "
+                                       "or a margin's column"
+                                     : "LP, PD or TR for an orbit that is not antisymmetric, or a margin's column");
+  }
+  const TestMatrix t = TestMatrixOf(kind, start);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(t.a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  const double singularity = sigma(sigma.size() - 1) / sigma(0);
+  if (!(singularity <= max_singularity)) {
+    throw InvalidInput("condition", fmt::format("{} at a point where its matrix has relative smallest singular value {:.3g}", type, singularity),
+                       fmt::format("a point where it is <= {:g} (a located {})", max_singularity, type));
+  }
+  if (kind == Kind::kTorus && !TorusPairNearUnitCircle(start)) {
+    throw InvalidInput("condition", "TR at a point whose product mu_i mu_j nearest 1 is of real multipliers (a neutral saddle)",
+                       "a point with a complex pair on the unit circle");
+  }
+  const int m = static_cast<int>(t.a.rows());
+  return std::make_shared<Floquet>(kind, std::string(type), svd.matrixU().col(m - 1), svd.matrixV().col(m - 1));
+}
+
+}  // namespace stickslip
