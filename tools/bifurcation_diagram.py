@@ -109,22 +109,23 @@ def read_run(directory):
     return summary, rows, special
 
 
-def draw_run(top, bottom, directory):
-    """Draws the run's branch on the two axes: x20 on `top`, the durations on `bottom`, and the
-    special points' markers on `top`, and the durations' legend. Returns the labels to place
+def draw_run(top, bottom, directory, y="x20", stable=lambda row: row["stable"] == "1"):
+    """Draws the run's branch on the two axes: the column `y` (x20; the second parameter of a curve
+    in two parameters) on `top`, the durations on `bottom`, and the special points' markers on
+    `top`, and the durations' legend; `stable` says which rows are. Returns the labels to place
     (label_points, once every other artist is drawn, since the placement depends on the axes'
     final limits) and the legend handles of the branch's styles for `top`."""
     summary, rows, special = read_run(directory)
     parameter = summary["parameter"]
     durations = [c for c in rows[0] if c.startswith("d") and c[1:].isdigit()]
     kinds = set()  # (stable, admissible) pairs drawn, for the legend
-    for piece in runs_of(rows, lambda r: (r["stable"], r["admissible"])):
-        stable, admissible = piece[0]["stable"] == "1", piece[0]["admissible"] == "1"
+    for piece in runs_of(rows, lambda r: (stable(r), r["admissible"])):
+        is_stable, admissible = stable(piece[0]), piece[0]["admissible"] == "1"
         if len(piece) > 1:  # a piece of one point (a last point past a type change) draws nothing
-            kinds.add((stable, admissible))
-        style = "-" if stable else "--"
+            kinds.add((is_stable, admissible))
+        style = "-" if is_stable else "--"
         xs = [float(r[parameter]) for r in piece]
-        top.plot(xs, [float(r["x20"]) for r in piece], style, **(dict(color="C0", lw=1.5) if admissible else INADMISSIBLE))
+        top.plot(xs, [float(r[y]) for r in piece], style, **(dict(color="C0", lw=1.5) if admissible else INADMISSIBLE))
         for k, d in enumerate(durations):
             # The durations keep their colours where the orbit is no motion, faded and thin.
             bottom.plot(xs, [float(r[d]) for r in piece], style, color=f"C{k + 1}",
@@ -140,10 +141,10 @@ def draw_run(top, bottom, directory):
     for row in special:
         if row["test_function"] in ("start", summary["termination"]):
             continue
-        x, y = float(row[parameter]), float(row["x20"])
+        at = float(row[parameter]), float(row[y])
         marker, color = MARKERS.get(row["type"], TYPE_CHANGE_MARKER)
-        top.plot(x, y, marker, color=color, ms=5, mec="black", mew=0.5, zorder=5)
-        labels.append((row["label"], x, y))
+        top.plot(*at, marker, color=color, ms=5, mec="black", mew=0.5, zorder=5)
+        labels.append((row["label"], *at))
     return labels, legend
 
 

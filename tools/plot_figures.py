@@ -21,6 +21,7 @@ import math
 import os
 import subprocess
 import tempfile
+import tomllib
 
 import matplotlib
 
@@ -132,14 +133,53 @@ def frequency_response_figure(results, run, out):
     plot_trace(directory, os.path.join(out, f"{run}-frequency-response.png"), sweeps)
 
 
+def curve_restart(summary):
+    """The run file's restart of a curve in two parameters (restart = {run, label, boundary}), or
+    None for a branch."""
+    path = os.path.join(ROOT, summary["run_file"])
+    if not os.path.isfile(path):
+        return None
+    with open(path, "rb") as f:
+        restart = tomllib.load(f).get("start", {}).get("restart", {})
+    return restart if "boundary" in restart else None
+
+
+def stable_off_the_curve(condition):
+    """On a curve of folds, period doublings or torus points the critical multipliers sit on the
+    unit circle, where the stored flag flickers with rounding: the orbit is stable on the curve if
+    the others lie inside (LP: all but the one nearest +1; PD: nearest -1; TR: the pair nearest
+    the circle)."""
+    def multipliers(row):
+        return [complex(float(row[f"floquet:mu{k}_re"]), float(row[f"floquet:mu{k}_im"])) for k in range(1, 5)]
+
+    def stable(row):
+        mu = multipliers(row)
+        if condition == "LP":
+            mu.remove(min(mu, key=lambda m: abs(m - 1)))
+        elif condition == "PD":
+            mu.remove(min(mu, key=lambda m: abs(m + 1)))
+        elif condition == "TR":
+            mu = sorted(mu, key=lambda m: abs(abs(m) - 1) if m.imag != 0 else math.inf)[2:]
+        else:
+            return row["stable"] == "1"
+        return all(abs(m) < 1 for m in mu)
+    return stable
+
+
 def bifurcation_figure(program, results, run, out):
     directory = os.path.join(results, run)
     summary, rows, _ = read_run(directory)
     parameter = summary["parameter"]
+    curve = curve_restart(summary)
     # Wider than the plain diagram: the legend of the orbit and the sweeps stands beside the data.
     figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(SIZE[0] + 3.5, SIZE[1]))
-    labels, legend = draw_run(top, bottom, directory)
-    sweeps = family_sweeps(results, run, parameter)
+    if curve:
+        condition = curve["label"].rstrip("0123456789")
+        labels, legend = draw_run(top, bottom, directory, y=curve["boundary"], stable=stable_off_the_curve(condition))
+    else:
+        labels, legend = draw_run(top, bottom, directory)
+    # A curve in two parameters: the sweeps, at one value of the second, do not compare.
+    sweeps = [] if curve else family_sweeps(results, run, parameter)
     phases_drawn = set()
     for number, sweep in enumerate(sweeps):
         # Compare like with like: x2 at the sweep's section phase, for the brute-force motions
@@ -160,10 +200,11 @@ def bifurcation_figure(program, results, run, out):
                  label=f"brute force {name}: x2 at phase {phase:.4g} (period 1)")
     top.legend(handles=legend + top.get_legend_handles_labels()[0], fontsize=7, loc="upper left",
                bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    top.set_ylabel("x20")
+    top.set_ylabel(curve["boundary"] if curve else "x20")
     bottom.set_ylabel("segment durations")
     bottom.set_xlabel(parameter)
-    top.set_title(f"{run}: {summary['signature']}\n(solid stable, dashed unstable, grey no motion)", fontsize=10)
+    what = f"the curve of {curve['run']}:{curve['label']} in ({parameter}, {curve['boundary']}), " if curve else ""
+    top.set_title(f"{run}: {what}{summary['signature']}\n(solid stable, dashed unstable, grey no motion)", fontsize=10)
     figure.tight_layout()
     label_points(figure, top, labels)
     save(figure, os.path.join(out, f"{run}-bifurcation.png"))

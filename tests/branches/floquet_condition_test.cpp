@@ -220,5 +220,44 @@ TEST(FloquetCurve, PeriodDoublingAndSymmetryBreakingCurvesAreWhereOmegaBranchesL
   }
 }
 
+// The §5.2 PD curve meets a fold curve at a fold-flip (LPPD: multipliers +1 and -1): located on
+// the PD curve as det(M - I) changing sign, and on the fold curve, approached from a point of its
+// own, as det(M + I) changing sign: the same point from each side (1e-9), where the exact
+// simulator's period map has both multipliers (1e-6).
+TEST(FloquetCurve, FoldFlipIsFoundFromThePeriodDoublingAndTheFoldCurve) {
+  const OrbitContinuationSetup branch = RunFileSetup("paper-5.2-omega-to-pd");
+  OrbitContinuationSetup pd = BoundaryCurve(LocatedOn(branch, "PD"), branch, "u_r");
+  pd.options.direction = -1;
+  pd.options.step.ds = 0.002;
+  pd.options.step.ds_max = 0.01;
+  pd.options.max_points = 150;
+  const CurveStart on_pd = LocatedOn(pd, "LPPD");
+  // The fold curve through it, followed away and back.
+  OrbitContinuationSetup fold = BoundaryCurve({on_pd.orbit, "LP", "omega", branch.unknowns}, branch, "u_r");
+  fold.options.step.ds = 0.002;
+  fold.options.step.ds_max = 0.004;
+  fold.options.max_points = 5;
+  const OrbitBranch away = ContinueOrbit(fold);
+  ASSERT_EQ(away.orbits.size(), 5u) << away.branch.end_message;
+  OrbitContinuationSetup back = BoundaryCurve({away.orbits.back(), "LP", "omega", branch.unknowns}, branch, "u_r");
+  back.options = fold.options;
+  back.options.direction = -fold.options.direction;
+  back.options.max_points = 20;
+  const CurveStart on_fold = LocatedOn(back, "LPPD");
+  EXPECT_NEAR(on_fold.orbit.parameters.omega, on_pd.orbit.parameters.omega, 1e-9);
+  EXPECT_NEAR(on_fold.orbit.parameters.u_r, on_pd.orbit.parameters.u_r, 1e-9);
+  const Stability s = StabilityOf(on_pd.orbit);
+  EXPECT_NEAR(s.fold_test, 0.0, 1e-9);
+  EXPECT_NEAR(s.flip_test, 0.0, 1e-9);
+  const Eigen::EigenSolver<Eigen::Matrix4d> eigen(PeriodMapJacobian(on_pd.orbit), false);
+  double near_plus = INFINITY, near_minus = INFINITY;
+  for (int i = 0; i < 4; ++i) {
+    near_plus = std::min(near_plus, std::abs(eigen.eigenvalues()(i) - 1.0));
+    near_minus = std::min(near_minus, std::abs(eigen.eigenvalues()(i) + 1.0));
+  }
+  EXPECT_LT(near_plus, 1e-6);
+  EXPECT_LT(near_minus, 1e-6);
+}
+
 }  // namespace
 }  // namespace stickslip

@@ -143,6 +143,22 @@ TEST_P(PaperBranch, EverySpecialPointIsVerifiedIndependently) {
       }
       continue;
     }
+    if (s.type == "LPPD" || s.type == "R1" || s.type == "R2") {
+      // A codimension-two point of a curve of folds or flips: multipliers +1 and -1 (LPPD), or a
+      // double +1 (R1) or -1 (R2), split by the square root of the location's rounding.
+      const Stability stability = StabilityOf(o);
+      auto count = [&](double mu, double tolerance) {
+        return std::count_if(stability.multipliers.begin(), stability.multipliers.end(),
+                             [&](const auto& m) { return std::abs(m - mu) < tolerance; });
+      };
+      if (s.type == "LPPD") {
+        EXPECT_EQ(count(1.0, 1e-6), 1) << GetParam() << " " << s.type;
+        EXPECT_EQ(count(-1.0, 1e-6), 1) << GetParam() << " " << s.type;
+      } else {
+        EXPECT_EQ(count(s.type == "R1" ? 1.0 : -1.0, 1e-4), 2) << GetParam() << " " << s.type;
+      }
+      continue;
+    }
     if (s.type == "BP") continue;
     // An orbit-type change: the named margin is zero at the located orbit.
     const std::string name = s.test_function.substr(std::string("margin:").size());

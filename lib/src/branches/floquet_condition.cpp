@@ -67,6 +67,25 @@ TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
   return t;
 }
 
+// p'(mu) at mu = +-1 for p(mu) = det(mu I - M): the trace of the adjugate of mu I - M, the sum of
+// its principal 3 x 3 minors.
+double Slope(const Stability& s, double mu) {
+  const Eigen::Matrix4d a = mu * Eigen::Matrix4d::Identity() - s.monodromy;
+  double sum = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    Eigen::Matrix3d minor;
+    for (int i = 0, r = 0; i < 4; ++i) {
+      if (i == k) continue;
+      for (int j = 0, c = 0; j < 4; ++j) {
+        if (j != k) minor(r, c++) = a(i, j);
+      }
+      ++r;
+    }
+    sum += minor.determinant();
+  }
+  return sum;
+}
+
 class Floquet final : public OrbitCondition {
  public:
   Floquet(Kind kind, std::string name, Eigen::VectorXd b, Eigen::VectorXd c)
@@ -94,10 +113,28 @@ class Floquet final : public OrbitCondition {
     }
   }
 
+  // AUTO's names: LPPD a fold-flip (multipliers +1 and -1), R1 and R2 the 1:1 and 1:2
+  // resonances (a double multiplier +1 or -1, where p'(+-1) = 0, p(mu) = det(mu I - M): the sum of
+  // the principal 3 x 3 minors of +-I - M). The torus test is not watched on these curves: it
+  // vanishes at the resonances too. On an SB curve M = H^2 has a multiplier +1 throughout and
+  // det(M + I) keeps its sign (stability.hpp). A TR curve reports its ends, folds and type
+  // boundaries only (a multiplier +1 or -1 on it may be the torus pair's own: a resonance).
+  std::vector<WatchedColumn> CodimensionTwoTests() const override {
+    switch (kind_) {
+      case Kind::kFold:
+        return {{orbit_columns::kFlipTest, "LPPD", {}}, {"floquet:p'(1)", "R1", [](const Stability& s) { return Slope(s, 1.0); }}};
+      case Kind::kFlip:
+        return {{orbit_columns::kFoldTest, "LPPD", {}}, {"floquet:p'(-1)", "R2", [](const Stability& s) { return Slope(s, -1.0); }}};
+      case Kind::kSymmetry:
+      case Kind::kTorus: break;
+    }
+    return {};
+  }
+
   std::vector<std::string> Defining() const override {
     switch (kind_) {
-      case Kind::kFold: break;  // det(M - I) is recorded, not watched
-      case Kind::kFlip: return {orbit_columns::kFlipTest};
+      case Kind::kFold: return {orbit_columns::kTorusTest};  // det(M - I) is recorded, not watched
+      case Kind::kFlip: return {orbit_columns::kFlipTest, orbit_columns::kTorusTest};
       case Kind::kSymmetry: return {orbit_columns::kSymmetryTest};
       case Kind::kTorus: return {orbit_columns::kTorusTest};
     }
@@ -155,7 +192,8 @@ std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, co
   const double singularity = sigma(sigma.size() - 1) / sigma(0);
   if (!(singularity <= max_singularity)) {
     throw InvalidInput("condition", fmt::format("{} at a point where its matrix has relative smallest singular value {:.3g}", type, singularity),
-                       fmt::format("a point where it is <= {:g} (a located {})", max_singularity, type));
+                       fmt::format("a point where it is <= {:g}: a located {}{}", max_singularity, type,
+                                   kind == Kind::kFold ? " (a fold where a margin is zero is nonsmooth, the margin's curve)" : ""));
   }
   if (kind == Kind::kTorus && !TorusPairNearUnitCircle(start)) {
     throw InvalidInput("condition", "TR at a point whose product mu_i mu_j nearest 1 is of real multipliers (a neutral saddle)",

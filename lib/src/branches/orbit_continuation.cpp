@@ -70,12 +70,14 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   problem.system = std::make_unique<OrbitSystem>(setup.start, unknowns, setup.unknowns.tie_static_friction,
                                                  shooting, setup.flow);
   std::vector<std::string> unwatched = setup.unwatched;
+  std::vector<WatchedColumn> watched;
   if (setup.condition) {
+    watched = setup.condition->CodimensionTwoTests();
     problem.extra = std::make_unique<ConditionEquations>(*problem.system, setup.condition);
     problem.augmented = std::make_unique<AugmentedSystem>(*problem.system, *problem.extra);
     for (std::string& name : setup.condition->Defining()) unwatched.push_back(std::move(name));
   }
-  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, std::move(unwatched));
+  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, std::move(unwatched), std::move(watched));
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.size());
   KeepInPhysicalRanges(setup, free, unknowns.back(), &problem.options);

@@ -51,23 +51,38 @@ std::vector<double> MeasureValues(const Orbit& orbit) {
 }  // namespace
 
 void OrbitMonitor::AddTestFunction(TestFunctionInfo info, Value value) {
-  if (std::find(unwatched_.begin(), unwatched_.end(), info.name) != unwatched_.end()) {
+  if (Unwatched(info.name)) {
     AddRecorded(std::move(info.name), std::move(value));
     return;
   }
+  if (const WatchedColumn* watched = Watched(info.name)) info.type = watched->type;
   columns_.push_back({info.name, true, static_cast<int>(info_.size())});
   info_.push_back(std::move(info));
   values_.push_back(std::move(value));
 }
 
 void OrbitMonitor::AddRecorded(std::string name, Value value) {
+  if (const WatchedColumn* watched = Watched(name); watched && !Unwatched(name)) {
+    AddTestFunction({.name = std::move(name), .type = watched->type, .may_have_poles = true}, std::move(value));
+    return;
+  }
   columns_.push_back({name, false, static_cast<int>(recorded_.size())});
   recorded_.push_back(std::move(name));
   values_.push_back(std::move(value));
 }
 
-OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched)
-    : system_(system), unwatched_(std::move(unwatched)) {
+bool OrbitMonitor::Unwatched(const std::string& column) const {
+  return std::find(unwatched_.begin(), unwatched_.end(), column) != unwatched_.end();
+}
+
+const WatchedColumn* OrbitMonitor::Watched(const std::string& column) const {
+  const auto w = std::find_if(watched_.begin(), watched_.end(), [&](const WatchedColumn& c) { return c.column == column; });
+  return w == watched_.end() ? nullptr : &*w;
+}
+
+OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched,
+                           std::vector<WatchedColumn> watched)
+    : system_(system), unwatched_(std::move(unwatched)), watched_(std::move(watched)) {
   const std::vector<Margin> margins = AdmissibilityMargins(start);
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];
@@ -110,6 +125,11 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
     AddRecorded(name, [k](const Evaluated& e) { return e.measures[k]; });
     ++k;
   });
+  for (const WatchedColumn& w : watched_) {
+    if (!w.value) continue;
+    AddTestFunction({.name = w.column, .type = w.type, .may_have_poles = true},
+                    [value = w.value](const Evaluated& e) { return value(e.stability); });
+  }
 }
 
 void OrbitMonitor::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const {

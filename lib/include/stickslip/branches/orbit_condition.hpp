@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
@@ -35,6 +36,9 @@ class OrbitCondition {
   // The monitor's test functions (column names: "margin:G:2", "floquet:det(M+I)") that sit on zero
   // along the curve by its definition, or mean nothing there: recorded, not watched.
   virtual std::vector<std::string> Defining() const { return {}; }
+  // Columns watched along the curve with a type of their own: the other Floquet tests, whose sign
+  // changes are codimension-two points (a fold-flip LPPD on a PD curve, ...).
+  virtual std::vector<WatchedColumn> CodimensionTwoTests() const { return {}; }
 };
 
 }  // namespace stickslip

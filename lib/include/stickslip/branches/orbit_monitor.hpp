@@ -30,6 +30,7 @@
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/periodicity.hpp"
+#include "stickslip/orbits/stability.hpp"
 
 namespace stickslip {
 
@@ -80,13 +81,23 @@ struct PointColumn {
 // The columns' values at a branch point.
 std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const BranchPoint& point);
 
+// A column watched with a type of its own: along a curve in two parameters (branches/
+// boundary_curve.hpp) a sign change of another Floquet test is a codimension-two point (LPPD, ...).
+struct WatchedColumn {
+  std::string column;  // "floquet:det(M-I)", ...: watched even where it is otherwise recorded only
+  std::string type;    // the special-point code of its sign change
+  // A column of its own, after the others, where given (the monitor has no such column).
+  std::function<double(const Stability&)> value;
+};
+
 class OrbitMonitor final : public Monitor {
  public:
   // `start` is any orbit of the system's signature (the names depend on the signature only). The
   // test functions named in `unwatched` (column names: "margin:G:2", "floquet:torus") are
   // recorded, not watched (those that sit on zero or mean nothing along a type boundary:
-  // branches/type_boundary.hpp).
-  OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched = {});
+  // branches/type_boundary.hpp). Those in `watched` are test functions of the type given there.
+  OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched = {},
+               std::vector<WatchedColumn> watched = {});
   std::vector<TestFunctionInfo> TestFunctions() const override { return info_; }
   std::vector<std::string> RecordedNames() const override { return recorded_; }
   void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const override;
@@ -100,9 +111,12 @@ class OrbitMonitor final : public Monitor {
   // Each adds the next column.
   void AddTestFunction(TestFunctionInfo info, Value value);
   void AddRecorded(std::string name, Value value);
+  bool Unwatched(const std::string& column) const;
+  const WatchedColumn* Watched(const std::string& column) const;  // null if not watched with a type of its own
 
   const OrbitSystem& system_;
   std::vector<std::string> unwatched_;
+  std::vector<WatchedColumn> watched_;
   std::vector<TestFunctionInfo> info_;
   std::vector<std::string> recorded_;
   std::vector<PointColumn> columns_;
