@@ -11,16 +11,24 @@
 // Also the brute-force sweep's wall time on 1 thread and on every core, for the parallel
 // speed-up of its chains, and the exact simulator's cost per forcing period over a short and a
 // long run; and the brute-force map's cells per second per core; and the wall time of whole traces
-// (every branch, switch and confirming simulation), closed form against Odeint.
+// (every branch, switch and confirming simulation), closed form against Odeint; and the boundary
+// curves of the section 4.1 data in (omega, u_r) (CurveWallTime, registered in main).
+#include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/branches/trace.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/io/stored_run.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -157,7 +165,100 @@ void SimulationPerPeriod(benchmark::State& state) {
 }
 BENCHMARK(SimulationPerPeriod)->ArgName("periods")->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 
+// The boundary curves of one paper data set (section 4.1) over the rectangle omega in [0.3, 0.69]
+// (u_r released; a curve ends at that range, at a codimension-two point or where its orbit ends):
+// from every special point of its trace (results/paper-4.1-omega-trace, every branch) but the ends
+// (EP), the curve that BoundaryCurve gives through it, both ways (down, then up), with the options of
+// the run file of the section 4.1 crossing-sliding boundary (paper-4.1-sk-boundary.toml, whose
+// start is the trace's branch-1:SK2). The context holds each curve's condition (curve:<branch>:<label>)
+// and each point whose condition BoundaryCurve refuses (no such curve yet) as
+// curve_refused:<branch>:<label>, and how each half ends with the special points on it
+// (curve_ends:<branch>:<label>, from one run at registration). Counters: points
+// (both halves), us_per_point, and the curve's extent: omega_min/max, u_r_min/max.
+struct CurveRun {
+  std::string name;                             // "branch-1:SK2"
+  std::vector<OrbitContinuationSetup> halves;  // down, up
+};
+
+void CurveWallTime(benchmark::State& state, const CurveRun& curve) {
+  double points = 0.0, per_curve = 0.0;
+  double omega_min = std::numeric_limits<double>::infinity(), omega_max = -omega_min;
+  double u_r_min = omega_min, u_r_max = omega_max;
+  for (auto _ : state) {
+    per_curve = 0.0;
+    for (const OrbitContinuationSetup& half : curve.halves) {
+      const OrbitBranch branch = ContinueOrbit(half);
+      per_curve += static_cast<double>(branch.branch.points.size());
+      for (const Orbit& orbit : branch.orbits) {
+        omega_min = std::min(omega_min, orbit.parameters.omega);
+        omega_max = std::max(omega_max, orbit.parameters.omega);
+        u_r_min = std::min(u_r_min, orbit.parameters.u_r);
+        u_r_max = std::max(u_r_max, orbit.parameters.u_r);
+      }
+    }
+    points += per_curve;
+  }
+  state.counters["points"] = per_curve;
+  state.counters["us_per_point"] = benchmark::Counter(points * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["omega_min"] = omega_min;
+  state.counters["omega_max"] = omega_max;
+  state.counters["u_r_min"] = u_r_min;
+  state.counters["u_r_max"] = u_r_max;
+}
+
+void RegisterCurves() {
+  const std::filesystem::path source(STICKSLIP_SOURCE_DIR);
+  const std::filesystem::path trace = source / "results" / "paper-4.1-omega-trace";
+  RunFile run = ReadRunFile(source / "continuation-scripts" / "paper-4.1-sk-boundary.toml");
+  std::vector<std::filesystem::path> branches;
+  for (const auto& entry : std::filesystem::directory_iterator(trace)) {
+    if (entry.is_directory()) branches.push_back(entry.path());
+  }
+  std::sort(branches.begin(), branches.end());
+  for (const std::filesystem::path& branch : branches) {
+    for (const StoredSpecialPoint& special : ReadRunFiles(branch).special_points) {
+      if (special.type == "EP") continue;
+      CurveRun curve{branch.filename().string() + ":" + special.point.label, {}};
+      // The condition as a run file's restart reads it: a type change's margin, else the type.
+      const std::string condition = special.test_function.starts_with("margin:") ? special.test_function : special.type;
+      run.restart_run = branch.filename().string();
+      run.restart_label = special.point.label;
+      try {
+        for (const int direction : {-1, 1}) {
+          run.direction = direction;
+          curve.halves.push_back(MakeSetup(run, trace));
+        }
+      } catch (const InvalidInput& e) {
+        if (e.field() != "start.restart.boundary") throw;  // only BoundaryCurve's refusal is "no curve yet"
+        benchmark::AddCustomContext("curve_refused:" + curve.name, condition);
+        continue;
+      }
+      benchmark::AddCustomContext("curve:" + curve.name, condition);
+      // How each half ends, and the special points on it (the codimension-two points): run once here.
+      std::string ends;
+      for (std::size_t h = 0; h < curve.halves.size(); ++h) {
+        const OrbitBranch half = ContinueOrbit(curve.halves[h]);
+        ends += std::string(h == 0 ? "" : "; ") + (h == 0 ? "down " : "up ") + ToString(half.branch.end);
+        for (const std::string& label : PointLabels(half.branch)) {
+          if (!label.empty() && !label.starts_with("EP")) ends += " " + label;
+        }
+      }
+      benchmark::AddCustomContext("curve_ends:" + curve.name, ends);
+      benchmark::RegisterBenchmark(("CurveWallTime/" + curve.name).c_str(), CurveWallTime, curve)
+          ->UseRealTime()
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stickslip
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  stickslip::RegisterCurves();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

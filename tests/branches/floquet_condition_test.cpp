@@ -16,6 +16,7 @@
 #include "stickslip/io/run.hpp"
 #include "stickslip/orbits/stability.hpp"
 #include "support/period_map.hpp"
+#include "support/section6_symmetry_breaking.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -144,28 +145,6 @@ INSTANTIATE_TEST_SUITE_P(PaperRuns, FloquetCurve,
                            return std::string(info.param.omega_run).substr(6, 1) + "_" + info.param.type;
                          });
 
-// The §6 type past its type changes (no motion there: the algebra, not the physics) meets a
-// multiplier -1 of its half-period map with the mirror at omega = 0.55014 (a symmetry breaking, as
-// in bifurcation_branches_test.cpp): the start of a continuation in omega just above it.
-OrbitContinuationSetup Section6AboveItsSymmetryBreaking() {
-  RunFile run;
-  run.path = "(test)";
-  run.output = "test";
-  run.preset = "paper-6";
-  run.set = {{"omega", 0.5501955483169749}};
-  run.guess = {{"x10", 9.936832707872899}, {"x20", 11.737822390429132}, {"v10", -6.552116682904398},
-               {"phi", 3.586861573229454}, {"d1", 3.129379765497387}, {"d2", 1.8950732856966541},
-               {"d3", 0.6855034600859811}};
-  run.parameter = "omega";
-  run.direction = -1;
-  run.range_min = 0.54;
-  run.range_max = 0.56;
-  run.ds = 0.01;
-  run.ds_max = 0.02;
-  run.max_points = 30;
-  run.continue_past_type_changes = true;
-  return MakeSetup(run, "results");
-}
 
 // The first located special point of `type` on the branch of `setup`.
 CurveStart LocatedOn(const OrbitContinuationSetup& setup, const std::string& type) {

@@ -2,9 +2,13 @@
 # stickslip map-sweep against hostile files and names: a shard that is a device (read without end),
 # a pipe (would block), a directory; --merge OUT that is one of its shards (directly or through a
 # link: the merge would replace it); an output name that its directory takes but whose temporary
-# name beside it is too long (refused before the work, not after it); shards of other runs; with the MPI front end
-# (STICKSLIP_MPI), a grid too large for one computation that two ranks split is not refused.
+# name beside it is too long (refused before the work, not after it); shards of other runs; grids over
+# the bound on the runs, ranges of 1e300, shards 0/0 and k > N, merges of overlapping or missing
+# shards, outputs in a missing directory or over a directory (each one line, exit 2, nothing
+# written, within a timeout); with the MPI front end (STICKSLIP_MPI), the same refusals from
+# stickslip-mpi, and a grid too large for one computation that two ranks split is not refused.
 source "$(dirname "$0")/expect.sh"
+source "$(dirname "$0")/map_sweep_common.sh"
 map=(map-sweep --preset paper-6 --first omega --first-from 0.55 --first-to 0.6 --first-steps 3 --second u_r
      --second-from 1.2 --second-to 1.5 --second-steps 2 --transients 30 --periods 6 --starts 2)
 for k in 1 2; do "$bin" "${map[@]}" --shard $k/2 --output "$work/s$k.csv" > /dev/null || fail "shard $k"; done
@@ -41,9 +45,56 @@ expect 2 "$work/edited.csv:3: column 'run' = '0000000000000000' differs from the
 long="$work/out/$(printf 'a%.0s' $(seq 246)).csv"
 expect 2 "output = '$long' is invalid: its name is too long" "$bin" "${map[@]}" --output "$long"
 
-if [ -n "${STICKSLIP_MPI:-}" ]; then
-  export OMPI_MCA_btl_vader_single_copy_mechanism=none
-  mpi=("${MPIEXEC:-mpirun}" --allow-run-as-root --oversubscribe)
+# Bad input given to a map computation (map_args' options replaced), here and across MPI ranks below.
+refusals() {
+  # The bound on the runs is one computation's (a shard's, an MPI rank's: 10001 or 5001 rows).
+  expect_map 2 "rows of 10001 cells, 1002 runs a cell) is invalid: valid range at most 10000000 runs in one shard" \
+    --first-steps 10000 --second-steps 10000 --starts 1000 --output "$m"
+  expect_map 2 "grid cell (i, j) = (0, 0) at omega = -1e+300, u_r = 1.2 is invalid" \
+    --first-from -1e300 --first-to 1e300 --output "$m"
+  expect_map 2 "grid cell (i, j) = (1, 0) at omega = 3.3333333333333335e+299, u_r = 1.2 is invalid" \
+    --first-from 0.55 --first-to 1e300 --output "$m"
+  expect_map 2 "grid cell (i, j) = (0, 0) at omega = 0.55, u_r = 1e+300 is invalid" \
+    --second-from 1e300 --second-to 1e300 --output "$m"
+  expect_map 2 "first-from = '1e999' is not a finite number" --first-from 1e999 --output "$m"
+  expect_map 2 "scatter = 1e+300 is invalid" --scatter 1e300 --output "$m"
+  for shard in 0/0 3/2 1/0 -1/2 1/2/3 1/100001 /; do
+    expect_map 2 "shard = '$shard' is invalid: valid range k/N with whole numbers 1 <= k <= N <= 100000" \
+      --shard "$shard" --output "$m"
+  done
+  expect_map 2 "output = '$work/out/missing/m.csv' is invalid: directory '$work/out/missing' does not exist" \
+    --output "$work/out/missing/m.csv"
+  expect_map 2 "output = '$work/out' is invalid: it is a directory" --output "$work/out"
+  expect_map 2 "output = '$work/out/' is invalid: it is a directory" --output "$work/out/"
+  expect_map 2 "output = '' is invalid: it is empty" --output ""
+}
+m="$work/out/m.csv"
+refusals
+# The bound is one computation's: 10001 rows of 1 cell with 1002 runs a cell (MPI ranks split it).
+expect_map 2 "grid = 10021002 runs (10001 rows of 1 cells, 1002 runs a cell) is invalid" \
+  --first-steps 0 --second-steps 10000 --starts 1000 --output "$m"
+
+# Merges: shards that overlap (1/2 and 1/3 both hold row 0), shards that miss a row (1/3 and 2/3),
+# an output over a directory or in a missing one.
+for k in 1 2 3; do "$bin" "${map[@]}" --shard $k/3 --output "$work/t$k.csv" > /dev/null || fail "shard $k/3"; done
+expect 2 "merge: cell (i, j) = (0, 0) is in '$work/s1.csv' and in '$work/t1.csv'" \
+  timeout 20 "$bin" map-sweep --merge "$m" "$work/s1.csv" "$work/s2.csv" "$work/t1.csv"
+expect 2 "merge: cell (i, j) = (0, 2) is in no shard" timeout 20 "$bin" map-sweep --merge "$m" "$work/t1.csv" "$work/t2.csv"
+expect 2 "merge = '$work/out' is invalid: it is a directory" "$bin" map-sweep --merge "$work/out" "$work/s1.csv" "$work/s2.csv"
+expect 2 "merge = '$work/out/missing/m.csv' is invalid: directory '$work/out/missing' does not exist" \
+  "$bin" map-sweep --merge "$work/out/missing/m.csv" "$work/s1.csv" "$work/s2.csv"
+expect 2 "merge = '$m' is invalid: valid range --merge OUT SHARD.csv... with at least one shard file" "$bin" map-sweep --merge "$m"
+"$bin" map-sweep --merge "$work/merged3.csv" "$work/t2.csv" "$work/t3.csv" "$work/t1.csv" > /dev/null && cmp -s "$work/merged.csv" "$work/merged3.csv" \
+  && pass || fail "3 shards merged differ from 2"
+
+if mpi_ready; then
+  # The same refusals from stickslip-mpi on 2 ranks (rank 0 prints the one line, every rank exits 2).
+  map_runner=("${mpi[@]}" -np 2 "$STICKSLIP_MPI")
+  refusals
+  expect_map 2 "shard = '1/2' is invalid: valid range 1/1 with stickslip-mpi" --shard 1/2 --output "$m"
+  map_args --output "$m"
+  expect 2 "The following arguments were not expected" "${map_runner[@]}" "${args[@]}" --merge "$m" "$work/s1.csv"
+  map_runner=()
   # 2 rows of 5001 cells and 1002 runs a cell: 10022 thousand runs, over the bound of one computation
   # (1e7), 5011 thousand a rank. One rank refuses it; two start computing (stopped after 10 s).
   big=(map-sweep --preset paper-6 --first omega --first-from 0.55 --first-to 0.6 --first-steps 5000 --second u_r
@@ -55,7 +106,5 @@ if [ -n "${STICKSLIP_MPI:-}" ]; then
   timeout 10 "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${big[@]}" > "$work/stdout" 2> "$work/stderr"
   code=$?
   [ "$code" -ne 2 ] && ! grep -q "grid = " "$work/stderr" && pass || fail "2 ranks refused the grid: exit $code, $(cat "$work/stderr")"
-else
-  echo "the MPI front end is not built: MPI checks skipped"
 fi
 finish

@@ -2,24 +2,11 @@
 # stickslip map-sweep: bad input (one line naming the field, exit 2, nothing written); the file
 # the same bytes for 1 and 2 threads; shards merged give the unsharded file; a merge of shards of
 # different grids, with a cell twice or one missing, is refused; with the MPI front end
-# (STICKSLIP_MPI), 1 and 2 ranks write the threaded run's bytes.
+# (STICKSLIP_MPI; required where STICKSLIP_REQUIRE_MPI is set, as tools/test.sh sets it), 1, 2 and 3
+# ranks write the single process's bytes. The grid has 5 rows: 2 and 3 ranks or shards split it
+# unevenly (3 + 2, 2 + 2 + 1).
 source "$(dirname "$0")/expect.sh"
-# The map's options, with KEY VALUE pairs replacing or adding options: map_args --periods 1 ...
-map_args() {
-  declare -A o=([--preset]=paper-6 [--first]=omega [--first-from]=0.55 [--first-to]=0.6 [--first-steps]=3
-                [--second]=u_r [--second-from]=1.2 [--second-to]=1.5 [--second-steps]=2 [--transients]=30
-                [--periods]=6 [--starts]=2)
-  while [ $# -gt 0 ]; do o[$1]=$2; shift 2; done
-  args=(map-sweep)
-  for key in "${!o[@]}"; do args+=("$key" "${o[$key]}"); done
-}
-# expect_map CODE TEXT KEY VALUE...: map-sweep with those options exits with CODE, TEXT on stderr.
-expect_map() {
-  local code=$1 text=$2
-  shift 2
-  map_args "$@"
-  expect "$code" "$text" "$bin" "${args[@]}"
-}
+source "$(dirname "$0")/map_sweep_common.sh"
 m="$work/out/m.csv"
 expect_map 2 "first-steps = 2.5 is invalid" --first-steps 2.5 --output "$m"
 expect_map 2 "first-steps = 10001 is invalid" --first-steps 10001 --output "$m"
@@ -50,6 +37,9 @@ head -1 "$work/one.csv" | grep -qx "i,j,ni,nj,omega,u_r,section_phase,run,attrac
 for k in 1 2; do "$bin" "${map[@]}" --shard $k/2 --output "$work/shard$k.csv" > /dev/null || fail "shard $k"; done
 "$bin" map-sweep --merge "$work/merged.csv" "$work/shard2.csv" "$work/shard1.csv" > /dev/null || fail "merge"
 cmp -s "$work/one.csv" "$work/merged.csv" && pass || fail "merged shards differ from the whole run"
+for k in 1 2 3; do "$bin" "${map[@]}" --shard $k/3 --output "$work/third$k.csv" > /dev/null || fail "shard $k/3"; done
+"$bin" map-sweep --merge "$work/merged3.csv" "$work/third3.csv" "$work/third1.csv" "$work/third2.csv" > /dev/null || fail "merge of 3"
+cmp -s "$work/one.csv" "$work/merged3.csv" && pass || fail "3 merged shards differ from the whole run"
 
 cp "$work/shard1.csv" "$work/out/"
 expect 2 "is in no shard" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1.csv"
@@ -65,23 +55,25 @@ expect 2 "shards = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$w
 /usr/bin/python3 "$root/tools/map_figure.py" "$work/one.csv" "$work/map.png" && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \
   && pass || fail "the map's figure"
 
-if [ -n "${STICKSLIP_MPI:-}" ]; then
-  # As root (CI): --allow-run-as-root; 2 ranks on any machine: --oversubscribe. Shared-memory
-  # messages copied through a buffer rather than across address spaces (CMA), which containers that
-  # restrict ptrace refuse.
-  export OMPI_MCA_btl_vader_single_copy_mechanism=none
-  mpi=("${MPIEXEC:-mpirun}" --allow-run-as-root --oversubscribe)
-  "${mpi[@]}" -np 1 "$STICKSLIP_MPI" "${map[@]}" --output "$work/rank1.csv" > /dev/null || fail "mpirun -np 1"
-  "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${map[@]}" --threads 1 --output "$work/rank2.csv" > /dev/null || fail "mpirun -np 2"
-  cmp -s "$work/one.csv" "$work/rank1.csv" && pass || fail "1 rank differs from the threaded run"
-  cmp -s "$work/one.csv" "$work/rank2.csv" && pass || fail "2 ranks differ from the threaded run"
-  # Bad input on every rank: one line, exit 2.
-  map_args --periods 1 --output "$work/out/m.csv"
-  "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${args[@]}" > "$work/stdout" 2> "$work/stderr"
-  code=$?
-  [ "$code" -eq 2 ] && [ "$(grep -c 'periods = 1 is invalid' "$work/stderr")" -eq 1 ] && [ ! -e "$work/out/m.csv" ] \
-    && pass || fail "MPI bad input: exit $code, $(cat "$work/stderr")"
-else
-  echo "the MPI front end is not built: MPI checks skipped"
+if mpi_ready; then
+  # 1 rank on 2 threads, 2 and 3 ranks on 1 thread each (rows 3 + 2 and 2 + 2 + 1): the bytes of the
+  # single process, hence of the merged shards too.
+  for np in 1 2 3; do
+    threads=1
+    [ "$np" -eq 1 ] && threads=2
+    "${mpi[@]}" -np $np "$STICKSLIP_MPI" "${map[@]}" --threads $threads --output "$work/rank$np.csv" > /dev/null ||
+      fail "mpirun -np $np"
+    cmp -s "$work/one.csv" "$work/rank$np.csv" && pass || fail "$np rank(s) differ from the single process"
+    cmp -s "$work/merged3.csv" "$work/rank$np.csv" && pass || fail "$np rank(s) differ from the merged shards"
+  done
+  # More ranks than rows: 2 rows over 3 ranks (rank 2 computes nothing), the single process's bytes.
+  map_args --second-steps 1
+  "$bin" "${args[@]}" --output "$work/two-rows.csv" > /dev/null || fail "2 rows"
+  "${mpi[@]}" -np 3 "$STICKSLIP_MPI" "${args[@]}" --output "$work/two-rows-3.csv" > /dev/null || fail "2 rows on 3 ranks"
+  cmp -s "$work/two-rows.csv" "$work/two-rows-3.csv" && pass || fail "2 rows on 3 ranks differ from the single process"
+  # Bad input on every rank: one line, exit 2, nothing written (more in map_sweep_hostile_test.sh).
+  map_runner=("${mpi[@]}" -np 2 "$STICKSLIP_MPI")
+  expect_map 2 "periods = 1 is invalid" --periods 1 --output "$work/out/m.csv"
+  map_runner=()
 fi
 finish
