@@ -119,11 +119,10 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
                region.second, region.Label());
   }
   if (comparison) {
-    int explained = 0;
-    for (const MapCellComparison& d : comparison->disagreements) explained += d.explained;
-    fmt::print("brute force {}: agreement {}/{} = {:.4f} of the cells clear of the curves; {} disagreement(s), {} explained\n",
-               args.brute_force, comparison->agreeing, comparison->compared, comparison->Agreement(),
-               comparison->disagreements.size(), explained);
+    fmt::print("brute force {}: agreement {}/{} = {:.4f} of the cells clear of the curves ({} with a stable orbit); {} "
+               "disagreement(s), {} explained\n",
+               args.brute_force, comparison->agreeing, comparison->compared, comparison->Agreement(), comparison->agreeing_stable,
+               comparison->disagreements.size(), comparison->Explained());
   }
   // A curve whose start did not converge, or whose step fell below ds_min, is a failure of the
   // computation (the map is written all the same); its end elsewhere is the curve's.

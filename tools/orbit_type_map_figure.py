@@ -3,7 +3,7 @@
 shaded by their stable motions (the admissible stable orbit types found at each region's interior
 point; white where none), the curves coloured by kind (solid where the orbit on the curve is
 admissible apart from the curve's own condition, dashed where not), their special points (folds,
-codimension-two points: not the starts or the rectangle's edges) marked and labelled, each region's
+codimension-two points: not the starts, the rectangle's edges or BP) marked and labelled, each region's
 interior point numbered, and the paper's example (the trace's start) starred; (b) with a brute-force
 map (stickslip map-sweep's CSV), its cells coloured by the stable period-1 types found there (the
 same colours; grey for other motions only) with the curves overlaid.
@@ -135,14 +135,15 @@ def main(directory, out, brute_path=None):
     kinds = sorted({c["kind"] for c in curves.values()})
     strong = plt.get_cmap("tab10").colors
     colours = {k: strong[n % len(strong)] for n, k in enumerate(kinds)}
-    # The curves' special points (not their ends), one label per place: the types met there and
-    # the curves' kinds ("SK (LP, PD)"), points within 1/300 of the axes' ranges taken as one place.
+    # The curves' codimension-two points (not their ends, EP, nor the bordered determinant's sign
+    # changes, BP), one label per place: the types met there and the curves' kinds ("SK (LP, PD)"),
+    # points within 1/60 of the axes' ranges taken as one place.
     places = {}
     for c in regions["curves"]:
         for p in c["special_points"]:
-            if p["type"] == "EP":
+            if p["type"] in ("EP", "BP"):
                 continue
-            key = (round(p[first] / (extent[1] - extent[0]) * 300), round(p[second] / (extent[3] - extent[2]) * 300))
+            key = (round(p[first] / (extent[1] - extent[0]) * 60), round(p[second] / (extent[3] - extent[2]) * 60))
             place = places.setdefault(key, dict(x=p[first], y=p[second], types=set(), kinds=set()))
             place["types"].add(p["type"])
             place["kinds"].add(kind_name(c["kind"]))
@@ -150,7 +151,7 @@ def main(directory, out, brute_path=None):
     start = trace_start(regions["trace"], first, second)
 
     panels = 2 if brute else 1
-    fig, axes = plt.subplots(1, panels, figsize=(6.8 * panels, 5.6), constrained_layout=True, squeeze=False)
+    fig, axes = plt.subplots(1, panels, figsize=(6.8 * panels + 2.6, 5.6), constrained_layout=True, squeeze=False)
     ax = axes[0][0]
     rows = [[int(v) for v in row.split()] for row in regions["cells"]]
     n = regions["raster"]
@@ -177,7 +178,9 @@ def main(directory, out, brute_path=None):
     ax.set_xlabel(first)
     ax.set_ylabel(second)
     ax.set_title(f"(a) orbit-type map from {os.path.basename(regions['trace'].rstrip('/'))}", fontsize=10)
-    ax.legend(fontsize=7, loc="best", framealpha=0.85)
+    # The legend beside the last panel, clear of the curves' labels.
+    handles, names = ax.get_legend_handles_labels()
+    axes[0][-1].legend(handles, names, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     draw_curves(axes[0][0], {}, colours, special, True)  # labelled last, the axes' limits fixed
     if brute:
         ax = axes[0][1]
@@ -185,11 +188,13 @@ def main(directory, out, brute_path=None):
         ys = sorted({c["y"] for c in brute.values()})
         dx = (xs[-1] - xs[0]) / max(1, len(xs) - 1)
         dy = (ys[-1] - ys[0]) / max(1, len(ys) - 1)
+        # Other motions marked per cell where the cells are large enough to show a mark.
+        marks = len(xs) <= 40 and len(ys) <= 40
         for cell in brute.values():
             lab = " + ".join(sorted(cell["types"])) or "none"
             colour = shade[lab] if lab != "none" else ((0.7, 0.7, 0.7) if cell["other"] else (1, 1, 1))
             ax.add_patch(plt.Rectangle((cell["x"] - dx / 2, cell["y"] - dy / 2), dx, dy, color=colour, lw=0))
-            if cell["other"]:
+            if cell["other"] and marks:
                 ax.plot(cell["x"], cell["y"], "x", color="0.35", ms=3)
         ax.set_xlim(extent[0], extent[1])
         ax.set_ylim(extent[2], extent[3])
@@ -198,7 +203,8 @@ def main(directory, out, brute_path=None):
             ax.plot(*start, marker="*", ms=12, color="gold", mec="black", ls="none")
         ax.set_xlabel(first)
         ax.set_ylabel(second)
-        ax.set_title("(b) brute force: stable period-1 types (x: other motions), curves overlaid", fontsize=10)
+        other = "x: other motions" if marks else "grey: other motions only"
+        ax.set_title(f"(b) brute force ({len(xs)} x {len(ys)} cells): stable period-1 types ({other})", fontsize=10)
     fig.savefig(out, dpi=110)
 
 

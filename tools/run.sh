@@ -37,12 +37,12 @@ mkdir -p results/sweeps/traces
 # the same rectangle (stickslip map-sweep): the curves through the traces' special points, the
 # regions they cut, and the agreement, cell by cell (results/maps/<name>/comparison.md).
 mkdir -p results/maps
-"$bin" map-sweep --preset paper-5.1 --first omega --first-from 0.5 --first-to 0.62 --first-steps 16 --second u_r \
-  --second-from 0.3 --second-to 0.8 --second-steps 16 --output results/maps/paper-5.1-omega-u_r-brute-force.csv
+"$bin" map-sweep --preset paper-5.1 --first omega --first-from 0.5 --first-to 0.62 --first-steps 120 --second u_r \
+  --second-from 0.3 --second-to 0.8 --second-steps 10 --output results/maps/paper-5.1-omega-u_r-brute-force.csv
 "$bin" map --trace results/paper-5.1-omega-trace --second u_r --second-from 0.3 --second-to 0.8 --first-from 0.5 \
   --first-to 0.62 --brute-force results/maps/paper-5.1-omega-u_r-brute-force.csv --output results/maps/paper-5.1-omega-u_r
-"$bin" map-sweep --preset paper-6 --first omega --first-from 0.54 --first-to 0.59 --first-steps 12 --second u_r \
-  --second-from 1.2 --second-to 1.6 --second-steps 12 --output results/maps/paper-6-omega-u_r-brute-force.csv
+"$bin" map-sweep --preset paper-6 --first omega --first-from 0.54 --first-to 0.59 --first-steps 50 --second u_r \
+  --second-from 1.2 --second-to 1.6 --second-steps 8 --output results/maps/paper-6-omega-u_r-brute-force.csv
 "$bin" map --trace results/paper-6-omega-trace --second u_r --second-from 1.2 --second-to 1.6 --first-from 0.54 \
   --first-to 0.59 --brute-force results/maps/paper-6-omega-u_r-brute-force.csv --output results/maps/paper-6-omega-u_r
 for m in paper-5.1-omega-u_r paper-6-omega-u_r; do

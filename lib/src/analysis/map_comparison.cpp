@@ -39,6 +39,11 @@ void MapComparisonOptions::Validate() const {
   if (!(clearance >= 0.0 && clearance <= 1e3)) throw InvalidInput("clearance", clearance, "0 <= clearance <= 1e3");
 }
 
+int MapComparison::Explained() const {
+  return static_cast<int>(std::count_if(disagreements.begin(), disagreements.end(),
+                                        [](const MapCellComparison& d) { return d.explained; }));
+}
+
 std::string CanonicalOrbitType(const std::string& signature) {
   const std::size_t slash = signature.find(" /");
   const std::string head = signature.substr(0, slash);
@@ -104,6 +109,7 @@ MapComparison CompareWithBruteForce(const OrbitTypeMap& map, const MapTrace* tra
     ++result.compared;
     if (found == expected) {
       ++result.agreeing;
+      result.agreeing_stable += !found.empty();
       continue;
     }
     std::vector<std::string> reasons;

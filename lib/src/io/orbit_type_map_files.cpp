@@ -114,15 +114,14 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace,
   }
   Json compared = nullptr;
   if (comparison) {
-    int explained = 0;
-    for (const MapCellComparison& d : comparison->disagreements) explained += d.explained;
     compared = Json{{"brute_force", brute_force},
                     {"cells", comparison->cells},
                     {"compared", comparison->compared},
                     {"agreeing", comparison->agreeing},
+                    {"agreeing_stable", comparison->agreeing_stable},
                     {"agreement", comparison->Agreement()},
                     {"disagreements", comparison->disagreements.size()},
-                    {"explained", explained}};
+                    {"explained", comparison->Explained()}};
   }
   const Json root{{"trace", trace},
                   {"first", r.first},
@@ -143,22 +142,21 @@ std::string Joined(const std::vector<std::string>& v) { return v.empty() ? "none
 std::string FormatComparisonMd(const OrbitTypeMap& map, const MapComparison& c, const std::string& trace,
                                const std::string& brute_force) {
   const MapRectangle& r = map.rectangle;
-  int explained = 0;
-  for (const MapCellComparison& d : c.disagreements) explained += d.explained;
   std::string out = fmt::format(
       "# Orbit-type map of {} against the brute force {}\n\n"
       "({}, {}) in [{}, {}] x [{}, {}]. Of {} brute-force cells, {} lie farther than two grid steps from every curve "
       "and inside a region; in {} of them the stable period-1 attractors are the stable orbit types the map assigns "
-      "to the region: agreement {:.4f}. Disagreements: {}, of which {} explained.\n\n",
+      "to the region ({} of them with a stable orbit, {} with none on both sides): agreement {:.4f}. Disagreements: {}, "
+      "of which {} explained.\n\n",
       trace, brute_force, r.first, r.second, r.first_min, r.first_max, r.second_min, r.second_max, c.cells, c.compared,
-      c.agreeing, c.Agreement(), c.disagreements.size(), explained);
+      c.agreeing, c.agreeing_stable, c.agreeing - c.agreeing_stable, c.Agreement(), c.disagreements.size(), c.Explained());
   if (!c.disagreements.empty()) {
     out += fmt::format("| cell (i, j) | {} | {} | region | brute force: stable period 1 | map: stable | solved at the cell: stable | "
                        "other attractors | explanation |\n",
                        r.first, r.second);
     out += "|---|---|---|---|---|---|---|---|---|\n";
     for (const MapCellComparison& d : c.disagreements) {
-      out += fmt::format("| ({}, {}) | {} | {} | {} | {} | {} | {} | {} | {} |\n", d.i, d.j, d.first, d.second, d.region,
+      out += fmt::format("| ({}, {}) | {:.6g} | {:.6g} | {} | {} | {} | {} | {} | {} |\n", d.i, d.j, d.first, d.second, d.region,
                          Joined(d.found), Joined(d.expected), Joined(d.at_cell), Joined(d.others), d.explanation);
     }
   }

@@ -53,8 +53,12 @@ struct MapComparison {
   int cells = 0;       // of the brute-force map
   int compared = 0;    // far enough from the curves and inside a region
   int agreeing = 0;
+  // Of the agreeing cells, those where both find a stable period-1 orbit (the others agree that
+  // there is none).
+  int agreeing_stable = 0;
   std::vector<MapCellComparison> disagreements;  // by j then i
   double Agreement() const { return compared > 0 ? static_cast<double>(agreeing) / compared : 0.0; }
+  int Explained() const;  // disagreements with a reason for every difference
 };
 
 // The orbit type up to a cyclic shift: the listed segments rotated to the lexicographically least
