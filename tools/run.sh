@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
-# and regenerates the tables (results/paper-table.md, results/runs.md, results/trace-intervals.md)
-# and figures.
+# the orbit-type maps into results/maps/, and regenerates the tables (results/paper-table.md,
+# results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures.
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 stickslip_install_packages
@@ -33,6 +33,22 @@ mkdir -p results/sweeps/traces
 # above settle on; a chain started on the trace at its crossing-sliding (SK3) follows it.
 "$bin" sweep --results results/paper-5.2-omega-trace --point branch-1:SK3 --from 0.6045 --to 0.6585 --steps 27 \
   --chains 1 --output results/sweeps/traces/paper-5.2-omega-from-SK3.csv
+# Orbit-type maps in (omega, u_r) from the traces (stickslip map), each against a brute-force map of
+# the same rectangle (stickslip map-sweep): the curves through the traces' special points, the
+# regions they cut, and the agreement, cell by cell (results/maps/<name>/comparison.md).
+mkdir -p results/maps
+"$bin" map-sweep --preset paper-5.1 --first omega --first-from 0.5 --first-to 0.62 --first-steps 120 --second u_r \
+  --second-from 0.3 --second-to 0.8 --second-steps 10 --output results/maps/paper-5.1-omega-u_r-brute-force.csv
+"$bin" map --trace results/paper-5.1-omega-trace --second u_r --second-from 0.3 --second-to 0.8 --first-from 0.5 \
+  --first-to 0.62 --brute-force results/maps/paper-5.1-omega-u_r-brute-force.csv --output results/maps/paper-5.1-omega-u_r
+"$bin" map-sweep --preset paper-6 --first omega --first-from 0.54 --first-to 0.59 --first-steps 50 --second u_r \
+  --second-from 1.2 --second-to 1.6 --second-steps 8 --output results/maps/paper-6-omega-u_r-brute-force.csv
+"$bin" map --trace results/paper-6-omega-trace --second u_r --second-from 1.2 --second-to 1.6 --first-from 0.54 \
+  --first-to 0.59 --brute-force results/maps/paper-6-omega-u_r-brute-force.csv --output results/maps/paper-6-omega-u_r
+for m in paper-5.1-omega-u_r paper-6-omega-u_r; do
+  /usr/bin/python3 tools/orbit_type_map_figure.py results/maps/$m results/figures/$m-map.png results/maps/$m-brute-force.csv
+done
+/usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results

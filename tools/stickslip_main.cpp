@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
       "stickslip");
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddCheckCommand(app),
-                                         AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app),
+                                         AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app), AddMapCommand(app),
                                          AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
   try {
     app.parse(argc, argv);
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, map-sweep, export, find, plot", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, map-sweep, map, export, find, plot", argv[1]);
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

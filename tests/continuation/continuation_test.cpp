@@ -200,6 +200,31 @@ TEST(PseudoArclength, EndsExactlyOnTheBoundWhateverTheStepSize) {
   }
 }
 
+TEST(PseudoArclength, EndsWhereAnotherUnknownReachesItsBoundLocatedOnTheBranch) {
+  // Round the circle x^2 + lambda^2 = 1 from (1, 0) up: x falls to 0.5 at lambda = sqrt(3)/2.
+  const Circle circle;
+  ContinuationOptions o = Options();
+  o.unknown_bounds.push_back({.index = 0, .min = 0.5, .max = 2.0, .name = "x"});
+  const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+  EXPECT_NE(b.end_message.find("reached x_min = 0.5"), std::string::npos) << b.end_message;
+  EXPECT_NEAR(b.points.back().u(0), 0.5, 1e-9);
+  EXPECT_NEAR(b.points.back().lambda, std::sqrt(0.75), 1e-9);
+  const auto ep = OfType(b, "EP");
+  EXPECT_TRUE(std::any_of(ep.begin(), ep.end(), [](const SpecialPoint& s) { return s.test_function == "x_min"; }));
+  EXPECT_TRUE(OfType(b, "LP").empty());  // it ends before the fold at lambda = 1
+}
+
+TEST(ContinuationOptions, RejectABoundOnLambdaOrAnEmptyBound) {
+  ContinuationOptions o = Options();
+  o.unknown_bounds.push_back({.index = 1, .min = 0.0, .max = 1.0, .name = "lambda"});
+  EXPECT_THROW(o.Validate(), InvalidInput);
+  o.unknown_bounds = {{.index = 0, .min = 1.0, .max = 1.0, .name = "x"}};
+  EXPECT_THROW(o.Validate(), InvalidInput);
+  o.unknown_bounds = {{.index = 5, .min = 0.0, .max = 1.0, .name = "x"}};
+  EXPECT_THROW(Continuation(Circle(), nullptr, o, Eigen::Vector2d(1.0, 0.0)), InvalidInput);
+}
+
 TEST(PseudoArclength, EndsAtOnceWhenItStartsOnTheBoundItHeadsFor) {
   const Cubic cubic;
   ContinuationOptions o = Options();

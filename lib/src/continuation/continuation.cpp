@@ -61,6 +61,12 @@ void ContinuationOptions::Validate() const {
   if (!(location.same_point >= 0.0)) throw InvalidInput("location.same_point", location.same_point, ">= 0");
   if (!(location.fold_noise >= 0.0)) throw InvalidInput("location.fold_noise", location.fold_noise, ">= 0");
   closed_loop.Validate();
+  for (const UnknownBound& b : unknown_bounds) {
+    if (b.index < 0 || b.index == parameter_index) {
+      throw InvalidInput("unknown_bounds.index", b.index, "an unknown's index >= 0, not parameter_index (lambda_min/max bound it)");
+    }
+    if (!(b.min < b.max)) throw InvalidInput("unknown_bounds.min", b.min, fmt::format("min < max ({})", b.max));
+  }
 }
 
 // The setup, fixed for the branch (options, corrector, step-size controller, events), and the
@@ -125,6 +131,11 @@ Continuation::Continuation(const NonlinearSystem& problem, const Monitor* monito
   if (options.start_direction.size() != 0 && options.start_direction.size() != start.size()) {
     throw std::invalid_argument(fmt::format("start_direction has {} components, the problem {} unknowns",
                                             options.start_direction.size(), start.size()));
+  }
+  for (const UnknownBound& b : options.unknown_bounds) {
+    if (b.index >= start.size()) {
+      throw InvalidInput("unknown_bounds.index", b.index, fmt::format("0 <= index < {} (the unknowns)", start.size()));
+    }
   }
   if (options.parameter_index >= start.size()) {
     throw InvalidInput("parameter_index", options.parameter_index,
@@ -322,7 +333,7 @@ bool Continuation::RecordEvents() {
       MarkLastPoint(&branch_, e.type, e.name, l.value, l.located, l.bracket);
       if (ending) continue;
       if (e.bound) {
-        ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, st.Lambda(l.sample.u)));
+        ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, l.sample.u(e.bound_index)));
       } else if (e.terminal && l.value_before > 0.0) {
         // A terminal function ends the branch only when it leaves its positive side.
         ending.emplace(BranchEnd::kTerminalEvent,

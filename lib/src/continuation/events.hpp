@@ -16,7 +16,8 @@ struct Event {
   std::function<double(const Sample&)> g;  // continuous, or a sign (BP)
   bool sign_only = false;  // g is a sign: located by bisection
   bool terminal = false;   // ends the branch when it leaves its positive side
-  bool bound = false;      // a parameter bound: ends the branch
+  bool bound = false;      // a parameter bound, or a bound on another unknown: ends the branch
+  int bound_index = 0;     // the bounded unknown (lambda's for the parameter bounds)
   double noise = 0.0;      // a sign change between values both below this is noise
   int priority = 0;        // order of events located at the same point
   bool may_have_poles = false;  // a sign change may be a pole (TestFunctionInfo)

@@ -39,6 +39,17 @@ struct UserValue {
   std::string name;    // for the report, e.g. "omega=0.6"
 };
 
+// EP: a bound on an unknown other than lambda (a curve in two parameters ends where its released
+// second parameter leaves a rectangle). Each finite side is a terminal test function, located on
+// the branch as the parameter bounds are; the branch ends there (BranchEnd::kParameterBound) with
+// the message "reached <name>_max = <value>". A start already outside the bound is not stopped by it.
+struct UnknownBound {
+  int index = 0;  // which unknown (not parameter_index: lambda_min and lambda_max bound that)
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  std::string name;  // for the special point and the message, e.g. "u_r"
+};
+
 // Where special points are located on the branch, and how hard the corrector tries there.
 struct EventLocationOptions {
   double tolerance = 1e-11;       // final arclength bracket of a located special point
@@ -110,6 +121,7 @@ struct ContinuationOptions {
   bool detect_folds = true;
   bool detect_branch_points = true;
   std::vector<UserValue> user_values;
+  std::vector<UnknownBound> unknown_bounds;  // none by default
   // By default the branch ends at the first terminal test function leaving its positive side;
   // with this set it goes on, and such sign changes are special points like any other.
   bool continue_past_terminal = false;

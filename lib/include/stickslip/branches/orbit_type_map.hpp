@@ -1,0 +1,168 @@
+// The orbit-type map of a rectangle of two parameters (issue 13 item 2), assembled from a trace
+// (branches/trace.hpp) in its parameter (the map's first) and a second parameter:
+//   curves   through every special point of the trace's branches that BoundaryCurve gives a curve
+//            of (a type change by its margin; LP, PD, SB, TR), continued both ways of the first
+//            parameter across the rectangle: each ends where the released second parameter leaves
+//            it (an UnknownBound, located), at a bound of the first, or at a codimension-two point
+//            (a second margin leaving its positive side: another type boundary met); the folds of
+//            a curve are its LP. Points BoundaryCurve refuses are listed with its reason.
+//   regions  the rectangle cut by the curves: the curves' polylines rasterized on a raster x raster
+//            grid of cells (a cell is cut where a curve passes through it: a polyline sampled every
+//            quarter of a cell), and the connected components (4-neighbours) of the other cells;
+//            components of fewer than min_region of the cells are slivers, dropped. Each region's
+//            interior point is the centre of its cell farthest (chessboard distance) from every cut
+//            cell and from the rectangle's edges.
+//   content  at each interior point (a, b), every orbit of the trace there: on each branch, at
+//            each pair of consecutive points whose first parameter straddles a, the nearer one is
+//            continued in the first parameter to a, then in the second to b (each continuation
+//            ends on its bound, exactly at the value; past changes of type, so the orbit may come
+//            out not admissible: no motion of that type there); orbits found twice (same type,
+//            OrbitDistance <= same_orbit) are one. A region's label: its admissible orbit types,
+//            each stable or unstable.
+// Every loop is bounded: the curves by max_curves and max_curve_points, the content by the trace's
+// points and max_content_points per continuation, the raster by raster^2.
+//
+//   MapTrace trace = ...;  // io/orbit_type_map_files.hpp: MapTraceOf(ReadTraceFiles(dir))
+//   const OrbitTypeMap map = BuildOrbitTypeMap(trace, {"omega", "u_r", 0.5, 0.6, 0.3, 0.6}, {});
+//   for (const MapRegion& r : map.regions) use(r.first, r.second, r.Label());
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/progress.hpp"
+
+namespace stickslip {
+
+// A special point of a trace's branch, where a curve may start.
+struct MapStartPoint {
+  std::string branch;         // the trace branch's name, "branch-4"
+  std::string label;          // its label there, "SK3"
+  std::string type;           // "SK", "LP", "TR", ...
+  std::string test_function;  // "margin:reversal:1", "tangent:lambda", "floquet:torus", ...
+  Orbit orbit;
+};
+
+// A branch of the trace: its orbits (every point, in order) and special points.
+struct MapTraceBranch {
+  std::string name;
+  UnknownChoice unknowns;  // the branch's unknowns (its parameter held)
+  std::vector<Orbit> orbits;
+  std::vector<MapStartPoint> special;
+};
+
+struct MapTrace {
+  std::string parameter;  // the trace's continued parameter: the map's first
+  // The continuation options (ds, ds_min, ds_max, ...) and shooting of every curve and content
+  // continuation; the range, direction, max_points and user values are the map's.
+  ContinuationOptions options;
+  ShootingChoice shooting = ShootingChoice::kAuto;
+  std::vector<MapTraceBranch> branches;
+};
+
+struct MapRectangle {
+  std::string first;   // the trace's parameter
+  std::string second;  // another parameter: chi, eta, omega, u_s, u_r
+  double first_min = 0.0, first_max = 0.0;
+  double second_min = 0.0, second_max = 0.0;
+  // Throws InvalidInput naming "first_min" ("second_min") unless min < max, both finite, and
+  // "second" for a second parameter that is no parameter or the first.
+  void Validate() const;
+};
+
+struct OrbitTypeMapOptions {
+  int raster = 200;           // cells per side of the raster the regions are cut on (16 to 2000)
+  double min_region = 2e-3;   // a component of fewer than this fraction of the cells is a sliver (0 to 0.5)
+  int max_curves = 200;       // curves (each direction one) at most (1 to 10000)
+  int max_curve_points = 600;    // points per curve (2 to 100000)
+  int max_content_points = 400;  // points per continuation to an interior point (2 to 100000)
+  double same_orbit = 1e-6;   // two orbits of one type within this (OrbitDistance) are one (0 to 1)
+  // Called after each start of curves (two steps: both ways) and each region's content (one step),
+  // unit "steps", done increasing; the total is known once the regions are (before: the curves'
+  // steps + 1). Empty: no reports.
+  ProgressCallback progress = {};
+
+  void Validate() const;  // throws InvalidInput naming the first field out of its range
+};
+
+// A curve of codimension-one points in the rectangle, from one start, one way of the first parameter.
+struct MapCurve {
+  int id = 0;              // 1, 2, ... in the order computed
+  std::string kind;        // its condition: "LP", "PD", "margin:reversal:1", ...
+  std::string from;        // the start: "branch-4:SK3"
+  int direction = 1;       // the first parameter's way at the start
+  OrbitBranch branch;      // the curve as any branch (its special points: LP, codimension-two, EP)
+  // Per point: admissible apart from the conditions that define the curve (its unwatched columns),
+  // and stable.
+  std::vector<bool> admissible;
+  std::vector<bool> stable;
+  std::vector<double> first, second;  // the two parameters per point
+};
+
+// A special point of the trace that gives no curve, and why.
+struct MapSkippedStart {
+  std::string from;       // "branch-2:GR2"
+  std::string condition;  // what BoundaryCurve was asked for
+  std::string reason;
+};
+
+// An orbit found at a region's interior point.
+struct MapOrbit {
+  std::string signature;
+  bool admissible = false;
+  bool stable = false;
+  std::string from;  // "branch-3 pt 12": the trace point it was continued from
+  Orbit orbit;
+};
+
+struct MapRegion {
+  int id = 0;           // 1, 2, ... in raster order of their first cell
+  int cells = 0;        // raster cells
+  double first = 0.0;   // the interior point
+  double second = 0.0;
+  int clearance = 0;    // its distance from the nearest cut cell or edge, in cells
+  std::vector<MapOrbit> orbits;  // every orbit found there, deduplicated, in the order found
+  std::vector<std::string> failures;  // continuations that did not reach the point (where, why)
+  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no periodic motion".
+  std::string Label() const;
+  // The admissible stable orbits' types, sorted.
+  std::vector<std::string> StableTypes() const;
+};
+
+struct OrbitTypeMap {
+  MapRectangle rectangle;
+  OrbitTypeMapOptions options;  // progress cleared
+  std::vector<MapCurve> curves;
+  std::vector<MapSkippedStart> skipped;
+  std::vector<MapRegion> regions;
+  // Per raster cell (row-major: cell (i, j) at j * raster + i, i along the first parameter): its
+  // region's index in `regions`, kCut where a curve passes, kSliver in a dropped component.
+  std::vector<int> cells;
+  static constexpr int kCut = -1;
+  static constexpr int kSliver = -2;
+  // The region index (into `regions`) at a point of the rectangle, or kCut / kSliver / kCut for a
+  // point outside it.
+  int RegionAt(double first, double second) const;
+};
+
+// The regions of the rectangle cut by `polylines` (each a list of (first, second) points): the
+// raster, the components, the interior points; no content. The pure geometry of BuildOrbitTypeMap,
+// apart for testing on known arrangements.
+OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std::vector<std::pair<double, double>>>& polylines,
+                            const OrbitTypeMapOptions& options);
+
+// The map. Throws InvalidInput for an invalid rectangle or options, and naming "first" when the
+// rectangle's first parameter is not the trace's.
+OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options = {});
+
+// Every orbit of the trace at (first, second) of the rectangle's parameters, as a region's content
+// is found (above); the continuations that did not get there in `failures`.
+std::vector<MapOrbit> OrbitsAt(const MapTrace& trace, const MapRectangle& rectangle, double first, double second,
+                               const OrbitTypeMapOptions& options, std::vector<std::string>* failures);
+
+// The condition BoundaryCurve continues for a special point: its margin for a type change (the
+// test function "margin:..."), else its type ("LP", "PD", ...).
+std::string CurveCondition(const std::string& type, const std::string& test_function);
+
+}  // namespace stickslip

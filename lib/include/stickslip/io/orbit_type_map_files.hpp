@@ -1,0 +1,59 @@
+// The files of an orbit-type map (branches/orbit_type_map.hpp), results/maps/<name>/, and the trace
+// it is built from:
+//   curves.csv     one row per point of every curve: curve (its id), kind (its condition: "LP",
+//                  "margin:reversal:1"), from (the trace's special point), direction, signature,
+//                  pt, label, the first and second parameters, stable, admissible (apart from the
+//                  curve's defining conditions), then the orbit's variables as branch files have
+//                  them (chi, eta, omega, u_s, u_r, phi, x10, x20, v10) and durations (d1..dn,
+//                  ';'-joined: curves of different types have different counts)
+//   curve-<k>/     each curve as an ordinary run directory (result_files.hpp), its special points
+//                  (the codimension-two points, folds, ends) labelled: a run file restarts from
+//                  them with results root results/maps/<name> and restart.run = "curve-<k>"
+//   regions.json   the rectangle, the raster and its cells (one string of region ids per raster
+//                  row, j from the bottom; -1 cut, -2 sliver), the regions (interior point,
+//                  clearance, label, stable types, every orbit found, failures), the curves (kind,
+//                  start, end, their special points), the trace's points that gave no curve, and
+//                  the comparison's counts (null without one)
+//   comparison.md  the brute-force comparison (analysis/map_comparison.hpp), when there is one
+// Numbers in shortest round-trip form, no time or host: the same map gives the same bytes.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stickslip/analysis/map_comparison.hpp"
+#include "stickslip/branches/orbit_type_map.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/io/trace_files.hpp"
+
+namespace stickslip {
+
+// The map's input from a stored trace: every branch's points and special points. Each branch's
+// unknowns are the trace run file's (run: its [unknowns] and [continuation] step sizes; nullptr: the
+// defaults). The shooting and flow are the defaults.
+MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run);
+
+// The types of the trace's branches (their signatures), for the comparison.
+std::vector<std::string> TraceTypes(const StoredTrace& trace);
+
+struct OrbitTypeMapFiles {
+  std::string curves_csv;
+  std::string regions_json;
+  std::string comparison_md;  // empty without a comparison
+};
+// `trace` names the trace directory in the files; `brute_force` the brute-force map file.
+OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::string& trace,
+                                          const MapComparison* comparison, const std::string& brute_force);
+
+// Writes `directory` whole (the files above and curve-<k>/), into a temporary directory first that
+// then replaces the old one. Throws InvalidInput naming "output" where `directory` exists and is
+// not a map's directory (no regions.json), or cannot be written.
+void WriteOrbitTypeMapFiles(const std::filesystem::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files);
+
+// Throws InvalidInput naming "output" where `directory` could not be written by
+// WriteOrbitTypeMapFiles: a file, or a directory that holds no map. Touches nothing.
+void CheckOrbitTypeMapDirectory(const std::filesystem::path& directory);
+
+}  // namespace stickslip

@@ -1,0 +1,395 @@
+#include "stickslip/branches/orbit_type_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "stickslip/branches/boundary_curve.hpp"
+#include "stickslip/branches/type_switch.hpp"
+#include "stickslip/invalid_input.hpp"
+
+namespace stickslip {
+
+namespace ov = orbit_variables;
+
+namespace {
+
+double ValueOf(const Orbit& orbit, const std::string& name) {
+  return orbit.parameters[*ParameterFromString(name)];
+}
+
+// A column's value at a point, by name; NaN where the branch has no such column.
+double Column(const OrbitBranch& branch, std::size_t point, std::string_view name) {
+  for (const PointColumn& c : branch.columns) {
+    if (c.name != name) continue;
+    const BranchPoint& p = branch.branch.points[point];
+    return c.monitored ? p.tests(c.index) : p.recorded(c.index);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Every margin positive (or undefined) but the ones in `defining`.
+bool AdmissibleApartFrom(const OrbitBranch& branch, std::size_t point, const std::vector<std::string>& defining) {
+  for (const PointColumn& c : branch.columns) {
+    if (!c.name.starts_with(orbit_columns::kMarginPrefix)) continue;
+    if (std::find(defining.begin(), defining.end(), c.name) != defining.end()) continue;
+    const double v = Column(branch, point, c.name);
+    if (v < 0.0) return false;
+  }
+  return true;
+}
+
+// The position of `name` among the continued unknowns of `setup` (its free variables, in order).
+int UnknownPosition(const OrbitContinuationSetup& setup, const std::string& name) {
+  const std::vector<int> free = FreeIndices(setup.start.signature, setup.unknowns);
+  const int index = *ov::IndexOf(setup.start.signature.size(), name);
+  return static_cast<int>(std::find(free.begin(), free.end(), index) - free.begin());
+}
+
+// A continuation from `orbit` in `parameter` with the trace's options.
+OrbitContinuationSetup SetupAt(const MapTrace& trace, const Orbit& orbit, const UnknownChoice& unknowns,
+                               const std::string& parameter) {
+  OrbitContinuationSetup setup{orbit, unknowns, parameter, trace.shooting, LinearSolverType::kKlu, trace.options, {}, {}, {}};
+  return setup;
+}
+
+// The progress steps of the curves: two per special point of the trace (both ways).
+int StartSteps(const MapTrace& trace) {
+  int total = 0;
+  for (const MapTraceBranch& b : trace.branches) total += 2 * static_cast<int>(b.special.size());
+  return total;
+}
+
+void Report(const OrbitTypeMapOptions& options, double done, double total, const char* unit) {
+  if (options.progress) options.progress({done, total, unit, std::numeric_limits<double>::quiet_NaN()});
+}
+
+// The branch of `setup` from its start to `target` of its parameter, ending exactly there (the
+// range's bound); nullopt and `why` where it does not get there.
+std::optional<OrbitBranch> ContinueTo(OrbitContinuationSetup setup, double target, int max_points, std::string* why) {
+  const double from = ValueOf(setup.start, setup.parameter);
+  if (from == target) {
+    setup.options.max_points = 1;
+    setup.options.lambda_min = -std::numeric_limits<double>::infinity();
+    setup.options.lambda_max = std::numeric_limits<double>::infinity();
+  } else {
+    setup.options.lambda_min = std::min(from, target);
+    setup.options.lambda_max = std::max(from, target);
+    setup.options.direction = target > from ? 1 : -1;
+    setup.options.max_points = max_points;
+  }
+  setup.options.user_values.clear();
+  setup.options.unknown_bounds.clear();
+  setup.options.continue_past_terminal = true;
+  setup.options.detect_folds = false;
+  setup.options.detect_branch_points = false;
+  setup.options.progress = {};
+  OrbitBranch branch = ContinueOrbit(setup);
+  // The engine puts the last point on the bound to rounding (ContinuationOptions::bound_tolerance).
+  if (branch.branch.points.empty() ||
+      !(std::abs(branch.branch.points.back().lambda - target) <= 1e-12 * (1.0 + std::abs(target)))) {
+    *why = fmt::format("{} from {} to {}: {} ({})", setup.parameter, from, target, ToString(branch.branch.end),
+                       branch.branch.end_message);
+    return std::nullopt;
+  }
+  return branch;
+}
+
+}  // namespace
+
+void MapRectangle::Validate() const {
+  const std::optional<ParameterId> a = ParameterFromString(first);
+  if (!a) throw InvalidInput("first", first, "a parameter: chi, eta, omega, u_s, u_r");
+  const std::optional<ParameterId> b = ParameterFromString(second);
+  if (!b || *b == *a) throw InvalidInput("second", second, fmt::format("a parameter other than {}: chi, eta, omega, u_s, u_r", first));
+  if (!(std::isfinite(first_min) && std::isfinite(first_max) && first_min < first_max)) {
+    throw InvalidInput("first_min", first_min, fmt::format("finite, < first_max ({})", first_max));
+  }
+  if (!(std::isfinite(second_min) && std::isfinite(second_max) && second_min < second_max)) {
+    throw InvalidInput("second_min", second_min, fmt::format("finite, < second_max ({})", second_max));
+  }
+}
+
+void OrbitTypeMapOptions::Validate() const {
+  if (raster < 16 || raster > 2000) throw InvalidInput("raster", raster, "16 <= raster <= 2000");
+  if (!(min_region >= 0.0 && min_region <= 0.5)) throw InvalidInput("min_region", min_region, "0 <= min_region <= 0.5");
+  if (max_curves < 1 || max_curves > 10000) throw InvalidInput("max_curves", max_curves, "1 <= max_curves <= 10000");
+  if (max_curve_points < 2 || max_curve_points > 100000) {
+    throw InvalidInput("max_curve_points", max_curve_points, "2 <= max_curve_points <= 100000");
+  }
+  if (max_content_points < 2 || max_content_points > 100000) {
+    throw InvalidInput("max_content_points", max_content_points, "2 <= max_content_points <= 100000");
+  }
+  if (!(same_orbit >= 0.0 && same_orbit <= 1.0)) throw InvalidInput("same_orbit", same_orbit, "0 <= same_orbit <= 1");
+}
+
+std::string CurveCondition(const std::string& type, const std::string& test_function) {
+  return test_function.starts_with(orbit_columns::kMarginPrefix) ? test_function : type;
+}
+
+std::string MapRegion::Label() const {
+  std::vector<std::string> parts;
+  for (const MapOrbit& o : orbits) {
+    if (o.admissible) parts.push_back(fmt::format("{} ({})", o.signature, o.stable ? "stable" : "unstable"));
+  }
+  std::sort(parts.begin(), parts.end());
+  parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+  return parts.empty() ? "no periodic motion" : fmt::format("{}", fmt::join(parts, "; "));
+}
+
+std::vector<std::string> MapRegion::StableTypes() const {
+  std::set<std::string> types;
+  for (const MapOrbit& o : orbits) {
+    if (o.admissible && o.stable) types.insert(o.signature);
+  }
+  return {types.begin(), types.end()};
+}
+
+int OrbitTypeMap::RegionAt(double first, double second) const {
+  const MapRectangle& r = rectangle;
+  const int n = options.raster;
+  const double u = (first - r.first_min) / (r.first_max - r.first_min);
+  const double v = (second - r.second_min) / (r.second_max - r.second_min);
+  if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return kCut;
+  const int i = std::min(n - 1, static_cast<int>(u * n));
+  const int j = std::min(n - 1, static_cast<int>(v * n));
+  return cells[static_cast<std::size_t>(j) * n + i];
+}
+
+OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std::vector<std::pair<double, double>>>& polylines,
+                            const OrbitTypeMapOptions& options) {
+  rectangle.Validate();
+  options.Validate();
+  OrbitTypeMap map;
+  map.rectangle = rectangle;
+  map.options = options;
+  map.options.progress = {};
+  const int n = options.raster;
+  const auto at = [n](int i, int j) { return static_cast<std::size_t>(j) * n + i; };
+  std::vector<int> cells(static_cast<std::size_t>(n) * n, 0);  // 0 free, kCut on a curve
+  const double w = rectangle.first_max - rectangle.first_min, h = rectangle.second_max - rectangle.second_min;
+  const auto mark = [&](double u, double v) {
+    if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return;
+    cells[at(std::min(n - 1, static_cast<int>(u * n)), std::min(n - 1, static_cast<int>(v * n)))] = OrbitTypeMap::kCut;
+  };
+  for (const auto& line : polylines) {
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      const double u1 = (line[k].first - rectangle.first_min) / w, v1 = (line[k].second - rectangle.second_min) / h;
+      mark(u1, v1);
+      if (k + 1 == line.size()) break;
+      const double u2 = (line[k + 1].first - rectangle.first_min) / w, v2 = (line[k + 1].second - rectangle.second_min) / h;
+      if (!(std::isfinite(u1) && std::isfinite(v1) && std::isfinite(u2) && std::isfinite(v2))) continue;
+      // Sampled every quarter of a cell, at most 4 n per unit of the rectangle (a segment leaving it is clipped).
+      const double length = std::max(std::abs(u2 - u1), std::abs(v2 - v1));
+      const int samples = static_cast<int>(std::ceil(std::min(length, 2.0) * 4.0 * n));
+      for (int s = 1; s <= samples; ++s) {
+        const double t = static_cast<double>(s) / samples;
+        mark(u1 + t * (u2 - u1), v1 + t * (v2 - v1));
+      }
+    }
+  }
+  // Chessboard distance from the cut cells and the edges (two passes).
+  std::vector<int> distance(cells.size());
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      distance[at(i, j)] = cells[at(i, j)] == OrbitTypeMap::kCut ? 0 : std::min({i + 1, j + 1, n - i, n - j});
+    }
+  }
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int step = 0; step < n * n; ++step) {
+      const int index = pass == 0 ? step : n * n - 1 - step;
+      const int i = index % n, j = index / n;
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+          const int ii = i + di, jj = j + dj;
+          if (ii < 0 || jj < 0 || ii >= n || jj >= n) continue;
+          distance[at(i, j)] = std::min(distance[at(i, j)], distance[at(ii, jj)] + 1);
+        }
+      }
+    }
+  }
+  // Components (4-neighbours), in raster order of their first cell.
+  std::vector<int> component(cells.size(), -1);
+  std::vector<std::vector<int>> members;
+  for (int start = 0; start < n * n; ++start) {
+    if (cells[start] == OrbitTypeMap::kCut || component[start] >= 0) continue;
+    const int c = static_cast<int>(members.size());
+    members.emplace_back();
+    std::deque<int> queue{start};
+    component[start] = c;
+    while (!queue.empty()) {
+      const int index = queue.front();
+      queue.pop_front();
+      members[c].push_back(index);
+      const int i = index % n, j = index / n;
+      for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const int ii = i + di, jj = j + dj;
+        if (ii < 0 || jj < 0 || ii >= n || jj >= n) continue;
+        const int next = static_cast<int>(at(ii, jj));
+        if (cells[next] == OrbitTypeMap::kCut || component[next] >= 0) continue;
+        component[next] = c;
+        queue.push_back(next);
+      }
+    }
+  }
+  map.cells.assign(cells.size(), OrbitTypeMap::kCut);
+  const double smallest = options.min_region * n * n;
+  for (const std::vector<int>& cs : members) {
+    if (static_cast<double>(cs.size()) < smallest || cs.empty()) {
+      for (int index : cs) map.cells[index] = OrbitTypeMap::kSliver;
+      continue;
+    }
+    MapRegion region;
+    region.id = static_cast<int>(map.regions.size()) + 1;
+    region.cells = static_cast<int>(cs.size());
+    int best = *std::min_element(cs.begin(), cs.end());
+    for (int index : cs) {
+      if (distance[index] > distance[best] || (distance[index] == distance[best] && index < best)) best = index;
+    }
+    region.clearance = distance[best];
+    region.first = rectangle.first_min + (best % n + 0.5) / n * w;
+    region.second = rectangle.second_min + (best / n + 0.5) / n * h;
+    for (int index : cs) map.cells[index] = static_cast<int>(map.regions.size());
+    map.regions.push_back(std::move(region));
+  }
+  return map;
+}
+
+namespace {
+
+// The curves through the trace's special points (both ways each), and the points refused.
+void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTypeMapOptions& options, OrbitTypeMap* map) {
+  std::vector<std::pair<std::string, Orbit>> started;  // (condition, orbit): a point met twice is one start
+  const int total = StartSteps(trace);
+  int done = 0;
+  for (const MapTraceBranch& b : trace.branches) {
+    for (const MapStartPoint& p : b.special) {
+      done += 2;
+      if (p.type == "EP" || p.type == "UZ") continue;  // the ends of a branch, user values: no condition
+      const std::string from = fmt::format("{}:{}", b.name, p.label);
+      const std::string condition = CurveCondition(p.type, p.test_function);
+      const bool again = std::any_of(started.begin(), started.end(), [&](const auto& s) {
+        return s.first == condition && OrbitDistance(s.second, p.orbit) <= options.same_orbit;
+      });
+      if (again) continue;
+      started.emplace_back(condition, p.orbit);
+      const double second = ValueOf(p.orbit, r.second), first = ValueOf(p.orbit, r.first);
+      if (!(second >= r.second_min && second <= r.second_max && first >= r.first_min && first <= r.first_max)) {
+        map->skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {}, {} = {})", r.first, first, r.second, second)});
+        continue;
+      }
+      const OrbitContinuationSetup branch_setup = SetupAt(trace, p.orbit, b.unknowns, trace.parameter);
+      std::optional<OrbitContinuationSetup> made;
+      try {
+        made = BoundaryCurve({.orbit = p.orbit, .condition = condition, .parameter = trace.parameter, .unknowns = b.unknowns},
+                              branch_setup, r.second);
+      } catch (const InvalidInput& e) {
+        map->skipped.push_back({from, condition, e.what()});
+        continue;
+      }
+      OrbitContinuationSetup& curve = *made;
+      std::vector<std::string> defining = curve.unwatched;
+      if (curve.condition) {
+        const std::vector<std::string> more = curve.condition->Defining();
+        defining.insert(defining.end(), more.begin(), more.end());
+      }
+      ContinuationOptions& o = curve.options;
+      o.lambda_min = r.first_min;
+      o.lambda_max = r.first_max;
+      o.max_points = options.max_curve_points;
+      o.user_values.clear();
+      o.progress = {};
+      o.unknown_bounds = {{.index = UnknownPosition(curve, r.second), .min = r.second_min, .max = r.second_max, .name = r.second}};
+      for (int direction : {-1, 1}) {
+        if (static_cast<int>(map->curves.size()) >= options.max_curves) {
+          map->skipped.push_back({from, condition, fmt::format("max_curves = {} reached", options.max_curves)});
+          break;
+        }
+        o.direction = direction;
+        MapCurve c;
+        c.id = static_cast<int>(map->curves.size()) + 1;
+        c.kind = condition;
+        c.from = from;
+        c.direction = direction;
+        c.branch = ContinueOrbit(curve);
+        for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
+          c.admissible.push_back(AdmissibleApartFrom(c.branch, k, defining));
+          c.stable.push_back(Column(c.branch, k, orbit_columns::kStable) == 1.0);
+          c.first.push_back(ValueOf(c.branch.orbits[k], r.first));
+          c.second.push_back(ValueOf(c.branch.orbits[k], r.second));
+        }
+        map->curves.push_back(std::move(c));
+      }
+      Report(options, done, total + 1.0, "steps");
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<MapOrbit> OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, double b,
+                               const OrbitTypeMapOptions& options, std::vector<std::string>* failures) {
+  std::vector<MapOrbit> orbits;
+  for (const MapTraceBranch& branch : trace.branches) {
+    for (std::size_t k = 0; k + 1 < branch.orbits.size(); ++k) {
+      const double p = ValueOf(branch.orbits[k], r.first), q = ValueOf(branch.orbits[k + 1], r.first);
+      if (!((p - a) * (q - a) <= 0.0) || p == q) continue;
+      const std::size_t nearer = std::abs(p - a) <= std::abs(q - a) ? k : k + 1;
+      const std::string from = fmt::format("{} pt {}", branch.name, nearer + 1);
+      OrbitContinuationSetup setup = SetupAt(trace, branch.orbits[nearer], branch.unknowns, r.first);
+      std::string why;
+      std::optional<OrbitBranch> there = ContinueTo(setup, a, options.max_content_points, &why);
+      if (there) {
+        setup.start = there->orbits.back();
+        setup.parameter = r.second;
+        there = ContinueTo(setup, b, options.max_content_points, &why);
+      }
+      if (!there) {
+        failures->push_back(fmt::format("{}: {}", from, why));
+        continue;
+      }
+      const std::size_t last = there->orbits.size() - 1;
+      MapOrbit orbit{.signature = there->orbits[last].signature.ToString(),
+                     .admissible = Column(*there, last, orbit_columns::kAdmissible) == 1.0,
+                     .stable = Column(*there, last, orbit_columns::kStable) == 1.0,
+                     .from = from,
+                     .orbit = there->orbits[last]};
+      const bool known = std::any_of(orbits.begin(), orbits.end(), [&](const MapOrbit& o) {
+        return o.signature == orbit.signature && OrbitDistance(o.orbit, orbit.orbit) <= options.same_orbit;
+      });
+      if (!known) orbits.push_back(std::move(orbit));
+    }
+  }
+  return orbits;
+}
+
+OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options) {
+  rectangle.Validate();
+  options.Validate();
+  if (rectangle.first != trace.parameter) {
+    throw InvalidInput("first", rectangle.first, fmt::format("the trace's parameter, {}", trace.parameter));
+  }
+  OrbitTypeMap curves;
+  ContinueCurves(trace, rectangle, options, &curves);
+  std::vector<std::vector<std::pair<double, double>>> polylines;
+  for (const MapCurve& c : curves.curves) {
+    std::vector<std::pair<double, double>> line;
+    for (std::size_t k = 0; k < c.first.size(); ++k) line.emplace_back(c.first[k], c.second[k]);
+    polylines.push_back(std::move(line));
+  }
+  OrbitTypeMap map = CutIntoRegions(rectangle, polylines, options);
+  map.curves = std::move(curves.curves);
+  map.skipped = std::move(curves.skipped);
+  for (std::size_t k = 0; k < map.regions.size(); ++k) {
+    MapRegion& region = map.regions[k];
+    region.orbits = OrbitsAt(trace, rectangle, region.first, region.second, options, &region.failures);
+    const double starts = StartSteps(trace);
+    Report(options, starts + static_cast<double>(k + 1), starts + static_cast<double>(map.regions.size()), "steps");
+  }
+  return map;
+}
+
+}  // namespace stickslip

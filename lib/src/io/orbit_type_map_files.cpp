@@ -1,0 +1,246 @@
+#include "stickslip/io/orbit_type_map_files.hpp"
+
+#include <set>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "result_directory.hpp"
+#include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/result_files.hpp"
+#include "stickslip/io/run.hpp"
+#include "stickslip/io/stored_run.hpp"
+
+namespace stickslip {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+constexpr const char* kCurvesCsv = "curves.csv";
+constexpr const char* kRegionsJson = "regions.json";
+constexpr const char* kComparisonMd = "comparison.md";
+
+std::string CurveDirectory(const MapCurve& c) { return fmt::format("curve-{}", c.id); }
+
+// The run file a curve's directory records: its name and parameter.
+RunFile CurveRun(const MapCurve& c, const OrbitTypeMap& map) {
+  RunFile run;
+  run.path = fmt::format("stickslip map ({} from {}, {} = [{}, {}])", c.kind, c.from, map.rectangle.second,
+                         map.rectangle.second_min, map.rectangle.second_max);
+  run.output = CurveDirectory(c);
+  run.parameter = map.rectangle.first;
+  return run;
+}
+
+std::string FormatCurvesCsv(const OrbitTypeMap& map) {
+  const MapRectangle& r = map.rectangle;
+  std::string out = fmt::format("curve,kind,from,direction,signature,pt,label,{},{},stable,admissible,chi,eta,omega,u_s,u_r,phi,"
+                                "x10,x20,v10,durations\n",
+                                r.first, r.second);
+  for (const MapCurve& c : map.curves) {
+    const std::vector<std::string> labels = PointLabels(c.branch.branch);
+    for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
+      const Orbit& o = c.branch.orbits[k];
+      const Parameters& p = o.parameters;
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{:d},{:d},{},{},{},{},{},{},{},{},{},{}\n", c.id, c.kind, c.from, c.direction,
+                         o.signature.ToString(), k + 1, labels[k], c.first[k], c.second[k], static_cast<int>(c.stable[k]),
+                         static_cast<int>(c.admissible[k]), p.chi, p.eta, p.omega, p.u_s, p.u_r, o.phi, o.x10, o.x20, o.v10,
+                         fmt::join(o.durations, ";"));
+    }
+  }
+  return out;
+}
+
+Json OrbitJson(const MapOrbit& o) {
+  return Json{{"signature", o.signature}, {"admissible", o.admissible}, {"stable", o.stable}, {"from", o.from},
+              {"phi", o.orbit.phi},         {"x10", o.orbit.x10},         {"x20", o.orbit.x20},   {"v10", o.orbit.v10},
+              {"durations", o.orbit.durations}};
+}
+
+std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,
+                              const std::string& brute_force) {
+  const MapRectangle& r = map.rectangle;
+  const int n = map.options.raster;
+  Json rows = Json::array();
+  for (int j = 0; j < n; ++j) {
+    std::string row;
+    for (int i = 0; i < n; ++i) {
+      const int cell = map.cells[static_cast<std::size_t>(j) * n + i];
+      row += fmt::format("{}{}", i ? " " : "", cell >= 0 ? map.regions[cell].id : cell);
+    }
+    rows.push_back(row);
+  }
+  Json regions = Json::array();
+  for (const MapRegion& region : map.regions) {
+    Json orbits = Json::array();
+    for (const MapOrbit& o : region.orbits) orbits.push_back(OrbitJson(o));
+    regions.push_back(Json{{"id", region.id},
+                           {"cells", region.cells},
+                           {r.first, region.first},
+                           {r.second, region.second},
+                           {"clearance", region.clearance},
+                           {"label", region.Label()},
+                           {"stable_types", region.StableTypes()},
+                           {"orbits", orbits},
+                           {"failures", region.failures}});
+  }
+  Json curves = Json::array();
+  for (const MapCurve& c : map.curves) {
+    Json special = Json::array();
+    const std::vector<std::string> labels = PointLabels(c.branch.branch);
+    for (const SpecialPoint& s : c.branch.branch.special_points) {
+      special.push_back(Json{{"label", labels[s.point]},
+                             {"type", s.type},
+                             {"test_function", s.test_function},
+                             {r.first, c.first[s.point]},
+                             {r.second, c.second[s.point]}});
+    }
+    curves.push_back(Json{{"id", c.id},
+                          {"kind", c.kind},
+                          {"from", c.from},
+                          {"direction", c.direction},
+                          {"directory", CurveDirectory(c)},
+                          {"points", c.branch.orbits.size()},
+                          {"end", ToString(c.branch.branch.end)},
+                          {"message", c.branch.branch.end_message},
+                          {"special_points", special}});
+  }
+  Json skipped = Json::array();
+  for (const MapSkippedStart& s : map.skipped) {
+    skipped.push_back(Json{{"from", s.from}, {"condition", s.condition}, {"reason", s.reason}});
+  }
+  Json compared = nullptr;
+  if (comparison) {
+    compared = Json{{"brute_force", brute_force},
+                    {"cells", comparison->cells},
+                    {"compared", comparison->compared},
+                    {"agreeing", comparison->agreeing},
+                    {"agreeing_stable", comparison->agreeing_stable},
+                    {"agreement", comparison->Agreement()},
+                    {"disagreements", comparison->disagreements.size()},
+                    {"explained", comparison->Explained()}};
+  }
+  const Json root{{"trace", trace},
+                  {"first", r.first},
+                  {"second", r.second},
+                  {"rectangle", {{"first_min", r.first_min}, {"first_max", r.first_max}, {"second_min", r.second_min}, {"second_max", r.second_max}}},
+                  {"raster", n},
+                  {"min_region", map.options.min_region},
+                  {"regions", regions},
+                  {"curves", curves},
+                  {"skipped", skipped},
+                  {"comparison", compared},
+                  {"cells", rows}};
+  return root.dump(2) + "\n";
+}
+
+std::string Joined(const std::vector<std::string>& v) { return v.empty() ? "none" : fmt::format("{}", fmt::join(v, "; ")); }
+
+std::string FormatComparisonMd(const OrbitTypeMap& map, const MapComparison& c, const std::string& trace,
+                               const std::string& brute_force) {
+  const MapRectangle& r = map.rectangle;
+  std::string out = fmt::format(
+      "# Orbit-type map of {} against the brute force {}\n\n"
+      "({}, {}) in [{}, {}] x [{}, {}]. Of {} brute-force cells, {} lie farther than two grid steps from every curve "
+      "and inside a region; in {} of them the stable period-1 attractors are the stable orbit types the map assigns "
+      "to the region ({} of them with a stable orbit, {} with none on both sides): agreement {:.4f}. Disagreements: {}, "
+      "of which {} explained.\n\n",
+      trace, brute_force, r.first, r.second, r.first_min, r.first_max, r.second_min, r.second_max, c.cells, c.compared,
+      c.agreeing, c.agreeing_stable, c.agreeing - c.agreeing_stable, c.Agreement(), c.disagreements.size(), c.Explained());
+  if (!c.disagreements.empty()) {
+    out += fmt::format("| cell (i, j) | {} | {} | region | brute force: stable period 1 | map: stable | solved at the cell: stable | "
+                       "other attractors | explanation |\n",
+                       r.first, r.second);
+    out += "|---|---|---|---|---|---|---|---|---|\n";
+    for (const MapCellComparison& d : c.disagreements) {
+      out += fmt::format("| ({}, {}) | {:.6g} | {:.6g} | {} | {} | {} | {} | {} | {} |\n", d.i, d.j, d.first, d.second, d.region,
+                         Joined(d.found), Joined(d.expected), Joined(d.at_cell), Joined(d.others), d.explanation);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
+  MapTrace map;
+  map.parameter = trace.parameter;
+  if (run) SetContinuationOptions(*run, &map.options);
+  UnknownChoice unknowns;
+  if (run) {
+    unknowns.release = run->free;
+    unknowns.fix = run->fix;
+    unknowns.tie_static_friction = run->tie_u_r;
+  }
+  for (std::size_t k = 0; k < trace.branches.size(); ++k) {
+    const StoredRun& stored = trace.runs[k];
+    MapTraceBranch b{.name = trace.branches[k].name, .unknowns = unknowns, .orbits = {}, .special = {}};
+    for (const StoredPoint& p : stored.branch) b.orbits.push_back(p.orbit);
+    for (const StoredSpecialPoint& s : stored.special_points) {
+      b.special.push_back({trace.branches[k].name, s.point.label, s.type, s.test_function, s.point.orbit});
+    }
+    map.branches.push_back(std::move(b));
+  }
+  return map;
+}
+
+std::vector<std::string> TraceTypes(const StoredTrace& trace) {
+  std::set<std::string> types;
+  for (const StoredTraceBranch& b : trace.branches) types.insert(b.signature);
+  return {types.begin(), types.end()};
+}
+
+OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,
+                                          const std::string& brute_force) {
+  return {FormatCurvesCsv(map), FormatRegionsJson(map, trace, comparison, brute_force),
+          comparison ? FormatComparisonMd(map, *comparison, trace, brute_force) : std::string()};
+}
+
+void CheckOrbitTypeMapDirectory(const fs::path& directory) {
+  const std::string name = directory.filename().string();
+  if (name.empty() || name == "." || name == "..") {
+    throw InvalidInput("output", "'" + directory.string() + "'", "a directory's path ending in its name");
+  }
+  std::error_code error;
+  // The nearest existing ancestor must be a directory (the rest is created).
+  for (fs::path up = directory.parent_path(); !up.empty(); up = up.parent_path()) {
+    const fs::file_status s = fs::status(up, error);
+    if (!fs::exists(s)) {
+      if (up == up.parent_path()) break;
+      continue;
+    }
+    if (!fs::is_directory(s)) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
+    break;
+  }
+  const fs::file_status status = fs::symlink_status(directory, error);
+  if (!fs::exists(status)) return;
+  if (!fs::is_directory(status) || !fs::is_regular_file(directory / kRegionsJson, error)) {
+    throw InvalidInput("output", "'" + directory.string() + "'",
+                       "a new directory, or one holding an orbit-type map (regions.json) to replace");
+  }
+}
+
+void WriteOrbitTypeMapFiles(const fs::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files) {
+  CheckOrbitTypeMapDirectory(directory);
+  const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
+  std::error_code error;
+  fs::create_directories(parent, error);
+  if (error) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
+  auto ours = [](const std::string& name) {
+    return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd || name.starts_with("curve-");
+  };
+  detail::ReplaceDirectory(
+      parent, directory.filename().string(),
+      [&](const fs::path& target) {
+        for (const MapCurve& c : map.curves) WriteRunFiles(target, RecordRun(CurveRun(c, map), c.branch));
+        WriteFileAtomically(target / kCurvesCsv, files.curves_csv);
+        WriteFileAtomically(target / kRegionsJson, files.regions_json);
+        if (!files.comparison_md.empty()) WriteFileAtomically(target / kComparisonMd, files.comparison_md);
+      },
+      ours);
+}
+
+}  // namespace stickslip

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# stickslip map: the orbit-type map of a rectangle from a stored trace; the same bytes from run to
+# run; a curve's directory an ordinary run that `run` restarts from; bad input refused with exit 2,
+# one line naming the option, and nothing written.
+source "$(dirname "$0")/expect.sh"
+cd "$root" || exit 1  # the trace's run file is named relative to the source tree
+t51=(--trace results/paper-5.1-omega-trace --second u_r)
+rect=(--second-from 0.4 --second-to 0.6 --first-from 0.53 --first-to 0.6 --raster 64)
+
+"$bin" map --help > "$work/help.txt" && pass || fail "map --help"
+for word in --trace --second-from --first-to --brute-force --output --raster; do
+  grep -q -- "$word" "$work/help.txt" && pass || fail "help lacks $word"
+done
+
+"$bin" map "${t51[@]}" "${rect[@]}" --output "$work/m1" > "$work/m1.txt" 2> "$work/m1.err" && pass || fail "map: $(cat "$work/m1.err")"
+for f in curves.csv regions.json curve-1/branch.csv curve-1/special-points.csv curve-1/summary.json; do
+  [ -s "$work/m1/$f" ] && pass || fail "m1/$f missing"
+done
+"$bin" map "${t51[@]}" "${rect[@]}" --output "$work/m2" > /dev/null 2>&1 && pass || fail "second map"
+diff -r "$work/m1" "$work/m2" > /dev/null && pass || fail "a second run gives other bytes"
+# Over the map just written: it is replaced, with the same bytes.
+"$bin" map "${t51[@]}" "${rect[@]}" --output "$work/m2" > /dev/null 2>&1 && pass || fail "map over a map"
+diff -r "$work/m1" "$work/m2" > /dev/null && pass || fail "a map written over a map gives other bytes"
+/usr/bin/python3 - "$work/m1" <<'PY' && pass || fail "regions.json and curves.csv of m1"
+import csv, json, sys
+d = sys.argv[1]
+m = json.load(open(d + "/regions.json"))
+assert m["first"] == "omega" and m["second"] == "u_r", m["first"]
+assert len(m["curves"]) >= 2 and m["regions"], (len(m["curves"]), len(m["regions"]))
+rows = list(csv.DictReader(open(d + "/curves.csv")))
+for r in rows:  # every point in the rectangle (its edges to rounding)
+    assert 0.53 - 1e-9 <= float(r["omega"]) <= 0.6 + 1e-9 and 0.4 - 1e-9 <= float(r["u_r"]) <= 0.6 + 1e-9, r
+assert {c["id"] for c in m["curves"]} == {int(r["curve"]) for r in rows}
+last = {}
+for r in rows:
+    last[int(r["curve"])] = r
+for c in m["curves"]:
+    assert c["end"] in ("parameter-bound", "terminal-event", "max-points"), c
+    # A curve that leaves the rectangle through its second parameter ends on the edge (located EP).
+    for side, bound in (("u_r_min", 0.4), ("u_r_max", 0.6)):
+        if c["message"].startswith("reached " + side):
+            assert abs(float(last[c["id"]]["u_r"]) - bound) <= 1e-9, (c, last[c["id"]]["u_r"])
+            assert c["special_points"][-1]["type"] == "EP", c
+PY
+
+# A later run restarts from a curve's labelled point (results root: the map's directory).
+cat > "$work/restart.toml" <<'TOML'
+output = "from-curve"
+[start]
+restart = { run = "curve-1", label = "EP1" }
+[continuation]
+parameter = "omega"
+direction = "down"
+range = [0.5, 0.6]
+max_points = 5
+TOML
+"$bin" run --results "$work/m1" "$work/restart.toml" > "$work/restart.txt" 2>&1 && pass || fail "restart from curve-1:EP1: $(cat "$work/restart.txt")"
+rm -rf "$work/m1/from-curve"
+
+# Bad input: exit 2, one line naming the option, nothing written into $work/out.
+expect 2 "second-from" "$bin" map "${t51[@]}" --second-from 0.6 --second-to 0.4 --output "$work/out/m"
+expect 2 "second-from" "$bin" map "${t51[@]}" --second-from 1e300 --second-to 0.4 --output "$work/out/m"
+expect 2 "second-to" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 1e300 --output "$work/out/m"
+expect 2 "second-from" "$bin" map "${t51[@]}" --second-from nan --second-to 0.6 --output "$work/out/m"
+expect 2 "first-from" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.7 --first-to 0.6 --output "$work/out/m"
+expect 2 "first-to" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-to -1e300 --output "$work/out/m"
+expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second omega --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second stiffness --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+expect 2 "trace" "$bin" map --trace "$work/none" --second u_r --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+expect 2 "trace" "$bin" map --trace results/paper-5.1-omega-up --second u_r --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+expect 2 "raster" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --raster 5 --output "$work/out/m"
+expect 2 "min-region" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --min-region 1e300 --output "$work/out/m"
+expect 2 "brute-force" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --brute-force "$work/none.csv" --output "$work/out/m"
+echo "not a map" > "$work/out/file"
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file"
+mkdir -p "$work/out/mine" && echo "mine" > "$work/out/mine/notes.txt"
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/mine"
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output ""
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file/sub"
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/.."
+
+finish

@@ -1,0 +1,179 @@
+// stickslip map: the orbit-type map of a rectangle of two parameters from a stored trace
+// (branches/orbit_type_map.hpp): the curves through the trace's special points, the regions they
+// cut, each region's orbits; with --brute-force, the comparison with a map of `stickslip
+// map-sweep` (analysis/map_comparison.hpp). Written to --output (io/orbit_type_map_files.hpp).
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "progress_line.hpp"
+#include "stickslip/io/map_file.hpp"
+#include "stickslip/io/orbit_type_map_files.hpp"
+#include "stickslip/io/run_file.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+const OrbitTypeMapOptions kDefaults;
+
+struct MapArgs {
+  std::string trace;
+  std::string second;
+  double second_from = 0.0, second_to = 0.0;  // required
+  double first_from = 0.0, first_to = 0.0;    // default: the trace's range
+  std::string brute_force;
+  std::string output;
+  int raster = kDefaults.raster;
+  double min_region = kDefaults.min_region;
+};
+
+std::string ReadWholeFile(const std::string& path, const std::string& field, const std::string& what) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw InvalidInput(field, "'" + path + "'", what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput(field, "'" + path + "'", what);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Each corner of the rectangle, with the trace's other data, must be valid model data.
+void CheckCorners(const MapRectangle& r, const Parameters& base) {
+  for (double a : {r.first_min, r.first_max}) {
+    for (double b : {r.second_min, r.second_max}) {
+      Parameters p = base;
+      p[*ParameterFromString(r.first)] = a;
+      p[*ParameterFromString(r.second)] = b;
+      if (std::optional<InvalidInput> error = Validate(p)) {
+        const bool first = error->field() == r.first;
+        throw InvalidInput(first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
+                           first ? a : b, fmt::format("a valid {}: {}", error->field(), error->Predicate()));
+      }
+    }
+  }
+}
+
+int RunMap(const MapArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"trace", "second", "second-from", "second-to", "output"}) {
+    if (cmd.count(fmt::format("--{}", option)) == 0) {
+      throw InvalidInput(option, "(not given)", fmt::format("--{} is required", option));
+    }
+  }
+  if (!IsTraceDirectory(args.trace)) throw InvalidInput("trace", "'" + args.trace + "'", "a trace's directory (stickslip trace: trace.json)");
+  CheckOrbitTypeMapDirectory(args.output);
+  const StoredTrace trace = ReadTraceFiles(args.trace);
+  MapRectangle r{.first = trace.parameter, .second = args.second, .second_min = args.second_from, .second_max = args.second_to};
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const StoredTracePoint& p : trace.points) {
+    lo = std::min(lo, p.lambda);
+    hi = std::max(hi, p.lambda);
+  }
+  r.first_min = cmd.count("--first-from") ? args.first_from : lo;
+  r.first_max = cmd.count("--first-to") ? args.first_to : hi;
+  const std::optional<ParameterId> second = ParameterFromString(args.second);
+  if (!second || args.second == trace.parameter) {
+    throw InvalidInput("second", "'" + args.second + "'", fmt::format("a parameter other than the trace's {}: chi, eta, omega, u_s, u_r", trace.parameter));
+  }
+  if (!(r.first_min < r.first_max)) throw InvalidInput("first-from", r.first_min, fmt::format("< first-to ({})", r.first_max));
+  if (!(r.second_min < r.second_max)) throw InvalidInput("second-from", r.second_min, fmt::format("< second-to ({})", r.second_max));
+  CheckCorners(r, trace.runs.front().branch.front().orbit.parameters);
+  std::optional<BruteForceMap> brute;
+  if (!args.brute_force.empty()) {
+    brute = ReadBruteForceMapCsv(ReadWholeFile(args.brute_force, "brute-force", "a map file of stickslip map-sweep"), args.brute_force);
+    if (ToString(brute->first) != r.first || ToString(brute->second) != r.second) {
+      throw InvalidInput("brute-force", "'" + args.brute_force + "'", fmt::format("a map over ({}, {})", r.first, r.second));
+    }
+  }
+  std::optional<RunFile> run;
+  try {
+    run = ReadRunFile(trace.run_file);
+  } catch (const std::exception&) {
+    fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", trace.run_file);
+  }
+  OrbitTypeMapOptions options;
+  options.raster = args.raster;
+  options.min_region = args.min_region;
+  ProgressLine line("map");
+  options.progress = line.Callback();
+  const auto started = std::chrono::steady_clock::now();
+  const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
+  const OrbitTypeMap map = BuildOrbitTypeMap(input, r, options);
+  line.Clear();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::optional<MapComparison> comparison;
+  if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);
+  const OrbitTypeMapFiles files = FormatOrbitTypeMapFiles(map, args.trace, comparison ? &*comparison : nullptr, args.brute_force);
+  WriteOrbitTypeMapFiles(args.output, map, files);
+  fmt::print("map {} x {} from {}: {} curve(s), {} start(s) skipped, {} region(s) in {:.2f} s; written to {}\n", r.first, r.second,
+             args.trace, map.curves.size(), map.skipped.size(), map.regions.size(), seconds, args.output);
+  for (const MapRegion& region : map.regions) {
+    fmt::print("  region {} ({} cells) at ({}, {}) = ({:.6g}, {:.6g}): {}\n", region.id, region.cells, r.first, r.second, region.first,
+               region.second, region.Label());
+  }
+  if (comparison) {
+    fmt::print("brute force {}: agreement {}/{} = {:.4f} of the cells clear of the curves ({} with a stable orbit); {} "
+               "disagreement(s), {} explained\n",
+               args.brute_force, comparison->agreeing, comparison->compared, comparison->Agreement(), comparison->agreeing_stable,
+               comparison->disagreements.size(), comparison->Explained());
+  }
+  // A curve whose start did not converge, or whose step fell below ds_min, is a failure of the
+  // computation (the map is written all the same); its end elsewhere is the curve's.
+  int failed = 0;
+  for (const MapCurve& c : map.curves) {
+    const BranchEnd end = c.branch.branch.end;
+    if (end != BranchEnd::kStartFailed && end != BranchEnd::kStepTooSmall) continue;
+    ++failed;
+    fmt::print(stderr, "curve {} ({} from {}): {}: {}\n", c.id, c.kind, c.from, ToString(end), c.branch.branch.end_message);
+  }
+  return failed > 0 ? kExitNoConvergence : kExitOk;
+}
+
+}  // namespace
+
+Command AddMapCommand(CLI::App& app) {
+  auto args = std::make_shared<MapArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "map",
+      "Orbit-type map of a rectangle of two parameters from a stored trace (stickslip trace): the curves through "
+      "every special point of the trace that a two-parameter curve can be continued from (type changes, LP, PD, "
+      "SB, TR), across the rectangle both ways, ending at its edges and at codimension-two points; the rectangle "
+      "cut by them into regions, and in each region every orbit of the trace at one interior point (admissible "
+      "or not, stable or not). With --brute-force, the comparison with a map of stickslip map-sweep over the same "
+      "parameters. Writes --output/: curves.csv, curve-<k>/ (each curve as a run: restart from its labels with "
+      "--results OUTPUT), regions.json, comparison.md. Parameters are the paper's scaled ones. Exit 0 when written; "
+      "2 for bad input (nothing written); 3 when a curve's start did not converge or its step fell below ds_min "
+      "(the map is written, the curve named on stderr).");
+  cmd->add_option("--trace", args->trace, "the trace's directory (results/<trace>/, with trace.json)");
+  cmd->add_option("--second", args->second, "the second parameter: chi, eta, omega, u_s or u_r, not the trace's");
+  AddNumberOption(*cmd, "--second-from", &args->second_from, "the parameter's valid range, < second-to",
+                  "the second parameter's lower bound (scaled; its valid range: chi in (0, 1), eta > 0, ...)");
+  AddNumberOption(*cmd, "--second-to", &args->second_to, "the parameter's valid range", "its upper bound");
+  AddNumberOption(*cmd, "--first-from", &args->first_from, "the parameter's valid range, < first-to",
+                  "the trace's parameter's lower bound (default: the trace's smallest value)");
+  AddNumberOption(*cmd, "--first-to", &args->first_to, "the parameter's valid range",
+                  "its upper bound (default: the trace's largest value)");
+  cmd->add_option("--brute-force", args->brute_force, "a map file of stickslip map-sweep over the same two parameters to compare with");
+  cmd->add_option("--output", args->output, "the map's directory (new, or one holding a map, which is replaced)");
+  AddCountOption(*cmd, "--raster", &args->raster, 16, 2000, "cells per side of the raster the regions are cut on (16 to 2000)");
+  AddNumberOption(*cmd, "--min-region", &args->min_region, "0 <= min-region <= 0.5",
+                  "components smaller than this fraction of the rectangle are slivers, dropped (0 to 0.5)");
+  return {cmd, [args, cmd] {
+            try {
+              return RunMap(*args, *cmd);
+            } catch (const InvalidInput& e) {
+              std::string option = e.field();
+              std::replace(option.begin(), option.end(), '_', '-');
+              throw e.Renamed(option);
+            }
+          }};
+}
+
+}  // namespace stickslip::cli
