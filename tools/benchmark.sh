@@ -18,13 +18,16 @@ import json, os, sys
 data = json.load(open(sys.argv[1]))
 mpi_data = json.load(open(sys.argv[3]))
 median, sweep, per_period, map_cells, traces, curves, mpi = {}, {}, {}, {}, {}, {}, {}
+orbit_map = None
 for b in data["benchmarks"] + mpi_data["benchmarks"]:
     if b.get("error_occurred"):
         sys.exit(f"benchmark {b['name']} failed: {b.get('error_message')}")
     if b.get("aggregate_name") != "median":
         continue
     name, arg = b["run_name"].split("/")[:2]
-    if name == "CurveWallTime":
+    if name == "OrbitTypeMapWallTime":
+        orbit_map = b  # milliseconds, curves, regions, curve_points, us_per_curve_point
+    elif name == "CurveWallTime":
         curves[arg] = b  # milliseconds, points, us_per_point, omega_min/max, u_r_min/max
     elif name == "MpiMapSweep":
         mpi[(int(b["ranks"]), int(b["cells"]))] = b["real_time"]  # milliseconds
@@ -91,6 +94,12 @@ refused = sorted(k[len("curve_refused:"):] for k in ctx if k.startswith("curve_r
 if refused:
     lines += ["", "No curve yet (BoundaryCurve refuses the condition): " +
               ", ".join(f"{k} ({ctx['curve_refused:' + k]})" for k in refused) + "."]
+if orbit_map:
+    lines += ["", f"The orbit-type map of the §5.1 data in (ω, u_r) over [0.5, 0.62] x [0.3, 0.8] (BuildOrbitTypeMap from "
+              f"results/paper-5.1-omega-trace, as tools/run.sh computes it, one core): {orbit_map['real_time']:.0f} ms for "
+              f"{int(orbit_map['curves'])} curves of {int(orbit_map['curve_points'])} points in all and "
+              f"{int(orbit_map['regions'])} regions with their content, {orbit_map['us_per_curve_point']:.0f} µs per curve "
+              "point with everything counted."]
 if mpi:
     mctx = mpi_data["context"]
     big = max(cells for _, cells in mpi)

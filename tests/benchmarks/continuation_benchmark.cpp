@@ -12,7 +12,8 @@
 // speed-up of its chains, and the exact simulator's cost per forcing period over a short and a
 // long run; and the brute-force map's cells per second per core; and the wall time of whole traces
 // (every branch, switch and confirming simulation), closed form against Odeint; and the boundary
-// curves of the section 4.1 data in (omega, u_r) (CurveWallTime, registered in main).
+// curves of the section 4.1 data in (omega, u_r) (CurveWallTime, registered in main); and the whole
+// orbit-type map of the section 5.1 data in (omega, u_r), as tools/run.sh computes it.
 #include <algorithm>
 #include <filesystem>
 #include <limits>
@@ -23,12 +24,15 @@
 #include <benchmark/benchmark.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_type_map.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/orbit_type_map_files.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/stored_run.hpp"
+#include "stickslip/io/trace_files.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -175,6 +179,31 @@ BENCHMARK(SimulationPerPeriod)->ArgName("periods")->Arg(500)->Arg(4000)->Unit(be
 // curve_refused:<branch>:<label>, and how each half ends with the special points on it
 // (curve_ends:<branch>:<label>, from one run at registration). Counters: points
 // (both halves), us_per_point, and the curve's extent: omega_min/max, u_r_min/max.
+// The orbit-type map of results/paper-5.1-omega-trace over tools/run.sh's rectangle: every curve,
+// the regions and their content; the cost per curve point counts the whole map's time.
+void OrbitTypeMapWallTime(benchmark::State& state) {
+  const std::filesystem::path source(STICKSLIP_SOURCE_DIR);
+  const StoredTrace trace = ReadTraceFiles(source / "results" / "paper-5.1-omega-trace");
+  const RunFile run = ReadRunFile(source / trace.run_file);
+  const MapTrace input = MapTraceOf(trace, &run);
+  const MapRectangle rectangle{.first = "omega", .second = "u_r", .first_min = 0.5, .first_max = 0.62,
+                               .second_min = 0.3, .second_max = 0.8};
+  double points = 0.0, maps = 0.0;
+  std::size_t curves = 0, regions = 0;
+  for (auto _ : state) {
+    const OrbitTypeMap map = BuildOrbitTypeMap(input, rectangle);
+    curves = map.curves.size();
+    regions = map.regions.size();
+    for (const MapCurve& curve : map.curves) points += static_cast<double>(curve.first.size());
+    maps += 1.0;
+  }
+  state.counters["curves"] = static_cast<double>(curves);
+  state.counters["regions"] = static_cast<double>(regions);
+  state.counters["curve_points"] = points / std::max(1.0, maps);
+  state.counters["us_per_curve_point"] = benchmark::Counter(points * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(OrbitTypeMapWallTime)->UseRealTime()->Unit(benchmark::kMillisecond);
+
 struct CurveRun {
   std::string name;                             // "branch-1:SK2"
   std::vector<OrbitContinuationSetup> halves;  // down, up
