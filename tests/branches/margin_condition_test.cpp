@@ -19,6 +19,7 @@
 #include "stickslip/io/run.hpp"
 #include "stickslip/orbits/margin_gradients.hpp"
 #include "support/random_orbits.hpp"
+#include "support/restart_in_omega.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -163,15 +164,7 @@ TEST(MarginCondition, RefusesMarginsWhoseZeroIsNoRegularCurve) {
 
 // The setup a run file restarting at branch:label of results/<trace> in omega makes.
 OrbitContinuationSetup TraceRestart(const char* trace, const char* branch, const char* label) {
-  RunFile file;
-  file.path = "test";
-  file.output = "curve";
-  file.restart_run = branch;
-  file.restart_label = label;
-  file.parameter = "omega";
-  file.range_min = 0.3;
-  file.range_max = 0.9;
-  return MakeSetup(file, std::filesystem::path(STICKSLIP_SOURCE_DIR) / "results" / trace);
+  return MakeSetup(RestartInOmega(branch, label), std::filesystem::path(STICKSLIP_SOURCE_DIR) / "results" / trace);
 }
 
 // Assembled here from the periodicity equations (omega and u_r free) and the margin's value and
