@@ -95,7 +95,7 @@ MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
     // the end condition coincide, the Jacobian loses a rank all along the curve, and Newton stops
     // at tau - d_i of the square root of its tolerance with either sign, a sign the bordered
     // determinant follows (measured on the §5.1 map: tau - d3 = +-1e-8, smallest singular value
-    // 0.57 |tau - d3|, a "BP" at every sign change, 6 to 13 per curve).
+    // 0.57 |tau - d3|, a "BP" at every sign change: 24 on the four curves, 1 to 14 each).
     const Margin* exit_slope = Named(margins, fmt::format("exit-slope:{}", i + 1));
     if ((std::string_view(margin_.base) == "G1") == into_negative && exit_slope && !(exit_slope->value > 0.0)) {
       throw InvalidInput("condition", value,
