@@ -21,6 +21,7 @@
 #include "stickslip/orbits/adjacent_type.hpp"
 #include "stickslip/model/events.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "support/restart_in_omega.hpp"
 
 namespace stickslip {
 namespace {
@@ -28,19 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path Results() { return fs::path(STICKSLIP_SOURCE_DIR) / "results"; }
-
-// A run file restarting in omega from run:label.
-RunFile RestartInOmega(const std::string& run, const std::string& label) {
-  RunFile file;
-  file.path = "test";
-  file.output = "curve";
-  file.restart_run = run;
-  file.restart_label = label;
-  file.parameter = "omega";
-  file.range_min = 0.3;
-  file.range_max = 0.9;
-  return file;
-}
 
 // A curve as a run file's restart = { run, label, boundary = "u_r" } starts it, continued in
 // omega the way `direction` says, with user values of omega.

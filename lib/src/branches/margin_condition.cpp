@@ -60,6 +60,8 @@ MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
   const int n = start.signature.size();
   const int i = margin_.segment;
   const bool stick = i >= 0 && start.signature.segments()[i] == Mode::kStick;
+  // A stick ends into slip- (its G1 reaches zero) or into slip+ (its G does).
+  const bool into_negative = stick && SegmentPlan(start.signature, Extent::kListed)[i].end == SegmentEndKind::kExitToNegative;
   if (margin_.kind == MarginKind::kFrictionLevel) {
     throw InvalidInput("condition", value,
                        fmt::format("{}: not sliding-friction (u_s = 0 ends the physical family; it is no boundary "
@@ -85,6 +87,24 @@ MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
                        fmt::format("an interior margin with a minimum at the start orbit (it is {} there: {})",
                                    margin_.value, std::isnan(margin_.value) ? "not defined" : "no interior minimum"));
   }
+  if (interior_ && margin_.kind == MarginKind::kStickConstraint) {
+    // The constraint that ends the stick (G into slip+, G1 into slip-) is zero at the exit by the
+    // end condition. Its interior minimum is a zero of its own only if a maximum separates the two,
+    // that is if the constraint falls into the exit (exit-slope:i > 0). Otherwise the minimum and
+    // the exit are one double root, the tangential exit: with tau = d_i the rows f(tau) = 0 and
+    // the end condition coincide, the Jacobian loses a rank all along the curve, and Newton stops
+    // at tau - d_i of the square root of its tolerance with either sign, a sign the bordered
+    // determinant follows (measured on the §5.1 map: tau - d3 = +-1e-8, smallest singular value
+    // 0.57 |tau - d3|, a "BP" at every sign change: 24 on the four curves, 1 to 14 each).
+    const Margin* exit_slope = Named(margins, fmt::format("exit-slope:{}", i + 1));
+    if ((std::string_view(margin_.base) == "G1") == into_negative && exit_slope && !(exit_slope->value > 0.0)) {
+      throw InvalidInput("condition", value,
+                         fmt::format("{}: not an interior minimum of the constraint that ends the stick where no "
+                                     "maximum separates it from the exit ({} = {} <= 0 there: the two zeros are one, "
+                                     "the tangential exit): use {}",
+                                     kRegular, Column(exit_slope->Name()), exit_slope->value, Column(exit_slope->Name())));
+    }
+  }
 
   defining_.push_back(value);
   auto also = [&](const Margin* m) {
@@ -93,7 +113,6 @@ MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
   const std::string next = std::to_string((i + 1) % n + 1);
   if (margin_.kind == MarginKind::kDuration) {
     also(EndBefore(margins, i, n));  // the stick entry
-    const bool into_negative = SegmentPlan(start.signature, Extent::kListed)[i].end == SegmentEndKind::kExitToNegative;
     also(Named(margins, fmt::format("{}:{}", into_negative ? "G1" : "G", i + 1)));
   } else if (std::string_view(margin_.base) == "stick-entry") {
     const Margin* g = Named(margins, "G:" + next);

@@ -22,7 +22,11 @@
 // acceleration at its start does, at the zero of the margin of the end before it, which the
 // message names); sliding-friction (u_s = 0 ends the physical family: no boundary between orbit
 // types); an interior margin with no interior minimum at the start orbit (velocity:i = +inf there)
-// or one that is not defined there (NaN).
+// or one that is not defined there (NaN); an interior minimum of the constraint that ends the stick
+// (G:i into slip+, G1:i into slip-) with exit-slope:i <= 0 at the start orbit (no maximum between
+// the minimum and the exit: they are one double root, the tangential exit, whose regular condition
+// is exit-slope:i; continued as an interior minimum it has tau = d_i, a Jacobian of deficient rank
+// all along the curve and a spurious BP at every sign change of the rounding in tau - d_i).
 //
 // Along the curve, the margins that sit on zero identically (Defining()) are recorded, not watched:
 //   every margin                its own column;
