@@ -43,6 +43,9 @@ for r in rows:
     last[int(r["curve"])] = r
 for c in m["curves"]:
     assert c["end"] in ("parameter-bound", "terminal-event", "max-points"), c
+    # The special points under the labels a run restarts from (two at one point have two labels).
+    stored = [(r["label"], r["type"]) for r in csv.DictReader(open(f"{d}/curve-{c['id']}/special-points.csv"))]
+    assert [(p["label"], p["type"]) for p in c["special_points"]] == stored, (c["special_points"], stored)
     # A curve that leaves the rectangle through its second parameter ends on the edge (located EP).
     for side, bound in (("u_r_min", 0.4), ("u_r_max", 0.6)):
         if c["message"].startswith("reached " + side):

@@ -92,9 +92,10 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace,
   Json curves = Json::array();
   for (const MapCurve& c : map.curves) {
     Json special = Json::array();
-    const std::vector<std::string> labels = PointLabels(c.branch.branch);
-    for (const SpecialPoint& s : c.branch.branch.special_points) {
-      special.push_back(Json{{"label", labels[s.point]},
+    const std::vector<std::string> labels = SpecialPointLabels(c.branch.branch);  // as curve-<k>/special-points.csv
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+      const SpecialPoint& s = c.branch.branch.special_points[k];
+      special.push_back(Json{{"label", labels[k]},
                              {"type", s.type},
                              {"test_function", s.test_function},
                              {r.first, c.first[s.point]},
