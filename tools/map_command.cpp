@@ -72,6 +72,11 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   if (!IsTraceDirectory(args.trace)) throw InvalidInput("trace", "'" + args.trace + "'", "a trace's directory (stickslip trace: trace.json)");
   CheckOrbitTypeMapDirectory(args.output);
   const StoredTrace trace = ReadTraceFiles(args.trace);
+  if (!ParameterFromString(trace.parameter) || trace.runs.empty() || trace.runs.front().branch.empty()) {
+    throw InvalidInput("trace", "'" + args.trace + "'",
+                       fmt::format("a trace with points in a parameter: chi, eta, omega, u_s, u_r (it has {} in '{}')",
+                                   trace.points.size(), trace.parameter));
+  }
   MapRectangle r{.first = trace.parameter, .second = args.second, .second_min = args.second_from, .second_max = args.second_to};
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const StoredTracePoint& p : trace.points) {

@@ -94,6 +94,18 @@ expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second stif
 expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second-from 0.4 --second-to 0.6 --output "$work/out/m"
 expect 2 "trace" "$bin" map --trace "$work/none" --second u_r --second-from 0.4 --second-to 0.6 --output "$work/out/m"
 expect 2 "trace" "$bin" map --trace results/paper-5.1-omega-up --second u_r --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+# A trace without branches (it read as one, and the map took its first point: a crash).
+mkdir -p "$work/empty-trace"
+/usr/bin/python3 - results/paper-5.1-omega-trace "$work/empty-trace" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1] + "/trace.json"))
+t["branches"] = []
+t["directions"] = [dict(d, branches=[]) for d in t["directions"]]
+json.dump(t, open(sys.argv[2] + "/trace.json", "w"), indent=2)
+open(sys.argv[2] + "/trace.csv", "w").write(open(sys.argv[1] + "/trace.csv").readline())
+PY
+expect 2 "trace = '$work/empty-trace' is invalid: valid range a trace with points" \
+  "$bin" map --trace "$work/empty-trace" --second u_r --second-from 0.4 --second-to 0.6 --first-from 0.5 --first-to 0.6 --output "$work/out/m"
 expect 2 "raster" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --raster 5 --output "$work/out/m"
 expect 2 "min-region" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --min-region 1e300 --output "$work/out/m"
 expect 2 "brute-force" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --brute-force "$work/none.csv" --output "$work/out/m"

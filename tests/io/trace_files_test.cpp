@@ -100,6 +100,14 @@ TEST_F(StoredTraceFiles, ADamagedFileIsAnErrorNamingItsFile) {
   edited.replace(edited.find("\"points\": "), 10, "\"points\": 9");
   Spit(t / "trace.json", edited);
   expect_error("a count that differs from the branch", "trace.json");
+  // Another parameter than its branches' (trace.csv's column renamed with it): not read as theirs.
+  edited = json;
+  edited.replace(edited.find("\"parameter\": \"omega\""), 20, "\"parameter\": \"bogus\"");
+  Spit(t / "trace.json", edited);
+  std::string renamed = csv;
+  renamed.replace(renamed.find(",omega,"), 7, ",bogus,");
+  Spit(t / "trace.csv", renamed);
+  expect_error("a parameter that is not its branches'", "trace.json: key 'parameter' = 'bogus' differs");
   Spit(t / "trace.csv", csv.substr(0, csv.find('\n') + 1));
   expect_error("rows missing", "trace.csv");
   std::string header = csv;

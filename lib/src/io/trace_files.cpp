@@ -400,6 +400,11 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
                      fmt::format("says {} points of '{}': {} has {} of '{}'", b.points, b.signature, b.name,
                                  run.branch.size(), run.summary.signature));
     }
+    // trace.csv's column is read as this variable of every branch's orbits.
+    if (run.summary.parameter != t.parameter) {
+      throw KeyError(json_file, "parameter",
+                     fmt::format("= '{}' differs from the parameter of {}, '{}'", t.parameter, b.name, run.summary.parameter));
+    }
     t.runs.push_back(std::move(run));
     for (const StoredBifurcation& m : b.bifurcations) {
       if (!m.followed.empty()) t.followed_runs.push_back(ReadRunFiles(trace_directory / m.followed));
