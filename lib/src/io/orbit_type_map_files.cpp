@@ -1,6 +1,5 @@
 #include "stickslip/io/orbit_type_map_files.hpp"
 
-#include <algorithm>
 #include <set>
 #include <system_error>
 
@@ -232,10 +231,7 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const
   if (error) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
   // The curves' directories are curve-<k>; "curve-3-continued" or "curve-notes.md" is the user's.
   auto ours = [](const std::string& name) {
-    const std::string_view number = std::string_view(name).substr(std::min(name.size(), std::string_view("curve-").size()));
-    const bool curve = name.starts_with("curve-") && !number.empty() && number.size() <= 9 &&
-                       std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; });
-    return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd || curve;
+    return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd || detail::IsNumberedName(name, "curve-", false);
   };
   return detail::ReplaceDirectory(
       parent, directory.filename().string(),

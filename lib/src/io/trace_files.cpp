@@ -374,9 +374,10 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
 std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
   const TraceFiles files = FormatTraceFiles(trace);
   CheckTraceOutputDirectory(results_root, trace.output);
-  // The files a trace or a run writes; every other entry of the old directory is the user's.
+  // The files a trace or a run writes (its branches branch-<k>, its followed runs branch-<k>-<label>);
+  // every other entry of the old directory is the user's ("branch-notes.md" too).
   auto ours = [](const std::string& name) {
-    return name == kTraceCsv || name == kTraceJson || name.starts_with(kBranchPrefix) || name == "branch.csv" ||
+    return name == kTraceCsv || name == kTraceJson || detail::IsNumberedName(name, kBranchPrefix, true) || name == "branch.csv" ||
            name == "special-points.csv" || name == "summary.json";
   };
   return detail::ReplaceDirectory(
