@@ -125,6 +125,9 @@ echo "not a map" > "$work/out/file"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file"
 mkdir -p "$work/out/mine" && echo "mine" > "$work/out/mine/notes.txt"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/mine"
+# A regions.json of the user's (not a map's) does not make the directory a map's.
+mkdir -p "$work/out/geo" && echo '{"type": "FeatureCollection", "features": []}' > "$work/out/geo/regions.json"
+expect 2 "output" "$bin" map "${t51[@]}" "${rect[@]}" --output "$work/out/geo"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output ""
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file/sub"

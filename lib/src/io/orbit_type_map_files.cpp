@@ -1,5 +1,7 @@
 #include "stickslip/io/orbit_type_map_files.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <set>
 #include <system_error>
 
@@ -23,6 +25,8 @@ namespace {
 constexpr const char* kCurvesCsv = "curves.csv";
 constexpr const char* kRegionsJson = "regions.json";
 constexpr const char* kComparisonMd = "comparison.md";
+// The keys a map's regions.json has (FormatRegionsJson), by which a directory holds a map.
+constexpr const char* kRegionsKeys[] = {"trace", "first", "second", "rectangle", "raster", "regions", "curves", "cells"};
 
 std::string CurveDirectory(const MapCurve& c) { return fmt::format("curve-{}", c.id); }
 
@@ -216,7 +220,16 @@ void CheckOrbitTypeMapDirectory(const fs::path& directory) {
   if (!fs::is_directory(up, error) || CanCreateFileIn(up)) throw InvalidInput("output", shown, "a directory that can be created");
   const fs::file_status status = fs::symlink_status(directory, error);
   if (!fs::exists(status)) return;
-  if (!fs::is_directory(status) || !fs::is_regular_file(directory / kRegionsJson, error)) {
+  // A map's regions.json, not any: a foreign one (and the directory's other files) is the user's.
+  const auto is_map = [&] {
+    try {
+      const Json json = detail::ParseJsonObject(detail::ReadTextFile(directory / kRegionsJson), directory / kRegionsJson);
+      return std::all_of(std::begin(kRegionsKeys), std::end(kRegionsKeys), [&](const char* key) { return json.contains(key); });
+    } catch (const InvalidInput&) {
+      return false;
+    }
+  };
+  if (!fs::is_directory(status) || !is_map()) {
     throw InvalidInput("output", shown, "a new directory, or one holding an orbit-type map (regions.json) to replace");
   }
   // The user's files move out of it into the new map.

@@ -57,7 +57,8 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const std::filesystem::path& dir
 
 // Throws InvalidInput naming "output" where `directory` could not be written by
 // WriteOrbitTypeMapFiles: its name is no run name (IsRunName: one component, no control
-// characters, at most 200 bytes), it is a file or a directory that holds no map, or no file can be
+// characters, at most 200 bytes), it is a file or a directory that holds no map (a regions.json
+// with a map's keys: the user's own regions.json is no map's), or no file can be
 // created in it or in its nearest existing ancestor. Touches nothing (but a probe file it removes).
 void CheckOrbitTypeMapDirectory(const std::filesystem::path& directory);
 
