@@ -105,7 +105,7 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   try {
     run = ReadRunFile(trace.run_file);
   } catch (const std::exception&) {
-    fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", trace.run_file);
+    // Noted once the map is computed: bad input found on the way stays the one line on stderr.
   }
   OrbitTypeMapOptions options;
   options.raster = args.raster;
@@ -116,6 +116,7 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
   const OrbitTypeMap map = BuildOrbitTypeMap(input, r, options);
   line.Clear();
+  if (!run) fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", trace.run_file);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::optional<MapComparison> comparison;
   if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);

@@ -85,6 +85,10 @@ expect 2 "second-from = 0.7 is invalid: valid range <= 0.4962" "$bin" map "${t51
 expect 2 "second-to = 0.45 is invalid: valid range >= 0.4962" "$bin" map "${t51[@]}" --second-from 0.3 --second-to 0.45 --output "$work/out/m"
 expect 2 "first-from = 0.8 is invalid" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.8 --first-to 0.9 --output "$work/out/m"
 expect 2 "first-to = 0.52 is invalid" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.5 --first-to 0.52 --output "$work/out/m"
+# From another directory (the trace's run file, named relative to the source tree, not found): the
+# same one line.
+expect 2 "second-from = 0.7 is invalid" env -C "$work" "$bin" map --trace "$root/results/paper-5.1-omega-trace" --second u_r \
+  --second-from 0.7 --second-to 0.8 --output "$work/out/m"
 # A second parameter the trace does not hold (paper-4.2 releases u_s and ties u_r to it).
 expect 2 "second = u_r is invalid: valid range a parameter the trace holds" \
   "$bin" map --trace results/paper-4.2-omega-trace --second u_r --second-from 0.2 --second-to 0.3 --output "$work/out/m"
