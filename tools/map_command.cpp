@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -14,6 +15,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "progress_line.hpp"
+#include "stickslip/analysis/map_comparison.hpp"
 #include "stickslip/io/map_file.hpp"
 #include "stickslip/io/orbit_type_map_files.hpp"
 #include "stickslip/io/run_file.hpp"
@@ -55,7 +57,7 @@ void CheckCorners(const MapRectangle& r, const Parameters& base) {
       if (std::optional<InvalidInput> error = Validate(p)) {
         const bool first = error->field() == r.first;
         throw InvalidInput(first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
-                           first ? a : b, fmt::format("a valid {}: {}", error->field(), error->Predicate()));
+                           first ? a : b, fmt::format("a valid {}: {}", error->field(), error->valid_range()));
       }
     }
   }
@@ -70,6 +72,11 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   if (!IsTraceDirectory(args.trace)) throw InvalidInput("trace", "'" + args.trace + "'", "a trace's directory (stickslip trace: trace.json)");
   CheckOrbitTypeMapDirectory(args.output);
   const StoredTrace trace = ReadTraceFiles(args.trace);
+  if (!ParameterFromString(trace.parameter) || trace.runs.empty() || trace.runs.front().branch.empty()) {
+    throw InvalidInput("trace", "'" + args.trace + "'",
+                       fmt::format("a trace with points in a parameter: chi, eta, omega, u_s, u_r (it has {} in '{}')",
+                                   trace.points.size(), trace.parameter));
+  }
   MapRectangle r{.first = trace.parameter, .second = args.second, .second_min = args.second_from, .second_max = args.second_to};
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const StoredTracePoint& p : trace.points) {
@@ -86,17 +93,19 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   if (!(r.second_min < r.second_max)) throw InvalidInput("second-from", r.second_min, fmt::format("< second-to ({})", r.second_max));
   CheckCorners(r, trace.runs.front().branch.front().orbit.parameters);
   std::optional<BruteForceMap> brute;
-  if (!args.brute_force.empty()) {
+  if (cmd.count("--brute-force") > 0) {  // "" too: no file
     brute = ReadBruteForceMapCsv(ReadWholeFile(args.brute_force, "brute-force", "a map file of stickslip map-sweep"), args.brute_force);
-    if (ToString(brute->first) != r.first || ToString(brute->second) != r.second) {
-      throw InvalidInput("brute-force", "'" + args.brute_force + "'", fmt::format("a map over ({}, {})", r.first, r.second));
+    try {
+      CheckComparable(*brute, r);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("brute-force", fmt::format("'{}' ({})", args.brute_force, e.value()), e.valid_range());
     }
   }
   std::optional<RunFile> run;
   try {
     run = ReadRunFile(trace.run_file);
   } catch (const std::exception&) {
-    fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", trace.run_file);
+    // Noted once the map is computed: bad input found on the way stays the one line on stderr.
   }
   OrbitTypeMapOptions options;
   options.raster = args.raster;
@@ -107,13 +116,15 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
   const OrbitTypeMap map = BuildOrbitTypeMap(input, r, options);
   line.Clear();
+  if (!run) fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", trace.run_file);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::optional<MapComparison> comparison;
   if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);
   const OrbitTypeMapFiles files = FormatOrbitTypeMapFiles(map, args.trace, comparison ? &*comparison : nullptr, args.brute_force);
-  WriteOrbitTypeMapFiles(args.output, map, files);
+  const std::vector<std::string> kept = WriteOrbitTypeMapFiles(args.output, map, files);
   fmt::print("map {} x {} from {}: {} curve(s), {} start(s) skipped, {} region(s) in {:.2f} s; written to {}\n", r.first, r.second,
              args.trace, map.curves.size(), map.skipped.size(), map.regions.size(), seconds, args.output);
+  if (!kept.empty()) fmt::print("{}: kept {} other file(s): {}\n", args.output, kept.size(), fmt::join(kept, ", "));
   for (const MapRegion& region : map.regions) {
     fmt::print("  region {} ({} cells) at ({}, {}) = ({:.6g}, {:.6g}): {}\n", region.id, region.cells, r.first, r.second, region.first,
                region.second, region.Label());
@@ -169,7 +180,10 @@ Command AddMapCommand(CLI::App& app) {
             try {
               return RunMap(*args, *cmd);
             } catch (const InvalidInput& e) {
-              std::string option = e.field();
+              // The rectangle's bounds as the options name them (MapRectangle: first_min, ...).
+              static const std::map<std::string, std::string> kBounds = {
+                  {"first_min", "first-from"}, {"first_max", "first-to"}, {"second_min", "second-from"}, {"second_max", "second-to"}};
+              std::string option = kBounds.count(e.field()) ? kBounds.at(e.field()) : e.field();
               std::replace(option.begin(), option.end(), '_', '-');
               throw e.Renamed(option);
             }

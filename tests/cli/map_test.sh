@@ -18,8 +18,15 @@ for f in curves.csv regions.json curve-1/branch.csv curve-1/special-points.csv c
 done
 "$bin" map "${t51[@]}" "${rect[@]}" --output "$work/m2" > /dev/null 2>&1 && pass || fail "second map"
 diff -r "$work/m1" "$work/m2" > /dev/null && pass || fail "a second run gives other bytes"
-# Over the map just written: it is replaced, with the same bytes.
-"$bin" map "${t51[@]}" "${rect[@]}" --output "$work/m2" > /dev/null 2>&1 && pass || fail "map over a map"
+# Over the map just written: it is replaced, with the same bytes, and the user's files in it (named
+# like a curve's directory or not) move into the new one and are listed.
+echo "mine" > "$work/m2/curve-notes.md"
+mkdir "$work/m2/curve-1-continued" && echo "mine" > "$work/m2/curve-1-continued/notes.txt"
+"$bin" map "${t51[@]}" "${rect[@]}" --output "$work/m2" > "$work/m2.txt" 2>&1 && pass || fail "map over a map"
+[ "$(cat "$work/m2/curve-notes.md" "$work/m2/curve-1-continued/notes.txt" 2>&1)" = "$(printf 'mine\nmine')" ] && pass ||
+  fail "a map written over a map lost the user's files: $(ls "$work/m2")"
+grep -q "kept 2 other file(s): curve-1-continued, curve-notes.md" "$work/m2.txt" && pass || fail "kept files not listed: $(cat "$work/m2.txt")"
+rm -r "$work/m2/curve-notes.md" "$work/m2/curve-1-continued"
 diff -r "$work/m1" "$work/m2" > /dev/null && pass || fail "a map written over a map gives other bytes"
 /usr/bin/python3 - "$work/m1" <<'PY' && pass || fail "regions.json and curves.csv of m1"
 import csv, json, sys
@@ -36,6 +43,9 @@ for r in rows:
     last[int(r["curve"])] = r
 for c in m["curves"]:
     assert c["end"] in ("parameter-bound", "terminal-event", "max-points"), c
+    # The special points under the labels a run restarts from (two at one point have two labels).
+    stored = [(r["label"], r["type"]) for r in csv.DictReader(open(f"{d}/curve-{c['id']}/special-points.csv"))]
+    assert [(p["label"], p["type"]) for p in c["special_points"]] == stored, (c["special_points"], stored)
     # A curve that leaves the rectangle through its second parameter ends on the edge (located EP).
     for side, bound in (("u_r_min", 0.4), ("u_r_max", 0.6)):
         if c["message"].startswith("reached " + side):
@@ -57,28 +67,83 @@ TOML
 "$bin" run --results "$work/m1" "$work/restart.toml" > "$work/restart.txt" 2>&1 && pass || fail "restart from curve-1:EP1: $(cat "$work/restart.txt")"
 rm -rf "$work/m1/from-curve"
 
+# A trace whose preset chooses its unknowns (paper-4.2: u_s released, u_r tied to it): the map
+# continues its orbits with them (with the defaults the system is not square).
+"$bin" map --trace results/paper-4.2-omega-trace --second chi --second-from 0.65 --second-to 0.75 --first-from 0.5 --first-to 0.6 \
+  --raster 16 --output "$work/m42" > "$work/m42.txt" 2>&1 && pass || fail "map of the paper-4.2 trace: $(cat "$work/m42.txt")"
+
 # Bad input: exit 2, one line naming the option, nothing written into $work/out.
 expect 2 "second-from" "$bin" map "${t51[@]}" --second-from 0.6 --second-to 0.4 --output "$work/out/m"
 expect 2 "second-from" "$bin" map "${t51[@]}" --second-from 1e300 --second-to 0.4 --output "$work/out/m"
 expect 2 "second-to" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 1e300 --output "$work/out/m"
 expect 2 "second-from" "$bin" map "${t51[@]}" --second-from nan --second-to 0.6 --output "$work/out/m"
+expect 2 "second-from = 0.001 is invalid: valid range a valid u_r: u_s = 0.0138 <= u_r <= 1000" \
+  "$bin" map "${t51[@]}" --second-from 0.001 --second-to 0.6 --output "$work/out/m"
 expect 2 "first-from" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.7 --first-to 0.6 --output "$work/out/m"
+# A rectangle the trace does not pass through (no curve starts in it; no orbit is continued from it).
+expect 2 "second-from = 0.7 is invalid: valid range <= 0.4962" "$bin" map "${t51[@]}" --second-from 0.7 --second-to 0.8 --output "$work/out/m"
+expect 2 "second-to = 0.45 is invalid: valid range >= 0.4962" "$bin" map "${t51[@]}" --second-from 0.3 --second-to 0.45 --output "$work/out/m"
+expect 2 "first-from = 0.8 is invalid" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.8 --first-to 0.9 --output "$work/out/m"
+expect 2 "first-to = 0.52 is invalid" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.5 --first-to 0.52 --output "$work/out/m"
+# From another directory (the trace's run file, named relative to the source tree, not found): the
+# same one line.
+expect 2 "second-from = 0.7 is invalid" env -C "$work" "$bin" map --trace "$root/results/paper-5.1-omega-trace" --second u_r \
+  --second-from 0.7 --second-to 0.8 --output "$work/out/m"
+# A second parameter the trace does not hold (paper-4.2 releases u_s and ties u_r to it).
+expect 2 "second = u_r is invalid: valid range a parameter the trace holds" \
+  "$bin" map --trace results/paper-4.2-omega-trace --second u_r --second-from 0.2 --second-to 0.3 --output "$work/out/m"
 expect 2 "first-to" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-to -1e300 --output "$work/out/m"
 expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second omega --second-from 0.4 --second-to 0.6 --output "$work/out/m"
 expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second stiffness --second-from 0.4 --second-to 0.6 --output "$work/out/m"
 expect 2 "second" "$bin" map --trace results/paper-5.1-omega-trace --second-from 0.4 --second-to 0.6 --output "$work/out/m"
 expect 2 "trace" "$bin" map --trace "$work/none" --second u_r --second-from 0.4 --second-to 0.6 --output "$work/out/m"
 expect 2 "trace" "$bin" map --trace results/paper-5.1-omega-up --second u_r --second-from 0.4 --second-to 0.6 --output "$work/out/m"
+# A trace without branches (it read as one, and the map took its first point: a crash).
+mkdir -p "$work/empty-trace"
+/usr/bin/python3 - results/paper-5.1-omega-trace "$work/empty-trace" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1] + "/trace.json"))
+t["branches"] = []
+t["directions"] = [dict(d, branches=[]) for d in t["directions"]]
+json.dump(t, open(sys.argv[2] + "/trace.json", "w"), indent=2)
+open(sys.argv[2] + "/trace.csv", "w").write(open(sys.argv[1] + "/trace.csv").readline())
+PY
+expect 2 "trace = '$work/empty-trace' is invalid: valid range a trace with points" \
+  "$bin" map --trace "$work/empty-trace" --second u_r --second-from 0.4 --second-to 0.6 --first-from 0.5 --first-to 0.6 --output "$work/out/m"
 expect 2 "raster" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --raster 5 --output "$work/out/m"
 expect 2 "min-region" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --min-region 1e300 --output "$work/out/m"
 expect 2 "brute-force" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --brute-force "$work/none.csv" --output "$work/out/m"
+expect 2 "brute-force = ''" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --brute-force "" --output "$work/out/m"
+# Brute-force maps that cannot be compared: no cell in the rectangle (the §6 grid), no cell at all,
+# a shard (some rows of a grid: the grid steps are not the cells' spacing).
+bf51=results/maps/paper-5.1-omega-u_r-brute-force.csv
+expect 2 "valid range a map with cells in the rectangle" \
+  "$bin" map "${t51[@]}" "${rect[@]}" --brute-force results/maps/paper-6-omega-u_r-brute-force.csv --output "$work/out/m"
+head -n 1 "$bf51" > "$work/header-only.csv"
+expect 2 "brute-force = '$work/header-only.csv' (0 cells)" \
+  "$bin" map "${t51[@]}" "${rect[@]}" --brute-force "$work/header-only.csv" --output "$work/out/m"
+awk -F, 'NR == 1 || $2 == 3' "$bf51" > "$work/shard.csv"
+expect 2 "valid range a whole map, every cell of its grid" \
+  "$bin" map "${t51[@]}" "${rect[@]}" --brute-force "$work/shard.csv" --output "$work/out/m"
 echo "not a map" > "$work/out/file"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file"
 mkdir -p "$work/out/mine" && echo "mine" > "$work/out/mine/notes.txt"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/mine"
+# A regions.json of the user's (not a map's) does not make the directory a map's.
+mkdir -p "$work/out/geo" && echo '{"type": "FeatureCollection", "features": []}' > "$work/out/geo/regions.json"
+expect 2 "output" "$bin" map "${t51[@]}" "${rect[@]}" --output "$work/out/geo"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output ""
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/file/sub"
 expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/.."
+# Refused before the work, not after it: a control character, a name too long for the temporary
+# directory beside it, a directory where nothing can be created (as root, permissions do not tell: /proc).
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/a
+b"
+expect 2 "output" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output "$work/out/$(printf 'x%.0s' {1..250})"
+if [ -d /proc/self ]; then
+  expect 2 "output = '/proc/m' is invalid: valid range a directory that can be created" \
+    "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --output /proc/m
+fi
 
 finish

@@ -67,10 +67,15 @@ TEST_F(StoredTraceFiles, ReadingThenWritingGivesTheSameBytesAndEveryBranchIsARun
     const RunFiles files = FormatRunFiles(run);
     EXPECT_EQ(files.branch_csv, Slurp(dir_ / "trace" / read.branches[k].name / "branch.csv"));
   }
-  // Written again over itself: a file of the user's is kept.
+  // Written again over itself: the files of the user's are kept, named like a branch or not.
   Spit(dir_ / "trace" / "notes.txt", "mine");
-  EXPECT_EQ(WriteTraceFiles(dir_, read), std::vector<std::string>{"notes.txt"});
+  Spit(dir_ / "trace" / "branch-notes.md", "mine");
+  fs::create_directory(dir_ / "trace" / "branch-2-map");
+  Spit(dir_ / "trace" / "branch-2-map" / "regions.json", "mine");
+  EXPECT_EQ(WriteTraceFiles(dir_, read), (std::vector<std::string>{"branch-2-map", "branch-notes.md", "notes.txt"}));
   EXPECT_EQ(Slurp(dir_ / "trace" / "notes.txt"), "mine");
+  EXPECT_EQ(Slurp(dir_ / "trace" / "branch-notes.md"), "mine");
+  EXPECT_EQ(Slurp(dir_ / "trace" / "branch-2-map" / "regions.json"), "mine");
   EXPECT_EQ(Slurp(dir_ / "trace" / "trace.csv"), a.trace_csv);
 }
 
@@ -100,6 +105,14 @@ TEST_F(StoredTraceFiles, ADamagedFileIsAnErrorNamingItsFile) {
   edited.replace(edited.find("\"points\": "), 10, "\"points\": 9");
   Spit(t / "trace.json", edited);
   expect_error("a count that differs from the branch", "trace.json");
+  // Another parameter than its branches' (trace.csv's column renamed with it): not read as theirs.
+  edited = json;
+  edited.replace(edited.find("\"parameter\": \"omega\""), 20, "\"parameter\": \"bogus\"");
+  Spit(t / "trace.json", edited);
+  std::string renamed = csv;
+  renamed.replace(renamed.find(",omega,"), 7, ",bogus,");
+  Spit(t / "trace.csv", renamed);
+  expect_error("a parameter that is not its branches'", "trace.json: key 'parameter' = 'bogus' differs");
   Spit(t / "trace.csv", csv.substr(0, csv.find('\n') + 1));
   expect_error("rows missing", "trace.csv");
   std::string header = csv;

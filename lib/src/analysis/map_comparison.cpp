@@ -60,14 +60,31 @@ std::string CanonicalOrbitType(const std::string& signature) {
   return fmt::format("{}{}", fmt::join(best, " "), tail);
 }
 
+void CheckComparable(const BruteForceMap& brute, const MapRectangle& r) {
+  const std::string over = fmt::format("({}, {})", ToString(brute.first), ToString(brute.second));
+  if (over != fmt::format("({}, {})", r.first, r.second)) {
+    throw InvalidInput("brute force", over, fmt::format("a map over ({}, {})", r.first, r.second));
+  }
+  const std::size_t whole = static_cast<std::size_t>(brute.first_count) * static_cast<std::size_t>(brute.second_count);
+  if (brute.cells.size() != whole) {
+    throw InvalidInput("brute force", fmt::format("{} cells of {} x {}", brute.cells.size(), brute.first_count, brute.second_count),
+                       "a whole map, every cell of its grid (shards merged by stickslip map-sweep --merge)");
+  }
+  const bool inside = std::any_of(brute.cells.begin(), brute.cells.end(), [&](const MapCell& c) {
+    return c.first >= r.first_min && c.first <= r.first_max && c.second >= r.second_min && c.second <= r.second_max;
+  });
+  if (!inside) {
+    throw InvalidInput("brute force", fmt::format("{} cells", brute.cells.size()),
+                       fmt::format("a map with cells in the rectangle {} in [{}, {}], {} in [{}, {}]", r.first, r.first_min,
+                                   r.first_max, r.second, r.second_min, r.second_max));
+  }
+}
+
 MapComparison CompareWithBruteForce(const OrbitTypeMap& map, const MapTrace* trace, const std::vector<std::string>& trace_types,
                                     const BruteForceMap& brute, const MapComparisonOptions& options) {
   options.Validate();
   const MapRectangle& r = map.rectangle;
-  if (ToString(brute.first) != r.first || ToString(brute.second) != r.second) {
-    throw InvalidInput("brute force", fmt::format("({}, {})", ToString(brute.first), ToString(brute.second)),
-                       fmt::format("a map over ({}, {})", r.first, r.second));
-  }
+  CheckComparable(brute, r);
   std::set<std::string> on_trace;
   for (const std::string& t : trace_types) on_trace.insert(CanonicalOrbitType(t));
   const double h1 = Step(brute, true, r), h2 = Step(brute, false, r);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -96,6 +98,32 @@ std::optional<OrbitBranch> ContinueTo(OrbitContinuationSetup setup, double targe
     return std::nullopt;
   }
   return branch;
+}
+
+// The trace must pass through the rectangle, at a value of the second parameter it holds: the
+// curves start at its special points there, the regions' orbits are continued from its points.
+void CheckTraceInRectangle(const MapTrace& trace, const MapRectangle& r) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::optional<double> held;
+  for (const MapTraceBranch& b : trace.branches) {
+    for (const Orbit& o : b.orbits) {
+      lo = std::min(lo, ValueOf(o, r.first));
+      hi = std::max(hi, ValueOf(o, r.first));
+      const double second = ValueOf(o, r.second);
+      if (!held) held = second;
+      if (second != *held) {
+        throw InvalidInput("second", r.second, fmt::format("a parameter the trace holds (its {} runs from {} to {} on {})",
+                                                           r.second, *held, second, b.name));
+      }
+    }
+  }
+  if (!held) throw InvalidInput("trace", fmt::format("{} branches without points", trace.branches.size()), "a trace with points");
+  const std::string on = fmt::format("(the trace's {} = {}: the curves start on it)", r.second, *held);
+  if (r.second_min > *held) throw InvalidInput("second_min", r.second_min, fmt::format("<= {} {}", *held, on));
+  if (r.second_max < *held) throw InvalidInput("second_max", r.second_max, fmt::format(">= {} {}", *held, on));
+  const std::string range = fmt::format("(the trace's {} runs from {} to {})", r.first, lo, hi);
+  if (r.first_min > hi) throw InvalidInput("first_min", r.first_min, fmt::format("<= {} {}", hi, range));
+  if (r.first_max < lo) throw InvalidInput("first_max", r.first_max, fmt::format(">= {} {}", lo, range));
 }
 
 }  // namespace
@@ -372,6 +400,7 @@ OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectan
   if (rectangle.first != trace.parameter) {
     throw InvalidInput("first", rectangle.first, fmt::format("the trace's parameter, {}", trace.parameter));
   }
+  CheckTraceInRectangle(trace, rectangle);
   OrbitTypeMap curves;
   ContinueCurves(trace, rectangle, options, &curves);
   std::vector<std::vector<std::pair<double, double>>> polylines;

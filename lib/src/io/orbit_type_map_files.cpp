@@ -1,5 +1,7 @@
 #include "stickslip/io/orbit_type_map_files.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <set>
 #include <system_error>
 
@@ -10,6 +12,7 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/start_input.hpp"
 #include "stickslip/io/stored_run.hpp"
 
 namespace stickslip {
@@ -22,6 +25,8 @@ namespace {
 constexpr const char* kCurvesCsv = "curves.csv";
 constexpr const char* kRegionsJson = "regions.json";
 constexpr const char* kComparisonMd = "comparison.md";
+// The keys a map's regions.json has (FormatRegionsJson), by which a directory holds a map.
+constexpr const char* kRegionsKeys[] = {"trace", "first", "second", "rectangle", "raster", "regions", "curves", "cells"};
 
 std::string CurveDirectory(const MapCurve& c) { return fmt::format("curve-{}", c.id); }
 
@@ -90,9 +95,10 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace,
   Json curves = Json::array();
   for (const MapCurve& c : map.curves) {
     Json special = Json::array();
-    const std::vector<std::string> labels = PointLabels(c.branch.branch);
-    for (const SpecialPoint& s : c.branch.branch.special_points) {
-      special.push_back(Json{{"label", labels[s.point]},
+    const std::vector<std::string> labels = SpecialPointLabels(c.branch.branch);  // as curve-<k>/special-points.csv
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+      const SpecialPoint& s = c.branch.branch.special_points[k];
+      special.push_back(Json{{"label", labels[k]},
                              {"type", s.type},
                              {"test_function", s.test_function},
                              {r.first, c.first[s.point]},
@@ -169,11 +175,13 @@ MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
   MapTrace map;
   map.parameter = trace.parameter;
   if (run) SetContinuationOptions(*run, &map.options);
+  // The trace's unknowns as its start had them: a preset's (paper-4.2 releases u_s, tied to u_r),
+  // then the run file's. Its restart point gives values only, so it is not read.
   UnknownChoice unknowns;
   if (run) {
-    unknowns.release = run->free;
-    unknowns.fix = run->fix;
-    unknowns.tie_static_friction = run->tie_u_r;
+    RunFile choice = *run;
+    choice.restart_run.clear();
+    unknowns = StartUnknowns(StartInputOf(choice, {}));
   }
   for (std::size_t k = 0; k < trace.branches.size(); ++k) {
     const StoredRun& stored = trace.runs[k];
@@ -200,39 +208,45 @@ OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::st
 }
 
 void CheckOrbitTypeMapDirectory(const fs::path& directory) {
-  const std::string name = directory.filename().string();
-  if (name.empty() || name == "." || name == "..") {
-    throw InvalidInput("output", "'" + directory.string() + "'", "a directory's path ending in its name");
+  const std::string shown = "'" + directory.string() + "'";
+  if (!IsRunName(directory.filename().string())) {
+    throw InvalidInput("output", shown, fmt::format("a directory's path ending in its name, {}", kRunNameRule));
   }
   std::error_code error;
-  // The nearest existing ancestor must be a directory (the rest is created).
-  for (fs::path up = directory.parent_path(); !up.empty(); up = up.parent_path()) {
-    const fs::file_status s = fs::status(up, error);
-    if (!fs::exists(s)) {
-      if (up == up.parent_path()) break;
-      continue;
-    }
-    if (!fs::is_directory(s)) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
-    break;
-  }
+  // The nearest existing ancestor must be a directory that takes new entries (the rest is created).
+  fs::path up = directory.parent_path();
+  while (!up.empty() && up != up.root_path() && !fs::exists(fs::status(up, error))) up = up.parent_path();
+  if (up.empty()) up = ".";
+  if (!fs::is_directory(up, error) || CanCreateFileIn(up)) throw InvalidInput("output", shown, "a directory that can be created");
   const fs::file_status status = fs::symlink_status(directory, error);
   if (!fs::exists(status)) return;
-  if (!fs::is_directory(status) || !fs::is_regular_file(directory / kRegionsJson, error)) {
-    throw InvalidInput("output", "'" + directory.string() + "'",
-                       "a new directory, or one holding an orbit-type map (regions.json) to replace");
+  // A map's regions.json, not any: a foreign one (and the directory's other files) is the user's.
+  const auto is_map = [&] {
+    try {
+      const Json json = detail::ParseJsonObject(detail::ReadTextFile(directory / kRegionsJson), directory / kRegionsJson);
+      return std::all_of(std::begin(kRegionsKeys), std::end(kRegionsKeys), [&](const char* key) { return json.contains(key); });
+    } catch (const InvalidInput&) {
+      return false;
+    }
+  };
+  if (!fs::is_directory(status) || !is_map()) {
+    throw InvalidInput("output", shown, "a new directory, or one holding an orbit-type map (regions.json) to replace");
   }
+  // The user's files move out of it into the new map.
+  if (CanCreateFileIn(directory)) throw InvalidInput("output", shown, "a map's directory that can be written");
 }
 
-void WriteOrbitTypeMapFiles(const fs::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files) {
+std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files) {
   CheckOrbitTypeMapDirectory(directory);
   const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
   std::error_code error;
   fs::create_directories(parent, error);
   if (error) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
+  // The curves' directories are curve-<k>; "curve-3-continued" or "curve-notes.md" is the user's.
   auto ours = [](const std::string& name) {
-    return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd || name.starts_with("curve-");
+    return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd || detail::IsNumberedName(name, "curve-", false);
   };
-  detail::ReplaceDirectory(
+  return detail::ReplaceDirectory(
       parent, directory.filename().string(),
       [&](const fs::path& target) {
         for (const MapCurve& c : map.curves) WriteRunFiles(target, RecordRun(CurveRun(c, map), c.branch));

@@ -45,6 +45,23 @@ nlohmann::ordered_json ParseJsonObject(const std::string& text, const fs::path& 
   return json;
 }
 
+bool IsNumberedName(std::string_view name, std::string_view prefix, bool labelled) {
+  if (!name.starts_with(prefix)) return false;
+  std::string_view rest = name.substr(prefix.size());
+  const auto span = [&rest](auto is) {
+    const std::size_t n = std::find_if_not(rest.begin(), rest.end(), is) - rest.begin();
+    rest.remove_prefix(n);
+    return n;
+  };
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  const std::size_t number = span(digit);
+  if (number == 0 || number > 9) return false;
+  if (rest.empty()) return true;
+  if (!labelled || rest.front() != '-') return false;
+  rest.remove_prefix(1);
+  return span([](char c) { return c >= 'A' && c <= 'Z'; }) > 0 && span(digit) > 0 && rest.empty();
+}
+
 std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const std::string& output,
                                           const std::function<void(const fs::path&)>& write,
                                           const std::function<bool(const std::string&)>& ours) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,11 @@ InvalidInput KeyError(const std::filesystem::path& file, const std::string& key,
 // The JSON text, keys in their order; InvalidInput "<file>: invalid JSON: ..." naming the line and
 // column, or "<file>: is invalid: valid a JSON object" for any other value.
 nlohmann::ordered_json ParseJsonObject(const std::string& text, const std::filesystem::path& file);
+
+// Whether `name` is `prefix` and a number (1 to 9 digits), with `labelled` optionally followed by
+// '-' and a special point's label (capitals, then digits): the entries a writer owns among the
+// user's ("curve-3" of a map; "branch-3" and "branch-3-PD2" of a trace, not "branch-notes.md").
+bool IsNumberedName(std::string_view name, std::string_view prefix, bool labelled);
 
 // Writes results_root/<output>/ as a whole: `write` fills a temporary directory beside it, which
 // then replaces the old one. Every entry of the old directory for which `ours` is false (a file of

@@ -38,6 +38,20 @@ std::vector<std::string> PointLabels(const Branch& branch) {
   return labels;
 }
 
+std::vector<std::string> SpecialPointLabels(const Branch& branch) {
+  const std::vector<std::string> labels = PointLabels(branch);
+  int counter = static_cast<int>(std::count_if(labels.begin(), labels.end(), [](const std::string& l) { return !l.empty(); }));
+  std::vector<bool> taken(branch.points.size(), false);
+  std::vector<std::string> special;
+  for (const SpecialPoint& s : branch.special_points) {
+    std::string label = labels[s.point];
+    if (label.empty() || taken[s.point]) label = fmt::format("{}{}", s.type, ++counter);
+    taken[s.point] = true;
+    special.push_back(std::move(label));
+  }
+  return special;
+}
+
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
   // The monitor's columns by name: its margins, then what it records of the stability and the
   // orbit's measures.
@@ -77,16 +91,11 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
                     ToString(b.shooting), ToString(b.branch.end), b.branch.end_message};
   const std::vector<std::string> labels = PointLabels(b.branch);
   for (std::size_t i = 0; i < b.branch.points.size(); ++i) stored.branch.push_back(record(static_cast<int>(i), labels[i]));
-  // Every special point has a label of its own: the first at a point takes the point's label, a
-  // second one there (the branch's end at a located point: LP3, then the end's EP) the next
-  // number (EP4), so that no two rows of special-points.csv share a label.
-  int counter = static_cast<int>(std::count_if(labels.begin(), labels.end(), [](const std::string& l) { return !l.empty(); }));
-  std::vector<bool> taken(b.branch.points.size(), false);
-  for (const SpecialPoint& s : b.branch.special_points) {
-    std::string label = labels[s.point];
-    if (label.empty() || taken[s.point]) label = fmt::format("{}{}", s.type, ++counter);
-    taken[s.point] = true;
-    stored.special_points.push_back({record(s.point, label), s.type, s.test_function, s.located});
+  // Every special point has a label of its own (SpecialPointLabels).
+  const std::vector<std::string> special = SpecialPointLabels(b.branch);
+  for (std::size_t k = 0; k < special.size(); ++k) {
+    const SpecialPoint& s = b.branch.special_points[k];
+    stored.special_points.push_back({record(s.point, special[k]), s.type, s.test_function, s.located});
   }
   return stored;
 }

@@ -374,9 +374,10 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
 std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
   const TraceFiles files = FormatTraceFiles(trace);
   CheckTraceOutputDirectory(results_root, trace.output);
-  // The files a trace or a run writes; every other entry of the old directory is the user's.
+  // The files a trace or a run writes (its branches branch-<k>, its followed runs branch-<k>-<label>);
+  // every other entry of the old directory is the user's ("branch-notes.md" too).
   auto ours = [](const std::string& name) {
-    return name == kTraceCsv || name == kTraceJson || name.starts_with(kBranchPrefix) || name == "branch.csv" ||
+    return name == kTraceCsv || name == kTraceJson || detail::IsNumberedName(name, kBranchPrefix, true) || name == "branch.csv" ||
            name == "special-points.csv" || name == "summary.json";
   };
   return detail::ReplaceDirectory(
@@ -399,6 +400,11 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
       throw KeyError(json_file, b.name,
                      fmt::format("says {} points of '{}': {} has {} of '{}'", b.points, b.signature, b.name,
                                  run.branch.size(), run.summary.signature));
+    }
+    // trace.csv's column is read as this variable of every branch's orbits.
+    if (run.summary.parameter != t.parameter) {
+      throw KeyError(json_file, "parameter",
+                     fmt::format("= '{}' differs from the parameter of {}, '{}'", t.parameter, b.name, run.summary.parameter));
     }
     t.runs.push_back(std::move(run));
     for (const StoredBifurcation& m : b.bifurcations) {

@@ -192,6 +192,8 @@ std::string_view SetKeyRange(std::string_view key) {
   return "any finite number";
 }
 
+UnknownChoice StartUnknowns(const StartInput& input) { return Unknowns(input, Preset(input.preset)); }
+
 StartProblem BuildStartProblem(const StartInput& input) {
   const PaperPreset* preset = Preset(input.preset);
   const Signature signature = OrbitType(input, preset);

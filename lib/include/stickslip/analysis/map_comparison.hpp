@@ -65,8 +65,13 @@ struct MapComparison {
 // order (a " / antisymmetric" or other suffix after the segments kept).
 std::string CanonicalOrbitType(const std::string& signature);
 
-// Throws InvalidInput naming "brute force" when the brute-force map's parameters are not the
-// map's (first and second).
+// Throws InvalidInput naming "brute force" unless `brute` can be compared with a map of
+// `rectangle`: a map over its two parameters (first and second), whole (every cell of its grid: a
+// shard compares only some rows, and its grid steps are not the cells' spacing), with a cell in the
+// rectangle. Callers check it before the map's work.
+void CheckComparable(const BruteForceMap& brute, const MapRectangle& rectangle);
+
+// Throws InvalidInput as CheckComparable.
 // `trace`, where not null, is the map's: the disagreeing cells' contents are solved there.
 MapComparison CompareWithBruteForce(const OrbitTypeMap& map, const MapTrace* trace, const std::vector<std::string>& trace_types,
                                     const BruteForceMap& brute, const MapComparisonOptions& options = {});

@@ -152,8 +152,10 @@ struct OrbitTypeMap {
 OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std::vector<std::pair<double, double>>>& polylines,
                             const OrbitTypeMapOptions& options);
 
-// The map. Throws InvalidInput for an invalid rectangle or options, and naming "first" when the
-// rectangle's first parameter is not the trace's.
+// The map. Throws InvalidInput for an invalid rectangle or options, naming "first" when the
+// rectangle's first parameter is not the trace's, "second" when the trace does not hold the second
+// one fixed, and the bound (first_min, ...) that leaves the trace outside the rectangle (its value
+// of the second parameter, or its whole range of the first).
 OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options = {});
 
 // Every orbit of the trace at (first, second) of the rectangle's parameters, as a region's content

@@ -31,8 +31,9 @@
 namespace stickslip {
 
 // The map's input from a stored trace: every branch's points and special points. Each branch's
-// unknowns are the trace run file's (run: its [unknowns] and [continuation] step sizes; nullptr: the
-// defaults). The shooting and flow are the defaults.
+// unknowns are the trace's start's (run: its preset's, then its [unknowns], as BuildStartProblem
+// chooses them; nullptr: the defaults), its step sizes the run file's [continuation] ones. The
+// shooting and flow are the defaults.
 MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run);
 
 // The types of the trace's branches (their signatures), for the comparison.
@@ -48,12 +49,17 @@ OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::st
                                           const MapComparison* comparison, const std::string& brute_force);
 
 // Writes `directory` whole (the files above and curve-<k>/), into a temporary directory first that
-// then replaces the old one. Throws InvalidInput naming "output" where `directory` exists and is
-// not a map's directory (no regions.json), or cannot be written.
-void WriteOrbitTypeMapFiles(const std::filesystem::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files);
+// then replaces the old one. Every other entry of the old directory (a file of the user's, a run
+// restarted from a curve) moves into the new one; their names are returned, sorted. Throws
+// InvalidInput naming "output" where `directory` exists and is not a map's directory (no
+// regions.json), or cannot be written.
+std::vector<std::string> WriteOrbitTypeMapFiles(const std::filesystem::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files);
 
 // Throws InvalidInput naming "output" where `directory` could not be written by
-// WriteOrbitTypeMapFiles: a file, or a directory that holds no map. Touches nothing.
+// WriteOrbitTypeMapFiles: its name is no run name (IsRunName: one component, no control
+// characters, at most 200 bytes), it is a file or a directory that holds no map (a regions.json
+// with a map's keys: the user's own regions.json is no map's), or no file can be
+// created in it or in its nearest existing ancestor. Touches nothing (but a probe file it removes).
 void CheckOrbitTypeMapDirectory(const std::filesystem::path& directory);
 
 }  // namespace stickslip

@@ -76,6 +76,11 @@ NamedValues SolutionColumns(const Orbit& orbit);
 // ("LP4"), empty for a regular point.
 std::vector<std::string> PointLabels(const Branch& branch);
 
+// The labels of a branch's special points, in order, as special-points.csv has them: the first at
+// a point takes the point's label, a second one there (the branch's end at a located point: LP3,
+// then the end's EP) the next number (EP4), so that no two share a label.
+std::vector<std::string> SpecialPointLabels(const Branch& branch);
+
 // The stored form of a branch just computed from `run`: the one place that reads the
 // continuation engine's Branch, so that a change there changes only this function.
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& branch);

@@ -89,6 +89,11 @@ struct StartProblem {
 // v20 = 0 (an orbit starts at a stop). Throws InvalidInput.
 StartProblem BuildStartProblem(const StartInput& input);
 
+// The unknowns BuildStartProblem chooses: the preset's (its paper choice with paper_choice), then
+// free, fix and tie_u_r. Reads no values. Throws InvalidInput (an unknown preset, a variable both
+// free and fixed).
+UnknownChoice StartUnknowns(const StartInput& input);
+
 // The model data, initial state (x10, x20, x1'0, x2'0) and forcing phase a simulation starts
 // from.
 struct ModelStart {
