@@ -14,6 +14,7 @@
 #include "stickslip/branches/boundary_curve.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/stability.hpp"
 #include "support/period_map.hpp"
 #include "support/section6_symmetry_breaking.hpp"
@@ -236,6 +237,59 @@ TEST(FloquetCurve, FoldFlipIsFoundFromThePeriodDoublingAndTheFoldCurve) {
   }
   EXPECT_LT(near_plus, 1e-6);
   EXPECT_LT(near_minus, 1e-6);
+}
+
+// Below omega = 0.555 the section 5.1 fold curve ends where the stick's exit turns tangential
+// (exit-slope:3 = 0). There the exit's saltation matrix divides by the slope, one multiplier runs
+// through infinity (about 0.72/exit-slope:3), and det(M + I) and p'(1) change sign through that
+// pole: no fold-flip and no 1:1 resonance, as the exact simulator's period map shows at the last
+// point before the end (no multiplier near -1, one near +1). Only the genuine R1 is reported.
+TEST(FloquetCurve, EndsAtTheTangentialStickExitWithoutAFoldFlipOrResonanceThere) {
+  const OrbitContinuationSetup branch = RunFileSetup("paper-5.1-omega-up");
+  OrbitContinuationSetup fold = BoundaryCurve(Located("paper-5.1-omega-up", "LP"), branch, "u_r");
+  fold.options.direction = -1;
+  fold.options.lambda_min = 0.5;
+  fold.options.step.ds = 0.002;
+  fold.options.step.ds_max = 0.002;
+  fold.options.max_points = 3000;
+  const OrbitBranch curve = ContinueOrbit(fold);
+  ASSERT_EQ(curve.branch.end, BranchEnd::kTerminalEvent) << curve.branch.end_message;
+  int resonances = 0;
+  for (const SpecialPoint& s : curve.branch.special_points) {
+    EXPECT_NE(s.type, "LPPD") << "at omega = " << s.lambda;
+    if (s.type != "R1") continue;
+    ++resonances;
+    EXPECT_TRUE(s.located);
+    EXPECT_NEAR(s.lambda, 0.5620757769, 1e-9);  // paper-5.1-fold-curve's R1
+  }
+  EXPECT_EQ(resonances, 1);
+  // The last point before the end that is a motion with exit-slope:3 >= 5e-3: nearer the pole the
+  // period map's central differences (steps 1e-6) would reach across the tangential exit.
+  const Orbit* last = nullptr;
+  double slope = 0.0;
+  for (const Orbit& o : curve.orbits) {
+    const std::vector<Margin> margins = AdmissibilityMargins(o);
+    for (const Margin& m : margins) {
+      if (m.Name() == "exit-slope:3" && m.value >= 5e-3 && SmallestMargin(margins).value > 0.0) {
+        last = &o;
+        slope = m.value;
+      }
+    }
+  }
+  ASSERT_NE(last, nullptr);
+  EXPECT_LT(slope, 1e-2);  // near the end
+  const Eigen::EigenSolver<Eigen::Matrix4d> eigen(PeriodMapJacobian(*last), false);
+  double largest = 0.0, near_minus = INFINITY;
+  int near_plus = 0;
+  for (int i = 0; i < 4; ++i) {
+    const std::complex<double> mu = eigen.eigenvalues()(i);
+    largest = std::max(largest, std::abs(mu));
+    near_minus = std::min(near_minus, std::abs(mu + 1.0));
+    if (std::abs(mu - 1.0) < 1e-3) ++near_plus;
+  }
+  EXPECT_GT(largest, 50.0);     // the pole is near
+  EXPECT_GT(near_minus, 0.5);   // no multiplier -1 (LPPD)
+  EXPECT_EQ(near_plus, 1) << "exit-slope:3 = " << slope << ", multipliers " << eigen.eigenvalues().transpose();  // the fold's +1 only, no double +1 (R1)
 }
 
 }  // namespace

@@ -310,6 +310,35 @@ TEST(Monitor, ASignChangeThroughAPoleIsASpecialPointOnlyIfTheFunctionDeclaresNoP
   }
 }
 
+// x = lambda, with no solution (the residual not finite) within 1e-3 of lambda = 1/2: as where a
+// saltation matrix blows up, the corrector fails at the trial points next to the sign change, which
+// is then not located. 1/(lambda - 1/2) changes sign there through a pole, lambda - 1/2 through a
+// zero: only the zero is a special point.
+struct LineWithAHole : ScalarProblem {
+  double F(double x, double l) const override { return std::abs(l - 0.5) < 1e-3 ? NAN : x - l; }
+  double Fx(double, double) const override { return 1.0; }
+  double Fl(double, double) const override { return -1.0; }
+};
+
+TEST(Monitor, ASignChangeThroughAPoleWhereTheCorrectorFailsIsNoSpecialPoint) {
+  const LineWithAHole line;
+  FunctionMonitor monitor({{{.name = "pole", .type = "PO", .may_have_poles = true},
+                            [](double, double l) { return 1.0 / (l - 0.5); }},
+                           {{.name = "zero", .type = "ZE", .may_have_poles = true},
+                            [](double, double l) { return l - 0.5; }}});
+  ContinuationOptions o = Options();
+  o.lambda_max = 0.8;
+  o.detect_folds = false;
+  o.detect_branch_points = false;
+  const Branch b = Continuation(line, &monitor, o, Eigen::Vector2d(0.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound);
+  EXPECT_TRUE(OfType(b, "PO").empty());
+  const std::vector<SpecialPoint> zero = OfType(b, "ZE");
+  ASSERT_EQ(zero.size(), 1u);
+  EXPECT_FALSE(zero[0].located);  // recorded at the end of the step across the hole
+  EXPECT_GT(zero[0].lambda, 0.5);
+}
+
 TEST(Monitor, ATerminalFunctionEndsTheBranchWhereItLeavesItsPositiveSide) {
   const Cubic cubic;
   FunctionMonitor monitor({{{.name = "below-half", .type = "BH", .terminal = true, .positive_side = "lower"},

@@ -44,10 +44,24 @@ void Bracket(const Event& event, G g_at, double ga, double gb, const EventLocati
 
 std::optional<Located> Locate(const Event& event, const Sample& a, const Sample& b, double ds, double ga, double gb,
                               ArclengthCorrector& corrector, const EventLocationOptions& options) {
+  // The narrowest bracket of the sign change that the trial points reached, and the function's
+  // values at its ends: all that is known of the function next to the change where the corrector
+  // fails before the bracket is narrowed to the tolerance.
+  struct {
+    double lo, g_lo, hi, g_hi;
+  } reached{0.0, ga, ds, gb};
   auto g_at = [&](double s) {
     std::optional<Sample> p = corrector.Corrected(a, s, Attempt::kLocationTrial);
     if (!p) throw CorrectorFailure{};
-    return event.g(*p);
+    const double g = event.g(*p);
+    if (g * ga > 0.0 && s > reached.lo) {
+      reached.lo = s;
+      reached.g_lo = g;
+    } else if (g * ga <= 0.0 && s < reached.hi) {
+      reached.hi = s;
+      reached.g_hi = g;
+    }
+    return g;
   };
   Located l{0.0, &event, b, 0.0, ga, true, 0.0};
   double lo = 0.0, hi = ds;
@@ -75,12 +89,15 @@ std::optional<Located> Locate(const Event& event, const Sample& a, const Sample&
     }
   }
   l.value = event.g(l.sample);
-  // A sign change through a pole is no zero: the located value is large, not small (larger than
-  // at one end at least; a pole next to one end leaves a value below the other, as at a start on
-  // a grazing, where det(M + I) = -3.6e29 and the "located" PD had 2.3e9).
-  if (l.located && event.may_have_poles && !event.sign_only &&
-      std::abs(l.value) > std::min(std::abs(ga), std::abs(gb))) {
-    return std::nullopt;
+  // A sign change through a pole is no zero: next to the change the function is large, not small
+  // (larger than at one end of the step at least; a pole next to one end leaves a value below the
+  // other, as at a start on a grazing, where det(M + I) = -3.6e29 and the "located" PD had 2.3e9).
+  // Next to the change is the located point, or, where the corrector failed inside the bracket (as
+  // it may at the pole itself), the nearer in value of the narrowest bracket's ends: a zero is
+  // approached by values that shrink, a pole by values that grow.
+  if (event.may_have_poles && !event.sign_only) {
+    const double next_to_change = l.located ? std::abs(l.value) : std::min(std::abs(reached.g_lo), std::abs(reached.g_hi));
+    if (next_to_change > std::min(std::abs(ga), std::abs(gb))) return std::nullopt;
   }
   return l;
 }

@@ -21,9 +21,10 @@ struct Located {
 };
 
 // The zero of `event` between a and b, b at arclength ds from a, where it changes sign from ga to
-// gb. If the corrector fails inside the bracket, the linear interpolate, not located, at b.
-// nullopt where the sign change of a function that may have poles is one (the located value is
-// larger than at both ends).
+// gb. If the corrector fails inside the bracket, not located, at b. nullopt where the sign change
+// of a function that may have poles is one: the value next to the change (at the located point;
+// where the corrector failed, the smaller of those at the ends of the narrowest bracket the trial
+// points reached) is larger than the smaller of ga and gb.
 std::optional<Located> Locate(const Event& event, const Sample& a, const Sample& b, double ds, double ga, double gb,
                               ArclengthCorrector& corrector, const EventLocationOptions& options);
 

@@ -20,8 +20,9 @@ struct TestFunctionInfo {
   // leaves the positive side, even when told to continue past terminal functions.
   bool domain_boundary = false;
   // A sign change may be a pole rather than a zero (a saltation matrix blows up where an event
-  // becomes tangent): with this set, one whose located value is larger than at both ends is no
-  // special point.
+  // becomes tangent): with this set, one whose value next to the change (located, or at the ends
+  // of the narrowest bracket reached where the corrector fails there) is larger than at one end of
+  // the step is no special point.
   bool may_have_poles = false;
   std::string positive_side = "positive";  // what the positive side means, for the end message
 };
