@@ -5,6 +5,7 @@
 // pair on the unit circle in the exact simulator's period map along the curve.
 #include "stickslip/branches/floquet_condition.hpp"
 
+#include <algorithm>
 #include <complex>
 #include <filesystem>
 
@@ -142,8 +143,8 @@ INSTANTIATE_TEST_SUITE_P(PaperRuns, FloquetCurve,
                                            CurveCase{"paper-5.1-omega-up", "paper-5.1-u_r-up", "TR"},
                                            CurveCase{"paper-6-omega-up", "paper-6-u_r-up", "LP"},
                                            CurveCase{"paper-6-omega-up", "paper-6-u_r-up", "TR"}),
-                         [](const auto& info) {
-                           return std::string(info.param.omega_run).substr(6, 1) + "_" + info.param.type;
+                         [](const auto& test) {
+                           return std::string(test.param.omega_run).substr(6, 1) + "_" + test.param.type;
                          });
 
 
@@ -290,6 +291,25 @@ TEST(FloquetCurve, EndsAtTheTangentialStickExitWithoutAFoldFlipOrResonanceThere)
   EXPECT_GT(largest, 50.0);     // the pole is near
   EXPECT_GT(near_minus, 0.5);   // no multiplier -1 (LPPD)
   EXPECT_EQ(near_plus, 1) << "exit-slope:3 = " << slope << ", multipliers " << eigen.eigenvalues().transpose();  // the fold's +1 only, no double +1 (R1)
+}
+
+// The family ends where the sliding friction vanishes (eq. 4: 0 < u_s): the §5.1 fold curve in
+// (omega, u_s), downwards, ends at a located u_s = 0, the sliding-friction margin's zero.
+TEST(FloquetCurve, InTheSlidingFrictionEndsWhereItVanishes) {
+  const OrbitContinuationSetup branch = RunFileSetup("paper-5.1-omega-up");
+  OrbitContinuationSetup fold = BoundaryCurve(Located("paper-5.1-omega-up", "LP"), branch, "u_s");
+  fold.options.direction = -1;
+  fold.options.lambda_min = 0.3;
+  fold.options.max_points = 3000;
+  const OrbitBranch curve = ContinueOrbit(fold);
+  ASSERT_EQ(curve.branch.end, BranchEnd::kTerminalEvent) << curve.branch.end_message;
+  const auto end = std::find_if(curve.branch.special_points.begin(), curve.branch.special_points.end(),
+                                [](const SpecialPoint& s) { return s.test_function == "margin:sliding-friction"; });
+  ASSERT_NE(end, curve.branch.special_points.end());
+  EXPECT_TRUE(end->located);
+  EXPECT_NEAR(curve.orbits[end->point].parameters.u_s, 0.0, 1e-9);
+  EXPECT_EQ(end->point + 1, static_cast<int>(curve.orbits.size()));  // the last point
+  EXPECT_GT(curve.orbits.front().parameters.u_s, 0.01);             // from the paper's 0.0138
 }
 
 }  // namespace
