@@ -132,9 +132,8 @@ MapComparison CompareWithBruteForce(const OrbitTypeMap& map, const MapTrace* tra
     std::vector<std::string> reasons;
     bool unexplained = false;
     if (trace) {
-      std::vector<std::string> failures;
       std::set<std::string> here;
-      for (const MapOrbit& o : OrbitsAt(*trace, r, cell.first, cell.second, map.options, &failures)) {
+      for (const MapOrbit& o : OrbitsAt(*trace, r, cell.first, cell.second, map.options).orbits) {
         if (o.admissible && o.stable) here.insert(CanonicalOrbitType(o.signature));
       }
       cmp.at_cell.assign(here.begin(), here.end());

@@ -358,9 +358,9 @@ void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTyp
 
 }  // namespace
 
-std::vector<MapOrbit> OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, double b,
-                               const OrbitTypeMapOptions& options, std::vector<std::string>* failures) {
-  std::vector<MapOrbit> orbits;
+MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, double b, const OrbitTypeMapOptions& options) {
+  MapOrbitsAt found;
+  std::vector<MapOrbit>& orbits = found.orbits;
   for (const MapTraceBranch& branch : trace.branches) {
     for (std::size_t k = 0; k + 1 < branch.orbits.size(); ++k) {
       const double p = ValueOf(branch.orbits[k], r.first), q = ValueOf(branch.orbits[k + 1], r.first);
@@ -376,7 +376,7 @@ std::vector<MapOrbit> OrbitsAt(const MapTrace& trace, const MapRectangle& r, dou
         there = ContinueTo(setup, b, options.max_content_points, &why);
       }
       if (!there) {
-        failures->push_back(fmt::format("{}: {}", from, why));
+        found.failures.push_back(fmt::format("{}: {}", from, why));
         continue;
       }
       const std::size_t last = there->orbits.size() - 1;
@@ -391,7 +391,7 @@ std::vector<MapOrbit> OrbitsAt(const MapTrace& trace, const MapRectangle& r, dou
       if (!known) orbits.push_back(std::move(orbit));
     }
   }
-  return orbits;
+  return found;
 }
 
 OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options) {
@@ -414,7 +414,9 @@ OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectan
   map.skipped = std::move(curves.skipped);
   for (std::size_t k = 0; k < map.regions.size(); ++k) {
     MapRegion& region = map.regions[k];
-    region.orbits = OrbitsAt(trace, rectangle, region.first, region.second, options, &region.failures);
+    MapOrbitsAt content = OrbitsAt(trace, rectangle, region.first, region.second, options);
+    region.orbits = std::move(content.orbits);
+    region.failures = std::move(content.failures);
     const double starts = StartSteps(trace);
     Report(options, starts + static_cast<double>(k + 1), starts + static_cast<double>(map.regions.size()), "steps");
   }

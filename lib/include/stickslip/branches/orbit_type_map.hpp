@@ -158,10 +158,16 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
 // of the second parameter, or its whole range of the first).
 OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options = {});
 
+// Every orbit of the trace at a point of the rectangle, and the continuations that did not get there.
+struct MapOrbitsAt {
+  std::vector<MapOrbit> orbits;       // deduplicated, in the order found
+  std::vector<std::string> failures;  // "branch-3 pt 12: why"
+};
+
 // Every orbit of the trace at (first, second) of the rectangle's parameters, as a region's content
-// is found (above); the continuations that did not get there in `failures`.
-std::vector<MapOrbit> OrbitsAt(const MapTrace& trace, const MapRectangle& rectangle, double first, double second,
-                               const OrbitTypeMapOptions& options, std::vector<std::string>* failures);
+// is found (above).
+MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& rectangle, double first, double second,
+                     const OrbitTypeMapOptions& options);
 
 // The condition BoundaryCurve continues for a special point: its margin for a type change (the
 // test function "margin:..."), else its type ("LP", "PD", ...).
