@@ -166,6 +166,24 @@ def stable_off_the_curve(condition):
     return stable
 
 
+def resonance_end(ax, rows, parameter, y):
+    """A branch that ended at a resonance (its amplitude passed max_amplitude): over omega, the
+    natural frequency it nears (eq. 56) as a dotted line; its last point marked. Returns the label
+    to place."""
+    last = rows[-1]
+    if parameter == "omega":
+        chi, eta = float(last["chi"]), float(last["eta"])
+        trace, det = 1 + chi * eta, chi * eta * (1 - chi)
+        root = math.sqrt(trace * trace - 4 * det)
+        naturals = [math.sqrt((trace - root) / 2), math.sqrt((trace + root) / 2)]
+        for k, natural in enumerate(naturals, 1):
+            if abs(natural - float(last["omega"])) < 0.05 * natural:
+                ax.axvline(natural, ls=":", color="0.3", lw=1.0, label=f"natural frequency omega{k} = {natural:.5f}")
+    ax.plot(float(last[parameter]), float(last[y]), "v", color="C3", ms=6, mec="black", mew=0.5, zorder=5)
+    return [(f"resonance (max |x| = {max(float(last['amplitude:x1']), float(last['amplitude:x2'])):.4g})",
+             float(last[parameter]), float(last[y]))]
+
+
 def bifurcation_figure(program, results, run, out):
     directory = os.path.join(results, run)
     summary, rows, _ = read_run(directory)
@@ -198,9 +216,15 @@ def bifurcation_figure(program, results, run, out):
         top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".",
                  color="0.4" if number == 0 else "C3", ms=3 if number == 0 else 4,
                  label=f"brute force {name}: x2 at phase {phase:.4g} (period 1)")
+    y = curve["boundary"] if curve else "x20"
+    if summary["termination"] == "stopped" and summary["message"].startswith("resonance"):
+        labels += resonance_end(top, rows, parameter, y)
+    values = [float(r[y]) for r in rows]
+    if min(values) > 0 and max(values) > 100 * min(values):  # a curve that grows by decades: a resonance
+        top.set_yscale("log")
     top.legend(handles=legend + top.get_legend_handles_labels()[0], fontsize=7, loc="upper left",
                bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    top.set_ylabel(curve["boundary"] if curve else "x20")
+    top.set_ylabel(y)
     bottom.set_ylabel("segment durations")
     bottom.set_xlabel(parameter)
     what = f"the curve of {curve['run']}:{curve['label']} in ({parameter}, {curve['boundary']}), " if curve else ""

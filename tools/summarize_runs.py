@@ -25,8 +25,11 @@ for run in sorted(os.listdir(results)):
             continue
         what = row["test_function"].replace("margin:", "")
         points.append(f"{row['label']} {what} ({parameter} = {float(row[parameter]):.10g})")
+    end = summary["termination"]
+    if end == "stopped":  # ended between two steps by its caller: the message says why ("resonance: ...")
+        end += f" ({summary['message'].split(':')[0]})"
     lines.append(f"| {run} | `{summary['signature']}` | {'; '.join(points) or '-'} | "
-                 f"{summary['termination']}, {summary['points']} points |")
+                 f"{end}, {summary['points']} points |")
 out = os.path.join(results, "runs.md")
 with open(out + ".tmp", "w") as f:
     f.write("\n".join(lines) + "\n")

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <set>
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/margin_condition.hpp"
@@ -21,6 +22,7 @@
 #include "stickslip/orbits/adjacent_type.hpp"
 #include "stickslip/model/events.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "support/restart_in_omega.hpp"
 
 namespace stickslip {
@@ -345,6 +347,96 @@ TEST(BoundaryCurve, AgreesWithTheZeroLengthStickConstruction) {
   OrbitContinuationSetup down = up;
   down.options.direction = -1;
   CodimensionTwoPoint(ContinueOrbit(down), "duration:2", "exit-slope:2");
+}
+
+// max |x1|, |x2| of the exact simulator started on `orbit`, sampled 20000 times over a period (the
+// sampled maximum is below the true one by about A (omega dt)^2/8: 1e-8 relative), and the state's
+// distance from its start after the period.
+struct SimulatedPeriod {
+  double amplitude_x1 = 0.0;
+  double amplitude_x2 = 0.0;
+  double closure = 0.0;
+};
+SimulatedPeriod SimulatePeriod(const Orbit& orbit) {
+  SimulationOptions options;
+  options.duration = orbit.Period();
+  options.sample_step = orbit.Period() / 20000.0;
+  const SimulationResult sim = SimulateExact(orbit.parameters, orbit.InitialState(), orbit.phi, options);
+  EXPECT_TRUE(sim.Completed()) << sim.message;
+  SimulatedPeriod period;
+  for (const TimeSample& sample : sim.samples) {
+    period.amplitude_x1 = std::max(period.amplitude_x1, std::abs(sample.state(0)));
+    period.amplitude_x2 = std::max(period.amplitude_x2, std::abs(sample.state(1)));
+  }
+  period.closure = (StateAt(sim, options.duration) - orbit.InitialState()).norm();
+  return period;
+}
+
+// A curve heading for a natural frequency ends at the resonance (OrbitContinuationSetup::
+// max_amplitude), not at its range: the §4.1 crossing-sliding boundary upwards in omega, where the
+// static level at the stops grows without bound as omega nears omega1. Against the modal analysis
+// of the stiffness matrix (eq. 56 and Appendix 1, solved here by Eigen): the end lies just below
+// omega1; the orbit is there the first mode's forced response, so amplitude:x2 / amplitude:x1 is
+// the mode's shape lambda_1 = (1 - omega1^2)/chi up to the other mode's and the friction's bounded
+// share (O(1/amplitude)), and the amplitude grows like 1/(omega1^2 - omega^2). The exact simulator
+// started on the last orbits closes over the period with their recorded amplitudes.
+TEST(BoundaryCurve, EndsAtAResonanceOfTheForcing) {
+  // continuation-scripts/paper-4.1-sk-boundary-up.toml
+  RunFile file = RestartInOmega("paper-4.1-omega-down", "SK2");
+  file.restart_boundary = "u_r";
+  file.direction = 1;
+  file.range_max = 0.8;  // beyond omega1: only the resonance ends the curve
+  file.ds = 0.01;
+  file.ds_max = 5.0;  // u_r grows 1e5 times faster than omega near the end
+  file.max_points = 1000;
+  const OrbitContinuationSetup setup = MakeSetup(file, Results());
+  const OrbitBranch curve = ContinueOrbit(setup);
+  ASSERT_EQ(curve.branch.end, BranchEnd::kStopped) << curve.branch.end_message;
+  EXPECT_TRUE(curve.branch.end_message.starts_with("resonance:")) << curve.branch.end_message;
+  const int n = static_cast<int>(curve.orbits.size());
+  ASSERT_GE(n, 3);
+  EXPECT_EQ(curve.branch.special_points.back().type, "EP");
+  EXPECT_EQ(curve.branch.special_points.back().point, n - 1);
+
+  const double chi = setup.start.parameters.chi, eta = setup.start.parameters.eta;
+  Eigen::Matrix2d stiffness;
+  stiffness << 1.0, -chi, -chi * eta, chi * eta;
+  Eigen::Vector2d squares = stiffness.eigenvalues().real();
+  std::sort(squares.begin(), squares.end());
+  const double omega1_sq = squares(0);
+  const double omega1 = std::sqrt(omega1_sq);
+  const double shape = (1.0 - omega1_sq) / chi;
+
+  const Orbit& last = curve.orbits[n - 1];
+  const Orbit& before = curve.orbits[n - 2];
+  const SimulatedPeriod at_end = SimulatePeriod(last);
+  const SimulatedPeriod at_before = SimulatePeriod(before);
+  const double amplitude_end = std::max(at_end.amplitude_x1, at_end.amplitude_x2);
+  EXPECT_GT(amplitude_end, setup.max_amplitude);
+  EXPECT_LE(std::max(at_before.amplitude_x1, at_before.amplitude_x2), setup.max_amplitude * (1 + 1e-7));
+  for (const SimulatedPeriod& period : {at_end, at_before}) EXPECT_LT(period.closure, 1e-10 * amplitude_end);
+  const OrbitMeasures measures = Measure(last);
+  EXPECT_NEAR(measures.amplitude_x1, at_end.amplitude_x1, 1e-7 * amplitude_end);
+  EXPECT_NEAR(measures.amplitude_x2, at_end.amplitude_x2, 1e-7 * amplitude_end);
+
+  const double omega = last.parameters.omega;
+  EXPECT_LT(omega, omega1);
+  EXPECT_GT(omega, omega1 - 1e-3);
+  EXPECT_GT(last.parameters.u_r, 100.0);  // the stops' static level, far beyond the start's 0.3
+  // measured 7e-4 relative at the end
+  EXPECT_NEAR(at_end.amplitude_x2 / at_end.amplitude_x1, shape, 2e-3 * shape);
+  // amplitude (omega1^2 - omega^2) at the end and where the amplitude was half of it: measured 6e-4
+  // apart relative (a growth like 1/(omega1 - omega)^2 would halve it).
+  int half = n - 1;
+  while (half > 0 && std::max(Measure(curve.orbits[half]).amplitude_x1, Measure(curve.orbits[half]).amplitude_x2) >
+                         0.5 * amplitude_end) {
+    --half;
+  }
+  const Orbit& middle = curve.orbits[half];
+  const SimulatedPeriod at_half = SimulatePeriod(middle);
+  const double growth_end = at_end.amplitude_x2 * (omega1_sq - omega * omega);
+  const double growth_half = at_half.amplitude_x2 * (omega1_sq - middle.parameters.omega * middle.parameters.omega);
+  EXPECT_NEAR(growth_half, growth_end, 2e-3 * growth_end);
 }
 
 TEST(BoundaryCurve, RefusesConditionsAndSecondParametersItGivesNoCurveOf) {

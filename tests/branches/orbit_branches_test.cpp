@@ -3,14 +3,17 @@
 // exact simulator started from the located orbit shows the degeneracy), and the located
 // parameter values do not depend on the step size.
 #include <filesystem>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/model/events.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/stability.hpp"
 
@@ -167,6 +170,39 @@ TEST_P(PaperBranch, EverySpecialPointIsVerifiedIndependently) {
     ASSERT_NE(m, margins.end()) << name;
     EXPECT_LT(std::abs(m->value), 1e-9) << GetParam() << " " << s.type << " " << name;
     ExpectSimulatorShows(o, *m);
+  }
+}
+
+// A resonance ends a branch at its first point whose amplitude max |x1|, |x2| passes max_amplitude,
+// every point before within it, as the exact measures of the orbits say; a max_amplitude that is not
+// > 0 is refused, naming it.
+TEST(ResonanceEnd, EndsTheBranchAtItsFirstPointPastMaxAmplitude) {
+  const fs::path source(STICKSLIP_SOURCE_DIR);
+  OrbitContinuationSetup setup =
+      MakeSetup(ReadRunFile(source / "continuation-scripts" / "paper-4.1-omega-up.toml"), source / "results");
+  setup.max_amplitude = 4.0;  // amplitude:x2 3.33 at the start, 4.73 at the run's end
+  const OrbitBranch branch = ContinueOrbit(setup);
+  ASSERT_EQ(branch.branch.end, BranchEnd::kStopped) << branch.branch.end_message;
+  EXPECT_TRUE(branch.branch.end_message.starts_with("resonance:")) << branch.branch.end_message;
+  const std::size_t n = branch.orbits.size();
+  ASSERT_GE(n, 3u);
+  auto amplitude = [&](std::size_t k) {
+    const OrbitMeasures m = Measure(branch.orbits[k]);
+    return std::max(m.amplitude_x1, m.amplitude_x2);
+  };
+  for (std::size_t k = 0; k + 1 < n; ++k) EXPECT_LE(amplitude(k), 4.0) << k;
+  EXPECT_GT(amplitude(n - 1), 4.0);
+  EXPECT_EQ(branch.branch.special_points.back().type, "EP");
+  EXPECT_EQ(branch.branch.special_points.back().point, static_cast<int>(n) - 1);
+  for (const SpecialPoint& s : branch.branch.special_points) EXPECT_LT(s.point, static_cast<int>(n));
+  for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    setup.max_amplitude = bad;
+    try {
+      ContinueOrbit(setup);
+      ADD_FAILURE() << "max_amplitude = " << bad << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), "max_amplitude");
+    }
   }
 }
 

@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <utility>
+
+#include <fmt/format.h>
+
+#include "stickslip/invalid_input.hpp"
 
 
 namespace stickslip {
@@ -60,6 +65,7 @@ const NonlinearSystem& OrbitContinuationProblem::Continued() const {
 }
 
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
+  if (!(setup.max_amplitude > 0.0)) throw InvalidInput("max_amplitude", setup.max_amplitude, "max_amplitude > 0");
   const Signature& signature = setup.start.signature;
   const int n = signature.size();
   const std::vector<int> free = FreeIndices(signature, setup.unknowns);
@@ -103,12 +109,55 @@ OrbitBranch ToOrbitBranch(const OrbitContinuationProblem& problem, Branch branch
   return result;
 }
 
+Branch EndedAt(Branch branch, const BranchStop& stop) {
+  branch.points.resize(stop.point + 1);
+  std::erase_if(branch.special_points, [&](const SpecialPoint& s) { return s.point > stop.point; });
+  BranchPoint& point = branch.points.back();
+  if (point.label.empty()) point.label = "EP";
+  branch.special_points.push_back(
+      {"EP", ToString(stop.why), stop.point, point.lambda, point.u, point.tests, 0.0, true, 0.0, point.tangent});
+  branch.end = stop.why;
+  branch.end_message = stop.message;
+  return branch;
+}
+
+ResonanceWatch::ResonanceWatch(const OrbitContinuationProblem& problem, double max_amplitude, std::string parameter)
+    : max_amplitude_(max_amplitude), parameter_(std::move(parameter)) {
+  auto recorded = [&](const char* name) {
+    for (const PointColumn& c : problem.monitor->Columns()) {
+      if (c.name == name && !c.monitored) return c.index;
+    }
+    throw std::logic_error(std::string("the orbit monitor records no ") + name);
+  };
+  amplitude_x1_ = recorded(orbit_columns::kAmplitudeX1);
+  amplitude_x2_ = recorded(orbit_columns::kAmplitudeX2);
+}
+
+std::optional<BranchStop> ResonanceWatch::Check(const Branch& branch) {
+  for (; checked_ < branch.points.size(); ++checked_) {
+    const BranchPoint& point = branch.points[checked_];
+    // max |x1|, |x2| over the orbit as the monitor recorded it, exact.
+    const double amplitude = std::max(point.recorded(amplitude_x1_), point.recorded(amplitude_x2_));
+    if (amplitude <= max_amplitude_) continue;
+    return BranchStop{static_cast<int>(checked_++), BranchEnd::kStopped,
+                      fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} passed max_amplitude = {:g} at "
+                                  "{} = {:.10g}",
+                                  amplitude, max_amplitude_, parameter_, point.lambda)};
+  }
+  return std::nullopt;
+}
+
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer) {
   OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
   Continuation continuation(problem.Continued(), problem.monitor.get(), problem.options, problem.start);
-  while (continuation.Step()) {
-    if (observer) observer(continuation.branch());
+  ResonanceWatch resonance(problem, setup.max_amplitude, setup.parameter);
+  for (bool more = true; more;) {
+    more = continuation.Step();
+    if (const std::optional<BranchStop> stop = resonance.Check(continuation.branch())) {
+      return ToOrbitBranch(problem, EndedAt(continuation.branch(), *stop));
+    }
+    if (more && observer) observer(continuation.branch());
   }
   return ToOrbitBranch(problem, continuation.branch());
 }

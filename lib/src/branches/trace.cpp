@@ -19,14 +19,6 @@ namespace ov = orbit_variables;
 
 const char* DirectionName(int direction) { return direction > 0 ? "up" : "down"; }
 
-// Where the monitor records the recorded column `name` in BranchPoint::recorded.
-int RecordedIndex(const std::vector<PointColumn>& columns, const char* name) {
-  for (const PointColumn& c : columns) {
-    if (c.name == name && !c.monitored) return c.index;
-  }
-  throw std::logic_error(std::string("the orbit monitor records no ") + name);
-}
-
 double Lambda(const Orbit& orbit, const std::string& parameter) {
   return ov::Pack(orbit)(*ov::IndexOf(orbit.signature.size(), parameter));
 }
@@ -34,19 +26,6 @@ double Lambda(const Orbit& orbit, const std::string& parameter) {
 bool IsMarginChange(const SpecialPoint& s) { return s.test_function.starts_with(orbit_columns::kMarginPrefix); }
 bool IsFamilyEnd(const SpecialPoint* s) {
   return s->test_function == std::string(orbit_columns::kMarginPrefix) + "sliding-friction";
-}
-
-// The branch ends at its point p (a located special point or a regular one), as the engine ends a
-// branch: the points after it dropped, an EP there.
-void EndAt(Branch* branch, int p, BranchEnd why, std::string message) {
-  branch->points.resize(p + 1);
-  std::erase_if(branch->special_points, [&](const SpecialPoint& s) { return s.point > p; });
-  BranchPoint& point = branch->points.back();
-  if (point.label.empty()) point.label = "EP";
-  branch->special_points.push_back(
-      {"EP", ToString(why), p, point.lambda, point.u, point.tests, 0.0, true, 0.0, point.tangent});
-  branch->end = why;
-  branch->end_message = std::move(message);
 }
 
 // One branch of the chain, stepped by hand: it stops at a resonance, and, `to_next_change`, at the
@@ -61,48 +40,32 @@ class BranchRunner {
     problem.options.continue_past_terminal = to_next_change;
     problem.options.progress = {};
     Continuation continuation(problem.Continued(), problem.monitor.get(), problem.options, problem.start);
-    const int amplitude_x1 = RecordedIndex(problem.monitor->Columns(), orbit_columns::kAmplitudeX1);
-    const int amplitude_x2 = RecordedIndex(problem.monitor->Columns(), orbit_columns::kAmplitudeX2);
-    std::size_t checked = 0;
+    ResonanceWatch resonance(problem, setup.max_amplitude, setup.parameter);
+    std::size_t counted = 0;
     std::size_t special_checked = 0;
     for (bool more = true; more;) {
       more = continuation.Step();
       const Branch& b = continuation.branch();
-      std::optional<std::pair<int, std::string>> stop;
-      BranchEnd why = BranchEnd::kStopped;
-      for (; checked < b.points.size() && !stop; ++checked) {
-        const BranchPoint& point = b.points[checked];
-        // max |x1|, |x2| over the orbit as the monitor recorded it, exact (nan where the extrema's
-        // search was cut short: no bound).
-        const double amplitude = std::max(point.recorded(amplitude_x1), point.recorded(amplitude_x2));
-        if (!(amplitude <= options_.max_amplitude)) {
-          stop.emplace(static_cast<int>(checked),
-                       fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} passed max_amplitude = {:g} at "
-                                   "{} = {:.10g}",
-                                   amplitude, options_.max_amplitude, setup.parameter, point.lambda));
-        }
+      std::optional<BranchStop> stop = resonance.Check(b);
+      for (; counted < b.points.size(); ++counted) {
         done_ += 1.0;
-        if (options_.progress) options_.progress({done_, std::max(total_, done_), "points", point.lambda});
+        if (options_.progress) options_.progress({done_, std::max(total_, done_), "points", b.points[counted].lambda});
       }
       for (; to_next_change && special_checked < b.special_points.size(); ++special_checked) {
         const SpecialPoint& s = b.special_points[special_checked];
-        if (!IsMarginChange(s) || s.point == 0 || (stop && s.point >= stop->first)) continue;
+        if (!IsMarginChange(s) || s.point == 0 || (stop && s.point >= stop->point)) continue;
         // The change the branch starts on, located again a rounding error away (its margin is zero
         // there only to the location's tolerance): no change of its own.
         const Eigen::VectorXd& u0 = b.points.front().u;
         if ((s.u - u0).lpNorm<Eigen::Infinity>() <= options_.loop_tolerance * (1.0 + u0.lpNorm<Eigen::Infinity>())) {
           continue;
         }
-        stop.emplace(s.point, fmt::format("{} ({}) changed sign at {} = {:.10g}", s.test_function, s.type,
-                                          setup.parameter, s.lambda));
-        why = BranchEnd::kTerminalEvent;
+        stop = BranchStop{s.point, BranchEnd::kTerminalEvent,
+                          fmt::format("{} ({}) changed sign at {} = {:.10g}", s.test_function, s.type,
+                                      setup.parameter, s.lambda)};
         break;
       }
-      if (stop) {
-        Branch trimmed = b;
-        EndAt(&trimmed, stop->first, why, stop->second);
-        return ToOrbitBranch(problem, std::move(trimmed));
-      }
+      if (stop) return ToOrbitBranch(problem, EndedAt(b, *stop));
     }
     return ToOrbitBranch(problem, continuation.branch());
   }
@@ -140,6 +103,7 @@ class Tracer {
         runner_(options, 2.0 * options.max_branches * start.options.max_points),
         next_{Next{.setup = start}, Next{.setup = start}} {
     result_.parameter = start.parameter;
+    for (Next& next : next_) next.setup.max_amplitude = options.max_amplitude;  // every branch's, followed ones too
     next_[0].setup.options.direction = -1;
     next_[1].setup.options.direction = 1;
   }

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,11 @@
 #include "stickslip/orbits/periodicity.hpp"
 
 namespace stickslip {
+
+// The amplitude, max |x1|, |x2| over an orbit (scaled displacements: orbits/orbit_measures.hpp),
+// past which a branch ends at a resonance of the forcing: as omega nears a natural frequency (eq.
+// 56) the forced response grows without bound, and no parameter range ends the branch first.
+inline constexpr double kDefaultMaxAmplitude = 1e3;
 
 struct OrbitContinuationSetup {
   Orbit start;                 // the start orbit, or a guess of it (corrected at its parameter)
@@ -32,6 +38,9 @@ struct OrbitContinuationSetup {
   // periodicity equations and the condition's, in the unknowns and the condition's own; the
   // condition's defining test functions are not watched.
   std::shared_ptr<const OrbitCondition> condition;
+  // A resonance ends the branch at its first point whose amplitude passes this (> 0; infinity:
+  // never): BranchEnd::kStopped, the message beginning "resonance:".
+  double max_amplitude = kDefaultMaxAmplitude;
 };
 
 struct OrbitBranch {
@@ -41,8 +50,9 @@ struct OrbitBranch {
   std::vector<PointColumn> columns;  // the monitor's, in the order of the result files
 };
 
-// Throws InvalidInput naming "free", "fix", "unknowns" or "parameter" if the choice of unknowns
-// is not square or the parameter is not a held variable. `observer`, if given, sees the branch after
+// Throws InvalidInput naming "free", "fix", "unknowns", "parameter" or "max_amplitude" if the
+// choice of unknowns is not square, the parameter is not a held variable or max_amplitude is not
+// > 0. A branch ends as the engine ends it, or at a resonance (max_amplitude). `observer`, if given, sees the branch after
 // every step (a progress display, say).
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer = {});
@@ -62,5 +72,31 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
 // The branch of a continuation stepped by hand on `problem`, as ContinueOrbit returns it: the
 // orbit of every point, the shooting and the monitor's columns.
 OrbitBranch ToOrbitBranch(const OrbitContinuationProblem& problem, Branch branch);
+
+// Where a branch stepped by hand ends before the engine would end it: at its point `point`.
+struct BranchStop {
+  int point = 0;
+  BranchEnd why = BranchEnd::kStopped;
+  std::string message;
+};
+// `branch` ended at `stop` as the engine ends a branch: the points after it and their special
+// points dropped, an EP there (its test function ToString(why)).
+Branch EndedAt(Branch branch, const BranchStop& stop);
+
+// The resonance end of a branch stepped by hand on `problem`: Check sees the points added since
+// its last call and returns the first whose amplitude passed max_amplitude, or whose amplitude is
+// nan (the extrema's search was cut short: no bound).
+class ResonanceWatch {
+ public:
+  ResonanceWatch(const OrbitContinuationProblem& problem, double max_amplitude, std::string parameter);
+  std::optional<BranchStop> Check(const Branch& branch);
+
+ private:
+  double max_amplitude_ = 0.0;
+  std::string parameter_;
+  int amplitude_x1_ = 0;  // the measures' indices in BranchPoint::recorded
+  int amplitude_x2_ = 0;
+  std::size_t checked_ = 0;
+};
 
 }  // namespace stickslip

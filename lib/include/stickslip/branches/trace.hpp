@@ -43,7 +43,9 @@ namespace stickslip {
 
 struct TraceOptions {
   int max_branches = 50;        // per direction, 1 to kMaxTraceBranches
-  double max_amplitude = 1e3;   // a resonance: max |x1|, |x2| over an orbit above this (> 0)
+  // A resonance: max |x1|, |x2| over an orbit above this (> 0) ends a branch; the max_amplitude of
+  // every branch of the trace (OrbitContinuationSetup).
+  double max_amplitude = kDefaultMaxAmplitude;
   // Two points are one (a loop) when their signatures agree and the parameter (relative to
   // 1 + |lambda|), the start state, the phase and the period (OrbitDistance) differ by at most this.
   double loop_tolerance = 1e-7;
