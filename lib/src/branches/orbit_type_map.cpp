@@ -69,9 +69,15 @@ void Report(const OrbitTypeMapOptions& options, double done, double total, const
   if (options.progress) options.progress({done, total, unit, std::numeric_limits<double>::quiet_NaN()});
 }
 
+// The branch of a continuation to a target value of its parameter, or why it did not get there.
+struct Reached {
+  std::optional<OrbitBranch> branch;  // ending exactly on the target
+  std::string why;
+};
+
 // The branch of `setup` from its start to `target` of its parameter, ending exactly there (the
-// range's bound); nullopt and `why` where it does not get there.
-std::optional<OrbitBranch> ContinueTo(OrbitContinuationSetup setup, double target, int max_points, std::string* why) {
+// range's bound).
+Reached ContinueTo(OrbitContinuationSetup setup, double target, int max_points) {
   const double from = ValueOf(setup.start, setup.parameter);
   if (from == target) {
     setup.options.max_points = 1;
@@ -93,11 +99,10 @@ std::optional<OrbitBranch> ContinueTo(OrbitContinuationSetup setup, double targe
   // The engine puts the last point on the bound to rounding (ContinuationOptions::bound_tolerance).
   if (branch.branch.points.empty() ||
       !(std::abs(branch.branch.points.back().lambda - target) <= 1e-12 * (1.0 + std::abs(target)))) {
-    *why = fmt::format("{} from {} to {}: {} ({})", setup.parameter, from, target, ToString(branch.branch.end),
-                       branch.branch.end_message);
-    return std::nullopt;
+    return {std::nullopt, fmt::format("{} from {} to {}: {} ({})", setup.parameter, from, target,
+                                      ToString(branch.branch.end), branch.branch.end_message)};
   }
-  return branch;
+  return {std::move(branch), {}};
 }
 
 // The trace must pass through the rectangle, at a value of the second parameter it holds: the
@@ -289,7 +294,12 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
 namespace {
 
 // The curves through the trace's special points (both ways each), and the points refused.
-void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTypeMapOptions& options, OrbitTypeMap* map) {
+struct ContinuedCurves {
+  std::vector<MapCurve> curves;
+  std::vector<MapSkippedStart> skipped;
+};
+ContinuedCurves ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTypeMapOptions& options) {
+  ContinuedCurves continued;
   std::vector<std::pair<std::string, Orbit>> started;  // (condition, orbit): a point met twice is one start
   const int total = StartSteps(trace);
   int done = 0;
@@ -306,7 +316,7 @@ void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTyp
       started.emplace_back(condition, p.orbit);
       const double second = ValueOf(p.orbit, r.second), first = ValueOf(p.orbit, r.first);
       if (!(second >= r.second_min && second <= r.second_max && first >= r.first_min && first <= r.first_max)) {
-        map->skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {}, {} = {})", r.first, first, r.second, second)});
+        continued.skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {}, {} = {})", r.first, first, r.second, second)});
         continue;
       }
       const OrbitContinuationSetup branch_setup = SetupAt(trace, p.orbit, b.unknowns, trace.parameter);
@@ -315,7 +325,7 @@ void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTyp
         made = BoundaryCurve({.orbit = p.orbit, .condition = condition, .parameter = trace.parameter, .unknowns = b.unknowns},
                               branch_setup, r.second);
       } catch (const InvalidInput& e) {
-        map->skipped.push_back({from, condition, e.what()});
+        continued.skipped.push_back({from, condition, e.what()});
         continue;
       }
       OrbitContinuationSetup& curve = *made;
@@ -332,13 +342,13 @@ void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTyp
       o.progress = {};
       o.unknown_bounds = {{.index = UnknownPosition(curve, r.second), .min = r.second_min, .max = r.second_max, .name = r.second}};
       for (int direction : {-1, 1}) {
-        if (static_cast<int>(map->curves.size()) >= options.max_curves) {
-          map->skipped.push_back({from, condition, fmt::format("max_curves = {} reached", options.max_curves)});
+        if (static_cast<int>(continued.curves.size()) >= options.max_curves) {
+          continued.skipped.push_back({from, condition, fmt::format("max_curves = {} reached", options.max_curves)});
           break;
         }
         o.direction = direction;
         MapCurve c;
-        c.id = static_cast<int>(map->curves.size()) + 1;
+        c.id = static_cast<int>(continued.curves.size()) + 1;
         c.kind = condition;
         c.from = from;
         c.direction = direction;
@@ -349,11 +359,12 @@ void ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTyp
           c.first.push_back(ValueOf(c.branch.orbits[k], r.first));
           c.second.push_back(ValueOf(c.branch.orbits[k], r.second));
         }
-        map->curves.push_back(std::move(c));
+        continued.curves.push_back(std::move(c));
       }
       Report(options, done, total + 1.0, "steps");
     }
   }
+  return continued;
 }
 
 }  // namespace
@@ -368,23 +379,23 @@ MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, dou
       const std::size_t nearer = std::abs(p - a) <= std::abs(q - a) ? k : k + 1;
       const std::string from = fmt::format("{} pt {}", branch.name, nearer + 1);
       OrbitContinuationSetup setup = SetupAt(trace, branch.orbits[nearer], branch.unknowns, r.first);
-      std::string why;
-      std::optional<OrbitBranch> there = ContinueTo(setup, a, options.max_content_points, &why);
-      if (there) {
-        setup.start = there->orbits.back();
+      Reached reached = ContinueTo(setup, a, options.max_content_points);
+      if (reached.branch) {
+        setup.start = reached.branch->orbits.back();
         setup.parameter = r.second;
-        there = ContinueTo(setup, b, options.max_content_points, &why);
+        reached = ContinueTo(setup, b, options.max_content_points);
       }
-      if (!there) {
-        found.failures.push_back(fmt::format("{}: {}", from, why));
+      if (!reached.branch) {
+        found.failures.push_back(fmt::format("{}: {}", from, reached.why));
         continue;
       }
-      const std::size_t last = there->orbits.size() - 1;
-      MapOrbit orbit{.signature = there->orbits[last].signature.ToString(),
-                     .admissible = Column(*there, last, orbit_columns::kAdmissible) == 1.0,
-                     .stable = Column(*there, last, orbit_columns::kStable) == 1.0,
+      const OrbitBranch& there = *reached.branch;
+      const std::size_t last = there.orbits.size() - 1;
+      MapOrbit orbit{.signature = there.orbits[last].signature.ToString(),
+                     .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
+                     .stable = Column(there, last, orbit_columns::kStable) == 1.0,
                      .from = from,
-                     .orbit = there->orbits[last]};
+                     .orbit = there.orbits[last]};
       const bool known = std::any_of(orbits.begin(), orbits.end(), [&](const MapOrbit& o) {
         return o.signature == orbit.signature && OrbitDistance(o.orbit, orbit.orbit) <= options.same_orbit;
       });
@@ -401,8 +412,7 @@ OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectan
     throw InvalidInput("first", rectangle.first, fmt::format("the trace's parameter, {}", trace.parameter));
   }
   CheckTraceInRectangle(trace, rectangle);
-  OrbitTypeMap curves;
-  ContinueCurves(trace, rectangle, options, &curves);
+  ContinuedCurves curves = ContinueCurves(trace, rectangle, options);
   std::vector<std::vector<std::pair<double, double>>> polylines;
   for (const MapCurve& c : curves.curves) {
     std::vector<std::pair<double, double>> line;
