@@ -275,6 +275,9 @@ Command AddContinueCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--continue-past-type-changes", args->run.continue_past_type_changes,
                 "go on past orbit-type changes, flagging the points beyond inadmissible");
+  AddNumberOption(*cmd, "--max-amplitude", &args->run.max_amplitude, "a finite max-amplitude > 0",
+                  "a resonance ends the branch at its first point where max |x1|, |x2| over the orbit (scaled "
+                  "displacement, exact) passes this (> 0)");
   return {cmd, [args] { return RunContinue(*args); }};
 }
 

@@ -52,7 +52,8 @@ int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::fi
                b.margin.empty() ? "" : " at " + b.margin, b.points, b.end);
   }
   for (const StoredTraceDirection& d : trace.stored.directions) {
-    fmt::print("  {}: {}: {}\n", d.direction, d.end, d.message);
+    // A resonance's message names it already ("resonance: the amplitude ...").
+    fmt::print("  {}: {}\n", d.direction, d.message.starts_with(d.end + ":") ? d.message : d.end + ": " + d.message);
   }
   if (!kept.empty()) {
     fmt::print("{}: kept {} other file(s) of {}: {}\n", run.output, kept.size(), (results / run.output).string(),

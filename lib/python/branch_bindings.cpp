@@ -65,6 +65,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.ds = o["ds"].cast<double>();
   run.ds_min = o["ds_min"].cast<double>();
   run.ds_max = o["ds_max"].cast<double>();
+  run.max_amplitude = o["max_amplitude"].cast<double>();
   run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
@@ -216,9 +217,7 @@ class Stepper {
   explicit Stepper(const RunInput& input)
       : input_(OneBranch(input)),
         setup_(MakeSetup(input_.run, input_.results)),
-        problem_(MakeOrbitContinuation(setup_)),
-        continuation_(std::make_unique<Continuation>(*problem_.system, problem_.monitor.get(), problem_.options,
-                                                     problem_.start)) {}
+        continuation_(std::make_unique<OrbitContinuation>(setup_)) {}
 
   bool Step() {
     bool more = false;
@@ -263,8 +262,11 @@ class Stepper {
     d["pt"] = i + 1;
     d["label"] = PointLabels(branch)[i];
     d["lambda"] = p.lambda;
-    for (const auto& [name, value] : SolutionColumns(problem_.system->ToOrbit(p.u))) d[py::str(name)] = value;
-    const std::vector<PointColumn>& columns = problem_.monitor->Columns();
+    const OrbitContinuationProblem& problem = continuation_->problem();
+    for (const auto& [name, value] : SolutionColumns(problem.system->ToOrbit(p.u.head(problem.system->UnknownCount())))) {
+      d[py::str(name)] = value;
+    }
+    const std::vector<PointColumn>& columns = problem.monitor->Columns();
     const std::vector<double> values = ColumnValues(columns, p);
     for (std::size_t k = 0; k < columns.size(); ++k) d[py::str(columns[k].name)] = values[k];
     d["newton_iterations"] = p.newton_iterations;
@@ -274,15 +276,14 @@ class Stepper {
 
   ComputedRun Stored() const {
     const std::lock_guard<std::mutex> lock(mutex_);
-    const OrbitBranch branch = ToOrbitBranch(problem_, continuation_->branch());
+    const OrbitBranch branch = continuation_->Result();
     return {input_, setup_, branch.branch.special_points, RecordRun(input_.run, branch)};
   }
 
  private:
   RunInput input_;
   OrbitContinuationSetup setup_;
-  OrbitContinuationProblem problem_;
-  std::unique_ptr<Continuation> continuation_;
+  std::unique_ptr<OrbitContinuation> continuation_;
   mutable std::mutex mutex_;
 };
 
@@ -430,6 +431,7 @@ void BindBranches(py::module_& m) {
     d["detect_folds"] = run.detect_folds;
     d["detect_branch_points"] = run.detect_branch_points;
     d["continue_past_type_changes"] = run.continue_past_type_changes;
+    d["max_amplitude"] = run.max_amplitude;
     return d;
   });
   m.def("_sweep_defaults", [] {

@@ -1,16 +1,21 @@
-// The geometry of orbit-type maps on known arrangements of curves (CutIntoRegions), and the options'
-// and the rectangle's validation.
+// The geometry of orbit-type maps on known arrangements of curves (CutIntoRegions), the options'
+// and the rectangle's validation, and the bound the regions' content is continued under.
 #include "stickslip/branches/orbit_type_map.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/io/orbit_type_map_files.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/io/trace_files.hpp"
 
 namespace stickslip {
 namespace {
 
+namespace fs = std::filesystem;
 using Polyline = std::vector<std::pair<double, double>>;
 
 const MapRectangle kUnit{.first = "omega", .second = "u_r", .first_min = 0.0, .first_max = 1.0, .second_min = 0.0, .second_max = 2.0};
@@ -96,6 +101,35 @@ TEST(OrbitTypeMapOptions, RejectOutOfRangeValuesNamingTheField) {
   r = kUnit;
   r.second = "omega";
   EXPECT_THROW(r.Validate(), InvalidInput);
+}
+
+// The map continues the trace's orbits with the trace's bound on the amplitude (a resonance ends a
+// continuation): the stored §4.1 trace's orbits (amplitude:x2 3.3 at omega = 0.6) reach the point
+// on the trace's line under its bound, 1e3, and none reach it under a bound of 2; the region is then
+// labelled unknown, not motionless.
+TEST(OrbitsAt, ContinuesTheTracesOrbitsUnderTheTracesMaxAmplitude) {
+  const fs::path root(STICKSLIP_SOURCE_DIR);
+  const StoredTrace trace = ReadTraceFiles(root / "results/paper-4.1-omega-trace");
+  RunFile run = ReadRunFile(root / trace.run_file);
+  ASSERT_TRUE(run.trace.has_value());
+  run.trace->max_amplitude = 1234.0;
+  EXPECT_EQ(MapTraceOf(trace, &run).max_amplitude, 1234.0);
+  EXPECT_EQ(MapTraceOf(trace, nullptr).max_amplitude, kDefaultMaxAmplitude);
+  MapTrace input = MapTraceOf(trace, &run);
+  const MapRectangle r{.first = "omega", .second = "u_r", .first_min = 0.55, .first_max = 0.65, .second_min = 0.2, .second_max = 0.4};
+  const MapOrbitsAt within = OrbitsAt(input, r, 0.62, 0.2996, OrbitTypeMapOptions{});
+  ASSERT_FALSE(within.orbits.empty());
+  EXPECT_TRUE(within.failures.empty());
+  input.max_amplitude = 2.0;
+  const MapOrbitsAt bounded = OrbitsAt(input, r, 0.62, 0.2996, OrbitTypeMapOptions{});
+  EXPECT_TRUE(bounded.orbits.empty());
+  ASSERT_FALSE(bounded.failures.empty());
+  for (const std::string& f : bounded.failures) EXPECT_NE(f.find("resonance: the amplitude"), std::string::npos) << f;
+  MapRegion region;
+  region.failures = bounded.failures;
+  EXPECT_TRUE(region.Label().starts_with("unknown: no periodic motion found")) << region.Label();
+  region.failures.clear();
+  EXPECT_EQ(region.Label(), "no periodic motion");
 }
 
 TEST(CurveCondition, IsTheMarginOfATypeChangeAndTheTypeOtherwise) {

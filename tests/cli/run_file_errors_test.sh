@@ -55,6 +55,17 @@ expect 2 "r.toml:1:12: non-ASCII byte 0xc3" "$(printf 'output = "\\\303\274t"')"
 expect 2 "nest at most two levels" "$good
 x = [[[1]]]"
 expect 2 "r.toml:1:" 'output = "t'
+for bad in 0 -1; do
+  expect 2 "r.toml:8:17: key 'continuation.max_amplitude' = $bad is invalid: valid a finite max_amplitude > 0" "$good
+max_amplitude = $bad"
+done
+for bad in nan inf; do
+  expect 2 "r.toml:8:17: key 'continuation.max_amplitude' must be finite" "$good
+max_amplitude = $bad"
+done
+expect 2 "key 'continuation.max_amplitude' is invalid with a \[trace\] table" "${good/direction = \"up\"/}
+max_amplitude = 1e4
+[trace]"
 # Found by the fuzzer: a multi-line literal string hid a '#' from the screen, and the non-ASCII
 # character after it (U+FEBF) reached toml++'s __builtin_unreachable.
 expect 2 "r.toml:1:5: multi-line strings" "$(printf "a = '''/''a ''.''.0= t'# s''''\xef\xba\xbf\"\"x0\n \ng g ")"

@@ -102,6 +102,26 @@ def test_a_stepped_continuation_gives_the_branch_of_one_run():
     assert not cont.step()
 
 
+def test_a_resonance_ends_the_branch_called_whole_or_stepped_as_the_command_line(tmp_path):
+    # The §4.1 orbit continued up towards omega1 = 0.7012302: it ends at its first point whose
+    # amplitude passes max_amplitude, in one call, stepped by hand, and as `stickslip continue`.
+    keywords = dict(preset="paper-4.1", ds=0.01, ds_max=1.0, max_amplitude=200.0, output="res")
+    whole = stickslip.continue_orbit("omega", (0.3, 0.8), **keywords)
+    assert whole.termination == "stopped" and whole.summary["message"].startswith("resonance:")
+    amplitude = np.maximum(whole["amplitude:x1"], whole["amplitude:x2"])
+    assert amplitude[-1] > 200.0 and amplitude[:-1].max() <= 200.0
+    cont = stickslip.Continuation("omega", (0.3, 0.8), **keywords)
+    assert len(list(cont)) == len(whole) and cont.end == "stopped"
+    assert cont.branch().files() == whole.files()
+    done = cli("continue", "--preset", "paper-4.1", "--parameter", "omega", "--range", "0.3,0.8", "--ds", "0.01",
+               "--ds-max", "1", "--max-amplitude", "200", "--output", "res", "--results", tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert {k: v.encode() for k, v in whole.files().items()} == read_files(tmp_path / "res")
+    for bad in (0.0, -1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="max-amplitude"):
+            stickslip.continue_orbit("omega", (0.3, 0.8), preset="paper-4.1", max_amplitude=bad)
+
+
 def test_a_continuation_restarts_from_a_labelled_point_as_the_command_line(tmp_path):
     results = tmp_path / "results"
     stored = results / "paper-5.1-omega-up"

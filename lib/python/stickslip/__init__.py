@@ -187,6 +187,8 @@ def continue_orbit(parameter, range, **keywords):
     max_points  accepted points (1 to 1e6)
     shooting, linear_solver, detect_folds, detect_branch_points, continue_past_type_changes: as in
                 run files
+    max_amplitude   a resonance ends the branch at its first point where max |x1|, |x2| over the
+                orbit (scaled displacement) passes this (finite, > 0; default 1e3)
     user_values     values of the parameter at which to record a UZ point
     user_values_of  {variable: [values]}: UZ points of other unknowns
     switch_branch   with point="RUN:LABEL" at a PD or an SB: the branch that leaves the point (the

@@ -54,13 +54,15 @@ def _one_off_run(parameter, range, *, direction="up", output="python", parameter
                  point=None, switch_branch=False, boundary=None, results="results", set=None, guess=None, free=None, fix=None,
                  tie_u_r=False, ds=None,
                  ds_min=None, ds_max=None, max_points=None, shooting=None, linear_solver=None, detect_folds=None,
-                 detect_branch_points=None, continue_past_type_changes=None, user_values=(), user_values_of=None):
+                 detect_branch_points=None, continue_past_type_changes=None, max_amplitude=None, user_values=(),
+                 user_values_of=None):
     """The run `stickslip continue` makes of its options (checked by the library, as there)."""
     if range is None or len(range) != 2:
         raise TypeError("range must be (min, max)")
     given = {"ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points, "shooting": shooting,
              "linear_solver": linear_solver, "detect_folds": detect_folds,
-             "detect_branch_points": detect_branch_points, "continue_past_type_changes": continue_past_type_changes}
+             "detect_branch_points": detect_branch_points, "continue_past_type_changes": continue_past_type_changes,
+             "max_amplitude": max_amplitude}
     options = {key: (_DEFAULTS[key] if value is None else value) for key, value in given.items()}
     options.update({
         "parameter": str(parameter), "range": (float(range[0]), float(range[1])), "direction": str(direction),

@@ -171,6 +171,10 @@ MapComparison CompareWithBruteForce(const OrbitTypeMap& map, const MapTrace* tra
       reasons.push_back(fmt::format("'{}' of the map not found by the brute force's starts", t));
       if (cmp.others.empty()) unexplained = true;  // every start settled on the types found
     }
+    if (!region.failures.empty()) {
+      reasons.push_back(fmt::format("the region's content is incomplete: {} continuation(s) of the trace's orbits did "
+                                    "not reach its interior point", region.failures.size()));
+    }
     cmp.explanation = fmt::format("{}", fmt::join(reasons, "; "));
     cmp.explained = !unexplained;
     result.disagreements.push_back(std::move(cmp));

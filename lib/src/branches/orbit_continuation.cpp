@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -136,30 +138,43 @@ ResonanceWatch::ResonanceWatch(const OrbitContinuationProblem& problem, double m
 std::optional<BranchStop> ResonanceWatch::Check(const Branch& branch) {
   for (; checked_ < branch.points.size(); ++checked_) {
     const BranchPoint& point = branch.points[checked_];
-    // max |x1|, |x2| over the orbit as the monitor recorded it, exact.
-    const double amplitude = std::max(point.recorded(amplitude_x1_), point.recorded(amplitude_x2_));
+    // max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan (no bound) stops too.
+    const double x1 = point.recorded(amplitude_x1_), x2 = point.recorded(amplitude_x2_);
+    const double amplitude = std::isnan(x1) || std::isnan(x2) ? std::numeric_limits<double>::quiet_NaN() : std::max(x1, x2);
     if (amplitude <= max_amplitude_) continue;
+    const bool start = checked_ == 0;
     return BranchStop{static_cast<int>(checked_++), BranchEnd::kStopped,
-                      fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} passed max_amplitude = {:g} at "
-                                  "{} = {:.10g}",
-                                  amplitude, max_amplitude_, parameter_, point.lambda)};
+                      fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} {} max_amplitude = {:g} at "
+                                  "{} = {:.10g}{}",
+                                  amplitude, start ? "of the start is above" : "passed", max_amplitude_, parameter_,
+                                  point.lambda, start ? " (a larger max_amplitude continues it)" : "")};
   }
   return std::nullopt;
 }
 
+OrbitContinuation::OrbitContinuation(const OrbitContinuationSetup& setup)
+    : problem_(MakeOrbitContinuation(setup)),
+      continuation_(std::make_unique<Continuation>(problem_.Continued(), problem_.monitor.get(), problem_.options,
+                                                   problem_.start)),
+      resonance_(problem_, setup.max_amplitude, setup.parameter) {}
+
+bool OrbitContinuation::Step() {
+  if (ended_) return false;
+  const bool more = continuation_->Step();
+  if (const std::optional<BranchStop> stop = resonance_.Check(continuation_->branch())) {
+    ended_ = EndedAt(continuation_->branch(), *stop);
+    return false;
+  }
+  return more;
+}
+
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer) {
-  OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
-  Continuation continuation(problem.Continued(), problem.monitor.get(), problem.options, problem.start);
-  ResonanceWatch resonance(problem, setup.max_amplitude, setup.parameter);
-  for (bool more = true; more;) {
-    more = continuation.Step();
-    if (const std::optional<BranchStop> stop = resonance.Check(continuation.branch())) {
-      return ToOrbitBranch(problem, EndedAt(continuation.branch(), *stop));
-    }
-    if (more && observer) observer(continuation.branch());
+  OrbitContinuation continuation(setup);
+  while (continuation.Step()) {
+    if (observer) observer(continuation.branch());
   }
-  return ToOrbitBranch(problem, continuation.branch());
+  return continuation.Result();
 }
 
 }  // namespace stickslip

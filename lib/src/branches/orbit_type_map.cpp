@@ -55,6 +55,7 @@ int UnknownPosition(const OrbitContinuationSetup& setup, const std::string& name
 OrbitContinuationSetup SetupAt(const MapTrace& trace, const Orbit& orbit, const UnknownChoice& unknowns,
                                const std::string& parameter) {
   OrbitContinuationSetup setup{orbit, unknowns, parameter, trace.shooting, LinearSolverType::kKlu, trace.options, {}, {}, {}};
+  setup.max_amplitude = trace.max_amplitude;
   return setup;
 }
 
@@ -170,7 +171,12 @@ std::string MapRegion::Label() const {
   }
   std::sort(parts.begin(), parts.end());
   parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
-  return parts.empty() ? "no periodic motion" : fmt::format("{}", fmt::join(parts, "; "));
+  // A continuation of the trace's orbits that failed leaves the content incomplete: said, so that a
+  // region is not called motionless for want of a solve.
+  const std::string incomplete =
+      failures.empty() ? "" : fmt::format(" ({} continuation(s) of the trace's orbits did not reach it)", failures.size());
+  if (parts.empty()) return failures.empty() ? "no periodic motion" : "unknown: no periodic motion found" + incomplete;
+  return fmt::format("{}", fmt::join(parts, "; ")) + incomplete;
 }
 
 std::vector<std::string> MapRegion::StableTypes() const {

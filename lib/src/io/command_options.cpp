@@ -107,6 +107,9 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
     throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
   }
   WholeNumber("max-points", run.max_points, 1, kMaxRunPoints);
+  if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
+    throw InvalidInput("max-amplitude", run.max_amplitude, "a finite max-amplitude > 0");
+  }
   if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
 }
 

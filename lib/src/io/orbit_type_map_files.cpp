@@ -175,6 +175,7 @@ MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
   MapTrace map;
   map.parameter = trace.parameter;
   if (run) SetContinuationOptions(*run, &map.options);
+  if (run && run->trace) map.max_amplitude = run->trace->max_amplitude;
   // The trace's unknowns as its start had them: a preset's (paper-4.2 releases u_s, tied to u_r),
   // then the run file's. Its restart point gives values only, so it is not read.
   UnknownChoice unknowns;

@@ -12,6 +12,7 @@
 #include "stickslip/io/run_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -325,6 +326,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   c.Boolean("detect_folds", &run.detect_folds);
   c.Boolean("detect_branch_points", &run.detect_branch_points);
   c.Boolean("continue_past_type_changes", &run.continue_past_type_changes);
+  c.Number("max_amplitude", &run.max_amplitude);
   std::vector<double> user_values;
   c.Numbers("user_values", &user_values);
   for (double v : user_values) run.user_values.emplace_back(run.parameter, v);
@@ -339,6 +341,14 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   auto check_positive = [&](std::string_view key, double v) {
     if (!(v > 0.0)) c.Fail(*c.Get(key), key, fmt::format("= {} is invalid: valid range > 0", v));
   };
+  if (c.Get("max_amplitude") && !(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
+    c.Fail(*c.Get("max_amplitude"), "max_amplitude",
+           fmt::format("= {} is invalid: valid a finite max_amplitude > 0", run.max_amplitude));
+  }
+  if (trace != nullptr && c.Get("max_amplitude")) {
+    c.Fail(*c.Get("max_amplitude"), "max_amplitude",
+           "is invalid with a [trace] table: valid left out (a trace's bound is trace.max_amplitude)");
+  }
   if (c.Get("ds")) check_positive("ds", run.ds);
   if (c.Get("ds_min")) check_positive("ds_min", run.ds_min);
   if (c.Get("ds_max")) check_positive("ds_max", run.ds_max);

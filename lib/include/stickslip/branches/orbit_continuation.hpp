@@ -52,8 +52,8 @@ struct OrbitBranch {
 
 // Throws InvalidInput naming "free", "fix", "unknowns", "parameter" or "max_amplitude" if the
 // choice of unknowns is not square, the parameter is not a held variable or max_amplitude is not
-// > 0. A branch ends as the engine ends it, or at a resonance (max_amplitude). `observer`, if given, sees the branch after
-// every step (a progress display, say).
+// > 0. A branch ends as the engine ends it, or at a resonance (max_amplitude). `observer`, if
+// given, sees the branch after every step (a progress display, say).
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer = {});
 
@@ -97,6 +97,25 @@ class ResonanceWatch {
   int amplitude_x1_ = 0;  // the measures' indices in BranchPoint::recorded
   int amplitude_x2_ = 0;
   std::size_t checked_ = 0;
+};
+
+// A branch of periodic orbits stepped by hand, ending as ContinueOrbit's does (at a resonance too):
+//   OrbitContinuation c(setup);
+//   while (c.Step()) show(c.branch());
+//   OrbitBranch b = c.Result();
+class OrbitContinuation {
+ public:
+  explicit OrbitContinuation(const OrbitContinuationSetup& setup);
+  bool Step();  // false once the branch has ended
+  const Branch& branch() const { return ended_ ? *ended_ : continuation_->branch(); }
+  const OrbitContinuationProblem& problem() const { return problem_; }
+  OrbitBranch Result() const { return ToOrbitBranch(problem_, branch()); }
+
+ private:
+  OrbitContinuationProblem problem_;
+  std::unique_ptr<Continuation> continuation_;
+  ResonanceWatch resonance_;
+  std::optional<Branch> ended_;  // the branch ended at a resonance
 };
 
 }  // namespace stickslip

@@ -58,6 +58,7 @@ struct MapTrace {
   // continuation; the range, direction, max_points and user values are the map's.
   ContinuationOptions options;
   ShootingChoice shooting = ShootingChoice::kAuto;
+  double max_amplitude = kDefaultMaxAmplitude;  // the trace's: a resonance ends a curve or a content continuation
   std::vector<MapTraceBranch> branches;
 };
 
@@ -124,7 +125,8 @@ struct MapRegion {
   int clearance = 0;    // its distance from the nearest cut cell or edge, in cells
   std::vector<MapOrbit> orbits;  // every orbit found there, deduplicated, in the order found
   std::vector<std::string> failures;  // continuations that did not reach the point (where, why)
-  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no periodic motion".
+  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no periodic
+  // motion"; with failures, how many continuations did not reach the point ("unknown: ..." if none did).
   std::string Label() const;
   // The admissible stable orbits' types, sorted.
   std::vector<std::string> StableTypes() const;

@@ -20,7 +20,8 @@
 //   range = [0.3, 1.0]
 //   ds = 0.01                          # optional: ds_min, ds_max, max_points, shooting,
 //   user_values = [0.6]                # linear_solver, detect_folds, detect_branch_points,
-//                                      # continue_past_type_changes, user_values_of
+//                                      # continue_past_type_changes, user_values_of,
+//                                      # max_amplitude (not in a trace's file: trace.max_amplitude)
 //   [trace]                            # optional: a trace (branches/trace.hpp) instead of one
 //   max_branches = 50                  # branch; then direction is "both" or left out, and
 //   max_amplitude = 1e3                # continue_past_type_changes is refused. Keys left out
@@ -92,6 +93,7 @@ struct RunFile {
   bool detect_folds = ContinuationOptions{}.detect_folds;
   bool detect_branch_points = ContinuationOptions{}.detect_branch_points;
   bool continue_past_type_changes = ContinuationOptions{}.continue_past_terminal;
+  double max_amplitude = kDefaultMaxAmplitude;  // a resonance ends the branch (OrbitContinuationSetup)
   NamedValues user_values;  // (variable, value); the continuation parameter's from user_values
   // [trace]: present for a trace, with its keys (the rest of TraceOptions at its defaults).
   std::optional<TraceOptions> trace;
