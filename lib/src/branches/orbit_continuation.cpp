@@ -123,10 +123,14 @@ Branch EndedAt(Branch branch, const BranchStop& stop) {
   return branch;
 }
 
-ResonanceWatch::ResonanceWatch(const OrbitContinuationProblem& problem, double max_amplitude, std::string parameter)
-    : max_amplitude_(max_amplitude), parameter_(std::move(parameter)) {
+OrbitContinuation::OrbitContinuation(const OrbitContinuationSetup& setup)
+    : problem_(MakeOrbitContinuation(setup)),
+      continuation_(std::make_unique<Continuation>(problem_.Continued(), problem_.monitor.get(), problem_.options,
+                                                   problem_.start)),
+      max_amplitude_(setup.max_amplitude),
+      parameter_(setup.parameter) {
   auto recorded = [&](const char* name) {
-    for (const PointColumn& c : problem.monitor->Columns()) {
+    for (const PointColumn& c : problem_.monitor->Columns()) {
       if (c.name == name && !c.monitored) return c.index;
     }
     throw std::logic_error(std::string("the orbit monitor records no ") + name);
@@ -135,7 +139,8 @@ ResonanceWatch::ResonanceWatch(const OrbitContinuationProblem& problem, double m
   amplitude_x2_ = recorded(orbit_columns::kAmplitudeX2);
 }
 
-std::optional<BranchStop> ResonanceWatch::Check(const Branch& branch) {
+std::optional<BranchStop> OrbitContinuation::Resonance() {
+  const Branch& branch = continuation_->branch();
   for (; checked_ < branch.points.size(); ++checked_) {
     const BranchPoint& point = branch.points[checked_];
     // max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan (no bound) stops too.
@@ -152,16 +157,10 @@ std::optional<BranchStop> ResonanceWatch::Check(const Branch& branch) {
   return std::nullopt;
 }
 
-OrbitContinuation::OrbitContinuation(const OrbitContinuationSetup& setup)
-    : problem_(MakeOrbitContinuation(setup)),
-      continuation_(std::make_unique<Continuation>(problem_.Continued(), problem_.monitor.get(), problem_.options,
-                                                   problem_.start)),
-      resonance_(problem_, setup.max_amplitude, setup.parameter) {}
-
 bool OrbitContinuation::Step() {
   if (ended_) return false;
   const bool more = continuation_->Step();
-  if (const std::optional<BranchStop> stop = resonance_.Check(continuation_->branch())) {
+  if (const std::optional<BranchStop> stop = Resonance()) {
     ended_ = EndedAt(continuation_->branch(), *stop);
     return false;
   }

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
 #include <utility>
 
 #include "stickslip/branches/bifurcation_branches.hpp"
@@ -35,25 +34,26 @@ class BranchRunner {
  public:
   BranchRunner(const TraceOptions& options, double total) : options_(options), total_(total) {}
 
-  OrbitBranch Run(const OrbitContinuationSetup& setup, bool to_next_change) {
-    OrbitContinuationProblem problem = MakeOrbitContinuation(setup);
-    problem.options.continue_past_terminal = to_next_change;
-    problem.options.progress = {};
-    Continuation continuation(problem.Continued(), problem.monitor.get(), problem.options, problem.start);
-    ResonanceWatch resonance(problem, setup.max_amplitude, setup.parameter);
+  OrbitBranch Run(OrbitContinuationSetup setup, bool to_next_change) {
+    setup.options.continue_past_terminal = to_next_change;
+    setup.options.progress = {};
+    OrbitContinuation continuation(setup);
     std::size_t counted = 0;
     std::size_t special_checked = 0;
     for (bool more = true; more;) {
       more = continuation.Step();
       const Branch& b = continuation.branch();
-      std::optional<BranchStop> stop = resonance.Check(b);
+      // Ended at a resonance (its last point): a change of type before it ends the branch first.
+      const bool resonance = b.end == BranchEnd::kStopped;
+      const int last = static_cast<int>(b.points.size()) - 1;
+      std::optional<BranchStop> stop;
       for (; counted < b.points.size(); ++counted) {
         done_ += 1.0;
         if (options_.progress) options_.progress({done_, std::max(total_, done_), "points", b.points[counted].lambda});
       }
       for (; to_next_change && special_checked < b.special_points.size(); ++special_checked) {
         const SpecialPoint& s = b.special_points[special_checked];
-        if (!IsMarginChange(s) || s.point == 0 || (stop && s.point >= stop->point)) continue;
+        if (!IsMarginChange(s) || s.point == 0 || (resonance && s.point >= last)) continue;
         // The change the branch starts on, located again a rounding error away (its margin is zero
         // there only to the location's tolerance): no change of its own.
         const Eigen::VectorXd& u0 = b.points.front().u;
@@ -65,9 +65,9 @@ class BranchRunner {
                                       setup.parameter, s.lambda)};
         break;
       }
-      if (stop) return ToOrbitBranch(problem, EndedAt(b, *stop));
+      if (stop) return ToOrbitBranch(continuation.problem(), EndedAt(b, *stop));
     }
-    return ToOrbitBranch(problem, continuation.branch());
+    return continuation.Result();
   }
 
  private:

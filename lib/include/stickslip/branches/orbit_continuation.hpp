@@ -83,23 +83,9 @@ struct BranchStop {
 // points dropped, an EP there (its test function ToString(why)).
 Branch EndedAt(Branch branch, const BranchStop& stop);
 
-// The resonance end of a branch stepped by hand on `problem`: Check sees the points added since
-// its last call and returns the first whose amplitude passed max_amplitude, or whose amplitude is
-// nan (the extrema's search was cut short: no bound).
-class ResonanceWatch {
- public:
-  ResonanceWatch(const OrbitContinuationProblem& problem, double max_amplitude, std::string parameter);
-  std::optional<BranchStop> Check(const Branch& branch);
-
- private:
-  double max_amplitude_ = 0.0;
-  std::string parameter_;
-  int amplitude_x1_ = 0;  // the measures' indices in BranchPoint::recorded
-  int amplitude_x2_ = 0;
-  std::size_t checked_ = 0;
-};
-
-// A branch of periodic orbits stepped by hand, ending as ContinueOrbit's does (at a resonance too):
+// A branch of periodic orbits stepped by hand, ending as ContinueOrbit's does: as the engine ends
+// it, or at a resonance (BranchEnd::kStopped at the first point whose amplitude passed
+// setup.max_amplitude, or is nan: the extrema's search was cut short, no bound).
 //   OrbitContinuation c(setup);
 //   while (c.Step()) show(c.branch());
 //   OrbitBranch b = c.Result();
@@ -112,9 +98,16 @@ class OrbitContinuation {
   OrbitBranch Result() const { return ToOrbitBranch(problem_, branch()); }
 
  private:
+  // The first point added since the last call whose amplitude is past the bound, as a stop.
+  std::optional<BranchStop> Resonance();
+
   OrbitContinuationProblem problem_;
   std::unique_ptr<Continuation> continuation_;
-  ResonanceWatch resonance_;
+  double max_amplitude_ = 0.0;
+  std::string parameter_;
+  int amplitude_x1_ = 0;  // the measures' indices in BranchPoint::recorded
+  int amplitude_x2_ = 0;
+  std::size_t checked_ = 0;     // points seen by Resonance
   std::optional<Branch> ended_;  // the branch ended at a resonance
 };
 
