@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 
 
 namespace stickslip {
@@ -24,13 +25,11 @@ namespace ov = orbit_variables;
 void KeepInPhysicalRanges(const OrbitContinuationSetup& setup, const std::vector<int>& free, int parameter,
                           ContinuationOptions* options) {
   const int n = setup.start.signature.size();
-  static constexpr std::array<std::pair<double, double>, kParameterCount> kRanges = {{
-      {kMinChi, kMaxChi}, {kMinEta, kMaxEta}, {kMinOmega, kMaxOmega}, {kMinSlidingFriction, kMaxFriction},
-      {kMinSlidingFriction, kMaxFriction}}};
+  const std::vector<ParameterDescription>& ranges = Pascal2014{}.Description().parameters;
   for (int k = 0; k < kParameterCount; ++k) {
     if (parameter != ov::Parameter(n, kAllParameters[k])) continue;
-    options->lambda_min = std::max(options->lambda_min, kRanges[k].first);
-    options->lambda_max = std::min(options->lambda_max, kRanges[k].second);
+    options->lambda_min = std::max(options->lambda_min, ranges[k].minimum);
+    options->lambda_max = std::min(options->lambda_max, ranges[k].maximum);
   }
   const int u_s = ov::Parameter(n, ParameterId::kSlidingFriction);
   const int u_r = ov::Parameter(n, ParameterId::kStaticFriction);

@@ -8,31 +8,6 @@
 
 namespace stickslip {
 
-const char* ToString(Mode mode) {
-  switch (mode) {
-    case Mode::kSlipNegative: return "slip-";
-    case Mode::kSlipPositive: return "slip+";
-    case Mode::kStick: break;
-  }
-  return "stick";
-}
-
-std::optional<Mode> ModeFromString(std::string_view text) {
-  for (Mode m : {Mode::kSlipNegative, Mode::kSlipPositive, Mode::kStick}) {
-    if (text == ToString(m)) return m;
-  }
-  return std::nullopt;
-}
-
-int SlipDirection(Mode mode) {
-  switch (mode) {
-    case Mode::kSlipNegative: return -1;
-    case Mode::kSlipPositive: return 1;
-    case Mode::kStick: break;
-  }
-  return 0;
-}
-
 FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                     const Parameters& p) {
   // The parameters enter Q, d0, omega_j and Lambda in nested ways: forward-mode automatic

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -444,7 +445,7 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
     t = t_event;
     x = x_end;
     mode = event.mode_after;
-    ReportSimulated(options, p, t);
+    ReportSimulated(options, 2.0 * std::numbers::pi / p.omega, t);
     if (static_cast<int>(result.events.size()) >= options.max_events) {
       return stop(SimulationEnd::kMaxEvents, fmt::format("stopped after {} events at t = {} (max_events)",
                               result.events.size(), t));

@@ -5,25 +5,18 @@
 #include <fmt/format.h>
 
 #include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 
 namespace stickslip {
 
 const char* ToString(ParameterId id) {
-  switch (id) {
-    case ParameterId::kChi: return "chi";
-    case ParameterId::kEta: return "eta";
-    case ParameterId::kOmega: return "omega";
-    case ParameterId::kSlidingFriction: return "u_s";
-    case ParameterId::kStaticFriction: break;
-  }
-  return "u_r";
+  return Pascal2014{}.Description().parameters[static_cast<int>(id)].name.c_str();
 }
 
 std::optional<ParameterId> ParameterFromString(std::string_view key) {
-  for (ParameterId id : kAllParameters) {
-    if (key == ToString(id)) return id;
-  }
-  return std::nullopt;
+  const std::optional<int> index = Pascal2014{}.Description().ParameterIndex(key);
+  if (!index) return std::nullopt;
+  return kAllParameters[*index];
 }
 
 std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) {

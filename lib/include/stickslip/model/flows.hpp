@@ -8,23 +8,14 @@
 #pragma once
 
 #include <array>
-#include <optional>
-#include <string_view>
 
 #include <Eigen/Core>
 
 #include "stickslip/model/modal.hpp"
+#include "stickslip/model/mode.hpp"
 #include "stickslip/model/parameters.hpp"
 
 namespace stickslip {
-
-// slip with x2' < 0 (friction +u_s, eq. 5), slip with x2' > 0 ("overshooting", friction -u_s,
-// eq. 8), stick with x2' = 0 (eq. 9-10).
-enum class Mode { kSlipNegative, kSlipPositive, kStick };
-const char* ToString(Mode mode);  // "slip-", "slip+", "stick"
-std::optional<Mode> ModeFromString(std::string_view text);
-// Sign of x2' in the mode: -1, +1, or 0 for a stick.
-int SlipDirection(Mode mode);
 
 template <typename T>
 using StateT = Eigen::Matrix<T, 4, 1>;

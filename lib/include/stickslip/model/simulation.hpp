@@ -1,6 +1,7 @@
-// Event-driven simulation of the nonsmooth oscillator under Coulomb's law (Pascal 2014,
-// eqs. 2-4, 11): the result types shared by every simulator, and the exact simulator that
-// advances the closed-form flows (flows.hpp) from event to event.
+// Event-driven simulation of an oscillator with a Coulomb contact (Pascal 2014, eqs. 2-4, 11, for
+// the paper's model): the result types shared by every simulator and every model
+// (oscillator_model.hpp), and the paper's model's entry to the exact simulator
+// (exact_simulator.hpp).
 #pragma once
 
 #include <functional>
@@ -9,6 +10,7 @@
 
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/progress.hpp"
 
@@ -23,33 +25,37 @@ enum class SegmentEnd { kStop, kStickExit, kHorizon };
 const char* ToString(SegmentEnd end);  // "stop", "stick-exit", "horizon"
 
 // One interval of motion in a single mode. Times are absolute (forcing cos(omega t + phi)).
-struct Segment {
+template <typename StateType>
+struct BasicSegment {
   Mode mode = Mode::kStick;
   double t_start = 0.0;
   double t_end = 0.0;
-  State start = State::Zero();
-  State end = State::Zero();
+  StateType start = StateType::Zero();
+  StateType end = StateType::Zero();
   SegmentEnd end_reason = SegmentEnd::kHorizon;
 };
 
 // A switching event between two segments. At a stop, mode_after tells the outcome: the reverse
 // slip (a normal stop), a stick, or the same slip (an abnormal stop, x2' = x2'' = 0, which needs
 // u_r = u_s: ERRATA).
-struct Event {
+template <typename StateType>
+struct BasicEvent {
   double t = 0.0;
   EventKind kind = EventKind::kStop;
   Mode mode_before = Mode::kStick;
   Mode mode_after = Mode::kStick;
-  State state = State::Zero();
+  StateType state = StateType::Zero();
   bool IsAbnormalStop() const { return kind == EventKind::kStop && mode_before == mode_after; }
 };
 
-struct TimeSample {
+template <typename StateType>
+struct BasicTimeSample {
   double t = 0.0;
-  State state = State::Zero();
+  StateType state = StateType::Zero();
 };
 
-struct SimulationOptions {
+template <typename StateType>
+struct BasicSimulationOptions {
   double duration = 0.0;      // simulated time from t = 0, > 0
   double sample_step = 0.0;   // > 0: also record the state every sample_step (for CSV output)
   // A guard against chattering (infinitely many events in finite time) and a bound on the memory
@@ -63,11 +69,16 @@ struct SimulationOptions {
   // When set, every sample goes to it in time order, with the mode of the segment that holds it
   // (at an event, the segment that ends there), instead of into SimulationResult::samples: a long,
   // finely sampled simulation is then streamed rather than held in memory.
-  std::function<void(const TimeSample&, Mode)> on_sample;
+  std::function<void(const BasicTimeSample<StateType>&, Mode)> on_sample;
 };
 
-// options.progress, if any, at time t of a simulation of p (both simulators report this way).
-void ReportSimulated(const SimulationOptions& options, const Parameters& p, double t);
+// options.progress, if any, at time t of a simulation whose forcing has the given period (both
+// simulators report this way).
+template <typename StateType>
+void ReportSimulated(const BasicSimulationOptions<StateType>& options, double forcing_period, double t) {
+  if (!options.progress) return;
+  options.progress({t / forcing_period, options.duration / forcing_period, "periods"});
+}
 
 // How a simulation ended: a numerical outcome, not an error (bad input throws InvalidInput).
 enum class SimulationEnd {
@@ -78,25 +89,35 @@ enum class SimulationEnd {
 };
 const char* ToString(SimulationEnd end);  // "duration", "max-events", "stuck-at-rest", "search-limit"
 
-struct SimulationResult {
-  Parameters parameters;
+// A simulation of a model (oscillator_model.hpp).
+template <typename Model>
+struct BasicSimulationResult {
+  using State = typename Model::State;
+  typename Model::Parameters parameters;
   double phi = 0.0;  // forcing phase at t = 0
-  std::vector<Segment> segments;
-  std::vector<Event> events;
-  std::vector<TimeSample> samples;  // filled when sample_step > 0
+  std::vector<BasicSegment<State>> segments;
+  std::vector<BasicEvent<State>> events;
+  std::vector<BasicTimeSample<State>> samples;  // filled when sample_step > 0
   SimulationEnd end = SimulationEnd::kDuration;
   std::string message;  // why it stopped early, if it did
   bool Completed() const { return end == SimulationEnd::kDuration; }
 };
 
+// The paper's model, as every layer above uses it today.
+using Segment = BasicSegment<State>;
+using Event = BasicEvent<State>;
+using TimeSample = BasicTimeSample<State>;
+using SimulationOptions = BasicSimulationOptions<State>;
+using SimulationResult = BasicSimulationResult<Pascal2014>;
+
 // Initial mode from a state: the sign of x2', or Coulomb's law at rest when x2' = 0 (to
 // rounding: |x2'| <= 1e-12 (1 + |(x1, x2, x1')|)).
 Mode InitialMode(const State& x0, double phi, const Parameters& p);
 
-// The exact event-driven simulator. Every stop and stick exit is located to
-// options.zeros.time_tolerance by bracketing root finding on the closed form; no event between
-// two samples can be missed (zeros are excluded only by a bound on |f''|, see
-// sinusoid_sum.hpp). Preconditions: Validate(p) passed, x0 finite, duration > 0.
+// The exact event-driven simulator (exact_simulator.hpp) for the paper's model. Every stop and
+// stick exit is located to options.zeros.time_tolerance by bracketing root finding on the closed
+// form; no event between two samples can be missed (zeros are excluded only by a bound on |f''|,
+// see sinusoid_sum.hpp). Preconditions: Validate(p) passed, x0 finite, duration > 0.
 SimulationResult SimulateExact(const Parameters& p, const State& x0, double phi,
                                const SimulationOptions& options);
 

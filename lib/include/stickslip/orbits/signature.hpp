@@ -16,7 +16,8 @@
 #include <string_view>
 #include <vector>
 
-#include "stickslip/model/flows.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/mode.hpp"
 
 namespace stickslip {
 

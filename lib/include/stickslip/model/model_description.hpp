@@ -1,0 +1,36 @@
+// What a model says about itself as data: its parameters (name, meaning, unit, valid range), the
+// names of its coordinates and state components. The layers above name things through it: file
+// columns, messages, the keys a front end accepts. BifurcationKit's `BifurcationProblem` carries
+// the parameter lens and the record-from-solution names the same way; COCO's toolboxes take the
+// labels of a problem from its constructor.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stickslip {
+
+struct ParameterDescription {
+  std::string name;     // key in files, on the command line and in Python: "omega"
+  std::string meaning;  // one line for --help and reference pages
+  std::string unit;     // "1" for a scaled (dimensionless) parameter, otherwise SI: "rad/s", "N"
+  double minimum = 0.0;  // the closed valid range, as the model validates it
+  double maximum = 0.0;
+  std::string range;  // the range as messages and --help print it: "0.01 <= chi <= 0.99"
+};
+
+struct ModelDescription {
+  std::string name;  // "pascal-2014"
+  // In the order of the model's parameter derivatives (the columns of every d/dparameters).
+  std::vector<ParameterDescription> parameters;
+  std::vector<std::string> coordinates;       // "x1", "x2": the generalised coordinates q
+  std::vector<std::string> state_components;  // "x1", "x2", "x1'", "x2'": (q, q')
+
+  int ParameterCount() const { return static_cast<int>(parameters.size()); }
+  std::optional<int> ParameterIndex(std::string_view name) const;
+  int StateSize() const { return static_cast<int>(state_components.size()); }
+};
+
+}  // namespace stickslip

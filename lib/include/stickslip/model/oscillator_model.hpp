@@ -1,0 +1,70 @@
+// The model interface: what the algorithms above the model (the simulators today; the segment
+// walk, periodicity, margins and stability next) may ask of an oscillator with one Coulomb
+// contact. An algorithm is a template on a type M satisfying OscillatorModel; it is compiled for
+// each model (no virtual call per flow evaluation, and forward-mode AD runs through the model's
+// scalar templates), and erased at the boundary the layers above already use. COCO's
+// `ode_isol2hspo` asks the same of a hybrid system (a vector field, events and resets per mode,
+// labelled by a signature); Ceres keeps its templated functors behind `CostFunction` the same way.
+//
+// What a model provides, for one contact whose relative velocity is s:
+//   - its description as data (model_description.hpp): parameter names, units and ranges, the
+//     names of the state's components;
+//   - State and Parameters types, and Validate(p) (the first violation, not thrown);
+//   - the motion in a mode from a state and a forcing phase (MotionInMode), exact in closed form,
+//     with StateAt(elapsed): the flow;
+//   - the contact's velocity s and "at rest" (s = 0 exactly, and s = 0 to rounding);
+//   - the stick force (the friction force a stick needs, signed so that s > threshold drives a
+//     slip with s < 0) and the static threshold it must stay within; Coulomb's law at rest
+//     (ModeFromRest); whether abnormal stops (s = s' = 0 in a slip, which needs static = kinetic
+//     level) can occur;
+//   - along a motion, the contact velocity and the stick force as functions of the elapsed time
+//     in a form the root finder can search without missing a root (numerics/sinusoid_sum.hpp);
+//   - the forcing frequency (the forcing is cos(omega t + phi)).
+//
+// How what comes next fits (the general-oscillator issue):
+//   - n degrees of freedom: State becomes Eigen::Matrix<T, 2n, 1> for a model of fixed size, or
+//     Eigen::VectorXd for one whose size comes from a file; nothing above indexes the state.
+//   - viscous damping: the motion in a mode has complex eigenvalues, so the functions along a
+//     motion become sums of exponentially weighted sinusoids (the generalised root finder); the
+//     interface is unchanged.
+//   - a moving belt: s = w'q' - v_b(t); "at rest" means s = 0, not a zero component, which is why
+//     the interface names the contact velocity instead of a component index. The orbit's origin
+//     is then the stick-entry event (s = 0), not "x2' = 0".
+//   - no forcing: ForcingFrequency is 0 and the period becomes an unknown of the orbit, its phase
+//     fixed by an event; the simulators then report progress in time, not in forcing periods.
+//   - several contacts: Mode becomes a tuple of contact states and ModeFromRest a small linear
+//     complementarity problem (Glocker & Studer 2005); the contact-velocity and stick-force
+//     members take the contact's index.
+#pragma once
+
+#include <concepts>
+#include <optional>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/model_description.hpp"
+#include "stickslip/model/mode.hpp"
+#include "stickslip/numerics/sinusoid_sum.hpp"
+
+namespace stickslip {
+
+template <typename M>
+concept OscillatorModel =
+    requires(const M& model, Mode mode, const typename M::State& x, const typename M::Parameters& p,
+             const typename M::Motion& motion, double phase) {
+      { model.Description() } -> std::same_as<const ModelDescription&>;
+      { model.Validate(p) } -> std::same_as<std::optional<InvalidInput>>;
+      { model.MotionInMode(mode, x, phase, p) } -> std::same_as<typename M::Motion>;
+      { motion.StateAt(phase) } -> std::convertible_to<typename M::State>;
+      { model.ForcingFrequency(p) } -> std::same_as<double>;
+      { model.ContactVelocity(x) } -> std::same_as<double>;
+      { model.AtRest(x) } -> std::same_as<typename M::State>;
+      { model.NearRest(x) } -> std::same_as<bool>;
+      { model.StickForce(x, phase, p) } -> std::same_as<double>;
+      { model.StaticThreshold(p) } -> std::same_as<double>;
+      { model.AbnormalStopsPossible(p) } -> std::same_as<bool>;
+      { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;
+      { model.ContactVelocityAlong(motion) } -> std::same_as<SinusoidSum>;
+      { model.StickForceAlong(motion, phase, p) } -> std::same_as<SinusoidSum>;
+    };
+
+}  // namespace stickslip

@@ -1,0 +1,58 @@
+// M. Pascal's two-degree-of-freedom oscillator (Nonlinear Dyn. 77 (2014) 267-276) as an
+// OscillatorModel (oscillator_model.hpp): two masses, two springs, Coulomb friction on the second
+// mass against a fixed ground, forcing cos(omega t + phi), in the paper's scaled variables
+// (eq. 3). The state is (x1, x2, x1', x2'); the contact's velocity is x2'. Its closed forms live
+// in flows.hpp, modal.hpp and events.hpp; this struct gathers them behind the interface, at the
+// fixed size 4 (no allocation, no run-time size).
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/events.hpp"
+#include "stickslip/model/flows.hpp"
+#include "stickslip/model/model_description.hpp"
+#include "stickslip/model/parameters.hpp"
+
+namespace stickslip {
+
+struct Pascal2014 {
+  using State = stickslip::State;
+  using Parameters = stickslip::Parameters;
+  using Motion = ModeMotion<double>;
+
+  // chi, eta, omega, u_s, u_r (ParameterId order); x1, x2, x1', x2'.
+  const ModelDescription& Description() const;
+  std::optional<InvalidInput> Validate(const Parameters& p) const { return stickslip::Validate(p); }
+
+  Motion MotionInMode(Mode mode, const State& start, double phase, const Parameters& p) const {
+    return stickslip::MotionInMode(mode, start, phase, p);
+  }
+  double ForcingFrequency(const Parameters& p) const { return p.omega; }
+
+  double ContactVelocity(const State& x) const { return x(3); }
+  State AtRest(const State& x) const { return stickslip::AtRest(x); }
+  // x2' within rounding of zero: a sampled state at a stop carries ~1e-15, and a slip started
+  // from it would miss the stop that is due at once.
+  bool NearRest(const State& x) const {
+    return std::abs(x(3)) <= 1e-12 * (1.0 + x.head<3>().lpNorm<Eigen::Infinity>());
+  }
+
+  double StickForce(const State& x, double phase, const Parameters& p) const {
+    return stickslip::StickForce(x, phase, p);
+  }
+  double StaticThreshold(const Parameters& p) const { return p.eta * p.u_r; }  // eq. (4)
+  // u_r = u_s (eq. 25, ERRATA): a slip may touch rest and go on.
+  bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.u_r - p.u_s) <= 1e-12 * p.u_r; }
+  Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {
+    return stickslip::ModeFromRest(x, phase, p);
+  }
+
+  SinusoidSum ContactVelocityAlong(const Motion& motion) const { return CoordinateAlong(motion, 3); }
+  SinusoidSum StickForceAlong(const Motion& motion, double phase, const Parameters& p) const {
+    return stickslip::StickForceAlong(motion, phase, p);
+  }
+};
+
+}  // namespace stickslip
