@@ -93,6 +93,16 @@ TEST(SinusoidSumZeros, HandlesIncommensurateFrequenciesAndDrift) {
   }
 }
 
+TEST(SinusoidSumZeros, FindsTheZerosOfATinyFunctionWithoutFalseCrossings) {
+  // 1e-200 cos t: the product of two of its values underflows to zero, which once passed for a
+  // sign change at every sub-interval.
+  const SinusoidSum f(0.0, 0.0, {{1.0, 1e-200, 0.0}});
+  const ZeroSearch search = Zeros(f, 0.0, 10.0, 100);
+  EXPECT_TRUE(search.Complete());
+  ASSERT_EQ(search.zeros.size(), 3u);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(search.zeros[k].t, kPi / 2 + k * kPi, 1e-13);
+}
+
 TEST(SinusoidSumMinimum, FindsTheInteriorMinimum) {
   const SinusoidSum f(0.0, 0.0, {{1.0, 0.0, 1.0}});  // sin t
   const Extremum m = Minimum(f, 0.0, 2 * kPi);

@@ -1,11 +1,14 @@
 // Functions of time of the form f(t) = c0 + c1 t + sum_k (a_k cos(nu_k t) + b_k sin(nu_k t)),
 // the form every coordinate and every event function of the oscillator takes inside one mode,
 // and a root finder on them that cannot miss a root: it excludes an interval only where a
-// bound on |f''| proves f has no zero there.
+// bound on |f''| proves f has no zero there. (The search is the one of exponential_sum.hpp, whose
+// sums of damped and growing terms include these; here its bounds hold on the whole line.)
 #pragma once
 
 #include <optional>
 #include <vector>
+
+#include "stickslip/numerics/zero_search.hpp"
 
 namespace stickslip {
 
@@ -43,40 +46,6 @@ class SinusoidSum {
   std::vector<Sinusoid> terms_;
 };
 
-// How f meets zero: crossing it, or touching it (a double zero: a grazing or an abnormal stop).
-enum class ZeroKind { kCrossing, kTouch };
-
-struct Zero {
-  double t = 0.0;
-  ZeroKind kind = ZeroKind::kCrossing;
-};
-
-struct ZeroSearchOptions {
-  // Width of the final bracket around a crossing, and of the bracket around the extremum at a
-  // touch. The event times of the simulator are located to this accuracy.
-  double time_tolerance = 1e-13;
-  // |f| <= touch_tolerance * f.Scale() at an interior extremum counts as touching zero.
-  double touch_tolerance = 1e-11;
-  // The most sub-intervals one search examines, so that its cost is bounded whatever f and
-  // [a, b] are: a few per oscillation of f, enough for ~1e5 oscillations.
-  int max_intervals = 1 << 20;
-};
-
-// How a search ended.
-enum class ZeroSearchStatus {
-  kComplete,          // every zero in (a, b] was found, or the first max_count of them
-  kTooManyIntervals,  // options.max_intervals was reached: zeros past those found may be missed
-  kNotFinite,         // f, a or b is not finite: nothing was searched
-};
-const char* ToString(ZeroSearchStatus status);  // "complete", "too many sub-intervals", "not finite"
-
-struct ZeroSearch {
-  std::vector<Zero> zeros;
-  ZeroSearchStatus status = ZeroSearchStatus::kComplete;
-  int intervals = 0;  // sub-intervals examined
-  bool Complete() const { return status == ZeroSearchStatus::kComplete; }
-};
-
 // The zeros of f in (a, b], in increasing order, at most max_count of them. A zero at a itself
 // (f(a) = 0 to the touch level, as for x2' at the start of a slip, and f moving away from zero)
 // is not reported; the neighbourhood where the Taylor bound proves f has no other zero is
@@ -88,18 +57,10 @@ ZeroSearch Zeros(const SinusoidSum& f, double a, double b, int max_count, const 
 
 // The minimum of f over [a, b] and where it is attained (an end point or a zero of f'); the value
 // is NaN if the search for the zeros of f' was not complete.
-struct Extremum {
-  double t = 0.0;
-  double value = 0.0;
-};
 Extremum Minimum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options = {});
 
 // The minimum and the maximum of f over [a, b] from one search for the zeros of f' (the
 // candidates are a, b and those zeros); both values are NaN if that search was not complete.
-struct Extrema {
-  Extremum minimum;
-  Extremum maximum;
-};
 Extrema MinimumAndMaximum(const SinusoidSum& f, double a, double b, const ZeroSearchOptions& options = {});
 
 }  // namespace stickslip
