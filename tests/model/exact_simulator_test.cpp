@@ -10,6 +10,7 @@
 
 #include "stickslip/model/pascal_2014.hpp"
 #include "support/den_hartog_oscillator.hpp"
+#include "support/den_hartog_orbit.hpp"
 
 namespace stickslip {
 namespace {
@@ -18,25 +19,6 @@ constexpr double kPi = std::numbers::pi;
 
 static_assert(OscillatorModel<Pascal2014>);
 static_assert(OscillatorModel<DenHartogOscillator>);
-
-// Den Hartog's symmetric orbit with two stops per period, in the time tau = r t: V = 1/(1 - r^2),
-// U = tan(pi/(2r))/r, amplitude X = sqrt(V^2 - beta^2 U^2), forcing phase at the upper stop with
-// sin phi = -beta U/V, cos phi = X/V, and on the half period tau in [0, pi]
-//   x(tau) = X cos tau + beta U sin tau + beta (1 - cos(tau/r) - U r sin(tau/r)).
-struct DenHartogOrbit {
-  double r, beta, v, u, amplitude, phi;
-  DenHartogOrbit(double r_, double beta_) : r(r_), beta(beta_) {
-    v = 1.0 / (1.0 - r * r);
-    u = std::tan(kPi / (2.0 * r)) / r;
-    amplitude = std::sqrt(v * v - beta * beta * u * u);
-    phi = std::atan2(-beta * u / v, amplitude / v);
-  }
-  double X(double t) const {  // t in [0, pi/r]
-    const double tau = r * t;
-    return amplitude * std::cos(tau) + beta * u * std::sin(tau) +
-           beta * (1.0 - std::cos(tau / r) - u * r * std::sin(tau / r));
-  }
-};
 
 class DenHartogNonStickingOrbit : public testing::TestWithParam<std::pair<double, double>> {};
 

@@ -13,9 +13,11 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
 #include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/model/flows.hpp"
 #include "stickslip/model/mode.hpp"
 #include "stickslip/model/model_description.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
@@ -23,12 +25,26 @@
 namespace stickslip {
 
 struct DenHartogOscillator {
-  using State = Eigen::Vector2d;
-  struct Parameters {
-    double omega = 0.0;        // forcing frequency over the natural frequency, r
-    double beta = 0.0;         // kinetic friction over the forcing amplitude, F/P0
-    double beta_static = 0.0;  // static friction over the forcing amplitude, >= beta
+  static constexpr int kStateSize = 2;
+  static constexpr int kParameterCount = 3;
+  static constexpr int kForcingFrequencyParameter = 0;
+  template <typename T>
+  using StateT = Eigen::Matrix<T, 2, 1>;
+  template <typename T>
+  struct ParametersT {
+    T omega{};        // forcing frequency over the natural frequency, r
+    T beta{};         // kinetic friction over the forcing amplitude, F/P0
+    T beta_static{};  // static friction over the forcing amplitude, >= beta
   };
+  using State = StateT<double>;
+  using Parameters = ParametersT<double>;
+  using FlowDerivatives = BasicFlowDerivatives<2, 3>;
+  template <typename T>
+  static T& ParameterAt(ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.beta : p.beta_static; }
+  template <typename T>
+  static const T& ParameterAt(const ParametersT<T>& p, int k) {
+    return k == 0 ? p.omega : k == 1 ? p.beta : p.beta_static;
+  }
   // x(s) = offset + drift s + sum of sinusoids, s the time elapsed in the mode.
   struct Motion {
     double offset = 0.0;
@@ -73,16 +89,60 @@ struct DenHartogOscillator {
     const Sinusoid free{1.0, start(0) - offset - forced.cos_coefficient, start(1) - p.omega * forced.sin_coefficient};
     return Motion{offset, 0.0, {forced, free}};
   }
-  double ForcingFrequency(const Parameters& p) const { return p.omega; }
+  // The same motion written out on any scalar, for the flow's derivatives by AD.
+  template <typename T>
+  StateT<T> Flow(Mode mode, const StateT<T>& start, const T& phase, const T& s, const ParametersT<T>& p) const {
+    using std::cos;
+    using std::sin;
+    if (mode == Mode::kStick) return StateT<T>(start(0) + start(1) * s, start(1));
+    const T offset = -p.beta * double(SlipDirection(mode));
+    const T q = 1.0 / (1.0 - p.omega * p.omega);
+    const T a = start(0) - offset - q * cos(phase);
+    const T b = start(1) + q * p.omega * sin(phase);
+    return StateT<T>(offset + q * cos(p.omega * s + phase) + a * cos(s) + b * sin(s),
+                     -q * p.omega * sin(p.omega * s + phase) - a * sin(s) + b * cos(s));
+  }
+  FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
+                                      const Parameters& p) const {
+    constexpr int kDirections = 2 + 1 + 1 + 3;  // start, phase, elapsed time, parameters
+    using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kDirections, 1>>;
+    ParametersT<Dual> p_dual;
+    for (int k = 0; k < 3; ++k) ParameterAt(p_dual, k) = Dual(ParameterAt(p, k), kDirections, 4 + k);
+    const StateT<Dual> end = Flow(mode, StateT<Dual>(Dual(start(0), kDirections, 0), Dual(start(1), kDirections, 1)),
+                                  Dual(phase, kDirections, 2), Dual(s, kDirections, 3), p_dual);
+    FlowDerivatives d;
+    for (int i = 0; i < 2; ++i) {
+      d.state(i) = end(i).value();
+      d.d_start.row(i) = end(i).derivatives().head<2>().transpose();
+      d.d_phase(i) = end(i).derivatives()(2);
+      d.d_elapsed(i) = end(i).derivatives()(3);
+      d.d_parameters.row(i) = end(i).derivatives().tail<3>().transpose();
+    }
+    return d;
+  }
+  template <typename T>
+  T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
 
-  double ContactVelocity(const State& x) const { return x(1); }
+  template <typename T>
+  T ContactVelocity(const StateT<T>& x) const { return x(1); }
+  template <typename T>
+  T ContactAcceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
+    using std::cos;
+    if (mode == Mode::kStick) return T(0.0);
+    return -x(0) + cos(phase) - p.beta * double(SlipDirection(mode));
+  }
   State AtRest(const State& x) const { return State(x(0), 0.0); }
   bool NearRest(const State& x) const { return std::abs(x(1)) <= 1e-12 * (1.0 + std::abs(x(0))); }
 
   // The friction force a stick needs, sign as the paper's s: x - cos(phase) > beta_static drives
   // the mass towards negative x.
-  double StickForce(const State& x, double phase, const Parameters&) const { return x(0) - std::cos(phase); }
-  double StaticThreshold(const Parameters& p) const { return p.beta_static; }
+  template <typename T>
+  T StickForce(const StateT<T>& x, const T& phase, const ParametersT<T>&) const {
+    using std::cos;
+    return x(0) - cos(phase);
+  }
+  template <typename T>
+  T StaticThreshold(const ParametersT<T>& p) const { return p.beta_static; }
   bool AbnormalStopsPossible(const Parameters& p) const {
     return std::abs(p.beta_static - p.beta) <= 1e-12 * p.beta_static;
   }

@@ -118,15 +118,20 @@ StateT<T> Flow(Mode mode, const StateT<T>& start, const T& phase, const T& s,
   return MotionInMode(mode, start, phase, p).StateAt(s);
 }
 
-// The flow and its exact first derivatives (forward-mode automatic differentiation through the
-// closed form above; no finite differences).
-struct FlowDerivatives {
-  State state;                                         // X(s)
-  Eigen::Matrix4d d_start;                             // dX(s)/dX(0)
-  Eigen::Vector4d d_elapsed;                           // dX(s)/ds, the vector field
-  Eigen::Vector4d d_phase;                             // dX(s)/dpsi
-  Eigen::Matrix<double, 4, kParameterCount> d_parameters;  // columns in ParameterId order
+// A flow and its exact first derivatives, for a model with a state of `kStateSize` components and
+// `kParameters` parameters (oscillator_model.hpp).
+template <int kStateSize, int kParameters>
+struct BasicFlowDerivatives {
+  Eigen::Matrix<double, kStateSize, 1> state;                  // X(s)
+  Eigen::Matrix<double, kStateSize, kStateSize> d_start;       // dX(s)/dX(0)
+  Eigen::Matrix<double, kStateSize, 1> d_elapsed;              // dX(s)/ds, the vector field
+  Eigen::Matrix<double, kStateSize, 1> d_phase;                // dX(s)/dpsi
+  Eigen::Matrix<double, kStateSize, kParameters> d_parameters;  // columns in the model's parameter order
 };
+
+// The paper's flow with its derivatives (forward-mode automatic differentiation through the
+// closed form above; no finite differences).
+using FlowDerivatives = BasicFlowDerivatives<4, kParameterCount>;
 FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                     const Parameters& p);
 

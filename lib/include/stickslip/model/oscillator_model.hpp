@@ -1,5 +1,5 @@
-// The model interface: what the algorithms above the model (the simulators today; the segment
-// walk, periodicity, margins and stability next) may ask of an oscillator with one Coulomb
+// The model interface: what the algorithms above the model (the exact simulator and the
+// periodicity equations today; the segment walk, margins and stability next) may ask of an oscillator with one Coulomb
 // contact. An algorithm is a template on a type M satisfying OscillatorModel; it is compiled for
 // each model (no virtual call per flow evaluation, and forward-mode AD runs through the model's
 // scalar templates), and erased at the boundary the layers above already use. COCO's
@@ -9,9 +9,12 @@
 // What a model provides, for one contact whose relative velocity is s:
 //   - its description as data (model_description.hpp): parameter names, units and ranges, the
 //     names of the state's components;
-//   - State and Parameters types, and Validate(p) (the first violation, not thrown);
+//   - State and Parameters types as templates on the scalar (StateT<T>, ParametersT<T>, with
+//     ParameterAt(p, k) in the order of the description), their sizes, which parameter is the
+//     forcing frequency, and Validate(p) (the first violation, not thrown);
 //   - the motion in a mode from a state and a forcing phase (MotionInMode), exact in closed form,
-//     with StateAt(elapsed): the flow;
+//     with StateAt(elapsed): the flow; the flow with its exact derivatives; the contact's
+//     acceleration in a mode (an abnormal stop's second end condition);
 //   - the contact's velocity s and "at rest" (s = 0 exactly, and s = 0 to rounding);
 //   - the stick force (the friction force a stick needs, signed so that s > threshold drives a
 //     slip with s < 0) and the static threshold it must stay within; Coulomb's law at rest
@@ -51,18 +54,32 @@ template <typename M>
 concept OscillatorModel =
     requires(const M& model, Mode mode, const typename M::State& x, const typename M::Parameters& p,
              const typename M::Motion& motion, double phase) {
+      // Sizes and the scalar templates that forward-mode AD runs through.
+      { M::kStateSize } -> std::convertible_to<int>;
+      { M::kParameterCount } -> std::convertible_to<int>;
+      { M::kForcingFrequencyParameter } -> std::convertible_to<int>;
+      requires std::same_as<typename M::State, typename M::template StateT<double>>;
+      requires std::same_as<typename M::Parameters, typename M::template ParametersT<double>>;
+      { M::ParameterAt(p, 0) } -> std::convertible_to<double>;
       { model.Description() } -> std::same_as<const ModelDescription&>;
       { model.Validate(p) } -> std::same_as<std::optional<InvalidInput>>;
+      // The motion in a mode, the flow, and the flow with its derivatives (state, start, elapsed
+      // time, phase, parameters: model/flows.hpp's BasicFlowDerivatives).
       { model.MotionInMode(mode, x, phase, p) } -> std::same_as<typename M::Motion>;
       { motion.StateAt(phase) } -> std::convertible_to<typename M::State>;
+      { model.Flow(mode, x, phase, phase, p) } -> std::same_as<typename M::State>;
+      { model.FlowWithDerivatives(mode, x, phase, phase, p) } -> std::same_as<typename M::FlowDerivatives>;
       { model.ForcingFrequency(p) } -> std::same_as<double>;
+      // The contact.
       { model.ContactVelocity(x) } -> std::same_as<double>;
+      { model.ContactAcceleration(mode, x, phase, p) } -> std::same_as<double>;
       { model.AtRest(x) } -> std::same_as<typename M::State>;
       { model.NearRest(x) } -> std::same_as<bool>;
       { model.StickForce(x, phase, p) } -> std::same_as<double>;
       { model.StaticThreshold(p) } -> std::same_as<double>;
       { model.AbnormalStopsPossible(p) } -> std::same_as<bool>;
       { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;
+      // Along a motion, for the root finder.
       { model.ContactVelocityAlong(motion) } -> std::same_as<SinusoidSum>;
       { model.StickForceAlong(motion, phase, p) } -> std::same_as<SinusoidSum>;
     };

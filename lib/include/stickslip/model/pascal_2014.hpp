@@ -18,20 +18,46 @@
 namespace stickslip {
 
 struct Pascal2014 {
+  static constexpr int kStateSize = 4;
+  static constexpr int kParameterCount = stickslip::kParameterCount;
+  static constexpr int kForcingFrequencyParameter = static_cast<int>(ParameterId::kOmega);
+  template <typename T>
+  using StateT = stickslip::StateT<T>;
+  template <typename T>
+  using ParametersT = BasicParameters<T>;
   using State = stickslip::State;
   using Parameters = stickslip::Parameters;
   using Motion = ModeMotion<double>;
+  using FlowDerivatives = stickslip::FlowDerivatives;
 
   // chi, eta, omega, u_s, u_r (ParameterId order); x1, x2, x1', x2'.
   const ModelDescription& Description() const;
   std::optional<InvalidInput> Validate(const Parameters& p) const { return stickslip::Validate(p); }
+  template <typename T>
+  static T& ParameterAt(ParametersT<T>& p, int k) { return p[kAllParameters[k]]; }
+  template <typename T>
+  static const T& ParameterAt(const ParametersT<T>& p, int k) { return p[kAllParameters[k]]; }
 
   Motion MotionInMode(Mode mode, const State& start, double phase, const Parameters& p) const {
     return stickslip::MotionInMode(mode, start, phase, p);
   }
-  double ForcingFrequency(const Parameters& p) const { return p.omega; }
+  State Flow(Mode mode, const State& start, double phase, double s, const Parameters& p) const {
+    return stickslip::Flow(mode, start, phase, s, p);
+  }
+  FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
+                                      const Parameters& p) const {
+    return stickslip::FlowWithDerivatives(mode, start, phase, s, p);
+  }
+  template <typename T>
+  T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
 
-  double ContactVelocity(const State& x) const { return x(3); }
+  template <typename T>
+  T ContactVelocity(const StateT<T>& x) const { return x(3); }
+  // x2'' in a mode (eq. 2, 9).
+  template <typename T>
+  T ContactAcceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
+    return Acceleration(mode, x, phase, p)(1);
+  }
   State AtRest(const State& x) const { return stickslip::AtRest(x); }
   // x2' within rounding of zero: a sampled state at a stop carries ~1e-15, and a slip started
   // from it would miss the stop that is due at once.
@@ -39,10 +65,12 @@ struct Pascal2014 {
     return std::abs(x(3)) <= 1e-12 * (1.0 + x.head<3>().lpNorm<Eigen::Infinity>());
   }
 
-  double StickForce(const State& x, double phase, const Parameters& p) const {
+  template <typename T>
+  T StickForce(const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     return stickslip::StickForce(x, phase, p);
   }
-  double StaticThreshold(const Parameters& p) const { return p.eta * p.u_r; }  // eq. (4)
+  template <typename T>
+  T StaticThreshold(const ParametersT<T>& p) const { return p.eta * p.u_r; }  // eq. (4)
   // u_r = u_s (eq. 25, ERRATA): a slip may touch rest and go on.
   bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.u_r - p.u_s) <= 1e-12 * p.u_r; }
   Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {

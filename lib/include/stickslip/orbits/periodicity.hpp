@@ -25,47 +25,24 @@
 #include <Eigen/Core>
 
 #include "stickslip/numerics/newton.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/orbit.hpp"
-#include "stickslip/orbits/segment_plan.hpp"
+#include "stickslip/orbits/periodicity_equations.hpp"
 
 namespace stickslip {
 
-enum class Shooting { kSingle, kMultiple };
-const char* ToString(Shooting s);  // "single", "multiple"
+// The paper's model's flows, as the benchmark may swap them.
+using FlowEvaluator = BasicFlowEvaluator<Pascal2014>;
 
-// How the equations evaluate one mode's flow, alone (for residuals) and with its derivatives
-// (for Jacobians): the closed form by default; the benchmark swaps in a numerical integration.
-struct FlowEvaluator {
-  State (*state)(Mode, const State&, const double& phase, const double& s, const Parameters&) = &Flow<double>;
-  FlowDerivatives (*derivatives)(Mode, const State&, double phase, double s, const Parameters&) = &FlowWithDerivatives;
-};
-
-class PeriodicityEquations {
+// The equations of the paper's model (periodicity_equations.hpp), in the variables of an Orbit
+// (orbit.hpp: the same layout).
+class PeriodicityEquations : public BasicPeriodicityEquations<Pascal2014> {
  public:
-  PeriodicityEquations(Signature signature, Shooting shooting, FlowEvaluator flow = {});
-
-  int EquationCount() const;
-  // The full variable vector (orbit.hpp) followed, for multiple shooting, by the start state of
-  // segments 2..n.
-  int VariableCount() const;
-  // Residual and exact Jacobian (EquationCount x VariableCount) from the flow derivatives.
-  void Evaluate(const Eigen::VectorXd& variables, Eigen::VectorXd* residual,
-                Eigen::MatrixXd* jacobian) const;
+  PeriodicityEquations(Signature signature, Shooting shooting, FlowEvaluator flow = {})
+      : BasicPeriodicityEquations(Pascal2014{}, std::move(signature), shooting, flow) {}
   // The variables of an orbit: its full vector and, for multiple shooting, the segment start
   // states obtained by flowing.
   Eigen::VectorXd Variables(const Orbit& orbit) const;
-
-  const Signature& signature() const { return signature_; }
-  Shooting shooting() const { return shooting_; }
-  // Names of the equations, for messages: "end:1", "periodicity:x1", "period", "continuity:2:x1".
-  std::vector<std::string> EquationNames() const;
-
- private:
-  Signature signature_;
-  std::vector<SegmentSpec> plan_;
-  int end_conditions_ = 0;  // equations at the segment ends (one more at each abnormal stop)
-  Shooting shooting_;
-  FlowEvaluator flow_;
 };
 
 // The orbit as a system in chosen unknowns: the full variables listed in `free` (in that order),

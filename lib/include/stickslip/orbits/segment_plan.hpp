@@ -38,18 +38,20 @@ enum class EndCondition {
 // The end conditions of a segment end, in the order the periodicity equations list them.
 std::span<const EndCondition> EndConditionsOf(SegmentEndKind end);
 
-// The value of an end condition at the end state x and forcing phase of a segment in `mode`.
-// Templated so that forward-mode AD gives its exact gradient.
-template <typename T>
-T EndConditionValue(EndCondition condition, Mode mode, const StateT<T>& x, const T& phase,
-                    const BasicParameters<T>& p) {
+// The value of an end condition at the end state x and forcing phase of a segment in `mode`, for
+// any model (model/oscillator_model.hpp). Templated on the scalar so that forward-mode AD gives
+// its exact gradient.
+template <typename Model, typename T>
+T EndConditionValue(const Model& model, EndCondition condition, Mode mode,
+                    const typename Model::template StateT<T>& x, const T& phase,
+                    const typename Model::template ParametersT<T>& p) {
   switch (condition) {
-    case EndCondition::kStop: return x(3);
-    case EndCondition::kSlipAccelerationZero: return Acceleration(mode, x, phase, p)(1);
-    case EndCondition::kExitIntoSlipNegative: return StickForce(x, phase, p) - p.eta * p.u_r;
+    case EndCondition::kStop: return model.ContactVelocity(x);
+    case EndCondition::kSlipAccelerationZero: return model.ContactAcceleration(mode, x, phase, p);
+    case EndCondition::kExitIntoSlipNegative: return model.StickForce(x, phase, p) - model.StaticThreshold(p);
     case EndCondition::kExitIntoSlipPositive: break;
   }
-  return StickForce(x, phase, p) + p.eta * p.u_r;
+  return model.StickForce(x, phase, p) + model.StaticThreshold(p);
 }
 
 }  // namespace stickslip

@@ -1,0 +1,137 @@
+// The periodicity equations through the model interface, on a model other than the paper's: Den
+// Hartog's one-mass oscillator (tests/support), whose non-sticking orbit is known in closed form.
+#include "stickslip/orbits/periodicity_equations.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/numerics/newton.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
+
+namespace stickslip {
+namespace {
+
+using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
+
+// The equations as a square system in the orbit's unknowns (start, phase, durations and, for
+// multiple shooting, the segment states), the parameters held at `reference`'s values.
+class HeldParameters final : public NonlinearSystem {
+ public:
+  HeldParameters(const Equations& equations, Eigen::VectorXd reference)
+      : equations_(equations), reference_(std::move(reference)) {}
+  int EquationCount() const override { return equations_.EquationCount(); }
+  int UnknownCount() const override { return equations_.VariableCount() - DenHartogOscillator::kParameterCount; }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual, JacobianMatrix* jacobian) const override {
+    Eigen::MatrixXd full;
+    equations_.Evaluate(Variables(u), residual, jacobian ? &full : nullptr);
+    if (!jacobian) return;
+    Eigen::MatrixXd j(full.rows(), UnknownCount());
+    j << full.leftCols(equations_.Parameter(0)), full.rightCols(full.cols() - equations_.FullCount());
+    *jacobian = j;
+  }
+  Eigen::VectorXd Variables(const Eigen::VectorXd& u) const {
+    Eigen::VectorXd v = reference_;
+    const int head = equations_.Parameter(0);
+    v.head(head) = u.head(head);
+    v.tail(v.size() - equations_.FullCount()) = u.tail(u.size() - head);
+    return v;
+  }
+
+ private:
+  const Equations& equations_;
+  Eigen::VectorXd reference_;
+};
+
+// Den Hartog's orbit as the variables of a signature: antisymmetric "slip-" (one listed half
+// period), or "slip- slip+" over the whole period with, for multiple shooting, the lower turning
+// point as the second segment's start.
+Eigen::VectorXd OrbitVariables(const DenHartogOrbit& orbit, const Equations& equations) {
+  const double half = std::numbers::pi / orbit.r;
+  Eigen::VectorXd v(equations.VariableCount());
+  v(0) = orbit.amplitude;
+  v(Equations::kPhi) = orbit.phi;
+  for (int i = 0; i < equations.signature().size(); ++i) v(Equations::Duration(i)) = half;
+  v.segment<3>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta;
+  if (equations.VariableCount() > equations.FullCount()) v.tail<2>() << -orbit.amplitude, 0.0;
+  return v;
+}
+
+struct Case {
+  const char* signature;
+  Shooting shooting;
+};
+
+class DenHartogPeriodicity : public testing::TestWithParam<Case> {};
+
+TEST_P(DenHartogPeriodicity, VanishOnDenHartogsOrbit) {
+  const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  for (const auto& [r, beta] : {std::pair{0.6, 0.1}, std::pair{1.5, 0.25}, std::pair{2.5, 0.25}}) {
+    Eigen::VectorXd residual;
+    equations.Evaluate(OrbitVariables(DenHartogOrbit(r, beta), equations), &residual, nullptr);
+    EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12) << "r = " << r;
+  }
+}
+
+TEST_P(DenHartogPeriodicity, JacobianIsTheCentralDifferenceOfTheResidual) {
+  const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  Eigen::VectorXd v = OrbitVariables(DenHartogOrbit(0.8, 0.2), equations);
+  v(0) += 0.03;  // off the orbit, where no column vanishes by symmetry
+  v(Equations::kPhi) -= 0.02;
+  Eigen::VectorXd residual;
+  Eigen::MatrixXd jacobian;
+  equations.Evaluate(v, &residual, &jacobian);
+  for (int k = 0; k < v.size(); ++k) {
+    const double h = 1e-6;
+    Eigen::VectorXd plus = v, minus = v, r_plus, r_minus;
+    plus(k) += h;
+    minus(k) -= h;
+    equations.Evaluate(plus, &r_plus, nullptr);
+    equations.Evaluate(minus, &r_minus, nullptr);
+    EXPECT_LT(((r_plus - r_minus) / (2 * h) - jacobian.col(k)).lpNorm<Eigen::Infinity>(), 1e-7) << "column " << k;
+  }
+}
+
+TEST_P(DenHartogPeriodicity, NewtonConvergesToDenHartogsOrbitFromAPerturbedGuess) {
+  const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  for (const auto& [r, beta] : {std::pair{0.6, 0.1}, std::pair{1.5, 0.25}}) {
+    const DenHartogOrbit orbit(r, beta);
+    const Eigen::VectorXd exact = OrbitVariables(orbit, equations);
+    const HeldParameters system(equations, exact);
+    Eigen::VectorXd guess(system.UnknownCount());
+    guess << exact.head(equations.Parameter(0)), exact.tail(exact.size() - equations.FullCount());
+    guess(0) *= 1.1;
+    guess(Equations::kPhi) += 0.1;
+    guess(Equations::Duration(0)) *= 1.05;
+    const NewtonResult solved = SolveNewton(system, guess);
+    ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
+    const Eigen::VectorXd v = system.Variables(solved.solution);
+    EXPECT_NEAR(v(0), orbit.amplitude, 1e-10) << "r = " << r;
+    EXPECT_NEAR(std::remainder(v(Equations::kPhi) - orbit.phi, 2 * std::numbers::pi), 0.0, 1e-10);
+    for (int i = 0; i < equations.signature().size(); ++i) {
+      EXPECT_NEAR(v(Equations::Duration(i)), std::numbers::pi / r, 1e-10);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formulations, DenHartogPeriodicity,
+                         testing::Values(Case{"slip- / antisymmetric", Shooting::kSingle},
+                                         Case{"slip- slip+", Shooting::kSingle},
+                                         Case{"slip- slip+", Shooting::kMultiple}),
+                         [](const testing::TestParamInfo<Case>& info) {
+                           return std::string(info.param.shooting == Shooting::kMultiple ? "Multiple" : "Single") +
+                                  (std::string(info.param.signature).find('/') != std::string::npos ? "HalfPeriod"
+                                                                                                   : "FullPeriod");
+                         });
+
+TEST(DenHartogPeriodicity, NamesItsEquationsInTheModelsWords) {
+  const Equations equations(DenHartogOscillator{}, Signature::Parse("slip- slip+"), Shooting::kMultiple);
+  const std::vector<std::string> expected = {"end:1", "continuity:2:x", "continuity:2:x'", "end:2", "periodicity:x",
+                                             "period"};
+  EXPECT_EQ(equations.EquationNames(), expected);
+}
+
+}  // namespace
+}  // namespace stickslip
