@@ -4,10 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 #include <gtest/gtest.h>
 
-#include "stickslip/numerics/newton.hpp"
+#include "stickslip/orbits/orbit_system.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
 
@@ -15,49 +16,6 @@ namespace stickslip {
 namespace {
 
 using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
-
-// The equations as a square system in the orbit's unknowns (start, phase, durations and, for
-// multiple shooting, the segment states), the parameters held at `reference`'s values.
-class HeldParameters final : public NonlinearSystem {
- public:
-  HeldParameters(const Equations& equations, Eigen::VectorXd reference)
-      : equations_(equations), reference_(std::move(reference)) {}
-  int EquationCount() const override { return equations_.EquationCount(); }
-  int UnknownCount() const override { return equations_.VariableCount() - DenHartogOscillator::kParameterCount; }
-  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual, JacobianMatrix* jacobian) const override {
-    Eigen::MatrixXd full;
-    equations_.Evaluate(Variables(u), residual, jacobian ? &full : nullptr);
-    if (!jacobian) return;
-    Eigen::MatrixXd j(full.rows(), UnknownCount());
-    j << full.leftCols(equations_.Parameter(0)), full.rightCols(full.cols() - equations_.FullCount());
-    *jacobian = j;
-  }
-  Eigen::VectorXd Variables(const Eigen::VectorXd& u) const {
-    Eigen::VectorXd v = reference_;
-    const int head = equations_.Parameter(0);
-    v.head(head) = u.head(head);
-    v.tail(v.size() - equations_.FullCount()) = u.tail(u.size() - head);
-    return v;
-  }
-
- private:
-  const Equations& equations_;
-  Eigen::VectorXd reference_;
-};
-
-// Den Hartog's orbit as the variables of a signature: antisymmetric "slip-" (one listed half
-// period), or "slip- slip+" over the whole period with, for multiple shooting, the lower turning
-// point as the second segment's start.
-Eigen::VectorXd OrbitVariables(const DenHartogOrbit& orbit, const Equations& equations) {
-  const double half = std::numbers::pi / orbit.r;
-  Eigen::VectorXd v(equations.VariableCount());
-  v(0) = orbit.amplitude;
-  v(Equations::kPhi) = orbit.phi;
-  for (int i = 0; i < equations.signature().size(); ++i) v(Equations::Duration(i)) = half;
-  v.segment<3>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta;
-  if (equations.VariableCount() > equations.FullCount()) v.tail<2>() << -orbit.amplitude, 0.0;
-  return v;
-}
 
 struct Case {
   const char* signature;
@@ -70,14 +28,14 @@ TEST_P(DenHartogPeriodicity, VanishOnDenHartogsOrbit) {
   const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
   for (const auto& [r, beta] : {std::pair{0.6, 0.1}, std::pair{1.5, 0.25}, std::pair{2.5, 0.25}}) {
     Eigen::VectorXd residual;
-    equations.Evaluate(OrbitVariables(DenHartogOrbit(r, beta), equations), &residual, nullptr);
+    equations.Evaluate(DenHartogVariables(DenHartogOrbit(r, beta), equations), &residual, nullptr);
     EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12) << "r = " << r;
   }
 }
 
 TEST_P(DenHartogPeriodicity, JacobianIsTheCentralDifferenceOfTheResidual) {
   const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
-  Eigen::VectorXd v = OrbitVariables(DenHartogOrbit(0.8, 0.2), equations);
+  Eigen::VectorXd v = DenHartogVariables(DenHartogOrbit(0.8, 0.2), equations);
   v(0) += 0.03;  // off the orbit, where no column vanishes by symmetry
   v(Equations::kPhi) -= 0.02;
   Eigen::VectorXd residual;
@@ -96,12 +54,12 @@ TEST_P(DenHartogPeriodicity, JacobianIsTheCentralDifferenceOfTheResidual) {
 
 TEST_P(DenHartogPeriodicity, NewtonConvergesToDenHartogsOrbitFromAPerturbedGuess) {
   const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  std::vector<int> free(equations.Parameter(0));  // start, phase and durations; parameters held
+  std::iota(free.begin(), free.end(), 0);
   for (const auto& [r, beta] : {std::pair{0.6, 0.1}, std::pair{1.5, 0.25}}) {
     const DenHartogOrbit orbit(r, beta);
-    const Eigen::VectorXd exact = OrbitVariables(orbit, equations);
-    const HeldParameters system(equations, exact);
-    Eigen::VectorXd guess(system.UnknownCount());
-    guess << exact.head(equations.Parameter(0)), exact.tail(exact.size() - equations.FullCount());
+    const BasicOrbitSystem<DenHartogOscillator> system(equations, DenHartogVariables(orbit, equations), free, false);
+    Eigen::VectorXd guess = system.Unknowns(DenHartogVariables(orbit, equations));
     guess(0) *= 1.1;
     guess(Equations::kPhi) += 0.1;
     guess(Equations::Duration(0)) *= 1.05;

@@ -6,6 +6,11 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Core>
+
+#include "stickslip/orbits/periodicity_equations.hpp"
+#include "support/den_hartog_oscillator.hpp"
+
 namespace stickslip {
 
 // Den Hartog's symmetric orbit with two stops per period, in the time tau = r t: V = 1/(1 - r^2),
@@ -26,5 +31,21 @@ struct DenHartogOrbit {
            beta * (1.0 - std::cos(tau / r) - u * r * std::sin(tau / r));
   }
 };
+
+// Den Hartog's orbit as the variables of a signature: antisymmetric "slip-" (one listed half
+// period), or "slip- slip+" over the whole period with, for multiple shooting, the lower turning
+// point as the second segment's start.
+inline Eigen::VectorXd DenHartogVariables(const DenHartogOrbit& orbit,
+                                          const BasicPeriodicityEquations<DenHartogOscillator>& equations) {
+  using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
+  const double half = std::numbers::pi / orbit.r;
+  Eigen::VectorXd v(equations.VariableCount());
+  v(0) = orbit.amplitude;
+  v(Equations::kPhi) = orbit.phi;
+  for (int i = 0; i < equations.signature().size(); ++i) v(Equations::Duration(i)) = half;
+  v.segment<3>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta;
+  if (equations.VariableCount() > equations.FullCount()) v.tail<2>() << -orbit.amplitude, 0.0;
+  return v;
+}
 
 }  // namespace stickslip

@@ -28,6 +28,8 @@ struct DenHartogOscillator {
   static constexpr int kStateSize = 2;
   static constexpr int kParameterCount = 3;
   static constexpr int kForcingFrequencyParameter = 0;
+  static constexpr int kKineticFrictionParameter = 1;
+  static constexpr int kStaticFrictionParameter = 2;
   template <typename T>
   using StateT = Eigen::Matrix<T, 2, 1>;
   template <typename T>
@@ -68,10 +70,16 @@ struct DenHartogOscillator {
         {"x", "x'"}};
     return description;
   }
-  std::optional<InvalidInput> Validate(const Parameters& p) const {
+  // The closed form needs a forcing frequency away from resonance; the friction levels enter
+  // linearly and stay meaningful beyond their physical range.
+  std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) const {
     if (!(p.omega >= 0.01 && p.omega <= 100.0) || std::abs(p.omega - 1.0) < 1e-9) {
       return InvalidInput("omega", p.omega, Description().parameters[0].range);
     }
+    return std::nullopt;
+  }
+  std::optional<InvalidInput> Validate(const Parameters& p) const {
+    if (auto invalid = ValidateClosedForm(p)) return invalid;
     if (!(p.beta >= 1e-6 && p.beta <= 1000.0)) return InvalidInput("beta", p.beta, Description().parameters[1].range);
     if (!(p.beta_static >= p.beta && p.beta_static <= 1000.0)) {
       return InvalidInput("beta_static", p.beta_static, fmt::format("beta = {} <= beta_static <= 1000", p.beta));

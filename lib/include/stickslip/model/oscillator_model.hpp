@@ -10,8 +10,10 @@
 //   - its description as data (model_description.hpp): parameter names, units and ranges, the
 //     names of the state's components;
 //   - State and Parameters types as templates on the scalar (StateT<T>, ParametersT<T>, with
-//     ParameterAt(p, k) in the order of the description), their sizes, which parameter is the
-//     forcing frequency, and Validate(p) (the first violation, not thrown);
+//     ParameterAt(p, k) in the order of the description), their sizes, which parameters are the
+//     forcing frequency and the kinetic and static friction levels, Validate(p) (the first
+//     violation, not thrown) and ValidateClosedForm(p) (only what the closed forms need: the
+//     solvers ask it of every iterate);
 //   - the motion in a mode from a state and a forcing phase (MotionInMode), exact in closed form,
 //     with StateAt(elapsed): the flow; the flow with its exact derivatives; the contact's
 //     acceleration in a mode (an abnormal stop's second end condition);
@@ -58,11 +60,14 @@ concept OscillatorModel =
       { M::kStateSize } -> std::convertible_to<int>;
       { M::kParameterCount } -> std::convertible_to<int>;
       { M::kForcingFrequencyParameter } -> std::convertible_to<int>;
+      { M::kKineticFrictionParameter } -> std::convertible_to<int>;
+      { M::kStaticFrictionParameter } -> std::convertible_to<int>;
       requires std::same_as<typename M::State, typename M::template StateT<double>>;
       requires std::same_as<typename M::Parameters, typename M::template ParametersT<double>>;
       { M::ParameterAt(p, 0) } -> std::convertible_to<double>;
       { model.Description() } -> std::same_as<const ModelDescription&>;
       { model.Validate(p) } -> std::same_as<std::optional<InvalidInput>>;
+      { model.ValidateClosedForm(p) } -> std::same_as<std::optional<InvalidInput>>;
       // The motion in a mode, the flow, and the flow with its derivatives (state, start, elapsed
       // time, phase, parameters: model/flows.hpp's BasicFlowDerivatives).
       { model.MotionInMode(mode, x, phase, p) } -> std::same_as<typename M::Motion>;

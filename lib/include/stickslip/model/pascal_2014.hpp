@@ -21,6 +21,8 @@ struct Pascal2014 {
   static constexpr int kStateSize = 4;
   static constexpr int kParameterCount = stickslip::kParameterCount;
   static constexpr int kForcingFrequencyParameter = static_cast<int>(ParameterId::kOmega);
+  static constexpr int kKineticFrictionParameter = static_cast<int>(ParameterId::kSlidingFriction);
+  static constexpr int kStaticFrictionParameter = static_cast<int>(ParameterId::kStaticFriction);
   template <typename T>
   using StateT = stickslip::StateT<T>;
   template <typename T>
@@ -33,6 +35,7 @@ struct Pascal2014 {
   // chi, eta, omega, u_s, u_r (ParameterId order); x1, x2, x1', x2'.
   const ModelDescription& Description() const;
   std::optional<InvalidInput> Validate(const Parameters& p) const { return stickslip::Validate(p); }
+  std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) const { return stickslip::ValidateClosedForm(p); }
   template <typename T>
   static T& ParameterAt(ParametersT<T>& p, int k) { return p[kAllParameters[k]]; }
   template <typename T>

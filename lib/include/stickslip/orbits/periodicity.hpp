@@ -27,6 +27,7 @@
 #include "stickslip/numerics/newton.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/orbit_system.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 
 namespace stickslip {
@@ -44,39 +45,23 @@ class PeriodicityEquations : public BasicPeriodicityEquations<Pascal2014> {
   // states obtained by flowing.
   Eigen::VectorXd Variables(const Orbit& orbit) const;
 };
+Eigen::VectorXd VariablesOf(const BasicPeriodicityEquations<Pascal2014>& equations, const Orbit& orbit);
 
-// The orbit as a system in chosen unknowns: the full variables listed in `free` (in that order),
-// then the multiple-shooting states; every other variable is held at the reference orbit's
-// value. With tie_static_friction, u_r follows u_s (u_r = u_s, needed by abnormal stops).
-class OrbitSystem final : public NonlinearSystem {
+// The paper's model's orbit as a system in chosen unknowns (orbit_system.hpp), built from an
+// Orbit: `free` holds indices of the full variable vector (orbit.hpp).
+class OrbitSystem final : public BasicOrbitSystem<Pascal2014> {
  public:
   // Throws InvalidInput naming "free" for an index that is no variable, or u_r freed while tied.
-  OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie_static_friction,
-              Shooting shooting, FlowEvaluator flow = {});
+  OrbitSystem(const Orbit& reference, std::vector<int> free, bool tie_static_friction, Shooting shooting,
+              FlowEvaluator flow = {});
 
-  int EquationCount() const override { return equations_.EquationCount(); }
-  int UnknownCount() const override;
-  // Dense Jacobian for single shooting, sparse for multiple shooting.
-  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual,
-                JacobianMatrix* jacobian) const override;
-  std::optional<std::string> DomainError(const Eigen::VectorXd& u) const override;
-
+  using BasicOrbitSystem::Unknowns;
   Eigen::VectorXd Unknowns(const Orbit& orbit) const;
   Orbit ToOrbit(const Eigen::VectorXd& u) const;
-  // Derivatives with respect to the full variables (orbit.hpp's order; then, for multiple
-  // shooting, the segment states, or none of them: a function of the orbit alone) as derivatives
-  // with respect to the unknowns (the chain rule of holding, freeing and tying).
-  Eigen::MatrixXd ToUnknowns(const Eigen::MatrixXd& d_variables) const;
-  const std::vector<int>& free() const { return free_; }
-  const PeriodicityEquations& equations() const { return equations_; }
 
  private:
-  Eigen::VectorXd Variables(const Eigen::VectorXd& u) const;
-
-  PeriodicityEquations equations_;
-  Eigen::VectorXd reference_;
-  std::vector<int> free_;
-  bool tie_static_friction_;
+  OrbitSystem(const PeriodicityEquations& equations, const Orbit& reference, std::vector<int> free,
+              bool tie_static_friction);
 };
 
 }  // namespace stickslip
