@@ -1,19 +1,23 @@
-// Den Hartog's closed-form non-sticking orbit of the one-mass oscillator with Coulomb friction
-// (Trans. ASME APM 53 (1931) 107; ../shared/FRICTION-LITERATURE.md), the reference for the tests
-// of tests/support/den_hartog_oscillator.hpp.
+// Den Hartog's closed-form non-sticking orbit of his one-mass oscillator
+// (den_hartog_oscillator.hpp; ../shared/FRICTION-LITERATURE.md), the check that a simulator
+// follows it through the model interface, and the orbit as periodicity variables.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
+#include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "support/den_hartog_oscillator.hpp"
 
 namespace stickslip {
 
-// Den Hartog's symmetric orbit with two stops per period, in the time tau = r t: V = 1/(1 - r^2),
+// The symmetric orbit with two stops per period, in the time tau = r t: V = 1/(1 - r^2),
 // U = tan(pi/(2r))/r, amplitude X = sqrt(V^2 - beta^2 U^2), forcing phase at the upper stop with
 // sin phi = -beta U/V, cos phi = X/V, and on the half period tau in [0, pi]
 //   x(tau) = X cos tau + beta U sin tau + beta (1 - cos(tau/r) - U r sin(tau/r)).
@@ -25,6 +29,7 @@ struct DenHartogOrbit {
     amplitude = std::sqrt(v * v - beta * beta * u * u);
     phi = std::atan2(-beta * u / v, amplitude / v);
   }
+  double Period() const { return 2.0 * std::numbers::pi / r; }
   double X(double t) const {  // t in [0, pi/r]
     const double tau = r * t;
     return amplitude * std::cos(tau) + beta * u * std::sin(tau) +
@@ -32,13 +37,52 @@ struct DenHartogOrbit {
   }
 };
 
+// (r, beta): r >= 1/2 away from the degenerate 1/(2n) and from resonance; beta at half the largest
+// value without a stick, r^2 X > beta.
+inline constexpr std::array<std::pair<double, double>, 4> kDenHartogNonStickingCases = {
+    std::pair{0.6, 0.1}, std::pair{0.8, 0.2}, std::pair{1.5, 0.25}, std::pair{2.5, 0.25}};
+
+// `simulate(model, p, x0, phi, options)` from the orbit's upper stop at rest over 1.25 periods (the
+// second stop inside the horizon, not on it): two stops per period, at the turning points, each a
+// reversal (no stick), and every sample of the first period on the closed form, the second half
+// by x(t + T/2) = -x(t); all within `tolerance`.
+template <typename Simulate>
+void ExpectDenHartogsOrbit(Simulate simulate, std::pair<double, double> r_beta, double tolerance) {
+  const auto [r, beta] = r_beta;
+  const DenHartogOrbit orbit(r, beta);
+  ASSERT_GT(r * r * orbit.amplitude, beta) << "the orbit must not stick at its turning points";
+  const DenHartogOscillator model;
+  const DenHartogOscillator::Parameters p{r, beta, beta};
+  ASSERT_FALSE(model.Validate(p));
+  const double period = orbit.Period();
+  BasicSimulationOptions<DenHartogOscillator::State> options;
+  options.duration = 1.25 * period;
+  options.sample_step = period / 40.0;
+  const BasicSimulationResult<DenHartogOscillator> result =
+      simulate(model, p, DenHartogOscillator::State(orbit.amplitude, 0.0), orbit.phi, options);
+  ASSERT_TRUE(result.Completed()) << result.message;
+  ASSERT_EQ(result.events.size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    const BasicEvent<DenHartogOscillator::State>& event = result.events[i];
+    EXPECT_NEAR(event.t, 0.5 * (i + 1) * period, tolerance);
+    EXPECT_EQ(event.mode_after, i == 0 ? Mode::kSlipPositive : Mode::kSlipNegative);
+    EXPECT_NEAR(event.state(0), i == 0 ? -orbit.amplitude : orbit.amplitude, tolerance);
+  }
+  for (const auto& sample : result.samples) {
+    if (sample.t > period) break;
+    const bool second_half = sample.t > 0.5 * period;
+    const double expected = second_half ? -orbit.X(sample.t - 0.5 * period) : orbit.X(sample.t);
+    EXPECT_NEAR(sample.state(0), expected, tolerance) << "t = " << sample.t;
+  }
+}
+
 // Den Hartog's orbit as the variables of a signature: antisymmetric "slip-" (one listed half
 // period), or "slip- slip+" over the whole period with, for multiple shooting, the lower turning
 // point as the second segment's start.
 inline Eigen::VectorXd DenHartogVariables(const DenHartogOrbit& orbit,
                                           const BasicPeriodicityEquations<DenHartogOscillator>& equations) {
   using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
-  const double half = std::numbers::pi / orbit.r;
+  const double half = 0.5 * orbit.Period();
   Eigen::VectorXd v(equations.VariableCount());
   v(0) = orbit.amplitude;
   v(Equations::kPhi) = orbit.phi;

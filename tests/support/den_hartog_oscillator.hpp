@@ -7,6 +7,7 @@
 // for both shows the seam is real.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -167,6 +168,16 @@ struct DenHartogOscillator {
     terms.push_back({p.omega, -std::cos(phase), std::sin(phase)});  // -cos(omega s + phase)
     return SinusoidSum(motion.offset, motion.drift, std::move(terms));
   }
+  // For an integrator (integrable_oscillator_model.hpp), from the equation above alone: in a
+  // stick x'' = 0 and x' stays 0.
+  State VectorField(Mode mode, const State& x, double phase, const Parameters& p) const {
+    if (mode == Mode::kStick) return State(x(1), 0.0);
+    return State(x(1), -x(0) + std::cos(phase) - p.beta * SlipDirection(mode));
+  }
+  // x'' = 0 at rest needs F = x - cos(phase), changing at omega sin(phase) while x' = 0.
+  double HoldingForce(const State& x, double phase, const Parameters&) const { return x(0) - std::cos(phase); }
+  double HoldingForceRate(const State&, double phase, const Parameters& p) const { return p.omega * std::sin(phase); }
+  double HoldingForceScale(const State& x, const Parameters&) const { return std::max(std::abs(x(0)), 1.0); }
 };
 
 }  // namespace stickslip

@@ -1,7 +1,8 @@
-// The independent cross-check of the closed form (Pascal 2014, eqs. 2-4, 9, 11): eq. (2)
-// integrated numerically mode by mode with Boost.Odeint, with its own vector field and its own
-// Coulomb decision. It shares no flow or event code with flows.hpp / events.hpp, so that an
-// agreement between the two is evidence for both.
+// The independent cross-check of the closed form (Pascal 2014, eqs. 2-4, 9, 11), for the paper's
+// model: eq. (2) integrated numerically mode by mode with Boost.Odeint (odeint_simulation.hpp,
+// the simulator for any model), from the vector field and holding force Pascal2014 writes out from
+// the equations of motion, with the simulator's own Coulomb decision. It shares no flow or event
+// code with flows.hpp / events.hpp, so that an agreement between the two is evidence for both.
 //
 // Example:
 //   const Parameters p{0.3, 4.0, 0.6, 0.1, 0.2996};
@@ -50,8 +51,9 @@ State IntegrateMode(Mode mode, const State& start, double phase, double s, const
 // Boost.Odeint (state, 4x4 transition matrix, sensitivities to the phase and the five
 // parameters: 44 equations) — the reference for FlowWithDerivatives, and the Odeint path of the
 // continuation benchmark. Only the FlowDerivatives type is shared with flows.hpp: the vector
-// field and its derivatives are written out here. d_elapsed is the vector field at the end
-// point; the u_r column of d_parameters is zero (u_r enters no mode's equations).
+// field is Pascal2014::VectorField (written from eq. 2), its derivatives are written out here.
+// d_elapsed is the vector field at the end point; the u_r column of d_parameters is zero (u_r
+// enters no mode's equations).
 // Throws InvalidInput if s < 0 or s is not finite, or if `odeint` is invalid.
 FlowDerivatives IntegrateModeWithDerivatives(Mode mode, const State& start, double phase, double s,
                                              const Parameters& p, const OdeintOptions& odeint = {});

@@ -25,6 +25,9 @@
 //   - along a motion, the contact velocity and the stick force as functions of the elapsed time
 //     in a form the root finder can search without missing a root (numerics/sinusoid_sum.hpp);
 //   - the forcing frequency (the forcing is cos(omega t + phi)).
+// A model that an integrator can also run, the independent check of its closed forms, provides
+// its equations of motion and what Coulomb's law needs written from them
+// (IntegrableOscillatorModel, integrable_oscillator_model.hpp).
 //
 // How what comes next fits (the general-oscillator issue):
 //   - n degrees of freedom: State becomes Eigen::Matrix<T, 2n, 1> for a model of fixed size, or

@@ -6,6 +6,7 @@
 // fixed size 4 (no allocation, no run-time size).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -83,6 +84,29 @@ struct Pascal2014 {
   SinusoidSum ContactVelocityAlong(const Motion& motion) const { return CoordinateAlong(motion, 3); }
   SinusoidSum StickForceAlong(const Motion& motion, double phase, const Parameters& p) const {
     return stickslip::StickForceAlong(motion, phase, p);
+  }
+
+  // For an integrator (integrable_oscillator_model.hpp), written from the equations of motion and
+  // sharing no code with the closed forms above. The state's derivative: eq. (2) in a slip, with
+  // u = -u_s sign(x2') (eq. 4); eq. (9) in a stick, where x2'' = 0.
+  State VectorField(Mode mode, const State& x, double phase, const Parameters& p) const {
+    State dx(x(2), x(3), -x(0) + p.chi * x(1), 0.0);
+    if (mode == Mode::kStick) return dx;
+    const double friction = -SlipDirection(mode) * p.u_s;
+    dx(3) = -p.chi * p.eta * (x(1) - x(0)) + p.eta * friction + std::cos(phase);
+    return dx;
+  }
+  // s of eq. (11): x2'' of eq. (2) is zero with x2' = 0 when eta u = chi eta (x2 - x1) - cos(phase).
+  double HoldingForce(const State& x, double phase, const Parameters& p) const {
+    return p.chi * p.eta * (x(1) - x(0)) - std::cos(phase);
+  }
+  // ds/dt with x2' = 0.
+  double HoldingForceRate(const State& x, double phase, const Parameters& p) const {
+    return -p.chi * p.eta * x(2) + p.omega * std::sin(phase);
+  }
+  // The spring term and the forcing amplitude 1.
+  double HoldingForceScale(const State& x, const Parameters& p) const {
+    return std::max(std::abs(p.chi * p.eta * (x(1) - x(0))), 1.0);
   }
 };
 
