@@ -5,8 +5,11 @@
 # results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures.
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
-stickslip_install_packages
-stickslip_build "$STICKSLIP_ROOT/build/release" -DCMAKE_BUILD_TYPE=Release
+# Only what this job runs: the program, its MPI front end and the Python module (the figures'
+# scripts), not the tests and benchmarks, nor the packages they need.
+stickslip_install_packages "${STICKSLIP_PACKAGES[@]}"
+stickslip_build "$STICKSLIP_ROOT/build/release" -DCMAKE_BUILD_TYPE=Release -DSTICKSLIP_BUILD_TESTS=OFF \
+  -DSTICKSLIP_BUILD_BENCHMARKS=OFF
 bin="$STICKSLIP_ROOT/build/release/tools/stickslip"
 cd "$STICKSLIP_ROOT"
 # Exit 6: a trace ended at a change of type that switched nowhere (section 4.1's down chain at its
