@@ -343,14 +343,9 @@ SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi
 
   // Samples at k * sample_step (the last one clipped to the duration), taken from the dense
   // output of the segment that covers them.
-  const long sample_count =
-      options.sample_step > 0.0
-          ? static_cast<long>(std::floor(options.duration / options.sample_step)) + 1
-          : 0;
+  const long sample_count = options.SampleCount();
   long next_sample = 0;
-  auto sample_time = [&](long k) {
-    return std::min(static_cast<double>(k) * options.sample_step, options.duration);
-  };
+  auto sample_time = [&](long k) { return options.SampleTime(k); };
 
   double t = 0.0;
   OdeState x = ToOde(x0);
