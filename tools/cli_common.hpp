@@ -44,6 +44,11 @@ CLI::Option* AddNumberOption(CLI::App& cmd, const std::string& name, double* val
 CLI::Option* AddCountOption(CLI::App& cmd, const std::string& name, int* value, int low, int high,
                             const std::string& help);
 
+// The help text of --force, the flag of every command that writes a file (io/output_marker.hpp).
+inline constexpr const char* kForceHelp =
+    "replace the file even if another command or the user wrote it (without it, only a file whose first line shows "
+    "that this command wrote it is replaced)";
+
 // The help text of --set, listing every key with its meaning and valid range (SetKeys).
 std::string SetKeysHelp();
 

@@ -39,8 +39,8 @@ int RunExport(const ExportArgs& args) {
     }
   }
   const AutoFiles files = ExportAuto(dir, args.samples);  // after the checks: no work for nothing
-  WriteFileAtomically(dir / ("b." + run), files.b);
-  WriteFileAtomically(dir / ("s." + run), files.s);
+  // A pair: AUTO reads b. and s. together, so half of one would mislead it.
+  WriteFilesAtomically({{dir / ("b." + run), files.b}, {dir / ("s." + run), files.s}});
   fmt::print("wrote {} and {}\n", (dir / ("b." + run)).string(), (dir / ("s." + run)).string());
   return kExitOk;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/output_marker.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip::cli {
@@ -31,6 +33,7 @@ struct FindArgs {
   std::string confirmations = std::to_string(FindOrbitOptions{}.confirmations);
   std::string write_run;
   bool write_run_given = false;  // --write-run "" is refused, not taken as no --write-run
+  bool force = false;
 };
 
 std::string Number(double x) {
@@ -52,6 +55,10 @@ std::string SolveCommandLine(const StartInput& start) {
   return line;
 }
 
+// The first line of the run file find writes: the mark of a file that find may replace (a committed
+// run file, the user's, has none).
+constexpr std::string_view kRunFileMarker = "# written by stickslip find: the orbit it found, as a start";
+
 // A run file `stickslip run` takes: the start, and a continuation in omega over 10% on either
 // side, upwards, for the user to edit.
 std::string RunFileText(const StartInput& start, const std::filesystem::path& path) {
@@ -66,7 +73,7 @@ std::string RunFileText(const StartInput& start, const std::filesystem::path& pa
   for (const auto& [name, value] : start.set) {
     if (name == "omega") omega = value;
   }
-  std::string text = fmt::format("# written by stickslip find: the orbit it found, as a start\noutput = \"{}\"\n", output);
+  std::string text = fmt::format("{}\noutput = \"{}\"\n", kRunFileMarker, output);
   text += fmt::format("[start]\nsignature = \"{}\"\nset = {}\nguess = {}\n", start.signature, table(start.set),
                       table(start.guess));
   text += "[unknowns]\nfree = [";
@@ -91,7 +98,10 @@ int ExitCode(FindOrbitStatus status) {
 }
 
 int RunFind(const FindArgs& args) {
-  if (args.write_run_given) CheckOutputFile(args.write_run, "write-run");
+  if (args.write_run_given) {
+    const OutputMarker marker{"stickslip find", [](std::string_view line) { return line == kRunFileMarker; }};
+    CheckReplaceableOutputFile(args.write_run, "write-run", marker, args.force);
+  }
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   // The texts become numbers here; FindOptionsOf checks them, as it does for Python's find.
   auto number = [](const char* field, const std::string& text) { return ParseNumber(field, text, FindOptionRange(field)); };
@@ -173,6 +183,7 @@ Command AddFindCommand(CLI::App& app) {
                   "omega over +-10%, to edit); written whole or not at all, checked before the work")
       ->type_name("FILE")
       ->each([args](const std::string&) { args->write_run_given = true; });
+  cmd->add_flag("--force", args->force, kForceHelp);
   return {cmd, [args] { return RunFind(*args); }};
 }
 

@@ -18,6 +18,7 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/map_file.hpp"
+#include "stickslip/io/output_marker.hpp"
 #include "stickslip/model/transient.hpp"
 
 namespace stickslip::cli {
@@ -44,6 +45,7 @@ struct MapSweepArgs {
   std::string output;
   std::string merge;  // the merged file
   std::vector<std::string> shards;
+  bool force = false;
 };
 
 const std::string kShardRange = fmt::format("k/N with whole numbers 1 <= k <= N <= {}", BruteForceMapOptions::kMaxShards);
@@ -77,7 +79,7 @@ std::string ReadShardFile(const std::string& path) {
 
 int RunMerge(const MapSweepArgs& args) {
   if (args.shards.empty()) throw InvalidInput("merge", "'" + args.merge + "'", "--merge OUT SHARD.csv... with at least one shard file");
-  CheckOutputFile(args.merge, "merge");
+  CheckMapOutputFile(args.merge, "merge", args.force);
   for (const std::string& path : args.shards) {
     std::error_code error;  // none when OUT does not exist yet
     if (std::filesystem::equivalent(args.merge, path, error)) {
@@ -120,10 +122,14 @@ MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   BruteForceMapOptions options = MapOptionsOf(checked, input);
   options.shard = c.shard;
   options.shards = c.shards;
-  return {input.parameters, input.phi, options, args.output};
+  return {input.parameters, input.phi, options, args.output, args.force};
 }
 
 }  // namespace
+
+void CheckMapOutputFile(const std::string& path, const std::string& field, bool force) {
+  CheckReplaceableOutputFile(path, field, {"stickslip map-sweep", IsBruteForceMapCsvHeader}, force);
+}
 
 std::string MapSweepSummary(const BruteForceMap& map, const std::string& output) {
   int attractors = 0, coexisting = 0, unsettled = 0;
@@ -139,7 +145,7 @@ std::string MapSweepSummary(const BruteForceMap& map, const std::string& output)
 }
 
 int RunMapSweepHere(const MapSweepPlan& plan) {
-  CheckOutputFile(plan.output, "output");
+  CheckMapOutputFile(plan.output, "output", plan.force);
   BruteForceMapOptions options = plan.options;
   ProgressLine line("map-sweep");
   options.progress = line.Callback();
@@ -196,6 +202,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge, int
   cmd->add_option("--output", args->output,
                   "CSV file: i,j,ni,nj,<first>,<second>,section_phase,run,attractors,attractor,status,period,"
                   "stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2");
+  cmd->add_flag("--force", args->force, kForceHelp);
   if (merge) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");
     cmd->add_option("shards", args->shards, "with --merge: the shard files (every cell of one map once)");

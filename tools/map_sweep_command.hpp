@@ -17,11 +17,15 @@ struct MapSweepPlan {
   double phi = 0.0;  // the section phase
   BruteForceMapOptions options;
   std::string output;
+  bool force = false;  // --force: replace a file map-sweep did not write
 };
 using MapSweepRunner = std::function<int(const MapSweepPlan&)>;
 
 // In this process, on --threads threads; writes the map file whole.
 int RunMapSweepHere(const MapSweepPlan& plan);
+// Throws InvalidInput naming `field` unless `path` can be written and is new, a map file (its
+// header is a map file's), or `force` (--force) is given: checked before the work.
+void CheckMapOutputFile(const std::string& path, const std::string& field, bool force);
 // The line printed after a map is written.
 std::string MapSweepSummary(const BruteForceMap& map, const std::string& output);
 

@@ -58,7 +58,7 @@ int RunAcrossRanks(const MapSweepPlan& plan, int rank, int ranks) {
                   .what();
   } else if (rank == 0) {
     try {
-      CheckOutputFile(plan.output, "output");
+      CheckMapOutputFile(plan.output, "output", plan.force);
     } catch (const InvalidInput& e) {
       refused = e.what();
     }

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/output_marker.hpp"
 #include "stickslip/model/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/model/transient.hpp"
@@ -32,7 +34,11 @@ struct SimulateArgs {
   std::string samples_per_period = "200";
   std::string max_events = "10000000";
   bool json = false;
+  bool force = false;
 };
+
+// The CSV's header, its first line: the mark of a file that simulate may replace.
+constexpr std::string_view kCsvHeader = "t,x1,x2,v1,v2,mode";
 
 std::string StateJson(const State& x) {
   return fmt::format("[{}, {}, {}, {}]", x(0), x(1), x(2), x(3));
@@ -65,7 +71,10 @@ void PrintEventTable(const SimulationResult& result, double t0) {
 constexpr int kMaxEventsLimit = 10000000;
 
 int RunSimulate(const SimulateArgs& args) {
-  if (args.csv_given) CheckOutputFile(args.csv_path, "csv");
+  if (args.csv_given) {
+    const OutputMarker marker{"stickslip simulate", [](std::string_view line) { return line == kCsvHeader; }};
+    CheckReplaceableOutputFile(args.csv_path, "csv", marker, args.force);
+  }
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   const double periods = ParseNumber("periods", args.periods, "0 < periods <= 1e6");
   const double samples_per_period =
@@ -106,7 +115,7 @@ int RunSimulate(const SimulateArgs& args) {
   std::optional<AtomicFileWriter> csv;
   if (args.csv_given) {
     csv.emplace(args.csv_path);
-    csv->Write("t,x1,x2,v1,v2,mode\n");
+    csv->Write(fmt::format("{}\n", kCsvHeader));
     options.on_sample = [&csv, t0](const TimeSample& s, Mode mode) {
       csv->Write(fmt::format("{},{},{},{},{},{}\n", t0 + s.t, s.state(0), s.state(1), s.state(2), s.state(3),
                              ToString(mode)));
@@ -178,6 +187,7 @@ Command AddSimulateCommand(CLI::App& app) {
                   "written whole or not at all")
       ->type_name("FILE")
       ->each([args](const std::string&) { args->csv_given = true; });
+  cmd->add_flag("--force", args->force, kForceHelp);
   cmd->add_option("--samples-per-period", args->samples_per_period,
                   "CSV sampling density (1 to 1e5 samples per forcing period)")
       ->type_name("FLOAT")

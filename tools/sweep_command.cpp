@@ -12,6 +12,7 @@
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/output_marker.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
@@ -34,10 +35,11 @@ struct SweepArgs {
   std::string seed = Text(SweepCommand{}.seed);
   std::string threads = Text(SweepCommand{}.threads);
   std::string output;
+  bool force = false;
 };
 
 int RunSweep(const SweepArgs& args) {
-  CheckOutputFile(args.output, "output");
+  CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
   SweepCommand command;
   command.parameter = args.parameter;
@@ -108,6 +110,7 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_option("--output", args->output,
                   "CSV file: chain,pass,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2")
       ->required();
+  cmd->add_flag("--force", args->force, kForceHelp);
   return {cmd, [args] { return RunSweep(*args); }};
 }
 

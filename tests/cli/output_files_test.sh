@@ -100,12 +100,14 @@ if [ -d /proc/self ]; then
     simulate --preset paper-5.1 --csv /proc/x.csv
 fi
 
-# An output file that is a symbolic link: its target is written, the link stays a link.
-printf 'old\n' > "$scratch/target.csv"
+# An output file that is a symbolic link: its target is written, the link stays a link. The target
+# is an earlier CSV of simulate's (its header on line 1): only such a file is replaced.
+printf 't,x1,x2,v1,v2,mode\nold\n' > "$scratch/target.csv"
 ln -s "$scratch/target.csv" "$scratch/link.csv"
 "$bin" simulate --preset paper-5.1 --periods 1 --csv "$scratch/link.csv" > /dev/null || fail "simulate into a link: exit $?"
 [ -L "$scratch/link.csv" ] || fail "the link to the output file was replaced"
 head -1 "$scratch/target.csv" | grep -q "^t,x1,x2,v1,v2,mode$" || fail "the link's target was not written"
+grep -q "^old$" "$scratch/target.csv" && fail "the link's target was not replaced"
 echo "ok   a symbolic link as output file: target written, link kept"
 
 # Re-running a run replaces its three files and keeps every other file in its directory.

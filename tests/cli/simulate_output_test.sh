@@ -31,6 +31,16 @@ rows=$(($(wc -l < "$work/a.csv") - 1))
 cmp "$work/a.csv" "$work/b.csv"
 echo "csv ok: $rows rows, deterministic"
 
+# Sample i at i T/N for both methods (issue 22: odeint wrote 3,000 samples where exact wrote 3,001,
+# a rounding boundary of the sample count): the same count and the same times.
+for method in exact odeint; do
+  "$bin" simulate --preset paper-4.1 --periods 3 --samples-per-period 1000 --method $method --csv "$work/$method.csv" > /dev/null
+done
+rows=$(($(wc -l < "$work/odeint.csv") - 1))
+[ "$rows" -eq 3001 ] || { echo "odeint: expected 3001 rows, got $rows"; exit 1; }
+cmp <(cut -d, -f1 "$work/exact.csv") <(cut -d, -f1 "$work/odeint.csv")
+echo "csv ok: exact and odeint sample the same $rows times"
+
 "$bin" simulate --preset paper-4.1 | grep -q "stop"
 echo "table ok"
 

@@ -1,5 +1,7 @@
 """Bad input from Python raises ValueError with the command line's one-line message for the same
 input (the library's InvalidInput, checked once)."""
+import time
+
 import pytest
 
 import stickslip
@@ -173,3 +175,12 @@ def test_a_stored_run_with_a_non_finite_orbit_variable_is_refused_on_load(tmp_pa
     (run / "branch.csv").write_text("\n".join(lines) + "\n")
     with pytest.raises(ValueError, match=r"branch.csv:3: column 'omega' = 'nan' is not a finite number"):
         stickslip.Branch.load(run)
+
+
+def test_many_guess_names_are_refused_at_once():
+    # Issue 22: 100,000 names took 25 s (every pair compared for repeats) before the refusal.
+    guess = {f"g{k}": 1.0 for k in range(100000)}
+    start = time.monotonic()
+    with pytest.raises(ValueError, match="g0"):
+        stickslip.solve(preset="paper-5.1", guess=guess)
+    assert time.monotonic() - start < 3.0

@@ -91,6 +91,20 @@ def test_a_loaded_trace_saves_the_same_bytes(trace41, tmp_path):
     assert trace41.save(tmp_path / "first") == ["notes.txt"]
 
 
+def test_a_saved_trace_keeps_the_users_files_inside_its_branches(trace41, tmp_path):
+    # Issue 22: the AUTO export's files, notes and a directory of the user's inside branch-<k>/ were
+    # deleted by the next save; they are kept and listed, at every depth.
+    trace41.save(tmp_path / "t")
+    mine = {"branch-2/b.branch-2": "b", "branch-2/s.branch-2": "s", "branch-1/NOTES.md": "n",
+            "branch-1/plots/omega.txt": "p"}
+    for name, text in mine.items():
+        (tmp_path / "t" / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / "t" / name).write_text(text)
+    assert trace41.save(tmp_path / "t") == ["branch-1/NOTES.md", "branch-1/plots", "branch-2/b.branch-2",
+                                            "branch-2/s.branch-2"]
+    assert {name: (tmp_path / "t" / name).read_text() for name in mine} == mine
+
+
 @pytest.mark.parametrize("keywords, options", [
     (dict(max_branches=0), ["--max-branches", "0"]),
     (dict(max_branches=10001), ["--max-branches", "10001"]),

@@ -16,6 +16,11 @@ namespace stickslip {
 
 namespace {
 
+// The header's columns around the parameter's name.
+constexpr const char* kSweepColumnsBefore = "chain,pass,step,";
+constexpr const char* kSweepColumnsAfter =
+    "section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2";
+
 double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
   // The last step lands on the range's end exactly: to - (to - from) may miss `from` by an ulp,
   // and a valid end (u_r = u_s) would be refused or simulated outside its range.
@@ -156,10 +161,15 @@ std::vector<State> ScatteredStarts(const State& centre, double half_width, int c
   return starts;
 }
 
+bool IsSweepCsvHeader(std::string_view line) {
+  const std::string_view before = kSweepColumnsBefore, after = kSweepColumnsAfter;
+  if (line.size() < before.size() + after.size() + 1 || !line.starts_with(before) || !line.ends_with(after)) return false;
+  const std::string_view parameter = line.substr(before.size(), line.size() - before.size() - after.size() - 1);
+  return line[line.size() - after.size() - 1] == ',' && ParameterFromString(parameter).has_value();
+}
+
 std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section) {
-  std::string out = fmt::format(
-      "chain,pass,step,{},section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2\n",
-      ToString(parameter));
+  std::string out = fmt::format("{}{},{}\n", kSweepColumnsBefore, ToString(parameter), kSweepColumnsAfter);
   for (const SweepPoint& p : points) {
     for (std::size_t k = 0; k < p.section.size(); ++k) {
       const State& x = p.section[k];

@@ -2,7 +2,7 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <system_error>
 
@@ -22,6 +22,12 @@ std::string TemporaryName(const std::filesystem::path& target) {
   return fmt::format(".{}.tmp.{}", target.filename().string(), static_cast<long>(::getpid()));
 }
 
+// The user's path and the system's reason, never the temporary name (which the user never sees).
+std::runtime_error CannotWrite(const std::filesystem::path& path, int error) {
+  return std::runtime_error(
+      fmt::format("cannot write '{}': {}", path.string(), std::generic_category().message(error)));
+}
+
 }  // namespace
 
 // A symbolic link is followed: its target is written and the link stays.
@@ -36,34 +42,49 @@ AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& link_or_path) {
                     directory.string()));
   }
   temporary_ = directory / TemporaryName(path_);
-  out_.open(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw std::runtime_error(fmt::format("cannot write '{}'", temporary_.string()));
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0) throw CannotWrite(path_, errno);
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
   if (committed_) return;
-  out_.close();
+  if (fd_ >= 0) ::close(fd_);
   std::error_code ignored;
   std::filesystem::remove(temporary_, ignored);
 }
 
 void AtomicFileWriter::Write(std::string_view piece) {
-  out_.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+  constexpr std::size_t kBuffered = 64 * 1024;
+  buffer_.append(piece);
+  if (buffer_.size() >= kBuffered) Flush();
+}
+
+void AtomicFileWriter::Flush() {
+  // After a failure the rest is dropped: Close reports the first error.
+  std::string_view rest = buffer_;
+  while (!rest.empty() && error_ == 0 && fd_ >= 0) {
+    const ssize_t written = ::write(fd_, rest.data(), rest.size());
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) {
+      error_ = errno;
+    } else {
+      rest.remove_prefix(static_cast<std::size_t>(written));
+    }
+  }
+  buffer_.clear();
+}
+
+void AtomicFileWriter::Close() {
+  Flush();
+  // A file system may report a full disk only when the file is closed (NFS).
+  if (fd_ >= 0 && ::close(fd_) != 0 && error_ == 0) error_ = errno;
+  fd_ = -1;
+  if (error_ != 0) throw CannotWrite(path_, error_);
 }
 
 void AtomicFileWriter::Commit() {
-  namespace fs = std::filesystem;
-  out_.flush();
-  const bool written = static_cast<bool>(out_);
-  out_.close();
-  if (!written || out_.fail()) throw std::runtime_error(fmt::format("cannot write '{}'", temporary_.string()));
-  std::error_code error;
-  fs::rename(temporary_, path_, error);
-  if (error) {
-    throw std::runtime_error(
-        fmt::format("cannot rename '{}' to '{}': {}", temporary_.string(), path_.string(),
-                    error.message()));
-  }
+  Close();
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) throw CannotWrite(path_, errno);
   committed_ = true;
 }
 
@@ -71,6 +92,24 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
   AtomicFileWriter out(path);
   out.Write(content);
   out.Commit();
+}
+
+void WriteFilesAtomically(const std::vector<FileContent>& files) {
+  std::vector<std::unique_ptr<AtomicFileWriter>> writers;
+  for (const FileContent& file : files) {
+    writers.push_back(std::make_unique<AtomicFileWriter>(file.path));
+    writers.back()->Write(file.content);
+    writers.back()->Close();
+  }
+  for (std::size_t k = 0; k < writers.size(); ++k) {
+    try {
+      writers[k]->Commit();
+    } catch (const std::runtime_error&) {
+      std::error_code ignored;
+      for (std::size_t j = 0; j < k; ++j) std::filesystem::remove(writers[j]->path(), ignored);
+      throw;
+    }
+  }
 }
 
 void CheckOutputFile(const std::filesystem::path& path, const std::string& field) {

@@ -31,6 +31,15 @@ std::string Header(ParameterId first, ParameterId second) {
 
 }  // namespace
 
+bool IsBruteForceMapCsvHeader(std::string_view line) {
+  const std::string before = std::string(kColumnsBefore) + ",", after = "," + std::string(kColumnsAfter);
+  if (line.size() < before.size() + after.size() || !line.starts_with(before) || !line.ends_with(after)) return false;
+  const std::string_view pair = line.substr(before.size(), line.size() - before.size() - after.size());
+  const std::size_t comma = pair.find(',');
+  if (comma == std::string_view::npos) return false;
+  return ParameterFromString(pair.substr(0, comma)) && ParameterFromString(pair.substr(comma + 1));
+}
+
 std::string BruteForceMapCsv(const BruteForceMap& map) {
   std::string out = Header(map.first, map.second) + "\n";
   for (const MapCell& cell : map.cells) {

@@ -244,9 +244,10 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const
   fs::create_directories(parent, error);
   if (error) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
   // The curves' directories are curve-<k>; "curve-3-continued" or "curve-notes.md" is the user's.
-  auto ours = [](const std::string& name) {
-    return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd || detail::IsNumberedName(name, "curve-", false);
-  };
+  // In them, their run files; anything else there is the user's too.
+  const detail::OwnedEntry ours = detail::EntriesWithRuns(
+      [](std::string_view name) { return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd; }, "curve-",
+      false);
   return detail::ReplaceDirectory(
       parent, directory.filename().string(),
       [&](const fs::path& target) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
+#include <stdexcept>
 #include <sstream>
 #include <system_error>
 
@@ -62,9 +64,71 @@ bool IsNumberedName(std::string_view name, std::string_view prefix, bool labelle
   return span([](char c) { return c >= 'A' && c <= 'Z'; }) > 0 && span(digit) > 0 && rest.empty();
 }
 
+bool IsRunEntry(const fs::path& relative) {
+  return std::distance(relative.begin(), relative.end()) == 1 && IsRunFileName(relative.filename().string());
+}
+
+OwnedEntry EntriesWithRuns(std::function<bool(std::string_view name)> own_file, std::string prefix, bool labelled) {
+  return [own_file = std::move(own_file), prefix = std::move(prefix), labelled](const fs::path& relative) {
+    const std::string top = relative.begin()->string();
+    const bool run = IsNumberedName(top, prefix, labelled);
+    switch (std::distance(relative.begin(), relative.end())) {
+      case 1: return own_file(top) || run;
+      case 2: return run && IsRunFileName(relative.filename().string());
+      default: return false;
+    }
+  };
+}
+
+namespace {
+
+// The entries below root/relative that are not ours, at every depth: a directory of ours (not a
+// link) is looked into, one of the user's is taken whole. Listed before anything moves: POSIX
+// leaves open what a listing shows of entries moved during it.
+std::vector<fs::path> OthersIn(const fs::path& root, const fs::path& relative, const OwnedEntry& ours) {
+  std::vector<fs::path> others;
+  for (const fs::directory_entry& entry : fs::directory_iterator(root / relative)) {
+    const fs::path name = relative / entry.path().filename();
+    if (!ours(name)) {
+      others.push_back(name);
+    } else if (entry.is_directory() && !entry.is_symlink()) {
+      const std::vector<fs::path> deeper = OthersIn(root, name, ours);
+      others.insert(others.end(), deeper.begin(), deeper.end());
+    }
+  }
+  return others;
+}
+
+// Moves root/relative to into/relative, creating the directories of ours it lies in (a branch the
+// new write no longer has keeps the user's files in it). Never over an entry: the writer's own
+// never has the user's names.
+void MoveEntry(const fs::path& root, const fs::path& into, const fs::path& relative) {
+  fs::create_directories(into / relative.parent_path());
+  if (fs::exists(fs::symlink_status(into / relative))) {
+    throw std::runtime_error(
+        fmt::format("cannot keep '{}': the new output has an entry of that name", (root / relative).string()));
+  }
+  fs::rename(root / relative, into / relative);
+}
+
+// Removes the entries of ours below root/relative, and the directories of ours that then are
+// empty; the user's stay.
+void RemoveOurs(const fs::path& root, const fs::path& relative, const OwnedEntry& ours) {
+  std::error_code ignored;
+  std::vector<fs::directory_entry> entries;
+  for (const fs::directory_entry& entry : fs::directory_iterator(root / relative, ignored)) entries.push_back(entry);
+  for (const fs::directory_entry& entry : entries) {
+    const fs::path name = relative / entry.path().filename();
+    if (!ours(name)) continue;
+    if (entry.is_directory(ignored) && !entry.is_symlink(ignored)) RemoveOurs(root, name, ours);
+    fs::remove(root / name, ignored);  // a directory that still holds the user's files stays
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const std::string& output,
-                                          const std::function<void(const fs::path&)>& write,
-                                          const std::function<bool(const std::string&)>& ours) {
+                                          const std::function<void(const fs::path&)>& write, const OwnedEntry& ours) {
   fs::create_directories(results_root);
   const fs::path target = results_root / output;
   const fs::path temporary = results_root / fmt::format(".{}.tmp.{}", output, static_cast<long>(::getpid()));
@@ -72,38 +136,30 @@ std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const st
   std::error_code ignored;
   fs::remove_all(temporary, ignored);
   fs::create_directories(temporary);
-  std::vector<std::string> kept;
+  std::vector<fs::path> kept;
   try {
     write(temporary);
     if (fs::exists(target)) {
-      // Listed first: POSIX leaves open what a directory listing shows of entries moved during it.
-      std::vector<std::string> others;
-      for (const fs::directory_entry& entry : fs::directory_iterator(target)) {
-        const std::string name = entry.path().filename().string();
-        if (!ours(name)) others.push_back(name);
-      }
-      for (const std::string& name : others) {
-        fs::rename(target / name, temporary / name);
-        kept.push_back(name);
+      for (const fs::path& entry : OthersIn(target, {}, ours)) {
+        MoveEntry(target, temporary, entry);
+        kept.push_back(entry);
       }
       fs::rename(target, old);
     }
     fs::rename(temporary, target);
   } catch (...) {
     if (!fs::exists(target) && fs::exists(old)) fs::rename(old, target, ignored);
-    for (const std::string& name : kept) fs::rename(temporary / name, target / name, ignored);
+    for (const fs::path& entry : kept) fs::rename(temporary / entry, target / entry, ignored);
     // Not remove_all of the whole: a file of the user's that could not be moved back stays.
-    std::vector<fs::path> written;
-    for (const fs::directory_entry& entry : fs::directory_iterator(temporary, ignored)) {
-      if (ours(entry.path().filename().string())) written.push_back(entry.path());
-    }
-    for (const fs::path& p : written) fs::remove_all(p, ignored);
+    RemoveOurs(temporary, {}, ours);
     fs::remove(temporary, ignored);
     throw;
   }
   fs::remove_all(old, ignored);
-  std::sort(kept.begin(), kept.end());
-  return kept;
+  std::vector<std::string> names;
+  for (const fs::path& entry : kept) names.push_back(entry.generic_string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace stickslip::detail

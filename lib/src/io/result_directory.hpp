@@ -30,13 +30,30 @@ nlohmann::ordered_json ParseJsonObject(const std::string& text, const std::files
 // user's ("curve-3" of a map; "branch-3" and "branch-3-PD2" of a trace, not "branch-notes.md").
 bool IsNumberedName(std::string_view name, std::string_view prefix, bool labelled);
 
+// Whether an entry of a written directory, given by its path relative to that directory
+// ("trace.json", "branch-2/summary.json", "branch-2/notes/a.txt"), is the writer's own.
+using OwnedEntry = std::function<bool(const std::filesystem::path& relative)>;
+
+// Whether `name` is one of the three files of a run directory (result_files.hpp).
+bool IsRunFileName(std::string_view name);
+
+// The entries a run's directory owns: its three files.
+bool IsRunEntry(const std::filesystem::path& relative);
+
+// The entries owned by a directory that holds, besides the files `own_file` names, run
+// directories named by IsNumberedName(prefix, labelled) (a trace's branch-<k>, a map's curve-<k>):
+// those directories and their three files. Anything else inside them is the user's (an export, notes,
+// a continuation written into them).
+OwnedEntry EntriesWithRuns(std::function<bool(std::string_view name)> own_file, std::string prefix, bool labelled);
+
 // Writes results_root/<output>/ as a whole: `write` fills a temporary directory beside it, which
-// then replaces the old one. Every entry of the old directory for which `ours` is false (a file of
-// the user's, an export) moves into the new one first; their names are returned, sorted. On a
-// failure the old directory stays as it was, and of the temporary one only `ours` entries are
-// removed (a file of the user's that could not be moved back stays where it is).
+// then replaces the old one. Every entry of the old directory, at any depth, for which `ours` is
+// false (a file of the user's, an export, a directory of the user's, moved whole) moves into the
+// same place in the new one first (inside an entry of ours that is a directory); their relative
+// paths are returned, sorted. On a failure the old directory stays as it was, and of the temporary
+// one only `ours` entries are removed (a file of the user's that could not be moved back stays).
 std::vector<std::string> ReplaceDirectory(const std::filesystem::path& results_root, const std::string& output,
                                           const std::function<void(const std::filesystem::path&)>& write,
-                                          const std::function<bool(const std::string&)>& ours);
+                                          const OwnedEntry& ours);
 
 }  // namespace stickslip::detail

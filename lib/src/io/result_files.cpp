@@ -21,6 +21,7 @@
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/trace_files.hpp"
 
 namespace stickslip {
 
@@ -340,6 +341,14 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   return run;
 }
 
+namespace detail {
+
+bool IsRunFileName(std::string_view name) {
+  return name == kBranchFile || name == kSpecialPointsFile || name == kSummaryFile;
+}
+
+}  // namespace detail
+
 void CheckOutputDirectory(const fs::path& results_root, const std::string& output) {
   auto results_error = [&](const std::string& why) {
     return InvalidInput::WithMessage(
@@ -347,6 +356,13 @@ void CheckOutputDirectory(const fs::path& results_root, const std::string& outpu
                                results_root.string(), why));
   };
   if (results_root.empty()) throw results_error("it is empty");
+  // Before the probe below, which would touch the trace's directory.
+  if (IsPartOfTrace(results_root, output)) {
+    throw InvalidInput::WithMessage(
+        "output", fmt::format("output = '{}' is invalid: '{}' is a part of the trace '{}': valid a name a trace does not "
+                              "write (not trace.csv, trace.json, branch-<k> or branch-<k>-<label>)",
+                              output, (results_root / output).string(), results_root.string()));
+  }
   std::error_code error;
   const fs::file_status root = fs::status(results_root, error);
   if (fs::exists(root) && !fs::is_directory(root)) throw results_error("it is not a directory");
@@ -383,7 +399,6 @@ std::vector<std::string> WriteRunFiles(const fs::path& results_root, const Store
   const RunFiles files = FormatRunFiles(run);
   const std::string& output = run.summary.output;
   CheckOutputDirectory(results_root, output);
-  constexpr std::array<const char*, 3> kResultFiles = {kBranchFile, kSpecialPointsFile, kSummaryFile};
   return detail::ReplaceDirectory(
       results_root, output,
       [&](const fs::path& directory) {
@@ -391,9 +406,7 @@ std::vector<std::string> WriteRunFiles(const fs::path& results_root, const Store
         WriteFileAtomically(directory / kSpecialPointsFile, files.special_points_csv);
         WriteFileAtomically(directory / kSummaryFile, files.summary_json);
       },
-      [&](const std::string& name) {
-        return std::find(kResultFiles.begin(), kResultFiles.end(), name) != kResultFiles.end();
-      });
+      detail::IsRunEntry);
 }
 
 StoredRun ReadRunFiles(const fs::path& run_directory) {

@@ -226,6 +226,30 @@ class TableReader {
   std::set<std::string> known_;
 };
 
+// Whether `text` is valid UTF-8: no stray continuation byte, no truncated sequence, no overlong
+// form, no surrogate, nothing above U+10FFFF.
+bool IsUtf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char lead = byte(i);
+    const int length = lead < 0x80 ? 1 : lead >= 0xc2 && lead <= 0xdf ? 2 : lead >= 0xe0 && lead <= 0xef ? 3
+                                                                             : lead >= 0xf0 && lead <= 0xf4 ? 4 : 0;
+    if (length == 0 || i + length > text.size()) return false;
+    for (int k = 1; k < length; ++k) {
+      if ((byte(i + k) & 0xc0) != 0x80) return false;
+    }
+    // The second byte's range where the lead alone does not exclude overlong forms, surrogates
+    // and code points past U+10FFFF.
+    const unsigned char second = length > 1 ? byte(i + 1) : 0x80;
+    if ((lead == 0xe0 && second < 0xa0) || (lead == 0xed && second > 0x9f) || (lead == 0xf0 && second < 0x90) ||
+        (lead == 0xf4 && second > 0x8f)) {
+      return false;
+    }
+    i += static_cast<std::size_t>(length);
+  }
+  return true;
+}
+
 }  // namespace
 
 bool IsRunName(std::string_view name) {
@@ -235,7 +259,7 @@ bool IsRunName(std::string_view name) {
     return u < 0x20 || u == 0x7f;
   });
   return !name.empty() && name.size() <= kMaxRunNameLength && name != "." && !control && name.find('/') == std::string_view::npos &&
-         name.find("..") == std::string_view::npos;
+         name.find("..") == std::string_view::npos && name.find(':') == std::string_view::npos && IsUtf8(name);
 }
 
 RunFile ParseRunFile(std::string_view content, std::string_view path) {

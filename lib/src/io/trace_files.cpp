@@ -343,6 +343,11 @@ bool IsTraceDirectory(const fs::path& directory) {
   return fs::is_directory(fs::symlink_status(directory, ignored)) && fs::exists(directory / kTraceJson, ignored);
 }
 
+bool IsPartOfTrace(const fs::path& results_root, const std::string& output) {
+  return IsTraceDirectory(results_root) &&
+         (output == kTraceCsv || output == kTraceJson || detail::IsNumberedName(output, kBranchPrefix, true));
+}
+
 void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& output) {
   const fs::path target = results_root / output;
   if (IsTraceDirectory(target)) {
@@ -374,12 +379,12 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
 std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
   const TraceFiles files = FormatTraceFiles(trace);
   CheckTraceOutputDirectory(results_root, trace.output);
-  // The files a trace or a run writes (its branches branch-<k>, its followed runs branch-<k>-<label>);
-  // every other entry of the old directory is the user's ("branch-notes.md" too).
-  auto ours = [](const std::string& name) {
-    return name == kTraceCsv || name == kTraceJson || detail::IsNumberedName(name, kBranchPrefix, true) || name == "branch.csv" ||
-           name == "special-points.csv" || name == "summary.json";
-  };
+  // The files a trace or a run writes (its branches branch-<k>, its followed runs branch-<k>-<label>,
+  // and their run files); every other entry of the old directory, at any depth, is the user's
+  // ("branch-notes.md", an export in branch-2/, a continuation written into branch-1/).
+  const detail::OwnedEntry ours = detail::EntriesWithRuns(
+      [](std::string_view name) { return name == kTraceCsv || name == kTraceJson || detail::IsRunFileName(name); },
+      kBranchPrefix, true);
   return detail::ReplaceDirectory(
       results_root, trace.output,
       [&](const fs::path& directory) {

@@ -3,10 +3,10 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace stickslip {
 
@@ -26,14 +26,24 @@ class AtomicFileWriter {
   ~AtomicFileWriter();
 
   void Write(std::string_view piece);
-  // Flushes, checks every write, and renames the temporary file over the target; throws
-  // std::runtime_error naming the path on failure (the target is then untouched).
+  // Closes the temporary file after checking every write; throws std::runtime_error "cannot write
+  // '<target>': <the system's reason>" (ENOSPC: "No space left on device") on failure. Commit
+  // calls it; a caller that writes several files calls it on each before committing any.
+  void Close();
+  // Closes, and renames the temporary file over the target; throws std::runtime_error naming the
+  // target and the system's reason on failure (the target is then untouched).
   void Commit();
+  // The file written: the target, or a link's target.
+  const std::filesystem::path& path() const { return path_; }
 
  private:
+  void Flush();
+
   std::filesystem::path path_;
   std::filesystem::path temporary_;
-  std::ofstream out_;
+  std::string buffer_;  // pieces not yet written: one system call per 64 KiB, not per piece
+  int fd_ = -1;
+  int error_ = 0;  // the first write's errno; 0 while every write succeeded
   bool committed_ = false;
 };
 
@@ -41,6 +51,16 @@ class AtomicFileWriter {
 // followed: its target is written and the link stays. Throws std::runtime_error naming the
 // path if the directory is missing or the write fails; the target is then untouched.
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content);
+
+// Files that belong together (AUTO's b. and s. files): each written whole to its temporary file
+// first, then renamed in order; should a rename fail, the files already renamed are removed, so
+// that the set appears whole or not at all (a file they replaced is then gone too). Throws as
+// AtomicFileWriter, naming the file that failed.
+struct FileContent {
+  std::filesystem::path path;
+  std::string content;
+};
+void WriteFilesAtomically(const std::vector<FileContent>& files);
 
 // Throws InvalidInput naming `field` if WriteFileAtomically(path, ...) is bound to fail, or
 // would replace what is not a file: `path` is empty, its directory does not exist or takes no

@@ -22,6 +22,9 @@
 namespace stickslip {
 
 std::string BruteForceMapCsv(const BruteForceMap& map);
+// Whether `line` is the header BruteForceMapCsv writes (for any two parameters): the mark of a
+// file that map-sweep may replace.
+bool IsBruteForceMapCsvHeader(std::string_view line);
 
 // The map of a file written by BruteForceMapCsv; `name` (the file's path) starts every message.
 // Throws InvalidInput naming the file, the line and the column of the first problem.

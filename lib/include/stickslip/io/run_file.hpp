@@ -100,7 +100,9 @@ struct RunFile {
 };
 
 // A run's name is the folder of its results under the results root: one path component, so
-// not empty, not ".", without '/' and without ".."; without control characters, which would
+// not empty, not ".", without '/' and without ".."; without ':', which --point RUN:LABEL takes as
+// the end of the name, so a run named "a:b" could never be restarted from; valid UTF-8, which
+// summary.json (JSON text) stores as it is on disk; without control characters, which would
 // break the one-line messages that name it; and at most kMaxRunNameLength bytes (a file system
 // takes 255: the rest is room for "-down"/"-up" and the temporary names beside it, so that a long
 // name is refused before the work, not after it).
@@ -108,7 +110,7 @@ inline constexpr std::size_t kMaxRunNameLength = 200;
 bool IsRunName(std::string_view name);
 // The rule, as error messages state the valid values.
 inline constexpr std::string_view kRunNameRule =
-    "a run name: 1 to 200 bytes, not '.', without '/', '..' or control characters (newline, tab, DEL)";
+    "a run name: 1 to 200 bytes of UTF-8, not '.', without '/', '..', ':' or control characters (newline, tab, DEL)";
 
 // The most points a run may ask for (max_points), however it is given.
 inline constexpr int kMaxRunPoints = 1000000;

@@ -128,4 +128,10 @@ StoredTrace ReadTraceFiles(const std::filesystem::path& trace_directory);
 // Whether `directory` holds a trace (a trace.json), for the front ends that take a run or a trace.
 bool IsTraceDirectory(const std::filesystem::path& directory);
 
+// Whether `output` under `results_root` is a part of a trace there: results_root holds a trace and
+// `output` is a name it writes (trace.csv, trace.json, branch-<k>, branch-<k>-<label>). A run or a
+// trace written there would replace the trace's own branch and leave its trace.json naming a run
+// that no longer exists.
+bool IsPartOfTrace(const std::filesystem::path& results_root, const std::string& output);
+
 }  // namespace stickslip

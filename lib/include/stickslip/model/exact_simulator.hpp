@@ -123,15 +123,12 @@ class Sampler {
   using State = typename M::State;
   Sampler(const M& model, const typename M::Parameters& p, double phi,
           const BasicSimulationOptions<State>& options)
-      : model_(model), p_(p), phi_(phi), options_(options),
-        count_(options.sample_step > 0.0
-                   ? static_cast<long>(std::floor(options.duration / options.sample_step * (1.0 + 1e-12))) + 1
-                   : 0) {}
+      : model_(model), p_(p), phi_(phi), options_(options), count_(options.SampleCount()) {}
 
   void Take(const BasicSegment<State>& s, BasicSimulationResult<M>& result) {
     const double omega = model_.ForcingFrequency(p_);
     for (; next_ < count_; ++next_) {
-      const double ts = std::min(static_cast<double>(next_) * options_.sample_step, options_.duration);
+      const double ts = options_.SampleTime(next_);
       if (ts > s.t_end) break;
       const BasicTimeSample<State> sample{
           ts, model_.MotionInMode(s.mode, s.start, omega * s.t_start + phi_, p_).StateAt(ts - s.t_start)};

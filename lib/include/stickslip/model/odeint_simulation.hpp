@@ -205,16 +205,13 @@ std::optional<double> FirstMovingPoint(const ModeIntegrator<M>& integrator, doub
   return std::nullopt;
 }
 
-// Samples at k sample_step (the last one clipped to the duration), each from the dense output of
-// the step that covers it: kept here, or streamed to options.on_sample.
+// Samples at the options' SampleTime(k) (simulation.hpp), each from the dense output of the step
+// that covers it: kept here, or streamed to options.on_sample.
 template <IntegrableOscillatorModel M>
 class Sampler {
  public:
   using State = typename M::State;
-  explicit Sampler(const BasicSimulationOptions<State>& options)
-      : options_(options),
-        count_(options.sample_step > 0.0 ? static_cast<long>(std::floor(options.duration / options.sample_step)) + 1
-                                         : 0) {}
+  explicit Sampler(const BasicSimulationOptions<State>& options) : options_(options), count_(options.SampleCount()) {}
 
   // Those up to elapsed time `covered` in the mode started at time t, whose last step began at lo.
   void Take(const ModeIntegrator<M>& integrator, double t, double lo, double covered) {
@@ -231,7 +228,7 @@ class Sampler {
   std::vector<BasicTimeSample<State>> Samples() && { return std::move(samples_); }
 
  private:
-  double Time(long k) const { return std::min(static_cast<double>(k) * options_.sample_step, options_.duration); }
+  double Time(long k) const { return options_.SampleTime(k); }
 
   const BasicSimulationOptions<State>& options_;
   long count_;

@@ -4,6 +4,8 @@
 // (exact_simulator.hpp).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -70,6 +72,16 @@ struct BasicSimulationOptions {
   // (at an event, the segment that ends there), instead of into SimulationResult::samples: a long,
   // finely sampled simulation is then streamed rather than held in memory.
   std::function<void(const BasicTimeSample<StateType>&, Mode)> on_sample;
+
+  // The samples, one rule for every simulator: sample k (0 <= k < SampleCount()) lies at
+  // k sample_step, computed from k and never by adding steps, the last clipped to the duration.
+  // The count allows for rounding in duration / sample_step: 3 periods at 1000 samples a period
+  // give 3001 samples even where the quotient comes out as 2999.9999999999995.
+  long SampleCount() const {
+    if (!(sample_step > 0.0)) return 0;
+    return static_cast<long>(std::floor(duration / sample_step * (1.0 + 1e-12))) + 1;
+  }
+  double SampleTime(long k) const { return std::min(static_cast<double>(k) * sample_step, duration); }
 };
 
 // options.progress, if any, at time t of a simulation whose forcing has the given period (both
