@@ -6,10 +6,14 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "stickslip/model/events.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -143,6 +147,76 @@ TEST(Margins, AreNaNWhenASegmentIsTooLongForTheSearchBound) {
   EXPECT_TRUE(std::isnan(Find(margins, "velocity:1").value));
   // The other segments' margins do not depend on it.
   EXPECT_FALSE(std::isnan(Find(margins, "stick-entry:2").value));
+}
+
+// Den Hartog's non-sticking orbit (FRICTION-LITERATURE.md) through the model interface: at the
+// lower turning point x = -X, x' = 0 and the forcing phase is phi + pi with cos phi = X/V,
+// V = 1/(1 - r^2), so the stick force x - cos(phase) is -r^2 X. Hence the reversal margin
+// r^2 X - beta_static (Shaw's condition for the orbit to survive) and the deceleration into the
+// stop x'' = r^2 X + beta, in closed form.
+
+// x'(t) of the closed form on the half period, d/dt = r d/dtau.
+double DenHartogVelocity(const DenHartogOrbit& o, double t) {
+  const double tau = o.r * t;
+  return o.r * (-o.amplitude * std::sin(tau) + o.beta * o.u * std::cos(tau) +
+                o.beta * (std::sin(tau / o.r) / o.r - o.u * std::cos(tau / o.r)));
+}
+
+// The smallest sampled interior local minimum of -x' over the half period, +inf if none.
+double SampledSlipVelocityMinimum(const DenHartogOrbit& o) {
+  constexpr int kCount = 200000;
+  const double d = 0.5 * o.Period();
+  auto f = [&](int k) { return -DenHartogVelocity(o, d * k / kCount); };
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 1; k < kCount; ++k) {
+    if (f(k) <= f(k - 1) && f(k) <= f(k + 1)) best = std::min(best, f(k));
+  }
+  return best;
+}
+
+TEST(ModelMargins, AreDenHartogsClosedFormsAtItsTurningPoints) {
+  std::vector<std::pair<double, double>> cases(kDenHartogNonStickingCases.begin(), kDenHartogNonStickingCases.end());
+  // Below r = 1/2, where -x' has positive interior minima in the slip (checked by the sampling).
+  cases.insert(cases.end(), {{0.3, 0.05}, {0.38, 0.1}});
+  for (const auto& [r, beta] : cases) {
+    const DenHartogOrbit o(r, beta);
+    for (const char* signature : {"slip- / antisymmetric", "slip- slip+"}) {
+      SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta << ", " << signature);
+      const std::vector<Margin> margins =
+          AdmissibilityMargins(DenHartogOscillator{}, DenHartogOnSignature(o, signature, 1.5 * beta));
+      const double stick_force = r * r * o.amplitude;
+      const int last = Signature::Parse(signature).size();
+      const std::string end = ":" + std::to_string(last);
+      EXPECT_NEAR(Find(margins, "reversal" + end).value, stick_force - 1.5 * beta, 1e-11);
+      EXPECT_NEAR(Find(margins, "stop-slope" + end).value, stick_force + beta, 1e-11);
+      EXPECT_NEAR(Find(margins, "stop-slope:1").value, stick_force + beta, 1e-11);
+      EXPECT_DOUBLE_EQ(Find(margins, "duration:1").value, std::numbers::pi / r);
+      EXPECT_EQ(Find(margins, "sliding-friction").value, beta);
+      // The interior minimum of -x', by root finding, against dense sampling of the closed form
+      // (grid step <= 6e-5: the sampled minimum lies above the true one by < 1e-8).
+      const double sampled = SampledSlipVelocityMinimum(o);
+      const double velocity = Find(margins, "velocity:1").value;
+      ASSERT_GT(r * r * o.amplitude, beta);
+      if (std::isinf(sampled)) {
+        EXPECT_TRUE(std::isinf(velocity)) << velocity;
+      } else {
+        EXPECT_NEAR(velocity, sampled, 1e-8);
+        EXPECT_LE(velocity, sampled + 1e-12);
+      }
+      EXPECT_GT(SmallestMargin(margins).value, 0.0);
+    }
+  }
+}
+
+TEST(ModelMargins, NameTheReversalWhereStaticFrictionHoldsDenHartogsTurningPoint) {
+  const DenHartogOrbit o(1.5, 0.25);
+  const double holding = 1.5 * 1.5 * o.amplitude;  // Shaw: the orbit survives while r^2 X > beta_static
+  const Margin below = SmallestMargin(AdmissibilityMargins(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- slip+", 0.99 * holding)));
+  const Margin above = SmallestMargin(AdmissibilityMargins(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- slip+", 1.01 * holding)));
+  EXPECT_GT(below.value, 0.0);
+  EXPECT_LT(above.value, 0.0);
+  EXPECT_EQ(std::string(above.base), "reversal");
+  EXPECT_NEAR(above.value, -0.01 * holding, 1e-11);
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
 #include "support/period_map.hpp"
 #include "support/solved_presets.hpp"
 
@@ -112,6 +114,33 @@ TEST(SymmetryTest, IsDetOfIMinusTheFiniteDifferenceHalfPeriodMap) {
     EXPECT_NEAR(test, expected, 1e-6 * (1.0 + std::abs(expected))) << preset;
   }
   EXPECT_TRUE(std::isnan(StabilityOf(SolvedPreset("paper-5.1")).symmetry_test));
+}
+
+// Den Hartog's orbit through the model interface (FRICTION-LITERATURE.md). Undamped, each slip's
+// flow preserves area, and the saltation at a reversal scales x' by the ratio of the accelerations
+// after and before the stop, (r^2 X - beta)/(r^2 X + beta) at each turning point (margins_test.cpp
+// derives them): det M = ((r^2 X - beta)/(r^2 X + beta))^2. The multipliers are those of the exact
+// simulator's period map.
+TEST(ModelStability, DenHartogsMultipliersMultiplyToTheStopsAccelerationRatiosAndAreThePeriodMaps) {
+  for (const auto& [r, beta] : kDenHartogNonStickingCases) {
+    SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta);
+    const DenHartogOrbit o(r, beta);
+    const BasicOrbit<DenHartogOscillator> orbit = DenHartogOnSignature(o, "slip- slip+", beta);
+    const BasicStability<2> s = StabilityOf(DenHartogOscillator{}, orbit);
+    const double ratio = (r * r * o.amplitude - beta) / (r * r * o.amplitude + beta);
+    EXPECT_NEAR(s.monodromy.determinant(), ratio * ratio, 1e-12);
+    EXPECT_NEAR(std::abs(s.multipliers[0] * s.multipliers[1]), ratio * ratio, 1e-12);
+    const Eigen::EigenSolver<Eigen::Matrix2d> fd(PeriodMapJacobian(DenHartogOscillator{}, orbit), false);
+    for (int k = 0; k < 2; ++k) {
+      const double nearest = std::min(std::abs(fd.eigenvalues()(0) - s.multipliers[k]),
+                                      std::abs(fd.eigenvalues()(1) - s.multipliers[k]));
+      EXPECT_LT(nearest, 1e-6) << "multiplier " << s.multipliers[k];
+    }
+    EXPECT_EQ(s.stable, std::abs(s.multipliers[0]) < 1.0);
+    // The half-period formulation gives the same period map.
+    const BasicStability<2> half = StabilityOf(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- / antisymmetric", beta));
+    EXPECT_LT((half.monodromy - s.monodromy).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + s.monodromy.cwiseAbs().maxCoeff()));
+  }
 }
 
 }  // namespace

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "support/den_hartog_oscillator.hpp"
 
@@ -90,6 +92,14 @@ inline Eigen::VectorXd DenHartogVariables(const DenHartogOrbit& orbit,
   v.segment<3>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta;
   if (equations.VariableCount() > equations.FullCount()) v.tail<2>() << -orbit.amplitude, 0.0;
   return v;
+}
+
+// Den Hartog's orbit as an orbit of `signature` ("slip- / antisymmetric" or "slip- slip+"), from
+// its upper turning point, with the static level `beta_static`.
+inline BasicOrbit<DenHartogOscillator> DenHartogOnSignature(const DenHartogOrbit& o, const char* signature,
+                                                            double beta_static) {
+  const Signature s = Signature::Parse(signature);
+  return {s, {o.r, o.beta, beta_static}, {o.amplitude, 0.0}, o.phi, std::vector<double>(s.size(), 0.5 * o.Period())};
 }
 
 }  // namespace stickslip

@@ -48,18 +48,22 @@ struct DenHartogOscillator {
   static const T& ParameterAt(const ParametersT<T>& p, int k) {
     return k == 0 ? p.omega : k == 1 ? p.beta : p.beta_static;
   }
-  // x(s) = offset + drift s + sum of sinusoids, s the time elapsed in the mode.
-  struct Motion {
-    double offset = 0.0;
-    double drift = 0.0;
-    std::vector<Sinusoid> terms;
+  // x(s) = offset + drift s + q cos(omega s + phase) + a cos s + b sin s, s the time elapsed in
+  // the mode: the particular solution and the free oscillation at frequency 1 (none in a stick).
+  template <typename T>
+  struct MotionT {
+    T offset{}, drift{};
+    T omega{}, q{}, phase{};
+    T a{}, b{};
 
-    SinusoidSum Position() const { return SinusoidSum(offset, drift, terms); }
-    State StateAt(double s) const {
-      const SinusoidSum::Jet jet = Position().JetAt(s);
-      return State(jet.value, jet.slope);
+    StateT<T> StateAt(const T& s) const {
+      using std::cos;
+      using std::sin;
+      return StateT<T>(offset + drift * s + q * cos(omega * s + phase) + a * cos(s) + b * sin(s),
+                       drift - q * omega * sin(omega * s + phase) - a * sin(s) + b * cos(s));
     }
   };
+  using Motion = MotionT<double>;
 
   const ModelDescription& Description() const {
     static const ModelDescription description{
@@ -90,26 +94,19 @@ struct DenHartogOscillator {
 
   // In a slip: the particular solution -beta dir + Q cos(omega s + phase), Q = 1/(1 - omega^2),
   // plus the free oscillation at frequency 1 that meets the start. In a stick x stays put.
-  Motion MotionInMode(Mode mode, const State& start, double phase, const Parameters& p) const {
-    if (mode == Mode::kStick) return Motion{start(0), start(1), {}};
-    const double offset = -p.beta * SlipDirection(mode);
-    const double q = 1.0 / (1.0 - p.omega * p.omega);
-    const Sinusoid forced{p.omega, q * std::cos(phase), -q * std::sin(phase)};
-    const Sinusoid free{1.0, start(0) - offset - forced.cos_coefficient, start(1) - p.omega * forced.sin_coefficient};
-    return Motion{offset, 0.0, {forced, free}};
-  }
-  // The same motion written out on any scalar, for the flow's derivatives by AD.
   template <typename T>
-  StateT<T> Flow(Mode mode, const StateT<T>& start, const T& phase, const T& s, const ParametersT<T>& p) const {
+  MotionT<T> MotionInMode(Mode mode, const StateT<T>& start, const T& phase, const ParametersT<T>& p) const {
     using std::cos;
     using std::sin;
-    if (mode == Mode::kStick) return StateT<T>(start(0) + start(1) * s, start(1));
+    if (mode == Mode::kStick) return MotionT<T>{start(0), start(1), p.omega, T(0.0), phase, T(0.0), T(0.0)};
     const T offset = -p.beta * double(SlipDirection(mode));
     const T q = 1.0 / (1.0 - p.omega * p.omega);
-    const T a = start(0) - offset - q * cos(phase);
-    const T b = start(1) + q * p.omega * sin(phase);
-    return StateT<T>(offset + q * cos(p.omega * s + phase) + a * cos(s) + b * sin(s),
-                     -q * p.omega * sin(p.omega * s + phase) - a * sin(s) + b * cos(s));
+    return MotionT<T>{offset, T(0.0), p.omega, q, phase, start(0) - offset - q * cos(phase),
+                      start(1) + q * p.omega * sin(phase)};
+  }
+  template <typename T>
+  StateT<T> Flow(Mode mode, const StateT<T>& start, const T& phase, const T& s, const ParametersT<T>& p) const {
+    return MotionInMode(mode, start, phase, p).StateAt(s);
   }
   FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                       const Parameters& p) const {
@@ -128,6 +125,35 @@ struct DenHartogOscillator {
       d.d_parameters.row(i) = end(i).derivatives().tail<3>().transpose();
     }
     return d;
+  }
+  // The flow's Jacobian with respect to the start state: a rotation at frequency 1 in a slip,
+  // x = x0 + x0' s in a stick.
+  template <typename T>
+  Eigen::Matrix<T, 2, 2> TransitionMatrix(Mode mode, const T& s, const ParametersT<T>&) const {
+    using std::cos;
+    using std::sin;
+    Eigen::Matrix<T, 2, 2> m;
+    if (mode == Mode::kStick) {
+      m << T(1.0), s, T(0.0), T(1.0);
+    } else {
+      m << cos(s), sin(s), -sin(s), cos(s);
+    }
+    return m;
+  }
+  // S = I + (f+ - f-) grad(h)^T / (grad(h) . f- + dh/dt) from the equation of motion: the fields
+  // differ in x'' only; at a stop h = x', at a stick exit h = x - cos(phase) -+ beta_static.
+  template <typename T>
+  Eigen::Matrix<T, 2, 2> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase,
+                                         const ParametersT<T>& p) const {
+    Eigen::Matrix<T, 2, 2> s = Eigen::Matrix<T, 2, 2>::Identity();
+    if (before == after) return s;  // an abnormal stop
+    const T jump = ContactAcceleration(after, x, phase, p) - ContactAcceleration(before, x, phase, p);
+    if (before != Mode::kStick) {
+      s(1, 1) += jump / ContactAcceleration(before, x, phase, p);
+    } else {
+      s(1, 0) += jump / StickForceRate(StateT<T>(x(0), T(0.0)), phase, p);
+    }
+    return s;
   }
   template <typename T>
   T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
@@ -150,6 +176,12 @@ struct DenHartogOscillator {
     using std::cos;
     return x(0) - cos(phase);
   }
+  // d/dt of the stick force along a motion at rest.
+  template <typename T>
+  T StickForceRate(const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
+    using std::sin;
+    return x(1) + p.omega * sin(phase);
+  }
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.beta_static; }
   bool AbnormalStopsPossible(const Parameters& p) const {
@@ -162,11 +194,14 @@ struct DenHartogOscillator {
     return Mode::kStick;
   }
 
-  SinusoidSum ContactVelocityAlong(const Motion& motion) const { return motion.Position().Derivative(); }
+  SinusoidSum ContactVelocityAlong(const Motion& motion) const { return PositionAlong(motion).Derivative(); }
+  // x - cos(omega s + phase).
   SinusoidSum StickForceAlong(const Motion& motion, double phase, const Parameters& p) const {
-    std::vector<Sinusoid> terms = motion.terms;
-    terms.push_back({p.omega, -std::cos(phase), std::sin(phase)});  // -cos(omega s + phase)
-    return SinusoidSum(motion.offset, motion.drift, std::move(terms));
+    return PositionAlong({motion.offset, motion.drift, p.omega, motion.q - 1.0, phase, motion.a, motion.b});
+  }
+  static SinusoidSum PositionAlong(const Motion& m) {
+    const Sinusoid forced{m.omega, m.q * std::cos(m.phase), -m.q * std::sin(m.phase)};
+    return SinusoidSum(m.offset, m.drift, {forced, Sinusoid{1.0, m.a, m.b}});
   }
   // For an integrator (integrable_oscillator_model.hpp), from the equation above alone: in a
   // stick x'' = 0 and x' stays 0.

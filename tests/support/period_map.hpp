@@ -4,32 +4,42 @@
 // monodromy matrix at t = 0.
 #pragma once
 
+#include <numbers>
+
 #include <Eigen/Core>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/simulation.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 
 // ... over `fraction` of the period (one half for the half-period map of an antisymmetric orbit).
-inline Eigen::Matrix4d PeriodMapJacobian(const Orbit& o, double fraction = 1.0) {
+template <typename Model>
+Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> PeriodMapJacobian(const Model& model,
+                                                                              const BasicOrbit<Model>& o,
+                                                                              double fraction = 1.0) {
+  using State = typename Model::State;
   const double t = 0.5 * o.durations[0];
-  const Parameters& p = o.parameters;
-  const State x = Flow(o.signature.segments()[0], o.InitialState(), o.phi, t, p);
-  const double phase = o.phi + p.omega * t;
-  SimulationOptions options;
-  options.duration = fraction * o.Period();
-  auto map = [&](const State& start) { return SimulateExact(p, start, phase, options); };
-  Eigen::Matrix4d j;
-  for (int k = 0; k < 4; ++k) {
+  const typename Model::Parameters& p = o.parameters;
+  const double omega = model.ForcingFrequency(p);
+  const State x = model.Flow(o.signature.segments()[0], o.start, o.phi, t, p);
+  const double phase = o.phi + omega * t;
+  BasicSimulationOptions<State> options;
+  options.duration = fraction * o.signature.period_multiple() * 2.0 * std::numbers::pi / omega;
+  auto map = [&](const State& start) { return SimulateExact(model, p, start, phase, options).segments.back().end; };
+  Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> j;
+  for (int k = 0; k < Model::kStateSize; ++k) {
     const double h = 1e-6;
     State plus = x, minus = x;
     plus(k) += h;
     minus(k) -= h;
-    j.col(k) = (map(plus).segments.back().end - map(minus).segments.back().end) / (2 * h);
+    j.col(k) = (map(plus) - map(minus)) / (2 * h);
   }
   return j;
+}
+inline Eigen::Matrix4d PeriodMapJacobian(const Orbit& o, double fraction = 1.0) {
+  return PeriodMapJacobian(Pascal2014{}, o.OnModel(), fraction);
 }
 
 }  // namespace stickslip

@@ -107,14 +107,14 @@ MarginGradient SegmentMarginGradient(const Margin& m, const SegmentVisit<Dual>& 
   const Dual t_end = s.t0 + s.duration;
   switch (m.kind) {
     case MarginKind::kDuration: return b.AtBoundary(m, s.duration, s.t0);
-    case MarginKind::kStopSlope: return b.AtBoundary(m, StopSlope(mode, s.end, s.end_phase, p), t_end);
-    case MarginKind::kExitSlope: return b.AtBoundary(m, ExitSlope(s.spec.end, s.end, s.end_phase, p), t_end);
+    case MarginKind::kStopSlope: return b.AtBoundary(m, StopSlope(Pascal2014{}, mode, s.end, s.end_phase, p), t_end);
+    case MarginKind::kExitSlope: return b.AtBoundary(m, ExitSlope(Pascal2014{}, s.spec.end, s.end, s.end_phase, p), t_end);
     case MarginKind::kStopForce:
       switch (s.spec.end) {
         case SegmentEndKind::kReversal:
-          return b.AtBoundary(m, ReversalForce(s.spec.next, s.end, s.end_phase, p), t_end);
-        case SegmentEndKind::kStickEntry: return b.AtBoundary(m, StickEntryForce(s.end, s.end_phase, p), t_end);
-        default: return b.AtBoundary(m, AbnormalStopJerk(mode, s.end, s.end_phase, p), t_end);
+          return b.AtBoundary(m, ReversalForce(Pascal2014{}, s.spec.next, s.end, s.end_phase, p), t_end);
+        case SegmentEndKind::kStickEntry: return b.AtBoundary(m, StickEntryForce(Pascal2014{}, s.end, s.end_phase, p), t_end);
+        default: return b.AtBoundary(m, AbnormalStopJerk(Pascal2014{}, mode, s.end, s.end_phase, p), t_end);
       }
     case MarginKind::kSlipVelocity: {
       if (!std::isfinite(m.value)) return b.Empty(m);

@@ -6,32 +6,41 @@
 
 namespace stickslip {
 
-Stability StabilityOf(const Orbit& orbit) {
-  const Parameters& p = orbit.parameters;
-  Stability result;
-  const MonodromyT<double> monodromy = Monodromy<double>(orbit.signature, orbit.InitialState(), orbit.phi,
-                                                         orbit.durations, p);
-  const Eigen::Matrix4d& m = monodromy.period;
-  result.one_sided = monodromy.one_sided;
-  if (orbit.signature.antisymmetric()) {
-    result.symmetry_test = (Eigen::Matrix4d::Identity() - monodromy.listed).determinant();
-  }
+template <int kStateSize>
+BasicStability<kStateSize> StabilityFromMonodromy(const Eigen::Matrix<double, kStateSize, kStateSize>& period,
+                                                  const Eigen::Matrix<double, kStateSize, kStateSize>& listed,
+                                                  bool antisymmetric, bool one_sided) {
+  using Matrix = typename BasicStability<kStateSize>::Matrix;
+  BasicStability<kStateSize> result;
+  const Matrix& m = period;
+  result.one_sided = one_sided;
+  if (antisymmetric) result.symmetry_test = (Matrix::Identity() - listed).determinant();
   result.monodromy = m;
-  const Eigen::EigenSolver<Eigen::Matrix4d> eigen(m, /*computeEigenvectors=*/false);
-  for (int k = 0; k < 4; ++k) result.multipliers[k] = eigen.eigenvalues()(k);
+  const Eigen::EigenSolver<Matrix> eigen(m, /*computeEigenvectors=*/false);
+  for (int k = 0; k < kStateSize; ++k) result.multipliers[k] = eigen.eigenvalues()(k);
   std::sort(result.multipliers.begin(), result.multipliers.end(), [](const auto& a, const auto& b) {
     if (std::abs(a) != std::abs(b)) return std::abs(a) > std::abs(b);
     return a.imag() > b.imag();
   });
   result.stable = std::abs(result.multipliers[0]) < 1.0;
-  result.fold_test = (m - Eigen::Matrix4d::Identity()).determinant();
-  result.flip_test = (m + Eigen::Matrix4d::Identity()).determinant();
+  result.fold_test = (m - Matrix::Identity()).determinant();
+  result.flip_test = (m + Matrix::Identity()).determinant();
   std::complex<double> torus = 1.0;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j) torus *= result.multipliers[i] * result.multipliers[j] - 1.0;
+  for (int i = 0; i < kStateSize; ++i) {
+    for (int j = i + 1; j < kStateSize; ++j) torus *= result.multipliers[i] * result.multipliers[j] - 1.0;
   }
   result.torus_test = torus.real();
   return result;
+}
+
+// The paper's model, and one mass (the tests' second model; the one-mass models to come).
+template BasicStability<4> StabilityFromMonodromy<4>(const Eigen::Matrix4d&, const Eigen::Matrix4d&, bool, bool);
+template BasicStability<2> StabilityFromMonodromy<2>(const Eigen::Matrix2d&, const Eigen::Matrix2d&, bool, bool);
+
+Stability StabilityOf(const Orbit& orbit) {
+  const MonodromyT<double> m = Monodromy<double>(orbit.signature, orbit.InitialState(), orbit.phi,
+                                                 orbit.durations, orbit.parameters);
+  return StabilityFromMonodromy<4>(m.period, m.listed, orbit.signature.antisymmetric(), m.one_sided);
 }
 
 }  // namespace stickslip

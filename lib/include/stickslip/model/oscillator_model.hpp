@@ -15,16 +15,22 @@
 //     violation, not thrown) and ValidateClosedForm(p) (only what the closed forms need: the
 //     solvers ask it of every iterate);
 //   - the motion in a mode from a state and a forcing phase (MotionInMode), exact in closed form,
-//     with StateAt(elapsed): the flow; the flow with its exact derivatives; the contact's
-//     acceleration in a mode (an abnormal stop's second end condition);
+//     with StateAt(elapsed): the flow; both templated on the scalar (MotionT<T>), so that the walk
+//     over an orbit's segments runs in AD for the margins' and the monodromy's gradients; the flow
+//     with its exact derivatives; the contact's acceleration in a mode (an abnormal stop's second
+//     end condition);
 //   - the contact's velocity s and "at rest" (s = 0 exactly, and s = 0 to rounding);
 //   - the stick force (the friction force a stick needs, signed so that s > threshold drives a
-//     slip with s < 0) and the static threshold it must stay within; Coulomb's law at rest
+//     slip with s < 0), its rate along a motion at rest (the transversality of a stick exit, and
+//     minus the contact's jerk at an abnormal stop, up to a positive factor), and the static
+//     threshold it must stay within; Coulomb's law at rest
 //     (ModeFromRest); whether abnormal stops (s = s' = 0 in a slip, which needs static = kinetic
 //     level) can occur;
 //   - along a motion, the contact velocity and the stick force as functions of the elapsed time
 //     in a form the root finder can search without missing a root (numerics/sinusoid_sum.hpp);
-//   - the forcing frequency (the forcing is cos(omega t + phi)).
+//   - the forcing frequency (the forcing is cos(omega t + phi));
+//   - the monodromy's factors: each mode's transition matrix (the flow's Jacobian with respect to
+//     its start) and the saltation matrix at each kind of segment end.
 // A model that an integrator can also run, the independent check of its closed forms, provides
 // its equations of motion and what Coulomb's law needs written from them
 // (IntegrableOscillatorModel, integrable_oscillator_model.hpp).
@@ -48,6 +54,8 @@
 #include <concepts>
 #include <optional>
 
+#include <Eigen/Core>
+
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/model_description.hpp"
 #include "stickslip/model/mode.hpp"
@@ -67,6 +75,7 @@ concept OscillatorModel =
       { M::kStaticFrictionParameter } -> std::convertible_to<int>;
       requires std::same_as<typename M::State, typename M::template StateT<double>>;
       requires std::same_as<typename M::Parameters, typename M::template ParametersT<double>>;
+      requires std::same_as<typename M::Motion, typename M::template MotionT<double>>;
       { M::ParameterAt(p, 0) } -> std::convertible_to<double>;
       { model.Description() } -> std::same_as<const ModelDescription&>;
       { model.Validate(p) } -> std::same_as<std::optional<InvalidInput>>;
@@ -78,12 +87,17 @@ concept OscillatorModel =
       { model.Flow(mode, x, phase, phase, p) } -> std::same_as<typename M::State>;
       { model.FlowWithDerivatives(mode, x, phase, phase, p) } -> std::same_as<typename M::FlowDerivatives>;
       { model.ForcingFrequency(p) } -> std::same_as<double>;
+      // The monodromy's factors: the flow's Jacobian with respect to the start state over a
+      // segment's duration, and the saltation matrix at its end from one mode into the next.
+      { model.TransitionMatrix(mode, phase, p) } -> std::convertible_to<Eigen::Matrix<double, M::kStateSize, M::kStateSize>>;
+      { model.SaltationMatrix(mode, mode, x, phase, p) } -> std::convertible_to<Eigen::Matrix<double, M::kStateSize, M::kStateSize>>;
       // The contact.
       { model.ContactVelocity(x) } -> std::same_as<double>;
       { model.ContactAcceleration(mode, x, phase, p) } -> std::same_as<double>;
       { model.AtRest(x) } -> std::same_as<typename M::State>;
       { model.NearRest(x) } -> std::same_as<bool>;
       { model.StickForce(x, phase, p) } -> std::same_as<double>;
+      { model.StickForceRate(x, phase, p) } -> std::same_as<double>;
       { model.StaticThreshold(p) } -> std::same_as<double>;
       { model.AbnormalStopsPossible(p) } -> std::same_as<bool>;
       { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;

@@ -15,6 +15,7 @@
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/model_description.hpp"
 #include "stickslip/model/parameters.hpp"
+#include "stickslip/model/saltation.hpp"
 
 namespace stickslip {
 
@@ -30,6 +31,8 @@ struct Pascal2014 {
   using ParametersT = BasicParameters<T>;
   using State = stickslip::State;
   using Parameters = stickslip::Parameters;
+  template <typename T>
+  using MotionT = ModeMotion<T>;
   using Motion = ModeMotion<double>;
   using FlowDerivatives = stickslip::FlowDerivatives;
 
@@ -42,7 +45,8 @@ struct Pascal2014 {
   template <typename T>
   static const T& ParameterAt(const ParametersT<T>& p, int k) { return p[kAllParameters[k]]; }
 
-  Motion MotionInMode(Mode mode, const State& start, double phase, const Parameters& p) const {
+  template <typename T>
+  MotionT<T> MotionInMode(Mode mode, const StateT<T>& start, const T& phase, const ParametersT<T>& p) const {
     return stickslip::MotionInMode(mode, start, phase, p);
   }
   State Flow(Mode mode, const State& start, double phase, double s, const Parameters& p) const {
@@ -51,6 +55,16 @@ struct Pascal2014 {
   FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s,
                                       const Parameters& p) const {
     return stickslip::FlowWithDerivatives(mode, start, phase, s, p);
+  }
+  // The flow's Jacobian with respect to the start state (flows.hpp), and the saltation matrix at
+  // a segment's end (saltation.hpp): the monodromy's factors.
+  template <typename T>
+  Matrix4<T> TransitionMatrix(Mode mode, const T& s, const ParametersT<T>& p) const {
+    return stickslip::TransitionMatrix(mode, s, p);
+  }
+  template <typename T>
+  Matrix4<T> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
+    return stickslip::SaltationMatrix(before, after, x, phase, p);
   }
   template <typename T>
   T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
@@ -72,6 +86,11 @@ struct Pascal2014 {
   template <typename T>
   T StickForce(const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     return stickslip::StickForce(x, phase, p);
+  }
+  // ds/dt with m2 at rest (events.hpp).
+  template <typename T>
+  T StickForceRate(const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
+    return stickslip::StickForceRate(x, phase, p);
   }
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.eta * p.u_r; }  // eq. (4)

@@ -27,7 +27,9 @@
 #include <vector>
 
 #include "stickslip/model/events.hpp"
+#include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
 
@@ -53,40 +55,112 @@ struct Margin {
   std::string Name() const;
 };
 
-std::vector<Margin> AdmissibilityMargins(const Orbit& orbit);
-
 // The margins at a segment's end, as functions of the end state x, the forcing phase there and
-// the parameters; templated so that forward-mode AD gives their gradients (margin_gradients.hpp).
-// stop-slope: a slip in `mode` decelerates into its stop, -sign(x2') x2'' > 0.
-template <typename T>
-T StopSlope(Mode mode, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
-  return -double(SlipDirection(mode)) * Acceleration(mode, x, phase, p)(1);
+// the parameters, for any model (model/oscillator_model.hpp); templated on the scalar so that
+// forward-mode AD gives their gradients (margin_gradients.hpp). With s the contact's velocity and
+// F the stick force:
+// stop-slope: a slip in `mode` decelerates into its stop, -sign(s) s' > 0 (x2'' for the paper).
+template <typename Model, typename T>
+T StopSlope(const Model& model, Mode mode, const typename Model::template StateT<T>& x, const T& phase,
+            const typename Model::template ParametersT<T>& p) {
+  return -double(SlipDirection(mode)) * model.ContactAcceleration(mode, x, phase, p);
 }
 // reversal: the force at a stop exceeds the static level towards the slip that follows,
-// s - eta u_r > 0 before slip- (f > 0, eq. 12), -s - eta u_r > 0 before slip+ (f1 < 0, eq. 14).
-template <typename T>
-T ReversalForce(Mode next, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
-  const T force = StickForce(x, phase, p);
-  const T threshold = p.eta * p.u_r;
+// F - F_s > 0 before slip-, -F - F_s > 0 before slip+ (the paper's s - eta u_r, f > 0 of eq. 12,
+// and -s - eta u_r, f1 < 0 of eq. 14).
+template <typename Model, typename T>
+T ReversalForce(const Model& model, Mode next, const typename Model::template StateT<T>& x, const T& phase,
+                const typename Model::template ParametersT<T>& p) {
+  const T force = model.StickForce(x, phase, p);
+  const T threshold = model.StaticThreshold(p);
   return next == Mode::kSlipNegative ? T(force - threshold) : T(-force - threshold);
 }
-// stick-entry: the force at a stop into a stick lies inside the static band, eta u_r - |s| (eq. 30).
-template <typename T>
-T StickEntryForce(const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
+// stick-entry: the force at a stop into a stick lies inside the static band, F_s - |F| (eq. 30).
+template <typename Model, typename T>
+T StickEntryForce(const Model& model, const typename Model::template StateT<T>& x, const T& phase,
+                  const typename Model::template ParametersT<T>& p) {
   using std::abs;
-  return p.eta * p.u_r - abs(StickForce(x, phase, p));
+  return model.StaticThreshold(p) - abs(model.StickForce(x, phase, p));
 }
-// abnormal-stop: x2' touches zero and keeps its sign, sign(x2') x2''' > 0 (eq. 23).
-template <typename T>
-T AbnormalStopJerk(Mode mode, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
-  return double(SlipDirection(mode)) * -StickForceRate(x, phase, p);
+// abnormal-stop: s touches zero and keeps its sign, sign(s) s''' > 0, where s''' = -dF/dt up to
+// a positive factor (eq. 23).
+template <typename Model, typename T>
+T AbnormalStopJerk(const Model& model, Mode mode, const typename Model::template StateT<T>& x, const T& phase,
+                   const typename Model::template ParametersT<T>& p) {
+  return double(SlipDirection(mode)) * -model.StickForceRate(x, phase, p);
 }
-// exit-slope: s leaves the static band at a stick exit, ds/dt > 0 into slip-, < 0 into slip+.
-template <typename T>
-T ExitSlope(SegmentEndKind end, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
-  const T rate = StickForceRate(x, phase, p);
+// exit-slope: F leaves the static band at a stick exit, dF/dt > 0 into slip-, < 0 into slip+.
+template <typename Model, typename T>
+T ExitSlope(const Model& model, SegmentEndKind end, const typename Model::template StateT<T>& x, const T& phase,
+            const typename Model::template ParametersT<T>& p) {
+  const T rate = model.StickForceRate(x, phase, p);
   return end == SegmentEndKind::kExitToNegative ? rate : T(-rate);
 }
+
+// The smallest interior local minimum of f on (0, d), ignoring critical points within a guard of
+// either end (there f is at an end value fixed by an end condition); +inf if none; NaN if the
+// search for them could not be completed (a NaN in the orbit, or a segment too long for the
+// search's bound): a margin that is not defined there, never a wrong one.
+Extremum InteriorMinimum(const SinusoidSum& f, double d);
+
+// The margins of one listed segment, visited by the walk (segment_walk.hpp), appended to `margins`.
+template <typename Model>
+void AddSegmentMargins(const Model& model, const SegmentVisit<double, Model>& s,
+                       const typename Model::Parameters& p, std::vector<Margin>& margins) {
+  const int i = s.spec.listed;
+  const Mode mode = s.spec.mode;
+  const double d = s.duration;
+  const double t_end = s.t0 + d;
+  auto add = [&](const char* name, MarginKind kind, double value, double t) { margins.push_back({name, kind, i, value, t}); };
+  add("duration", MarginKind::kDuration, d, s.t0);
+  if (mode != Mode::kStick) {
+    const SinusoidSum velocity = model.ContactVelocityAlong(s.motion).Affine(SlipDirection(mode), 0.0);
+    const Extremum low = InteriorMinimum(velocity, d);
+    add("velocity", MarginKind::kSlipVelocity, low.value, s.t0 + low.t);
+    switch (s.spec.end) {
+      case SegmentEndKind::kReversal:
+        add("stop-slope", MarginKind::kStopSlope, StopSlope(model, mode, s.end, s.end_phase, p), t_end);
+        add("reversal", MarginKind::kStopForce, ReversalForce(model, s.spec.next, s.end, s.end_phase, p), t_end);
+        break;
+      case SegmentEndKind::kStickEntry:
+        add("stop-slope", MarginKind::kStopSlope, StopSlope(model, mode, s.end, s.end_phase, p), t_end);
+        add("stick-entry", MarginKind::kStopForce, StickEntryForce(model, s.end, s.end_phase, p), t_end);
+        break;
+      default:
+        add("abnormal-stop", MarginKind::kStopForce, AbnormalStopJerk(model, mode, s.end, s.end_phase, p), t_end);
+        break;
+    }
+    return;
+  }
+  const double threshold = model.StaticThreshold(p);
+  const SinusoidSum force = model.StickForceAlong(s.motion, s.phase, p);
+  const bool exit_negative = s.spec.end == SegmentEndKind::kExitToNegative;
+  // The constraint that ends the stick is zero at the exit by its end condition.
+  auto constraint_margin = [&](const char* name, const SinusoidSum& c, bool ends_stick) {
+    Extremum low = ends_stick ? InteriorMinimum(c, d) : Minimum(c, 0.0, d);
+    if (ends_stick && c(0.0) < low.value) low = {0.0, c(0.0)};
+    add(name, MarginKind::kStickConstraint, low.value, s.t0 + low.t);
+  };
+  constraint_margin("G", force.Affine(1.0, threshold), !exit_negative);   // G, eq. (35)
+  constraint_margin("G1", force.Affine(-1.0, threshold), exit_negative);  // G1
+  const double slope = force.Derivative()(d);
+  add("exit-slope", MarginKind::kExitSlope, exit_negative ? slope : -slope, t_end);
+}
+
+// Every margin of `orbit` of any model, segment by segment in the walk's order, then the orbit's own.
+template <typename Model>
+std::vector<Margin> AdmissibilityMargins(const Model& model, const BasicOrbit<Model>& orbit) {
+  std::vector<Margin> margins;
+  margins.reserve(5 * orbit.signature.size() + 1);
+  WalkSegments(model, orbit, Extent::kListed, PhaseRule::kFromOrigin,
+               [&](const SegmentVisit<double, Model>& s) { AddSegmentMargins(model, s, orbit.parameters, margins); });
+  margins.push_back({"sliding-friction", MarginKind::kFrictionLevel, -1,
+                     Model::ParameterAt(orbit.parameters, Model::kKineticFrictionParameter), 0.0});
+  return margins;
+}
+
+// The paper's model (model/pascal_2014.hpp).
+std::vector<Margin> AdmissibilityMargins(const Orbit& orbit);
 
 // The margin with the smallest value (the first on ties), or the first NaN one: a margin that
 // could not be computed may be the smallest. By value: callers often pass a temporary vector.

@@ -14,9 +14,22 @@
 
 #include "stickslip/model/flows.hpp"
 #include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/signature.hpp"
 
 namespace stickslip {
+
+// A periodic orbit of any model (model/oscillator_model.hpp): its signature, parameters, the
+// state at the time origin (a stop: the contact at rest), the forcing phase there and the
+// durations of the listed segments.
+template <typename Model>
+struct BasicOrbit {
+  Signature signature;
+  typename Model::Parameters parameters;
+  typename Model::State start;
+  double phi = 0.0;
+  std::vector<double> durations;  // one per listed segment
+};
 
 struct Orbit {
   Signature signature;
@@ -28,6 +41,7 @@ struct Orbit {
   std::vector<double> durations;  // one per listed segment
 
   State InitialState() const { return State(x10, x20, v10, 0.0); }
+  BasicOrbit<Pascal2014> OnModel() const { return {signature, parameters, InitialState(), phi, durations}; }
   // k 2 pi/omega: the time after which the orbit repeats.
   double Period() const;
   // Start times of the listed segments, and the end of the last one (n + 1 values).

@@ -1,13 +1,8 @@
-// Stability of a periodic orbit: the monodromy matrix of the stroboscopic (period) map as the
-// product of the closed-form flow Jacobians of the segments and the saltation (jump) matrices
-// at each switching event (Leine & Nijmeijer, Dynamics and Bifurcations of Non-Smooth
-// Mechanical Systems, 2004), and its Floquet multipliers.
-//
-// At an event h(x, t) = 0 from vector field f- to f+ the saltation matrix is
-//   S = I + (f+ - f-) grad(h)^T / (grad(h) . f- + dh/dt).
-// At a stop h = x2' (a reversal, or the entry into a stick, where S annihilates the perturbation
-// of x2' and a multiplier 0 appears); at a stick exit h = s -+ eta u_r (eq. 11); an abnormal stop
-// keeps the vector field, S = I.
+// Stability of a periodic orbit of any model (model/oscillator_model.hpp): the monodromy matrix
+// of the stroboscopic (period) map as the product of the closed-form flow Jacobians of the
+// segments and the saltation (jump) matrices at each switching event (Leine & Nijmeijer,
+// Dynamics and Bifurcations of Non-Smooth Mechanical Systems, 2004; the paper's in
+// model/saltation.hpp), and its Floquet multipliers.
 #pragma once
 
 #include <array>
@@ -18,16 +13,17 @@
 
 #include <Eigen/Core>
 
-#include "stickslip/model/events.hpp"
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
 
-struct Stability {
-  Eigen::Matrix4d monodromy = Eigen::Matrix4d::Identity();  // from t = 0 to the period
-  std::array<std::complex<double>, 4> multipliers{};        // by decreasing modulus
+template <int kStateSize>
+struct BasicStability {
+  using Matrix = Eigen::Matrix<double, kStateSize, kStateSize>;
+  Matrix monodromy = Matrix::Identity();                         // from t = 0 to the period
+  std::array<std::complex<double>, kStateSize> multipliers{};  // by decreasing modulus
   bool stable = false;                                      // every |multiplier| < 1
   // Test functions of the smooth bifurcations, continuous along a branch:
   double fold_test = 0.0;   // det(M - I): a multiplier through +1 (LP)
@@ -39,59 +35,59 @@ struct Stability {
   // non-antisymmetric twins branch off. M then has a multiplier +1 without a fold of the branch,
   // and det(M + I) = |det(H - iI)|^2 cannot change sign, so no other test sees it.
   double symmetry_test = std::numeric_limits<double>::quiet_NaN();
-  // An abnormal stop is a grazing of x2' = 0: perturbations on one side cross zero and stick
+  // An abnormal stop is a grazing of the contact's rest (x2' = 0): perturbations on one side cross zero and stick
   // for an instant, so the period map has only one-sided derivatives there. The multipliers are
-  // those of the side that keeps x2' off zero (S = I at the abnormal stop).
+  // those of the side that keeps it off rest (S = I at the abnormal stop).
   bool one_sided = false;
 };
-
-// The saltation matrix at the end of listed or mirrored segment with mode `before`, followed by
-// `after`, at state x (x2' = 0) and forcing phase `phase`. Templated, as the monodromy below.
-template <typename T>
-Matrix4<T> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase, const BasicParameters<T>& p) {
-  Matrix4<T> s = Matrix4<T>::Identity();
-  if (before == after) return s;  // an abnormal stop: the vector field does not change
-  // The two fields differ in x2'' only (x1'' does not feel the friction, eq. 2, 9).
-  const T jump = Acceleration(after, x, phase, p)(1) - Acceleration(before, x, phase, p)(1);
-  if (before != Mode::kStick) {
-    // A stop, h = x2': grad h = e4, dh/dt = 0, grad h . f- = x2'' before the stop.
-    s(3, 3) += jump / Acceleration(before, x, phase, p)(1);
-    return s;
-  }
-  // A stick exit, h = chi eta (x2 - x1) - cos(omega t + phi) -+ eta u_r (eq. 11):
-  // grad h = chi eta (-1, 1, 0, 0), and grad h . f- + dh/dt = ds/dt with m2 at rest.
-  const T rate = StickForceRate(AtRest(x), phase, p);
-  s(3, 0) -= jump * p.chi * p.eta / rate;
-  s(3, 1) += jump * p.chi * p.eta / rate;
-  return s;
-}
+using Stability = BasicStability<4>;  // the paper's model
 
 // The monodromy matrix of an orbit from its walk: the products of the segments' transition
 // matrices and the saltation matrices at their ends. Templated on the scalar: forward-mode AD
 // through it gives its exact derivatives (orbits/floquet_gradients.hpp).
-template <typename T>
+template <typename T, typename Model = Pascal2014>
 struct MonodromyT {
-  Matrix4<T> period = Matrix4<T>::Identity();  // over the whole period
+  using Matrix = Eigen::Matrix<T, Model::kStateSize, Model::kStateSize>;
+  Matrix period = Matrix::Identity();  // over the whole period
   // Over the listed segments: the half-period map of an antisymmetric orbit (the period's for the others).
-  Matrix4<T> listed = Matrix4<T>::Identity();
+  Matrix listed = Matrix::Identity();
   bool one_sided = false;  // an abnormal stop on the way (Stability::one_sided)
 };
-template <typename T>
-MonodromyT<T> Monodromy(const Signature& signature, const StateT<T>& x0, const T& phi, std::span<const T> durations,
-                        const BasicParameters<T>& p) {
-  MonodromyT<T> result;
+template <typename T, typename Model>
+MonodromyT<T, Model> Monodromy(const Model& model, const Signature& signature,
+                               const typename Model::template StateT<T>& x0, const T& phi, std::span<const T> durations,
+                               const typename Model::template ParametersT<T>& p) {
+  MonodromyT<T, Model> result;
   // The whole period: the listed segments, then their mirror images for an antisymmetric orbit,
   // flowed from the actual states (the symmetry is not assumed).
   const std::vector<SegmentSpec> plan = SegmentPlan(signature, Extent::kFullPeriod);
-  WalkSegments<T>(plan, x0, phi, durations, p, PhaseRule::kAccumulated, [&](const SegmentVisit<T>& s) {
+  WalkSegments<T>(model, plan, x0, phi, durations, p, PhaseRule::kAccumulated, [&](const SegmentVisit<T, Model>& s) {
     result.one_sided = result.one_sided || s.spec.end == SegmentEndKind::kAbnormalStop;
-    result.period = SaltationMatrix(s.spec.mode, s.spec.next, s.end, s.end_phase, p) *
-                    TransitionMatrix(s.spec.mode, s.duration, p) * result.period;
+    result.period = model.SaltationMatrix(s.spec.mode, s.spec.next, s.end, s.end_phase, p) *
+                    model.TransitionMatrix(s.spec.mode, s.duration, p) * result.period;
     if (s.index + 1 == signature.size()) result.listed = result.period;
   });
   return result;
 }
+template <typename T>
+MonodromyT<T> Monodromy(const Signature& signature, const StateT<T>& x0, const T& phi, std::span<const T> durations,
+                        const BasicParameters<T>& p) {
+  return Monodromy<T>(Pascal2014{}, signature, x0, phi, durations, p);
+}
 
+// The multipliers and test functions of a monodromy (compiled for the state sizes of the models
+// the library serves).
+template <int kStateSize>
+BasicStability<kStateSize> StabilityFromMonodromy(const Eigen::Matrix<double, kStateSize, kStateSize>& period,
+                                                  const Eigen::Matrix<double, kStateSize, kStateSize>& listed,
+                                                  bool antisymmetric, bool one_sided);
+
+template <typename Model>
+BasicStability<Model::kStateSize> StabilityOf(const Model& model, const BasicOrbit<Model>& orbit) {
+  const MonodromyT<double, Model> m = Monodromy<double>(model, orbit.signature, orbit.start, orbit.phi,
+                                                        std::span<const double>(orbit.durations), orbit.parameters);
+  return StabilityFromMonodromy<Model::kStateSize>(m.period, m.listed, orbit.signature.antisymmetric(), m.one_sided);
+}
 Stability StabilityOf(const Orbit& orbit);
 
 }  // namespace stickslip
