@@ -6,9 +6,12 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
 #include "support/random_orbits.hpp"
 #include "support/solved_presets.hpp"
 
@@ -90,6 +93,59 @@ TEST(MarginGradients, MatchCentralDifferencesOnRandomOrbitsOfEveryEndKind) {
   }
   for (const char* kind : {"slip-velocity (interior)", "stick-constraint (interior)", "stick-constraint", "stop-force",
                            "stop-slope", "exit-slope"}) {
+    EXPECT_TRUE(kinds.count(kind)) << kind;
+  }
+}
+
+// The test model through the interface (den_hartog_oscillator.hpp): its variables are x0, phi,
+// the durations, then omega, beta, beta_static.
+BasicOrbit<DenHartogOscillator> Perturbed(BasicOrbit<DenHartogOscillator> o, int index, double h) {
+  const int n = o.signature.size();
+  double& v = index == 0 ? o.start(0)
+              : index == 1 ? o.phi
+              : index < 2 + n ? o.durations[index - 2]
+                              : DenHartogOscillator::ParameterAt(o.parameters, index - 2 - n);
+  v += h;
+  return o;
+}
+
+std::set<std::string> ExpectModelGradientsMatchDifferences(const BasicOrbit<DenHartogOscillator>& orbit) {
+  const DenHartogOscillator model;
+  const std::vector<Margin> margins = AdmissibilityMargins(model, orbit);
+  const std::vector<MarginGradient> gradients = MarginGradients(model, orbit);
+  EXPECT_EQ(gradients.size(), margins.size());
+  std::set<std::string> checked;
+  const int count = 2 + orbit.signature.size() + 3;
+  for (int index = 0; index < count; ++index) {
+    const double h = 1e-6;
+    const std::vector<Margin> up = AdmissibilityMargins(model, Perturbed(orbit, index, h));
+    const std::vector<Margin> down = AdmissibilityMargins(model, Perturbed(orbit, index, -h));
+    for (std::size_t k = 0; k < margins.size(); ++k) {
+      if (!std::isfinite(margins[k].value)) continue;
+      const double fd = (up[k].value - down[k].value) / (2 * h);
+      EXPECT_NEAR(gradients[k].value, margins[k].value, 1e-12 * std::max(1.0, std::abs(margins[k].value)));
+      EXPECT_NEAR(gradients[k].d_value(index), fd, 1e-6 * std::max(1.0, std::abs(fd)))
+          << margins[k].Name() << " along variable " << index << " on " << orbit.signature.ToString();
+      EXPECT_NEAR(gradients[k].d_t(index), (up[k].t - down[k].t) / (2 * h), 1e-5 * std::max(1.0, std::abs(fd)))
+          << "time of " << margins[k].Name() << " along variable " << index;
+      checked.insert(std::string(ToString(margins[k].kind)) + (gradients[k].interior ? " (interior)" : ""));
+    }
+  }
+  return checked;
+}
+
+// Den Hartog's orbits with interior minima of the slip velocity (margins_test.cpp), and an orbit
+// with sticks ending both ways (not periodic: its margins are defined all the same).
+TEST(MarginGradients, MatchCentralDifferencesForTheTestModel) {
+  std::set<std::string> kinds;
+  for (const auto& [r, beta] : {std::pair{0.3, 0.05}, std::pair{0.38, 0.1}}) {
+    kinds.merge(ExpectModelGradientsMatchDifferences(DenHartogOnSignature(DenHartogOrbit(r, beta), "slip- slip+", beta)));
+  }
+  const BasicOrbit<DenHartogOscillator> sticking{
+      Signature::Parse("slip- stick slip+ stick"), {0.7, 0.2, 0.3}, {1.0, 0.0}, 0.3, {2.0, 0.5, 2.5, 0.7}};
+  kinds.merge(ExpectModelGradientsMatchDifferences(sticking));
+  for (const char* kind : {"duration", "slip-velocity (interior)", "stop-slope", "stop-force", "stick-constraint",
+                           "exit-slope", "friction-level"}) {
     EXPECT_TRUE(kinds.count(kind)) << kind;
   }
 }
