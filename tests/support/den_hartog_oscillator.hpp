@@ -29,8 +29,8 @@ struct DenHartogOscillator {
   static constexpr int kStateSize = 2;
   static constexpr int kParameterCount = 3;
   static constexpr int kForcingFrequencyParameter = 0;
-  static constexpr int kKineticFrictionParameter = 1;
-  static constexpr int kStaticFrictionParameter = 2;
+  static constexpr int kKineticLevelParameter = 1;
+  static constexpr int kStaticLevelParameter = 2;
   template <typename T>
   using StateT = Eigen::Matrix<T, 2, 1>;
   template <typename T>

@@ -34,13 +34,16 @@ BasicStability<kStateSize> StabilityFromMonodromy(const Eigen::Matrix<double, kS
 }
 
 // The paper's model, and one mass (the tests' second model; the one-mass models to come).
-template BasicStability<4> StabilityFromMonodromy<4>(const Eigen::Matrix4d&, const Eigen::Matrix4d&, bool, bool);
-template BasicStability<2> StabilityFromMonodromy<2>(const Eigen::Matrix2d&, const Eigen::Matrix2d&, bool, bool);
+template <int kStateSize>
+using MonodromyMatrix = typename BasicStability<kStateSize>::Matrix;
+template BasicStability<Pascal2014::kStateSize> StabilityFromMonodromy<Pascal2014::kStateSize>(
+    const MonodromyMatrix<Pascal2014::kStateSize>&, const MonodromyMatrix<Pascal2014::kStateSize>&, bool, bool);
+template BasicStability<2> StabilityFromMonodromy<2>(const MonodromyMatrix<2>&, const MonodromyMatrix<2>&, bool, bool);
 
 Stability StabilityOf(const Orbit& orbit) {
   const MonodromyT<double> m = Monodromy<double>(orbit.signature, orbit.InitialState(), orbit.phi,
                                                  orbit.durations, orbit.parameters);
-  return StabilityFromMonodromy<4>(m.period, m.listed, orbit.signature.antisymmetric(), m.one_sided);
+  return StabilityFromMonodromy<Pascal2014::kStateSize>(m.period, m.listed, orbit.signature.antisymmetric(), m.one_sided);
 }
 
 }  // namespace stickslip

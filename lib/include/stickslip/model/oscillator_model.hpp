@@ -71,8 +71,8 @@ concept OscillatorModel =
       { M::kStateSize } -> std::convertible_to<int>;
       { M::kParameterCount } -> std::convertible_to<int>;
       { M::kForcingFrequencyParameter } -> std::convertible_to<int>;
-      { M::kKineticFrictionParameter } -> std::convertible_to<int>;
-      { M::kStaticFrictionParameter } -> std::convertible_to<int>;
+      { M::kKineticLevelParameter } -> std::convertible_to<int>;
+      { M::kStaticLevelParameter } -> std::convertible_to<int>;
       requires std::same_as<typename M::State, typename M::template StateT<double>>;
       requires std::same_as<typename M::Parameters, typename M::template ParametersT<double>>;
       requires std::same_as<typename M::Motion, typename M::template MotionT<double>>;

@@ -23,8 +23,8 @@ struct Pascal2014 {
   static constexpr int kStateSize = 4;
   static constexpr int kParameterCount = stickslip::kParameterCount;
   static constexpr int kForcingFrequencyParameter = static_cast<int>(ParameterId::kOmega);
-  static constexpr int kKineticFrictionParameter = static_cast<int>(ParameterId::kSlidingFriction);
-  static constexpr int kStaticFrictionParameter = static_cast<int>(ParameterId::kStaticFriction);
+  static constexpr int kKineticLevelParameter = static_cast<int>(ParameterId::kSlidingFriction);
+  static constexpr int kStaticLevelParameter = static_cast<int>(ParameterId::kStaticFriction);
   template <typename T>
   using StateT = stickslip::StateT<T>;
   template <typename T>

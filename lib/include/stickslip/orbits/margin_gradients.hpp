@@ -211,7 +211,7 @@ std::vector<MarginGradient> MarginGradients(const Model& model, const BasicOrbit
       });
   for (const Margin& m : margins) {
     if (m.kind == MarginKind::kFrictionLevel) {
-      gradients.push_back(b.AtBoundary(m, Model::ParameterAt(p, Model::kKineticFrictionParameter), b.Constant(0.0)));
+      gradients.push_back(b.AtBoundary(m, Model::ParameterAt(p, Model::kKineticLevelParameter), b.Constant(0.0)));
     }
   }
   return gradients;

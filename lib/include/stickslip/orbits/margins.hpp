@@ -155,7 +155,7 @@ std::vector<Margin> AdmissibilityMargins(const Model& model, const BasicOrbit<Mo
   WalkSegments(model, orbit, Extent::kListed, PhaseRule::kFromOrigin,
                [&](const SegmentVisit<double, Model>& s) { AddSegmentMargins(model, s, orbit.parameters, margins); });
   margins.push_back({"sliding-friction", MarginKind::kFrictionLevel, -1,
-                     Model::ParameterAt(orbit.parameters, Model::kKineticFrictionParameter), 0.0});
+                     Model::ParameterAt(orbit.parameters, Model::kKineticLevelParameter), 0.0});
   return margins;
 }
 

@@ -33,8 +33,8 @@ class BasicOrbitSystem : public NonlinearSystem {
         tie_static_friction_(tie_static_friction) {
     const int full = equations_.FullCount();
     const std::vector<ParameterDescription>& names = equations_.model().Description().parameters;
-    const std::string& kinetic = names[Model::kKineticFrictionParameter].name;
-    const std::string& static_level = names[Model::kStaticFrictionParameter].name;
+    const std::string& kinetic = names[Model::kKineticLevelParameter].name;
+    const std::string& static_level = names[Model::kStaticLevelParameter].name;
     for (int index : free_) {
       if (index < 0 || index >= full) {
         throw InvalidInput("free", index, fmt::format("a variable index, 0 <= index < {}", full));
@@ -104,8 +104,8 @@ class BasicOrbitSystem : public NonlinearSystem {
   const Equations& equations() const { return equations_; }
 
  private:
-  int KineticLevel() const { return equations_.Parameter(Model::kKineticFrictionParameter); }
-  int StaticLevel() const { return equations_.Parameter(Model::kStaticFrictionParameter); }
+  int KineticLevel() const { return equations_.Parameter(Model::kKineticLevelParameter); }
+  int StaticLevel() const { return equations_.Parameter(Model::kStaticLevelParameter); }
 
   Equations equations_;
   Eigen::VectorXd reference_;
