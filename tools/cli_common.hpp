@@ -26,9 +26,8 @@ inline constexpr int kExitNotAMotion = 4;
 // find: the motion is not periodic within k <= --max-multiple forcing periods, or its period has
 // no stop or stick exit (a permanent stick), so there is no orbit type to solve.
 inline constexpr int kExitNotPeriodic = 5;
-// trace: a direction ended at a change of type where no switch was confirmed (or the margin has no
-// adjacent type); the trace is written all the same, the reason reported.
-inline constexpr int kExitTraceUnswitched = 6;
+// (6 was a trace's end at a change of type that switched nowhere, until issue 25: a trace that ran to
+// its ends exits 0 whatever they were; they are written and printed.)
 
 // solve's exit code for a converged orbit with this smallest margin and verification:
 // kExitNotAMotion, with the reason in *reason, if the margin is not positive or the verification

@@ -1,6 +1,6 @@
 // stickslip plot: the bifurcation diagram of one stored run, or the frequency response of one stored
 // trace, as a PNG, drawn by bifurcation_diagram.py or trace_figure.py (beside the program, or in
-// the source tree's tools/) through /usr/bin/python3 and Debian's matplotlib.
+// <prefix>/share/stickslip/ when installed) through /usr/bin/python3 and Debian's matplotlib.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -37,13 +37,16 @@ struct PlotArgs {
   bool output_given = false;  // --output "" is refused, not taken as the default
 };
 
-// The drawing script `name`: beside the program (as the build and an installation put it), else in
-// the source tree it was built from.
+// The drawing script `name`, found from the program's own place (no path is compiled in): beside
+// it, where the build tree copies the scripts (build/release/tools/), else in <prefix>/share/stickslip/
+// for the program in <prefix>/bin/, where `cmake --install` puts them.
 fs::path DrawingScript(const char* name) {
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  if (!error && fs::is_regular_file(program.parent_path() / name)) return program.parent_path() / name;
-  return fs::path(STICKSLIP_SOURCE_DIR) / "tools" / name;
+  if (error) return name;  // reported as a script that cannot be run
+  const fs::path beside = program.parent_path() / name;
+  if (fs::is_regular_file(beside)) return beside;
+  return program.parent_path().parent_path() / "share" / "stickslip" / name;
 }
 
 // The scripts' exit code when matplotlib cannot be imported.

@@ -111,8 +111,9 @@ int RunRuns(const RunArgs& args) {
   int code = kExitOk;
   for (const RunFile& run : runs) {
     if (run.trace) {
-      std::optional<TraceRun> trace = ExecuteTrace(run, args.results);
-      const int traced = trace ? WriteAndReportTrace(run, *trace, args.results) : kExitNoConvergence;
+      int traced = kExitOk;
+      std::optional<TraceRun> trace = ExecuteTrace(run, args.results, &traced);
+      if (trace) traced = WriteAndReportTrace(run, *trace, args.results);
       if (code == kExitOk) code = traced;
       continue;
     }
@@ -192,8 +193,9 @@ int RunCheck(const CheckArgs& args) {
   int code = kExitOk;
   for (const Stored& c : checks) {
     if (c.trace) {
-      std::optional<TraceRun> fresh = ExecuteTrace(c.run, args.results);
-      if (!fresh) return kExitNoConvergence;
+      int failed = kExitOk;
+      std::optional<TraceRun> fresh = ExecuteTrace(c.run, args.results, &failed);
+      if (!fresh) return failed;
       if (!CheckTrace(c.run, *c.trace, *fresh)) code = kExitFailure;
       continue;
     }
@@ -245,8 +247,8 @@ Command AddRunCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "run", "Run continuation run files (TOML, see continuation-scripts/) and write results/<output>/: "
              "branch.csv, special-points.csv, summary.json; or, for a run file with a [trace] table, the trace "
-             "(branch-<k>/, trace.csv, trace.json; exit 6 when a direction ends at a change of type that switched "
-             "nowhere). The main job.");
+             "(branch-<k>/, trace.csv, trace.json; exit codes as trace's: 0 whatever the ends, 4 when the start is not "
+             "a motion and trace.allow_inadmissible is not set). The main job.");
   cmd->add_option("files", args->files, "run files")->required();
   cmd->add_option("--results", args->results, "results directory")->capture_default_str();
   return {cmd, [args] { return RunRuns(*args); }};

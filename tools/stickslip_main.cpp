@@ -11,17 +11,19 @@
 #include "map_sweep_command.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace stickslip::cli;
   CLI::App app(
       "stickslip: periodic orbits of the two-degree-of-freedom dry-friction oscillator of "
       "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276.\n"
-      "Exit codes: 0 success, 1 failure, 2 bad input (nothing written), 3 no convergence, 4 solve, find: the "
-      "solution is not a motion of the system (a margin <= 0) or failed its verification, 5 find: the motion "
-      "is not periodic within k <= --max-multiple forcing periods (or has no stop or stick exit), 6 trace: a "
-      "direction ended at a change of type that switched nowhere (the trace is written).",
+      "Exit codes: 0 success (a trace that ran to its ends, whatever they were), 1 failure, 2 bad input (nothing "
+      "written), 3 no convergence, 4 solve, find: the solution is not a motion of the system (a margin <= 0) or "
+      "failed its verification; trace: its start is not a motion (nothing written), 5 find: the motion is not "
+      "periodic within k <= --max-multiple forcing periods (or has no stop or stick exit).",
       "stickslip");
+  app.set_version_flag("--version", fmt::format("stickslip {}", stickslip::Version()), "print the version and exit");
   app.require_subcommand(1);
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app), AddMapCommand(app),
@@ -31,6 +33,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const stickslip::InvalidInput& e) {  // a number option read by ParseNumber or ParseCount
     fmt::print(stderr, "error: {}\n", stickslip::AsOption(e).what());

@@ -19,7 +19,7 @@
 
 namespace stickslip::cli {
 
-std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results) {
+std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code) {
   const OrbitContinuationSetup setup = MakeSetup(run, results);
   TraceOptions options = *run.trace;
   ProgressLineOptions line_options;
@@ -32,17 +32,14 @@ std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (result.down.links.empty() && result.up.links.empty()) {
     fmt::print(stderr, "error: {}: {}\n", run.path, result.down.message);
+    *exit_code = result.NotAMotion() ? kExitNotAMotion : kExitNoConvergence;
     return std::nullopt;
   }
   StoredTrace stored = RecordTrace(run, result);
   return TraceRun{std::move(result), std::move(stored), seconds};
 }
 
-int TraceExitCode(const TraceResult& trace) {
-  if (trace.Completed()) return kExitOk;
-  if (trace.Failed()) return kExitNoConvergence;
-  return kExitTraceUnswitched;
-}
+int TraceExitCode(const TraceResult& trace) { return trace.Failed() ? kExitNoConvergence : kExitOk; }
 
 int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::filesystem::path& results) {
   const std::vector<std::string> kept = WriteTraceFiles(results, trace.stored);
@@ -62,10 +59,8 @@ int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::fi
   const int code = TraceExitCode(trace.result);
   if (code != kExitOk) {
     for (const StoredTraceDirection& d : trace.stored.directions) {
-      if (d.end != "parameter-bound" && d.end != "family-end" && d.end != "loop" && d.end != "resonance" && d.end != "max-points" &&
-          d.end != "max-branches") {
-        fmt::print(stderr, "{}: the {} chain ended: {}: {}\n", run.output, d.direction, d.end, d.message);
-      }
+      if (d.end != "continuation-failed") continue;
+      fmt::print(stderr, "{}: the {} chain failed: {}\n", run.output, d.direction, d.message);
     }
   }
   return code;
@@ -91,12 +86,13 @@ int RunTrace(TraceArgs args) {
   run.trace = args.options;
   CheckTraceOutputDirectory(args.continuation.start.results, run.output);
   std::optional<TraceRun> trace;
+  int code = kExitOk;
   try {
-    trace = ExecuteTrace(run, args.continuation.start.results);
+    trace = ExecuteTrace(run, args.continuation.start.results, &code);
   } catch (const InvalidInput& error) {
     throw AsOption(error);
   }
-  if (!trace) return kExitNoConvergence;
+  if (!trace) return code;
   return WriteAndReportTrace(run, *trace, args.continuation.start.results);
 }
 
@@ -109,9 +105,10 @@ Command AddTraceCommand(CLI::App& app) {
       "Follow the chain of orbit branches through every change of orbit type, both ways from the start, "
       "within --range: at each change the adjacent types are tried and the one confirmed by simulation is "
       "continued. Writes results/<output>/: branch-<k>/ (an ordinary run per branch), trace.csv and trace.json. "
-      "Exit 0 when both directions end at a range bound, the family's end (u_s = 0), a loop, a resonance, --max-points or "
-      "--max-branches; 3 when a branch does not converge; 6 when a direction ends at a change of type that "
-      "switched nowhere (the trace is written, the reason on stderr).");
+      "Exit 0 when both directions ran to their ends, whatever those were (a range bound, the family's end, a loop, "
+      "a resonance, a change of type that switched nowhere, --max-points, --max-branches: written and printed); "
+      "3 when a branch does not converge; 4 when the start is not a motion of the system (a margin < 0; nothing "
+      "written; --allow-inadmissible traces it).");
   AddContinuationFlags(*cmd, &args->continuation);
   AddCountOption(*cmd, "--max-branches", &args->options.max_branches, 1, kMaxTraceBranches,
                  fmt::format("branches per direction (1 to {})", kMaxTraceBranches));
@@ -128,6 +125,9 @@ Command AddTraceCommand(CLI::App& app) {
   cmd->add_flag("--follow-past-unswitched", args->options.follow_past_unswitched,
                 "at a change of type that switches nowhere, follow the same type on past it (not a motion there, "
                 "admissible = 0) to where it is admissible again, instead of ending the direction");
+  cmd->add_flag("--allow-inadmissible", args->options.allow_inadmissible,
+                "trace from a start that is not a motion of the system (a margin < 0 there: admissible = 0) "
+                "instead of refusing it (exit 4)");
   return {cmd, [args] { return RunTrace(*args); }};
 }
 

@@ -16,16 +16,17 @@ struct TraceRun {
   double seconds = 0.0;  // wall time, reported on stdout (not in the files)
 };
 
-// The trace of `run` (run.trace set). nullopt, with the reason on stderr, when no branch started
-// (exit code 3, nothing to write).
-std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results);
+// The trace of `run` (run.trace set). nullopt, with the reason on stderr and *exit_code set, when
+// nothing was traced: kExitNotAMotion when the start is not a motion (and the trace does not allow
+// it), kExitNoConvergence when no branch started. Nothing to write then.
+std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code);
 
-// 0 when both directions ended at a bound, a loop, a resonance, max-points or max-branches; 3 when
-// a branch failed to converge; kExitTraceUnswitched when a direction ended at a change of type
-// that switched nowhere.
+// kExitOk when both directions ran to their ends, whatever those were (a bound, a loop, a
+// resonance, a change of type that switched nowhere, ...: results, written and printed);
+// kExitNoConvergence when a branch failed to converge.
 int TraceExitCode(const TraceResult& trace);
 
-// Writes the trace's files and reports it on stdout; returns TraceExitCode, with the reasons of a
+// Writes the trace's files and reports it on stdout; returns TraceExitCode, with the reason of a
 // non-zero code on stderr.
 int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::filesystem::path& results);
 

@@ -16,6 +16,7 @@
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/version.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/stored_run.hpp"
 #include "stickslip/model/modal.hpp"
@@ -559,6 +560,7 @@ void BindErrors(py::module_& m) {
 
 PYBIND11_MODULE(_stickslip, m) {
   m.doc() = "The compiled core of the stickslip package; use `import stickslip`.";
+  m.attr("__version__") = stickslip::Version();
   stickslip::python::BindErrors(m);
   stickslip::python::BindOrbits(m);
   stickslip::python::BindBranches(m);

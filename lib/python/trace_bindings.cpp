@@ -44,6 +44,7 @@ TraceOptions TraceOptionsOf(const py::dict& o) {
   options.max_amplitude = o["max_amplitude"].cast<double>();
   options.loop_tolerance = o["loop_tolerance"].cast<double>();
   options.follow_past_unswitched = KeywordTrueOrFalse(o["follow_past_unswitched"], "follow_past_unswitched");
+  options.allow_inadmissible = KeywordTrueOrFalse(o["allow_inadmissible"], "allow_inadmissible");
   options.follow_bifurcations =
       KeywordWholeNumber(o["follow_bifurcations"], "follow-bifurcations", WholeNumberRange("follow-bifurcations", 0, kMaxTraceBranches));
   try {
@@ -58,7 +59,8 @@ TraceOptions TraceOptionsOf(const py::dict& o) {
 
 // The trace of `input` with `options` (a dict of the keywords) or, for None, the run file's
 // [trace] table; the GIL is released while it runs, taken after every point to see Ctrl-C. A trace
-// whose first branch did not start raises ConvergenceError, as the command line exits 3.
+// whose first branch did not start raises ConvergenceError, as the command line exits 3; one whose
+// start is not a motion (and allow_inadmissible not set) raises ValueError, where it exits 4.
 StoredTrace Trace(RunInput input, const py::object& options) {
   if (!options.is_none()) input.run.trace = TraceOptionsOf(options.cast<py::dict>());
   if (!input.run.trace) {
@@ -78,6 +80,7 @@ StoredTrace Trace(RunInput input, const py::object& options) {
     };
     result = TraceOrbits(setup, trace);
   }
+  if (result.NotAMotion()) throw py::value_error(fmt::format("{}: {}", input.run.path, result.down.message));
   if (result.down.links.empty() && result.up.links.empty()) {
     py::dict summary;
     summary["termination"] = ToString(result.down.end);
@@ -166,6 +169,7 @@ void BindTrace(py::module_& m) {
     d["loop_tolerance"] = o.loop_tolerance;
     d["follow_past_unswitched"] = o.follow_past_unswitched;
     d["follow_bifurcations"] = o.follow_bifurcations;
+    d["allow_inadmissible"] = o.allow_inadmissible;
     return d;
   });
 }

@@ -46,11 +46,13 @@ for c in m["curves"]:
     # The special points under the labels a run restarts from (two at one point have two labels).
     stored = [(r["label"], r["type"]) for r in csv.DictReader(open(f"{d}/curve-{c['id']}/special-points.csv"))]
     assert [(p["label"], p["type"]) for p in c["special_points"]] == stored, (c["special_points"], stored)
-    # A curve that leaves the rectangle through its second parameter ends on the edge (located EP).
-    for side, bound in (("u_r_min", 0.4), ("u_r_max", 0.6)):
-        if c["message"].startswith("reached " + side):
+    # A curve that leaves the rectangle through its second parameter ends on the edge (located EP),
+    # the message naming the parameter and the edge's value ("reached u_r = 0.4").
+    for bound in (0.4, 0.6):
+        if c["message"] == f"reached u_r = {bound}":
             assert abs(float(last[c["id"]]["u_r"]) - bound) <= 1e-9, (c, last[c["id"]]["u_r"])
             assert c["special_points"][-1]["type"] == "EP", c
+    assert "lambda" not in c["message"] and "_min" not in c["message"] and "_max" not in c["message"], c
 PY
 
 # A later run restarts from a curve's labelled point (results root: the map's directory).

@@ -213,3 +213,11 @@ def test_ctrl_c_ends_a_long_continuation_between_steps():
                                  max_points=1000000)
     timer.join()
     assert time.perf_counter() - started < 30
+
+
+def test_the_end_names_the_parameter_and_its_rounded_value():
+    # Not "reached lambda_min = 0.19999999999999993": the parameter's name and the bound as given.
+    for parameter, bounds, direction, message in (("omega", (0.6, 0.62), "up", "reached omega = 0.62"),
+                                                  ("u_r", (0.2, 0.3), "down", "reached u_r = 0.2")):
+        branch = stickslip.continue_orbit(parameter, bounds, preset="paper-4.1", direction=direction)
+        assert branch.termination == "parameter-bound" and branch.message == message, branch.message

@@ -36,7 +36,7 @@ def trace41():
 
 def test_a_trace_saves_the_command_lines_files_byte_for_byte(trace41, tmp_path):
     done = cli("trace", *FLAGS, "--results", tmp_path / "cli", "--output", "t41")
-    assert done.returncode == 6, done.stderr  # the down chain ends not confirmed
+    assert done.returncode == 0, done.stderr  # the down chain ends not confirmed: an end like any other
     trace41.save(tmp_path / "py" / "t41")
     expected = tree(tmp_path / "cli" / "t41")
     assert len(expected) == 2 + 3 * 3  # trace.csv, trace.json and three branch directories
@@ -45,6 +45,8 @@ def test_a_trace_saves_the_command_lines_files_byte_for_byte(trace41, tmp_path):
 
 def test_the_trace_holds_its_branches_ends_and_special_points(trace41):
     assert trace41.ends == {"down": "not-confirmed", "up": "parameter-bound"}
+    # The end names the parameter and its value, rounded (not "lambda_max = 0.6899999999999999").
+    assert trace41.directions["up"]["message"] == "reached omega = 0.69"
     assert trace41.directions["down"]["branches"] == [1, 2] and trace41.directions["up"]["branches"] == [3]
     first, second, third = trace41.branches
     assert first.signature == "slip- / antisymmetric" and first.link["start"] == "trace-start"
@@ -130,3 +132,22 @@ def test_a_trace_takes_no_direction_and_a_branch_run_no_trace_file():
         stickslip.trace("omega", (0.3, 0.69), follow_past_unswitched=1, **KEYWORDS)
     with pytest.raises(ValueError, match=r"\[trace\] is invalid here"):
         stickslip.Continuation.from_run_file(SOURCE / "continuation-scripts" / "paper-4.1-omega-trace.toml")
+
+
+def test_a_start_that_is_not_a_motion_is_refused_unless_allowed(tmp_path):
+    # Section 5.2's printed data solve to an orbit whose stick ends early (G:3 < 0): solve returns it
+    # (admissible False, the command line's exit 4); a trace from it raises ValueError with the
+    # command line's message (exit 4 there), unless allow_inadmissible.
+    keywords = dict(preset="paper-5.2", ds=0.005, ds_max=0.05, max_branches=1, max_points=30)
+    assert not stickslip.solve(preset="paper-5.2").admissible
+    done = cli("trace", "--preset", "paper-5.2", "--parameter", "omega", "--range", "0.3,0.68", "--ds", "0.005",
+               "--ds-max", "0.05", "--max-branches", "1", "--max-points", "30", "--results", tmp_path, "--output", "t")
+    assert done.returncode == 4 and not (tmp_path / "t").exists(), done.stderr
+    message = "the start is not a motion of the system: margin G:3 = -0.0072388 < 0 at omega = 0.66"
+    assert message in done.stderr
+    with pytest.raises(ValueError, match=message):
+        stickslip.trace("omega", (0.3, 0.68), **keywords)
+    traced = stickslip.trace("omega", (0.3, 0.68), allow_inadmissible=True, **keywords)
+    assert len(traced.branches) == 2
+    with pytest.raises(ValueError, match=r"^allow_inadmissible = 1 is invalid: valid range True or False$"):
+        stickslip.trace("omega", (0.3, 0.68), allow_inadmissible=1, **keywords)

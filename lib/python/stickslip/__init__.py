@@ -30,6 +30,8 @@ import numpy as _np
 
 from . import _stickslip as _core
 from ._stickslip import ConvergenceError, MapSweepResult, Orbit, Parameters, Signature, SweepResult
+# The project's VERSION (CMakeLists.txt), as `stickslip --version` and the result files give it.
+from ._stickslip import __version__
 from ._branch import Branch, Continuation
 from ._trace import Trace
 from ._inputs import _one_off_run, _start
@@ -229,7 +231,8 @@ _NOT_TRACE_KEYWORDS = ("direction", "continue_past_type_changes", "switch_branch
 def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
           max_amplitude=_TRACE_DEFAULTS["max_amplitude"], loop_tolerance=_TRACE_DEFAULTS["loop_tolerance"],
           follow_past_unswitched=_TRACE_DEFAULTS["follow_past_unswitched"],
-          follow_bifurcations=_TRACE_DEFAULTS["follow_bifurcations"], **keywords):
+          follow_bifurcations=_TRACE_DEFAULTS["follow_bifurcations"],
+          allow_inadmissible=_TRACE_DEFAULTS["allow_inadmissible"], **keywords):
     """Follow the chain of orbit branches through every change of orbit type, both ways from the
     start within `range`, as `stickslip trace`: at each change the adjacent types are tried and the
     one confirmed by simulation is continued.
@@ -244,18 +247,20 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
                     it (not a motion there, admissible 0) instead of ending the direction
     follow_bifurcations  how many of the branches met at BP, PD and SB to follow, in the order met,
                     each as one branch (0 to 1e4; the others are recorded only)
+    allow_inadmissible  trace from a start that is not a motion of the system (a margin < 0 there:
+                    admissible 0) instead of refusing it (ValueError, as the command line exits 4)
     The other keywords are continue_orbit's but direction, continue_past_type_changes and
     switch_branch (the range bounds the whole trace; ds, max_points, ... apply to every branch).
-    Returns a Trace whether or not a direction ended at a change of type that switched nowhere (the
-    command line's exit 6: see trace.ends); raises ConvergenceError when no branch started,
-    ValueError for bad input (the command line's message).
+    Returns a Trace whatever its directions' ends (see trace.ends); raises ConvergenceError when no
+    branch started, ValueError for bad input (the command line's message) and for a start that is
+    not a motion without allow_inadmissible.
     """
     for key in _NOT_TRACE_KEYWORDS:
         if key in keywords:
             raise TypeError(f"trace() got an unexpected keyword argument '{key}' (a trace goes both ways)")
     options = {"max_branches": max_branches, "max_amplitude": float(max_amplitude),
                "loop_tolerance": float(loop_tolerance), "follow_past_unswitched": follow_past_unswitched,
-               "follow_bifurcations": follow_bifurcations}
+               "follow_bifurcations": follow_bifurcations, "allow_inadmissible": allow_inadmissible}
     return Trace(_core._trace(_one_off_run(parameter, range, **keywords), options))
 
 

@@ -87,6 +87,7 @@ OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& set
   problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, std::move(unwatched), std::move(watched));
   problem.options = setup.options;
   problem.options.parameter_index = static_cast<int>(free.size());
+  problem.options.parameter_name = setup.parameter;
   KeepInPhysicalRanges(setup, free, unknowns.back(), &problem.options);
   if (shooting == Shooting::kMultiple && problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
     problem.options.corrector.linear_solver = setup.sparse_solver;

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "stickslip/branches/bifurcation_branches.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
 
 namespace stickslip {
 
@@ -109,6 +112,12 @@ class Tracer {
   }
 
   TraceResult Run() {
+    if (!options_.allow_inadmissible) {
+      if (std::optional<std::string> why = StartIsNoMotion()) {
+        for (int d = 0; d < 2; ++d) End(d, TraceEnd::kNotAMotion, *why);
+        return std::move(result_);
+      }
+    }
     // Each round adds a branch to every running direction, and a direction holds at most
     // max_branches: at most max_branches rounds.
     for (int round = 0; round < options_.max_branches && (running_[0] || running_[1]); ++round) {
@@ -121,6 +130,25 @@ class Tracer {
 
  private:
   TraceDirection& Chain(int d) { return d == 0 ? result_.down : result_.up; }
+
+  // Why the start, solved at its parameter as `stickslip solve` solves it, is not a motion of the
+  // system (a margin below -start_boundary_tolerance: a start on a type boundary, a restart from a
+  // change of type, is one); nullopt when it is, or when it does not converge (the trace's first
+  // branch then reports that).
+  std::optional<std::string> StartIsNoMotion() const {
+    OrbitSolverOptions solver;
+    solver.shooting = start_.shooting;
+    solver.sparse_solver = start_.sparse_solver;
+    const OrbitSolution solved = SolveOrbit(start_.start, FreeIndices(start_.start.signature, start_.unknowns),
+                                            start_.unknowns.tie_static_friction, solver);
+    if (!solved.summary.Converged()) return std::nullopt;
+    const Margin smallest = SmallestMargin(AdmissibilityMargins(solved.orbit));
+    if (!(smallest.value < -start_.options.start_boundary_tolerance)) return std::nullopt;
+    return fmt::format("the start is not a motion of the system: margin {} = {:.6g} < 0 at {} = {:.10g} ('{}'); "
+                       "allow_inadmissible traces it all the same",
+                       smallest.Name(), smallest.value, start_.parameter, Lambda(solved.orbit, start_.parameter),
+                       solved.orbit.signature.ToString());
+  }
 
   void End(int d, TraceEnd end, std::string message) {
     running_[d] = false;
@@ -365,9 +393,10 @@ const char* ToString(TraceEnd end) {
     case TraceEnd::kFamilyEnd: return "family-end";
     case TraceEnd::kContinuationFailed: return "continuation-failed";
     case TraceEnd::kMaxPoints: return "max-points";
-    case TraceEnd::kMaxBranches: break;
+    case TraceEnd::kMaxBranches: return "max-branches";
+    case TraceEnd::kNotAMotion: break;
   }
-  return "max-branches";
+  return "not-a-motion";
 }
 
 const char* ToString(LinkStart start) {
@@ -392,6 +421,8 @@ bool TraceResult::Completed() const {
   };
   return ok(down.end) && ok(up.end);
 }
+
+bool TraceResult::NotAMotion() const { return down.end == TraceEnd::kNotAMotion; }
 
 bool TraceResult::Failed() const {
   return down.end == TraceEnd::kContinuationFailed || up.end == TraceEnd::kContinuationFailed;

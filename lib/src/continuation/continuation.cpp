@@ -210,16 +210,17 @@ bool Continuation::PredictAndCorrect() {
   while (true) {
     if (ds < o.step.ds_min) {
       return End(BranchEnd::kStepTooSmall,
-                 fmt::format("the corrector failed down to ds = {:.3e} < ds_min = {:.3e} at {} = {:.12g}; last "
+                 fmt::format("the corrector failed down to ds = {:.3e} < ds_min = {:.3e} at {} = {:.10g}; last "
                              "failure: {}",
-                             ds, o.step.ds_min, "lambda", st.Lambda(st.last.u), st.corrector.last_failure()));
+                             ds, o.step.ds_min, o.parameter_name, st.Lambda(st.last.u), st.corrector.last_failure()));
     }
     const double rate = st.last.tangent(o.parameter_index);
     const double bound = rate > 0.0 ? o.lambda_max : o.lambda_min;
     const double to_bound = rate != 0.0 ? (bound - st.Lambda(st.last.u)) / rate : ds;
     // Standing on the bound and heading out of the range (a start on a range end): done.
     if (rate != 0.0 && to_bound <= 0.0) {
-      return End(BranchEnd::kParameterBound, fmt::format("at the bound lambda = {}", st.Lambda(st.last.u)));
+      return End(BranchEnd::kParameterBound,
+                 fmt::format("at the bound {} = {:.10g}", o.parameter_name, st.Lambda(st.last.u)));
     }
     // Only a finite bound can be reached (and tolerance times an infinite bound is no test).
     const bool clipped = rate != 0.0 && std::isfinite(bound) && to_bound <= ds;
@@ -256,8 +257,8 @@ bool Continuation::HeadsTheAskedWay() {
   if (!PredictAndCorrect()) return false;
   if (heads_right()) return true;
   return End(BranchEnd::kFoldAtStart,
-             fmt::format("the branch folds at the start, lambda = {}: on both sides it runs towards {} lambda",
-                         st.Lambda(st.last.u), o.direction > 0 ? "decreasing" : "increasing"));
+             fmt::format("the branch folds at the start, {0} = {1:.10g}: on both sides it runs towards {2} {0}",
+                         o.parameter_name, st.Lambda(st.last.u), o.direction > 0 ? "decreasing" : "increasing"));
 }
 
 // A start may lie on a terminal function's zero (on a type boundary: an orbit with a segment of
@@ -333,7 +334,8 @@ bool Continuation::RecordEvents() {
       MarkLastPoint(&branch_, e.type, e.name, l.value, l.located, l.bracket);
       if (ending) continue;
       if (e.bound) {
-        ending.emplace(BranchEnd::kParameterBound, fmt::format("reached {} = {}", e.name, l.sample.u(e.bound_index)));
+        ending.emplace(BranchEnd::kParameterBound,
+                       fmt::format("reached {} = {:.10g}", e.bound_name, l.sample.u(e.bound_index)));
       } else if (e.terminal && l.value_before > 0.0) {
         // A terminal function ends the branch only when it leaves its positive side.
         ending.emplace(BranchEnd::kTerminalEvent,
@@ -352,11 +354,12 @@ bool Continuation::Accept() {
   Report();
   if (st.closes_loop) {
     return End(BranchEnd::kClosedLoop,
-               fmt::format("the branch came back to its start, lambda = {}, after {} points: a closed branch",
-                           st.Lambda(st.next.u), branch_.points.size() - 1));
+               fmt::format("the branch came back to its start, {} = {:.10g}, after {} points: a closed branch",
+                           st.options.parameter_name, st.Lambda(st.next.u), branch_.points.size() - 1));
   }
   if (st.on_bound) {
-    return End(BranchEnd::kParameterBound, fmt::format("reached the bound lambda = {}", st.Lambda(st.next.u)));
+    return End(BranchEnd::kParameterBound,
+               fmt::format("reached {} = {:.10g}", st.options.parameter_name, st.Lambda(st.next.u)));
   }
   st.ds = st.step_size->OnAccepted(st.next_ds, st.next.iterations);
   st.last = std::move(st.next);

@@ -31,19 +31,19 @@ std::vector<Event> MakeEvents(const ContinuationOptions& o, const std::vector<Te
   }
   events.push_back({.type = "EP", .name = "lambda_max",
                     .g = [&o, lambda](const Sample& s) { return o.lambda_max - s.u(lambda); }, .bound = true,
-                    .bound_index = lambda, .priority = 4});
+                    .bound_index = lambda, .bound_name = o.parameter_name, .priority = 4});
   events.push_back({.type = "EP", .name = "lambda_min",
                     .g = [&o, lambda](const Sample& s) { return s.u(lambda) - o.lambda_min; }, .bound = true,
-                    .bound_index = lambda, .priority = 4});
+                    .bound_index = lambda, .bound_name = o.parameter_name, .priority = 4});
   for (const UnknownBound& b : o.unknown_bounds) {
     const int k = b.index;
     if (std::isfinite(b.max)) {
       events.push_back({.type = "EP", .name = b.name + "_max", .g = [k, max = b.max](const Sample& s) { return max - s.u(k); },
-                        .bound = true, .bound_index = k, .priority = 4});
+                        .bound = true, .bound_index = k, .bound_name = b.name, .priority = 4});
     }
     if (std::isfinite(b.min)) {
       events.push_back({.type = "EP", .name = b.name + "_min", .g = [k, min = b.min](const Sample& s) { return s.u(k) - min; },
-                        .bound = true, .bound_index = k, .priority = 4});
+                        .bound = true, .bound_index = k, .bound_name = b.name, .priority = 4});
     }
   }
   return events;

@@ -18,6 +18,7 @@ struct Event {
   bool terminal = false;   // ends the branch when it leaves its positive side
   bool bound = false;      // a parameter bound, or a bound on another unknown: ends the branch
   int bound_index = 0;     // the bounded unknown (lambda's for the parameter bounds)
+  std::string bound_name = {};  // its name in the end message ("reached omega = 0.2")
   double noise = 0.0;      // a sign change between values both below this is noise
   int priority = 0;        // order of events located at the same point
   bool may_have_poles = false;  // a sign change may be a pole (TestFunctionInfo)

@@ -417,6 +417,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
     t.Number("max_amplitude", &options.max_amplitude);
     t.Number("loop_tolerance", &options.loop_tolerance);
     t.Boolean("follow_past_unswitched", &options.follow_past_unswitched);
+    t.Boolean("allow_inadmissible", &options.allow_inadmissible);
     try {
       options.ValidateOwnFields();
     } catch (const InvalidInput& e) {

@@ -8,10 +8,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
-
-#ifndef STICKSLIP_VERSION
-#define STICKSLIP_VERSION "unknown"
-#endif
+#include "stickslip/version.hpp"
 
 namespace stickslip {
 
@@ -87,7 +84,7 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
   };
 
   StoredRun stored;
-  stored.summary = {run.path, STICKSLIP_VERSION, run.output, b.orbits.front().signature.ToString(), run.parameter,
+  stored.summary = {run.path, Version(), run.output, b.orbits.front().signature.ToString(), run.parameter,
                     ToString(b.shooting), ToString(b.branch.end), b.branch.end_message};
   const std::vector<std::string> labels = PointLabels(b.branch);
   for (std::size_t i = 0; i < b.branch.points.size(); ++i) stored.branch.push_back(record(static_cast<int>(i), labels[i]));

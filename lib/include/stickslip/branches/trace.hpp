@@ -20,6 +20,9 @@
 //   continuation-failed  a branch's start did not converge, or its step fell below ds_min
 //   max-points           a branch reached setup.options.max_points
 //   max-branches         the direction holds max_branches branches
+//   not-a-motion         (both directions, no branch) the start, solved at its parameter, is not a
+//                        motion of the system (a margin below -setup.options.start_boundary_tolerance):
+//                        refused as `stickslip solve` refuses it, unless allow_inadmissible
 // With follow_past_unswitched, a change of type with no confirmed switch does not end the direction:
 // the same type is followed on past it (its points are not a motion: admissible = 0), up to the next
 // located sign change of a margin, where the next branch starts: a regular one where the orbit is
@@ -52,6 +55,10 @@ struct TraceOptions {
   // Follow the same type on past a change of type that switches nowhere (see above), instead of
   // ending the direction there.
   bool follow_past_unswitched = false;
+  // Trace from a start that is not a motion of the system (a margin < 0 there: admissible = 0),
+  // instead of refusing it (TraceEnd::kNotAMotion). A start on a type boundary (a margin zero to
+  // setup.options.start_boundary_tolerance, a restart from a change of type) is no refusal.
+  bool allow_inadmissible = false;
   // How many of the branches met at BP, PD and SB are followed, in the order met (0 to
   // kMaxTraceBranches): each continued as one branch from its start, ending as a branch does (no
   // switching on it); the others are recorded only.
@@ -83,6 +90,7 @@ enum class TraceEnd {
   kContinuationFailed,
   kMaxPoints,
   kMaxBranches,
+  kNotAMotion,  // the start is not a motion (TraceOptions::allow_inadmissible); nothing was traced
 };
 const char* ToString(TraceEnd end);
 
@@ -138,6 +146,8 @@ struct TraceResult {
   bool Completed() const;
   // Some branch failed to converge (continuation-failed).
   bool Failed() const;
+  // The start is not a motion and the trace was refused (TraceEnd::kNotAMotion): no branches.
+  bool NotAMotion() const;
 };
 
 // The trace from `start` (its orbit, unknowns, parameter and shooting, and the options of every

@@ -42,7 +42,8 @@ struct UserValue {
 // EP: a bound on an unknown other than lambda (a curve in two parameters ends where its released
 // second parameter leaves a rectangle). Each finite side is a terminal test function, located on
 // the branch as the parameter bounds are; the branch ends there (BranchEnd::kParameterBound) with
-// the message "reached <name>_max = <value>". A start already outside the bound is not stopped by it.
+// the message "reached <name> = <value>" (the value to 10 significant digits). A start already
+// outside the bound is not stopped by it.
 struct UnknownBound {
   int index = 0;  // which unknown (not parameter_index: lambda_min and lambda_max bound that)
   double min = -std::numeric_limits<double>::infinity();
@@ -92,6 +93,8 @@ struct ClosedLoopOptions {
 struct ContinuationOptions {
   int parameter_index = -1;  // the unknown that is lambda; required
   int direction = 1;         // +1: start towards increasing lambda, -1: decreasing
+  // lambda's name in the end messages ("reached omega = 0.2"), e.g. the continued parameter's.
+  std::string parameter_name = "lambda";
   double lambda_min = -std::numeric_limits<double>::infinity();  // the branch ends at these
   double lambda_max = std::numeric_limits<double>::infinity();   // bounds (located, EP)
   int max_points = 2000;     // accepted points, the start included

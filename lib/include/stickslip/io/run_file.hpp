@@ -27,6 +27,7 @@
 //   max_amplitude = 1e3                # continue_past_type_changes is refused. Keys left out
 //   loop_tolerance = 1e-7              # take TraceOptions' defaults.
 //   follow_past_unswitched = false
+//   allow_inadmissible = false         # trace from a start that is not a motion
 #pragma once
 
 #include <filesystem>
