@@ -33,11 +33,12 @@ from ._stickslip import ConvergenceError, MapSweepResult, Orbit, Parameters, Sig
 from ._branch import Branch, Continuation
 from ._trace import Trace
 from ._inputs import _one_off_run, _start
+from . import plotting
 
 __all__ = [
     "Branch", "Continuation", "ConvergenceError", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
     "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
-    "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
+    "plot", "plotting", "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
 
 
@@ -67,6 +68,43 @@ def _parameters_of_preset(name):
 
 
 Parameters.preset = staticmethod(_parameters_of_preset)
+
+
+def _plotting_result(result, name):
+    if isinstance(result, (Branch, Trace)):
+        return result._plotting_result()
+    if isinstance(result, (SweepResult, MapSweepResult)):
+        return plotting.csv_result(name, result.csv())
+    return result  # a path, or a plotting result already
+
+
+def plot(*results, output=None, dpi=plotting.DEFAULT_DPI, **options):
+    """Several results on one figure, as `stickslip plot A B ...` overlays them: Branch, Trace,
+    SweepResult, MapSweepResult, or paths of stored results (a run's, trace's or orbit-type map's
+    directory, a sweep's or map-sweep's CSV). Keywords: Branch.plot's options; with output=
+    "figure.png" (or .pdf, .svg) the figure is also written, at `dpi` for a PNG. Returns the
+    matplotlib Figure; bad options raise ValueError naming the option, its value and the valid
+    range."""
+    named = [_plotting_result(r, f"sweep {k + 1}" if isinstance(r, SweepResult) else f"map {k + 1}")
+             for k, r in enumerate(results)]
+    opts = plotting.Options(dpi=dpi, output=None if output is None else str(output), **options)
+    fig = plotting.figure(named, opts)
+    if output is not None:
+        import matplotlib.pyplot as plt
+        fig.savefig(str(output), dpi=dpi)
+        plt.close(fig)
+    return fig
+
+
+def _result_plot(self, **options):
+    """The result as a matplotlib Figure, as `stickslip plot` draws its file (a sweep: its settled
+    motions' amplitude:x2 by period, or any column as y=; a map: the coexisting attractors and the
+    largest period). Keywords: Branch.plot's."""
+    return plotting.figure([_plotting_result(self, "sweep" if isinstance(self, SweepResult) else "map")], **options)
+
+
+SweepResult.plot = _result_plot
+MapSweepResult.plot = _result_plot
 
 
 def natural_frequencies(parameters):
