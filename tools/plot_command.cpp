@@ -149,6 +149,21 @@ int RunPlot(const PlotArgs& args) {
 
 }  // namespace
 
+namespace {
+
+// How --help shows each drawing option's value.
+std::string TypeName(const std::string& option) {
+  if (option == "--x" || option == "--y") return "COLUMN";
+  if (option == "--xscale" || option == "--yscale") return "linear|log";
+  if (option == "--xlim" || option == "--ylim") return "LOW,HIGH";
+  if (option == "--size") return "W,H";
+  if (option == "--dpi") return "DPI";
+  if (option == "--legend") return "right|inside|none";
+  return "TEXT";
+}
+
+}  // namespace
+
 Command AddPlotCommand(CLI::App& app) {
   auto args = std::make_shared<PlotArgs>();
   CLI::App* cmd = app.add_subcommand(
@@ -192,8 +207,7 @@ Command AddPlotCommand(CLI::App& app) {
     const std::string option = name;
     cmd->add_option_function<std::string>(
            option, [args, option](const std::string& value) { args->drawing.emplace_back(option, value); }, help)
-        ->type_name(option == "--title" || option == "--legend" || option == "--x" || option == "--y" ? "TEXT"
-                                                                                                       : "VALUE");
+        ->type_name(TypeName(option));
   }
   cmd->add_flag("--no-natural-frequencies", args->no_natural_frequencies,
                 "do not mark omega1 and omega2 (marked by default where an axis is omega)");

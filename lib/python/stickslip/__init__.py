@@ -90,9 +90,7 @@ def plot(*results, output=None, dpi=plotting.DEFAULT_DPI, **options):
     opts = plotting.Options(dpi=dpi, output=None if output is None else str(output), **options)
     fig = plotting.figure(named, opts)
     if output is not None:
-        import matplotlib.pyplot as plt
-        fig.savefig(str(output), dpi=dpi)
-        plt.close(fig)
+        plotting.save(fig, str(output), dpi)  # whole or not at all, the format of the extension
     return fig
 
 
