@@ -394,13 +394,24 @@ def place_labels(anchors, sizes, obstacles=(), bounds=None, rings=8, hard=()):
     curves), and lies inside `bounds` (x0, y0, x1, y1) when given; where every candidate collides,
     the one with the least overlap, labels and `hard` obstacles (markers) weighing most. Returns
     (box, ring) per label, in display units."""
+    import numpy as np
+
+    def total_overlap(box, boxes):
+        if len(boxes) == 0:
+            return 0.0
+        width = np.minimum(box[2], boxes[:, 2]) - np.maximum(box[0], boxes[:, 0])
+        height = np.minimum(box[3], boxes[:, 3]) - np.maximum(box[1], boxes[:, 1])
+        return float(np.sum(np.clip(width, 0.0, None) * np.clip(height, 0.0, None)))
+
+    soft = np.array(list(obstacles), dtype=float).reshape(-1, 4)
+    firm = np.array(list(hard), dtype=float).reshape(-1, 4)
     placed = []
     for anchor, size in zip(anchors, sizes):
         best, best_cost = None, None
+        others = np.array([other for other, _ in placed], dtype=float).reshape(-1, 4)
         for box, ring in candidate_boxes(anchor, size, rings):
             inside = is_inside(box, bounds)
-            cost = 1e6 * sum(overlap_area(box, other) for other, _ in placed) + 1e6 * sum(
-                overlap_area(box, o) for o in hard) + sum(overlap_area(box, o) for o in obstacles) + (
+            cost = 1e6 * total_overlap(box, others) + 1e6 * total_overlap(box, firm) + total_overlap(box, soft) + (
                 0.0 if inside else 1e12)
             if cost == 0.0:
                 best = (box, ring)
