@@ -131,6 +131,7 @@ int RunPlot(const PlotArgs& args) {
     argv.push_back(value);
   }
   if (args.no_natural_frequencies) argv.push_back("--no-natural-frequencies");
+  argv.push_back("--");  // the inputs, whatever their names begin with
   for (const fs::path& input : inputs) argv.push_back(input.string());
   std::string why;
   const int status = RunProgram(argv, &why);

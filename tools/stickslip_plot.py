@@ -1348,6 +1348,9 @@ def main(argv):
                     raise BadInput(arg, "''", "a value after the option")
                 values[arg[2:]] = argv[k + 1]
                 k += 2
+            elif arg == "--":  # every argument after it is an input (a file whose name begins with -)
+                inputs += argv[k + 1:]
+                break
             elif arg == "--no-natural-frequencies":
                 naturals = False
                 k += 1
