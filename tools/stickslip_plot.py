@@ -963,8 +963,13 @@ def _ends_in_words(result):
     if result.kind in ("branch", "curve"):
         value = _value(result.rows[-1][result.parameter])
         end = result.summary["termination"]
-        if end == "stopped" and result.summary.get("message", "").startswith("resonance"):
+        message = result.summary.get("message", "")
+        if end == "stopped" and message.startswith("resonance"):
             return f"ends at a resonance near {p} = {value}"
+        if end == "terminal-event":
+            import re
+            code = re.search(r"\((\w+)\)", message)
+            return f"ends where the orbit type changes{f' ({code.group(1)})' if code else ''} at {p} = {value}"
         return "ends: " + BRANCH_ENDS.get(end, end.replace("-", " ") + " at {p} = {v}").format(p=p, v=value)
     return ""
 

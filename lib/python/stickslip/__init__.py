@@ -15,6 +15,10 @@ The same computations as the command line, with the same keys and the same check
     trace = stickslip.trace("omega", (0.3, 0.69), preset="paper-4.1")  # -> Trace: Branches, ends
     other = branch.switch("PD2", side=1)                   # the branch leaving a PD, SB or BP label
     m = stickslip.map_sweep(preset="paper-6", first_range=(0.55, 0.6), second_range=(1.2, 1.5))
+    fig = branch.plot(y="peak-to-peak:x2", yscale="log")  # matplotlib Figures, as `stickslip plot`
+    fig = trace.plot(); fig = sweep.plot(); fig = m.plot()
+    stickslip.plot(branch, trace, sweep, output="overlay.pdf")   # several results; paths too
+    trace.to_pandas()                                      # every point, measure columns included
 
 Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
 ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
