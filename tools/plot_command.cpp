@@ -1,6 +1,8 @@
-// stickslip plot: the bifurcation diagram of one stored run, or the frequency response of one stored
-// trace, as a PNG, drawn by bifurcation_diagram.py or trace_figure.py (beside the program, or in
-// <prefix>/share/stickslip/ when installed) through /usr/bin/python3 and Debian's matplotlib.
+// stickslip plot: any stored result (a branch, a curve in two parameters, a trace, a sweep, a
+// brute-force map, an orbit-type map), or several overlaid, as PNG, PDF or SVG, drawn by
+// stickslip_plot.py (beside the program, or in <prefix>/share/stickslip/ when installed) through
+// /usr/bin/python3 and Debian's matplotlib. This file checks the inputs and the output file; the
+// script checks the drawing options.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,6 +13,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -31,10 +34,14 @@ namespace {
 namespace fs = std::filesystem;
 
 struct PlotArgs {
-  std::string run;
+  std::vector<std::string> inputs;
   std::string results = "results";
-  std::string output = "";  // <run>-bifurcation.png (a trace: <run>-frequency-response.png) when not given
+  std::string output = "";  // from the first input's name when not given (DefaultOutput)
   bool output_given = false;  // --output "" is refused, not taken as the default
+  // The drawing options, forwarded to stickslip_plot.py as given (it checks them: one line naming
+  // the option, its value and the valid range, exit 2, nothing written).
+  std::vector<std::pair<std::string, std::string>> drawing;
+  bool no_natural_frequencies = false;
 };
 
 // The drawing script `name`, found from the program's own place (no path is compiled in): beside
@@ -75,33 +82,68 @@ int RunProgram(const std::vector<std::string>& argv, std::string* why) {
   return -1;
 }
 
+// Where an input is: a run or trace named under --results (as before), else a path to a result
+// directory or file (a sweep's or map-sweep's CSV, an orbit-type map's directory).
+fs::path ResolveInput(const std::string& input, const std::string& results) {
+  constexpr std::string_view kValid =
+      "a run or trace name under --results, or the path of a result: a run, trace or orbit-type map directory, a "
+      "sweep or map-sweep CSV";
+  if (IsRunName(input) && fs::exists(fs::path(results) / input)) return fs::path(results) / input;
+  std::error_code error;
+  if (!input.empty() && input.find('\n') == std::string::npos && fs::exists(fs::path(input), error)) return input;
+  if (IsRunName(input)) return fs::path(results) / input;  // reported missing by the readers below
+  throw InvalidInput("run", "'" + input + "'", std::string(kValid));
+}
+
+// <run>-bifurcation.png, <trace>-frequency-response.png, <map>-map.png, <file>.png (a CSV's stem).
+std::string DefaultOutput(const fs::path& input) {
+  const std::string name = input.filename().empty() ? input.parent_path().filename().string() : input.filename().string();
+  if (fs::is_regular_file(input)) return input.stem().string() + ".png";
+  if (IsTraceDirectory(input)) return name + "-frequency-response.png";
+  if (fs::is_regular_file(input / "regions.json")) return name + "-map.png";
+  return name + "-bifurcation.png";
+}
+
 int RunPlot(const PlotArgs& args) {
-  if (!IsRunName(args.run)) throw InvalidInput("run", "'" + args.run + "'", std::string(kRunNameRule));
-  const fs::path directory = fs::path(args.results) / args.run;
-  // A missing or damaged run or trace is bad input, before any work.
-  const bool trace = IsTraceDirectory(directory);
-  if (trace) {
-    ReadTraceFiles(directory);
-  } else {
-    ReadRunFiles(directory);
+  std::vector<fs::path> inputs;
+  for (const std::string& input : args.inputs) {
+    const fs::path path = ResolveInput(input, args.results);
+    // A missing or damaged run or trace is bad input, before any work (files and maps: the script).
+    if (!fs::is_regular_file(path) && !fs::is_regular_file(path / "regions.json")) {
+      if (IsTraceDirectory(path)) {
+        ReadTraceFiles(path);
+      } else {
+        ReadRunFiles(path);
+      }
+    }
+    inputs.push_back(path);
   }
-  const fs::path output = args.output_given ? fs::path(args.output)
-                                            : fs::path(args.run + (trace ? "-frequency-response.png" : "-bifurcation.png"));
+  const fs::path output = args.output_given ? fs::path(args.output) : fs::path(DefaultOutput(inputs.front()));
   CheckOutputFile(output, "output");
-  if (output.extension() != ".png") {
-    throw InvalidInput("output", "'" + output.string() + "'", "a file name ending in .png");
+  const std::string extension = output.extension().string();
+  if (extension != ".png" && extension != ".pdf" && extension != ".svg") {
+    throw InvalidInput("output", "'" + output.string() + "'", "a file name ending in .png, .pdf or .svg");
   }
   // STICKSLIP_PYTHON: another interpreter (the tests use it to see a missing one reported).
   const char* python = std::getenv("STICKSLIP_PYTHON");
   const std::string interpreter = python && *python ? python : "/usr/bin/python3";
-  const fs::path script = DrawingScript(trace ? "trace_figure.py" : "bifurcation_diagram.py");
+  const fs::path script = DrawingScript("stickslip_plot.py");
+  std::vector<std::string> argv = {interpreter, script.string(), "--output", output.string()};
+  for (const auto& [option, value] : args.drawing) {
+    argv.push_back(option);
+    argv.push_back(value);
+  }
+  if (args.no_natural_frequencies) argv.push_back("--no-natural-frequencies");
+  argv.push_back("--");  // the inputs, whatever their names begin with
+  for (const fs::path& input : inputs) argv.push_back(input.string());
   std::string why;
-  const int status = RunProgram({interpreter, script.string(), directory.string(), output.string()}, &why);
+  const int status = RunProgram(argv, &why);
   if (status == -1 || status == kScriptNeedsMatplotlib) {
     fmt::print(stderr, "error: plot needs {} with matplotlib (Debian: apt-get install python3 python3-matplotlib): {}\n",
                interpreter, status == -1 ? why : "matplotlib cannot be imported");
     return kExitFailure;
   }
+  if (status == kExitBadInput) return kExitBadInput;  // the script printed the one line
   if (status != 0) {
     fmt::print(stderr, "error: {} {} failed (exit {}); nothing was written\n", interpreter, script.string(), status);
     return kExitFailure;
@@ -111,25 +153,68 @@ int RunPlot(const PlotArgs& args) {
 
 }  // namespace
 
+namespace {
+
+// How --help shows each drawing option's value.
+std::string TypeName(const std::string& option) {
+  if (option == "--x" || option == "--y") return "COLUMN";
+  if (option == "--xscale" || option == "--yscale") return "linear|log";
+  if (option == "--xlim" || option == "--ylim") return "LOW,HIGH";
+  if (option == "--size") return "W,H";
+  if (option == "--dpi") return "DPI";
+  if (option == "--legend") return "right|inside|none";
+  return "TEXT";
+}
+
+}  // namespace
+
 Command AddPlotCommand(CLI::App& app) {
   auto args = std::make_shared<PlotArgs>();
   CLI::App* cmd = app.add_subcommand(
       "plot",
-      "Draw the bifurcation diagram of a stored run as a PNG (800 x 600): x20 and the segment durations over the "
-      "continued parameter, stable solid, unstable dashed, stretches that are no motion (a margin < 0) grey, special "
-      "points marked and labelled without overprinting. Of a stored trace (stickslip trace), its frequency response "
-      "(1150 x 600): max |x2| over the period against the parameter on every branch, each orbit type in its own "
-      "colour, switches and special points marked and labelled. Runs /usr/bin/python3 with matplotlib "
-      "(python3-matplotlib); exit 1 if it is missing.");
-  cmd->add_option("run", args->run, "the run or trace: results/<run>/ (e.g. paper-5.1-omega-up, paper-4.1-omega-trace)")
-      ->type_name("RUN")
+      "Draw stored results as a figure for a paper: a branch (a run), a curve in two parameters, a trace, a sweep "
+      "(stickslip sweep's CSV), a brute-force map (map-sweep's CSV) or an orbit-type map (stickslip map's "
+      "directory); several inputs are overlaid on one set of axes (branches, curves, traces and sweeps over the same "
+      "x; an orbit-type map and a brute-force map with curves in their plane). Stable solid, unstable dashed, no "
+      "motion thin grey, each orbit type in its own colour, special points and switches marked and labelled without "
+      "overprinting, the branches a trace followed at bifurcations drawn, the natural frequencies omega1, omega2 "
+      "(eq. 56) marked where an axis is omega. PNG, PDF or SVG by the --output extension. Runs /usr/bin/python3 "
+      "with matplotlib (python3-matplotlib); exit 1 if it is missing.");
+  cmd->add_option("inputs", args->inputs,
+                  "runs or traces under --results (e.g. paper-5.1-omega-up, paper-4.1-omega-trace), or paths of "
+                  "results (results/sweeps/paper-5.1-omega.csv, results/maps/paper-6-omega-u_r)")
+      ->type_name("RESULT")
       ->required();
-  cmd->add_option("--results", args->results, "where the run is stored")->type_name("DIR")->capture_default_str();
+  cmd->add_option("--results", args->results, "where named runs and traces are stored")
+      ->type_name("DIR")
+      ->capture_default_str();
   cmd->add_option("--output", args->output,
-                  "the PNG file, written whole or not at all (default <run>-bifurcation.png, for a trace "
-                  "<run>-frequency-response.png)")
-      ->type_name("FILE.png")
+                  "the figure, written whole or not at all; its extension gives the format: .png, .pdf or .svg "
+                  "(default from the first input: <run>-bifurcation.png, <trace>-frequency-response.png, "
+                  "<map>-map.png, <csv name>.png)")
+      ->type_name("FILE")
       ->each([args](const std::string&) { args->output_given = true; });
+  const std::pair<const char*, const char*> drawing[] = {
+      {"--x", "the x quantity: any numeric column (default the continued or swept parameter; a map: its first)"},
+      {"--y", "the y quantity: any numeric column: amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, "
+              "x20, d1, a margin, ... (default amplitude:x2, max |x2| over a period; curves in two parameters "
+              "alone: the second parameter; a map: its second)"},
+      {"--xscale", "linear or log (default linear; never switched automatically)"},
+      {"--yscale", "linear or log (default linear; never switched automatically)"},
+      {"--xlim", "LOW,HIGH: the x axis's range (default the data's)"},
+      {"--ylim", "LOW,HIGH: the y axis's range (default the data's)"},
+      {"--size", "WIDTH,HEIGHT in inches, each 1 to 40 (default 9,5; maps wider)"},
+      {"--dpi", "dots per inch of a PNG, 10 to 1200 (default 150), at most 20000 pixels a side"},
+      {"--title", "the title (default: what is drawn and how each branch ended, in words; \"\" for none)"},
+      {"--legend", "right (beside the axes, the default), inside or none"}};
+  for (const auto& [name, help] : drawing) {
+    const std::string option = name;
+    cmd->add_option_function<std::string>(
+           option, [args, option](const std::string& value) { args->drawing.emplace_back(option, value); }, help)
+        ->type_name(TypeName(option));
+  }
+  cmd->add_flag("--no-natural-frequencies", args->no_natural_frequencies,
+                "do not mark omega1 and omega2 (marked by default where an axis is omega)");
   return {cmd, [args] { return RunPlot(*args); }};
 }
 

@@ -7,7 +7,7 @@ sticking orbits, the stick constraints G and G1 over the stick (Figs. 6, 9, 12).
 For each continuation run in <results>/: a bifurcation diagram over the continuation parameter,
 x20 and the durations, stable solid and unstable dashed, special points marked and labelled, and
 the brute-force sweep of the family (results/sweeps/) overlaid.
-For each trace in <results>/: its frequency response (trace_figure.py), max |x2| over the period
+For each trace in <results>/: its frequency response (stickslip_plot.py, as `stickslip plot`), max |x2| over the period
 on every branch, and the brute force's max |x2| over its settled periods (the family's sweeps and
 results/sweeps/traces/) where the trace holds the sweep's data (not where u_s = u_r is solved).
 
@@ -28,12 +28,18 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from bifurcation_diagram import SIZE, draw_run, label_points, read_run, runs_of, save  # noqa: E402
-from trace_figure import holds_data, plot_trace, read_trace  # noqa: E402
+import stickslip_plot as sp  # noqa: E402
+from stickslip_plot import holds_data, read_trace, runs_of  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SIZE = (8, 6)  # inches, at 100 dpi: 800 x 600 pixels (the paper's figures)
 STYLE = {"slip-": dict(color="black", lw=0.8), "slip+": dict(color="black", lw=2.6),
          "stick": dict(color="0.6", lw=1.6)}
+
+
+def save(figure, path, dpi=100):
+    sp.save(figure, path, dpi)
+    print("wrote", path)
 
 
 def paper_figures(program, preset, paper_choice, out):
@@ -130,7 +136,7 @@ def frequency_response_figure(results, run, out):
     directory = os.path.join(results, run)
     trace, branches = read_trace(directory)
     sweeps = family_sweeps(results, run, trace["parameter"], traced=True) if holds_data(branches) else []
-    plot_trace(directory, os.path.join(out, f"{run}-frequency-response.png"), sweeps)
+    save(sp.figure([directory] + sweeps), os.path.join(out, f"{run}-frequency-response.png"), sp.DEFAULT_DPI)
 
 
 def curve_restart(summary):
@@ -144,38 +150,13 @@ def curve_restart(summary):
     return restart if "boundary" in restart else None
 
 
-def stable_off_the_curve(condition):
-    """On a curve of folds, period doublings or torus points the critical multipliers sit on the
-    unit circle, where the stored flag flickers with rounding: the orbit is stable on the curve if
-    the others lie inside (LP: all but the one nearest +1; PD: nearest -1; TR: the pair nearest
-    the circle)."""
-    def multipliers(row):
-        return [complex(float(row[f"floquet:mu{k}_re"]), float(row[f"floquet:mu{k}_im"])) for k in range(1, 5)]
-
-    def stable(row):
-        mu = multipliers(row)
-        if condition == "LP":
-            mu.remove(min(mu, key=lambda m: abs(m - 1)))
-        elif condition == "PD":
-            mu.remove(min(mu, key=lambda m: abs(m + 1)))
-        elif condition == "TR":
-            mu = sorted(mu, key=lambda m: abs(abs(m) - 1) if m.imag != 0 else math.inf)[2:]
-        else:
-            return row["stable"] == "1"
-        return all(abs(m) < 1 for m in mu)
-    return stable
-
-
 def resonance_end(ax, rows, parameter, y):
     """A branch that ended at a resonance (its amplitude passed max_amplitude): over omega, the
     natural frequency it nears (eq. 56) as a dotted line; its last point marked. Returns the label
     to place."""
     last = rows[-1]
     if parameter == "omega":
-        chi, eta = float(last["chi"]), float(last["eta"])
-        trace, det = 1 + chi * eta, chi * eta * (1 - chi)
-        root = math.sqrt(trace * trace - 4 * det)
-        naturals = [math.sqrt((trace - root) / 2), math.sqrt((trace + root) / 2)]
+        naturals = sp.natural_frequencies(float(last["chi"]), float(last["eta"]))
         for k, natural in enumerate(naturals, 1):
             if abs(natural - float(last["omega"])) < 0.05 * natural:
                 ax.axvline(natural, ls=":", color="0.3", lw=1.0, label=f"natural frequency omega{k} = {natural:.5f}")
@@ -186,16 +167,17 @@ def resonance_end(ax, rows, parameter, y):
 
 def bifurcation_figure(program, results, run, out):
     directory = os.path.join(results, run)
-    summary, rows, _ = read_run(directory)
-    parameter = summary["parameter"]
-    curve = curve_restart(summary)
-    # Wider than the plain diagram: the legend of the orbit and the sweeps stands beside the data.
-    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(SIZE[0] + 3.5, SIZE[1]))
+    branch = sp.load(directory)
+    parameter = branch.parameter
+    curve = curve_restart(branch.summary)
     if curve:
         condition = curve["label"].rstrip("0123456789")
-        labels, legend = draw_run(top, bottom, directory, y=curve["boundary"], stable=stable_off_the_curve(condition))
+        y = curve["boundary"]
+        figure, top, bottom, canvas = sp.diagram(branch, y=y, stable=sp.stable_off_the_curve(condition))
     else:
-        labels, legend = draw_run(top, bottom, directory)
+        y = "x20"
+        figure, top, bottom, canvas = sp.diagram(branch)
+    rows = branch.rows
     # A curve in two parameters: the sweeps, at one value of the second, do not compare.
     sweeps = [] if curve else family_sweeps(results, run, parameter)
     phases_drawn = set()
@@ -216,21 +198,13 @@ def bifurcation_figure(program, results, run, out):
         top.plot([float(r[parameter]) for r in points], [float(r["x2"]) for r in points], ".",
                  color="0.4" if number == 0 else "C3", ms=3 if number == 0 else 4,
                  label=f"brute force {name}: x2 at phase {phase:.4g} (period 1)")
-    y = curve["boundary"] if curve else "x20"
-    if summary["termination"] == "stopped" and summary["message"].startswith("resonance"):
-        labels += resonance_end(top, rows, parameter, y)
-    values = [float(r[y]) for r in rows]
-    if min(values) > 0 and max(values) > 100 * min(values):  # a curve that grows by decades: a resonance
-        top.set_yscale("log")
-    top.legend(handles=legend + top.get_legend_handles_labels()[0], fontsize=7, loc="upper left",
-               bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    top.set_ylabel(y)
-    bottom.set_ylabel("segment durations")
-    bottom.set_xlabel(parameter)
+    if branch.summary["termination"] == "stopped" and branch.summary["message"].startswith("resonance"):
+        canvas.labels += resonance_end(top, rows, parameter, y)
+    # Linear axes always (the user's choice on the command line: stickslip plot --yscale log).
+    canvas.extra += [h for h in top.get_legend_handles_labels()[0]]
     what = f"the curve of {curve['run']}:{curve['label']} in ({parameter}, {curve['boundary']}), " if curve else ""
-    top.set_title(f"{run}: {what}{summary['signature']}\n(solid stable, dashed unstable, grey no motion)", fontsize=10)
-    figure.tight_layout()
-    label_points(figure, top, labels)
+    title = f"{run}: {what}'{branch.signature}'\n{sp._ends_in_words(branch)}"
+    sp.finish_diagram(figure, top, canvas, title)
     save(figure, os.path.join(out, f"{run}-bifurcation.png"))
 
 

@@ -47,7 +47,7 @@ mkdir -p results/maps
 "$bin" map --trace results/paper-6-omega-trace --second u_r --second-from 1.2 --second-to 1.6 --first-from 0.54 \
   --first-to 0.59 --brute-force results/maps/paper-6-omega-u_r-brute-force.csv --output results/maps/paper-6-omega-u_r
 for m in paper-5.1-omega-u_r paper-6-omega-u_r; do
-  /usr/bin/python3 tools/orbit_type_map_figure.py results/maps/$m results/figures/$m-map.png results/maps/$m-brute-force.csv
+  "$bin" plot results/maps/$m results/maps/$m-brute-force.csv --output results/figures/$m-map.png
 done
 /usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"

@@ -12,7 +12,7 @@ import os
 import subprocess
 import sys
 
-from trace_figure import read_trace
+from stickslip_plot import read_trace
 
 
 def joined(intervals):

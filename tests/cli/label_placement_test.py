@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""The label placement of tools/bifurcation_diagram.py: no two labels overprint, and no label
-covers a marker, (1) for clusters of random labels drawn from a seeded generator, and (2) on the
-bifurcation diagram of every stored run under results/ (text sizes measured by matplotlib).
+"""The label placement of tools/stickslip_plot.py: no two labels overprint, and no label covers a
+marker, (1) for clusters of random labels drawn from a seeded generator, and (2) on the
+bifurcation diagram and on the figure of `stickslip plot` of every stored run under results/ (text
+sizes and boxes measured by matplotlib's renderer).
 
 Usage: /usr/bin/python3 tests/cli/label_placement_test.py SOURCE_DIR (run by ctest)."""
 import os
@@ -10,7 +11,7 @@ import sys
 
 SOURCE = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
-import bifurcation_diagram as bd  # noqa: E402
+import stickslip_plot as bd  # noqa: E402
 
 failed = 0
 passed = 0
@@ -67,13 +68,20 @@ def stored_runs():
     runs = sorted(r for r in os.listdir(results) if os.path.isfile(os.path.join(results, r, "summary.json")))
     check(len(runs) >= 19, f"{len(runs)} stored runs")
     for run in runs:
-        figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=bd.SIZE)
-        labels, legend = bd.draw_run(top, bottom, os.path.join(results, run))
-        top.legend(handles=legend, fontsize=7)
-        figure.tight_layout()
-        placed = bd.label_points(figure, top, labels)
-        anchors = [top.transData.transform((x, y)) for _, x, y in labels]
-        no_overlaps([box for box, _ in placed], [(x - 4, y - 4, x + 4, y + 4) for x, y in anchors], run)
+        directory = os.path.join(results, run)
+        figure, top, _, canvas = bd.diagram(directory)
+        bd.finish_diagram(figure, top, canvas, run)
+        figure.canvas.draw()
+        anchors = [top.transData.transform((x, y)) for _, x, y in canvas.labels]
+        no_overlaps(bd.label_boxes(figure), [(x - 4, y - 4, x + 4, y + 4) for x, y in anchors], f"{run} (diagram)")
+        plt.close(figure)
+        figure = bd.figure([directory])
+        figure.canvas.draw()
+        ax = figure.axes[0]
+        anchors = [ax.transData.transform(t.xy) for t in ax.texts if t.get_gid() == "stickslip-label"]
+        scale = figure.dpi / 100
+        no_overlaps(bd.label_boxes(figure), [(x - 4 * scale, y - 4 * scale, x + 4 * scale, y + 4 * scale)
+                                             for x, y in anchors], f"{run} (stickslip plot)")
         plt.close(figure)
 
 

@@ -51,8 +51,8 @@ expect 2 "at omega" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/shard1
 rm "$work/out/other.csv"
 expect 2 "shards = '$work/out/none.csv' is invalid" "$bin" map-sweep --merge "$work/out/m.csv" "$work/out/none.csv"
 
-# The figure (tools/map_figure.py, python3-matplotlib): a PNG.
-/usr/bin/python3 "$root/tools/map_figure.py" "$work/one.csv" "$work/map.png" && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \
+# The figure (stickslip plot, tools/stickslip_plot.py, python3-matplotlib): a PNG.
+"$bin" plot "$work/one.csv" --output "$work/map.png" > /dev/null && [ "$(head -c 4 "$work/map.png" | tail -c 3)" = "PNG" ] \
   && pass || fail "the map's figure"
 
 if mpi_ready; then

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# stickslip plot RUN: writes a valid PNG (PNG signature, 800 x 600) for a stored run, and the
-# frequency response (1150 x 600, default name <trace>-frequency-response.png) for a stored trace; refuses a
-# missing or ill-named run and every bad --output with exit 2 and nothing written; a missing
-# python3 or matplotlib is exit 1 with a message saying what to install, and nothing written.
+# stickslip plot: writes a valid PNG (PNG signature, 9 x 5 inches at 150 dpi: 1350 x 750) for a
+# stored run and for a stored trace (default name <run>-bifurcation.png, <trace>-frequency-response.png),
+# PDF and SVG by the extension, at --size and --dpi; draws a sweep's and a brute-force map's CSV
+# given by its path (stickslip plot mapA.csv) and overlays several inputs; refuses a missing or
+# ill-named run, every bad --output and every bad drawing option with exit 2, one line and nothing
+# written; a missing python3 or matplotlib is exit 1 with a message saying what to install, and
+# nothing written.
 source "$(dirname "$0")/expect.sh"
 
 mkdir -p "$work/out/a-directory"
@@ -13,7 +16,7 @@ if "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$work/out/
   if [ "$(head -c 8 "$work/out/diagram.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] &&
      [ "$(stat -c %s "$work/out/diagram.png")" -gt 10000 ]; then pass; else fail "plot wrote no PNG"; fi
   size=$(/usr/bin/python3 -c "import matplotlib.image as i, sys; h, w = i.imread(sys.argv[1]).shape[:2]; print(w, h)" "$work/out/diagram.png")
-  [ "$size" = "800 600" ] && pass || fail "plot's PNG is $size, expected 800 600"
+  [ "$size" = "1350 750" ] && pass || fail "plot's PNG is $size, expected 1350 750"
   [ "$(ls -A "$work/out" | sort | tr '\n' ' ')" = "a-directory diagram.png " ] && pass || fail "plot left other files: $(ls -A "$work/out")"
 else
   fail "plot of a stored run failed"
@@ -25,7 +28,7 @@ fi
 # A trace: its frequency response, under its default name in the current directory.
 if (cd "$work" && "$bin" plot paper-4.1-omega-trace --results "$root/results" > /dev/null); then
   size=$(/usr/bin/python3 -c "import matplotlib.image as i, sys; h, w = i.imread(sys.argv[1]).shape[:2]; print(w, h)" "$work/paper-4.1-omega-trace-frequency-response.png")
-  [ "$size" = "1150 600" ] && pass || fail "plot of a trace: $size, expected 1150 600"
+  [ "$size" = "1350 750" ] && pass || fail "plot of a trace: $size, expected 1350 750"
 else
   fail "plot of a stored trace failed"
 fi
@@ -36,7 +39,37 @@ expect 2 "branch-2" "$bin" plot paper-4.1-omega-trace --results "$work/out" --ou
 [ ! -e "$work/out/trace.png" ] && pass || fail "plot of a damaged trace wrote a file"
 rm -r "$work/out/paper-4.1-omega-trace"
 
+# PDF and SVG by the extension; --size and --dpi.
+"$bin" plot paper-5.1-omega-up --results "$root/results" --output "$work/out/diagram.pdf" > /dev/null &&
+  [ "$(head -c 4 "$work/out/diagram.pdf")" = "%PDF" ] && pass || fail "plot wrote no PDF"
+"$bin" plot paper-4.1-omega-trace --results "$root/results" --output "$work/out/trace.svg" > /dev/null &&
+  grep -q "<svg" "$work/out/trace.svg" && pass || fail "plot wrote no SVG"
+"$bin" plot paper-5.1-omega-up --results "$root/results" --output "$work/out/small.png" --size 3.5,2.5 --dpi 300 \
+  --yscale log --xlim 0.57,0.59 --y peak-to-peak:x2 --title "" --legend inside > /dev/null &&
+  size=$(/usr/bin/python3 -c "import matplotlib.image as i, sys; h, w = i.imread(sys.argv[1]).shape[:2]; print(w, h)" "$work/out/small.png") &&
+  [ "$size" = "1050 750" ] && pass || fail "plot --size 3.5,2.5 --dpi 300: ${size:-failed}, expected 1050 750"
+rm -f "$work/out/diagram.pdf" "$work/out/trace.svg" "$work/out/small.png"
+# A sweep's and a brute-force map's CSV by path, in the current directory (stickslip plot mapA.csv:
+# <csv name>.png); an orbit-type map's directory; several inputs overlaid.
+cp "$root/results/maps/paper-6-omega-u_r-brute-force.csv" "$work/mapA.csv"
+(cd "$work" && "$bin" plot mapA.csv > /dev/null) && [ "$(head -c 4 "$work/mapA.png" | tail -c 3)" = "PNG" ] &&
+  pass || fail "plot mapA.csv wrote no mapA.png"
+"$bin" plot "$root/results/maps/paper-5.1-omega-u_r" paper-5.1-fold-curve --results "$root/results" \
+  --output "$work/map.svg" > /dev/null && grep -q "<svg" "$work/map.svg" && pass || fail "plot of an orbit-type map and a curve"
+"$bin" plot paper-5.1-omega-up paper-5.1-omega-down "$root/results/sweeps/paper-5.1-omega.csv" --results "$root/results" \
+  --output "$work/overlay.png" > /dev/null && [ -s "$work/overlay.png" ] && pass || fail "plot of two runs and a sweep"
+
 png="$work/out/new.png"
+# Bad drawing options: the option, the value and the valid range on one line, exit 2, nothing written.
+expect 2 "--dpi = '5' is invalid: valid 10 to 1200" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --dpi 5
+expect 2 "--size = '0,3' is invalid: valid WIDTH,HEIGHT in inches, each 1 to 40" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --size 0,3
+expect 2 "--yscale = 'logarithmic' is invalid: valid linear or log" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --yscale logarithmic
+expect 2 "--xlim = '1,0' is invalid: valid LOW,HIGH" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --xlim 1,0
+expect 2 "--y = 'nope' is invalid: valid a numeric column of every input" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --y nope
+expect 2 "--legend = 'top' is invalid: valid right, inside or none" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --legend top
+expect 2 "inputs = 'paper-5.1-omega-up' (branch) is invalid" "$bin" plot paper-5.1-omega-up "$root/results/maps/paper-6-omega-u_r" --results "$root/results" --output "$png"
+expect 2 "input = '$root/results/runs.md' is invalid" "$bin" plot "$root/results/runs.md" --output "$png"
+expect 2 "ending in .png, .pdf or .svg" "$bin" plot "$root/results/sweeps/paper-5.1-omega.csv" --output "$work/out/x.jpg"
 expect 2 "paper-9-omega-up" "$bin" plot paper-9-omega-up --results "$root/results" --output "$png"
 expect 2 "run = '" "$bin" plot $'paper-5.1\nomega-up' --results "$root/results" --output "$png"
 expect 2 "run = '../results/paper-5.1-omega-up'" "$bin" plot ../results/paper-5.1-omega-up --results "$root/results" --output "$png"

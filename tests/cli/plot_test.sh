@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Smoke test of the figures: tools/plot_figures.py runs on a copy of the shipped results and
-# writes every expected PNG, non-empty, 800 x 600 pixels (the bifurcation diagrams and the traces'
-# frequency responses 1150 x 600, their legend beside the axes). (What they show is checked by eye; the
+# writes every expected PNG, non-empty, 800 x 600 pixels (the bifurcation diagrams 1150 x 600, their
+# legend beside the axes; the traces' frequency responses as `stickslip plot` draws them, 1350 x 750). (What they show is checked by eye; the
 # README embeds them.)
 set -euo pipefail
 bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
@@ -28,7 +28,8 @@ for name in expected:
     path = os.path.join(results, "figures", name)
     assert os.path.getsize(path) > 10000, name
     height, width = image.imread(path).shape[:2]
-    size = (1150, 600) if name.endswith(("-bifurcation.png", "-frequency-response.png")) else (800, 600)
+    size = (1150, 600) if name.endswith("-bifurcation.png") else (
+        (1350, 750) if name.endswith("-frequency-response.png") else (800, 600))
     assert (width, height) == size, (name, width, height)
-print(f"{len(expected)} figures, 800 x 600 and the bifurcation diagrams and frequency responses 1150 x 600")
+print(f"{len(expected)} figures, 800 x 600, the bifurcation diagrams 1150 x 600, the frequency responses 1350 x 750")
 PY

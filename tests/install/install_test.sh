@@ -16,7 +16,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 prefix="$work/prefix"
 "$cmake" --install "$build" --prefix "$prefix" > "$work/install.log" || { cat "$work/install.log"; exit 1; }
-for f in bin/stickslip share/stickslip/bifurcation_diagram.py share/stickslip/trace_figure.py \
+for f in bin/stickslip share/stickslip/stickslip_plot.py \
          include/stickslip/version.hpp include/stickslip/orbits/orbit_solver.hpp \
          lib/cmake/stickslip/stickslipConfig.cmake lib/cmake/stickslip/stickslipConfigVersion.cmake \
          lib/cmake/stickslip/stickslipTargets.cmake lib/cmake/stickslip/FindSuiteSparse.cmake; do

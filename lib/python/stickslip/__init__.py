@@ -15,6 +15,10 @@ The same computations as the command line, with the same keys and the same check
     trace = stickslip.trace("omega", (0.3, 0.69), preset="paper-4.1")  # -> Trace: Branches, ends
     other = branch.switch("PD2", side=1)                   # the branch leaving a PD, SB or BP label
     m = stickslip.map_sweep(preset="paper-6", first_range=(0.55, 0.6), second_range=(1.2, 1.5))
+    fig = branch.plot(y="peak-to-peak:x2", yscale="log")  # matplotlib Figures, as `stickslip plot`
+    fig = trace.plot(); fig = sweep.plot(); fig = m.plot()
+    stickslip.plot(branch, trace, sweep, output="overlay.pdf")   # several results; paths too
+    trace.to_pandas()                                      # every point, measure columns included
 
 Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
 ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
@@ -35,11 +39,12 @@ from ._stickslip import __version__
 from ._branch import Branch, Continuation
 from ._trace import Trace
 from ._inputs import _one_off_run, _start
+from . import plotting
 
 __all__ = [
     "Branch", "Continuation", "ConvergenceError", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
     "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
-    "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
+    "plot", "plotting", "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
 
 
@@ -69,6 +74,41 @@ def _parameters_of_preset(name):
 
 
 Parameters.preset = staticmethod(_parameters_of_preset)
+
+
+def _plotting_result(result, name):
+    if isinstance(result, (Branch, Trace)):
+        return result._plotting_result()
+    if isinstance(result, (SweepResult, MapSweepResult)):
+        return plotting.csv_result(name, result.csv())
+    return result  # a path, or a plotting result already
+
+
+def plot(*results, output=None, dpi=plotting.DEFAULT_DPI, **options):
+    """Several results on one figure, as `stickslip plot A B ...` overlays them: Branch, Trace,
+    SweepResult, MapSweepResult, or paths of stored results (a run's, trace's or orbit-type map's
+    directory, a sweep's or map-sweep's CSV). Keywords: Branch.plot's options; with output=
+    "figure.png" (or .pdf, .svg) the figure is also written, at `dpi` for a PNG. Returns the
+    matplotlib Figure; bad options raise ValueError naming the option, its value and the valid
+    range."""
+    named = [_plotting_result(r, f"sweep {k + 1}" if isinstance(r, SweepResult) else f"map {k + 1}")
+             for k, r in enumerate(results)]
+    opts = plotting.Options(dpi=dpi, output=None if output is None else str(output), **options)
+    fig = plotting.figure(named, opts)
+    if output is not None:
+        plotting.save(fig, str(output), dpi)  # whole or not at all, the format of the extension
+    return fig
+
+
+def _result_plot(self, **options):
+    """The result as a matplotlib Figure, as `stickslip plot` draws its file (a sweep: its settled
+    motions' amplitude:x2 by period, or any column as y=; a map: the coexisting attractors and the
+    largest period). Keywords: Branch.plot's."""
+    return plotting.figure([_plotting_result(self, "sweep" if isinstance(self, SweepResult) else "map")], **options)
+
+
+SweepResult.plot = _result_plot
+MapSweepResult.plot = _result_plot
 
 
 def natural_frequencies(parameters):

@@ -152,6 +152,21 @@ class Branch(_Table):
                    "ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
         return Branch(self._computed.switch(str(label), int(side), options))
 
+    def plot(self, **options):
+        """The branch as a matplotlib Figure, as `stickslip plot` draws it: y over x (default
+        amplitude:x2, max |x2| over a period, over the continued parameter; a curve in two
+        parameters: its second parameter), stable solid, unstable dashed, special points labelled.
+        Keywords: x, y, xscale, yscale ("linear", the default, or "log"), xlim, ylim, size
+        (inches), title, legend, natural_frequencies (stickslip.plotting's options); bad ones
+        raise ValueError. fig.savefig("branch.pdf") writes it."""
+        from . import plotting
+        return plotting.figure([self._plotting_result()], **options)
+
+    def _plotting_result(self):
+        from . import plotting
+        return plotting.Branch.from_texts(self.output, self._files["branch.csv"], self._files["special-points.csv"],
+                                          self._files["summary.json"])
+
     def to_pandas(self):
         """The branch as a pandas DataFrame, one row per point (needs pandas: python3-pandas)."""
         try:

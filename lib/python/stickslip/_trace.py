@@ -51,6 +51,42 @@ class Trace(_Table):
         """{file name: text} of trace.csv and trace.json (each branch's: branch.files())."""
         return dict(self._files)
 
+    def plot(self, **options):
+        """The trace's frequency response as a matplotlib Figure, as `stickslip plot` draws it:
+        every branch (and every branch followed at a bifurcation), each orbit type in its own
+        colour, switches and special points marked and labelled, omega1 and omega2 marked where x
+        is omega. Keywords: Branch.plot's. fig.savefig("trace.svg") writes it."""
+        from . import plotting
+        return plotting.figure([self._plotting_result()], **options)
+
+    def _plotting_result(self):
+        import tempfile
+        from . import plotting
+        # Through the files the command line writes (trace.json, every branch, the branches followed
+        # at bifurcations), read by the one reader of the figures.
+        with tempfile.TemporaryDirectory() as work:
+            directory = f"{work}/{self.output}"
+            self.save(directory)
+            return plotting.load(directory)
+
+    def to_pandas(self):
+        """Every point of every branch as a pandas DataFrame, one row per point: the branch's name
+        (branch), its orbit type (signature) and every column of its branch.csv, measures included
+        (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks, margins,
+        multipliers; a column that a branch lacks, such as a duration it has not, is NaN there).
+        Needs pandas (python3-pandas)."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError("Trace.to_pandas needs pandas (Debian: python3-pandas)") from e
+        frames = []
+        for branch in self.branches:
+            frame = pandas.DataFrame(branch._table)
+            frame.insert(0, "signature", branch.signature)
+            frame.insert(0, "branch", branch.link["name"] if branch.link else "")
+            frames.append(frame)
+        return pandas.concat(frames, ignore_index=True, sort=False)
+
     @property
     def ends(self):
         return {direction: d["end"] for direction, d in self.directions.items()}

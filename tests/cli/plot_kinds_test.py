@@ -1,0 +1,276 @@
+#!/usr/bin/python3
+"""The figures of tools/stickslip_plot.py (what `stickslip plot` and stickslip.plotting draw), on
+small results made from the stored ones:
+- every kind (branch, curve in two parameters, trace, trace with a branch followed at a
+  bifurcation, sweep, brute-force map, orbit-type map, overlays) renders to PNG, PDF and SVG, the
+  file of the extension's format, at the size and dpi asked;
+- no two texts of a figure overprint: the labels placed on points, the natural frequencies' labels,
+  the title, the axis and tick labels and the legend's entries (boxes from matplotlib's renderer);
+- axes are linear unless asked (no switching), limits and quantities as asked, the natural
+  frequencies (eq. 56) where they belong, titles in words (no internal end codes);
+- every invalid option: exit 2, one line naming the option, the value and the valid range, nothing
+  written; without matplotlib exit 3, nothing written.
+
+Usage: /usr/bin/python3 tests/cli/plot_kinds_test.py SOURCE_DIR (run by ctest)."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SOURCE = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+TOOLS = os.path.join(SOURCE, "tools")
+SCRIPT = os.path.join(TOOLS, "stickslip_plot.py")
+RESULTS = os.path.join(SOURCE, "results")
+sys.path.insert(0, TOOLS)
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+import stickslip_plot as sp  # noqa: E402
+
+MAGIC = {".png": b"\x89PNG\r\n\x1a\n", ".pdf": b"%PDF", ".svg": b"<?xml"}
+INTERNAL_WORDS = ("no-adjacent-type", "not-confirmed", "parameter-bound", "terminal-event", "lambda_", "same-type-on")
+
+
+def head_of_csv(source, target, keep):
+    """The rows of a CSV for which keep(row as dict) holds, header kept."""
+    import csv
+    with open(source, newline="") as f, open(target, "w", newline="") as g:
+        reader = csv.DictReader(f)
+        writer = csv.DictWriter(g, fieldnames=reader.fieldnames, lineterminator="\n")
+        writer.writeheader()
+        for row in reader:
+            if keep(row):
+                writer.writerow(row)
+
+
+class Small:
+    """Small results in a temporary directory, one per kind."""
+
+    def __init__(self, work):
+        self.work = work
+        self.branch = os.path.join(RESULTS, "paper-5.1-omega-up")
+        self.curve = os.path.join(RESULTS, "paper-5.1-fold-curve")
+        self.trace = os.path.join(RESULTS, "paper-4.1-omega-trace")
+        # A trace whose PD3 was followed (trace.json names the followed branch's directory).
+        self.followed = os.path.join(work, "followed-trace")
+        shutil.copytree(os.path.join(RESULTS, "paper-5.2-omega-trace"), self.followed)
+        shutil.copytree(os.path.join(RESULTS, "paper-5.2-period-2"), os.path.join(self.followed, "branch-2-PD3"))
+        with open(os.path.join(self.followed, "trace.json")) as f:
+            trace = json.load(f)
+        for entry in trace["branches"]:
+            for bifurcation in entry["bifurcations"]:
+                if entry["name"] == "branch-2" and bifurcation["label"] == "PD3":
+                    bifurcation["followed"] = "branch-2-PD3"
+        with open(os.path.join(self.followed, "trace.json"), "w") as f:
+            json.dump(trace, f, indent=2)
+        self.sweep = os.path.join(work, "sweep.csv")
+        head_of_csv(os.path.join(RESULTS, "sweeps", "paper-5.1-omega.csv"), self.sweep, lambda r: int(r["step"]) % 5 == 0)
+        self.map_sweep = os.path.join(work, "map-sweep.csv")
+        head_of_csv(os.path.join(RESULTS, "maps", "paper-6-omega-u_r-brute-force.csv"), self.map_sweep,
+                    lambda r: int(r["i"]) % 3 == 0)
+        self.orbit_type_map = os.path.join(RESULTS, "maps", "paper-6-omega-u_r")
+        self.orbit_type_map_51 = os.path.join(RESULTS, "maps", "paper-5.1-omega-u_r")
+
+    def kinds(self):
+        """(name, inputs, options) of every kind and overlay."""
+        return [("branch", [self.branch], []), ("curve", [self.curve], []), ("trace", [self.trace], []),
+                ("trace-followed", [self.followed], []), ("sweep", [self.sweep], []),
+                ("map-sweep", [self.map_sweep], []), ("orbit-type-map", [self.orbit_type_map], []),
+                ("branches-and-sweep", [self.branch, os.path.join(RESULTS, "paper-5.1-omega-down"), self.sweep], []),
+                ("map-with-brute-force-and-curve", [self.orbit_type_map_51, self.curve], []),
+                ("orbit-type-map-and-map-sweep", [self.orbit_type_map, self.map_sweep], []),
+                ("sweep-section", [self.sweep], ["--y", "x2"])]
+
+
+class Done:
+    def __init__(self, returncode, stdout, stderr):
+        self.returncode, self.stdout, self.stderr = returncode, stdout, stderr
+
+
+def run(*arguments, env=None):
+    """The script's command line: in this process (fast), or with `env` in a new one."""
+    if env is not None:
+        return subprocess.run(["/usr/bin/python3", SCRIPT, *arguments], capture_output=True, text=True, env=env)
+    import contextlib
+    import io
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = sp.main([SCRIPT, *arguments])
+    plt.close("all")
+    return Done(code, out.getvalue(), err.getvalue())
+
+
+def run_process(*arguments):
+    return subprocess.run(["/usr/bin/python3", SCRIPT, *arguments], capture_output=True, text=True)
+
+
+class PlotKinds(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls._directory = tempfile.TemporaryDirectory()
+        cls.work = cls._directory.name
+        cls.small = Small(cls.work)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls._directory.cleanup()
+
+    def test_every_kind_in_every_format(self):
+        for name, inputs, options in self.small.kinds():
+            for extension in (".png", ".pdf", ".svg"):
+                output = os.path.join(self.work, f"{name}{extension}")
+                done = run("--output", output, *options, *inputs)
+                self.assertEqual(done.returncode, 0, f"{name}{extension}: {done.stderr}")
+                with open(output, "rb") as f:
+                    self.assertTrue(f.read(8).startswith(MAGIC[extension]), f"{name}{extension}")
+
+    def test_size_and_dpi(self):
+        import matplotlib.image as image
+        output = os.path.join(self.work, "sized.png")
+        done = run("--output", output, "--size", "4,3", "--dpi", "200", self.small.branch)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        height, width = image.imread(output).shape[:2]
+        self.assertEqual((width, height), (800, 600))
+
+    def test_texts_do_not_overprint(self):
+        for name, inputs, options in self.small.kinds():
+            keywords = dict(zip((o[2:] for o in options[::2]), options[1::2]))
+            for size in (None, (6.0, 4.0)):
+                fig = sp.figure(inputs, size=size, **keywords)
+                texts = sp.text_boxes(fig)
+                labels = sp.label_boxes(fig)
+                self.assertTrue(labels or name in ("sweep", "map-sweep", "sweep-section", "orbit-type-map-and-map-sweep",
+                                                   "orbit-type-map"), f"{name}: labels placed")
+                for k, a in enumerate(labels):
+                    for b in labels[k + 1:]:
+                        self.assertFalse(sp.overlap(a, b), f"{name} at {size}: labels {a} and {b} overprint")
+                # Every text inside the figure (a title wider than the figure is wrapped).
+                width, height = fig.canvas.get_width_height()
+                for text, (x0, y0, x1, y1) in texts:
+                    self.assertTrue(x0 >= -1 and y0 >= -1 and x1 <= width + 1 and y1 <= height + 1,
+                                    f"{name} at {size}: '{text}' ({x0:.0f}, {y0:.0f}, {x1:.0f}, {y1:.0f}) leaves the "
+                                    f"figure ({width} x {height})")
+                # Each placed label against every other text of the figure (titles, axis and tick
+                # labels, the legend's entries).
+                others = [(text, box) for text, box in texts if box not in labels]
+                for a in labels:
+                    for text, b in others:
+                        self.assertFalse(sp.overlap(a, b), f"{name} at {size}: a label {a} overprints '{text}' {b}")
+                plt.close(fig)
+
+    def test_axes_as_asked_and_titles_in_words(self):
+        # The trace's resonance grows by a decade and more: still linear unless asked.
+        fig = sp.figure([self.small.trace])
+        ax = fig.axes[0]
+        self.assertEqual((ax.get_xscale(), ax.get_yscale()), ("linear", "linear"))
+        title = fig._suptitle.get_text()
+        for word in INTERNAL_WORDS:
+            self.assertNotIn(word, title)
+        self.assertIn("no adjacent orbit type confirmed by simulation", title)
+        plt.close(fig)
+        fig = sp.figure([self.small.trace], yscale="log", xlim=(0.3, 0.8), ylim=(0.1, 100), y="peak-to-peak:x2",
+                        title="My title")
+        ax = fig.axes[0]
+        self.assertEqual(ax.get_yscale(), "log")
+        self.assertEqual(ax.get_xlim(), (0.3, 0.8))
+        self.assertEqual(ax.get_ylim(), (0.1, 100))
+        self.assertIn("peak-to-peak", ax.get_ylabel())
+        self.assertEqual(fig._suptitle.get_text(), "My title")
+        # omega1 = 0.7012 of chi = 0.3, eta = 4 inside the limits: a dotted line, labelled.
+        omega1, omega2 = sp.natural_frequencies(0.3, 4.0)
+        self.assertTrue(any(line.get_linestyle() == ":" and abs(line.get_xdata()[0] - omega1) < 1e-12
+                            for line in ax.get_lines()))
+        self.assertIn(r"$\omega_1$", [t.get_text() for t in ax.texts])
+        plt.close(fig)
+        fig = sp.figure([self.small.trace], natural_frequencies=False, xlim=(0.3, 0.8), title="")
+        self.assertFalse(any(line.get_linestyle() == ":" for line in fig.axes[0].get_lines()))
+        self.assertTrue(fig._suptitle is None or fig._suptitle.get_text() == "")
+        plt.close(fig)
+        for run_name in ("paper-5.1-omega-up", "paper-6-u_r-up", "paper-4.2-u_s-up"):
+            fig = sp.figure([os.path.join(RESULTS, run_name)])
+            for word in INTERNAL_WORDS:
+                self.assertNotIn(word, fig._suptitle.get_text())
+            plt.close(fig)
+
+    def test_natural_frequencies_solve_eq_56(self):
+        import numpy
+        for chi, eta in ((0.3, 4.0), (0.22, 4.2), (0.7, 1.1)):
+            omega1, omega2 = sp.natural_frequencies(chi, eta)
+            roots = sorted(numpy.sqrt(numpy.roots([1.0, -(1 + chi * eta), chi * eta * (1 - chi)]).real))
+            self.assertAlmostEqual(omega1, roots[0], places=12)
+            self.assertAlmostEqual(omega2, roots[1], places=12)
+
+    def test_followed_branches_are_drawn(self):
+        fig = sp.figure([self.small.followed])
+        legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+        period_2 = sp.load(os.path.join(RESULTS, "paper-5.2-period-2")).signature
+        self.assertIn(period_2, legend)
+        plt.close(fig)
+
+    def test_invalid_options(self):
+        output = os.path.join(self.work, "refused.png")
+        branch, trace = self.small.branch, self.small.trace
+        cases = [
+            (["--dpi", "5"], "--dpi = '5' is invalid: valid 10 to 1200"),
+            (["--dpi", "many"], "--dpi = 'many' is invalid: valid 10 to 1200"),
+            (["--size", "40,30", "--dpi", "1000"], "--dpi = '1000' is invalid: valid at most 20000 pixels a side"),
+            (["--size", "0,3"], "--size = '0,3' is invalid: valid WIDTH,HEIGHT in inches, each 1 to 40"),
+            (["--size", "5"], "--size = '5' is invalid: valid WIDTH,HEIGHT"),
+            (["--xscale", "logarithmic"], "--xscale = 'logarithmic' is invalid: valid linear or log"),
+            (["--yscale", "LOG"], "--yscale = 'LOG' is invalid: valid linear or log"),
+            (["--xlim", "0.6,0.5"], "--xlim = '0.6,0.5' is invalid: valid LOW,HIGH: two finite numbers, low < high"),
+            (["--ylim", "nan,1"], "--ylim = 'nan,1' is invalid: valid LOW,HIGH"),
+            (["--yscale", "log", "--ylim", "0,10"], "--ylim = '0,10' is invalid: valid LOW,HIGH: two finite numbers, "
+                                                    "low < high and low > 0 on a log axis"),
+            (["--y", "amplitude:x3"], "--y = 'amplitude:x3' is invalid: valid a numeric column of every input: "),
+            (["--x", "signature"], "--x = 'signature' is invalid: valid a numeric column"),
+            (["--legend", "top"], "--legend = 'top' is invalid: valid right, inside or none"),
+            (["--colour", "red"], "option = '--colour' is invalid: valid one of --output"),
+        ]
+        for options, message in cases:
+            done = run("--output", output, *options, branch)
+            self.assertEqual(done.returncode, 2, f"{options}: exit {done.returncode}, {done.stderr}")
+            self.assertEqual(done.stderr.count("\n"), 1, f"{options}: one line: {done.stderr!r}")
+            self.assertTrue(done.stderr.startswith("error: " + message), f"{options}: {done.stderr!r}")
+            self.assertFalse(os.path.exists(output), f"{options}: nothing written")
+        for inputs, message in (([branch, self.small.orbit_type_map], "inputs = 'paper-5.1-omega-up' (branch) is invalid"),
+                                ([self.small.orbit_type_map], None), ([os.path.join(self.work, "nothing.csv")], "input = '"),
+                                ([os.path.join(RESULTS, "runs.md")], "input = '")):
+            done = run("--output", output, "--y", "amplitude:x2", *inputs)
+            if message is None:  # a map's axes are its parameters
+                message = "--y = 'amplitude:x2' is invalid: valid u_r (a map's axes are its two parameters"
+            self.assertEqual(done.returncode, 2, f"{inputs}: {done.stderr}")
+            self.assertEqual(done.stderr.count("\n"), 1, done.stderr)
+            self.assertIn(message, done.stderr)
+            self.assertFalse(os.path.exists(output))
+        # The script itself, as `stickslip plot` runs it: exit 2, one line, nothing written.
+        done = run_process("--output", output, "--dpi", "0", branch)
+        self.assertEqual((done.returncode, done.stderr), (2, "error: --dpi = '0' is invalid: valid 10 to 1200 dots "
+                                                             "per inch (default 150)\n"))
+        self.assertFalse(os.path.exists(output))
+        for extension in (".jpg", ".png.txt", ""):
+            done = run("--output", output + extension, trace)
+            if extension == "":
+                continue
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn("is invalid: valid a file name ending in .png, .pdf or .svg", done.stderr)
+            self.assertFalse(os.path.exists(output + extension))
+
+    def test_without_matplotlib_exit_3(self):
+        fake = os.path.join(self.work, "fake", "matplotlib")
+        os.makedirs(fake, exist_ok=True)
+        with open(os.path.join(fake, "__init__.py"), "w") as f:
+            f.write('raise ImportError("No module named matplotlib (test)")\n')
+        output = os.path.join(self.work, "none.png")
+        done = run("--output", output, self.small.trace, env=dict(os.environ, PYTHONPATH=os.path.join(self.work, "fake")))
+        self.assertEqual(done.returncode, 3, done.stderr)
+        self.assertFalse(os.path.exists(output))
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1])
