@@ -155,10 +155,11 @@ TEST(ColumnChecks, MeasuresAndCountsAreInTheirRanges) {
 
 class ColumnChecksOfATrace : public ::testing::Test {
  protected:
-  void SetUp() override {
+  void SetUp() override { Copy("paper-4.1-omega-trace"); }
+  void Copy(const std::string& trace) {
     dir_ = fs::temp_directory_path() / fmt::format("stickslip-column-checks-{}", ::getpid());
     fs::remove_all(dir_);
-    fs::copy(kResults / "paper-4.1-omega-trace", dir_, fs::copy_options::recursive);
+    fs::copy(kResults / trace, dir_, fs::copy_options::recursive);
   }
   void TearDown() override { fs::remove_all(dir_); }
   void Replace(const fs::path& file, const std::string& text) { std::ofstream(dir_ / file, std::ios::binary) << text; }
@@ -175,6 +176,18 @@ TEST_F(ColumnChecksOfATrace, ASignatureInTraceCsvIsParsed) {
   Replace("trace.csv", WithField(Slurp(dir_ / "trace.csv"), 3, "signature", "slip- bogus"));
   const std::string e = ErrorOf([&] { ReadTraceFiles(dir_); });
   EXPECT_EQ(e.find((dir_ / "trace.csv").string() + ":3: column 'signature' = 'slip- bogus' is invalid: "), 0u) << e;
+}
+
+// trace.json: a bifurcation's parameter in the continued parameter's range, its singularity >= 0.
+TEST_F(ColumnChecksOfATrace, ABifurcationsParameterInTraceJsonIsInItsRange) {
+  Copy("paper-5.1-omega-trace");
+  std::string json = Slurp(dir_ / "trace.json");
+  const std::size_t at = json.find("\"parameter\": 0.");
+  ASSERT_NE(at, std::string::npos);
+  json.replace(at, json.find(',', at) - at, "\"parameter\": 1e308");
+  Replace("trace.json", json);
+  const std::string e = ErrorOf([&] { ReadTraceFiles(dir_); });
+  EXPECT_NE(e.find(".parameter' = 1e+308 is invalid: valid 0.01 <= omega <= 100"), std::string::npos) << e;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -66,6 +67,12 @@ class JsonObject {
   }
   bool Flag(const std::string& key) { return Typed<bool>(key, &Json::is_boolean, "true or false"); }
   double Number(const std::string& key) { return Typed<double>(key, &Json::is_number, "a number"); }
+  // A number of a column kind (column_kinds.hpp).
+  double Number(const std::string& key, const detail::ValidValues& valid) {
+    const double value = Number(key);
+    if (!valid.Holds(value)) throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid {}", value, valid.text));
+    return value;
+  }
   std::size_t Count(const std::string& key) {
     return Typed<std::size_t>(key, &Json::is_number_unsigned, "a count (an integer >= 0)");
   }
@@ -165,6 +172,8 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   }
   const Json& branches = top.Get("branches");
   if (!branches.is_array()) throw KeyError(file, "branches", "is invalid: valid an array of branches");
+  const std::optional<ParameterId> parameter = ParameterFromString(t.parameter);
+  const detail::ValidValues lambda = parameter ? detail::BranchParameter(*parameter) : detail::Finite();
   for (std::size_t k = 0; k < branches.size(); ++k) {
     JsonObject b(branches[k], file, fmt::format("branches[{}]", k));
     StoredTraceBranch branch{.name = b.Text("name"),
@@ -197,9 +206,9 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
       JsonObject m(met[i], file, fmt::format("{}[{}]", b.Name("bifurcations"), i));
       branch.bifurcations.push_back({.label = m.Text("label"),
                                      .type = m.Text("type"),
-                                     .lambda = m.Number("parameter"),
+                                     .lambda = m.Number("parameter", lambda),
                                      .signature = m.SignatureText("signature", true),
-                                     .singularity = m.Number("singularity"),
+                                     .singularity = m.Number("singularity", detail::NonNegative()),
                                      .message = m.Text("message"),
                                      .followed = m.Text("followed")});
       m.Done();
