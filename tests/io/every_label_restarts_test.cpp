@@ -156,5 +156,37 @@ TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
   EXPECT_GE(labels, 280u);
 }
 
+// A run past the changes of type (continue_past_type_changes) stores labels whose segment has a
+// negative length (the section 4.1 sticking branch past its T0 at omega = 0.59998, as `continue
+// --point branch-2:TR2 --direction up --continue-past-type-changes` stores them): each restarts too.
+TEST(EveryLabel, PastAChangeOfTypeRestarts) {
+  StartInput input;
+  input.restart = ReadRestartPoint(kResults / "paper-4.1-omega-trace", "branch-2", "TR2");
+  input.parameter = "omega";
+  const StartProblem start = BuildStartProblem(input);
+  ContinuationOptions options;
+  options.lambda_max = 0.61;
+  options.continue_past_terminal = true;
+  options.max_points = 60;
+  RunFile run;
+  run.output = "past";
+  run.parameter = "omega";
+  const StoredRun stored = RecordRun(
+      run, ContinueOrbit({.start = start.orbit, .unknowns = start.unknowns, .parameter = "omega", .options = options}));
+  int negative = 0;
+  for (const StoredSpecialPoint& s : stored.special_points) {
+    if (!(s.point.orbit.durations[1] < 0.0)) continue;
+    ++negative;
+    SCOPED_TRACE(s.point.label);
+    StartInput again;
+    again.restart = RestartPoint{"past", s.point.label, stored.summary.signature, SolutionColumns(s.point.orbit)};
+    again.parameter = "omega";
+    const StartProblem from = BuildStartProblem(again);
+    EXPECT_EQ(from.orbit.durations[1], s.point.orbit.durations[1]);
+    ExpectOneStep(from, {"past", s.point.label, "omega", from.unknowns, ShootingChoice::kAuto});
+  }
+  EXPECT_GE(negative, 2);
+}
+
 }  // namespace
 }  // namespace stickslip

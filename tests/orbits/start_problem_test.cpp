@@ -89,6 +89,19 @@ TEST(StartProblem, RestartsFromAPointWhoseZeroLengthSegmentIsSlightlyNegative) {
   EXPECT_EQ(start.orbit.durations[2], 0.0);
 }
 
+// A point stored past a change of type (continue_past_type_changes) has a segment of negative
+// length, as its run computed it: a restart takes it as stored; the same value as a guess is refused.
+TEST(StartProblem, TakesARestartPointsNegativeDurationPastAChangeOfTypeAsStored) {
+  StartInput input;
+  input.restart = RestartPoint{"run", "GR5", "slip- slip+ stick slip+",
+                               {{"chi", 0.22}, {"eta", 4.2}, {"omega", 2 * std::numbers::pi / 11}, {"u_s", 0.0138},
+                                {"u_r", 0.4962}, {"x10", -0.36}, {"x20", 4.19}, {"v10", -0.26}, {"phi", 0.32},
+                                {"d1", 3.2663}, {"d2", 2.0}, {"d3", -0.078}, {"d4", 5.8117}}};
+  EXPECT_EQ(BuildStartProblem(input).orbit.durations[2], -0.078);
+  input.guess = {{"d3", -0.078}};
+  EXPECT_EQ(ErrorOf([&] { BuildStartProblem(input); }).field(), "d3");
+}
+
 // u_s <= 0 is the end of the physical family (a branch ends there with u_s = -2.7e-11, located
 // to the event tolerance): a restart there is refused, and the message says why.
 TEST(StartProblem, RefusesAStartAtTheFamilysEndSayingSo) {

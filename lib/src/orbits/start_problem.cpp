@@ -54,11 +54,13 @@ const PaperPreset* Preset(const std::string& name) {
 struct Values {
   Eigen::VectorXd x;
   std::vector<bool> given;
+  std::vector<bool> stored;  // the value is the restart point's, as its run computed it
   double v20 = 0.0;
 
-  void Assign(int index, double value) {
+  void Assign(int index, double value, bool from_restart = false) {
     x(index) = value;
     given[index] = true;
+    stored[index] = from_restart;
   }
 };
 
@@ -85,7 +87,8 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
                                                            input.restart->run, input.restart->label, input.preset));
   }
   RefuseRepeatedNames("set", input.set);
-  Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false)};
+  Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false),
+           std::vector<bool>(ov::Count(n), false)};
   if (preset != nullptr) {
     const Orbit guess = preset->Guess();
     const Eigen::VectorXd packed = ov::Pack(guess);
@@ -94,7 +97,7 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
   }
   if (input.restart) {
     for (const auto& [name, value] : input.restart->values) {
-      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Checked(name, value));
+      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Checked(name, value), true);
     }
   }
   for (const auto& [key, value] : input.set) {
@@ -113,7 +116,10 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
 }
 
 // Every duration given and within the period (IsDurationOfPeriod); a rounding-level negative one
-// is the zero-length segment it stands for, and starts as 0.
+// is the zero-length segment it stands for, and starts as 0. A restart point's own duration
+// beyond that range is a point its run stored past a change of orbit type (continue_past_type_
+// changes; the result files' reader admits it only on a row that is not admissible): the branch
+// restarts from it as it ran there, and its margins say it is no motion.
 void CheckDurations(const Values& v, Orbit* orbit) {
   const int n = orbit->signature.size();
   const double period = orbit->Period();
@@ -123,7 +129,7 @@ void CheckDurations(const Values& v, Orbit* orbit) {
       throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (0 to the period): give the duration of segment {}", name, i + 1));
     }
     double& d = orbit->durations[i];
-    if (!IsDurationOfPeriod(d, period)) {
+    if (!IsDurationOfPeriod(d, period) && !v.stored[ov::Duration(i)]) {
       throw InvalidInput(name, d,
                          fmt::format("0 <= {} <= {}, the orbit's period {} x 2 pi/omega, to rounding ({} of it)", name,
                                      period, orbit->signature.period_multiple(), kDurationRounding));

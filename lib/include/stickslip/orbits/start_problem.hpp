@@ -100,8 +100,9 @@ double ZeroLengthToRounding(double d, double period);
 // signature or restart point beside a preset must agree with it). Every parameter must be
 // given and valid (u_s <= 0 is refused as the end of the physical family), every duration given
 // and within the period (IsDurationOfPeriod: a zero-length segment is where a branch switches
-// type; a rounding-level negative one is taken as 0), v20 = 0 (an orbit starts at a stop). Throws
-// InvalidInput.
+// type; a rounding-level negative one is taken as 0) but a restart point's own, which is taken as
+// its run stored it (past a change of type, with continue_past_type_changes, a segment's length
+// may be negative), v20 = 0 (an orbit starts at a stop). Throws InvalidInput.
 StartProblem BuildStartProblem(const StartInput& input);
 
 // The unknowns BuildStartProblem chooses: the preset's (its paper choice with paper_choice), then
