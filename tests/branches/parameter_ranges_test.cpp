@@ -2,6 +2,9 @@
 // continued parameter's range stops at its valid range, a released u_s reaching zero ends the
 // family as an EP even past changes of orbit type, u_r >= u_s bounds a continuation in either
 // friction level, and nothing beyond an end is reported.
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
@@ -45,6 +48,30 @@ TEST(ParameterRanges, NothingBeyondTheFamilysEndIsReported) {
   for (const SpecialPoint& s : b.branch.special_points) {
     EXPECT_GT(b.orbits[s.point].parameters.u_s, -1e-9) << s.type << " at u_s = " << b.orbits[s.point].parameters.u_s;
   }
+}
+
+// Issue 22, defect 3: a range past the valid range (continue --preset paper-5.1 --parameter u_s
+// --range -1,1 --direction down) ended at the valid bound with two end labels on one point, EP2
+// (lambda_min) and EP3 (parameter-bound); so did every located bound and the family's end. The
+// located EP is the end: one end label.
+std::vector<std::string> EndLabels(const OrbitBranch& b) {
+  std::vector<std::string> at_end;
+  for (const SpecialPoint& s : b.branch.special_points) {
+    if (s.point == static_cast<int>(b.branch.points.size()) - 1) at_end.push_back(s.type + " " + s.test_function);
+  }
+  return at_end;
+}
+
+TEST(ParameterRanges, ARangePastTheValidRangeEndsWithOneEndLabel) {
+  const OrbitBranch b = ContinuePreset("paper-5.1", "u_s", -1, -1.0, 1.0, /*past_type_changes=*/false);
+  EXPECT_EQ(b.branch.end, BranchEnd::kParameterBound) << b.branch.end_message;
+  EXPECT_EQ(EndLabels(b), std::vector<std::string>{"EP lambda_min"});
+  const OrbitBranch family = ContinuePreset("paper-4.2", "omega", +1, 0.3, 0.9, /*past_type_changes=*/false);
+  EXPECT_EQ(EndLabels(family), std::vector<std::string>{"EP margin:sliding-friction"});
+  // An end at another located special point is a second row there, as before (LP3, then EP4).
+  const OrbitBranch fold = ContinuePreset("paper-5.2", "omega", +1, 0.3, 0.9, /*past_type_changes=*/false);
+  ASSERT_GE(EndLabels(fold).size(), 2u);
+  EXPECT_EQ(EndLabels(fold).back(), "EP terminal-event");
 }
 
 TEST(ParameterRanges, StaticFrictionStopsAtTheSlidingLevel) {

@@ -74,6 +74,37 @@ damage summary.json 'lines[:] = lines[:4]'
 expect_rejected "results/$run/summary.json: invalid JSON: parse error at line 5, column 1" export --auto "results/$run"
 expect_rejected "results/$run/summary.json: invalid JSON" check --results results "$root/continuation-scripts/$run.toml"
 
+# Issue 22, defect 8: columns the readers did not check. u_s = 1e308 in a branch file (plot, a
+# restart), d1 = -5 in a trace's branch (plot of the trace), a nan among a map file's section
+# points and a signature 'slip- bogus' there (map-sweep --merge, map --brute-force).
+damage branch.csv 'k = lines[0].split(",").index("u_s"); f = lines[2].split(","); f[k] = "1e308"; lines[2] = ",".join(f)'
+expect_rejected "results/$run/branch.csv:3: column 'u_s' = '1e308' is invalid: valid |u_s| <= 1000" plot "$run" --results results --output "$work/p.png"
+expect_rejected "results/$run/branch.csv:3: column 'u_s' = '1e308' is invalid" simulate --point "$run:UZ5" --results results --periods 1
+trace=paper-4.1-omega-trace
+/usr/bin/python3 - "$work/results/$trace/branch-1/branch.csv" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+k = lines[0].split(",").index("d1"); f = lines[1].split(","); f[k] = "-5"; lines[1] = ",".join(f)
+open(sys.argv[1], "w").write("\n".join(lines) + "\n")
+PY
+expect_rejected "results/$trace/branch-1/branch.csv:2: column 'd1' = '-5' is invalid: valid 0 <= d1 <=" plot "$trace" --results results --output "$work/p.png"
+map_file="$work/map.csv"
+damaged_map() {  # damaged_map <column> <value>: the committed section 6 map with one field of line 2 replaced
+  /usr/bin/python3 - "$root/results/maps/paper-6-omega-u_r-brute-force.csv" "$map_file" "$1" "$2" <<'PY'
+import sys
+source, target, column, value = sys.argv[1:]
+lines = open(source).read().splitlines()
+k = lines[0].split(",").index(column); f = lines[1].split(","); f[k] = value; lines[1] = ",".join(f)
+open(target, "w").write("\n".join(lines) + "\n")
+PY
+}
+damaged_map x1 nan
+expect_rejected "$map_file:2: column 'x1' = 'nan' is not a finite number" map-sweep --merge "$work/merged.csv" "$map_file"
+expect_rejected "$map_file:2: column 'x1' = 'nan' is not a finite number" map --trace "results/paper-6-omega-trace" --second u_r --second-from 1.2 --second-to 1.6 --brute-force "$map_file" --output "$work/my-map"
+damaged_map signature "slip- bogus"
+expect_rejected "$map_file:2: column 'signature' = 'slip- bogus' is invalid" map-sweep --merge "$work/merged.csv" "$map_file"
+[ ! -e "$work/merged.csv" ] || { echo "FAIL: a merge of a damaged map was written"; failures=$((failures + 1)); }
+
 # Nothing was written beside the damaged run, and no restart run was created.
 [ ! -e "$work/results/$run/b.$run" ] || { echo "FAIL: export wrote b.$run from a damaged run"; failures=$((failures + 1)); }
 [ ! -e "$work/results/restart-check" ] || { echo "FAIL: a restart from a damaged run was written"; failures=$((failures + 1)); }

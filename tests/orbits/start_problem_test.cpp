@@ -55,7 +55,66 @@ TEST(StartProblem, RefusesANegativeDuration) {
   input.guess[1].second = -0.5;  // d2
   const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
   EXPECT_EQ(e.field(), "d2");
-  EXPECT_EQ(e.valid_range(), "0 <= d2 <= 11, the orbit's period 1 x 2 pi/omega");
+  EXPECT_EQ(e.valid_range(), "0 <= d2 <= 11, the orbit's period 1 x 2 pi/omega, to rounding (1e-12 of it)");
+}
+
+// A located change of type gives its zero-length segment to rounding, of either sign (-4.7e-15
+// of a period of 20.3 at results/paper-4.2-omega-trace/branch-3:LP6, which a restart refused):
+// the builder takes a value within kDurationRounding of the period below zero as the zero-length
+// segment, 0, and refuses one beyond, built here directly.
+TEST(StartProblem, TakesARoundingLevelNegativeDurationAsAZeroLengthSegment) {
+  StartInput input = HandMadeSlipStick();
+  const double period = 11.0;
+  for (const double d : {-4.7e-15, -2.3e-16 * period, -kDurationRounding * period}) {
+    input.guess[2].second = d;  // d3
+    const StartProblem start = BuildStartProblem(input);
+    EXPECT_EQ(start.orbit.durations[2], 0.0) << d;
+    EXPECT_FALSE(std::signbit(start.orbit.durations[2])) << d;
+  }
+  input.guess[2].second = -3.0 * kDurationRounding * period;
+  EXPECT_EQ(ErrorOf([&] { BuildStartProblem(input); }).field(), "d3");
+}
+
+// The same through a restart point, as `continue --point RUN:LABEL` reads it.
+TEST(StartProblem, RestartsFromAPointWhoseZeroLengthSegmentIsSlightlyNegative) {
+  StartInput input;
+  input.restart = RestartPoint{"run", "LP6", "slip- slip+ stick slip+",
+                               {{"chi", 0.22}, {"eta", 4.2}, {"omega", 2 * std::numbers::pi / 11}, {"u_s", 0.0138},
+                                {"u_r", 0.4962}, {"x10", -0.36}, {"x20", 4.19}, {"v10", -0.26}, {"phi", 0.32},
+                                {"d1", 3.2663}, {"d2", 2.0}, {"d3", -4.7087812137759014e-15}, {"d4", 5.7337}}};
+  input.parameter = "omega";
+  input.free = {"u_r"};
+  input.fix = {{"d2", std::nullopt}};
+  const StartProblem start = BuildStartProblem(input);
+  EXPECT_EQ(start.orbit.durations[2], 0.0);
+}
+
+// A point stored past a change of type (continue_past_type_changes) has a segment of negative
+// length, as its run computed it: a restart takes it as stored; the same value as a guess is refused.
+TEST(StartProblem, TakesARestartPointsNegativeDurationPastAChangeOfTypeAsStored) {
+  StartInput input;
+  input.restart = RestartPoint{"run", "GR5", "slip- slip+ stick slip+",
+                               {{"chi", 0.22}, {"eta", 4.2}, {"omega", 2 * std::numbers::pi / 11}, {"u_s", 0.0138},
+                                {"u_r", 0.4962}, {"x10", -0.36}, {"x20", 4.19}, {"v10", -0.26}, {"phi", 0.32},
+                                {"d1", 3.2663}, {"d2", 2.0}, {"d3", -0.078}, {"d4", 5.8117}}};
+  EXPECT_EQ(BuildStartProblem(input).orbit.durations[2], -0.078);
+  input.guess = {{"d3", -0.078}};
+  EXPECT_EQ(ErrorOf([&] { BuildStartProblem(input); }).field(), "d3");
+}
+
+// u_s <= 0 is the end of the physical family (a branch ends there with u_s = -2.7e-11, located
+// to the event tolerance): a restart there is refused, and the message says why.
+TEST(StartProblem, RefusesAStartAtTheFamilysEndSayingSo) {
+  for (const double u_s : {-2.6862791665319474e-11, 0.0}) {
+    StartInput input = HandMadeSlipStick();
+    input.set[3].second = u_s;
+    const InvalidInput e = ErrorOf([&] { BuildStartProblem(input); });
+    EXPECT_EQ(e.field(), "u_s");
+    EXPECT_NE(std::string(e.what()).find("end of the physical family"), std::string::npos) << e.what();
+  }
+  StartInput input = HandMadeSlipStick();
+  input.set[3].second = 1e-7;  // below the valid range, but no family's end
+  EXPECT_EQ(std::string(ErrorOf([&] { BuildStartProblem(input); }).what()).find("family"), std::string::npos);
 }
 
 // A duration equal to the period to rounding (a solved one-segment orbit) is accepted; one

@@ -177,6 +177,35 @@ def test_a_stored_run_with_a_non_finite_orbit_variable_is_refused_on_load(tmp_pa
         stickslip.Branch.load(run)
 
 
+def test_a_map_file_with_a_nan_section_point_or_a_bogus_signature_is_refused_on_load(tmp_path):
+    # Issue 22, defect 8: MapSweepResult.load took both with no complaint.
+    source = (RESULTS / "maps" / "paper-6-omega-u_r-brute-force.csv").read_text().splitlines()
+    for column, value, message in (("x1", "nan", "column 'x1' = 'nan' is not a finite number"),
+                                   ("signature", "slip- bogus", "column 'signature' = 'slip- bogus' is invalid")):
+        lines = list(source)
+        fields = lines[1].split(",")
+        fields[lines[0].split(",").index(column)] = value
+        lines[1] = ",".join(fields)
+        path = tmp_path / f"{column}.csv"
+        path.write_text("\n".join(lines) + "\n")
+        with pytest.raises(ValueError, match=f"{column}.csv:2: " + message.replace("(", r"\(")):
+            stickslip.MapSweepResult.load(path)
+
+
+def test_a_stored_run_with_u_s_out_of_range_is_refused_on_load(tmp_path):
+    # Issue 22, defect 8: Branch.load took u_s = 1e308.
+    import shutil
+    run = tmp_path / "damaged"
+    shutil.copytree(f"{RESULTS}/paper-5.1-omega-up", run)
+    lines = (run / "branch.csv").read_text().splitlines()
+    fields = lines[2].split(",")
+    fields[lines[0].split(",").index("u_s")] = "1e308"
+    lines[2] = ",".join(fields)
+    (run / "branch.csv").write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=r"branch.csv:3: column 'u_s' = '1e308' is invalid: valid \|u_s\| <= 1000"):
+        stickslip.Branch.load(run)
+
+
 def test_many_guess_names_are_refused_at_once():
     # Issue 22: 100,000 names took 25 s (every pair compared for repeats) before the refusal.
     guess = {f"g{k}": 1.0 for k in range(100000)}

@@ -164,11 +164,24 @@ Branch Continuation::Run() {
   return branch_;
 }
 
+namespace {
+
+// Whether the branch ends on an end point its last step located (a parameter bound, a family's
+// end: an EP test function): that EP is the end, one end label a point, and the branch's end
+// and message say why. A start is no such point: a branch that ends there gets its end's EP.
+bool EndsOnALocatedEndPoint(const Branch& b) {
+  if (b.special_points.empty()) return false;
+  const SpecialPoint& s = b.special_points.back();
+  return s.type == "EP" && s.test_function != "start" && s.point == static_cast<int>(b.points.size()) - 1;
+}
+
+}  // namespace
+
 bool Continuation::End(BranchEnd why, std::string message) {
   state_->ended = true;
   branch_.end = why;
   branch_.end_message = std::move(message);
-  if (!branch_.points.empty()) {
+  if (!branch_.points.empty() && !EndsOnALocatedEndPoint(branch_)) {
     if (branch_.points.back().label.empty()) branch_.points.back().label = "EP";
     MarkLastPoint(&branch_, "EP", ToString(why));
   }

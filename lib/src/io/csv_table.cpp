@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -72,9 +73,20 @@ double CsvTable::Number(int row, int column) const {
   return value;
 }
 
-double CsvTable::FiniteNumber(int row, int column) const {
+double CsvTable::Value(int row, int column, const ValidValues& valid) const {
   const double value = Number(row, column);
-  if (!std::isfinite(value)) throw Error(row, column, "is not a finite number");
+  if (valid.Holds(value)) return value;
+  const bool finite_only = !valid.inf && !valid.nan;
+  if (finite_only && !std::isfinite(value)) throw Error(row, column, fmt::format("is not a finite number: valid {}", valid.text));
+  throw Error(row, column, fmt::format("is invalid: valid {}", valid.text));
+}
+
+int CsvTable::Integer(int row, int column, int min, int max) const {
+  const int value = Integer(row, column);
+  if (value < min || value > max) {
+    throw Error(row, column, max == std::numeric_limits<int>::max() ? fmt::format("is invalid: valid an integer >= {}", min)
+                                                                   : fmt::format("is invalid: valid {} to {}", min, max));
+  }
   return value;
 }
 

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "column_kinds.hpp"
 #include "stickslip/invalid_input.hpp"
 
 namespace stickslip::detail {
@@ -27,11 +28,12 @@ class CsvTable {
   int Find(std::string_view name) const;
 
   const std::string& Text(int row, int column) const { return rows_[row].fields[column]; }
-  // The whole field as a double in the form fmt writes ("0.5", "1e-08", "inf", "-inf", "nan").
-  double Number(int row, int column) const;
-  // Number, finite: for the columns a writer never leaves non-finite (an orbit's variables).
-  double FiniteNumber(int row, int column) const;
+  // Number, one of the column kind's valid values (column_kinds.hpp): the one check of every
+  // numeric column of a kind, "<file>:<line>: column '<name>' = '<text>' is invalid: valid ...".
+  double Value(int row, int column, const ValidValues& valid) const;
   int Integer(int row, int column) const;
+  // Integer, min <= value <= max.
+  int Integer(int row, int column, int min, int max) const;
   bool Flag(int row, int column) const;  // "1" or "0"
 
   // "<file>:<line>: column '<name>' = '<text>' <what>".
@@ -41,6 +43,10 @@ class CsvTable {
   InvalidInput HeaderError(std::string_view what) const;
 
  private:
+  // The whole field as a double in the form fmt writes ("0.5", "1e-08", "inf", "-inf", "nan"); a
+  // reader takes it as Value, checked by its kind.
+  double Number(int row, int column) const;
+
   struct Row {
     int line = 0;  // 1-based line in the file
     std::vector<std::string> fields;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <limits>
 #include <system_error>
 #include <map>
 #include <optional>
@@ -15,6 +16,7 @@
 
 #include "csv_table.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/signature.hpp"
 
 namespace stickslip {
 
@@ -58,8 +60,22 @@ std::string BruteForceMapCsv(const BruteForceMap& map) {
   return out;
 }
 
-BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& name) {
-  const detail::CsvTable table(text, name);
+namespace {
+
+using detail::CsvTable;
+
+// Where the fields of a row are; i, j, ni, nj and the two parameters are the first six columns.
+struct MapColumns {
+  explicit MapColumns(const CsvTable& t)
+      : phase(t.Column("section_phase")), run(t.Column("run")), count(t.Column("attractors")),
+        index(t.Column("attractor")), status(t.Column("status")), period(t.Column("period")),
+        stops(t.Column("stops_per_period")), sticks(t.Column("sticks_per_period")), starts(t.Column("starts")),
+        signature(t.Column("signature")), k(t.Column("k")), x1(t.Column("x1")) {}
+  static constexpr int i = 0, j = 1, ni = 2, nj = 3, first = 4, second = 5;
+  int phase, run, count, index, status, period, stops, sticks, starts, signature, k, x1;
+};
+
+std::pair<ParameterId, ParameterId> MapParameters(const CsvTable& table) {
   const std::vector<std::string>& header = table.header();
   std::optional<ParameterId> first, second;
   if (header.size() == 21) {
@@ -69,102 +85,117 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
   if (!first || !second || fmt::format("{}", fmt::join(header, ",")) != Header(*first, *second)) {
     throw table.HeaderError(fmt::format("the header is invalid: valid {}", Header(ParameterId::kOmega, ParameterId::kStaticFriction)));
   }
-  BruteForceMap map{*first, *second, 0, 0, 0.0, 0, {}};
-  const auto column = [&](const char* c) { return table.Column(c); };
-  const int ci = 0, cj = 1, cni = 2, cnj = 3, cfirst = 4, csecond = 5;
-  const int cphase = column("section_phase"), crun = column("run"), ccount = column("attractors"), cindex = column("attractor"),
-            cstatus = column("status"), cperiod = column("period"), cstops = column("stops_per_period"),
-            csticks = column("sticks_per_period"), cstarts = column("starts"), csignature = column("signature"),
-            ck = column("k"), cx = column("x1");
-  for (int row = 0; row < table.rows(); ++row) {
-    const int i = table.Integer(row, ci), j = table.Integer(row, cj);
-    const int ni = table.Integer(row, cni), nj = table.Integer(row, cnj);
-    const double phase = table.FiniteNumber(row, cphase);
-    const std::string& run = table.Text(row, crun);
-    std::uint64_t fingerprint = 0;
-    const auto [end, error] = std::from_chars(run.data(), run.data() + run.size(), fingerprint, 16);
-    if (run.size() != 16 || error != std::errc() || end != run.data() + run.size()) {
-      throw table.Error(row, crun, "is invalid: valid 16 hexadecimal digits");
-    }
-    if (row == 0) {
-      map.first_count = ni;
-      map.second_count = nj;
-      map.section_phase = phase;
-      map.run = fingerprint;
-    }
-    for (const int c : {cni, cnj}) {
-      if (!(table.Integer(row, c) >= 1 && table.Integer(row, c) <= BruteForceMapOptions::kMaxSteps + 1)) {
-        throw table.Error(row, c, fmt::format("is invalid: valid 1 to {} cells", BruteForceMapOptions::kMaxSteps + 1));
-      }
-    }
-    if (ni != map.first_count) throw table.Error(row, cni, fmt::format("differs from the first row's {}", map.first_count));
-    if (nj != map.second_count) throw table.Error(row, cnj, fmt::format("differs from the first row's {}", map.second_count));
-    if (phase != map.section_phase) throw table.Error(row, cphase, "differs from the first row's");
-    if (fingerprint != map.run) throw table.Error(row, crun, "differs from the first row's");
-    if (!(i >= 0 && i < ni)) throw table.Error(row, ci, fmt::format("is invalid: valid 0 <= i < ni = {}", ni));
-    if (!(j >= 0 && j < nj)) throw table.Error(row, cj, fmt::format("is invalid: valid 0 <= j < nj = {}", nj));
-    const bool new_cell = map.cells.empty() || map.cells.back().i != i || map.cells.back().j != j;
-    if (new_cell) {
-      if (!map.cells.empty() && std::pair{j, i} <= std::pair{map.cells.back().j, map.cells.back().i}) {
-        throw table.Error(row, "the cell comes after a later one or twice: valid cells by j then i, each once");
-      }
-      if (!map.cells.empty() &&
-          map.cells.back().attractors.size() != static_cast<std::size_t>(table.Integer(row - 1, ccount))) {
-        throw table.Error(row - 1, ccount, "is not the number of attractors the cell lists");
-      }
-      map.cells.push_back({i, j, table.FiniteNumber(row, cfirst), table.FiniteNumber(row, csecond), {}});
-    }
-    // A cell's rows agree on its attractor count, an attractor's rows on all but k and the state
-    // (rows of one cell, and of one attractor, are consecutive): else the file is not one a
-    // writer wrote, and would be written back otherwise.
-    if (!new_cell && table.Text(row, ccount) != table.Text(row - 1, ccount)) {
-      throw table.Error(row, ccount, "differs from the cell's first row");
-    }
-    MapCell& cell = map.cells.back();
-    if (table.FiniteNumber(row, cfirst) != cell.first) throw table.Error(row, cfirst, "differs from the cell's first row");
-    if (table.FiniteNumber(row, csecond) != cell.second) throw table.Error(row, csecond, "differs from the cell's first row");
-    const int index = table.Integer(row, cindex);
-    const int k = table.Integer(row, ck);
-    const bool new_attractor = cell.attractors.empty() || index != static_cast<int>(cell.attractors.size()) - 1;
-    if (new_attractor) {
-      if (index != static_cast<int>(cell.attractors.size())) {
-        throw table.Error(row, cindex, fmt::format("is invalid: valid {} (attractors are numbered from 0)", cell.attractors.size()));
-      }
-      Attractor a;
-      if (!FromString(table.Text(row, cstatus), &a.status)) {
-        throw table.Error(row, cstatus, "is invalid: valid periodic, not-settled, incomplete");
-      }
-      a.period = table.Integer(row, cperiod);
-      a.stops_per_period = table.FiniteNumber(row, cstops);
-      a.sticks_per_period = table.FiniteNumber(row, csticks);
-      a.starts = table.Integer(row, cstarts);
-      a.signature = table.Text(row, csignature);
-      const bool periodic = a.status == AttractorStatus::kPeriodic;
-      if (periodic ? a.period < 1 : a.period != 0) {
-        throw table.Error(row, cperiod, periodic ? "is invalid: valid period >= 1" : "is invalid: valid 0 unless periodic");
-      }
-      if (a.starts < 1) throw table.Error(row, cstarts, "is invalid: valid starts >= 1");
-      cell.attractors.push_back(std::move(a));
-    }
-    if (!new_attractor) {
-      for (const int c : {cstatus, cperiod, cstops, csticks, cstarts, csignature}) {
-        if (table.Text(row, c) != table.Text(row - 1, c)) throw table.Error(row, c, "differs from the attractor's first row");
-      }
-    }
-    Attractor& a = cell.attractors.back();
-    const int points = a.status == AttractorStatus::kPeriodic ? a.period : 1;
-    if (k != static_cast<int>(a.section.size()) || k >= points) {
-      throw table.Error(row, ck, fmt::format("is invalid: valid {} (k = 0..{} in order)", a.section.size(), points - 1));
-    }
-    State x;
-    for (int c = 0; c < 4; ++c) x(c) = table.Number(row, cx + c);
-    a.section.push_back(x);
+  return {*first, *second};
+}
+
+std::uint64_t Fingerprint(const CsvTable& t, int row, int column) {
+  const std::string& run = t.Text(row, column);
+  std::uint64_t fingerprint = 0;
+  const auto [end, error] = std::from_chars(run.data(), run.data() + run.size(), fingerprint, 16);
+  if (run.size() != 16 || error != std::errc() || end != run.data() + run.size()) {
+    throw t.Error(row, column, "is invalid: valid 16 hexadecimal digits");
   }
-  if (!map.cells.empty()) {
-    const int last = table.rows() - 1;
-    if (map.cells.back().attractors.size() != static_cast<std::size_t>(table.Integer(last, ccount))) {
-      throw table.Error(last, ccount, "is not the number of attractors the cell lists");
+  return fingerprint;
+}
+
+// The grid's columns (ni, nj, section_phase, run): valid, and in every row as in the first.
+void ReadGrid(const CsvTable& t, int row, const MapColumns& c, BruteForceMap* map) {
+  const int max_cells = BruteForceMapOptions::kMaxSteps + 1;
+  const int ni = t.Integer(row, c.ni, 1, max_cells), nj = t.Integer(row, c.nj, 1, max_cells);
+  const double phase = t.Value(row, c.phase, detail::Finite());
+  const std::uint64_t fingerprint = Fingerprint(t, row, c.run);
+  if (row == 0) {
+    map->first_count = ni;
+    map->second_count = nj;
+    map->section_phase = phase;
+    map->run = fingerprint;
+  }
+  if (ni != map->first_count) throw t.Error(row, c.ni, fmt::format("differs from the first row's {}", map->first_count));
+  if (nj != map->second_count) throw t.Error(row, c.nj, fmt::format("differs from the first row's {}", map->second_count));
+  if (phase != map->section_phase) throw t.Error(row, c.phase, "differs from the first row's");
+  if (fingerprint != map->run) throw t.Error(row, c.run, "differs from the first row's");
+}
+
+// The row's cell: a new one after the last (cells by j then i, each once), or the last again.
+MapCell& ReadCell(const CsvTable& t, int row, const MapColumns& c, BruteForceMap* map) {
+  const int i = t.Integer(row, c.i, 0, map->first_count - 1), j = t.Integer(row, c.j, 0, map->second_count - 1);
+  const double first = t.Value(row, c.first, detail::ModelParameter(map->first));
+  const double second = t.Value(row, c.second, detail::ModelParameter(map->second));
+  const bool new_cell = map->cells.empty() || map->cells.back().i != i || map->cells.back().j != j;
+  if (new_cell) {
+    if (!map->cells.empty() && std::pair{j, i} <= std::pair{map->cells.back().j, map->cells.back().i}) {
+      throw t.Error(row, "the cell comes after a later one or twice: valid cells by j then i, each once");
     }
+    if (!map->cells.empty() && map->cells.back().attractors.size() != static_cast<std::size_t>(t.Integer(row - 1, c.count))) {
+      throw t.Error(row - 1, c.count, "is not the number of attractors the cell lists");
+    }
+    map->cells.push_back({i, j, first, second, {}});
+  }
+  // A cell's rows agree on its attractor count, an attractor's rows on all but k and the state
+  // (rows of one cell, and of one attractor, are consecutive): else the file is not one a
+  // writer wrote, and would be written back otherwise.
+  if (!new_cell && t.Text(row, c.count) != t.Text(row - 1, c.count)) throw t.Error(row, c.count, "differs from the cell's first row");
+  MapCell& cell = map->cells.back();
+  if (first != cell.first) throw t.Error(row, c.first, "differs from the cell's first row");
+  if (second != cell.second) throw t.Error(row, c.second, "differs from the cell's first row");
+  return cell;
+}
+
+// An attractor's own columns, each by its kind; the signature parsed.
+Attractor ReadAttractor(const CsvTable& t, int row, const MapColumns& c) {
+  Attractor a;
+  if (!FromString(t.Text(row, c.status), &a.status)) throw t.Error(row, c.status, "is invalid: valid periodic, not-settled, incomplete");
+  const bool periodic = a.status == AttractorStatus::kPeriodic;
+  a.period = t.Integer(row, c.period);
+  if (periodic ? a.period < 1 : a.period != 0) {
+    throw t.Error(row, c.period, periodic ? "is invalid: valid period >= 1" : "is invalid: valid 0 unless periodic");
+  }
+  a.stops_per_period = t.Value(row, c.stops, detail::NonNegative());
+  a.sticks_per_period = t.Value(row, c.sticks, detail::NonNegative());
+  a.starts = t.Integer(row, c.starts, 1, std::numeric_limits<int>::max());
+  a.signature = t.Text(row, c.signature);
+  if (!a.signature.empty()) {
+    try {
+      Signature::Parse(a.signature);
+    } catch (const InvalidInput& e) {
+      throw t.Error(row, c.signature, fmt::format("is invalid: {}", e.what()));
+    }
+  }
+  return a;
+}
+
+// The row's attractor: a new one (numbered from 0) or the last again, unchanged.
+Attractor& ReadRowAttractor(const CsvTable& t, int row, const MapColumns& c, MapCell& cell) {
+  const int index = t.Integer(row, c.index);
+  if (!cell.attractors.empty() && index == static_cast<int>(cell.attractors.size()) - 1) {
+    for (const int column : {c.status, c.period, c.stops, c.sticks, c.starts, c.signature}) {
+      if (t.Text(row, column) != t.Text(row - 1, column)) throw t.Error(row, column, "differs from the attractor's first row");
+    }
+    return cell.attractors.back();
+  }
+  if (index != static_cast<int>(cell.attractors.size())) {
+    throw t.Error(row, c.index, fmt::format("is invalid: valid {} (attractors are numbered from 0)", cell.attractors.size()));
+  }
+  cell.attractors.push_back(ReadAttractor(t, row, c));
+  return cell.attractors.back();
+}
+
+// The row's section point, k = 0, 1, ... in order; each component finite.
+void ReadSectionPoint(const CsvTable& t, int row, const MapColumns& c, Attractor& a) {
+  const int points = a.status == AttractorStatus::kPeriodic ? a.period : 1;
+  const int k = t.Integer(row, c.k);
+  if (k != static_cast<int>(a.section.size()) || k >= points) {
+    throw t.Error(row, c.k, fmt::format("is invalid: valid {} (k = 0..{} in order)", a.section.size(), points - 1));
+  }
+  State x;
+  for (int component = 0; component < 4; ++component) x(component) = t.Value(row, c.x1 + component, detail::Finite());
+  a.section.push_back(x);
+}
+
+// Every cell's last attractor count, and every attractor's number of section points.
+void CheckCounts(const CsvTable& t, const BruteForceMap& map, const std::string& name, const MapColumns& c) {
+  if (!map.cells.empty() && map.cells.back().attractors.size() != static_cast<std::size_t>(t.Integer(t.rows() - 1, c.count))) {
+    throw t.Error(t.rows() - 1, c.count, "is not the number of attractors the cell lists");
   }
   for (const MapCell& cell : map.cells) {
     for (const Attractor& a : cell.attractors) {
@@ -176,6 +207,21 @@ BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& nam
       }
     }
   }
+}
+
+}  // namespace
+
+BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& name) {
+  const CsvTable table(text, name);
+  const auto [first, second] = MapParameters(table);
+  BruteForceMap map{first, second, 0, 0, 0.0, 0, {}};
+  const MapColumns columns(table);
+  for (int row = 0; row < table.rows(); ++row) {
+    ReadGrid(table, row, columns, &map);
+    MapCell& cell = ReadCell(table, row, columns, &map);
+    ReadSectionPoint(table, row, columns, ReadRowAttractor(table, row, columns, cell));
+  }
+  CheckCounts(table, map, name, columns);
   return map;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <span>
@@ -202,28 +203,60 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   return c;
 }
 
-// A measure from its column: a count as a whole number, any other as a number.
-void ReadField(const CsvTable& t, int row, int column, int* count) { *count = t.Integer(row, column); }
-void ReadField(const CsvTable& t, int row, int column, double* value) { *value = t.Number(row, column); }
+// A measure from its column (column_kinds.hpp): a count as a whole number >= 0, the stick
+// fraction 0 to 1 where admissible, any other as a number >= 0.
+void ReadField(const CsvTable& t, int row, int column, bool, int* count) {
+  *count = t.Integer(row, column, 0, std::numeric_limits<int>::max());
+}
+void ReadField(const CsvTable& t, int row, int column, bool admissible, double* value) {
+  const bool fraction = t.header()[column] == orbit_columns::kStickFraction;
+  *value = t.Value(row, column, fraction ? detail::Fraction(admissible) : detail::NonNegative());
+}
 
-StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
-  Eigen::VectorXd variables(ov::Count(signature.size()));
-  for (const auto& [column, index] : c.variables) variables(index) = t.FiniteNumber(row, column);
-  StoredPoint p{.pt = t.Integer(row, c.pt), .label = t.Text(row, c.label), .orbit = ov::Unpack(signature, variables)};
-  for (int column : c.margins) {
-    p.margins.emplace_back(t.header()[column].substr(kMarginPrefix.size()), t.Number(row, column));
+// The row's orbit, each variable by its kind: the parameters in their ranges on a branch, the
+// state and phase finite, then each duration within the period that omega gives.
+Orbit ParseOrbit(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature, bool admissible) {
+  const int n = signature.size();
+  const int first_parameter = ov::Parameter(n, ParameterId::kChi);
+  Eigen::VectorXd variables = Eigen::VectorXd::Zero(ov::Count(n));
+  for (const auto& [column, index] : c.variables) {
+    if (index >= first_parameter) {
+      variables(index) = t.Value(row, column, detail::BranchParameter(kAllParameters[index - first_parameter]));
+    } else if (index < ov::Duration(0)) {
+      variables(index) = t.Value(row, column, detail::Finite());
+    }
   }
-  for (const auto& [re, im] : c.multipliers) p.multipliers.emplace_back(t.Number(row, re), t.Number(row, im));
+  Orbit orbit = ov::Unpack(signature, variables);
+  for (const auto& [column, index] : c.variables) {
+    if (index < ov::Duration(0) || index >= ov::Duration(n)) continue;
+    const detail::ValidValues valid = detail::Duration(t.header()[column], orbit.Period(), admissible);
+    orbit.durations[index - ov::Duration(0)] = t.Value(row, column, valid);
+  }
+  return orbit;
+}
+
+// Every column by its kind (column_kinds.hpp); the non-finite values only where the format has them.
+StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
+  const bool admissible = t.Flag(row, c.admissible);
+  StoredPoint p{.pt = t.Integer(row, c.pt, 1, std::numeric_limits<int>::max()),
+                .label = t.Text(row, c.label),
+                .orbit = ParseOrbit(t, row, c, signature, admissible)};
+  for (int column : c.margins) {
+    p.margins.emplace_back(t.header()[column].substr(kMarginPrefix.size()), t.Value(row, column, detail::Margin()));
+  }
+  const detail::ValidValues floquet = detail::FloquetValue();
+  for (const auto& [re, im] : c.multipliers) p.multipliers.emplace_back(t.Value(row, re, floquet), t.Value(row, im, floquet));
   p.stable = t.Flag(row, c.stability[0]);
-  p.fold_test = t.Number(row, c.stability[1]);
-  p.flip_test = t.Number(row, c.stability[2]);
-  p.torus_test = t.Number(row, c.stability[3]);
-  p.symmetry_test = t.Number(row, c.stability[4]);
-  p.admissible = t.Flag(row, c.admissible);
-  orbit_columns::ForEachMeasure(p.measures,
-                                [&, k = 0](const char*, auto& field) mutable { ReadField(t, row, c.measures[k++], &field); });
-  p.newton_iterations = t.Integer(row, c.step[0]);
-  p.step_size = t.Number(row, c.step[1]);
+  p.fold_test = t.Value(row, c.stability[1], floquet);
+  p.flip_test = t.Value(row, c.stability[2], floquet);
+  p.torus_test = t.Value(row, c.stability[3], floquet);
+  p.symmetry_test = t.Value(row, c.stability[4], detail::SymmetryTest(signature.antisymmetric()));
+  p.admissible = admissible;
+  orbit_columns::ForEachMeasure(p.measures, [&, k = 0](const char*, auto& field) mutable {
+    ReadField(t, row, c.measures[k++], admissible, &field);
+  });
+  p.newton_iterations = t.Integer(row, c.step[0], 0, std::numeric_limits<int>::max());
+  p.step_size = t.Value(row, c.step[1], detail::NonNegative());
   return p;
 }
 

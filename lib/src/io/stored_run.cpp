@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/orbits/start_problem.hpp"
 #include "stickslip/version.hpp"
 
 namespace stickslip {
@@ -49,6 +50,29 @@ std::vector<std::string> SpecialPointLabels(const Branch& branch) {
   return special;
 }
 
+namespace {
+
+// The point as stored: a duration at rounding level below zero is the zero-length segment it
+// stands for (start_problem.hpp, ZeroLengthToRounding), so no stored duration is negative but one
+// past a change of type. Its margin duration:i, d_i itself, follows; so do the measures, which a
+// row holds of its own stored orbit.
+void StoreZeroLengthSegments(StoredPoint* point) {
+  Orbit& orbit = point->orbit;
+  bool changed = false;
+  for (std::size_t i = 0; i < orbit.durations.size(); ++i) {
+    const double d = ZeroLengthToRounding(orbit.durations[i], orbit.Period());
+    if (d == orbit.durations[i]) continue;
+    orbit.durations[i] = d;
+    changed = true;
+    for (auto& [name, value] : point->margins) {
+      if (name == fmt::format("duration:{}", i + 1)) value = d;
+    }
+  }
+  if (changed) point->measures = Measure(orbit);
+}
+
+}  // namespace
+
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
   // The monitor's columns by name: its margins, then what it records of the stability and the
   // orbit's measures.
@@ -80,6 +104,7 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
     });
     point.newton_iterations = p.newton_iterations;
     point.step_size = p.ds;
+    StoreZeroLengthSegments(&point);
     return point;
   };
 

@@ -1,6 +1,8 @@
 #include "stickslip/io/trace_files.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <optional>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -52,8 +54,25 @@ class JsonObject {
     return *it;
   }
   std::string Text(const std::string& key) { return Typed<std::string>(key, &Json::is_string, "a string"); }
+  // A signature (Signature::Parse reads it), or "" where `may_be_empty`.
+  std::string SignatureText(const std::string& key, bool may_be_empty) {
+    std::string text = Text(key);
+    if (may_be_empty && text.empty()) return text;
+    try {
+      Signature::Parse(text);
+    } catch (const InvalidInput& e) {
+      throw KeyError(file_, Name(key), fmt::format("= '{}' is invalid: {}", text, e.what()));
+    }
+    return text;
+  }
   bool Flag(const std::string& key) { return Typed<bool>(key, &Json::is_boolean, "true or false"); }
   double Number(const std::string& key) { return Typed<double>(key, &Json::is_number, "a number"); }
+  // A number of a column kind (column_kinds.hpp).
+  double Number(const std::string& key, const detail::ValidValues& valid) {
+    const double value = Number(key);
+    if (!valid.Holds(value)) throw KeyError(file_, Name(key), fmt::format("= {} is invalid: valid {}", value, valid.text));
+    return value;
+  }
   std::size_t Count(const std::string& key) {
     return Typed<std::size_t>(key, &Json::is_number_unsigned, "a count (an integer >= 0)");
   }
@@ -131,7 +150,7 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   t.stickslip_version = top.Text("stickslip_version");
   t.output = top.Text("output");
   t.parameter = top.Text("parameter");
-  t.signature = top.Text("signature");
+  t.signature = top.SignatureText("signature", false);
   const Json& directions = top.Get("directions");
   if (!directions.is_array() || directions.size() != 2) {
     throw KeyError(file, "directions", "is invalid: valid an array of two directions, down and up");
@@ -153,12 +172,14 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   }
   const Json& branches = top.Get("branches");
   if (!branches.is_array()) throw KeyError(file, "branches", "is invalid: valid an array of branches");
+  const std::optional<ParameterId> parameter = ParameterFromString(t.parameter);
+  const detail::ValidValues lambda = parameter ? detail::BranchParameter(*parameter) : detail::Finite();
   for (std::size_t k = 0; k < branches.size(); ++k) {
     JsonObject b(branches[k], file, fmt::format("branches[{}]", k));
     StoredTraceBranch branch{.name = b.Text("name"),
                              .chain = b.Text("chain"),
                              .direction = b.Text("direction"),
-                             .signature = b.Text("signature"),
+                             .signature = b.SignatureText("signature", false),
                              .points = b.Count("points"),
                              .start = b.Text("start"),
                              .margin = b.Text("margin")};
@@ -172,7 +193,7 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
       branch.type_switch = {.status = s.Text("status"),
                             .bifurcation = s.Text("bifurcation"),
                             .edit = s.Text("edit"),
-                            .adjacent = s.Text("adjacent"),
+                            .adjacent = s.SignatureText("adjacent", true),
                             .persists = s.Flag("persists"),
                             .from_past = s.Flag("from_past")};
       s.Done();
@@ -185,9 +206,9 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
       JsonObject m(met[i], file, fmt::format("{}[{}]", b.Name("bifurcations"), i));
       branch.bifurcations.push_back({.label = m.Text("label"),
                                      .type = m.Text("type"),
-                                     .lambda = m.Number("parameter"),
-                                     .signature = m.Text("signature"),
-                                     .singularity = m.Number("singularity"),
+                                     .lambda = m.Number("parameter", lambda),
+                                     .signature = m.SignatureText("signature", true),
+                                     .singularity = m.Number("singularity", detail::NonNegative()),
                                      .message = m.Text("message"),
                                      .followed = m.Text("followed")});
       m.Done();
@@ -226,6 +247,17 @@ std::string FormatCsv(const StoredTrace& t) {
   return text;
 }
 
+// A signature column: one Signature::Parse reads.
+std::string ParsedSignature(const CsvTable& table, int row, int column) {
+  const std::string& text = table.Text(row, column);
+  try {
+    Signature::Parse(text);
+  } catch (const InvalidInput& e) {
+    throw table.Error(row, column, fmt::format("is invalid: {}", e.what()));
+  }
+  return text;
+}
+
 std::vector<StoredTracePoint> ParseCsv(const std::string& text, const fs::path& file, const std::string& parameter) {
   const CsvTable table(text, file);
   const std::vector<std::string> header = CsvHeader(parameter);
@@ -233,19 +265,18 @@ std::vector<StoredTracePoint> ParseCsv(const std::string& text, const fs::path& 
     throw table.HeaderError(fmt::format("the columns are invalid: valid {}", fmt::join(header, ",")));
   }
   std::vector<StoredTracePoint> points;
+  const detail::ValidValues finite = detail::Finite();
   for (int r = 0; r < table.rows(); ++r) {
-    const int branch = table.Integer(r, 0);
-    if (branch < 1) throw table.Error(r, 0, "is invalid: valid a branch number >= 1");
-    points.push_back({.branch = static_cast<std::size_t>(branch),
-                      .signature = table.Text(r, 1),
-                      .pt = table.Integer(r, 2),
+    points.push_back({.branch = static_cast<std::size_t>(table.Integer(r, 0, 1, std::numeric_limits<int>::max())),
+                      .signature = ParsedSignature(table, r, 1),
+                      .pt = table.Integer(r, 2, 1, std::numeric_limits<int>::max()),
                       .label = table.Text(r, 3),
-                      .lambda = table.FiniteNumber(r, 4),
-                      .phi = table.FiniteNumber(r, 5),
-                      .period = table.FiniteNumber(r, 6),
-                      .x10 = table.FiniteNumber(r, 7),
-                      .x20 = table.FiniteNumber(r, 8),
-                      .v10 = table.FiniteNumber(r, 9),
+                      .lambda = table.Value(r, 4, finite),
+                      .phi = table.Value(r, 5, finite),
+                      .period = table.Value(r, 6, detail::NonNegative()),
+                      .x10 = table.Value(r, 7, finite),
+                      .x20 = table.Value(r, 8, finite),
+                      .v10 = table.Value(r, 9, finite),
                       .stable = table.Flag(r, 10),
                       .admissible = table.Flag(r, 11)});
   }
@@ -418,11 +449,15 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
   }
   const fs::path csv_file = trace_directory / kTraceCsv;
   t.points = ParseCsv(detail::ReadTextFile(csv_file), csv_file, t.parameter);
-  if (FormatCsv(t) != FormatCsv({.parameter = t.parameter, .points = PointsOf(t.runs, t.parameter)})) {
+  const std::string read = FormatCsv(t);
+  const std::string expected = FormatCsv({.parameter = t.parameter, .points = PointsOf(t.runs, t.parameter)});
+  if (read != expected) {
+    const auto [r, e] = std::mismatch(read.begin(), read.end(), expected.begin(), expected.end());
+    const auto line = 1 + std::count(read.begin(), r, '\n');
     throw InvalidInput::WithMessage(csv_file.string(),
-                                    fmt::format("{}: differs from the branches' files: valid one row per point of "
+                                    fmt::format("{}:{}: differs from the branches' files: valid one row per point of "
                                                 "every branch, as they have them",
-                                                csv_file.string()));
+                                                csv_file.string(), line));
   }
   return t;
 }

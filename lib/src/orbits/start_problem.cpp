@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <string_view>
 #include <unordered_map>
 
@@ -55,11 +54,13 @@ const PaperPreset* Preset(const std::string& name) {
 struct Values {
   Eigen::VectorXd x;
   std::vector<bool> given;
+  std::vector<bool> stored;  // the value is the restart point's, as its run computed it
   double v20 = 0.0;
 
-  void Assign(int index, double value) {
+  void Assign(int index, double value, bool from_restart = false) {
     x(index) = value;
     given[index] = true;
+    stored[index] = from_restart;
   }
 };
 
@@ -86,7 +87,8 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
                                                            input.restart->run, input.restart->label, input.preset));
   }
   RefuseRepeatedNames("set", input.set);
-  Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false)};
+  Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false),
+           std::vector<bool>(ov::Count(n), false)};
   if (preset != nullptr) {
     const Orbit guess = preset->Guess();
     const Eigen::VectorXd packed = ov::Pack(guess);
@@ -95,7 +97,7 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
   }
   if (input.restart) {
     for (const auto& [name, value] : input.restart->values) {
-      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Checked(name, value));
+      if (const std::optional<int> index = ov::IndexOf(n, name)) v.Assign(*index, Checked(name, value), true);
     }
   }
   for (const auto& [key, value] : input.set) {
@@ -113,6 +115,38 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
   return v;
 }
 
+// Every duration given and within the period (IsDurationOfPeriod); a rounding-level negative one
+// is the zero-length segment it stands for, and starts as 0. A restart point's own duration
+// beyond that range is a point its run stored past a change of orbit type (continue_past_type_
+// changes; the result files' reader admits it only on a row that is not admissible): the branch
+// restarts from it as it ran there, and its margins say it is no motion.
+void CheckDurations(const Values& v, Orbit* orbit) {
+  const int n = orbit->signature.size();
+  const double period = orbit->Period();
+  for (int i = 0; i < n; ++i) {
+    const std::string name = ov::Name(n, ov::Duration(i));
+    if (!v.given[ov::Duration(i)]) {
+      throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (0 to the period): give the duration of segment {}", name, i + 1));
+    }
+    double& d = orbit->durations[i];
+    if (!IsDurationOfPeriod(d, period) && !v.stored[ov::Duration(i)]) {
+      throw InvalidInput(name, d,
+                         fmt::format("0 <= {} <= {}, the orbit's period {} x 2 pi/omega, to rounding ({} of it)", name,
+                                     period, orbit->signature.period_multiple(), kDurationRounding));
+    }
+    d = ZeroLengthToRounding(d, period);
+  }
+}
+
+// u_s <= 0 is no start: the sliding-friction margin ends the physical family there (a branch's
+// end at u_s = 0 stores u_s to the event tolerance, -2.7e-11 in results/paper-4.2-omega-up).
+InvalidInput ParameterError(const InvalidInput& invalid, const Parameters& p) {
+  if (invalid.field() != "u_s" || !(p.u_s <= 0.0)) return invalid;
+  return InvalidInput("u_s", p.u_s,
+                      fmt::format("{}; u_s <= 0 is the end of the physical family (eq. 4), where no orbit continues",
+                                  kSlidingFrictionRange));
+}
+
 // Every parameter given (or tied) and valid.
 Parameters CheckedParameters(const Values& v, int n, bool tie_u_r) {
   Parameters p;
@@ -127,7 +161,7 @@ Parameters CheckedParameters(const Values& v, int n, bool tie_u_r) {
     p[id] = v.x(index);
   }
   if (tie_u_r) p.u_r = p.u_s;
-  if (auto invalid = Validate(p)) throw *invalid;
+  if (auto invalid = Validate(p)) throw ParameterError(*invalid, p);
   return p;
 }
 
@@ -187,6 +221,14 @@ UnknownChoice Unknowns(const StartInput& input, const PaperPreset* preset) {
 
 }  // namespace
 
+bool IsDurationOfPeriod(double d, double period) {
+  return d >= -kDurationRounding * period && d <= period * (1.0 + kDurationRounding);
+}
+
+double ZeroLengthToRounding(double d, double period) {
+  return d < 0.0 && d >= -kDurationRounding * period ? 0.0 : d;
+}
+
 std::span<const SetKey> SetKeys() { return kSetKeys; }
 
 std::string_view SetKeyRange(std::string_view key) {
@@ -219,21 +261,7 @@ StartProblem BuildStartProblem(const StartInput& input) {
   }
   Orbit orbit = ov::Unpack(signature, v.x);
   orbit.parameters = CheckedParameters(v, n, unknowns.tie_static_friction);
-  for (int i = 0; i < n; ++i) {
-    const std::string name = ov::Name(n, ov::Duration(i));
-    if (!v.given[ov::Duration(i)]) {
-      throw InvalidInput::WithMessage("guess", fmt::format("guess misses {} (0 to the period): give the duration of segment {}", name, i + 1));
-    }
-    // The listed segments last at most the orbit's period together; a solved one-segment orbit
-    // has d1 = the period to rounding, which a restart from it must accept.
-    const double period = orbit.signature.period_multiple() * 2.0 * std::numbers::pi / orbit.parameters.omega;
-    constexpr double kRounding = 1e-12;
-    if (!(orbit.durations[i] >= 0.0 && orbit.durations[i] <= period * (1.0 + kRounding))) {
-      throw InvalidInput(name, orbit.durations[i],
-                         fmt::format("0 <= {} <= {}, the orbit's period {} x 2 pi/omega", name, period,
-                                     orbit.signature.period_multiple()));
-    }
-  }
+  CheckDurations(v, &orbit);
   const std::vector<int> free = FreeIndices(signature, unknowns);
 
   std::optional<int> parameter;

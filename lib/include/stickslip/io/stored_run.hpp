@@ -82,7 +82,10 @@ std::vector<std::string> PointLabels(const Branch& branch);
 std::vector<std::string> SpecialPointLabels(const Branch& branch);
 
 // The stored form of a branch just computed from `run`: the one place that reads the
-// continuation engine's Branch, so that a change there changes only this function.
+// continuation engine's Branch, so that a change there changes only this function, and the one
+// place where every run, trace branch and map curve is stored: a duration at rounding level below
+// zero is stored as the zero-length segment it is, 0 (start_problem.hpp, kDurationRounding), with
+// its margin duration:i and the row's measures taken of that orbit.
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& branch);
 
 }  // namespace stickslip

@@ -83,10 +83,26 @@ struct StartProblem {
   std::optional<int> parameter;  // index of the continued variable, when one was given
 };
 
+// The rounding level of an orbit's durations, relative to its period T, stated once. A solved or
+// located orbit has its durations to rounding: a zero-length segment (where a branch changes
+// type) comes out as a few 1e-16 T of either sign (-4.7e-15 of T = 20.3, 2.3e-16 T, at a located
+// T0 of results/paper-4.2-omega-trace/branch-3), the one segment of a one-segment orbit as T plus
+// rounding. The start builder accepts such values, the result files' reader too, and storage
+// (io/stored_run.hpp RecordRun) writes a negative one as the zero-length segment it stands for.
+inline constexpr double kDurationRounding = 1e-12;
+// Whether `d` is a duration of an orbit of period `period`: 0 <= d <= period, to kDurationRounding.
+bool IsDurationOfPeriod(double d, double period);
+// `d` with a rounding-level negative value (-kDurationRounding period <= d < 0) made 0; any other
+// value as it is (a duration past a change of type, with continue_past_type_changes, stays).
+double ZeroLengthToRounding(double d, double period);
+
 // Needs exactly one orbit type: from the preset, the signature or the restart point (a
 // signature or restart point beside a preset must agree with it). Every parameter must be
-// given, every duration given and >= 0 (a zero-length segment is where a branch switches type),
-// v20 = 0 (an orbit starts at a stop). Throws InvalidInput.
+// given and valid (u_s <= 0 is refused as the end of the physical family), every duration given
+// and within the period (IsDurationOfPeriod: a zero-length segment is where a branch switches
+// type; a rounding-level negative one is taken as 0) but a restart point's own, which is taken as
+// its run stored it (past a change of type, with continue_past_type_changes, a segment's length
+// may be negative), v20 = 0 (an orbit starts at a stop). Throws InvalidInput.
 StartProblem BuildStartProblem(const StartInput& input);
 
 // The unknowns BuildStartProblem chooses: the preset's (its paper choice with paper_choice), then

@@ -1,0 +1,71 @@
+#include "column_kinds.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "stickslip/orbits/start_problem.hpp"
+
+namespace stickslip::detail {
+
+namespace {
+
+ValidValues Range(double min, double max, std::string text) {
+  return {.min = min, .max = max, .text = std::move(text)};
+}
+
+}  // namespace
+
+bool ValidValues::Holds(double value) const {
+  if (std::isnan(value)) return nan;
+  if (std::isinf(value)) return inf && value > 0.0;
+  return finite && value >= min && value <= max;
+}
+
+ValidValues ModelParameter(ParameterId id) {
+  switch (id) {
+    case ParameterId::kChi: return Range(kMinChi, kMaxChi, std::string(kChiRange));
+    case ParameterId::kEta: return Range(kMinEta, kMaxEta, std::string(kEtaRange));
+    case ParameterId::kOmega: return Range(kMinOmega, kMaxOmega, fmt::format("{} <= omega <= {}", kMinOmega, kMaxOmega));
+    case ParameterId::kSlidingFriction: return Range(kMinSlidingFriction, kMaxFriction, std::string(kSlidingFrictionRange));
+    case ParameterId::kStaticFriction:
+      return Range(kMinSlidingFriction, kMaxFriction, fmt::format("{} <= u_r <= {}", kMinSlidingFriction, kMaxFriction));
+  }
+  return {};
+}
+
+ValidValues BranchParameter(ParameterId id) {
+  if (id != ParameterId::kSlidingFriction && id != ParameterId::kStaticFriction) return ModelParameter(id);
+  return Range(-kMaxFriction, kMaxFriction,
+               fmt::format("|{}| <= {} (a branch ends where a released u_s reaches 0)", ToString(id), kMaxFriction));
+}
+
+ValidValues Finite() { return {.text = "a finite number"}; }
+
+ValidValues Duration(std::string_view name, double period, bool admissible) {
+  if (!admissible) return {.text = fmt::format("a finite number (a row past a change of orbit type)")};
+  return Range(-kDurationRounding * period, period * (1.0 + kDurationRounding),
+               fmt::format("0 <= {} <= {}, the orbit's period, to rounding ({} of it), on an admissible row", name,
+                           period, kDurationRounding));
+}
+
+ValidValues Fraction(bool admissible) {
+  if (!admissible) return {.text = "a finite number (a row past a change of orbit type)"};
+  return Range(-kDurationRounding, 1.0 + kDurationRounding,
+               fmt::format("0 to 1, to rounding ({}), on an admissible row", kDurationRounding));
+}
+
+ValidValues NonNegative() { return Range(0.0, std::numeric_limits<double>::infinity(), "a finite number >= 0"); }
+
+ValidValues Margin() {
+  return {.inf = true, .nan = true, .text = "a finite number, inf (a margin that does not apply) or nan (not computed)"};
+}
+
+ValidValues FloquetValue() { return {.nan = true, .text = "a finite number, or nan (not computed)"}; }
+
+ValidValues SymmetryTest(bool antisymmetric) {
+  if (antisymmetric) return FloquetValue();
+  return {.finite = false, .nan = true, .text = "nan (the orbit is not antisymmetric)"};
+}
+
+}  // namespace stickslip::detail

@@ -1,0 +1,54 @@
+// Internal to io/: the valid values of every kind of numeric column in stickslip's tables, stated
+// once, so that every reader checks a column of one kind the same way. A reader takes a field
+// with CsvTable::Value(row, column, kind); a value outside the kind's valid values is refused as
+//   "<file>:<line>: column 'u_s' = '1e308' is invalid: valid |u_s| <= 1000 (...)".
+// Non-finite values are valid only where the format documents them for that column (README,
+// "Bifurcation data files"): an inapplicable margin is inf, a Floquet quantity that could not be
+// computed nan, det(H + I) of an orbit that is not antisymmetric nan.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <string_view>
+
+#include "stickslip/model/parameters.hpp"
+
+namespace stickslip::detail {
+
+struct ValidValues {
+  double min = -std::numeric_limits<double>::infinity();  // a finite value: min <= value <= max
+  double max = std::numeric_limits<double>::infinity();
+  bool finite = true;      // finite values are valid (within min, max)
+  bool inf = false;        // +inf is valid
+  bool nan = false;        // nan is valid
+  std::string text;        // the valid values as a message states them
+
+  bool Holds(double value) const;
+};
+
+// chi, eta, omega, u_s or u_r as an input gives it (a map's grid): the model's valid range.
+ValidValues ModelParameter(ParameterId id);
+// The same on a stored branch: chi, eta and omega in the model's range; u_s and u_r within
+// |value| <= 1000, since a released u_s ends its family where it reaches 0, located to the
+// event tolerance on either side (-2.7e-11 in results/paper-4.2-omega-up).
+ValidValues BranchParameter(ParameterId id);
+// Any finite number: a start state's component, a phase, a section state.
+ValidValues Finite();
+// Duration `name` of an orbit of period `period` (orbits/start_problem.hpp, IsDurationOfPeriod):
+// 0 to the period to rounding where the row is admissible; any finite number on a row past a
+// change of orbit type (admissible = 0), where a segment's length may have turned negative.
+ValidValues Duration(std::string_view name, double period, bool admissible);
+// The sum of the sticks' durations over the period: 0 to 1 (to rounding) where admissible.
+ValidValues Fraction(bool admissible);
+// A finite number >= 0: an amplitude, a peak-to-peak, a step size, stops or sticks per period.
+ValidValues NonNegative();
+// An admissibility margin: a finite number, inf where the margin does not apply, nan where it
+// could not be computed (margins.hpp SmallestMargin: undefined).
+ValidValues Margin();
+// A Floquet multiplier's part, det(M - I), det(M + I), the torus test: a finite number, or nan
+// where it could not be computed.
+ValidValues FloquetValue();
+// det(H + I): a Floquet value of an antisymmetric orbit; nan for any other.
+ValidValues SymmetryTest(bool antisymmetric);
+
+}  // namespace stickslip::detail
