@@ -335,7 +335,7 @@ def symbol(name):
 def quantity_label(name):
     """An axis label for a column, in words."""
     words = {"omega": r"forcing frequency $\omega$", "chi": r"mass ratio $\chi$", "eta": r"stiffness ratio $\eta$",
-             "u_s": r"static friction $u_s$", "u_r": r"sliding friction $u_r$", "phi": r"forcing phase $\varphi$",
+             "u_s": r"sliding friction level $u_s$", "u_r": r"static friction level $u_r$", "phi": r"forcing phase $\varphi$",
              "x10": r"$x_1(0)$", "x20": r"$x_2(0)$", "v10": r"$\dot x_1(0)$", "stick-fraction": "fraction of the period stuck",
              "stops": "stops per period", "sticks": "sticks per period", "stops_per_period": "stops per period",
              "sticks_per_period": "sticks per period", "period": "period (forcing periods)",

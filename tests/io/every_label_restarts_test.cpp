@@ -153,7 +153,9 @@ TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
       ++labels;
     }
   }
-  EXPECT_GE(labels, 280u);
+  // Every stored run was visited: 263 labels when one end point carries one EP label (issue 22,
+  // defect 3); a floor, so that a run added to results/ does not need this number changed.
+  EXPECT_GE(labels, 250u);
 }
 
 // A run past the changes of type (continue_past_type_changes) stores labels whose segment has a
