@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -169,6 +171,35 @@ TEST(OrbitMeasures, AreNaNNotWrongWhereTheOrbitHoldsANaN) {
   EXPECT_TRUE(std::isnan(m.amplitude_x1));
   EXPECT_TRUE(std::isnan(m.amplitude_x2));
   EXPECT_TRUE(std::isnan(m.peak_to_peak_x2));
+}
+
+// The test model through the interface: Den Hartog's amplitude X (FRICTION-LITERATURE.md), its
+// turning points +-X the extremes, two stops and no stick per period, over either formulation.
+TEST(OrbitMeasures, OfTheTestModelAreDenHartogsAmplitude) {
+  for (const auto& [r, beta] : kDenHartogNonStickingCases) {
+    const DenHartogOrbit o(r, beta);
+    for (const char* signature : {"slip- / antisymmetric", "slip- slip+"}) {
+      SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta << ", " << signature);
+      const BasicOrbitMeasures m = Measure(DenHartogOscillator{}, DenHartogOnSignature(o, signature, beta));
+      ASSERT_EQ(m.coordinates.size(), 1u);
+      EXPECT_NEAR(m.coordinates[0].Amplitude(), o.amplitude, 1e-12 * o.amplitude);
+      EXPECT_NEAR(m.coordinates[0].PeakToPeak(), 2.0 * o.amplitude, 1e-12 * o.amplitude);
+      EXPECT_EQ(m.stops, 2);
+      EXPECT_EQ(m.sticks, 0);
+      EXPECT_EQ(m.stick_fraction, 0.0);
+    }
+  }
+}
+
+// A stick holds the test model's mass: its position there is its value at the stick's ends.
+TEST(OrbitMeasures, OfTheTestModelCountItsSticksAndTheirShareOfThePeriod) {
+  const BasicOrbit<DenHartogOscillator> o{
+      Signature::Parse("slip- stick slip+ stick"), {0.7, 0.2, 0.3}, {1.0, 0.0}, 0.3, {2.0, 0.5, 2.5, 0.7}};
+  const BasicOrbitMeasures m = Measure(DenHartogOscillator{}, o);
+  EXPECT_EQ(m.stops, 2);
+  EXPECT_EQ(m.sticks, 2);
+  EXPECT_DOUBLE_EQ(m.stick_fraction, (0.5 + 0.7) / (2.0 * std::numbers::pi / 0.7));
+  EXPECT_GE(m.coordinates[0].high, 1.0);  // the start, at rest
 }
 
 }  // namespace

@@ -163,18 +163,23 @@ def test_a_whole_max_points_given_as_a_float_is_taken():
     assert len(stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3.0)) == 3
 
 
-def test_a_stored_run_with_a_non_finite_orbit_variable_is_refused_on_load(tmp_path):
-    # Branch.load took omega = nan with no complaint (found by the hostile-input pass).
+def damaged_run(tmp_path, column, value):
+    """A copy of a stored run whose branch.csv has `value` in `column` on its second point (line 3)."""
     import shutil
     run = tmp_path / "damaged"
     shutil.copytree(f"{RESULTS}/paper-5.1-omega-up", run)
     lines = (run / "branch.csv").read_text().splitlines()
     fields = lines[2].split(",")
-    fields[lines[0].split(",").index("omega")] = "nan"
+    fields[lines[0].split(",").index(column)] = value
     lines[2] = ",".join(fields)
     (run / "branch.csv").write_text("\n".join(lines) + "\n")
+    return run
+
+
+def test_a_stored_run_with_a_non_finite_orbit_variable_is_refused_on_load(tmp_path):
+    # Branch.load took omega = nan with no complaint (found by the hostile-input pass).
     with pytest.raises(ValueError, match=r"branch.csv:3: column 'omega' = 'nan' is not a finite number"):
-        stickslip.Branch.load(run)
+        stickslip.Branch.load(damaged_run(tmp_path, "omega", "nan"))
 
 
 def test_a_map_file_with_a_nan_section_point_or_a_bogus_signature_is_refused_on_load(tmp_path):
@@ -194,16 +199,8 @@ def test_a_map_file_with_a_nan_section_point_or_a_bogus_signature_is_refused_on_
 
 def test_a_stored_run_with_u_s_out_of_range_is_refused_on_load(tmp_path):
     # Issue 22, defect 8: Branch.load took u_s = 1e308.
-    import shutil
-    run = tmp_path / "damaged"
-    shutil.copytree(f"{RESULTS}/paper-5.1-omega-up", run)
-    lines = (run / "branch.csv").read_text().splitlines()
-    fields = lines[2].split(",")
-    fields[lines[0].split(",").index("u_s")] = "1e308"
-    lines[2] = ",".join(fields)
-    (run / "branch.csv").write_text("\n".join(lines) + "\n")
     with pytest.raises(ValueError, match=r"branch.csv:3: column 'u_s' = '1e308' is invalid: valid \|u_s\| <= 1000"):
-        stickslip.Branch.load(run)
+        stickslip.Branch.load(damaged_run(tmp_path, "u_s", "1e308"))
 
 
 def test_many_guess_names_are_refused_at_once():

@@ -195,6 +195,8 @@ struct DenHartogOscillator {
   }
 
   SinusoidSum ContactVelocityAlong(const Motion& motion) const { return PositionAlong(motion).Derivative(); }
+  SinusoidSum CoordinateAlong(const Motion& motion, int) const { return PositionAlong(motion); }
+  bool HeldInStick(int) const { return true; }  // a stick holds the mass
   // x - cos(omega s + phase).
   SinusoidSum StickForceAlong(const Motion& motion, double phase, const Parameters& p) const {
     return PositionAlong({motion.offset, motion.drift, p.omega, motion.q - 1.0, phase, motion.a, motion.b});

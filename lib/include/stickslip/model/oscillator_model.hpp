@@ -26,8 +26,10 @@
 //     threshold it must stay within; Coulomb's law at rest
 //     (ModeFromRest); whether abnormal stops (s = s' = 0 in a slip, which needs static = kinetic
 //     level) can occur;
-//   - along a motion, the contact velocity and the stick force as functions of the elapsed time
-//     in a form the root finder can search without missing a root (numerics/sinusoid_sum.hpp);
+//   - along a motion, the contact velocity, the stick force and each coordinate (positions, in
+//     the order of the description's coordinates) as functions of the elapsed time in a form the
+//     root finder can search without missing a root (numerics/sinusoid_sum.hpp), and which
+//     coordinates a stick holds fixed;
 //   - the forcing frequency (the forcing is cos(omega t + phi));
 //   - the monodromy's factors: each mode's transition matrix (the flow's Jacobian with respect to
 //     its start) and the saltation matrix at each kind of segment end.
@@ -103,6 +105,8 @@ concept OscillatorModel =
       { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;
       // Along a motion, for the root finder.
       { model.ContactVelocityAlong(motion) } -> std::same_as<SinusoidSum>;
+      { model.CoordinateAlong(motion, 0) } -> std::same_as<SinusoidSum>;
+      { model.HeldInStick(0) } -> std::same_as<bool>;
       { model.StickForceAlong(motion, phase, p) } -> std::same_as<SinusoidSum>;
     };
 

@@ -101,6 +101,9 @@ struct Pascal2014 {
   }
 
   SinusoidSum ContactVelocityAlong(const Motion& motion) const { return CoordinateAlong(motion, 3); }
+  // x1 (0) or x2 (1) along a motion; a stick holds x2 (eq. 9).
+  SinusoidSum CoordinateAlong(const Motion& motion, int i) const { return stickslip::CoordinateAlong(motion, i); }
+  bool HeldInStick(int i) const { return i == 1; }
   SinusoidSum StickForceAlong(const Motion& motion, double phase, const Parameters& p) const {
     return stickslip::StickForceAlong(motion, phase, p);
   }

@@ -1,10 +1,12 @@
-// What users plot of a periodic orbit: the amplitudes of x1 and x2, the peak-to-peak of x2, the
-// fraction of the period spent sticking and the number of stops and sticks per period.
+// What users plot of a periodic orbit: the amplitude and peak-to-peak of each coordinate (for the
+// paper's model the amplitudes of x1 and x2 and the peak-to-peak of x2), the fraction of the
+// period spent sticking and the number of stops and sticks per period.
 //
-// Exact, from the closed-form flow of each segment (model/flows.hpp) visited by the one walk
-// over the orbit's segments (segment_walk.hpp): a coordinate's extrema over a segment are at its
-// ends or at the zeros of its velocity (x1' or x2'), found by the root finder that cannot miss a
-// zero (numerics/sinusoid_sum.hpp). Inside a stick x2 is constant: its values at the stick's ends.
+// Exact, from the closed-form motion of each segment visited by the one walk over the orbit's
+// segments (segment_walk.hpp): a coordinate's extrema over a segment are at its ends or at the
+// zeros of its velocity, found by the root finder that cannot miss a zero
+// (numerics/sinusoid_sum.hpp). A coordinate the contact holds in a stick (x2 for the paper) is
+// constant there: its values at the stick's ends.
 // For an antisymmetric orbit the listed half is walked and the mirror half (-X) accounted for:
 // every measure is over the whole period, k 2 pi/omega.
 //
@@ -12,9 +14,74 @@
 //   plot(orbit.parameters.omega, m.amplitude_x2);
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
+
+// The least and the greatest value of a coordinate met so far; NaN once a value is undefined.
+struct CoordinateRange {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -std::numeric_limits<double>::infinity();
+
+  void Add(double lo, double hi) {
+    if (std::isnan(lo) || std::isnan(hi) || std::isnan(low)) {
+      low = high = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    low = std::min(low, lo);
+    high = std::max(high, hi);
+  }
+  void Add(const Extrema& e) { Add(e.minimum.value, e.maximum.value); }
+  // The range over the whole period of an antisymmetric orbit, whose second half is -X.
+  void Mirror() { Add(-high, -low); }
+  double Amplitude() const { return std::isnan(low) ? low : std::max(high, -low); }
+  double PeakToPeak() const { return high - low; }
+};
+
+// The measures of an orbit of any model (model/oscillator_model.hpp), per coordinate in the order
+// of its description.
+struct BasicOrbitMeasures {
+  std::vector<CoordinateRange> coordinates;
+  double stick_fraction = 0.0;
+  int stops = 0;
+  int sticks = 0;
+};
+
+template <typename Model>
+BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
+  BasicOrbitMeasures m;
+  m.coordinates.resize(model.Description().coordinates.size());
+  double stick_time = 0.0;
+  WalkSegments(model, orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double, Model>& s) {
+    const bool stick = s.spec.mode == Mode::kStick;
+    for (std::size_t i = 0; i < m.coordinates.size(); ++i) {
+      const int k = static_cast<int>(i);
+      if (stick && model.HeldInStick(k)) {
+        // Held: its values at the ends differ by rounding only.
+        for (double x : {s.start(k), s.end(k)}) m.coordinates[i].Add(x, x);
+      } else {
+        m.coordinates[i].Add(MinimumAndMaximum(model.CoordinateAlong(s.motion, k), 0.0, s.duration));
+      }
+    }
+    if (stick) stick_time += s.duration;
+  });
+  if (orbit.signature.antisymmetric()) {
+    for (CoordinateRange& c : m.coordinates) c.Mirror();
+  }
+  const double period =
+      orbit.signature.period_multiple() * 2.0 * std::numbers::pi / model.ForcingFrequency(orbit.parameters);
+  m.stick_fraction = stick_time / (period * orbit.signature.CoveredFraction());
+  for (Mode mode : orbit.signature.FullPeriod()) ++(mode == Mode::kStick ? m.sticks : m.stops);
+  return m;
+}
 
 struct OrbitMeasures {
   double amplitude_x1 = 0.0;     // max over the period of |x1(t)|
