@@ -50,7 +50,7 @@ struct PlotArgs {
 fs::path DrawingScript(const char* name) {
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  if (error) return name;  // reported as a script that cannot be run
+  if (error) return {};  // reported as a missing script (never a file of that name in the current directory)
   const fs::path beside = program.parent_path() / name;
   if (fs::is_regular_file(beside)) return beside;
   return program.parent_path().parent_path() / "share" / "stickslip" / name;
@@ -128,6 +128,15 @@ int RunPlot(const PlotArgs& args) {
   const char* python = std::getenv("STICKSLIP_PYTHON");
   const std::string interpreter = python && *python ? python : "/usr/bin/python3";
   const fs::path script = DrawingScript("stickslip_plot.py");
+  // A program copied away from its scripts: python3 would say "can't open file" and exit 2, which
+  // reads as bad input. It is an installation's failure: one line, exit 1, nothing written.
+  if (std::error_code missing; script.empty() || !fs::is_regular_file(script, missing)) {
+    fmt::print(stderr,
+               "error: plot needs its drawing script stickslip_plot.py{}, found beside the program (the build tree) "
+               "or in ../share/stickslip/ of an installed one (cmake --install); nothing was written\n",
+               script.empty() ? std::string() : fmt::format(" at '{}', which is not there", script.string()));
+    return kExitFailure;
+  }
   std::vector<std::string> argv = {interpreter, script.string(), "--output", output.string()};
   for (const auto& [option, value] : args.drawing) {
     argv.push_back(option);

@@ -86,4 +86,15 @@ printf '#!/bin/sh\nPYTHONPATH=%s exec /usr/bin/python3 "$@"\n' "$work/fake" > "$
 chmod +x "$work/python-without-matplotlib"
 expect 1 "python3-matplotlib" env STICKSLIP_PYTHON="$work/python-without-matplotlib" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png"
 
+# The program copied away from its scripts (no stickslip_plot.py beside it nor in ../share/stickslip/):
+# one line naming the script, exit 1 (python3's "can't open file" exited 2, as if the input were bad).
+mkdir -p "$work/copy/bin"
+cp "$bin" "$work/copy/bin/stickslip"
+expect 1 "plot needs its drawing script stickslip_plot.py at '$work/copy/share/stickslip/stickslip_plot.py'" \
+  "$work/copy/bin/stickslip" plot paper-5.1-omega-up --results "$root/results" --output "$png"
+# A link to the program finds the scripts beside its target.
+ln -s "$bin" "$work/copy/bin/linked"
+"$work/copy/bin/linked" plot paper-5.1-omega-up --results "$root/results" --output "$work/linked.png" > /dev/null &&
+  [ -s "$work/linked.png" ] && pass || fail "plot through a symbolic link to the program"
+
 finish
