@@ -107,7 +107,15 @@ std::string DefaultOutput(const fs::path& input) {
 int RunPlot(const PlotArgs& args) {
   std::vector<fs::path> inputs;
   for (const std::string& input : args.inputs) {
-    const fs::path path = ResolveInput(input, args.results);
+    fs::path path = ResolveInput(input, args.results);
+    // One of a run's or trace's own files given by its path (results/run/branch.csv): the script
+    // draws its directory, so its directory is what is read and checked, column by column, here.
+    if (const std::string file = path.filename().string();
+        (file == "branch.csv" || file == "special-points.csv" || file == "summary.json" || file == "trace.csv" ||
+         file == "trace.json") &&
+        fs::is_regular_file(path)) {
+      path = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    }
     // A missing or damaged run or trace is bad input, before any work (files and maps: the script).
     if (!fs::is_regular_file(path) && !fs::is_regular_file(path / "regions.json")) {
       if (IsTraceDirectory(path)) {

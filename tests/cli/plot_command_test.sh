@@ -86,6 +86,22 @@ printf '#!/bin/sh\nPYTHONPATH=%s exec /usr/bin/python3 "$@"\n' "$work/fake" > "$
 chmod +x "$work/python-without-matplotlib"
 expect 1 "python3-matplotlib" env STICKSLIP_PYTHON="$work/python-without-matplotlib" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png"
 
+# A run's own file given by its path (run/branch.csv) is checked as the run is, column by column:
+# it went to the script unchecked, and a 1e309 was drawn without a word.
+cp -r "$root/results/paper-5.1-omega-up" "$work/damaged"
+/usr/bin/python3 - "$work/damaged/branch.csv" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+column = lines[0].split(",").index("amplitude:x2")
+fields = lines[5].split(",")
+fields[column] = "1e309"
+lines[5] = ",".join(fields)
+open(sys.argv[1], "w").write("\n".join(lines) + "\n")
+PY
+for file in branch.csv special-points.csv summary.json ""; do
+  expect 2 "branch.csv:6: column 'amplitude:x2' = '1e309'" "$bin" plot "$work/damaged/$file" --output "$png"
+done
+
 # The program copied away from its scripts (no stickslip_plot.py beside it nor in ../share/stickslip/):
 # one line naming the script, exit 1 (python3's "can't open file" exited 2, as if the input were bad).
 mkdir -p "$work/copy/bin"
