@@ -1400,6 +1400,9 @@ def check_replaceable(path, option="output", force=False):
     """BadInput unless `path` is new, a figure stickslip plot wrote (written_by_stickslip), or
     `force`: a figure never replaces a file of the user's (a thesis.pdf, a photo)."""
     path = os.fspath(path)
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise BadInput(option, f"'{path}'", f"a file in an existing directory ('{directory}' is not one)")
     if force or not os.path.lexists(path):
         return
     if os.path.isdir(path):

@@ -127,6 +127,10 @@ class PlotHostile(unittest.TestCase):
         with self.assertRaises(sp.BadInput):
             sp.check_replaceable(os.path.join(self.work, "thesis.pdf"))
         sp.check_replaceable(os.path.join(self.work, "thesis.pdf"), force=True)
+        # A missing directory is bad input before the drawing (stickslip.plot(output=) raised
+        # FileNotFoundError naming its temporary file after drawing).
+        with self.assertRaisesRegex(sp.BadInput, "a file in an existing directory"):
+            sp.check_replaceable(os.path.join(self.work, "missing", "figure.png"), force=True)
 
     def test_failed_drawing_is_one_line(self):
         # Whatever matplotlib raises while drawing or writing: exit 1, one line, no traceback.
