@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <memory>
 #include <string>
 #include <utility>
@@ -21,6 +23,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/map_file.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/trace_files.hpp"
@@ -116,7 +119,21 @@ int RunPlot(const PlotArgs& args) {
         fs::is_regular_file(path)) {
       path = path.has_parent_path() ? path.parent_path() : fs::path(".");
     }
-    // A missing or damaged run or trace is bad input, before any work (files and maps: the script).
+    // A brute-force map's CSV is read by the one reader of map-sweep --merge and map --brute-force,
+    // which checks every column (the script's own checks are by kind, row by row).
+    if (fs::is_regular_file(path)) {
+      std::ifstream in(path, std::ios::binary);
+      std::string first;
+      std::getline(in, first);
+      if (!first.empty() && first.back() == '\r') first.pop_back();
+      if (in && IsBruteForceMapCsvHeader(first)) {
+        in.seekg(0);
+        std::ostringstream text;
+        text << in.rdbuf();
+        ReadBruteForceMapCsv(text.str(), path.string());
+      }
+    }
+    // A missing or damaged run or trace is bad input, before any work (sweeps and orbit-type maps: the script).
     if (!fs::is_regular_file(path) && !fs::is_regular_file(path / "regions.json")) {
       if (IsTraceDirectory(path)) {
         ReadTraceFiles(path);

@@ -102,6 +102,23 @@ for file in branch.csv special-points.csv summary.json ""; do
   expect 2 "branch.csv:6: column 'amplitude:x2' = '1e309'" "$bin" plot "$work/damaged/$file" --output "$png"
 done
 
+# A brute-force map's CSV is read by map-sweep's reader, every column checked: the script alone drew
+# a status 'weird', a run '' or a cell index past ni without a word.
+map_csv="$root/results/maps/paper-6-omega-u_r-brute-force.csv"
+for change in "status:weird" "run:" "i:99999" "signature:bogus"; do
+  /usr/bin/python3 - "$map_csv" "$work/damaged-map.csv" "$change" <<'PY'
+import sys
+source, target, change = sys.argv[1:]
+column, value = change.split(":", 1)
+lines = open(source).read().splitlines()
+fields = lines[3].split(",")
+fields[lines[0].split(",").index(column)] = value
+lines[3] = ",".join(fields)
+open(target, "w").write("\n".join(lines) + "\n")
+PY
+  expect 2 "damaged-map.csv:4: column '${change%%:*}' = '${change#*:}'" "$bin" plot "$work/damaged-map.csv" --output "$png"
+done
+
 # The program copied away from its scripts (no stickslip_plot.py beside it nor in ../share/stickslip/):
 # one line naming the script, exit 1 (python3's "can't open file" exited 2, as if the input were bad).
 mkdir -p "$work/copy/bin"
