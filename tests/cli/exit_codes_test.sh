@@ -101,4 +101,12 @@ code 0 "trace from a change of type" "$bin" trace --results "$work/t41" --point 
 
 # ---- 5: find: the motion is not periodic (a permanent stick has no orbit type).
 code 5 "find at a permanent stick" "$bin" find --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=10
+# A flag takes no value: --allow-inadmissible=2 or =1e300 traced as if true and =-1 was refused
+# with exit 4 as if false (CLI11's flag counts); now bad input naming the flag and the value.
+for value in 2 1e300 -1 no maybe; do
+  expect 2 "--allow-inadmissible = '$value' is invalid: valid no value" "$bin" trace "${p52[@]}" --results "$work/out" \
+    --output t52 --allow-inadmissible="$value"
+done
+expect 2 "--tie-u_r = '5' is invalid: valid no value" "$bin" solve --preset paper-4.2 --tie-u_r=5
+
 finish
