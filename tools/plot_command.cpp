@@ -238,7 +238,7 @@ Command AddPlotCommand(CLI::App& app) {
       {"--xlim", "LOW,HIGH: the x axis's range (default the data's)"},
       {"--ylim", "LOW,HIGH: the y axis's range (default the data's)"},
       {"--size", "WIDTH,HEIGHT in inches, each 1 to 40 (default 9,5; maps wider)"},
-      {"--dpi", "dots per inch of a PNG, 10 to 1200 (default 150), at most 20000 pixels a side"},
+      {"--dpi", "dots per inch of a PNG, 10 to 1200 (default 150), at most 20000 pixels a side and 60 million in all"},
       {"--title", "the title (default: what is drawn and how each branch ended, in words; \"\" for none)"},
       {"--legend", "right (beside the axes, the default), inside or none"}};
   for (const auto& [name, help] : drawing) {

@@ -57,6 +57,9 @@ DEFAULT_DPI = 150
 SIZE_RANGE = (1.0, 40.0)
 DPI_RANGE = (10, 1200)
 MAX_PIXELS = 20000
+# At most this many pixels in a PNG: rasterizing takes about 8 bytes a pixel (20000 x 20000 took
+# 3.3 GB), so 60 million pixels stay near half a gigabyte; 7 x 4 inches at 1200 dpi is 40 million.
+MAX_AREA = 60_000_000
 # Axis limits: magnitudes (and a log axis's decades) matplotlib's ticks survive, and the smallest
 # relative range it does not widen.
 LIMIT_RANGE = (1e-300, 1e300)
@@ -798,9 +801,8 @@ class Options:
             self.dpi = math.nan
         if not (DPI_RANGE[0] <= self.dpi <= DPI_RANGE[1]):
             raise BadInput(name("dpi"), f"'{dpi}'", f"{DPI_RANGE[0]} to {DPI_RANGE[1]} dots per inch (default {DEFAULT_DPI})")
-        if self.size and max(self.size) * self.dpi > MAX_PIXELS:
-            raise BadInput(name("dpi"), f"'{dpi}'", f"at most {MAX_PIXELS} pixels a side: "
-                           f"dpi <= {math.floor(MAX_PIXELS / max(self.size))} at size {self.size[0]:g},{self.size[1]:g}")
+        if self.size:
+            _check_pixels(name("dpi"), dpi, self.dpi, self.size)
         if title:
             _check_mathtext(name("title"), title)
         self.output = output
@@ -812,6 +814,14 @@ class Options:
 
     def name(self, option):
         return self.prefix + option if self.prefix else option
+
+
+def _check_pixels(option, shown, dpi, size):
+    """A PNG of `size` inches at `dpi`: at most MAX_PIXELS a side and MAX_AREA pixels in all."""
+    largest = min(MAX_PIXELS / max(size), math.sqrt(MAX_AREA / (size[0] * size[1])))
+    if max(size) * dpi > MAX_PIXELS or size[0] * size[1] * dpi * dpi > MAX_AREA:
+        raise BadInput(option, f"'{shown}'", f"at most {MAX_PIXELS} pixels a side and {MAX_AREA / 1e6:g} million "
+                       f"pixels: dpi <= {math.floor(largest)} at size {size[0]:g},{size[1]:g}")
 
 
 def _check_mathtext(option, text):
@@ -1412,13 +1422,20 @@ def check_replaceable(path, option="output", force=False):
                        "this one it did not write: remove it or choose another name")
 
 
-def save(fig, path, dpi=DEFAULT_DPI):
+def save(fig, path, dpi=DEFAULT_DPI, option="dpi"):
     """Writes the figure to `path` (PNG, PDF or SVG by its extension), whole or not at all (a
-    temporary file beside it, then renamed), without volatile metadata (dates, versions)."""
+    temporary file beside it, then renamed), without volatile metadata (dates, versions). A PNG
+    of more pixels than MAX_PIXELS a side or MAX_AREA in all is BadInput (`option` names dpi)."""
     import matplotlib.pyplot as plt
     extension = os.path.splitext(path)[1].lower()
     if extension not in FORMATS:
         raise BadInput("output", f"'{path}'", "a file name ending in .png, .pdf or .svg")
+    if extension == ".png":
+        try:
+            _check_pixels(option, f"{float(dpi):g}", float(dpi), tuple(fig.get_size_inches()))
+        except BadInput:
+            plt.close(fig)
+            raise
     metadata = {".png": {"Software": MARKER}, ".pdf": {"Creator": MARKER, "Producer": None, "CreationDate": None},
                 ".svg": {"Creator": MARKER, "Date": None}}[extension]
     directory, name = os.path.split(os.path.abspath(path))
@@ -1505,7 +1522,7 @@ def main(argv):
         check_replaceable(options.output, "--output")
         results = [load(path) for path in inputs]
         fig = figure(results, options)
-        save(fig, options.output, options.dpi)
+        save(fig, options.output, options.dpi, "--dpi")
     except BadInput as e:
         print(f"error: {e}", file=sys.stderr)
         return 2

@@ -83,6 +83,15 @@ class PlotHostile(unittest.TestCase):
         self.refused("--ylim = '1e-300,1e300' is invalid", "--yscale", "log", "--ylim", "1e-300,1e300", "--", RUN)
         self.drawn("--xlim", "-1e300,1e300", "--", RUN)
 
+    def test_pixels(self):
+        # 40 x 40 inches at 500 dpi passed the 20000-a-side rule and took 3.3 GB to rasterize; the
+        # default size of a map at 1200 dpi is checked too (18600 x 6720 pixels).
+        self.refused("--dpi = '500' is invalid: valid at most 20000 pixels a side and 60 million pixels: dpi <= 193",
+                     "--size", "40,40", "--dpi", "500", "--", RUN)
+        self.refused("--dpi = '1200' is invalid: valid at most 20000 pixels a side and 60 million pixels",
+                     "--dpi", "1200", "--", MAP)
+        self.drawn("--size", "3.5,2.5", "--dpi", "1200", "--", RUN)
+
     def test_log_axis_without_positive_values(self):
         # x10 < 0 all along the 5.1 branch: a log axis would draw nothing.
         self.refused("--yscale = 'log' is invalid: valid linear, or log where some value of x10 is > 0",
@@ -137,7 +146,7 @@ class PlotHostile(unittest.TestCase):
         import stickslip_plot as sp
         original = sp.save
 
-        def failing(fig, path, dpi=sp.DEFAULT_DPI):
+        def failing(*args, **keywords):
             raise OverflowError("cannot convert float infinity to integer")
         sp.save = failing
         try:
