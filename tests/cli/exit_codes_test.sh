@@ -50,6 +50,13 @@ expect 2 "max-branches = 0 is invalid" "$bin" trace --preset paper-6 --parameter
   --results "$work/out" --max-branches 0 --output bad
 sed 's/^max_branches = 20/allow_inadmissible = 1/' "$work/t6.toml" > "$work/bad.toml"
 expect 2 "trace.allow_inadmissible" "$bin" run --results "$work/out" "$work/bad.toml"
+# The value is named with the type (the message said only "must be true or false").
+sed 's/^max_branches = 20/allow_inadmissible = "yes"/' "$work/t6.toml" > "$work/bad.toml"
+expect 2 "key 'trace.allow_inadmissible' = 'yes' is invalid: valid true or false (a boolean; its type is string)" \
+  "$bin" run --results "$work/out" "$work/bad.toml"
+sed 's/^max_branches = 20/allow_inadmissible = 1e300/' "$work/t6.toml" > "$work/bad.toml"
+expect 2 "key 'trace.allow_inadmissible' = 1.0000000000000001e+300 is invalid: valid true or false" \
+  "$bin" run --results "$work/out" "$work/bad.toml"
 
 # ---- 3: no convergence (a start far from any orbit), nothing written.
 cat > "$work/far.toml" <<'TOML'
