@@ -107,6 +107,8 @@ int main(int argc, char** argv) {
       "input (nothing written).",
       "stickslip-mpi");
   app.require_subcommand(1);
+  // A flag takes no value (--force=2 is bad input, not a count), as in stickslip.
+  app.option_defaults()->disable_flag_override();
   const Command command =
       AddMapSweepCommand(app, [rank, ranks](const MapSweepPlan& plan) { return RunAcrossRanks(plan, rank, ranks); },
                          /*merge=*/false, ranks);

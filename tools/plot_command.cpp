@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <memory>
 #include <string>
 #include <utility>
@@ -21,6 +23,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/map_file.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/trace_files.hpp"
@@ -50,7 +53,7 @@ struct PlotArgs {
 fs::path DrawingScript(const char* name) {
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  if (error) return name;  // reported as a script that cannot be run
+  if (error) return {};  // reported as a missing script (never a file of that name in the current directory)
   const fs::path beside = program.parent_path() / name;
   if (fs::is_regular_file(beside)) return beside;
   return program.parent_path().parent_path() / "share" / "stickslip" / name;
@@ -107,8 +110,30 @@ std::string DefaultOutput(const fs::path& input) {
 int RunPlot(const PlotArgs& args) {
   std::vector<fs::path> inputs;
   for (const std::string& input : args.inputs) {
-    const fs::path path = ResolveInput(input, args.results);
-    // A missing or damaged run or trace is bad input, before any work (files and maps: the script).
+    fs::path path = ResolveInput(input, args.results);
+    // One of a run's or trace's own files given by its path (results/run/branch.csv): the script
+    // draws its directory, so its directory is what is read and checked, column by column, here.
+    if (const std::string file = path.filename().string();
+        (file == "branch.csv" || file == "special-points.csv" || file == "summary.json" || file == "trace.csv" ||
+         file == "trace.json") &&
+        fs::is_regular_file(path)) {
+      path = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    }
+    // A brute-force map's CSV is read by the one reader of map-sweep --merge and map --brute-force,
+    // which checks every column (the script's own checks are by kind, row by row).
+    if (fs::is_regular_file(path)) {
+      std::ifstream in(path, std::ios::binary);
+      std::string first;
+      std::getline(in, first);
+      if (!first.empty() && first.back() == '\r') first.pop_back();
+      if (in && IsBruteForceMapCsvHeader(first)) {
+        in.seekg(0);
+        std::ostringstream text;
+        text << in.rdbuf();
+        ReadBruteForceMapCsv(text.str(), path.string());
+      }
+    }
+    // A missing or damaged run or trace is bad input, before any work (sweeps and orbit-type maps: the script).
     if (!fs::is_regular_file(path) && !fs::is_regular_file(path / "regions.json")) {
       if (IsTraceDirectory(path)) {
         ReadTraceFiles(path);
@@ -128,6 +153,15 @@ int RunPlot(const PlotArgs& args) {
   const char* python = std::getenv("STICKSLIP_PYTHON");
   const std::string interpreter = python && *python ? python : "/usr/bin/python3";
   const fs::path script = DrawingScript("stickslip_plot.py");
+  // A program copied away from its scripts: python3 would say "can't open file" and exit 2, which
+  // reads as bad input. It is an installation's failure: one line, exit 1, nothing written.
+  if (std::error_code missing; script.empty() || !fs::is_regular_file(script, missing)) {
+    fmt::print(stderr,
+               "error: plot needs its drawing script stickslip_plot.py{}, found beside the program (the build tree) "
+               "or in ../share/stickslip/ of an installed one (cmake --install); nothing was written\n",
+               script.empty() ? std::string() : fmt::format(" at '{}', which is not there", script.string()));
+    return kExitFailure;
+  }
   std::vector<std::string> argv = {interpreter, script.string(), "--output", output.string()};
   for (const auto& [option, value] : args.drawing) {
     argv.push_back(option);
@@ -204,7 +238,7 @@ Command AddPlotCommand(CLI::App& app) {
       {"--xlim", "LOW,HIGH: the x axis's range (default the data's)"},
       {"--ylim", "LOW,HIGH: the y axis's range (default the data's)"},
       {"--size", "WIDTH,HEIGHT in inches, each 1 to 40 (default 9,5; maps wider)"},
-      {"--dpi", "dots per inch of a PNG, 10 to 1200 (default 150), at most 20000 pixels a side"},
+      {"--dpi", "dots per inch of a PNG, 10 to 1200 (default 150), at most 20000 pixels a side and 60 million in all"},
       {"--title", "the title (default: what is drawn and how each branch ended, in words; \"\" for none)"},
       {"--legend", "right (beside the axes, the default), inside or none"}};
   for (const auto& [name, help] : drawing) {

@@ -1,6 +1,7 @@
 // The stickslip command-line program: one subcommand per job (commands.hpp).
 #include <exception>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -10,6 +11,7 @@
 #include "commands.hpp"
 #include "map_sweep_command.hpp"
 #include "start_options.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/version.hpp"
 
@@ -25,6 +27,9 @@ int main(int argc, char** argv) {
       "stickslip");
   app.set_version_flag("--version", fmt::format("stickslip {}", stickslip::Version()), "print the version and exit");
   app.require_subcommand(1);
+  // A flag takes no value: CLI11 otherwise reads --allow-inadmissible=2 or =1e300 as true and =-1 as
+  // false (a count), where bad input is wanted. Every subcommand copies this default.
+  app.option_defaults()->disable_flag_override();
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app), AddMapCommand(app),
                                          AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
@@ -43,6 +48,19 @@ int main(int argc, char** argv) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
       message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, map-sweep, map, export, find, plot", argv[1]);
+    }
+    // "allow-inadmissible was given a disallowed flag override": the option, its value, the rule.
+    constexpr std::string_view kOverride = " was given a disallowed flag override";
+    if (message.ends_with(kOverride)) {
+      const std::string flag = "--" + message.substr(0, message.size() - kOverride.size());
+      std::string value;
+      for (int k = 1; k < argc; ++k) {
+        const std::string_view arg = argv[k];
+        if (arg.starts_with(flag + "=")) value = std::string(arg.substr(flag.size() + 1));
+      }
+      message = stickslip::InvalidInput::WithMessage(
+                    flag, fmt::format("{} = '{}' is invalid: valid no value ({} is a flag, on when given)", flag, value, flag))
+                    .what();
     }
     fmt::print(stderr, "error: {}\n", message);
     return kExitBadInput;

@@ -39,6 +39,8 @@ Command line (what `stickslip plot` runs; it checks the inputs' names and the ou
   /usr/bin/python3 stickslip_plot.py --output FILE.{png,pdf,svg} [--x COL] [--y COL]
       [--xscale linear|log] [--yscale linear|log] [--xlim LO,HI] [--ylim LO,HI] [--size W,H]
       [--dpi N] [--title TEXT] [--legend right|inside|none] [--no-natural-frequencies] INPUT...
+An existing output file is replaced only if it is a figure stickslip plot wrote (MARKER in its
+metadata); any other is bad input.
 Exit codes: 0 written; 2 bad input (one line: the option, its value and the valid range; nothing
 written); 3 matplotlib cannot be imported; 1 the drawing failed (nothing written).
 """
@@ -55,6 +57,13 @@ DEFAULT_DPI = 150
 SIZE_RANGE = (1.0, 40.0)
 DPI_RANGE = (10, 1200)
 MAX_PIXELS = 20000
+# At most this many pixels in a PNG: rasterizing takes about 8 bytes a pixel (20000 x 20000 took
+# 3.3 GB), so 60 million pixels stay near half a gigabyte; 7 x 4 inches at 1200 dpi is 40 million.
+MAX_AREA = 60_000_000
+# Axis limits: magnitudes (and a log axis's decades) matplotlib's ticks survive, and the smallest
+# relative range it does not widen.
+LIMIT_RANGE = (1e-300, 1e300)
+LIMIT_RESOLUTION = 1e-12
 # Inches (width, height) by what is drawn: the legend stands beside the axes.
 DEFAULT_SIZES = {"response": (9.0, 5.0), "map-sweep": (11.0, 4.6), "orbit-type-map": (9.4, 5.6),
                  "orbit-type-map+map-sweep": (15.5, 5.6), "diagram": (11.5, 6.0)}
@@ -266,6 +275,42 @@ def _read_orbit_type_map(directory):
     return result
 
 
+# The numeric columns of a sweep's and a map-sweep's CSV by kind: whole numbers >= 0, numbers >= 0,
+# finite numbers (every other column named here). A model parameter is finite and > 0 (u_s, u_r:
+# finite). Text columns (pass, run, status, signature) are not checked.
+_WHOLE = ("i", "j", "ni", "nj", "attractors", "attractor", "period", "starts", "k", "chain", "step")
+_NON_NEGATIVE = ("stops_per_period", "sticks_per_period", "amplitude:x2", "amplitude:x1", "peak-to-peak:x2",
+                 "peak-to-peak:x1")
+_FINITE = ("section_phase", "x1", "x2", "v1", "v2") + PARAMETERS
+
+
+def _check_csv_columns(rows, header, shown):
+    """Every row of a sweep's or map-sweep's CSV has the header's fields, each numeric one of its
+    kind (BadInput naming the file, the line and the column): what the figure reads is never a
+    silent nan or a traceback."""
+    for line, row in enumerate(rows, 2):
+        if None in row or any(v is None for v in row.values()):
+            raise BadInput("input", f"'{shown}' line {line}", f"a row of {len(header)} fields, as its header")
+        for column in header:
+            text = row[column]
+            if column in _WHOLE:
+                valid = "a whole number >= 0"
+                ok = text.isdigit() and text.isascii() and len(text) <= 18
+            elif column in _NON_NEGATIVE or column in _FINITE:
+                valid = "a finite number >= 0" if column in _NON_NEGATIVE else (
+                    "a finite number > 0" if column in ("chi", "eta", "omega") else "a finite number")
+                try:
+                    v = float(text)
+                except ValueError:
+                    v = math.nan
+                ok = math.isfinite(v) and (v >= 0 if column in _NON_NEGATIVE else True) and (
+                    v > 0 if column in ("chi", "eta", "omega") else True)
+            else:
+                continue
+            if not ok:
+                raise BadInput(f"input '{shown}' line {line} column '{column}'", f"'{text}'", valid)
+
+
 def csv_result(name, text, shown=None):
     """A sweep or map-sweep from its CSV text (what SweepResult.csv() returns); `shown`: how
     messages name it (default its name)."""
@@ -273,10 +318,12 @@ def csv_result(name, text, shown=None):
     rows = _rows(text)
     header = next(csv.reader(io.StringIO(text)), [])
     if {"i", "j", "ni", "nj", "attractor"} <= set(header):
-        if not rows:
-            raise BadInput("input", f"'{shown}'", "a map-sweep file with at least one cell")
+        _check_csv_columns(rows, header, shown)
+        if not any(r["k"] == "0" for r in rows):
+            raise BadInput("input", f"'{shown}'", "a map-sweep file with at least one cell (a row with k = 0)")
         return MapSweep(name, rows, header)
     if {"chain", "step", "k", "period"} <= set(header):
+        _check_csv_columns(rows, header, shown)
         if not rows:
             raise BadInput("input", f"'{shown}'", "a sweep file with at least one point")
         return Sweep(name, rows, header)
@@ -730,10 +777,20 @@ class Options:
         self.xlim = self.ylim = None
         for option, value, scale in (("xlim", xlim, xscale), ("ylim", ylim, yscale)):
             if value is not None:
-                low_rule = " and low > 0 on a log axis" if scale == "log" else ""
-                limits = _pair(name(option), value, f"LOW,HIGH: two finite numbers, low < high{low_rule}",
-                               lambda v: v[0] < v[1] and (scale != "log" or v[0] > 0))
-                setattr(self, option, limits)
+                # Limits matplotlib draws as asked: a narrower range it would widen silently, a
+                # wider one overflows its ticks.
+                if scale == "log":
+                    rule = (f"LOW,HIGH: two finite numbers, low < high and low > 0 on a log axis, each from "
+                            f"{LIMIT_RANGE[0]:g} to {LIMIT_RANGE[1]:g}, high/low from 1 + {LIMIT_RESOLUTION:g} to "
+                            f"{LIMIT_RANGE[1]:g}")
+                    check = (lambda v: LIMIT_RANGE[0] <= v[0] < v[1] <= LIMIT_RANGE[1]
+                             and 1.0 + LIMIT_RESOLUTION <= v[1] / v[0] <= LIMIT_RANGE[1])
+                else:
+                    rule = (f"LOW,HIGH: two finite numbers, low < high, each from -{LIMIT_RANGE[1]:g} to "
+                            f"{LIMIT_RANGE[1]:g}, high - low > {LIMIT_RESOLUTION:g} of the larger magnitude")
+                    check = (lambda v: -LIMIT_RANGE[1] <= v[0] < v[1] <= LIMIT_RANGE[1]
+                             and v[1] - v[0] > LIMIT_RESOLUTION * max(abs(v[0]), abs(v[1])))
+                setattr(self, option, _pair(name(option), value, rule, check))
         self.size = None
         if size is not None:
             self.size = _pair(name("size"), size, f"WIDTH,HEIGHT in inches, each {SIZE_RANGE[0]:g} to {SIZE_RANGE[1]:g}",
@@ -744,9 +801,10 @@ class Options:
             self.dpi = math.nan
         if not (DPI_RANGE[0] <= self.dpi <= DPI_RANGE[1]):
             raise BadInput(name("dpi"), f"'{dpi}'", f"{DPI_RANGE[0]} to {DPI_RANGE[1]} dots per inch (default {DEFAULT_DPI})")
-        if self.size and max(self.size) * self.dpi > MAX_PIXELS:
-            raise BadInput(name("dpi"), f"'{dpi}'", f"at most {MAX_PIXELS} pixels a side: "
-                           f"dpi <= {math.floor(MAX_PIXELS / max(self.size))} at size {self.size[0]:g},{self.size[1]:g}")
+        if self.size:
+            _check_pixels(name("dpi"), dpi, self.dpi, self.size)
+        if title:
+            _check_mathtext(name("title"), title)
         self.output = output
         if output is not None:
             extension = os.path.splitext(output)[1].lower()
@@ -756,6 +814,32 @@ class Options:
 
     def name(self, option):
         return self.prefix + option if self.prefix else option
+
+
+def _check_pixels(option, shown, dpi, size):
+    """A PNG of `size` inches at `dpi`: at most MAX_PIXELS a side and MAX_AREA pixels in all."""
+    largest = min(MAX_PIXELS / max(size), math.sqrt(MAX_AREA / (size[0] * size[1])))
+    if max(size) * dpi > MAX_PIXELS or size[0] * size[1] * dpi * dpi > MAX_AREA:
+        raise BadInput(option, f"'{shown}'", f"at most {MAX_PIXELS} pixels a side and {MAX_AREA / 1e6:g} million "
+                       f"pixels: dpi <= {math.floor(largest)} at size {size[0]:g},{size[1]:g}")
+
+
+def _check_mathtext(option, text):
+    """A text matplotlib can draw: its $...$ parts valid mathtext (a '$' alone is written \\$)."""
+    from matplotlib import cbook
+    from matplotlib.mathtext import MathTextParser
+    for line in str(text).split("\n"):
+        if cbook.is_math_text(line):
+            try:
+                MathTextParser("path").parse(line)
+            except ValueError:
+                raise BadInput(option, f"'{text}'", "a text whose $...$ parts are valid mathtext "
+                               "(write \\$ for a dollar sign)") from None
+
+
+def _escaped(name):
+    """A result's name as text in a figure: a '$' in it is a dollar sign, not mathtext."""
+    return str(name).replace("$", r"\$")
 
 
 def _numeric_columns(result):
@@ -838,6 +922,20 @@ def _check_quantity(options, which, value, results):
         raise BadInput(options.name(which), f"'{value}'", "a numeric column of every input: " + ", ".join(common))
 
 
+def _check_drawable(options, x, y, results):
+    """At least one point (x, y) of the inputs is finite, and positive on a log axis: else the
+    figure would be empty axes, written without a word (BadInput naming the option that empties it)."""
+    rows = [row for r in results for b in _branches(r) for row in b.rows]
+    rows += [row for r in results if r.kind == "sweep" for row in r.rows]
+    points = [(_number(row.get(x)), _number(row.get(y))) for row in rows]
+    points = [(a, b) for a, b in points if math.isfinite(a) and math.isfinite(b)]
+    if not points:
+        raise BadInput(options.name("y"), f"'{y}'", f"a quantity with at least one finite value (against {x}) to draw")
+    for which, scale, k, quantity in (("xscale", options.xscale, 0, x), ("yscale", options.yscale, 1, y)):
+        if scale == "log" and not any(p[k] > 0 for p in points):
+            raise BadInput(options.name(which), "'log'", f"linear, or log where some value of {quantity} is > 0 (none is)")
+
+
 def _response_figure(results, options, plt):
     x = options.x or results[0].parameter
     if options.y:
@@ -848,6 +946,7 @@ def _response_figure(results, options, plt):
         y = "amplitude:x2"
     _check_quantity(options, "x", x, results)
     _check_quantity(options, "y", y, results)
+    _check_drawable(options, x, y, results)
     size = options.size or DEFAULT_SIZES["response"]
     fig, ax = plt.subplots(figsize=size, dpi=100)
     canvas = Canvas(ax)
@@ -975,19 +1074,19 @@ def _ends_in_words(result):
 
 
 def _named(result):
-    return f" ({result.name})" if result.name else ""
+    return f" ({_escaped(result.name)})" if result.name else ""
 
 
 def _title(results, x, y):
     main = [r for r in results if r.kind != "sweep"]
     sweeps = [r for r in results if r.kind == "sweep"]
     if len(main) == 1 and sweeps and main[0].parameter == x:
-        names = ", ".join(dict.fromkeys(r.name for r in sweeps))
+        names = ", ".join(dict.fromkeys(_escaped(r.name) for r in sweeps))
         return _title(main, x, y) + f"\nwith the brute force (sweeps {names})"
     if len(results) == 1:
         r = results[0]
         if r.kind == "trace":
-            return (f"Orbits traced over {symbol(r.parameter)} from '{r.signature}' ({r.name + ', ' if r.name else ''}"
+            return (f"Orbits traced over {symbol(r.parameter)} from '{r.signature}' ({_escaped(r.name) + ', ' if r.name else ''}"
                     f"{len(r.branches) + len(r.followed)} branches)\n{_ends_in_words(r)}")
         if r.kind == "curve":
             return (f"Curve in ({symbol(r.parameter)}, {symbol(r.second)}) of '{r.signature}' orbits{_named(r)}\n"
@@ -997,7 +1096,7 @@ def _title(results, x, y):
         if r.kind == "sweep":
             recorded = max(int(row["k"]) for row in r.rows) + 1
             return f"Brute force over {symbol(r.parameter)}: the settled motions, {recorded} periods recorded each{_named(r)}"
-    names = ", ".join(r.name for r in results[:-1]) + " and " + results[-1].name
+    names = ", ".join(_escaped(r.name) for r in results[:-1]) + " and " + _escaped(results[-1].name)
     return f"{quantity_label(y)} against {symbol(x)}: {names}"
 
 
@@ -1204,7 +1303,7 @@ def _plane_figure(results, options, plt):
             if start:
                 c.mark("", *start, "*", "gold", 12, "the trace's start (the paper's example)")
         canvas.extra += [Line2D([], [], ls="", marker="s", ms=9, color=shade[t], label=f"stable: {t}") for t in types]
-        ax.set_title(f"{'(a) ' if ms else ''}stable orbit types, from the orbit-type map {otm.name}", fontsize=pt(9))
+        ax.set_title(f"{'(a) ' if ms else ''}stable orbit types, from the orbit-type map {_escaped(otm.name)}", fontsize=pt(9))
         if ms:
             ax = axes[1]
             xs, ys, dx, dy, _ = _extent_of(cells)
@@ -1216,7 +1315,7 @@ def _plane_figure(results, options, plt):
                 if cell["other"] and marks:
                     ax.plot(cell["x"], cell["y"], "x", color="0.35", ms=3, zorder=3)
             other = "x: other motions too" if marks else "grey: other motions only"
-            ax.set_title(f"(b) brute force {ms.name} ({len(xs)} x {len(ys)} cells): stable period-1 types ({other})",
+            ax.set_title(f"(b) brute force {_escaped(ms.name)} ({len(xs)} x {len(ys)} cells): stable period-1 types ({other})",
                          fontsize=pt(9))
         for ax in axes:
             ax.set_xlim(extent[0], extent[1])
@@ -1252,7 +1351,7 @@ def _plane_figure(results, options, plt):
         if unsettled:
             axes[0].plot(*zip(*unsettled), "x", color="red", ms=4)
             canvases[0].extra.append(Line2D([], [], ls="", marker="x", color="red", label="a run did not settle"))
-        title = f"Brute-force map over ({symbol(first)}, {symbol(second)}): {ms.name}"
+        title = f"Brute-force map over ({symbol(first)}, {symbol(second)}): {_escaped(ms.name)}"
     for ax, canvas in zip(axes, canvases):
         for c in curves:
             draw_branch(canvas, c, first, second, label_by="type")
@@ -1271,7 +1370,7 @@ def _plane_figure(results, options, plt):
         for canvas in canvases:
             mark_natural_frequencies(canvas, pairs, "x" if first == "omega" else "y")
     if curves:
-        title += " with " + ", ".join(c.name for c in curves)
+        title += " with " + ", ".join(_escaped(c.name) for c in curves)
     # Per-panel legends would repeat; one legend beside the last panel.
     for canvas in canvases[:-1]:
         canvases[-1].extra += [h for h in canvas.handles() if h.get_label() not in
@@ -1283,15 +1382,62 @@ def _plane_figure(results, options, plt):
 
 # ---------------------------------------------------------------- writing
 
-def save(fig, path, dpi=DEFAULT_DPI):
+# What a figure written by save() carries in its metadata (no date, no version): the mark of a file
+# that `stickslip plot` may replace (check_replaceable).
+MARKER = "stickslip plot"
+MARKER_BYTES = {".png": b"tEXtSoftware\x00" + MARKER.encode(), ".pdf": b"/Creator (" + MARKER.encode() + b")",
+                ".svg": b"<dc:title>" + MARKER.encode() + b"</dc:title>"}
+
+
+def written_by_stickslip(path):
+    """Whether the file at `path` is a figure save() wrote: its extension's marker in its first or
+    last 64 KiB (a PNG's text chunk and an SVG's metadata lead, a PDF's Info dictionary trails)."""
+    marker = MARKER_BYTES.get(os.path.splitext(path)[1].lower())
+    if marker is None:
+        return False
+    try:
+        with open(path, "rb") as f:
+            head = f.read(65536)
+            f.seek(0, os.SEEK_END)
+            f.seek(max(0, f.tell() - 65536))
+            tail = f.read(65536)
+    except OSError:
+        return False
+    return marker in head or marker in tail
+
+
+def check_replaceable(path, option="output", force=False):
+    """BadInput unless `path` is new, a figure stickslip plot wrote (written_by_stickslip), or
+    `force`: a figure never replaces a file of the user's (a thesis.pdf, a photo)."""
+    path = os.fspath(path)
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise BadInput(option, f"'{path}'", f"a file in an existing directory ('{directory}' is not one)")
+    if force or not os.path.lexists(path):
+        return
+    if os.path.isdir(path):
+        raise BadInput(option, f"'{path}'", "a file name, not a directory")
+    if not written_by_stickslip(path):
+        raise BadInput(option, f"'{path}'", "a new file or a figure stickslip plot wrote (its metadata names it); "
+                       "this one it did not write: remove it or choose another name")
+
+
+def save(fig, path, dpi=DEFAULT_DPI, option="dpi"):
     """Writes the figure to `path` (PNG, PDF or SVG by its extension), whole or not at all (a
-    temporary file beside it, then renamed), without volatile metadata (dates, versions)."""
+    temporary file beside it, then renamed), without volatile metadata (dates, versions). A PNG
+    of more pixels than MAX_PIXELS a side or MAX_AREA in all is BadInput (`option` names dpi)."""
     import matplotlib.pyplot as plt
     extension = os.path.splitext(path)[1].lower()
     if extension not in FORMATS:
         raise BadInput("output", f"'{path}'", "a file name ending in .png, .pdf or .svg")
-    metadata = {".png": {"Software": None}, ".pdf": {"Creator": None, "Producer": None, "CreationDate": None},
-                ".svg": {"Creator": None, "Date": None}}[extension]
+    if extension == ".png":
+        try:
+            _check_pixels(option, f"{float(dpi):g}", float(dpi), tuple(fig.get_size_inches()))
+        except BadInput:
+            plt.close(fig)
+            raise
+    metadata = {".png": {"Software": MARKER}, ".pdf": {"Creator": MARKER, "Producer": None, "CreationDate": None},
+                ".svg": {"Creator": MARKER, "Date": None}}[extension]
     directory, name = os.path.split(os.path.abspath(path))
     temporary = os.path.join(directory, f".{name}.tmp.{os.getpid()}{extension}")
     try:
@@ -1373,12 +1519,18 @@ def main(argv):
             return 3  # stickslip plot says what to install
         matplotlib.use("Agg")
         options = Options(prefix="--", natural_frequencies=naturals, **values)
+        check_replaceable(options.output, "--output")
         results = [load(path) for path in inputs]
         fig = figure(results, options)
+        save(fig, options.output, options.dpi, "--dpi")
     except BadInput as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
-    save(fig, options.output, options.dpi)
+    except Exception as e:  # noqa: BLE001 - one line, never a traceback; save() removed its temporary file
+        why = " ".join(str(e).split()) or type(e).__name__
+        print(f"error: the figure could not be drawn or written ({type(e).__name__}: {why}); nothing was written",
+              file=sys.stderr)
+        return 1
     print("wrote", options.output)
     return 0
 

@@ -50,6 +50,13 @@ expect 2 "max-branches = 0 is invalid" "$bin" trace --preset paper-6 --parameter
   --results "$work/out" --max-branches 0 --output bad
 sed 's/^max_branches = 20/allow_inadmissible = 1/' "$work/t6.toml" > "$work/bad.toml"
 expect 2 "trace.allow_inadmissible" "$bin" run --results "$work/out" "$work/bad.toml"
+# The value is named with the type (the message said only "must be true or false").
+sed 's/^max_branches = 20/allow_inadmissible = "yes"/' "$work/t6.toml" > "$work/bad.toml"
+expect 2 "key 'trace.allow_inadmissible' = 'yes' is invalid: valid true or false (a boolean; its type is string)" \
+  "$bin" run --results "$work/out" "$work/bad.toml"
+sed 's/^max_branches = 20/allow_inadmissible = 1e300/' "$work/t6.toml" > "$work/bad.toml"
+expect 2 "key 'trace.allow_inadmissible' = 1.0000000000000001e+300 is invalid: valid true or false" \
+  "$bin" run --results "$work/out" "$work/bad.toml"
 
 # ---- 3: no convergence (a start far from any orbit), nothing written.
 cat > "$work/far.toml" <<'TOML'
@@ -101,4 +108,12 @@ code 0 "trace from a change of type" "$bin" trace --results "$work/t41" --point 
 
 # ---- 5: find: the motion is not periodic (a permanent stick has no orbit type).
 code 5 "find at a permanent stick" "$bin" find --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=10
+# A flag takes no value: --allow-inadmissible=2 or =1e300 traced as if true and =-1 was refused
+# with exit 4 as if false (CLI11's flag counts); now bad input naming the flag and the value.
+for value in 2 1e300 -1 no maybe; do
+  expect 2 "--allow-inadmissible = '$value' is invalid: valid no value" "$bin" trace "${p52[@]}" --results "$work/out" \
+    --output t52 --allow-inadmissible="$value"
+done
+expect 2 "--tie-u_r = '5' is invalid: valid no value" "$bin" solve --preset paper-4.2 --tie-u_r=5
+
 finish

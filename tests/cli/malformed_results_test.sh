@@ -105,6 +105,13 @@ damaged_map signature "slip- bogus"
 expect_rejected "$map_file:2: column 'signature' = 'slip- bogus' is invalid" map-sweep --merge "$work/merged.csv" "$map_file"
 [ ! -e "$work/merged.csv" ] || { echo "FAIL: a merge of a damaged map was written"; failures=$((failures + 1)); }
 
+# A field a megabyte long: the one line shows its start and its length, not the megabyte (the
+# whole field was printed before).
+damage branch.csv 'f = lines[3].split(","); f[9] = "1" * 1000000; lines[3] = ",".join(f)'
+expect_rejected "results/$run/branch.csv:4: column 'x20' = '1111111111" export --auto "results/$run"
+grep -qF "...' (1000000 characters) is not a" "$work/stderr" && [ "$(wc -c < "$work/stderr")" -lt 400 ] ||
+  { echo "FAIL: the message of a megabyte field is $(wc -c < "$work/stderr") bytes"; failures=$((failures + 1)); }
+
 # Nothing was written beside the damaged run, and no restart run was created.
 [ ! -e "$work/results/$run/b.$run" ] || { echo "FAIL: export wrote b.$run from a damaged run"; failures=$((failures + 1)); }
 [ ! -e "$work/results/restart-check" ] || { echo "FAIL: a restart from a damaged run was written"; failures=$((failures + 1)); }

@@ -86,4 +86,48 @@ printf '#!/bin/sh\nPYTHONPATH=%s exec /usr/bin/python3 "$@"\n' "$work/fake" > "$
 chmod +x "$work/python-without-matplotlib"
 expect 1 "python3-matplotlib" env STICKSLIP_PYTHON="$work/python-without-matplotlib" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png"
 
+# A run's own file given by its path (run/branch.csv) is checked as the run is, column by column:
+# it went to the script unchecked, and a 1e309 was drawn without a word.
+cp -r "$root/results/paper-5.1-omega-up" "$work/damaged"
+/usr/bin/python3 - "$work/damaged/branch.csv" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+column = lines[0].split(",").index("amplitude:x2")
+fields = lines[5].split(",")
+fields[column] = "1e309"
+lines[5] = ",".join(fields)
+open(sys.argv[1], "w").write("\n".join(lines) + "\n")
+PY
+for file in branch.csv special-points.csv summary.json ""; do
+  expect 2 "branch.csv:6: column 'amplitude:x2' = '1e309'" "$bin" plot "$work/damaged/$file" --output "$png"
+done
+
+# A brute-force map's CSV is read by map-sweep's reader, every column checked: the script alone drew
+# a status 'weird', a run '' or a cell index past ni without a word.
+map_csv="$root/results/maps/paper-6-omega-u_r-brute-force.csv"
+for change in "status:weird" "run:" "i:99999" "signature:bogus"; do
+  /usr/bin/python3 - "$map_csv" "$work/damaged-map.csv" "$change" <<'PY'
+import sys
+source, target, change = sys.argv[1:]
+column, value = change.split(":", 1)
+lines = open(source).read().splitlines()
+fields = lines[3].split(",")
+fields[lines[0].split(",").index(column)] = value
+lines[3] = ",".join(fields)
+open(target, "w").write("\n".join(lines) + "\n")
+PY
+  expect 2 "damaged-map.csv:4: column '${change%%:*}' = '${change#*:}'" "$bin" plot "$work/damaged-map.csv" --output "$png"
+done
+
+# The program copied away from its scripts (no stickslip_plot.py beside it nor in ../share/stickslip/):
+# one line naming the script, exit 1 (python3's "can't open file" exited 2, as if the input were bad).
+mkdir -p "$work/copy/bin"
+cp "$bin" "$work/copy/bin/stickslip"
+expect 1 "plot needs its drawing script stickslip_plot.py at '$work/copy/share/stickslip/stickslip_plot.py'" \
+  "$work/copy/bin/stickslip" plot paper-5.1-omega-up --results "$root/results" --output "$png"
+# A link to the program finds the scripts beside its target.
+ln -s "$bin" "$work/copy/bin/linked"
+"$work/copy/bin/linked" plot paper-5.1-omega-up --results "$root/results" --output "$work/linked.png" > /dev/null &&
+  [ -s "$work/linked.png" ] && pass || fail "plot through a symbolic link to the program"
+
 finish

@@ -105,7 +105,7 @@ range = [0.6, 0.8]'
 expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (a EP): valid at a period doubling (PD) or a symmetry breaking (SB)" "${switched/PD2/EP1}"
 expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" "$switched
 shooting = \"multiple\""
-expect 2 "key 'start.restart.switch_branch' must be true or false" "${switched/switch_branch = true/switch_branch = 1}"
+expect 2 "key 'start.restart.switch_branch' = 1 is invalid: valid true or false (a boolean; its type is integer)" "${switched/switch_branch = true/switch_branch = 1}"
 # With a [trace] (no direction: the switch would take one side, the trace's down chain come back up it).
 expect 2 "key 'start.restart.switch_branch' = true is invalid with a .trace. table" "${switched/direction = \"up\"/}
 [trace]"

@@ -68,3 +68,23 @@ def test_plot_writes_the_format_of_its_extension(tmp_path):
     with pytest.raises(ValueError, match=r"output = '.*curve.jpg' is invalid: valid a file name ending in .png, .pdf or .svg"):
         stickslip.plot(branch, output=tmp_path / "curve.jpg")
     assert not (tmp_path / "curve.jpg").exists()
+
+
+def test_plot_keeps_a_file_it_did_not_write(tmp_path):
+    # stickslip.plot(output=) replaced any file (a thesis.pdf) before; now only a figure it wrote,
+    # or any with force=True; a missing directory is refused before the drawing.
+    branch = stickslip.Branch.load(RESULTS / "paper-5.1-fold-curve")
+    thesis = tmp_path / "thesis.pdf"
+    thesis.write_bytes(b"%PDF-1.4 the user's\n")
+    with pytest.raises(ValueError, match=r"^output = '.*thesis.pdf' is invalid: valid a new file or a figure stickslip plot wrote"):
+        stickslip.plot(branch, output=thesis)
+    assert thesis.read_bytes() == b"%PDF-1.4 the user's\n"
+    figure = tmp_path / "figure.svg"
+    stickslip.plot(branch, output=figure)
+    stickslip.plot(branch, output=figure, title="again")  # its own figure is replaced
+    assert b"again" in figure.read_bytes()
+    stickslip.plot(branch, output=thesis, force=True)
+    assert thesis.read_bytes().startswith(b"%PDF") and b"the user's" not in thesis.read_bytes()
+    with pytest.raises(ValueError, match=r"a file in an existing directory"):
+        stickslip.plot(branch, output=tmp_path / "missing" / "figure.png")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["figure.svg", "thesis.pdf"]

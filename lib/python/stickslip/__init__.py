@@ -84,16 +84,19 @@ def _plotting_result(result, name):
     return result  # a path, or a plotting result already
 
 
-def plot(*results, output=None, dpi=plotting.DEFAULT_DPI, **options):
+def plot(*results, output=None, dpi=plotting.DEFAULT_DPI, force=False, **options):
     """Several results on one figure, as `stickslip plot A B ...` overlays them: Branch, Trace,
     SweepResult, MapSweepResult, or paths of stored results (a run's, trace's or orbit-type map's
     directory, a sweep's or map-sweep's CSV). Keywords: Branch.plot's options; with output=
     "figure.png" (or .pdf, .svg) the figure is also written, at `dpi` for a PNG. Returns the
     matplotlib Figure; bad options raise ValueError naming the option, its value and the valid
-    range."""
+    range. An existing output is replaced only if stickslip wrote it (a figure of stickslip plot),
+    or with force=True; any other raises ValueError before anything is drawn."""
     named = [_plotting_result(r, f"sweep {k + 1}" if isinstance(r, SweepResult) else f"map {k + 1}")
              for k, r in enumerate(results)]
     opts = plotting.Options(dpi=dpi, output=None if output is None else str(output), **options)
+    if output is not None:
+        plotting.check_replaceable(str(output), "output", force)
     fig = plotting.figure(named, opts)
     if output is not None:
         plotting.save(fig, str(output), dpi)  # whole or not at all, the format of the extension

@@ -103,9 +103,14 @@ bool CsvTable::Flag(int row, int column) const {
 }
 
 InvalidInput CsvTable::Error(int row, int column, std::string_view what) const {
-  return InvalidInput::WithMessage(header_[column], fmt::format("{}:{}: column '{}' = '{}' {}", file_.string(),
-                                                                rows_[row].line, header_[column], Text(row, column),
-                                                                what));
+  // A field of a damaged file may be megabytes long: the message shows its start and its length.
+  constexpr std::size_t kShown = 80;
+  const std::string& text = Text(row, column);
+  const std::string shown =
+      text.size() <= kShown ? text : fmt::format("{}...' ({} characters", text.substr(0, kShown), text.size());
+  return InvalidInput::WithMessage(
+      header_[column], fmt::format("{}:{}: column '{}' = '{}{} {}", file_.string(), rows_[row].line, header_[column],
+                                   shown, text.size() <= kShown ? "'" : ")", what));
 }
 
 InvalidInput CsvTable::Error(int row, std::string_view what) const {

@@ -145,7 +145,15 @@ class TableReader {
   void Boolean(std::string_view key, bool* out) {
     const toml::node* n = Get(key);
     if (!n) return;
-    if (!n->is_boolean()) Fail(*n, key, "must be true or false");
+    if (!n->is_boolean()) {
+      // The value as written (a string, 1e300, an array): short ones shown, every one's type named.
+      std::ostringstream shown;
+      n->visit([&shown](const auto& v) { shown << v; });
+      std::string value = shown.str();
+      if (value.size() > 40) value = value.substr(0, 40) + "...";
+      Fail(*n, key, fmt::format("= {} is invalid: valid true or false (a boolean; its type is {})", value,
+                                toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
+    }
     *out = n->as_boolean()->get();
   }
   void Strings(std::string_view key, std::vector<std::string>* out) {
