@@ -47,8 +47,6 @@ mkdir -p results/maps
 "$bin" map --trace results/paper-6-omega-trace --second u_r --second-from 1.2 --second-to 1.6 --first-from 0.54 \
   --first-to 0.59 --brute-force results/maps/paper-6-omega-u_r-brute-force.csv --output results/maps/paper-6-omega-u_r
 for m in paper-5.1-omega-u_r paper-6-omega-u_r; do
-  # This script's own figure (plot replaces only a figure with its marker; those written before it had none).
-  rm -f "results/figures/$m-map.png"
   "$bin" plot results/maps/$m results/maps/$m-brute-force.csv --output results/figures/$m-map.png
 done
 /usr/bin/python3 tools/map_summary.py results
