@@ -8,7 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "number_text.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/verification.hpp"
 

@@ -16,7 +16,7 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/output_marker.hpp"
-#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/model/transient.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "cli_common.hpp"
 #include "stickslip/io/command_options.hpp"
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 
 namespace stickslip::cli {
 

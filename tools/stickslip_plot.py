@@ -362,7 +362,7 @@ def load(path):
 
 def natural_frequencies(chi, eta):
     """(omega1, omega2): the roots of s^4 - (1 + chi eta) s^2 + chi eta (1 - chi) = 0 (Pascal
-    2014, eq. 56), as lib/include/stickslip/model/modal.hpp's NaturalFrequencies computes them
+    2014, eq. 56), as lib/include/stickslip/model/pascal_2014/modal.hpp's NaturalFrequencies computes them
     (omega1^2 as det/omega2^2, free of cancellation)."""
     trace = 1.0 + chi * eta
     root = math.sqrt((1.0 - chi * eta) ** 2 + 4.0 * chi * chi * eta)

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
-#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/stability.hpp"
 #include "support/solved_presets.hpp"

@@ -14,10 +14,10 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/model/simulation.hpp"
-#include "stickslip/model/odeint_simulator.hpp"
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "support/solved_presets.hpp"
 

@@ -20,7 +20,7 @@
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/orbits/adjacent_type.hpp"
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "support/restart_in_omega.hpp"

@@ -11,7 +11,7 @@
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/paper_presets.hpp"

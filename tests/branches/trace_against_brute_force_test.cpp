@@ -18,7 +18,7 @@
 #include "stickslip/analysis/settled_motion.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/io/run.hpp"
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/orbits/stability.hpp"
 
 namespace stickslip {

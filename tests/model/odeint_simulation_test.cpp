@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "support/den_hartog_orbit.hpp"

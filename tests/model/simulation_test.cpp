@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/events.hpp"
-#include "stickslip/model/odeint_simulator.hpp"
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 
 namespace stickslip {
 namespace {

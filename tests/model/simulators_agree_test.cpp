@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 #include "stickslip/model/simulation.hpp"
 
 namespace stickslip {

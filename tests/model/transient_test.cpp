@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/odeint_simulator.hpp"
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 
 namespace stickslip {
 namespace {

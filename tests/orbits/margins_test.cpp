@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
 #include "support/solved_presets.hpp"

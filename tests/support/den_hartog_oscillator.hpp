@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/mode.hpp"
 #include "stickslip/model/model_description.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"

@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 
 namespace stickslip {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 
 namespace stickslip {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/model/transient.hpp"
 
 namespace stickslip {

@@ -22,14 +22,16 @@ enum class Kind { kFold, kFlip, kSymmetry, kTorus };
 
 // B(X, Y) over the pairs i < j (rows) and k < l (columns), in lexicographic order: X_ik Y_jl -
 // X_il Y_jk. The second compound of M is B(M, M), its derivative B(dM, M) + B(M, dM).
-Eigen::MatrixXd PairProduct(const Eigen::Matrix4d& x, const Eigen::Matrix4d& y) {
-  Eigen::MatrixXd b(6, 6);
+template <typename Matrix>
+Eigen::MatrixXd PairProduct(const Matrix& x, const Matrix& y) {
+  const int size = static_cast<int>(x.rows()), pairs = size * (size - 1) / 2;
+  Eigen::MatrixXd b(pairs, pairs);
   int row = 0;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j, ++row) {
+  for (int i = 0; i < size; ++i) {
+    for (int j = i + 1; j < size; ++j, ++row) {
       int column = 0;
-      for (int k = 0; k < 4; ++k) {
-        for (int l = k + 1; l < 4; ++l, ++column) b(row, column) = x(i, k) * y(j, l) - x(i, l) * y(j, k);
+      for (int k = 0; k < size; ++k) {
+        for (int l = k + 1; l < size; ++l, ++column) b(row, column) = x(i, k) * y(j, l) - x(i, l) * y(j, k);
       }
     }
   }
@@ -45,7 +47,8 @@ struct TestMatrix {
 TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
   const MonodromyGradient g = MonodromyGradients(orbit);
   TestMatrix t;
-  const Eigen::Matrix4d identity = Eigen::Matrix4d::Identity();
+  using Matrix = MonodromyGradient::Matrix;
+  const Matrix identity = Matrix::Identity(g.period.rows(), g.period.cols());
   switch (kind) {
     case Kind::kFold:
       t.a = g.period - identity;
@@ -57,26 +60,29 @@ TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
       break;
     case Kind::kSymmetry:
       t.a = identity - g.listed;
-      for (const Eigen::Matrix4d& d : g.d_listed) t.d_a.push_back(-d);
+      for (const Matrix& d : g.d_listed) t.d_a.push_back(-d);
       break;
     case Kind::kTorus:
-      t.a = PairProduct(g.period, g.period) - Eigen::MatrixXd::Identity(6, 6);
-      for (const Eigen::Matrix4d& d : g.d_period) t.d_a.push_back(PairProduct(d, g.period) + PairProduct(g.period, d));
+      t.a = PairProduct(g.period, g.period);
+      t.a -= Eigen::MatrixXd::Identity(t.a.rows(), t.a.cols());
+      for (const Matrix& d : g.d_period) t.d_a.push_back(PairProduct(d, g.period) + PairProduct(g.period, d));
       break;
   }
   return t;
 }
 
 // p'(mu) at mu = +-1 for p(mu) = det(mu I - M): the trace of the adjugate of mu I - M, the sum of
-// its principal 3 x 3 minors.
-double Slope(const Stability& s, double mu) {
-  const Eigen::Matrix4d a = mu * Eigen::Matrix4d::Identity() - s.monodromy;
+// its principal minors of order size - 1.
+template <int S>
+double Slope(const BasicStability<S>& s, double mu) {
+  using Matrix = typename BasicStability<S>::Matrix;
+  const Matrix a = mu * Matrix::Identity() - s.monodromy;
   double sum = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    Eigen::Matrix3d minor;
-    for (int i = 0, r = 0; i < 4; ++i) {
+  for (int k = 0; k < S; ++k) {
+    Eigen::Matrix<double, S - 1, S - 1> minor;
+    for (int i = 0, r = 0; i < S; ++i) {
       if (i == k) continue;
-      for (int j = 0, c = 0; j < 4; ++j) {
+      for (int j = 0, c = 0; j < S; ++j) {
         if (j != k) minor(r, c++) = a(i, j);
       }
       ++r;

@@ -19,7 +19,7 @@ namespace {
 
 namespace ov = orbit_variables;
 
-// The continued parameter's range stops at its valid range (parameters.hpp), and u_r >= u_s
+// The continued parameter's range stops at its valid range (model/pascal_2014/parameters.hpp), and u_r >= u_s
 // (eq. 4) bounds a continuation in either while the other is held: bounds located exactly (EP).
 // A released u_s reaching zero ends the family by the sliding-friction margin, a domain boundary.
 void KeepInPhysicalRanges(const OrbitContinuationSetup& setup, const std::vector<int>& free, int parameter,

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 namespace stickslip::detail {
 

@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/transient.hpp"
 #include "stickslip/progress.hpp"
 #include "stickslip/orbits/margins.hpp"

@@ -20,7 +20,7 @@
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/io/run_file.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/start_problem.hpp"
 

@@ -23,7 +23,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/model/integrable_oscillator_model.hpp"
-#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/odeint_options.hpp"
 #include "stickslip/model/simulation.hpp"
 
 namespace stickslip {
@@ -324,7 +324,7 @@ void CheckInput(const M& model, const typename M::Parameters& p, const typename 
 }  // namespace odeint_simulation
 
 // One mode only, no events: the state after elapsed time s from `start` at forcing phase `phase`
-// (odeint_simulator.hpp's IntegrateMode for any model). Throws InvalidInput if s < 0 or s is not
+// (pascal_2014/odeint_simulator.hpp's IntegrateMode for any model). Throws InvalidInput if s < 0 or s is not
 // finite.
 template <IntegrableOscillatorModel M>
 typename M::State IntegrateMode(const M& model, Mode mode, const typename M::State& start, double phase, double s,
@@ -336,7 +336,7 @@ typename M::State IntegrateMode(const M& model, Mode mode, const typename M::Sta
   return integrator.Integrated(s);
 }
 
-// The simulation (odeint_simulator.hpp's SimulateOdeint for any model). Throws InvalidInput for
+// The simulation (pascal_2014/odeint_simulator.hpp's SimulateOdeint for any model). Throws InvalidInput for
 // bad input (model.Validate(p) fails, x0, phi or the options not finite, duration <= 0,
 // sample_step < 0, invalid `odeint`). A slip started from rest that does not move in its
 // direction ends the simulation with SimulationEnd::kStuckAtRest.

@@ -83,7 +83,7 @@ concept OscillatorModel =
       { model.Validate(p) } -> std::same_as<std::optional<InvalidInput>>;
       { model.ValidateClosedForm(p) } -> std::same_as<std::optional<InvalidInput>>;
       // The motion in a mode, the flow, and the flow with its derivatives (state, start, elapsed
-      // time, phase, parameters: model/flows.hpp's BasicFlowDerivatives).
+      // time, phase, parameters: model/pascal_2014/flows.hpp's BasicFlowDerivatives).
       { model.MotionInMode(mode, x, phase, p) } -> std::same_as<typename M::Motion>;
       { motion.StateAt(phase) } -> std::convertible_to<typename M::State>;
       { model.Flow(mode, x, phase, phase, p) } -> std::same_as<typename M::State>;

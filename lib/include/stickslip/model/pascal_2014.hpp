@@ -2,7 +2,7 @@
 // OscillatorModel (oscillator_model.hpp): two masses, two springs, Coulomb friction on the second
 // mass against a fixed ground, forcing cos(omega t + phi), in the paper's scaled variables
 // (eq. 3). The state is (x1, x2, x1', x2'); the contact's velocity is x2'. Its closed forms live
-// in flows.hpp, modal.hpp and events.hpp; this struct gathers them behind the interface, at the
+// in pascal_2014/ (flows.hpp, modal.hpp, events.hpp, saltation.hpp); this struct gathers them behind the interface, at the
 // fixed size 4 (no allocation, no run-time size).
 #pragma once
 
@@ -11,11 +11,11 @@
 #include <optional>
 
 #include "stickslip/invalid_input.hpp"
-#include "stickslip/model/events.hpp"
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/model_description.hpp"
-#include "stickslip/model/parameters.hpp"
-#include "stickslip/model/saltation.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
+#include "stickslip/model/pascal_2014/saltation.hpp"
 
 namespace stickslip {
 

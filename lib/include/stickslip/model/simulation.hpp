@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/progress.hpp"

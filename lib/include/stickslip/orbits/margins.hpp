@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"

@@ -12,8 +12,8 @@
 
 #include <Eigen/Core>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/signature.hpp"
 

@@ -1,4 +1,4 @@
-// The paper's five orbits as solver presets: data and printed values (model/paper_examples.hpp),
+// The paper's five orbits as solver presets: data and printed values (model/pascal_2014/paper_examples.hpp),
 // the orbit signature, the printed durations as starting guess, the default choice of unknowns,
 // and every printed number with its name in stickslip's variables, for comparison.
 #pragma once
@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 

@@ -7,8 +7,8 @@
 #include <span>
 #include <vector>
 
-#include "stickslip/model/events.hpp"
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/orbits/signature.hpp"
 
 namespace stickslip {

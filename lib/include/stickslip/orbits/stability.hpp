@@ -2,7 +2,7 @@
 // of the stroboscopic (period) map as the product of the closed-form flow Jacobians of the
 // segments and the saltation (jump) matrices at each switching event (Leine & Nijmeijer,
 // Dynamics and Bifurcations of Non-Smooth Mechanical Systems, 2004; the paper's in
-// model/saltation.hpp), and its Floquet multipliers.
+// model/pascal_2014/saltation.hpp), and its Floquet multipliers.
 #pragma once
 
 #include <array>

@@ -27,8 +27,8 @@
 #include <string_view>
 #include <vector>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/named_values.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"

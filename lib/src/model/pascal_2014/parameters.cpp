@@ -1,10 +1,10 @@
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 
 namespace stickslip {

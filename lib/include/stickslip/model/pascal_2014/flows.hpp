@@ -11,9 +11,9 @@
 
 #include <Eigen/Core>
 
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/model/mode.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 namespace stickslip {
 

@@ -1,11 +1,11 @@
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 #include <limits>
 #include <utility>
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 
 namespace stickslip {
 namespace {

@@ -1,4 +1,4 @@
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 
 // <Eigen/Core> must precede the unsupported AutoDiff module.
 #include <Eigen/Core>

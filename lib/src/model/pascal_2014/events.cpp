@@ -1,4 +1,4 @@
-#include "stickslip/model/events.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
 
 #include <cmath>
 

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/odeint_simulator.hpp"
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
 
 namespace stickslip {

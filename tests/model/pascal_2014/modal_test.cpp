@@ -1,13 +1,13 @@
 // Appendix 1 of the paper: identities of H(t) and Gamma(t), and the matrix form of the flows
 // (eqs. 5, 8, 10) against stickslip's spectral form.
-#include "stickslip/model/modal.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
 
 #include <random>
 
 #include <Eigen/LU>
 #include <gtest/gtest.h>
 
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 
 namespace stickslip {
 namespace {

@@ -1,4 +1,4 @@
-#include "stickslip/model/paper_examples.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 
 #include <array>
 #include <numbers>

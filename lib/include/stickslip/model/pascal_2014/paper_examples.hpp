@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 namespace stickslip {
 

@@ -15,9 +15,9 @@
 #include "support/random_flow_cases.hpp"
 #include "support/test_names.hpp"
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/odeint_simulator.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 namespace stickslip {
 namespace {

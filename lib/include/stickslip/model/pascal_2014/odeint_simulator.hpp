@@ -13,19 +13,12 @@
 
 #include <string>
 
-#include "stickslip/model/flows.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
+#include "stickslip/model/odeint_options.hpp"
 #include "stickslip/model/simulation.hpp"
 
 namespace stickslip {
-
-struct OdeintOptions {
-  double relative_tolerance = 1e-12;    // dopri5 error control
-  double absolute_tolerance = 1e-12;
-  double event_time_tolerance = 1e-12;  // bisection on the dense output
-  // Throws InvalidInput naming the first field that is not finite and > 0.
-  void CheckValid() const;
-};
 
 // Reference simulator: eq. (2) integrated mode by mode with a controlled dense-output
 // runge_kutta_dopri5; each event located by bisection on the dense output, then the

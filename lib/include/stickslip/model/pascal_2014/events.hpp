@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 
 namespace stickslip {

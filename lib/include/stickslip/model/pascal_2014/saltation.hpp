@@ -8,10 +8,10 @@
 // flows' transition matrices (flows.hpp).
 #pragma once
 
-#include "stickslip/model/events.hpp"
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/events.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/mode.hpp"
-#include "stickslip/model/parameters.hpp"
+#include "stickslip/model/pascal_2014/parameters.hpp"
 
 namespace stickslip {
 

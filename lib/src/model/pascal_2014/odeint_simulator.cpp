@@ -1,4 +1,4 @@
-#include "stickslip/model/odeint_simulator.hpp"
+#include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,14 +10,6 @@
 #include "stickslip/model/odeint_simulation.hpp"
 
 namespace stickslip {
-
-void OdeintOptions::CheckValid() const {
-  for (const auto& [name, value] : {std::pair{"relative_tolerance", relative_tolerance},
-                                    std::pair{"absolute_tolerance", absolute_tolerance},
-                                    std::pair{"event_time_tolerance", event_time_tolerance}}) {
-    if (!(std::isfinite(value) && value > 0.0)) throw InvalidInput(name, value, "finite and > 0");
-  }
-}
 
 SimulationResult SimulateOdeint(const Parameters& p, const State& x0, double phi,
                                 const SimulationOptions& options, const OdeintOptions& odeint) {

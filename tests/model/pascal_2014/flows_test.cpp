@@ -1,6 +1,6 @@
 // Exact derivatives of the flows against central finite differences, and the flows against the
 // equations of motion (2) they solve.
-#include "stickslip/model/flows.hpp"
+#include "stickslip/model/pascal_2014/flows.hpp"
 
 #include <random>
 
