@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the continuation benchmark and the MPI benchmark (Release build), writes the medians and the
-# ratios measured in each one run to results/benchmark.md, and copies them into the README.
+# ratios measured in each one run to results/benchmark.md, and copies them into results/README.md.
 #   tools/benchmark.sh [continuation_benchmark [mpi_benchmark]]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

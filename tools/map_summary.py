@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The orbit-type maps of results/maps/ (stickslip map's directories) in one Markdown table, each
 map's curves, regions and agreement with its brute-force map, written to results/maps/maps.md and
-spliced into README.md between <!-- orbit-type-maps:begin --> and <!-- orbit-type-maps:end -->.
+spliced into results/README.md between <!-- orbit-type-maps:begin --> and <!-- orbit-type-maps:end -->.
 
 Usage: /usr/bin/python3 tools/map_summary.py RESULTS"""
 import json

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Writes results/paper-table.md: every value the paper prints for its five examples beside
 # stickslip's solution, for the paper's data held and for the paper's own choice of fixed
-# values; and copies it into README.md between the paper-table markers.
+# values; and copies it into results/README.md between the paper-table markers.
 # Usage: tools/paper_table.sh [path to the stickslip program]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -26,4 +26,4 @@ solve() { "$bin" solve "$@" || [ $? -eq 4 ]; }
 mv "$tmp" "$out"
 trap - EXIT
 /usr/bin/python3 "$root/tools/splice_readme.py" paper-table "$out"
-echo "wrote $out and the README's paper table"
+echo "wrote $out and the paper table of results/README.md"

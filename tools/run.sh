@@ -2,7 +2,8 @@
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
 # the orbit-type maps into results/maps/, and regenerates the tables (results/paper-table.md,
-# results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures.
+# results/runs.md, results/trace-intervals.md, results/maps/maps.md, each spliced into
+# results/README.md; README.md itself holds no generated table) and figures.
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 # Only what this job runs: the program, its MPI front end and the Python module (the figures'

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Writes results/runs.md: for every run in results/, its signature, how the branch ended and
-every located special point, from summary.json and special-points.csv; and copies it into the
-README. Usage: tools/summarize_runs.py [results dir]"""
+every located special point, from summary.json and special-points.csv; and copies it into
+results/README.md. Usage: tools/summarize_runs.py [results dir]"""
 import csv
 import json
 import os
@@ -35,4 +35,4 @@ with open(out + ".tmp", "w") as f:
     f.write("\n".join(lines) + "\n")
 os.replace(out + ".tmp", out)
 subprocess.run([sys.executable, os.path.join(root, "tools", "splice_readme.py"), "runs", out], check=True)
-print(f"wrote {out} and the README's run table")
+print(f"wrote {out} and the run table of results/README.md")

@@ -2,7 +2,7 @@
 """Writes results/trace-intervals.md: for every trace in results/, the intervals of the continued
 parameter over which each orbit type the trace found is a motion of the system (admissible = 1)
 and where it is stable there, read off its branches' files, and how each chain ended; then splices
-it into README.md (splice_readme.py, between <!-- trace-intervals:begin --> and :end).
+it into results/README.md (splice_readme.py, between <!-- trace-intervals:begin --> and :end).
 
 An interval is the parameter's range over consecutive admissible steps of a branch (a stretch with
 a fold covers its range once); overlapping intervals of one type are joined.
