@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the continuation benchmark and the MPI benchmark (Release build), writes the medians and the
-# ratios measured in each one run to results/benchmark.md, and copies them into the README.
+# ratios measured in each one run to results/benchmark.md, and writes results/README.md anew with
+# them (tools/splice_readme.py).
 #   tools/benchmark.sh [continuation_benchmark [mpi_benchmark]]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -121,5 +122,5 @@ out = sys.argv[2]
 open(out + ".tmp", "w").write("\n".join(lines) + "\n")
 os.replace(out + ".tmp", out)
 PY
-/usr/bin/python3 "$root/tools/splice_readme.py" benchmark "$root/results/benchmark.md"
+/usr/bin/python3 "$root/tools/splice_readme.py" "$root/results"
 cat "$root/results/benchmark.md"

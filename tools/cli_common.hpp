@@ -14,7 +14,7 @@
 
 namespace stickslip::cli {
 
-// Stable exit codes (documented in the README and in --help). Bad input is InvalidInput, which
+// Stable exit codes (documented in tools/README.md and in --help). Bad input is InvalidInput, which
 // the program maps to kExitBadInput.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;     // an internal or I/O failure

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The orbit-type maps of results/maps/ (stickslip map's directories) in one Markdown table, each
-map's curves, regions and agreement with its brute-force map, written to results/maps/maps.md and
-spliced into README.md between <!-- orbit-type-maps:begin --> and <!-- orbit-type-maps:end -->.
+map's curves, regions and agreement with its brute-force map, written to results/maps/maps.md ; then
+writes RESULTS/README.md anew (tools/splice_readme.py), this table between its orbit-type-maps markers.
 
 Usage: /usr/bin/python3 tools/map_summary.py RESULTS"""
 import json
@@ -36,7 +36,7 @@ def main(results):
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
     subprocess.run([sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "splice_readme.py"),
-                    "orbit-type-maps", out], check=True)
+                    results], check=True)
 
 
 if __name__ == "__main__":

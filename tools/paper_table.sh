@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Writes results/paper-table.md: every value the paper prints for its five examples beside
 # stickslip's solution, for the paper's data held and for the paper's own choice of fixed
-# values; and copies it into README.md between the paper-table markers.
+# values; then writes results/README.md anew (tools/splice_readme.py), this table between
+# its paper-table markers.
 # Usage: tools/paper_table.sh [path to the stickslip program]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,5 +26,5 @@ solve() { "$bin" solve "$@" || [ $? -eq 4 ]; }
 } > "$tmp"
 mv "$tmp" "$out"
 trap - EXIT
-/usr/bin/python3 "$root/tools/splice_readme.py" paper-table "$out"
-echo "wrote $out and the README's paper table"
+/usr/bin/python3 "$root/tools/splice_readme.py" "$root/results"
+echo "wrote $out and results/README.md"

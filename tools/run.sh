@@ -2,7 +2,9 @@
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
 # the orbit-type maps into results/maps/, and regenerates the tables (results/paper-table.md,
-# results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures.
+# results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures, and writes
+# results/README.md from its text in tools/results_readme.md with those tables spliced in (each table's
+# script runs tools/splice_readme.py; README.md itself holds no generated table).
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 # Only what this job runs: the program, its MPI front end and the Python module (the figures'

@@ -149,7 +149,7 @@ Command AddSolveCommand(CLI::App& app) {
   cmd->add_option("--results", args->start.results, "where the runs of --point are stored")->capture_default_str();
   cmd->add_flag("--paper-choice", args->paper_choice,
                 "with --preset: the paper's own choice where a round printed value looks held "
-                "fixed (see README, errata)");
+                "fixed (see results/README.md, errata)");
   cmd->add_option("--shooting", args->shooting,
                   "single (dense), multiple (block-sparse, SuiteSparse), or auto (single up to 6 "
                   "listed segments)")

@@ -70,14 +70,27 @@ DEFAULT_SIZES = {"response": (9.0, 5.0), "map-sweep": (11.0, 4.6), "orbit-type-m
 INADMISSIBLE = dict(color="0.65", lw=0.9)
 # One colour per orbit type, in the order met (red is kept for the markers).
 COLOURS = ["C0", "C2", "C1", "C4", "C9", "C5", "C6", "C8", "C7"]
-# Marker and colour by kind of special point: smooth bifurcations, user values, ends, and the
-# nonsmooth orbit-type changes (SK, GR, ...: every other code).
+# Marker and colour by kind of special point: smooth bifurcations, the codimension-two points of
+# a curve in two parameters, user values, ends, and the nonsmooth orbit-type changes (SK, GR, T0,
+# S0, NS, ...: every other code; NS is x2' touching zero in a slip, lib/README.md, not a torus).
 MARKERS = {"LP": ("s", "red"), "BP": ("^", "red"), "SB": ("^", "red"), "PD": ("v", "red"), "TR": ("D", "red"),
-           "NS": ("D", "red"), "UZ": ("o", "C0"), "EP": ("o", "black")}
+           "LPPD": ("X", "purple"), "R1": ("P", "purple"), "R2": ("P", "purple"), "R3": ("P", "purple"),
+           "R4": ("P", "purple"), "UZ": ("o", "C0"), "EP": ("o", "black")}
 TYPE_CHANGE_MARKER = ("o", "darkorange")
 SWITCH_MARKER = ("*", "gold")
+# Legend entry by code. On a fold, flip or torus curve (lib/src/branches/floquet_condition.cpp, AUTO's
+# names): LPPD a fold-flip, R1 to R4 the strong resonances 1:1 to 1:4 (a multiplier pair at
+# exp(±2πi/k)): bifurcations of the curve, not changes of orbit type.
 SMOOTH = {"LP": "fold (LP)", "TR": "torus (TR)", "PD": "period doubling (PD)", "SB": "symmetry breaking (SB)",
-          "BP": "branch point (BP)", "UZ": "user value (UZ)", "EP": "end of the family (EP)"}
+          "BP": "branch point (BP)", "UZ": "user value (UZ)", "EP": "end of the family (EP)",
+          "LPPD": "fold-flip (LPPD)", "R1": "1:1 resonance (R1)", "R2": "1:2 resonance (R2)",
+          "R3": "1:3 resonance (R3)", "R4": "1:4 resonance (R4)"}
+
+
+def legend_entry(code):
+    """The legend's name for a special point of type `code` ("R1" -> "1:1 resonance (R1)"); every
+    code not listed in SMOOTH is a change of orbit type (SK, GR, T0, S0, NS, ...)."""
+    return SMOOTH.get(code, "change of orbit type")
 # Special points not drawn: a branch's start (the previous branch's end, drawn there) and the
 # range's bounds (the axis ends).
 SKIPPED_TESTS = ("start", "lambda_min", "lambda_max")
@@ -662,12 +675,9 @@ def draw_branch(canvas, branch, x, y, *, label_by="label", stable=None, skip=(),
             continue
         kind, px, py = row["type"], _number(row[x]), _number(row[y])
         text = row["label"] if label_by == "label" else kind
-        if kind in SMOOTH:
-            if kind == "EP":
-                continue
-            canvas.mark(text, px, py, *MARKERS[kind], 6, SMOOTH[kind])
-        else:
-            canvas.mark(text, px, py, *TYPE_CHANGE_MARKER, 6, "change of orbit type")
+        if kind == "EP":
+            continue
+        canvas.mark(text, px, py, *MARKERS.get(kind, TYPE_CHANGE_MARKER), 6, legend_entry(kind))
 
 
 def draw_trace(canvas, trace, x, y):

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Writes results/runs.md: for every run in results/, its signature, how the branch ended and
-every located special point, from summary.json and special-points.csv; and copies it into the
-README. Usage: tools/summarize_runs.py [results dir]"""
+every located special point, from summary.json and special-points.csv; then writes
+results/README.md anew (tools/splice_readme.py), this table between its runs markers.
+Usage: tools/summarize_runs.py [results dir]"""
 import csv
 import json
 import os
@@ -34,5 +35,5 @@ out = os.path.join(results, "runs.md")
 with open(out + ".tmp", "w") as f:
     f.write("\n".join(lines) + "\n")
 os.replace(out + ".tmp", out)
-subprocess.run([sys.executable, os.path.join(root, "tools", "splice_readme.py"), "runs", out], check=True)
-print(f"wrote {out} and the README's run table")
+subprocess.run([sys.executable, os.path.join(root, "tools", "splice_readme.py"), results], check=True)
+print(f"wrote {out} and results/README.md")

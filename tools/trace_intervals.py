@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Writes results/trace-intervals.md: for every trace in results/, the intervals of the continued
 parameter over which each orbit type the trace found is a motion of the system (admissible = 1)
-and where it is stable there, read off its branches' files, and how each chain ended; then splices
-it into README.md (splice_readme.py, between <!-- trace-intervals:begin --> and :end).
+and where it is stable there, read off its branches' files, and how each chain ended; then writes
+results/README.md anew (tools/splice_readme.py), this table between its trace-intervals markers.
 
 An interval is the parameter's range over consecutive admissible steps of a branch (a stretch with
 a fold covers its range once); overlapping intervals of one type are joined.
@@ -81,8 +81,7 @@ def main(results):
         f.write("\n".join(lines) + "\n")
     os.replace(out + ".tmp", out)
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    subprocess.run([sys.executable, os.path.join(root, "tools", "splice_readme.py"), "trace-intervals", out],
-                   check=True)
+    subprocess.run([sys.executable, os.path.join(root, "tools", "splice_readme.py"), results], check=True)
 
 
 if __name__ == "__main__":

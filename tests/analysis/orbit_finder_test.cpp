@@ -100,7 +100,7 @@ TEST(FindOrbit, FindsAnAntisymmetricOrbitOfPeriodThreeNextToSection41) {
 
 // Section 5.1 is unstable (|mu| = 1.061): a simulation started 1e-6 off leaves it and settles on
 // another motion (here, after 3000 forcing periods, one of the coexisting period-1 motions with
-// two stops and a stick that the sweeps from the paper's state follow, README; which one depends
+// two stops and a stick that the sweeps from the paper's state follow, results/README.md; which one depends
 // on rounding in the transient), which find solves and verifies, and whose multipliers say stable.
 TEST(FindOrbit, LeavesTheUnstableSection51OrbitForTheMotionItSettlesOn) {
   const Orbit solved = SolvedPreset("paper-5.1");

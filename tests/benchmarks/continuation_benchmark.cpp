@@ -6,7 +6,7 @@
 //   build/release/tests/continuation_benchmark --benchmark_repetitions=5 \
 //       --benchmark_report_aggregates_only=true
 //
-// The counter us_per_point is the figure the README reports (median over the repetitions).
+// The counter us_per_point is the figure results/README.md reports (median over the repetitions).
 //
 // Also the brute-force sweep's wall time on 1 thread and on every core, for the parallel
 // speed-up of its chains, and the exact simulator's cost per forcing period over a short and a

@@ -74,7 +74,7 @@ double MarginOf(const Orbit& orbit, const std::string& name) {
 // sticks at the grazing (grazing-sliding, the adjacent type). At a stop or a stick exit it is
 // followed to the orbit's degenerate end (the modes before it are the orbit's), where the force
 // is at the static level; what follows is the boundary's business (at the §5.1 reversal boundary
-// the mass sticks there, as the switch found: README, switching table).
+// the mass sticks there, as the switch found: lib/README.md, switching table).
 void ExpectSimulatorShowsTheDegeneracy(const Orbit& orbit, const MarginCondition& condition, double tau) {
   const Parameters& p = orbit.parameters;
   const std::string name = condition.Name().substr(std::string("margin:").size());

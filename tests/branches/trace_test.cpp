@@ -254,7 +254,7 @@ TEST(Trace, RecordsTheBranchLeavingAPeriodDoublingWithoutFollowingIt) {
   }
   ASSERT_EQ(met.size(), 1u);
   EXPECT_EQ(met[0].type, "PD");
-  EXPECT_NEAR(met[0].lambda, 0.7354877530, 1e-9);  // where ContinueOrbit locates it (README)
+  EXPECT_NEAR(met[0].lambda, 0.7354877530, 1e-9);  // where ContinueOrbit locates it (results/README.md)
   EXPECT_EQ(met[0].signature, "slip- slip+ stick slip- slip+ stick / period 2");
   EXPECT_LT(met[0].singularity, 1e-7);
   EXPECT_TRUE(met[0].message.empty());

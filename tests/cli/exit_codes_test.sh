@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's exit-code table, row by row, command by command: each code from the commands the
+# The exit-code table of tools/README.md, row by row, command by command: each code from the commands the
 # table names, with the one-line reason on stderr where there is one. A trace that ran to its ends
 # exits 0 whatever they were (issue 25); one whose start is not a motion is refused as solve
 # refuses it (4, nothing written) unless it is allowed.

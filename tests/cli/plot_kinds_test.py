@@ -8,6 +8,8 @@ small results made from the stored ones:
   the title, the axis and tick labels and the legend's entries (boxes from matplotlib's renderer);
 - axes are linear unless asked (no switching), limits and quantities as asked, the natural
   frequencies (eq. 56) where they belong, titles in words (no internal end codes);
+- each special point's legend entry by its code: a curve's resonances R1 to R4 and its fold-flip
+  LPPD as such, never as a change of orbit type;
 - every invalid option: exit 2, one line naming the option, the value and the valid range, nothing
   written; without matplotlib exit 3, nothing written.
 
@@ -211,6 +213,39 @@ class PlotKinds(unittest.TestCase):
         period_2 = sp.load(os.path.join(RESULTS, "paper-5.2-period-2")).signature
         self.assertIn(period_2, legend)
         plt.close(fig)
+
+    def test_codimension_two_points_have_their_legend_entry(self):
+        # A curve's LPPD and resonances R1 to R4 are bifurcations of the curve, never a "change of
+        # orbit type" (the nonsmooth codes: SK, GR, T0, S0, NS).
+        for code, entry in (("R1", "1:1 resonance (R1)"), ("R2", "1:2 resonance (R2)"), ("R3", "1:3 resonance (R3)"),
+                            ("R4", "1:4 resonance (R4)"), ("LPPD", "fold-flip (LPPD)")):
+            self.assertEqual(sp.legend_entry(code), entry)
+        for code in ("SK", "GR", "T0", "S0", "NS"):
+            self.assertEqual(sp.legend_entry(code), "change of orbit type", code)
+
+        def legend_of(path):
+            fig = sp.figure([path])
+            texts = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+            plt.close(fig)
+            return texts
+
+        # The stored curves: section 5.1's fold curve passes an R1, section 5.2's flip curve an LPPD.
+        legend = legend_of(self.small.curve)
+        self.assertIn("1:1 resonance (R1)", legend)
+        self.assertNotIn("change of orbit type", legend)
+        self.assertIn("fold-flip (LPPD)", legend_of(os.path.join(RESULTS, "paper-5.2-pd-curve")))
+        # The same curve with its R1 relabelled R3: the legend follows the code.
+        relabelled = os.path.join(self.work, "fold-curve-r3")
+        shutil.copytree(self.small.curve, relabelled, dirs_exist_ok=True)
+        points = os.path.join(relabelled, "special-points.csv")
+        with open(points) as f:
+            text = f.read()
+        self.assertIn(",R1,", text)
+        with open(points, "w") as f:
+            f.write(text.replace(",R1,", ",R3,").replace(",R12,", ",R32,"))
+        legend = legend_of(relabelled)
+        self.assertIn("1:3 resonance (R3)", legend)
+        self.assertNotIn("1:1 resonance (R1)", legend)
 
     def test_invalid_options(self):
         output = os.path.join(self.work, "refused.png")

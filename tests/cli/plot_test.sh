@@ -2,7 +2,7 @@
 # Smoke test of the figures: tools/plot_figures.py runs on a copy of the shipped results and
 # writes every expected PNG, non-empty, 800 x 600 pixels (the bifurcation diagrams 1150 x 600, their
 # legend beside the axes; the traces' frequency responses as `stickslip plot` draws them, 1350 x 750). (What they show is checked by eye; the
-# README embeds them.)
+# README.md and results/README.md embed or link them.)
 set -euo pipefail
 bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
 root=${STICKSLIP_SOURCE:?set STICKSLIP_SOURCE to the source tree}

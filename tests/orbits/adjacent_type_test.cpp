@@ -1,4 +1,4 @@
-// The adjacent types of every margin kind (the README's switching table), and their start orbits:
+// The adjacent types of every margin kind (lib/README.md's switching table), and their start orbits:
 // the same motion as the located orbit, sampled over a whole period, with the new segment of zero
 // length where the margin says.
 #include "stickslip/orbits/adjacent_type.hpp"

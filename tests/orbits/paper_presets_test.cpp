@@ -42,7 +42,7 @@ TEST(PaperOrbits, Section41MatchesThePrintedValues) {
 }
 
 // u_s = u_r solved as the paper says. The printed tau1 = 4 is off: the abnormal stop falls at
-// t = 3.883 (ERRATA: "near 3.9"); no other choice reproduces 4 with the other values (README).
+// t = 3.883 (ERRATA: "near 3.9"); no other choice reproduces 4 with the other values (results/README.md, errata).
 // The other printed values agree to 7e-3; the ERRATA's consistency is about 1e-2.
 TEST(PaperOrbits, Section42MatchesThePrintedValuesButTau1) {
   const Orbit o = Solve("paper-4.2", false);

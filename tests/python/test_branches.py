@@ -43,13 +43,13 @@ def test_columns_are_the_files_numbers_and_special_points_are_labelled():
     assert len(branch) == 106 and len(branch["omega"]) == 106
     assert branch.columns[:3] == ["pt", "label", "chi"]
     assert branch["pt"][0] == 1 and branch["label"][0] == "EP1"
-    # The README's special points, then the end, at the last located point, with a label of its own.
+    # lib/python/README.md's special points, then the end, at the last located point, with a label of its own.
     labels = [s["label"] for s in branch.special_points]
     assert labels == ["EP1", "TR2", "UZ3", "LP4", "UZ5", "GR6", "EP7"]
     assert [s["type"] for s in branch.special_points] == ["EP", "TR", "UZ", "LP", "UZ", "GR", "EP"]
     lp = branch.special_point("LP4")
     assert lp["type"] == "LP" and lp["located"] == 1
-    assert abs(lp["omega"] - 0.5868188661) < 1e-9  # the README's value
+    assert abs(lp["omega"] - 0.5868188661) < 1e-9  # the value lib/python/README.md and README.md give
     assert branch.termination == "terminal-event"
     # The file's labels mark the same rows (the end shares GR6's row).
     for s in branch.special_points[1:-1]:

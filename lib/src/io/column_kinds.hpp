@@ -2,8 +2,8 @@
 // once, so that every reader checks a column of one kind the same way. A reader takes a field
 // with CsvTable::Value(row, column, kind); a value outside the kind's valid values is refused as
 //   "<file>:<line>: column 'u_s' = '1e308' is invalid: valid |u_s| <= 1000 (...)".
-// Non-finite values are valid only where the format documents them for that column (README,
-// "Bifurcation data files"): an inapplicable margin is inf, a Floquet quantity that could not be
+// Non-finite values are valid only where the format documents them for that column (lib/README.md,
+// "Result files"): an inapplicable margin is inf, a Floquet quantity that could not be
 // computed nan, det(H + I) of an orbit that is not antisymmetric nan.
 #pragma once
 
