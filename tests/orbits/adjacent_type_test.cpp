@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
+#include "support/den_hartog_orbit.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -135,6 +137,24 @@ TEST(AdjacentStart, ASlipSplitAtAnAbnormalStopKeepsItsMotion) {
   ASSERT_EQ(start.signature.ToString(), "slip- slip- slip+ stick slip+");
   EXPECT_NEAR(start.durations[0] + start.durations[1], o.durations[0], 1e-15);
   ExpectSameMotion(start, o);
+}
+
+// The seam: the edit knows an orbit of any model only by its signature and durations. A stick of
+// zero length inserted at a stop of Den Hartog's orbit of the test model leaves its motion as it was.
+TEST(AdjacentStart, AStopOfTheTestModelGetsAZeroLengthStickAndKeepsItsMotion) {
+  using TestOrbit = BasicOrbit<DenHartogOscillator>;
+  const TestOrbit orbit = DenHartogOnSignature(DenHartogOrbit(0.8, 0.2), "slip- slip+", 1.0);
+  const AdjacentType a = AdjacentTypes("reversal", 0, orbit.signature, false).front();
+  const TestOrbit start = AdjacentStart(orbit, Margin{}, a);
+  EXPECT_EQ(start.signature.ToString(), "slip- stick slip+");
+  EXPECT_EQ(start.durations, (std::vector<double>{orbit.durations[0], 0.0, orbit.durations[1]}));
+  auto end_of_period = [](const TestOrbit& o) {
+    DenHartogOscillator::State end;
+    WalkSegments(DenHartogOscillator{}, o, Extent::kListed, PhaseRule::kAccumulated,
+                 [&](const SegmentVisit<double, DenHartogOscillator>& s) { end = s.end; });
+    return end;
+  };
+  EXPECT_LT((end_of_period(start) - end_of_period(orbit)).lpNorm<Eigen::Infinity>(), 1e-14);
 }
 
 }  // namespace

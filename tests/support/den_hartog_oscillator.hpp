@@ -72,7 +72,8 @@ struct DenHartogOscillator {
          {"beta", "kinetic friction ratio F/P0", "1", 1e-6, 1000.0, "1e-06 <= beta <= 1000"},
          {"beta_static", "static friction ratio", "1", 1e-6, 1000.0, "beta <= beta_static <= 1000"}},
         {"x"},
-        {"x", "x'"}};
+        {"x", "x'"},
+        {"x0", "v0"}};
     return description;
   }
   // The closed form needs a forcing frequency away from resonance; the friction levels enter

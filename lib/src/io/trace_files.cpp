@@ -14,6 +14,7 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/result_files.hpp"
+#include "stickslip/orbits/orbit_layout.hpp"
 
 namespace stickslip {
 
@@ -35,7 +36,11 @@ std::string Number(double v) { return fmt::format("{}", v); }
 
 // trace.csv's columns; the parameter's name stands second after the label.
 std::vector<std::string> CsvHeader(const std::string& parameter) {
-  return {"branch", "signature", "pt", "label", parameter, "phi", "period", "x10", "x20", "v10", "stable", "admissible"};
+  const OrbitLayout layout(Pascal2014{}.Description(), 0);
+  std::vector<std::string> header = {"branch", "signature", "pt", "label", parameter, "phi", "period"};
+  for (int k = 0; k < layout.StartVariables(); ++k) header.push_back(layout.Name(k));
+  header.insert(header.end(), {"stable", "admissible"});
+  return header;
 }
 
 // ---- trace.json

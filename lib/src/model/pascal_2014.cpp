@@ -21,7 +21,8 @@ ModelDescription Pascal2014Description() {
        parameter("u_s", "sliding friction level", kMinSlidingFriction, kMaxFriction, kSlidingFrictionRange),
        parameter("u_r", "static friction level", kMinSlidingFriction, kMaxFriction, kStaticFrictionRange)},
       {"x1", "x2"},
-      {"x1", "x2", "x1'", "x2'"}};
+      {"x1", "x2", "x1'", "x2'"},
+      {"x10", "x20", "v10", "v20"}};
 }
 
 }  // namespace

@@ -152,28 +152,4 @@ std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, cons
   return out;
 }
 
-Orbit AdjacentStart(const Orbit& located, const Margin& margin, const AdjacentType& adjacent) {
-  const int i = adjacent.segment;
-  switch (adjacent.kind) {
-    case TypeEdit::kInsert:
-      return InsertSegment(located, adjacent.new_segment, adjacent.edit.signature.segments()[adjacent.new_segment]);
-    case TypeEdit::kSplit:
-    case TypeEdit::kSplitAtAbnormalStop: {
-      const double start = located.SegmentTimes()[i];
-      const double tau = std::clamp(margin.t - start, 0.0, located.durations[i]);
-      if (adjacent.kind == TypeEdit::kSplit) {
-        return SplitSegment(located, i, tau, adjacent.edit.signature.segments()[adjacent.new_segment]);
-      }
-      Orbit edited = located;
-      edited.signature = adjacent.edit.signature;
-      edited.durations[i] = tau;
-      edited.durations.insert(edited.durations.begin() + i + 1, located.durations[i] - tau);
-      return edited;
-    }
-    case TypeEdit::kRemove: return RemoveSegment(located, i, true);
-    case TypeEdit::kRemoveKeepApart: return RemoveSegment(located, i, false);
-  }
-  return located;
-}
-
 }  // namespace stickslip

@@ -2,8 +2,7 @@
 
 #include <numbers>
 
-#include <fmt/format.h>
-
+#include "stickslip/orbits/orbit_layout.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
@@ -41,18 +40,10 @@ std::vector<State> Orbit::Sample(int count) const {
 
 namespace orbit_variables {
 
-std::string Name(int n, int index) {
-  static constexpr const char* kLeading[] = {"x10", "x20", "v10", "phi"};
-  if (index < 4) return kLeading[index];
-  if (index < 4 + n) return fmt::format("d{}", index - 3);
-  return ToString(kAllParameters[index - 4 - n]);
-}
+std::string Name(int n, int index) { return OrbitLayout(Pascal2014{}.Description(), n).Name(index); }
 
 std::optional<int> IndexOf(int n, std::string_view name) {
-  for (int i = 0; i < Count(n); ++i) {
-    if (Name(n, i) == name) return i;
-  }
-  return std::nullopt;
+  return OrbitLayout(Pascal2014{}.Description(), n).IndexOf(name);
 }
 
 Eigen::VectorXd Pack(const Orbit& orbit) {

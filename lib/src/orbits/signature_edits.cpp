@@ -23,11 +23,12 @@ SignatureEdit Unchanged(const Signature& signature, std::vector<Mode> segments) 
 
 }  // namespace
 
+// The durations are "d1".."dn" for every model (orbit_layout.hpp); no other name changes.
 std::string SignatureEdit::Renamed(std::string_view variable) const {
-  const std::optional<int> index = orbit_variables::IndexOf(static_cast<int>(new_index.size()), variable);
-  const int first = orbit_variables::Duration(0);
-  if (!index || *index < first || *index >= first + static_cast<int>(new_index.size())) return std::string(variable);
-  const int i = *index - first;
+  const int n = static_cast<int>(new_index.size());
+  int i = 0;
+  while (i < n && variable != fmt::format("d{}", i + 1)) ++i;
+  if (i == n) return std::string(variable);
   if (new_index[i] < 0 || !duration_kept[i]) {
     throw InvalidInput::WithMessage(
         std::string(variable), fmt::format("{} names the duration of segment {}, which the edit to '{}' split, joined "
@@ -82,50 +83,12 @@ SignatureEdit SplitSegment(const Signature& signature, int i, Mode inserted) {
   return edit;
 }
 
-Orbit InsertSegment(const Orbit& orbit, int position, Mode mode) {
-  Orbit edited = orbit;
-  edited.signature = InsertSegment(orbit.signature, position, mode).signature;
-  edited.durations.insert(edited.durations.begin() + position, 0.0);
-  return edited;
-}
-
-Orbit RemoveSegment(const Orbit& orbit, int i, bool join_equal_neighbours) {
-  const SignatureEdit edit = RemoveSegment(orbit.signature, i, join_equal_neighbours);
-  Orbit edited = orbit;
-  edited.signature = edit.signature;
-  const bool joined = edit.new_index.size() - edit.signature.segments().size() == 2;
-  if (joined) edited.durations[i - 1] += orbit.durations[i + 1];
-  edited.durations.erase(edited.durations.begin() + i, edited.durations.begin() + i + (joined ? 2 : 1));
-  return edited;
-}
-
 Signature Unfolded(const Signature& signature, int copies) {
   if (!(copies >= 1 && copies <= 64)) throw InvalidInput("copies", copies, "1 <= copies <= 64");
   const std::vector<Mode> period = signature.FullPeriod();
   std::vector<Mode> segments;
   for (int k = 0; k < copies; ++k) segments.insert(segments.end(), period.begin(), period.end());
   return Signature(std::move(segments), false, signature.period_multiple() * copies);
-}
-
-Orbit Unfolded(const Orbit& orbit, int copies) {
-  Orbit unfolded = orbit;
-  unfolded.signature = Unfolded(orbit.signature, copies);
-  const int repeats = unfolded.signature.size() / orbit.signature.size();
-  unfolded.durations.clear();
-  for (int k = 0; k < repeats; ++k) {
-    unfolded.durations.insert(unfolded.durations.end(), orbit.durations.begin(), orbit.durations.end());
-  }
-  return unfolded;
-}
-
-Orbit SplitSegment(const Orbit& orbit, int i, double tau, Mode inserted) {
-  Orbit edited = orbit;
-  edited.signature = SplitSegment(orbit.signature, i, inserted).signature;
-  const double d = orbit.durations[i];
-  if (!(tau >= 0.0 && tau <= d)) throw InvalidInput("tau", tau, fmt::format("0 <= tau <= d{} = {}", i + 1, d));
-  edited.durations[i] = tau;
-  edited.durations.insert(edited.durations.begin() + i + 1, {0.0, d - tau});
-  return edited;
 }
 
 }  // namespace stickslip

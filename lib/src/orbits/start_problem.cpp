@@ -1,10 +1,11 @@
 #include "stickslip/orbits/start_problem.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -16,18 +17,20 @@ namespace {
 
 namespace ov = orbit_variables;
 
-constexpr std::array<SetKey, 10> kSetKeys = {{
-    {"chi", "stiffness ratio k2/(k1+k2)", kChiRange},
-    {"eta", "mass ratio m1/m2", kEtaRange},
-    {"omega", "forcing frequency (scaled time)", kOmegaRange},
-    {"u_s", "sliding friction level", kSlidingFrictionRange},
-    {"u_r", "static friction level", kStaticFrictionRange},
-    {"x10", "initial x1", kStateRange},
-    {"x20", "initial x2", kStateRange},
-    {"v10", "initial x1'", kStateRange},
-    {"v20", "initial x2'", kStateRange},
-    {"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", kStateRange},
-}};
+// The set keys, from the model's description: its parameters, the state at t = 0 and the forcing
+// phase. Built in place once: the keys view the description's and the meanings' strings.
+struct SetKeyTable {
+  explicit SetKeyTable(const ModelDescription& model) {
+    for (const std::string& component : model.state_components) meanings.push_back("initial " + component);
+    for (const ParameterDescription& p : model.parameters) keys.push_back({p.name, p.meaning, p.range});
+    for (std::size_t k = 0; k < model.initial_state.size(); ++k) {
+      keys.push_back({model.initial_state[k], meanings[k], kStateRange});
+    }
+    keys.push_back({"phi", "forcing phase at t = 0, cos(omega t + phi) (rad)", kStateRange});
+  }
+  std::vector<std::string> meanings;
+  std::vector<SetKey> keys;
+};
 
 // A value given for `name`: finite, and within kStateRange if it is a start state's component
 // or phase.
@@ -101,9 +104,10 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
     }
   }
   for (const auto& [key, value] : input.set) {
-    if (std::none_of(kSetKeys.begin(), kSetKeys.end(), [&](const SetKey& k) { return k.key == key; })) {
+    const std::span<const SetKey> set_keys = SetKeys();
+    if (std::none_of(set_keys.begin(), set_keys.end(), [&](const SetKey& k) { return k.key == key; })) {
       std::vector<std::string_view> keys;
-      for (const SetKey& k : kSetKeys) keys.push_back(k.key);
+      for (const SetKey& k : set_keys) keys.push_back(k.key);
       throw InvalidInput("set", fmt::format("'{}'", key), fmt::format("keys {}", fmt::join(keys, ", ")));
     }
     if (key == "v20") {
@@ -229,10 +233,13 @@ double ZeroLengthToRounding(double d, double period) {
   return d < 0.0 && d >= -kDurationRounding * period ? 0.0 : d;
 }
 
-std::span<const SetKey> SetKeys() { return kSetKeys; }
+std::span<const SetKey> SetKeys() {
+  static const SetKeyTable table(Pascal2014{}.Description());
+  return table.keys;
+}
 
 std::string_view SetKeyRange(std::string_view key) {
-  for (const SetKey& k : kSetKeys) {
+  for (const SetKey& k : SetKeys()) {
     if (k.key == key) return k.valid_range;
   }
   return "any finite number";

@@ -34,6 +34,7 @@
 //   sliding-friction u_s = 0: the end of the physical family, no adjacent type.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -76,9 +77,31 @@ std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, cons
 // Why `base` has no adjacent type, in one sentence ("" when it has one).
 std::string NoAdjacentTypeReason(std::string_view base);
 
-// The start orbit on `adjacent` at the located orbit: the same state, phase, parameters and period,
-// the new segment of zero length at the segment end, or at `margin.t` (the interior extremum's time
-// from the orbit's origin) for a split.
-Orbit AdjacentStart(const Orbit& located, const Margin& margin, const AdjacentType& adjacent);
+// The start orbit on `adjacent` at the located orbit, of any model (Orbit, BasicOrbit<Model>): the
+// same state, phase, parameters and period, the new segment of zero length at the segment end, or
+// at `margin.t` (the interior extremum's time from the orbit's origin) for a split.
+template <typename AnyOrbit>
+AnyOrbit AdjacentStart(const AnyOrbit& located, const Margin& margin, const AdjacentType& adjacent) {
+  const int i = adjacent.segment;
+  auto new_mode = [&] { return adjacent.edit.signature.segments()[adjacent.new_segment]; };
+  switch (adjacent.kind) {
+    case TypeEdit::kInsert: return InsertSegment(located, adjacent.new_segment, new_mode());
+    case TypeEdit::kSplit:
+    case TypeEdit::kSplitAtAbnormalStop: {
+      double start = 0.0;
+      for (int k = 0; k < i; ++k) start += located.durations[k];
+      const double tau = std::clamp(margin.t - start, 0.0, located.durations[i]);
+      if (adjacent.kind == TypeEdit::kSplit) return SplitSegment(located, i, tau, new_mode());
+      AnyOrbit edited = located;
+      edited.signature = adjacent.edit.signature;
+      edited.durations[i] = tau;
+      edited.durations.insert(edited.durations.begin() + i + 1, located.durations[i] - tau);
+      return edited;
+    }
+    case TypeEdit::kRemove: return RemoveSegment(located, i, true);
+    case TypeEdit::kRemoveKeepApart: return RemoveSegment(located, i, false);
+  }
+  return located;
+}
 
 }  // namespace stickslip

@@ -12,7 +12,9 @@
 #include <string_view>
 #include <vector>
 
-#include "stickslip/orbits/orbit.hpp"
+#include <fmt/format.h>
+
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/signature.hpp"
 
 namespace stickslip {
@@ -43,12 +45,39 @@ SignatureEdit RemoveSegment(const Signature& signature, int i, bool join_equal_n
 // Segment i cut in two around a new segment in `inserted`: i, inserted, then i's mode again.
 SignatureEdit SplitSegment(const Signature& signature, int i, Mode inserted);
 
+// The orbit versions, for an orbit of any model (Orbit, BasicOrbit<Model>): only its signature
+// and durations change.
 // The orbit under the edited type, the same motion: the new segment has zero length.
-Orbit InsertSegment(const Orbit& orbit, int position, Mode mode);
+template <typename AnyOrbit>
+AnyOrbit InsertSegment(const AnyOrbit& orbit, int position, Mode mode) {
+  AnyOrbit edited = orbit;
+  edited.signature = InsertSegment(orbit.signature, position, mode).signature;
+  edited.durations.insert(edited.durations.begin() + position, 0.0);
+  return edited;
+}
 // Segment i's duration dropped (a joined neighbour takes the sum of both).
-Orbit RemoveSegment(const Orbit& orbit, int i, bool join_equal_neighbours);
+template <typename AnyOrbit>
+AnyOrbit RemoveSegment(const AnyOrbit& orbit, int i, bool join_equal_neighbours) {
+  const SignatureEdit edit = RemoveSegment(orbit.signature, i, join_equal_neighbours);
+  AnyOrbit edited = orbit;
+  edited.signature = edit.signature;
+  const bool joined = edit.new_index.size() - edit.signature.segments().size() == 2;
+  if (joined) edited.durations[i - 1] += orbit.durations[i + 1];
+  edited.durations.erase(edited.durations.begin() + i, edited.durations.begin() + i + (joined ? 2 : 1));
+  return edited;
+}
 // Segment i split at time tau after its start (0 <= tau <= d_i) around a zero-length segment.
-Orbit SplitSegment(const Orbit& orbit, int i, double tau, Mode inserted);
+// Throws InvalidInput naming "tau" otherwise.
+template <typename AnyOrbit>
+AnyOrbit SplitSegment(const AnyOrbit& orbit, int i, double tau, Mode inserted) {
+  AnyOrbit edited = orbit;
+  edited.signature = SplitSegment(orbit.signature, i, inserted).signature;
+  const double d = orbit.durations[i];
+  if (!(tau >= 0.0 && tau <= d)) throw InvalidInput("tau", tau, fmt::format("0 <= tau <= d{} = {}", i + 1, d));
+  edited.durations[i] = tau;
+  edited.durations.insert(edited.durations.begin() + i + 1, {0.0, d - tau});
+  return edited;
+}
 
 // The same motion as an orbit over `copies` whole periods without the half-period symmetry: the
 // whole period's segments (the listed half, then its mirror image, for an antisymmetric orbit)
@@ -57,6 +86,16 @@ Orbit SplitSegment(const Orbit& orbit, int i, double tau, Mode inserted);
 // (the type a period doubling leads to: copies = 2; a symmetry breaking: copies = 1). Throws
 // InvalidInput naming "copies" unless 1 <= copies <= 64.
 Signature Unfolded(const Signature& signature, int copies);
-Orbit Unfolded(const Orbit& orbit, int copies);
+template <typename AnyOrbit>
+AnyOrbit Unfolded(const AnyOrbit& orbit, int copies) {
+  AnyOrbit unfolded = orbit;
+  unfolded.signature = Unfolded(orbit.signature, copies);
+  const int repeats = unfolded.signature.size() / orbit.signature.size();
+  unfolded.durations.clear();
+  for (int k = 0; k < repeats; ++k) {
+    unfolded.durations.insert(unfolded.durations.end(), orbit.durations.begin(), orbit.durations.end());
+  }
+  return unfolded;
+}
 
 }  // namespace stickslip
