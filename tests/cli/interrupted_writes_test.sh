@@ -42,7 +42,7 @@ start_paused && kill -s KILL $writer
 wait $writer 2> /dev/null
 dead=$(temporaries)
 if [[ "$dead" =~ ^\.tr\.tmp\.([0-9a-f]{16})\.([0-9]+)$ ]]; then pass; else fail "SIGKILL left '$dead'"; fi
-tag=${BASH_REMATCH[1]} dead_pid=${BASH_REMATCH[2]}
+tag=${BASH_REMATCH[1]:-none} dead_pid=${BASH_REMATCH[2]:-0}
 # Beside it: a dead writer's temporary holding a file of the user's (moved in before it ended) as
 # well as its own; one of a running process (this shell); one of another host or an earlier boot;
 # one an earlier version named without its host; a file of the user's.
