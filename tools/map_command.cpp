@@ -47,17 +47,21 @@ std::string ReadWholeFile(const std::string& path, const std::string& field, con
   return text.str();
 }
 
-// Each corner of the rectangle, with the trace's other data, must be valid model data.
+// Each corner of the rectangle, with the trace's other data, must be valid model data. A violation
+// is blamed on the bound given: u_s's range given u_r where u_r >= u_s fails for u_s given.
 void CheckCorners(const MapRectangle& r, const Parameters& base) {
+  const ParameterId first = *ParameterFromString(r.first), second = *ParameterFromString(r.second);
   for (double a : {r.first_min, r.first_max}) {
     for (double b : {r.second_min, r.second_max}) {
       Parameters p = base;
-      p[*ParameterFromString(r.first)] = a;
-      p[*ParameterFromString(r.second)] = b;
-      if (std::optional<InvalidInput> error = Validate(p)) {
-        const bool first = error->field() == r.first;
-        throw InvalidInput(first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
-                           first ? a : b, fmt::format("a valid {}: {}", error->field(), error->valid_range()));
+      p[first] = a;
+      p[second] = b;
+      std::optional<InvalidInput> error = Validate(p, second);
+      if (error && error->field() != r.second) error = Validate(p, first);
+      if (error) {
+        const bool is_first = error->field() == r.first;
+        throw InvalidInput(is_first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
+                           is_first ? a : b, fmt::format("a valid {}: {}", error->field(), error->valid_range()));
       }
     }
   }

@@ -156,21 +156,22 @@ int RunMapSweepHere(const MapSweepPlan& plan) {
   return kExitOk;
 }
 
-Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge, int ranks) {
+Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, int ranks) {
   auto args = std::make_shared<MapSweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "map-sweep",
-      "Brute-force map of motions over two parameters (exit codes as stickslip's): a grid of (--first-steps"
+      std::string("Brute-force map of motions over two parameters (exit codes as stickslip's): a grid of (--first-steps"
       " + 1) x (--second-steps + 1) cells, and in each cell the attractors that simulation finds from rest,"
       " from where the run of the neighbouring cell (i - 1, same j) ended, and from --starts states: the "
       "given one (--preset's, --set x10=...) and states scattered around it (--scatter, --seed): "
       "--transients forcing periods simulated out, then --periods recorded on the stroboscopic section (the"
       " state at forcing phase phi). Runs that end on the same periodic section orbit (to --tolerance, any "
       "shift) are one attractor, listed with its period, stops and sticks per period, signature (orbit "
-      "type) and how many starts found it; motions that do not settle are listed as not-settled. The file "
-      "does not depend on --threads, --shard or MPI ranks. --shard k/N computes the rows j with j mod N = k"
-      " - 1; --merge OUT SHARD.csv... joins the shards into the file the whole run writes. Time is the "
-      "paper's scaled time.");
+      "type) and how many starts found it; motions that do not settle are listed as not-settled. ") +
+          (shards ? "The file does not depend on --threads, --shard or MPI ranks. --shard k/N computes the rows j with j "
+                    "mod N = k - 1; --merge OUT SHARD.csv... joins the shards into the file the whole run writes. "
+                  : "The file does not depend on --threads or the number of ranks. ") +
+          "Time is the paper's scaled time.");
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   const std::string range = "the parameter's valid range (every cell is checked)";
@@ -197,18 +198,20 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool merge, int
   AddNumberOption(*cmd, "--tolerance", &args->tolerance, MapSweepOptionRange("tolerance"),
                   "section points repeat, and two runs' orbits agree, within this (absolute, max norm; 1e-14 to 1e-2)");
   AddCountOption(*cmd, "--threads", &args->threads, 0, 1024, "threads (0: every core; 0 to 1024)");
-  cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")
-      ->type_name("K/N")->capture_default_str();
+  if (shards) {
+    cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")
+        ->type_name("K/N")->capture_default_str();
+  }
   cmd->add_option("--output", args->output,
                   "CSV file: i,j,ni,nj,<first>,<second>,section_phase,run,attractors,attractor,status,period,"
                   "stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2");
   cmd->add_flag("--force", args->force, kForceHelp);
-  if (merge) {
+  if (shards) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");
     cmd->add_option("shards", args->shards, "with --merge: the shard files (every cell of one map once)");
   }
-  return {cmd, [args, runner, cmd, merge, ranks] {
-            if (merge && cmd->count("--merge") > 0) return RunMerge(*args);
+  return {cmd, [args, runner, cmd, shards, ranks] {
+            if (shards && cmd->count("--merge") > 0) return RunMerge(*args);
             if (!args->shards.empty()) {
               throw InvalidInput("shards", "'" + args->shards.front() + "'", "shard files only with --merge OUT");
             }

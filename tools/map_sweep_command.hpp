@@ -29,9 +29,10 @@ void CheckMapOutputFile(const std::string& path, const std::string& field, bool 
 // The line printed after a map is written.
 std::string MapSweepSummary(const BruteForceMap& map, const std::string& output);
 
-// The subcommand; `runner` computes and writes the map. With `merge`, --merge OUT SHARD... too.
+// The subcommand; `runner` computes and writes the map. With `shards`, --shard k/N and --merge OUT
+// SHARD... too; without (the MPI front end, whose ranks split the rows), neither is offered.
 // `ranks`: the MPI job's ranks, which split the rows as --shard does (the grid's bound on the runs
 // of one computation is checked for one rank's rows).
-Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner = RunMapSweepHere, bool merge = true, int ranks = 1);
+Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner = RunMapSweepHere, bool shards = true, int ranks = 1);
 
 }  // namespace stickslip::cli

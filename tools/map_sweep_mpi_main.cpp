@@ -1,6 +1,6 @@
 // stickslip-mpi map-sweep: the brute-force map across the ranks of an MPI job, with the options
-// of `stickslip map-sweep`. Rank r computes the rows j with j mod N = r (the shards of --shard,
-// each rank on --threads threads); rank 0 gathers the ranks' maps, merges them as --merge does and
+// of `stickslip map-sweep` but --shard and --merge (the ranks split the rows). Rank r computes the
+// rows j with j mod N = r (the shards of stickslip's --shard, each rank on --threads threads); rank 0 gathers the ranks' maps, merges them as --merge does and
 // writes the file whole: the same bytes as one process writes, for any number of ranks. MPI stays
 // here: the library knows nothing of it.
 //
@@ -52,11 +52,7 @@ std::string ReceiveText(int from) {
 int RunAcrossRanks(const MapSweepPlan& plan, int rank, int ranks) {
   // Checked on rank 0, which writes; every rank learns the outcome.
   std::string refused;
-  if (plan.options.shards != 1) {
-    refused = InvalidInput("shard", fmt::format("'{}/{}'", plan.options.shard, plan.options.shards),
-                           "1/1 with stickslip-mpi (the ranks split the grid)")
-                  .what();
-  } else if (rank == 0) {
+  if (rank == 0) {
     try {
       CheckMapOutputFile(plan.output, "output", plan.force);
     } catch (const InvalidInput& e) {
@@ -111,7 +107,7 @@ int main(int argc, char** argv) {
   app.option_defaults()->disable_flag_override();
   const Command command =
       AddMapSweepCommand(app, [rank, ranks](const MapSweepPlan& plan) { return RunAcrossRanks(plan, rank, ranks); },
-                         /*merge=*/false, ranks);
+                         /*shards=*/false, ranks);
   int code = kExitFailure;
   try {
     app.parse(argc, argv);

@@ -123,6 +123,17 @@ class BadInput(ValueError):
         super().__init__(f"{field} = {value} is invalid: valid {valid}")
 
 
+class CannotWrite(OSError):
+    """The figure could not be written (a full disk, a directory that became read-only): the
+    one-line message "cannot write '<path>': <the system's reason>"."""
+
+    def __init__(self, path, error):
+        super().__init__(error.errno, error.strerror, os.fspath(path))
+
+    def __str__(self):
+        return f"cannot write '{self.filename}': {self.strerror}"
+
+
 # ---------------------------------------------------------------- the results, read
 
 class Result:
@@ -1453,6 +1464,8 @@ def save(fig, path, dpi=DEFAULT_DPI, option="dpi"):
     try:
         fig.savefig(temporary, dpi=dpi, metadata=metadata, format=extension[1:])
         os.replace(temporary, path)
+    except OSError as e:  # named by the user's path: the temporary one is never seen
+        raise CannotWrite(path, e) from None
     finally:
         plt.close(fig)
         if os.path.exists(temporary):
@@ -1533,7 +1546,7 @@ def main(argv):
         results = [load(path) for path in inputs]
         fig = figure(results, options)
         save(fig, options.output, options.dpi, "--dpi")
-    except BadInput as e:
+    except (BadInput, CannotWrite) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     except Exception as e:  # noqa: BLE001 - one line, never a traceback; save() removed its temporary file

@@ -6,7 +6,8 @@
 # the bound on the runs, ranges of 1e300, shards 0/0 and k > N, merges of overlapping or missing
 # shards, outputs in a missing directory or over a directory (each one line, exit 2, nothing
 # written, within a timeout); with the MPI front end (STICKSLIP_MPI), the same refusals from
-# stickslip-mpi, and a grid too large for one computation that two ranks split is not refused.
+# stickslip-mpi, a help that offers no --shard or --merge (which it has not), and a grid too large
+# for one computation that two ranks split is not refused.
 source "$(dirname "$0")/expect.sh"
 source "$(dirname "$0")/map_sweep_common.sh"
 map=(map-sweep --preset paper-6 --first omega --first-from 0.55 --first-to 0.6 --first-steps 3 --second u_r
@@ -58,10 +59,13 @@ refusals() {
     --second-from 1e300 --second-to 1e300 --output "$m"
   expect_map 2 "first-from = '1e999' is not a finite number" --first-from 1e999 --output "$m"
   expect_map 2 "scatter = 1e+300 is invalid" --scatter 1e300 --output "$m"
-  for shard in 0/0 3/2 1/0 -1/2 1/2/3 1/100001 /; do
-    expect_map 2 "shard = '$shard' is invalid: valid range k/N with whole numbers 1 <= k <= N <= 100000" \
-      --shard "$shard" --output "$m"
-  done
+  # stickslip's --shard (stickslip-mpi has none: below).
+  if [ ${#map_runner[@]} -eq 0 ]; then
+    for shard in 0/0 3/2 1/0 -1/2 1/2/3 1/100001 /; do
+      expect_map 2 "shard = '$shard' is invalid: valid range k/N with whole numbers 1 <= k <= N <= 100000" \
+        --shard "$shard" --output "$m"
+    done
+  fi
   expect_map 2 "output = '$work/out/missing/m.csv' is invalid: directory '$work/out/missing' does not exist" \
     --output "$work/out/missing/m.csv"
   expect_map 2 "output = '$work/out' is invalid: it is a directory" --output "$work/out"
@@ -91,7 +95,11 @@ if mpi_ready; then
   # The same refusals from stickslip-mpi on 2 ranks (rank 0 prints the one line, every rank exits 2).
   map_runner=("${mpi[@]}" -np 2 "$STICKSLIP_MPI")
   refusals
-  expect_map 2 "shard = '1/2' is invalid: valid range 1/1 with stickslip-mpi" --shard 1/2 --output "$m"
+  # Its help offers neither --shard nor --merge, which it would refuse (both were offered before).
+  "${mpi[@]}" -np 1 "$STICKSLIP_MPI" map-sweep --help > "$work/mpi-help.txt" 2>&1 && grep -q -- "--output" "$work/mpi-help.txt" &&
+    pass || fail "stickslip-mpi map-sweep --help: $(cat "$work/mpi-help.txt")"
+  ! grep -E -- "--shard|--merge" "$work/mpi-help.txt" && pass || fail "stickslip-mpi map-sweep --help offers --shard or --merge"
+  expect_map 2 "The following arguments were not expected: 1/2 --shard" --shard 1/2 --output "$m"
   map_args --output "$m"
   expect 2 "The following arguments were not expected" "${map_runner[@]}" "${args[@]}" --merge "$m" "$work/s1.csv"
   map_runner=()

@@ -81,6 +81,16 @@ expect 2 "second-to" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 1e300 
 expect 2 "second-from" "$bin" map "${t51[@]}" --second-from nan --second-to 0.6 --output "$work/out/m"
 expect 2 "second-from = 0.001 is invalid: valid range a valid u_r: u_s = 0.0138 <= u_r <= 1000" \
   "$bin" map "${t51[@]}" --second-from 0.001 --second-to 0.6 --output "$work/out/m"
+# u_s given above the trace's u_r: u_s is named, with its range given u_r (before the fix: "a valid
+# u_r: u_s = 1000 <= u_r <= 1000", a range that holds the value).
+expect 2 "second-to = 1000 is invalid: valid range a valid u_s: 1e-06 <= u_s <= u_r = 0.4962" \
+  "$bin" map --trace results/paper-5.1-omega-trace --second u_s --second-from 1e-6 --second-to 1000 --output "$work/out/m"
+# A damaged trace (chi = 5 in a branch file) is named by its file, line and column, not blamed on
+# the rectangle's bounds.
+cp -r results/paper-5.1-omega-trace "$work/damaged"
+sed -i '2s/^1,EP1,0.22,/1,EP1,5,/' "$work/damaged/branch-1/branch.csv"
+expect 2 "$work/damaged/branch-1/branch.csv:2: column 'chi' = '5' is invalid: valid 0.01 <= chi <= 0.99" \
+  "$bin" map --trace "$work/damaged" --second u_s --second-from 0.01 --second-to 0.02 --output "$work/out/m"
 expect 2 "first-from" "$bin" map "${t51[@]}" --second-from 0.4 --second-to 0.6 --first-from 0.7 --first-to 0.6 --output "$work/out/m"
 # A rectangle the trace does not pass through (no curve starts in it; no orbit is continued from it).
 expect 2 "second-from = 0.7 is invalid: valid range <= 0.4962" "$bin" map "${t51[@]}" --second-from 0.7 --second-to 0.8 --output "$work/out/m"

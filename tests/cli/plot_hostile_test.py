@@ -8,6 +8,7 @@ traceback, an empty figure or a file of the user's replaced before the fix:
 - a sweep's or map-sweep's CSV with nan, 1e309, a non-whole period or k, a short row, no cell;
 - an existing file that stickslip did not write (thesis.pdf, an older figure) as --output: refused,
   untouched; a figure stickslip plot wrote is replaced;
+- a full disk while the figure is written: the system's reason and the output's path;
 every refusal exit 2, one line, nothing written; a drawing that fails exit 1, one line, no
 traceback.
 
@@ -164,6 +165,36 @@ class PlotHostile(unittest.TestCase):
         self.assertEqual(text.count("\n"), 1, text)
         self.assertIn("OverflowError", text)
         self.assertFalse(os.path.exists(self.output))
+
+
+    def test_a_full_disk_is_one_line_naming_the_output(self):
+        # ENOSPC while the figure is written, as on a full disk (before the fix: exit 1, the reason
+        # without a path, and a second line from stickslip plot): exit 2, one line with the system's
+        # reason and the user's path, not the temporary one; nothing written, nothing left.
+        import errno
+        import matplotlib.figure
+        import stickslip_plot as sp
+        original = matplotlib.figure.Figure.savefig
+
+        def full(fig, name, **keywords):
+            with open(name, "wb") as f:
+                f.write(b"half a figure")
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), name)
+        matplotlib.figure.Figure.savefig = full
+        try:
+            stderr = tempfile.TemporaryFile(mode="w+")
+            saved, sys.stderr = sys.stderr, stderr
+            try:
+                status = sp.main(["stickslip_plot.py", "--output", self.output, "--", RUN])
+            finally:
+                sys.stderr = saved
+            stderr.seek(0)
+            text = stderr.read()
+        finally:
+            matplotlib.figure.Figure.savefig = original
+        self.assertEqual(status, 2)
+        self.assertEqual(text, f"error: cannot write '{self.output}': No space left on device\n")
+        self.assertEqual(os.listdir(self.work), [])
 
 
 if __name__ == "__main__":

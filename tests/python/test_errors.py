@@ -2,6 +2,7 @@
 input (the library's InvalidInput, checked once)."""
 import time
 
+import numpy as np
 import pytest
 
 import stickslip
@@ -157,6 +158,26 @@ def test_a_saved_run_does_not_replace_a_directory_of_the_user(tmp_path):
 def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(keywords, message):
     with pytest.raises(ValueError, match=message.replace("(", r"\(")):
         stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", output="t", **keywords)
+
+
+@pytest.mark.parametrize("call, message", [
+    # pybind11's RuntimeError "Unable to cast Python instance of type <class 'int'>" before the fix
+    (lambda: stickslip.solve(preset=5), "preset must be a str (a paper preset's name: paper-4.1, "),
+    (lambda: stickslip.solve(point=5), "point must be a str (a stored point 'RUN:LABEL'), got int 5"),
+    # taken as 1.0 before the fix
+    (lambda: stickslip.solve(preset="paper-5.1", set={"omega": True}), "set['omega'] must be a number, got bool True"),
+    (lambda: stickslip.simulate(preset="paper-5.1", set={"omega": "0.57"}),
+     "set['omega'] must be a number, got str '0.57'"),
+    (lambda: stickslip.solve(preset="paper-5.1", guess={"d1": False}), "guess['d1'] must be a number, got bool False"),
+])
+def test_a_start_keyword_of_the_wrong_type_raises_type_error_naming_it(call, message):
+    with pytest.raises(TypeError) as error:
+        call()
+    assert message in str(error.value)
+
+
+def test_numbers_of_numpy_are_numbers():
+    assert stickslip.solve(preset="paper-5.1", set={"omega": np.float64(0.57)}).parameters.omega == 0.57
 
 
 def test_a_whole_max_points_given_as_a_float_is_taken():

@@ -2,6 +2,8 @@
 --set, --signature, --guess, --free, --fix, --tie-u_r) as the dict the compiled core takes, and a
 continuation run given by keywords (`stickslip continue`'s, and a run file's [continuation] keys)."""
 
+import numbers as _numbers
+
 import numpy as _np
 
 from . import _stickslip as _core
@@ -10,12 +12,30 @@ from ._stickslip import Parameters
 _DEFAULTS = _core._continuation_defaults()
 
 
+def _number(value, field):
+    """`value` as a float; TypeError naming `field` for anything not a real number (a bool is not
+    one, though float(True) is 1.0; a str is not one, though float("0.5") is 0.5)."""
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise TypeError(f"{field} must be a number, got {type(value).__name__} {value!r}")
+    return float(value)
+
+
+def _text(value, field, valid):
+    """`value` as the str the core takes, None as ""; TypeError naming `field` for any other type
+    (the core's own conversion would raise pybind11's RuntimeError, naming no keyword)."""
+    if value is None:
+        return ""
+    if not isinstance(value, str):
+        raise TypeError(f"{field} must be a str ({valid}), got {type(value).__name__} {value!r}")
+    return value
+
+
 def _named_values(values, field):
     if values is None:
         return []
     if not isinstance(values, dict):
         raise TypeError(f"{field} must be a dict of name: value, got {type(values).__name__}")
-    return [(str(name), float(value)) for name, value in values.items()]
+    return [(str(name), _number(value, f"{field}[{name!r}]")) for name, value in values.items()]
 
 
 def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, results="results", set=None,
@@ -43,7 +63,8 @@ def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, re
     elif fix is not None:
         fixes = [(str(k), None) for k in fix]
     return {
-        "preset": preset or "", "point": point or "", "results": str(results),
+        "preset": _text(preset, "preset", "a paper preset's name: " + ", ".join(_core._preset_names())),
+        "point": _text(point, "point", "a stored point 'RUN:LABEL'"), "results": str(results),
         "signature": "" if signature is None else str(signature),
         "set": pairs, "guess": _named_values(guess, "guess"), "free": [str(f) for f in (free or [])],
         "fix": fixes, "tie_u_r": bool(tie_u_r), "paper_choice": bool(paper_choice),

@@ -10,16 +10,18 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "deferred_signals.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "temporary_name.hpp"
 
 namespace stickslip {
 
 namespace {
 
-// The name the file is written under first, beside its target (the process id keeps concurrent
-// writers of the same target apart).
+// The name the file is written under first, beside its target (the host and process keep
+// concurrent writers of the same target apart, and tell a later run whose it is).
 std::string TemporaryName(const std::filesystem::path& target) {
-  return fmt::format(".{}.tmp.{}", target.filename().string(), static_cast<long>(::getpid()));
+  return detail::TemporaryName(target.filename().string(), "tmp");
 }
 
 // The user's path and the system's reason, never the temporary name (which the user never sees).
@@ -89,18 +91,25 @@ void AtomicFileWriter::Commit() {
 }
 
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content) {
+  // Declared first, destroyed last: a signal during the write removes the temporary file, then ends
+  // the process (deferred_signals.hpp).
+  const detail::DeferredSignals signals;
   AtomicFileWriter out(path);
   out.Write(content);
+  out.Close();
+  detail::DeferredSignals::ThrowIfPending();
   out.Commit();
 }
 
 void WriteFilesAtomically(const std::vector<FileContent>& files) {
+  const detail::DeferredSignals signals;  // as in WriteFileAtomically
   std::vector<std::unique_ptr<AtomicFileWriter>> writers;
   for (const FileContent& file : files) {
     writers.push_back(std::make_unique<AtomicFileWriter>(file.path));
     writers.back()->Write(file.content);
     writers.back()->Close();
   }
+  detail::DeferredSignals::ThrowIfPending();
   for (std::size_t k = 0; k < writers.size(); ++k) {
     try {
       writers[k]->Commit();

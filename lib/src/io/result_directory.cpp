@@ -8,7 +8,11 @@
 #include <system_error>
 
 #include <fmt/format.h>
-#include <unistd.h>
+
+#include "deferred_signals.hpp"
+#include "stale_temporaries.hpp"
+#include "temporary_name.hpp"
+#include "test_fault_points.hpp"
 
 namespace stickslip::detail {
 
@@ -125,20 +129,33 @@ void RemoveOurs(const fs::path& root, const fs::path& relative, const OwnedEntry
   }
 }
 
+std::vector<std::string> SortedNames(const std::vector<fs::path>& entries) {
+  std::vector<std::string> names;
+  for (const fs::path& entry : entries) names.push_back(entry.generic_string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 }  // namespace
 
 std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const std::string& output,
                                           const std::function<void(const fs::path&)>& write, const OwnedEntry& ours) {
   fs::create_directories(results_root);
+  RemoveStaleTemporaries(results_root, output, ours);
+  // Destroyed last: a signal during the write ends in the catch below, then the process ends by it.
+  const DeferredSignals signals;
   const fs::path target = results_root / output;
-  const fs::path temporary = results_root / fmt::format(".{}.tmp.{}", output, static_cast<long>(::getpid()));
-  const fs::path old = results_root / fmt::format(".{}.old.{}", output, static_cast<long>(::getpid()));
-  std::error_code ignored;
-  fs::remove_all(temporary, ignored);
-  fs::create_directories(temporary);
+  const fs::path temporary = results_root / TemporaryName(output, "tmp");
+  const fs::path old = results_root / TemporaryName(output, "old");
+  if (!fs::create_directory(temporary)) {
+    throw std::runtime_error(fmt::format("cannot write '{}': '{}' is in the way", target.string(), temporary.string()));
+  }
   std::vector<fs::path> kept;
+  std::error_code ignored;
   try {
     write(temporary);
+    if (signals.Outermost()) PauseBeforeRenameForTests();
+    DeferredSignals::ThrowIfPending();
     if (fs::exists(target)) {
       for (const fs::path& entry : OthersIn(target, {}, ours)) {
         MoveEntry(target, temporary, entry);
@@ -156,10 +173,7 @@ std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const st
     throw;
   }
   fs::remove_all(old, ignored);
-  std::vector<std::string> names;
-  for (const fs::path& entry : kept) names.push_back(entry.generic_string());
-  std::sort(names.begin(), names.end());
-  return names;
+  return SortedNames(kept);
 }
 
 }  // namespace stickslip::detail

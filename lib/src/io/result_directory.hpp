@@ -52,6 +52,9 @@ OwnedEntry EntriesWithRuns(std::function<bool(std::string_view name)> own_file, 
 // same place in the new one first (inside an entry of ours that is a directory); their relative
 // paths are returned, sorted. On a failure the old directory stays as it was, and of the temporary
 // one only `ours` entries are removed (a file of the user's that could not be moved back stays).
+// SIGINT, SIGTERM and SIGHUP while the temporary exists are a failure too, after which the process
+// ends by the signal (deferred_signals.hpp). First, the temporaries that earlier writers of the
+// output left and that are provably dead are removed, the others listed (stale_temporaries.hpp).
 std::vector<std::string> ReplaceDirectory(const std::filesystem::path& results_root, const std::string& output,
                                           const std::function<void(const std::filesystem::path&)>& write,
                                           const OwnedEntry& ours);

@@ -20,6 +20,24 @@ TEST(ParameterValidation, AcceptsEqualFrictionLevels) {
   EXPECT_FALSE(Validate(p).has_value());
 }
 
+// u_r >= u_s binds both levels: with u_s the value given, u_s is named with its range given u_r
+// (a map's --second u_s above the trace's u_r named u_r and "u_s = 1000 <= u_r <= 1000").
+TEST(ParameterValidation, NamesTheVariedFrictionLevelWithItsRangeGivenTheOther) {
+  Parameters p = Valid();
+  p.u_s = 1000.0;
+  const auto as_u_s = Validate(p, ParameterId::kSlidingFriction);
+  ASSERT_TRUE(as_u_s.has_value());
+  EXPECT_EQ(as_u_s->field(), "u_s");
+  EXPECT_EQ(as_u_s->valid_range(), "1e-06 <= u_s <= u_r = 0.2996");
+  const auto as_u_r = Validate(p, ParameterId::kStaticFriction);
+  ASSERT_TRUE(as_u_r.has_value());
+  EXPECT_EQ(as_u_r->field(), "u_r");
+  EXPECT_EQ(as_u_r->valid_range(), Validate(p)->valid_range());
+  p.u_s = 0.1;
+  p.chi = 5.0;
+  EXPECT_EQ(Validate(p, ParameterId::kSlidingFriction)->field(), "chi");
+}
+
 struct BadCase {
   ParameterId field;
   double value;

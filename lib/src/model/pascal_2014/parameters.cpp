@@ -56,6 +56,15 @@ std::optional<InvalidInput> Validate(const Parameters& p) {
   return std::nullopt;
 }
 
+std::optional<InvalidInput> Validate(const Parameters& p, ParameterId varied) {
+  std::optional<InvalidInput> invalid = Validate(p);
+  const bool u_r_in_range = p.u_r >= kMinSlidingFriction && p.u_r <= kMaxFriction;
+  if (invalid && invalid->field() == "u_r" && u_r_in_range && varied == ParameterId::kSlidingFriction) {
+    return InvalidInput("u_s", p.u_s, fmt::format("1e-06 <= u_s <= u_r = {}", p.u_r));
+  }
+  return invalid;
+}
+
 std::optional<InvalidInput> ValidateStateValue(std::string_view name, double value) {
   if (!(std::abs(value) <= kMaxStateMagnitude)) return InvalidInput(std::string(name), value, std::string(kStateRange));
   return std::nullopt;

@@ -82,6 +82,11 @@ inline constexpr std::string_view kStateRange = "|value| <= 1e+06";
 // it of every iterate).
 std::optional<InvalidInput> Validate(const Parameters& p);
 
+// As Validate, for data in which `varied` is the value given (a map's second parameter): where
+// u_r >= u_s fails with u_s the one given, the violation is u_s's, with its valid range given u_r
+// ("1e-06 <= u_s <= u_r = 0.3"), not u_r's (whose range would then hold u_r).
+std::optional<InvalidInput> Validate(const Parameters& p, ParameterId varied);
+
 // Only what the closed-form flows need: finite values, chi, eta and omega in range and omega
 // away from omega1, omega2. The friction levels enter the equations linearly and stay
 // meaningful to the solvers beyond their physical range, where the admissibility margins take

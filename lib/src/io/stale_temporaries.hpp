@@ -1,0 +1,21 @@
+// Internal to io/: the temporaries earlier writers of an output left beside it (a process killed,
+// a machine that stopped), removed only where this run can prove them its own kind and dead.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "result_directory.hpp"
+
+namespace stickslip::detail {
+
+// Before a writer makes its temporary directory beside results_root/<output>: each temporary
+// directory of that output (temporary_name.hpp) written on this host in this boot by a process
+// that no longer exists loses what its writer made (the entries `ours` names, and that writer's
+// own temporaries inside it), and goes once empty; one that still holds the user's files (moved
+// into it before its writer ended) stays. Every other temporary of the output stays: on a shared
+// file system a process that is gone here may be running on another host. One line on stderr per
+// temporary, removed or left, saying why.
+void RemoveStaleTemporaries(const std::filesystem::path& results_root, const std::string& output, const OwnedEntry& ours);
+
+}  // namespace stickslip::detail

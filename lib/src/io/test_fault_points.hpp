@@ -1,0 +1,12 @@
+// Internal to io/: the one place a test may stop a writer at a known point, so that signals are
+// sent there rather than timed. Test-only: no user sets these variables.
+#pragma once
+
+namespace stickslip::detail {
+
+// Where STICKSLIP_TEST_PAUSE_BEFORE_RENAME names a file: creates it, then waits (at most a minute)
+// for a deferred signal (deferred_signals.hpp). ReplaceDirectory calls it once its temporary is
+// written, just before it moves into place.
+void PauseBeforeRenameForTests();
+
+}  // namespace stickslip::detail
