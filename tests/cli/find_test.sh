@@ -52,7 +52,7 @@ done
 # find --json: one object that python3 parses, equal to the text output.
 "$bin" find --preset paper-4.1 --json > "$work/found.json" 2> "$work/json.err" || fail "find --json exits $?: $(cat "$work/json.err")"
 "$bin" find --preset paper-4.1 > "$work/found.txt" 2>&1
-python3 - "$work/found.json" "$work/found.txt" <<'PY' || fail "find --json does not match the text output"
+/usr/bin/python3 - "$work/found.json" "$work/found.txt" <<'PY' || fail "find --json does not match the text output"
 import json, sys
 found = json.load(open(sys.argv[1]))
 text = open(sys.argv[2]).read().splitlines()
@@ -73,7 +73,7 @@ PY
 # Found nothing: the JSON says why (orbit null), the exit code is find's, nothing traced or written.
 "$bin" find "${data[@]}" --max-multiple 2 --json > "$work/none.json" 2> /dev/null
 code=$?
-[ "$code" -eq 5 ] && python3 -c 'import json, sys; f = json.load(open(sys.argv[1])); assert f["status"] == "not-periodic" and f["orbit"] is None' \
+[ "$code" -eq 5 ] && /usr/bin/python3 -c 'import json, sys; f = json.load(open(sys.argv[1])); assert f["status"] == "not-periodic" and f["orbit"] is None' \
   "$work/none.json" || fail "find --json of a motion not periodic within 2: exit $code, $(cat "$work/none.json")"
 "$bin" find "${data[@]}" --max-multiple 2 --trace 0.2,0.3 --results "$work/none" --output t --write-run "$work/none.toml" \
   > /dev/null 2> "$work/none.err"
