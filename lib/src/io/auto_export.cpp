@@ -41,8 +41,7 @@ std::pair<int, int> AutoLabel(const std::string& label, const std::filesystem::p
 // parameter: a frequency response), then the orbit's start and durations.
 struct BranchColumns {
   std::vector<std::string> names;
-  std::vector<int> variables;  // indices into orbit_variables::Pack of the columns after the measures
-  int measures = 0;
+  std::vector<int> variables;  // orbit_variables::Pack indices: the parameter, then the columns after the measures
 
   std::vector<double> Values(const StoredPoint& p) const {
     const Eigen::VectorXd packed = orbit_variables::Pack(p.orbit);
