@@ -1,4 +1,4 @@
-// stickslip export --auto: a run's results as AUTO-07p's b. and s. files.
+// stickslip export --auto: a run's results as AUTO-07p's b., s. and d. files.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -30,7 +30,8 @@ int RunExport(const ExportArgs& args) {
   const std::string run = fs::absolute(dir).lexically_normal().filename().string().empty()
                               ? fs::absolute(dir).lexically_normal().parent_path().filename().string()
                               : fs::absolute(dir).lexically_normal().filename().string();
-  for (const char* prefix : {"b.", "s."}) {
+  constexpr const char* kPrefixes[] = {"b.", "s.", "d."};
+  for (const char* prefix : kPrefixes) {
     try {
       CheckOutputFile(dir / (prefix + run), prefix + run);
     } catch (const InvalidInput& e) {
@@ -39,9 +40,11 @@ int RunExport(const ExportArgs& args) {
     }
   }
   const AutoFiles files = ExportAuto(dir, args.samples);  // after the checks: no work for nothing
-  // A pair: AUTO reads b. and s. together, so half of one would mislead it.
-  WriteFilesAtomically({{dir / ("b." + run), files.b}, {dir / ("s." + run), files.s}});
-  fmt::print("wrote {} and {}\n", (dir / ("b." + run)).string(), (dir / ("s." + run)).string());
+  // All or none: AUTO reads b., s. and d. together (load(run)), so some of one export beside the rest
+  // of another would mislead it.
+  WriteFilesAtomically({{dir / ("b." + run), files.b}, {dir / ("s." + run), files.s}, {dir / ("d." + run), files.d}});
+  fmt::print("wrote {}, {} and {}\n", (dir / ("b." + run)).string(), (dir / ("s." + run)).string(),
+             (dir / ("d." + run)).string());
   return kExitOk;
 }
 
@@ -50,9 +53,11 @@ int RunExport(const ExportArgs& args) {
 Command AddExportCommand(CLI::App& app) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "export", "Export a run's results (results/<run>/) as AUTO-07p's b.<run> and s.<run> files, beside them.");
+      "export",
+      "Export a run's results (results/<run>/) as AUTO-07p's b.<run> (with the measures as columns), s.<run> and "
+      "d.<run> (Newton iterations, step, multipliers per point) files, beside them; all three or none.");
   cmd->add_option("directory", args->directory, "results/<run>/ of a continuation run")->required();
-  cmd->add_flag("--auto", args->auto07p, "AUTO-07p's bifurcation (b.) and solution (s.) files");
+  cmd->add_flag("--auto", args->auto07p, "AUTO-07p's bifurcation (b.), solution (s.) and diagnostics (d.) files");
   AddCountOption(*cmd, "--samples", &args->samples, 2, 100000, "orbit samples per labelled solution (2 to 1e5)");
   return {cmd, [args] { return RunExport(*args); }};
 }

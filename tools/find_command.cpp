@@ -1,17 +1,21 @@
 // stickslip find: from a simulated motion to its exact periodic orbit (analysis/orbit_finder.hpp):
-// the detected period and orbit type, the solved orbit as solve prints it, and the solve command
-// line (or a run file) that reproduces it.
+// the detected period and orbit type, the solved orbit as solve prints it (or as JSON), the solve
+// command line (or a run file) that reproduces it, and at once the trace from it (--trace).
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "found_run.hpp"
+#include "orbit_json.hpp"
 #include "orbit_report.hpp"
 #include "progress_line.hpp"
 #include "start_options.hpp"
@@ -20,6 +24,8 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/output_marker.hpp"
 #include "stickslip/io/run_file.hpp"
+#include "stickslip/io/trace_files.hpp"
+#include "trace_run.hpp"
 
 namespace stickslip::cli {
 
@@ -33,56 +39,22 @@ struct FindArgs {
   std::string confirmations = std::to_string(FindOrbitOptions{}.confirmations);
   std::string write_run;
   bool write_run_given = false;  // --write-run "" is refused, not taken as no --write-run
+  std::string run_kind = "continue";  // --as: the run file's kind
+  std::string range;                  // --range: the run file's, "LO,HI"
+  std::string trace;                  // --trace LO,HI: trace at once
+  std::string output;                 // --output: the trace's directory under --results
+  bool json = false;
   bool force = false;
 };
-
-std::string Number(double x) {
-  std::string text = fmt::format("{}", x);
-  if (text.find_first_of(".en") == std::string::npos) text += ".0";  // a TOML float, and plain to read
-  return text;
-}
-
-// Six significant digits, for a range to edit.
-std::string Rounded(double x) { return Number(std::stod(fmt::format("{:.6g}", x))); }
 
 // The solve command line of a start (StartInputOf): signature, set, guess, free, tie.
 std::string SolveCommandLine(const StartInput& start) {
   std::string line = fmt::format("stickslip solve --signature \"{}\"", start.signature);
-  for (const auto& [name, value] : start.set) line += fmt::format(" --set {}={}", name, Number(value));
-  for (const auto& [name, value] : start.guess) line += fmt::format(" --guess {}={}", name, Number(value));
+  for (const auto& [name, value] : start.set) line += fmt::format(" --set {}={}", name, ExactNumber(value));
+  for (const auto& [name, value] : start.guess) line += fmt::format(" --guess {}={}", name, ExactNumber(value));
   for (const std::string& name : start.free) line += " --free " + name;
   if (start.tie_u_r) line += " --tie-u_r";
   return line;
-}
-
-// The first line of the run file find writes: the mark of a file that find may replace (a committed
-// run file, the user's, has none).
-constexpr std::string_view kRunFileMarker = "# written by stickslip find: the orbit it found, as a start";
-
-// A run file `stickslip run` takes: the start, and a continuation in omega over 10% on either
-// side, upwards, for the user to edit.
-std::string RunFileText(const StartInput& start, const std::filesystem::path& path) {
-  const std::string stem = path.stem().string();
-  const std::string output = IsRunName(stem) ? stem : "found-orbit";
-  auto table = [](const NamedValues& values) {
-    std::string text;
-    for (const auto& [name, value] : values) text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", name, Number(value));
-    return "{ " + text + " }";
-  };
-  double omega = 0.0;
-  for (const auto& [name, value] : start.set) {
-    if (name == "omega") omega = value;
-  }
-  std::string text = fmt::format("{}\noutput = \"{}\"\n", kRunFileMarker, output);
-  text += fmt::format("[start]\nsignature = \"{}\"\nset = {}\nguess = {}\n", start.signature, table(start.set),
-                      table(start.guess));
-  text += "[unknowns]\nfree = [";
-  for (std::size_t i = 0; i < start.free.size(); ++i) text += fmt::format("{}\"{}\"", i == 0 ? "" : ", ", start.free[i]);
-  text += fmt::format("]\ntie_u_r = {}\n", start.tie_u_r);
-  text += fmt::format("[continuation]                         # edit: the parameter, direction and range\n"
-                      "parameter = \"omega\"\ndirection = \"up\"\nrange = [{}, {}]\n",
-                      Rounded(std::max(kMinOmega, 0.9 * omega)), Rounded(std::min(kMaxOmega, 1.1 * omega)));
-  return text;
 }
 
 int ExitCode(FindOrbitStatus status) {
@@ -97,11 +69,105 @@ int ExitCode(FindOrbitStatus status) {
   return kExitNotAMotion;
 }
 
-int RunFind(const FindArgs& args) {
+// What find writes after the work, checked before it: the trace's directory and the run file, their
+// ranges and their combinations. Throws InvalidInput naming the option.
+struct FindOutputs {
+  std::optional<OmegaRange> trace;  // --trace
+  std::optional<OmegaRange> range;  // the run file's --range
+};
+FindOutputs CheckOutputs(const FindArgs& args) {
+  auto refuse = [](const char* field, const std::string& value, const char* valid) {
+    throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: valid {}", field, value, valid));
+  };
+  if (args.json && !args.trace.empty()) refuse("json", "true", "without --trace (the trace reports in text; its trace.json is JSON)");
+  if (!args.write_run_given && args.run_kind != "continue") refuse("as", args.run_kind, "with --write-run");
+  if (!args.write_run_given && !args.range.empty()) refuse("range", args.range, "with --write-run");
+  if (!args.trace.empty() && !args.range.empty()) refuse("range", args.range, "left out with --trace (the run file takes its range)");
+  if (args.trace.empty() && !args.output.empty() && !args.write_run_given) refuse("output", args.output, "with --trace or --write-run");
+  FindOutputs outputs;
+  if (!args.trace.empty()) {
+    outputs.trace = ParseOmegaRange("trace", args.trace);
+    if (args.output.empty()) throw InvalidInput::WithMessage("output", "output is missing: valid a run name, with --trace");
+    if (!IsRunName(args.output)) throw InvalidInput("output", "'" + args.output + "'", std::string(kRunNameRule));
+    CheckTraceOutputDirectory(args.start.results, args.output);
+  }
+  if (!args.range.empty()) outputs.range = ParseOmegaRange("range", args.range);
   if (args.write_run_given) {
-    const OutputMarker marker{"stickslip find", [](std::string_view line) { return line == kRunFileMarker; }};
+    const OutputMarker marker{"stickslip find", [](std::string_view line) { return line == kFoundRunFileMarker; }};
     CheckReplaceableOutputFile(args.write_run, "write-run", marker, args.force);
   }
+  return outputs;
+}
+
+// A range that does not hold the found orbit's omega traces nothing from it: bad input, found only
+// after the work.
+void CheckRangeHolds(const char* field, const std::string& text, const OmegaRange& range, double omega) {
+  if (range.low <= omega && omega <= range.high) return;
+  throw InvalidInput(field, "'" + text + "'", fmt::format("LO,HI that holds the found orbit's omega = {}", omega));
+}
+
+// The run file's name for the run: --output, else the file's stem where it is a run name.
+std::string RunFileOutput(const FindArgs& args) {
+  if (!args.output.empty()) return args.output;
+  const std::string stem = std::filesystem::path(args.write_run).stem().string();
+  return IsRunName(stem) ? stem : "found-orbit";
+}
+
+// The run file and the trace of the found orbit; returns the trace's exit code (kExitOk without one).
+int WriteAndTrace(const FindArgs& args, const FindOutputs& outputs, const StartInput& solved, double omega) {
+  if (outputs.trace) CheckRangeHolds("trace", args.trace, *outputs.trace, omega);
+  if (outputs.range) CheckRangeHolds("range", args.range, *outputs.range, omega);
+  if (args.write_run_given) {
+    const OmegaRange range = outputs.range ? *outputs.range : outputs.trace ? *outputs.trace : RangeAround(omega);
+    const RunFile run = FoundRun(solved, range, RunFileOutput(args), args.run_kind == "trace");
+    WriteFileAtomically(args.write_run, RunFileText(run));
+    if (!args.json) fmt::print("run file   {} (stickslip run {})\n", args.write_run, args.write_run);
+  }
+  if (!outputs.trace) return kExitOk;
+  const RunFile run = FoundRun(solved, *outputs.trace, args.output, true);
+  int code = kExitOk;
+  const std::optional<TraceRun> trace = ExecuteTrace(run, args.start.results, &code);
+  return trace ? WriteAndReportTrace(run, *trace, args.start.results) : code;
+}
+
+// find's outcome as one JSON object, by the names of Python's Found: status, message, the section's
+// numbers, the signature read off the motion, and the solved orbit as solve --json gives it (or null).
+std::string FindJson(const FindOrbitResult& found) {
+  using Json = nlohmann::ordered_json;
+  Json out{{"status", ToString(found.status)},
+           {"message", found.message},
+           {"transient_periods", found.transient_periods},
+           {"period_multiple", found.period_multiple},
+           {"mismatch", std::isfinite(found.mismatch) ? Json(found.mismatch) : Json(nullptr)},
+           {"closest_multiple", found.closest_multiple},
+           {"antisymmetric", found.antisymmetric},
+           {"signature", found.start ? Json(found.start->signature) : Json(nullptr)},
+           {"orbit", nullptr}};
+  if (found.solution && found.solution->summary.Converged()) {
+    out["orbit"] = OrbitJson(*found.solution, found.problem->free, found.problem->unknowns.tie_static_friction,
+                             found.margins, *found.verification);
+  }
+  return out.dump() + "\n";
+}
+
+void PrintFound(const FindOrbitResult& found, const FindOrbitOptions& options) {
+  if (found.period_multiple > 0) {
+    fmt::print("motion     periodic after {} transient period(s): k = {} forcing period(s), section mismatch {:.3g}{}\n",
+               found.transient_periods, found.period_multiple, found.mismatch,
+               found.antisymmetric ? fmt::format(", antisymmetric (mismatch {:.3g})", found.antisymmetry_mismatch) : "");
+  }
+  if (found.start) fmt::print("origin     t = {} after the transient (a segment end)\n", found.origin_time);
+  if (found.solution && found.solution->summary.Converged()) {
+    fmt::print("{}", OrbitReport(*found.solution, found.problem->free, found.problem->unknowns.tie_static_friction,
+                                 ToString(options.solver.sparse_solver), found.margins, *found.verification));
+    fmt::print("solve it again, or continue from it, with:\n  {}\n", SolveCommandLine(StartInputOf(found.solution->orbit)));
+  } else if (found.start) {
+    fmt::print("the start read off the motion:\n  {}\n", SolveCommandLine(*found.start));
+  }
+}
+
+int RunFind(const FindArgs& args) {
+  const FindOutputs outputs = CheckOutputs(args);
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   // The texts become numbers here; FindOptionsOf checks them, as it does for Python's find.
   auto number = [](const char* field, const std::string& text) { return ParseNumber(field, text, FindOptionRange(field)); };
@@ -116,29 +182,18 @@ int RunFind(const FindArgs& args) {
   options.progress = line.Callback();
   const FindOrbitResult found = FindOrbit(input.parameters, input.initial_state, input.phi, options);
   line.Clear();
-  if (found.period_multiple > 0) {
-    fmt::print("motion     periodic after {} transient period(s): k = {} forcing period(s), section mismatch {:.3g}{}\n",
-               found.transient_periods, found.period_multiple, found.mismatch,
-               found.antisymmetric ? fmt::format(", antisymmetric (mismatch {:.3g})", found.antisymmetry_mismatch) : "");
+  if (args.json) {
+    fmt::print("{}", FindJson(found));
+  } else {
+    PrintFound(found, options);
   }
-  if (found.start) {
-    fmt::print("origin     t = {} after the transient (a segment end)\n", found.origin_time);
+  // Only a verified orbit is a start to continue or trace from: otherwise nothing is written.
+  if (const int code = ExitCode(found.status); code != kExitOk) {
+    fmt::print(stderr, "error: {}\n", found.message);
+    return code;
   }
-  if (found.solution && found.solution->summary.Converged()) {
-    const StartInput solved = StartInputOf(found.solution->orbit);
-    fmt::print("{}", OrbitReport(*found.solution, found.problem->free, found.problem->unknowns.tie_static_friction,
-                                 ToString(options.solver.sparse_solver), found.margins, *found.verification));
-    fmt::print("solve it again, or continue from it, with:\n  {}\n", SolveCommandLine(solved));
-    if (args.write_run_given) {
-      WriteFileAtomically(args.write_run, RunFileText(solved, args.write_run));
-      fmt::print("run file   {} (stickslip run {})\n", args.write_run, args.write_run);
-    }
-  } else if (found.start) {
-    fmt::print("the start read off the motion:\n  {}\n", SolveCommandLine(*found.start));
-  }
-  const int code = ExitCode(found.status);
-  if (code != kExitOk) fmt::print(stderr, "error: {}\n", found.message);
-  return code;
+  const Orbit& orbit = found.solution->orbit;
+  return WriteAndTrace(args, outputs, StartInputOf(orbit), orbit.parameters.omega);
 }
 
 }  // namespace
@@ -150,11 +205,14 @@ Command AddFindCommand(CLI::App& app) {
       "Simulate from a start (as simulate does), detect the period of the motion on the stroboscopic section "
       "(t = n 2 pi/omega), read its orbit type, durations, phase and state off one period, solve the "
       "periodicity equations from there and verify the orbit by both simulators. Prints the orbit as solve "
-      "does and the solve command line that gives it. Exit code 0 found and verified, 3 Newton did not "
-      "converge, 4 the solution is not a motion or fails its verification, 5 the motion is not periodic "
-      "within --max-multiple forcing periods (or has no stop or stick exit), 1 the simulation stopped early.");
+      "does (or as JSON) and the solve command line that gives it; with --trace, traces from it at once. Exit "
+      "code 0 found and verified (and the trace ran to its ends), 3 Newton did not converge, 4 the solution is "
+      "not a motion or fails its verification, 5 the motion is not periodic within --max-multiple forcing periods "
+      "(or has no stop or stick exit), 1 the simulation stopped early; unless 0, no file is written.");
   AddStartOptions(*cmd, &args->start, StartOptions::kMotion);
-  cmd->add_option("--results", args->start.results, "where the runs of --point are stored")->capture_default_str();
+  cmd->add_option("--results", args->start.results,
+                  "where the runs of --point are stored, and where --trace writes <output>/")
+      ->capture_default_str();
   cmd->add_option("--transients", args->transients,
                   fmt::format("forcing periods 2 pi/omega simulated and discarded first (0 to {}, a whole number); "
                               "while the motion does not repeat, the transient goes on, twice as long each time, "
@@ -178,11 +236,29 @@ Command AddFindCommand(CLI::App& app) {
                   "periods of k T over which the section must repeat (1 to 100, a whole number)")
       ->type_name("N")
       ->capture_default_str();
+  cmd->add_option("--trace", args->trace,
+                  "then trace from the found orbit in omega over LO,HI (which must hold its omega), as stickslip "
+                  "trace does, into <results>/<output>/: the same files, the same report")
+      ->type_name("LO,HI");
+  cmd->add_option("--output", args->output, "the trace's directory under --results (a run name; with --trace), and "
+                                            "the output of the run file --write-run writes");
   cmd->add_option("--write-run", args->write_run,
-                  "also write a run file for stickslip run with the found orbit as its [start] (a continuation in "
-                  "omega over +-10%, to edit); written whole or not at all, checked before the work")
+                  "also write a run file for stickslip run with the found orbit as its [start]; written whole or "
+                  "not at all, checked before the work")
       ->type_name("FILE")
       ->each([args](const std::string&) { args->write_run_given = true; });
+  cmd->add_option("--as", args->run_kind,
+                  "the run file's kind: continue (one branch in omega upwards) or trace (both ways, through the "
+                  "changes of type)")
+      ->check(CLI::IsMember({"continue", "trace"}))
+      ->capture_default_str();
+  cmd->add_option("--range", args->range,
+                  "the run file's range of omega (default --trace's, else 10% either side of the orbit's omega)")
+      ->type_name("LO,HI");
+  cmd->add_flag("--json", args->json,
+                "print one JSON object: status, message, transient_periods, period_multiple, mismatch, "
+                "closest_multiple, antisymmetric, signature (read off the motion) and orbit (as solve --json prints "
+                "it, with unknowns and admissible; null unless Newton converged); not with --trace");
   cmd->add_flag("--force", args->force, kForceHelp);
   return {cmd, [args] { return RunFind(*args); }};
 }

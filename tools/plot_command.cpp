@@ -45,6 +45,7 @@ struct PlotArgs {
   // the option, its value and the valid range, exit 2, nothing written).
   std::vector<std::pair<std::string, std::string>> drawing;
   bool no_natural_frequencies = false;
+  bool force = false;  // replace an --output that stickslip plot did not write
 };
 
 // The drawing script `name`, found from the program's own place (no path is compiled in): beside
@@ -168,6 +169,7 @@ int RunPlot(const PlotArgs& args) {
     argv.push_back(value);
   }
   if (args.no_natural_frequencies) argv.push_back("--no-natural-frequencies");
+  if (args.force) argv.push_back("--force");  // the script checks the output's marker (check_replaceable)
   argv.push_back("--");  // the inputs, whatever their names begin with
   for (const fs::path& input : inputs) argv.push_back(input.string());
   std::string why;
@@ -249,6 +251,9 @@ Command AddPlotCommand(CLI::App& app) {
   }
   cmd->add_flag("--no-natural-frequencies", args->no_natural_frequencies,
                 "do not mark omega1 and omega2 (marked by default where an axis is omega)");
+  cmd->add_flag("--force", args->force,
+                "replace --output even if stickslip plot did not write it (a figure of the user's, a thesis.pdf); "
+                "without it such a file is kept and plot exits 2");
   return {cmd, [args] { return RunPlot(*args); }};
 }
 

@@ -7,19 +7,17 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json.hpp>  // dump()
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "orbit_json.hpp"
 #include "orbit_report.hpp"
 #include "start_options.hpp"
-#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/orbits/margins.hpp"
-#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
-#include "stickslip/orbits/stability.hpp"
 #include "stickslip/orbits/verification.hpp"
 
 namespace stickslip::cli {
@@ -34,58 +32,6 @@ struct SolveArgs {
   bool json = false;
   bool compare_paper = false;
 };
-
-// The solution as one JSON object (the keys --help lists); non-finite numbers are null.
-std::string Json(const Orbit& o, const OrbitSolution& s, const std::vector<Margin>& margins,
-                 const Verification& v) {
-  using Json = nlohmann::ordered_json;
-  auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
-  auto modes = [](const std::vector<Mode>& sequence) {
-    Json list = Json::array();
-    for (Mode m : sequence) list.push_back(ToString(m));
-    return list;
-  };
-  auto check = [&](const SimulatorCheck& c) {
-    const bool simulated = v.not_simulated.empty();
-    return Json{{"events", modes(c.modes)},
-                {"sequence_matches", c.sequence_matches},
-                {"max_mismatch", simulated ? number(c.periodicity_mismatch) : Json(nullptr)},
-                {"max_event_time_difference", simulated ? number(c.max_event_time_difference) : Json(nullptr)}};
-  };
-  Json out{{"signature", o.signature.ToString()}};
-  for (ParameterId id : kAllParameters) out["parameters"][ToString(id)] = o.parameters[id];
-  out.update(Json{{"phi", o.phi}, {"x10", o.x10}, {"x20", o.x20}, {"v10", o.v10}});
-  out["segments"] = Json::array();
-  for (int i = 0; i < o.signature.size(); ++i) {
-    out["segments"].push_back({{"mode", ToString(o.signature.segments()[i])}, {"duration", o.durations[i]}});
-  }
-  out.update(Json{{"converged", s.summary.Converged()},
-                  {"termination", ToString(s.summary.termination)},
-                  {"iterations", s.summary.iterations},
-                  {"residual_norm", number(s.summary.residual_norms.back())},
-                  {"condition_number", number(s.summary.condition_number)},
-                  {"shooting", ToString(s.shooting)}});
-  out["margins"] = Json::object();
-  for (const Margin& m : margins) out["margins"][m.Name()] = number(m.value);
-  const Stability stability = StabilityOf(o);
-  out["multipliers"] = Json::array();
-  for (const std::complex<double>& mu : stability.multipliers) {
-    out["multipliers"].push_back({number(mu.real()), number(mu.imag())});
-  }
-  out.update(Json{{"stable", stability.stable}, {"multipliers_one_sided", stability.one_sided}});
-  out["measures"] = Json::object();
-  const OrbitMeasures measures = Measure(o);
-  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto& value) {
-    out["measures"][name] = std::isfinite(static_cast<double>(value)) ? Json(value) : Json(nullptr);  // counts stay integers
-  });
-  out["verification"] = {{"passed", v.Passed()},
-                         {"not_simulated", v.not_simulated.empty() ? Json(nullptr) : Json(v.not_simulated)},
-                         {"expected", modes(v.expected)},
-                         {"exact", check(v.exact)},
-                         {"odeint", check(v.odeint)}};
-  return out.dump() + "\n";
-}
-
 
 std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std::string& choice) {
   std::string out = fmt::format("#### {} ({}, {}): {}\n\n| paper | printed | stickslip | difference |\n|---|---|---|---|\n",
@@ -123,7 +69,7 @@ int RunSolve(const SolveArgs& args) {
   const std::vector<Margin> margins = AdmissibilityMargins(orbit);
   const Verification verification = VerifyOrbit(orbit);
   if (args.json) {
-    fmt::print("{}", Json(orbit, solution, margins, verification));
+    fmt::print("{}\n", OrbitJson(solution, start.free, start.unknowns.tie_static_friction, margins, verification).dump());
     return SolvedOrbitOutcome(margins, verification);
   }
   if (args.compare_paper) {
@@ -160,9 +106,10 @@ Command AddSolveCommand(CLI::App& app) {
       ->check(CLI::IsMember({"klu", "umfpack", "dense"}))
       ->default_str("klu");
   cmd->add_flag("--json", args->json,
-                "print one JSON object: signature, parameters, phi, x10, x20, v10, segments, "
-                "converged, residual_norm, margins, multipliers, stable, measures (amplitude:x1, "
-                "amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks), verification");
+                "print one JSON object: signature, parameters, phi, x10, x20, v10, segments, unknowns (the "
+                "solved variables by name), tie_u_r, converged, residual_norm, margins, admissible, multipliers, "
+                "stable, measures (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks), "
+                "verification");
   cmd->add_flag("--compare-paper", args->compare_paper,
                 "with --preset: print a Markdown table of the paper's printed values beside "
                 "stickslip's");

@@ -38,9 +38,9 @@ Options (the same names on the command line and, with underscores, as keywords):
 Command line (what `stickslip plot` runs; it checks the inputs' names and the output file first):
   /usr/bin/python3 stickslip_plot.py --output FILE.{png,pdf,svg} [--x COL] [--y COL]
       [--xscale linear|log] [--yscale linear|log] [--xlim LO,HI] [--ylim LO,HI] [--size W,H]
-      [--dpi N] [--title TEXT] [--legend right|inside|none] [--no-natural-frequencies] INPUT...
+      [--dpi N] [--title TEXT] [--legend right|inside|none] [--no-natural-frequencies] [--force] INPUT...
 An existing output file is replaced only if it is a figure stickslip plot wrote (MARKER in its
-metadata); any other is bad input.
+metadata), or with --force; any other is bad input.
 Exit codes: 0 written; 2 bad input (one line: the option, its value and the valid range; nothing
 written); 3 matplotlib cannot be imported; 1 the drawing failed (nothing written).
 """
@@ -1512,7 +1512,7 @@ OPTIONS_WITH_VALUES = ("--output", "--x", "--y", "--xscale", "--yscale", "--xlim
 
 
 def main(argv):
-    values, inputs, naturals = {}, [], True
+    values, inputs, naturals, force = {}, [], True, False
     k = 1
     try:
         while k < len(argv):
@@ -1528,8 +1528,12 @@ def main(argv):
             elif arg == "--no-natural-frequencies":
                 naturals = False
                 k += 1
+            elif arg == "--force":
+                force = True
+                k += 1
             elif arg.startswith("--"):
-                raise BadInput("option", f"'{arg}'", "one of " + ", ".join(OPTIONS_WITH_VALUES) + ", --no-natural-frequencies")
+                raise BadInput("option", f"'{arg}'",
+                               "one of " + ", ".join(OPTIONS_WITH_VALUES) + ", --no-natural-frequencies, --force")
             else:
                 inputs.append(arg)
                 k += 1
@@ -1542,7 +1546,7 @@ def main(argv):
             return 3  # stickslip plot says what to install
         matplotlib.use("Agg")
         options = Options(prefix="--", natural_frequencies=naturals, **values)
-        check_replaceable(options.output, "--output")
+        check_replaceable(options.output, "--output", force)
         results = [load(path) for path in inputs]
         fig = figure(results, options)
         save(fig, options.output, options.dpi, "--dpi")

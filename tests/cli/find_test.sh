@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # stickslip find: a new user's period-4 motion found and verified (exit 0), the solve command line
-# it prints gives the same orbit, the run file it writes is one `stickslip run` takes; exit 5 for
-# a motion that is not periodic within --max-multiple or has no orbit type; and a table of bad
-# input: exit 2, one line naming the option and its range, no file created or changed.
+# it prints gives the same orbit, the run file it writes is one `stickslip run` takes; --trace gives
+# the files of find then trace by hand, and a run file --as trace the same branches; --json is the
+# text output's orbit as JSON; exit 5 for a motion that is not periodic within --max-multiple or has
+# no orbit type (nothing traced or written); and a table of bad input: exit 2, one line naming the
+# option and its range, no file created or changed.
 set -u
 bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
 work=$(mktemp -d)
@@ -29,6 +31,55 @@ eval "\"\$bin\" $command" > "$work/solve.txt" 2>&1 || fail "the printed solve co
 "$bin" run --results "$work/results" "$work/p4.toml" > "$work/run.txt" 2>&1 ||
   fail "stickslip run on the written run file exits $?: $(cat "$work/run.txt")"
 [ -f "$work/results/p4/branch.csv" ] || fail "the run of the written run file left no branch.csv"
+
+# find --trace: the trace from the found orbit is the trace `stickslip trace` makes from the solve line find
+# prints (by hand), file for file; --write-run --as trace writes a run file whose run gives the same branches.
+range=0.59,0.62
+"$bin" find --preset paper-4.1 --trace "$range" --results "$work/found" --output t41 \
+  --write-run "$work/t41.toml" --as trace > "$work/ft.txt" 2> "$work/ft.err" || fail "find --trace exits $?: $(cat "$work/ft.err")"
+grep -q "^t41: [0-9]* branches in" "$work/ft.txt" || fail "find --trace did not report the trace: $(tail -3 "$work/ft.txt")"
+solve_flags=$(grep "^  stickslip solve " "$work/ft.txt" | sed 's/^  stickslip solve //')
+eval "\"\$bin\" trace $solve_flags --parameter omega --range $range --results \"\$work/by-hand\" --output t41" \
+  > /dev/null 2>&1 || fail "trace by hand from the printed solve line exits $?"
+diff -r "$work/found/t41" "$work/by-hand/t41" > "$work/diff.txt" || fail "find --trace differs from find then trace: $(head -5 "$work/diff.txt")"
+[ "$(ls "$work/found/t41" | grep -c '^branch-')" -ge 2 ] || fail "find --trace over $range switched nowhere: $(ls "$work/found/t41")"
+grep -q '^\[trace\]' "$work/t41.toml" && grep -q "^range = \[0.59, 0.62\]" "$work/t41.toml" || fail "the run file is no trace over $range"
+"$bin" run --results "$work/from-file" "$work/t41.toml" > /dev/null 2>&1 || fail "stickslip run of the trace run file exits $?"
+for f in trace.csv branch-1/branch.csv branch-2/branch.csv; do
+  cmp -s "$work/found/t41/$f" "$work/from-file/t41/$f" || fail "the run file's trace differs in $f"
+done
+
+# find --json: one object that python3 parses, equal to the text output.
+"$bin" find --preset paper-4.1 --json > "$work/found.json" 2> "$work/json.err" || fail "find --json exits $?: $(cat "$work/json.err")"
+"$bin" find --preset paper-4.1 > "$work/found.txt" 2>&1
+/usr/bin/python3 - "$work/found.json" "$work/found.txt" <<'PY' || fail "find --json does not match the text output"
+import json, sys
+found = json.load(open(sys.argv[1]))
+text = open(sys.argv[2]).read().splitlines()
+line = lambda key: next(l for l in text if l.startswith(key)).split(None, 1)[1]
+orbit = found["orbit"]
+assert found["status"] == "found" and found["period_multiple"] == int(line("motion").split("k = ")[1].split()[0])
+assert orbit["signature"] == line("signature") == found["signature"]
+parameters = dict(item.split("=") for item in line("parameters").split())
+assert {k: float(v) for k, v in parameters.items()} == orbit["parameters"], (parameters, orbit["parameters"])
+assert list(orbit["unknowns"]) == line("unknowns").split()
+solution = dict(item.split("=") for item in line("solution").split())
+assert all(float(solution[key]) == orbit[key] for key in ("x10", "x20", "v10", "phi")), (solution, orbit)
+assert orbit["unknowns"]["x10"] == orbit["x10"]
+assert orbit["admissible"] is (line("smallest").split(": ")[1] == "admissible")
+assert orbit["stable"] is (line("stability") == "stable")
+assert orbit["verification"]["passed"] is (line("verification") == "passed")
+PY
+# Found nothing: the JSON says why (orbit null), the exit code is find's, nothing traced or written.
+"$bin" find "${data[@]}" --max-multiple 2 --json > "$work/none.json" 2> /dev/null
+code=$?
+[ "$code" -eq 5 ] && /usr/bin/python3 -c 'import json, sys; f = json.load(open(sys.argv[1])); assert f["status"] == "not-periodic" and f["orbit"] is None' \
+  "$work/none.json" || fail "find --json of a motion not periodic within 2: exit $code, $(cat "$work/none.json")"
+"$bin" find "${data[@]}" --max-multiple 2 --trace 0.2,0.3 --results "$work/none" --output t --write-run "$work/none.toml" \
+  > /dev/null 2> "$work/none.err"
+code=$?
+[ "$code" -eq 5 ] && [ "$(wc -l < "$work/none.err")" -eq 1 ] && [ ! -e "$work/none" ] && [ ! -e "$work/none.toml" ] ||
+  fail "find --trace finding nothing: exit $code, $(cat "$work/none.err"), $(ls "$work")"
 
 # Not periodic within --max-multiple 2 (the motion repeats after 4): exit 5, one line, no run file.
 "$bin" find "${data[@]}" --max-multiple 2 --write-run "$work/none.toml" > /dev/null 2> "$work/np.err"
@@ -85,6 +136,16 @@ expect_rejected x10 "1e+06" "${p[@]}" --set x10=1e308
 expect_rejected u_r "u_r" "${p[@]}" --set u_r=1e308
 expect_rejected preset "paper-4.1" --preset paper-9
 expect_rejected chi "missing" --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3
+expect_rejected trace "trace = '0.7,0.5' is invalid: valid range LO,HI with 0.01 <= LO < HI <= 100" "${p[@]}" --trace 0.7,0.5 --output t
+expect_rejected trace "trace = 'nan' is not a finite number: valid range LO,HI" "${p[@]}" --trace nan,0.7 --output t
+expect_rejected trace "trace = '0.5' is invalid: valid range LO,HI" "${p[@]}" --trace 0.5 --output t
+expect_rejected trace "trace = '0.1,0.2' is invalid: valid range LO,HI that holds the found orbit's omega = 0.6" "${p[@]}" \
+  --trace 0.1,0.2 --output t
+expect_rejected output "output is missing: valid a run name, with --trace" "${p[@]}" --trace 0.5,0.7
+expect_rejected range "range = '0.7,0.5' is invalid" "${p[@]}" --range 0.7,0.5
+expect_rejected range "range = '0.5,0.7' is invalid: valid left out with --trace" "${p[@]}" --trace 0.5,0.7 --output t --range 0.5,0.7
+expect_rejected json "json = 'true' is invalid: valid without --trace" "${p[@]}" --trace 0.5,0.7 --output t --json
+expect_rejected as "branch" "${p[@]}" --as branch
 
 # An output path that cannot be written: exit 2 naming --write-run, before the work.
 "$bin" find "${p[@]}" --write-run "$work" > /dev/null 2> "$work/dir.err"

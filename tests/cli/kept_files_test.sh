@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A trace or a map written again keeps what it did not write, at every depth, and lists it: the
-# AUTO export's b. and s. files inside a trace's branch-<k>/, the user's notes and directories there
+# AUTO export's b., s. and d. files inside a trace's branch-<k>/, the user's notes and directories there
 # and inside a map's curve-<k>/ (issue 22: they were deleted). And a run or a trace written into a
 # trace's own entries (--output branch-2 with --results the trace) is refused: exit 2, one line,
 # the trace untouched.
@@ -16,12 +16,12 @@ echo n > "$r/tr/branch-1/NOTES.md"
 mkdir -p "$r/tr/branch-1/plots" && echo p > "$r/tr/branch-1/plots/omega.txt"
 cp -r "$r/tr" "$work/mine"
 "$bin" trace "${p41[@]}" --results "$r" --output tr > "$work/again.txt" 2>&1
-for f in branch-2/b.branch-2 branch-2/s.branch-2 branch-1/NOTES.md branch-1/plots/omega.txt; do
+for f in branch-2/b.branch-2 branch-2/s.branch-2 branch-2/d.branch-2 branch-1/NOTES.md branch-1/plots/omega.txt; do
   cmp -s "$work/mine/$f" "$r/tr/$f" && pass || fail "the trace written again lost $f"
 done
-grep -qF "tr: kept 4 other file(s) of $r/tr: branch-1/NOTES.md, branch-1/plots, branch-2/b.branch-2, branch-2/s.branch-2" \
+grep -qF "tr: kept 5 other file(s) of $r/tr: branch-1/NOTES.md, branch-1/plots, branch-2/b.branch-2, branch-2/d.branch-2, branch-2/s.branch-2" \
   "$work/again.txt" && pass || fail "kept files not listed: $(cat "$work/again.txt")"
-rm -r "$r/tr/branch-2/b.branch-2" "$r/tr/branch-2/s.branch-2" "$r/tr/branch-1/NOTES.md" "$r/tr/branch-1/plots"
+rm -r "$r/tr/branch-2/b.branch-2" "$r/tr/branch-2/s.branch-2" "$r/tr/branch-2/d.branch-2" "$r/tr/branch-1/NOTES.md" "$r/tr/branch-1/plots"
 diff -r "$work/first" "$r/tr" > /dev/null && pass || fail "the trace written again differs from the first"
 
 # Into the trace's own entries: refused before the work, the trace as it was.

@@ -4,8 +4,8 @@
 # PDF and SVG by the extension, at --size and --dpi; draws a sweep's and a brute-force map's CSV
 # given by its path (stickslip plot mapA.csv) and overlays several inputs; refuses a missing or
 # ill-named run, every bad --output and every bad drawing option with exit 2, one line and nothing
-# written; a missing python3 or matplotlib is exit 1 with a message saying what to install, and
-# nothing written.
+# written; keeps a file of the user's as --output (exit 2) unless --force, which replaces it; a
+# missing python3 or matplotlib is exit 1 with a message saying what to install, and nothing written.
 source "$(dirname "$0")/expect.sh"
 
 mkdir -p "$work/out/a-directory"
@@ -60,6 +60,16 @@ cp "$root/results/maps/paper-6-omega-u_r-brute-force.csv" "$work/mapA.csv"
   --output "$work/overlay.png" > /dev/null && [ -s "$work/overlay.png" ] && pass || fail "plot of two runs and a sweep"
 
 png="$work/out/new.png"
+# A file of the user's as --output: kept, exit 2, without --force; replaced by a figure with it.
+printf 'my thesis\n' > "$work/out/thesis.pdf"
+expect 2 "a new file or a figure stickslip plot wrote" "$bin" plot paper-5.1-omega-up --results "$root/results" \
+  --output "$work/out/thesis.pdf"
+[ "$(cat "$work/out/thesis.pdf")" = "my thesis" ] && pass || fail "plot without --force changed the user's file"
+"$bin" plot paper-5.1-omega-up --results "$root/results" --output "$work/out/thesis.pdf" --force > /dev/null &&
+  [ "$(head -c 4 "$work/out/thesis.pdf")" = "%PDF" ] && pass || fail "plot --force did not replace the user's file"
+"$bin" plot --help | grep -q -- "--force.*replace --output even if stickslip plot did not write it" && pass ||
+  fail "plot --help does not say what --force does"
+rm "$work/out/thesis.pdf"
 # Bad drawing options: the option, the value and the valid range on one line, exit 2, nothing written.
 expect 2 "--dpi = '5' is invalid: valid 10 to 1200" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --dpi 5
 expect 2 "--size = '0,3' is invalid: valid WIDTH,HEIGHT in inches, each 1 to 40" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png" --size 0,3

@@ -1,11 +1,13 @@
 """stickslip.find: from a simulated motion to its exact orbit, as `stickslip find` — the same
-orbit as solve from the paper's data, a period-4 motion found with its k, and the command line's
-messages for bad input."""
+orbit as solve from the paper's data, a period-4 motion found with its k, the command line's
+messages for bad input; and trace and continue_orbit from a found or solved Orbit (start=)."""
+import pathlib
+
 import numpy as np
 import pytest
 
 import stickslip
-from conftest import cli_error
+from conftest import cli, cli_error
 
 
 def test_finds_the_paper_orbit_of_section_4_1_equal_to_solve():
@@ -41,3 +43,43 @@ def test_bad_options_raise_value_error_with_the_command_line_message(keywords, f
     with pytest.raises(ValueError) as error:
         stickslip.find(preset="paper-4.1", **keywords)
     assert str(error.value) == cli_error("find", "--preset", "paper-4.1", *flags)
+
+
+def tree(directory):
+    """{relative path: bytes} of every file under `directory`."""
+    root = pathlib.Path(directory)
+    return {str(p.relative_to(root)): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def test_trace_from_a_found_orbit_writes_the_files_of_find_trace(tmp_path):
+    # guess=found.orbit.variables failed ("guess gives 'chi' twice"): start= takes the Orbit itself.
+    found = stickslip.find(preset="paper-4.1")
+    assert found.found, found.message
+    omega = found.orbit.parameters.omega
+    trace = stickslip.trace("omega", (omega - 0.02, omega + 0.02), start=found.orbit)
+    trace.save(tmp_path / "py" / "t")
+    done = cli("find", "--preset", "paper-4.1", "--trace", f"{omega - 0.02!r},{omega + 0.02!r}",
+               "--results", tmp_path / "cli", "--output", "t")
+    assert done.returncode == 0, done.stderr
+    written = tree(tmp_path / "cli" / "t")
+    assert len(written) >= 2 + 3 and tree(tmp_path / "py" / "t") == written  # trace.csv, trace.json, a branch
+
+
+def test_continue_orbit_from_an_orbit_keeps_its_unknowns():
+    # Section 5.2 with phi held at pi/2 and u_r released: the branch from the Orbit is the branch
+    # from the same keywords, u_r varying along it.
+    keywords = dict(preset="paper-5.2", fix={"phi": np.pi / 2}, free="u_r")
+    orbit = stickslip.solve(**keywords)
+    from_orbit = stickslip.continue_orbit("omega", (0.5, 1.0), start=orbit, max_points=6)
+    from_keywords = stickslip.continue_orbit("omega", (0.5, 1.0), max_points=6, **keywords)
+    for column in ("omega", "u_r", "phi", "x10", "d1"):
+        assert np.allclose(from_orbit[column], from_keywords[column], rtol=1e-9, atol=1e-12), column
+    assert np.ptp(from_orbit["u_r"]) > 0 and np.all(from_orbit["phi"] == np.pi / 2)
+
+
+def test_start_is_an_orbit_and_the_whole_start():
+    orbit = stickslip.solve(preset="paper-4.1")
+    with pytest.raises(TypeError, match="start must be a stickslip.Orbit"):
+        stickslip.continue_orbit("omega", (0.5, 0.7), start=stickslip.find(preset="paper-4.1"))
+    with pytest.raises(TypeError, match="preset= cannot be given with it"):
+        stickslip.trace("omega", (0.5, 0.7), start=orbit, preset="paper-4.1")

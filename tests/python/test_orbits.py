@@ -52,6 +52,8 @@ def test_paper_orbits_equal_the_command_line_bit_for_bit(name):
     line = next(line for line in text.splitlines() if line.startswith("unknowns"))
     assert list(orbit.unknowns) == line.split()[1:len(orbit.unknowns) + 1]
     assert orbit.unknowns["x10"] == orbit.x10
+    assert orbit.unknowns == expected["unknowns"] and orbit.tie_u_r == expected["tie_u_r"]
+    assert orbit.admissible == expected["admissible"]
 
 
 def test_section_5_2_at_the_printed_data_is_not_a_motion():

@@ -13,6 +13,7 @@ The same computations as the command line, with the same keys and the same check
     for point in cont: ...                                 # one point at a time
     sweep = stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), steps=50)
     trace = stickslip.trace("omega", (0.3, 0.69), preset="paper-4.1")  # -> Trace: Branches, ends
+    trace = stickslip.trace("omega", (0.5, 0.6), start=stickslip.find(preset="paper-4.1").orbit)
     other = branch.switch("PD2", side=1)                   # the branch leaving a PD, SB or BP label
     m = stickslip.map_sweep(preset="paper-6", first_range=(0.55, 0.6), second_range=(1.2, 1.5))
     fig = branch.plot(y="peak-to-peak:x2", yscale="log")  # matplotlib Figures, as `stickslip plot`
@@ -243,8 +244,10 @@ def continue_orbit(parameter, range, **keywords):
     boundary    with point="RUN:LABEL" at a change of type: the type boundary there (its margin
                 = 0), continued in `parameter` and this second parameter (the run file's
                 restart = { ..., boundary = "u_r" }); two_parameter() says it in its own words.
-    The start keywords are solve()'s. Returns a Branch; raises ConvergenceError if the start does
-    not converge, ValueError for bad input (the command line's message).
+    start       an Orbit (solve()'s, or find().orbit): the start, with the orbit's own unknowns;
+                or the start keywords of solve() instead.
+    Returns a Branch; raises ConvergenceError if the start does not converge, ValueError for bad
+    input (the command line's message).
     """
     return Branch(_core._continue(_one_off_run(parameter, range, **keywords)))
 
@@ -293,7 +296,8 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
     allow_inadmissible  trace from a start that is not a motion of the system (a margin < 0 there:
                     admissible 0) instead of refusing it (ValueError, as the command line exits 4)
     The other keywords are continue_orbit's but direction, continue_past_type_changes and
-    switch_branch (the range bounds the whole trace; ds, max_points, ... apply to every branch).
+    switch_branch (the range bounds the whole trace; ds, max_points, ... apply to every branch):
+    start=found.orbit traces from an orbit find() found, as `stickslip find --trace` does.
     Returns a Trace whatever its directions' ends (see trace.ends); raises ConvergenceError when no
     branch started, ValueError for bad input (the command line's message) and for a start that is
     not a motion without allow_inadmissible.

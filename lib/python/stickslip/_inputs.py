@@ -7,7 +7,7 @@ import numbers as _numbers
 import numpy as _np
 
 from . import _stickslip as _core
-from ._stickslip import Parameters
+from ._stickslip import Orbit, Parameters
 
 _DEFAULTS = _core._continuation_defaults()
 
@@ -71,9 +71,27 @@ def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, re
     }
 
 
-def _one_off_run(parameter, range, *, direction="up", output="python", parameters=None, signature=None, preset=None,
-                 point=None, switch_branch=False, boundary=None, results="results", set=None, guess=None, free=None, fix=None,
-                 tie_u_r=False, ds=None,
+def _orbit_start(orbit, results, others):
+    """The start that gives `orbit` (an Orbit of solve() or find()) back: its type, its parameters as
+    set, its state, phase and durations as guess, and its own unknowns (free, fix, tie_u_r)."""
+    if not isinstance(orbit, Orbit):
+        raise TypeError(f"start must be a stickslip.Orbit (solve()'s, or find().orbit), got {type(orbit).__name__}")
+    given = [name for name, value in others.items() if value not in (None, False)]
+    if given:
+        raise TypeError(f"start= is the whole start: {given[0]}= cannot be given with it")
+    # x10, x20, v10, phi and the durations are unknowns unless fixed, the parameters only if released
+    # (the start builder's rule, FreeIndices).
+    always = ["x10", "x20", "v10", "phi"] + [f"d{k}" for k in range(1, len(orbit.durations) + 1)]
+    unknowns = orbit.unknowns
+    return _start(orbit.parameters, results=results, signature=orbit.signature,
+                  guess={name: orbit.variables[name] for name in always},
+                  free=[name for name in unknowns if name not in always],
+                  fix=[name for name in always if name not in unknowns], tie_u_r=orbit.tie_u_r)
+
+
+def _one_off_run(parameter, range, *, direction="up", output="python", start=None, parameters=None, signature=None,
+                 preset=None, point=None, switch_branch=False, boundary=None, results="results", set=None, guess=None,
+                 free=None, fix=None, tie_u_r=False, ds=None,
                  ds_min=None, ds_max=None, max_points=None, shooting=None, linear_solver=None, detect_folds=None,
                  detect_branch_points=None, continue_past_type_changes=None, max_amplitude=None, user_values=(),
                  user_values_of=None):
@@ -92,6 +110,10 @@ def _one_off_run(parameter, range, *, direction="up", output="python", parameter
         "user_values": [float(v) for v in user_values],
         "user_values_of": {str(k): [float(v) for v in vs] for k, vs in (user_values_of or {}).items()},
     })
-    start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
+    if start is not None:
+        others = dict(parameters=parameters, signature=signature, preset=preset, point=point, set=set, guess=guess,
+                      free=free, fix=fix, tie_u_r=tie_u_r)
+        return _core._one_off_run(_orbit_start(start, results, others), options)
+    begin = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
                    guess=guess, free=free, fix=fix, tie_u_r=tie_u_r)
-    return _core._one_off_run(start, options)
+    return _core._one_off_run(begin, options)

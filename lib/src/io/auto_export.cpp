@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <complex>
 #include <map>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/orbits/orbit.hpp"
@@ -34,61 +36,116 @@ std::pair<int, int> AutoLabel(const std::string& label, const std::filesystem::p
   return {AutoTypeCode(std::string(label.begin(), digits)), std::stoi(number)};
 }
 
+// The b. file's columns after BR PT TY LAB, by name, with each point's value: the parameter, then
+// the measures (so that AUTO's default axes, column 0 against column 1, draw max |x1| against the
+// parameter: a frequency response), then the orbit's start and durations.
+struct BranchColumns {
+  std::vector<std::string> names;
+  std::vector<int> variables;  // orbit_variables::Pack indices: the parameter, then the columns after the measures
+
+  std::vector<double> Values(const StoredPoint& p) const {
+    const Eigen::VectorXd packed = orbit_variables::Pack(p.orbit);
+    std::vector<double> values = {packed(variables.front())};
+    orbit_columns::ForEachMeasure(p.measures, [&](const char*, const auto& value) { values.push_back(value); });
+    for (std::size_t k = 1; k < variables.size(); ++k) values.push_back(packed(variables[k]));
+    return values;
+  }
+};
+
+BranchColumns ColumnsOf(const StoredRun& run) {
+  const int segments = run.branch.front().orbit.signature.size();
+  BranchColumns columns;
+  std::vector<std::string> variables = {run.summary.parameter, "x10", "x20", "v10", "phi"};
+  for (int i = 1; i <= segments; ++i) variables.push_back(fmt::format("d{}", i));
+  // The reader checked that the parameter is a variable of the orbit.
+  for (const std::string& name : variables) columns.variables.push_back(*orbit_variables::IndexOf(segments, name));
+  columns.names = {variables.front()};
+  orbit_columns::ForEachMeasure(run.branch.front().measures, [&](const char* name, const auto&) {
+    columns.names.emplace_back(name);
+  });
+  columns.names.insert(columns.names.end(), variables.begin() + 1, variables.end());
+  return columns;
+}
+
+// The b. file's two header lines: AUTO's RL0, RL1 (the parameter's range) and A0, A1; the names.
+std::string BranchHeader(const StoredRun& run, const BranchColumns& columns) {
+  double low = columns.Values(run.branch.front()).front();
+  double high = low;
+  for (const StoredPoint& p : run.branch) {
+    const double value = columns.Values(p).front();
+    low = std::min(low, value);
+    high = std::max(high, value);
+  }
+  std::string header = fmt::format("   0 {:19.10E}{:19.10E}{:19.10E}{:19.10E}\n", low, high, 0.0, 0.0);
+  header += "   0    PT  TY  LAB ";
+  for (const std::string& n : columns.names) header += fmt::format("{:<19}", n);
+  return header + "\n";
+}
+
+// The s. file's entry of a labelled point: one period at `samples` times (t scaled to [0, 1]),
+// then NPAR = 36 parameters.
+std::string SolutionEntry(const StoredPoint& p, int ty, int lab, int samples) {
+  const Orbit& orbit = p.orbit;
+  const std::vector<State> states = orbit.Sample(samples);
+  constexpr int kParameters = 36;  // AUTO's NPAR
+  std::vector<double> par(kParameters, 0.0);
+  for (int k = 0; k < kParameterCount; ++k) par[k] = orbit.parameters[kAllParameters[k]];
+  par[10] = orbit.Period();
+  const int lines = samples + (kParameters + 6) / 7;
+  // IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR
+  std::string s = fmt::format("{:6d}{:6d}{:6d}{:6d}{:6d}{:6d}{:8d}{:6d}{:8d}{:5d}{:5d}{:5d}\n", 1,
+                              p.stable ? -p.pt : p.pt, ty, lab, 1, 1, samples, 5, lines, samples - 1, 1, kParameters);
+  for (int k = 0; k < samples; ++k) {
+    const State& x = states[k];
+    s += fmt::format("    {:19.10E}{:19.10E}{:19.10E}{:19.10E}{:19.10E}\n", static_cast<double>(k) / (samples - 1), x(0),
+                     x(1), x(2), x(3));
+  }
+  for (int k = 0; k < kParameters; ++k) {
+    s += fmt::format("{}{:19.10E}", k % 7 == 0 ? "    " : "", par[k]);
+    if (k % 7 == 6 || k + 1 == kParameters) s += "\n";
+  }
+  return s;
+}
+
+// The d. file's block of one point: what stickslip keeps of its computation, in the layout of
+// AUTO's diagnostics that parseD reads (BR and PT on the line after the first "BR" line, the LAB
+// after a "BR PT TY LAB" line, a "Multiplier" line per Floquet multiplier). AUTO writes a line per
+// Newton iteration; stickslip stores their count (IT) and the step that reached the point.
+std::string DiagnosticsEntry(const StoredPoint& p, const std::string& parameter, double value, int lab) {
+  std::string d = fmt::format("  BR    PT  IT  {:<19}{:<19}\n", parameter, "step_size");
+  d += fmt::format("{:4d}{:6d}{:4d}  {:19.10E}{:19.10E}\n", 1, p.pt, p.newton_iterations, value, p.step_size);
+  for (std::size_t k = 0; k < p.multipliers.size(); ++k) {
+    const std::complex<double> mu = p.multipliers[k];
+    d += fmt::format(" Multiplier {:3d} {:19.10E}{:19.10E}  Abs. Val. {:19.10E}\n", k + 1, mu.real(), mu.imag(),
+                     std::abs(mu));
+  }
+  d += fmt::format(" Stability: {}\n", p.stable ? "stable (every |multiplier| < 1)" : "unstable (a |multiplier| >= 1)");
+  if (!p.label.empty()) {
+    d += fmt::format("  BR    PT  TY  LAB  {}\n{:4d}{:6d}  {:<4}{:4d}  {:19.10E}\n", parameter, 1, p.pt,
+                     p.label.substr(0, p.label.find_first_of("0123456789")), lab, value);
+  }
+  return d;
+}
+
+// The divider parseD splits the d. file at, one block per point.
+constexpr std::string_view kDiagnosticsDivider = "===============================================\n";
+
 }  // namespace
 
 AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
   const StoredRun run = ReadRunFiles(run_directory);
-  const int segments = run.branch.front().orbit.signature.size();
-  // The reader checked that the parameter is a variable of the orbit.
-  std::vector<std::string> names = {run.summary.parameter, "x10", "x20", "v10", "phi"};
-  for (int i = 1; i <= segments; ++i) names.push_back(fmt::format("d{}", i));
-  std::vector<int> columns;
-  for (const std::string& name : names) columns.push_back(*orbit_variables::IndexOf(segments, name));
-  auto parameter = [&](const StoredPoint& p) { return orbit_variables::Pack(p.orbit)(columns.front()); };
-  double low = parameter(run.branch.front());
-  double high = low;
-  for (const StoredPoint& p : run.branch) {
-    low = std::min(low, parameter(p));
-    high = std::max(high, parameter(p));
-  }
-
+  const BranchColumns columns = ColumnsOf(run);
   AutoFiles files;
-  // The first header line holds AUTO's RL0, RL1 (the parameter range) and A0, A1.
-  files.b = fmt::format("   0 {:19.10E}{:19.10E}{:19.10E}{:19.10E}\n", low, high, 0.0, 0.0);
-  files.b += "   0    PT  TY  LAB ";
-  for (const std::string& n : names) files.b += fmt::format("{:<19}", n);
-  files.b += "\n";
-  int pt = 0;
+  files.b = BranchHeader(run, columns);
   for (const StoredPoint& p : run.branch) {
-    ++pt;
-    const auto [ty, lab] = p.label.empty() ? std::pair(0, 0) : AutoLabel(p.label, run_directory / "branch.csv", pt);
-    files.b += fmt::format("{:4d}{:6d}{:4d}{:5d}", 1, p.stable ? -pt : pt, ty, lab);
-    const Eigen::VectorXd variables = orbit_variables::Pack(p.orbit);
-    for (int c : columns) files.b += fmt::format("{:19.10E}", variables(c));
+    const auto [ty, lab] = p.label.empty() ? std::pair(0, 0) : AutoLabel(p.label, run_directory / "branch.csv", p.pt);
+    const std::vector<double> values = columns.Values(p);
+    files.b += fmt::format("{:4d}{:6d}{:4d}{:5d}", 1, p.stable ? -p.pt : p.pt, ty, lab);
+    for (double v : values) files.b += fmt::format("{:19.10E}", v);
     files.b += "\n";
-    if (p.label.empty()) continue;
-
-    // The solution file entry of a labelled point.
-    const Orbit& orbit = p.orbit;
-    const std::vector<State> states = orbit.Sample(samples);
-    constexpr int kParameters = 36;  // AUTO's NPAR
-    std::vector<double> par(kParameters, 0.0);
-    for (int k = 0; k < kParameterCount; ++k) par[k] = orbit.parameters[kAllParameters[k]];
-    par[10] = orbit.Period();
-    const int rows = samples;
-    const int lines = rows + (kParameters + 6) / 7;
-    // IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR
-    files.s += fmt::format("{:6d}{:6d}{:6d}{:6d}{:6d}{:6d}{:8d}{:6d}{:8d}{:5d}{:5d}{:5d}\n", 1, p.stable ? -pt : pt, ty, lab,
-                           1, 1, rows, 5, lines, rows - 1, 1, kParameters);
-    for (int k = 0; k < rows; ++k) {
-      const State& x = states[k];
-      files.s += fmt::format("    {:19.10E}{:19.10E}{:19.10E}{:19.10E}{:19.10E}\n", static_cast<double>(k) / (rows - 1),
-                             x(0), x(1), x(2), x(3));
-    }
-    for (int k = 0; k < kParameters; ++k) {
-      files.s += fmt::format("{}{:19.10E}", k % 7 == 0 ? "    " : "", par[k]);
-      if (k % 7 == 6 || k + 1 == kParameters) files.s += "\n";
-    }
+    if (!files.d.empty()) files.d += kDiagnosticsDivider;
+    files.d += DiagnosticsEntry(p, run.summary.parameter, values.front(), lab);
+    if (!p.label.empty()) files.s += SolutionEntry(p, ty, lab, samples);
   }
   return files;
 }

@@ -1,12 +1,18 @@
-// Export of a run's results to AUTO-07p's bifurcation (b.) and solution (s.) files, so that
-// AUTO's own tools (its Python parsers, @pp, plotting) read stickslip's branches.
+// Export of a run's results to AUTO-07p's bifurcation (b.), solution (s.) and diagnostics (d.)
+// files, so that AUTO's own tools (its Python parsers, @pp, PyPLAUT) read stickslip's branches.
 //
-// b.: one line per branch point, "BR PT TY LAB" and then the continuation parameter, x10, x20,
-// v10, phi, d1..dn. PT is negative where the orbit is stable, as AUTO marks it. TY uses AUTO's
+// b.: one line per branch point, "BR PT TY LAB" and then the continuation parameter, the measures
+// (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks: branch.csv's names),
+// x10, x20, v10, phi, d1..dn; AUTO's default axes (columns 0 and 1) thus draw max |x1| against
+// the parameter. PT is negative where the orbit is stable, as AUTO marks it. TY uses AUTO's
 // codes: LP 2, BP 1, UZ -4, EP 9, PD 7, TR 8. stickslip's orbit-type changes (GR, T0, S0, NS, SK)
 // have no AUTO code and are written as user points (-4); their type stays in special-points.csv.
 // s.: for each labelled point, the orbit over one period at `samples` times (t scaled to
 // [0, 1], U = x1, x2, x1', x2'), PAR(1..5) = chi, eta, omega, u_s, u_r and PAR(11) = the period.
+// d.: one block per branch point, as AUTO's parseD reads it: BR, PT, the Newton iterations the
+// corrector took (IT; AUTO lists each iteration, stickslip keeps their count), the parameter and
+// the step that reached the point (0 at the start and at located points), the Floquet multipliers
+// ("Multiplier k re im"), and for a labelled point its TY and LAB.
 #pragma once
 
 #include <filesystem>
@@ -17,6 +23,7 @@ namespace stickslip {
 struct AutoFiles {
   std::string b;
   std::string s;
+  std::string d;
 };
 
 // Reads results/<run>/ (ReadRunFiles). Throws InvalidInput naming the file, as the reader does.
