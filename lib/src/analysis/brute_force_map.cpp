@@ -71,6 +71,7 @@ struct Run {
   std::string signature;
   std::vector<State> section;  // all recorded section points (periodic), else the last state
   State last = State::Zero();
+  double settling = 0.0;  // SettledMotion::settling: how far the section may still be from its orbit
 };
 
 Run SimulateRun(const Parameters& p, const State& start, double phi, const BruteForceMapOptions& o) {
@@ -93,6 +94,7 @@ Run SimulateRun(const Parameters& p, const State& start, double phi, const Brute
   }
   run.status = AttractorStatus::kPeriodic;
   run.period = motion.period;
+  run.settling = motion.settling;
   // Antisymmetry over one period of k T (the record holds recorded_periods >= 2 k periods).
   MotionTypeOptions reading;
   reading.periodicity_tolerance = o.periodicity_tolerance;
@@ -119,24 +121,27 @@ bool SameOrbit(const std::vector<State>& a, const std::vector<State>& b, double 
   return false;
 }
 
-// The cell's runs, in start order, as attractors.
+// The cell's runs, in start order, as attractors. Two runs are one attractor when their sections
+// agree to the tolerance, widened by the distance each may still be from the orbit it contracts
+// onto (0 unless its period was reduced: two runs that approach one slowly converging orbit from
+// different sides are not yet within the tolerance of each other).
 std::vector<Attractor> Deduplicate(std::vector<Run>& runs, double tolerance) {
   std::vector<Attractor> attractors;
+  std::vector<double> settling;  // of each attractor's first run
   for (Run& run : runs) {
     if (!run.done) continue;
     Attractor* same = nullptr;
-    for (Attractor& a : attractors) {
-      const bool match = a.status == run.status &&
-                         (run.status != AttractorStatus::kPeriodic || SameOrbit(a.section, run.section, tolerance));
-      if (match) {
-        same = &a;
-        break;
-      }
+    for (std::size_t a = 0; a < attractors.size() && same == nullptr; ++a) {
+      const double within = tolerance + settling[a] + run.settling;
+      const bool match = attractors[a].status == run.status &&
+                         (run.status != AttractorStatus::kPeriodic || SameOrbit(attractors[a].section, run.section, within));
+      if (match) same = &attractors[a];
     }
     if (same) {
       ++same->starts;
       continue;
     }
+    settling.push_back(run.settling);
     attractors.push_back({run.status, run.period, run.stops_per_period, run.sticks_per_period,
                           std::move(run.signature), 1, std::move(run.section)});
   }

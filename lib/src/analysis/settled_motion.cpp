@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/model/transient.hpp"
@@ -28,6 +30,67 @@ double AmplitudeX2(const SimulationResult& r) {
     amplitude = std::max({amplitude, high, -low});
   }
   return amplitude;
+}
+
+// The smallest p <= n/2 with section[k + p] == section[k] (to tolerance, absolute) for every k; 0 if none.
+int RepeatingPeriod(const std::vector<State>& section, double tolerance) {
+  const int n = static_cast<int>(section.size());
+  for (int candidate = 1; candidate <= n / 2; ++candidate) {
+    bool repeats = true;
+    for (int k = 0; k + candidate < n && repeats; ++k) {
+      repeats = (section[k + candidate] - section[k]).lpNorm<Eigen::Infinity>() <= tolerance;
+    }
+    if (repeats) return candidate;
+  }
+  return 0;
+}
+
+// max |section[k + step] - section[k]|_inf over k = from .. from + count - 1.
+double StepMismatch(const std::vector<State>& section, int step, int from, int count) {
+  double mismatch = 0.0;
+  for (int k = from; k < from + count; ++k) {
+    mismatch = std::max(mismatch, (section[k + step] - section[k]).lpNorm<Eigen::Infinity>());
+  }
+  return mismatch;
+}
+
+// How far a section that repeats after p periods to tolerance may still be from a motion of period
+// d (d divides p) that it contracts onto; nullopt when it shows no such contraction. A motion that
+// contracts slowly onto a period-d orbit whose multiplier is near a (p/d)-th root of unity returns
+// nearer after p periods than after d: the p-step test passes first. Then the p-step differences
+// shrink by a rate q per p periods (measured over the record: the first p of them against the
+// last p), the distance still to go is at most late/(1 - q) (a geometric tail), and the d-step
+// differences, shrinking too, are at most twice that distance. A motion of least period p has
+// d-step differences that neither shrink nor fit that bound.
+std::optional<double> ContractionOntoPeriod(const std::vector<State>& section, int p, int d) {
+  const int n = static_cast<int>(section.size());
+  const int span = n - 2 * p;  // periods between the first and the last window of p-step differences
+  if (span < p) return std::nullopt;
+  const double early = StepMismatch(section, p, 0, p);
+  const double late = StepMismatch(section, p, span, p);
+  if (!(late < early)) return std::nullopt;
+  const double rate = std::pow(late / early, static_cast<double>(p) / span);
+  const double remaining = late / (1.0 - rate);
+  const double d_early = StepMismatch(section, d, 0, p);
+  const double d_late = StepMismatch(section, d, n - p - d, p);
+  if (!(d_late < d_early && d_late <= 2.0 * remaining)) return std::nullopt;
+  return remaining;
+}
+
+struct LeastSectionPeriod {
+  int period = 0;
+  double settling = 0.0;
+};
+
+// The period on the section (RepeatingPeriod), reduced to the least divisor d that the section is
+// contracting onto (ContractionOntoPeriod), with the distance still to go.
+LeastSectionPeriod LeastPeriodOnSection(const std::vector<State>& section, double tolerance) {
+  const int p = RepeatingPeriod(section, tolerance);
+  for (int d = 1; d < p; ++d) {
+    if (p % d != 0) continue;
+    if (const std::optional<double> remaining = ContractionOntoPeriod(section, p, d)) return {d, *remaining};
+  }
+  return {p, 0.0};
 }
 
 }  // namespace
@@ -67,15 +130,9 @@ SettledMotion SimulateSettled(const Parameters& p, const State& start, double ph
   motion.amplitude_x2 = AmplitudeX2(r);
   motion.stops_per_period /= o.recorded_periods;
   motion.sticks_per_period /= o.recorded_periods;
-  const std::vector<State>& section = motion.section;
-  const int n = static_cast<int>(section.size());
-  for (int candidate = 1; candidate <= n / 2 && motion.period == 0; ++candidate) {
-    bool repeats = true;
-    for (int k = 0; k + candidate < n && repeats; ++k) {
-      repeats = (section[k + candidate] - section[k]).lpNorm<Eigen::Infinity>() <= o.periodicity_tolerance;
-    }
-    if (repeats) motion.period = candidate;
-  }
+  const LeastSectionPeriod least = LeastPeriodOnSection(motion.section, o.periodicity_tolerance);
+  motion.period = least.period;
+  motion.settling = least.settling;
   return motion;
 }
 

@@ -9,7 +9,9 @@
 //   - scattered_starts states: `centre` and states drawn around it (ScatteredStarts, as the
 //     sweep's chains start; the same in every cell).
 // The runs that end on the same periodic section orbit (same period, the same section points to
-// periodicity_tolerance under some cyclic shift) are one attractor. A run that does not settle on
+// periodicity_tolerance under some cyclic shift) are one attractor; a run whose period was reduced
+// to the least one it contracts onto (SettledMotion::period) widens that tolerance by the distance
+// it may still be from that orbit (SettledMotion::settling). A run that does not settle on
 // a periodic section (period 0) is kept as a "not-settled" entry (all such runs of a cell are one
 // entry: they cannot be told apart), one whose simulation stopped early as "incomplete"; none is
 // dropped. Periodic attractors carry the signature read off the exact simulator's events over one

@@ -34,7 +34,14 @@ struct SettledMotion {
   std::vector<State> section;
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
-  int period = 0;  // smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none
+  // Smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none. Reduced to
+  // a divisor d of p when the section is contracting onto a period-d motion (a slowly converging
+  // orbit whose multiplier is near a (p/d)-th root of unity returns nearer after p periods than
+  // after d): the d-step differences shrink, and fit within twice the distance the p-step ones
+  // say is still to go.
+  int period = 0;
+  // That distance still to go (absolute, |.|_inf), where the period was reduced; 0 otherwise.
+  double settling = 0.0;
   // max |x2(t)| over the recorded periods, exact as orbits/orbit_measures.hpp's amplitude_x2: over
   // each recorded segment, the extrema of x2 on its closed form (at its ends or at the zeros of x2',
   // found by the root finder that cannot miss one); x2 held in a stick. NaN when the simulation

@@ -1,0 +1,29 @@
+// The same orbit from another origin. An orbit's time origin is a segment end (a stop or a stick
+// exit, where x2' = 0: orbit.hpp), and which one is a choice: FindOrbit takes the paper's
+// preference (orbit_finder.hpp), a trace keeps the origin of its start through every change of
+// type. Two descriptions of one motion then differ by a cyclic rotation of the segments, the state
+// and phase at the new origin, and, for an antisymmetric orbit whose new origin lies in the
+// mirrored half, the mirror image: the listed half then starts with the mirrored modes, at -X, half
+// a period (phase + k pi) later.
+//
+//   for (int j = 0; j < OriginCount(orbit.signature); ++j) compare(WithOriginAt(orbit, j), other);
+#pragma once
+
+#include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/signature.hpp"
+
+namespace stickslip {
+
+// The segment ends of one whole period: the listed segments' count, twice it when antisymmetric.
+int OriginCount(const Signature& signature);
+
+// The signature read from segment end j (0 <= j < OriginCount) of the whole period on.
+Signature WithOriginAt(const Signature& signature, int j);
+
+// The orbit from the start of its segment j of the whole period (the listed segments, then their
+// mirror images when antisymmetric): the state there by the closed-form flows, the phase
+// phi + omega t_j (+ k pi in the mirrored half, reduced to [0, 2 pi)), the durations rotated. Throws
+// std::out_of_range for j outside [0, OriginCount).
+Orbit WithOriginAt(const Orbit& orbit, int j);
+
+}  // namespace stickslip
