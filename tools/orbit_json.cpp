@@ -42,7 +42,8 @@ Json VerificationJson(const Verification& v) {
 Json OrbitVariablesJson(const Orbit& o, const std::vector<int>& free, bool tie_static_friction) {
   Json out{{"signature", o.signature.ToString()}};
   for (ParameterId id : kAllParameters) out["parameters"][ToString(id)] = o.parameters[id];
-  out.update(Json{{"phi", o.phi}, {"x10", o.x10}, {"x20", o.x20}, {"v10", o.v10}});
+  const Eigen::VectorXd variables = orbit_variables::Pack(o);
+  for (int i = 0; i <= orbit_variables::kPhi; ++i) out[orbit_variables::Name(o.signature.size(), i)] = variables(i);
   out["segments"] = Json::array();
   for (int i = 0; i < o.signature.size(); ++i) {
     out["segments"].push_back({{"mode", ToString(o.signature.segments()[i])}, {"duration", o.durations[i]}});

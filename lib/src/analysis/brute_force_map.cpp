@@ -1,13 +1,14 @@
 #include "stickslip/analysis/brute_force_map.hpp"
 
-#include <array>
 #include <bit>
 #include <cmath>
 #include <mutex>
 #include <numbers>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -162,9 +163,9 @@ void BruteForceMapOptions::Validate(const Parameters& base) const {
   CheckWhole("recorded_periods", recorded_periods, 2, kMaxRecordedPeriods);
   CheckWhole("scattered_starts", scattered_starts, 0, kMaxScatteredStarts);
   if (!(scatter >= 0.0 && scatter <= 1e6)) throw InvalidInput("scatter", scatter, "0 <= scatter <= 1e6");
-  constexpr std::array<const char*, 4> kStateNames = {"x10", "x20", "v10", "v20"};
-  for (int i = 0; i < 4; ++i) {
-    if (auto invalid = ValidateStateValue(kStateNames[i], centre(i))) throw *invalid;
+  const std::vector<std::string>& state_names = Pascal2014{}.Description().initial_state;
+  for (int i = 0; i < centre.size(); ++i) {
+    if (auto invalid = ValidateStateValue(state_names[i], centre(i))) throw *invalid;
   }
   if (!(periodicity_tolerance >= kMinTolerance && periodicity_tolerance <= kMaxTolerance)) {
     throw InvalidInput("periodicity_tolerance", periodicity_tolerance,

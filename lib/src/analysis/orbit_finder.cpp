@@ -1,7 +1,6 @@
 #include "stickslip/analysis/orbit_finder.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -61,9 +60,9 @@ double ReducedPhase(double phase) {
 void ValidateInputs(const Parameters& parameters, const State& x0, double phi, const FindOrbitOptions& options) {
   options.Validate();
   if (auto invalid = Validate(parameters)) throw *invalid;
-  constexpr std::array<const char*, 4> kStateNames = {"x10", "x20", "v10", "v20"};
-  for (int i = 0; i < 4; ++i) {
-    if (auto invalid = ValidateStateValue(kStateNames[i], x0(i))) throw *invalid;
+  const std::vector<std::string>& state_names = Pascal2014{}.Description().initial_state;
+  for (int i = 0; i < x0.size(); ++i) {
+    if (auto invalid = ValidateStateValue(state_names[i], x0(i))) throw *invalid;
   }
   if (auto invalid = ValidateStateValue("phi", phi)) throw *invalid;
 }
@@ -279,10 +278,14 @@ FindOrbitResult SolveFromStart(FindOrbitResult result, const FindOrbitOptions& o
 StartInput StartInputOf(const Orbit& orbit) {
   StartInput start;
   start.signature = orbit.signature.ToString();
-  for (ParameterId id : kAllParameters) start.set.emplace_back(ToString(id), orbit.parameters[id]);
-  start.guess = {{"x10", orbit.x10}, {"x20", orbit.x20}, {"v10", orbit.v10}, {"phi", orbit.phi}};
-  for (std::size_t i = 0; i < orbit.durations.size(); ++i) {
-    start.guess.emplace_back(fmt::format("d{}", i + 1), orbit.durations[i]);
+  // The parameters as set, the start state, phase and durations as guesses, in the layout's order.
+  const int n = orbit.signature.size();
+  const Eigen::VectorXd variables = orbit_variables::Pack(orbit);
+  for (int i = orbit_variables::FirstParameter(n); i < variables.size(); ++i) {
+    start.set.emplace_back(orbit_variables::Name(n, i), variables(i));
+  }
+  for (int i = 0; i < orbit_variables::FirstParameter(n); ++i) {
+    start.guess.emplace_back(orbit_variables::Name(n, i), variables(i));
   }
   for (int i = 0; i < orbit.signature.size(); ++i) {
     if (orbit.signature.EndKind(i) == SegmentEndKind::kAbnormalStop) {

@@ -56,7 +56,7 @@ BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const 
   Eigen::VectorXd tangent = Eigen::VectorXd::Zero(ov::Count(n));
   for (std::size_t k = 0; k < free.size(); ++k) tangent(free[k]) = special.tangent(static_cast<int>(k));
   if (setup.unknowns.tie_static_friction) {
-    tangent(ov::Parameter(n, ParameterId::kStaticFriction)) = tangent(ov::Parameter(n, ParameterId::kSlidingFriction));
+    tangent(ov::StaticLevel(n)) = tangent(ov::KineticLevel(n));
   }
   next.start = Unfolded(at, special.type == "PD" ? 2 : 1);
   const int m = next.start.signature.size();

@@ -19,7 +19,7 @@ OrbitContinuationSetup BoundaryCurve(const CurveStart& start, const OrbitContinu
   const int n = start.orbit.signature.size();
   const std::optional<int> second_index = ov::IndexOf(n, second);
   const std::vector<std::string>& released = start.unknowns.release;
-  if (!second_index || *second_index < ov::Parameter(n, ParameterId::kChi) || second == start.parameter ||
+  if (!second_index || *second_index < ov::FirstParameter(n) || second == start.parameter ||
       std::find(released.begin(), released.end(), second) != released.end() ||
       (second == "u_r" && start.unknowns.tie_static_friction)) {
     throw InvalidInput("second", std::string(second),

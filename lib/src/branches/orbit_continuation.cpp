@@ -31,12 +31,13 @@ void KeepInPhysicalRanges(const OrbitContinuationSetup& setup, const std::vector
     options->lambda_min = std::max(options->lambda_min, ranges[k].minimum);
     options->lambda_max = std::min(options->lambda_max, ranges[k].maximum);
   }
-  const int u_s = ov::Parameter(n, ParameterId::kSlidingFriction);
-  const int u_r = ov::Parameter(n, ParameterId::kStaticFriction);
-  const bool held_u_s = std::find(free.begin(), free.end(), u_s) == free.end();
-  const bool held_u_r = std::find(free.begin(), free.end(), u_r) == free.end() && !setup.unknowns.tie_static_friction;
-  if (parameter == u_r && held_u_s) options->lambda_min = std::max(options->lambda_min, setup.start.parameters.u_s);
-  if (parameter == u_s && held_u_r) options->lambda_max = std::min(options->lambda_max, setup.start.parameters.u_r);
+  const int kinetic = ov::KineticLevel(n), static_level = ov::StaticLevel(n);
+  const bool held_kinetic = std::find(free.begin(), free.end(), kinetic) == free.end();
+  const bool held_static =
+      std::find(free.begin(), free.end(), static_level) == free.end() && !setup.unknowns.tie_static_friction;
+  const Eigen::VectorXd start = ov::Pack(setup.start);
+  if (parameter == static_level && held_kinetic) options->lambda_min = std::max(options->lambda_min, start(kinetic));
+  if (parameter == kinetic && held_static) options->lambda_max = std::min(options->lambda_max, start(static_level));
 }
 
 // The condition's equations in the unknowns of the periodicity equations.

@@ -55,8 +55,8 @@ struct BranchColumns {
 BranchColumns ColumnsOf(const StoredRun& run) {
   const int segments = run.branch.front().orbit.signature.size();
   BranchColumns columns;
-  std::vector<std::string> variables = {run.summary.parameter, "x10", "x20", "v10", "phi"};
-  for (int i = 1; i <= segments; ++i) variables.push_back(fmt::format("d{}", i));
+  std::vector<std::string> variables = {run.summary.parameter};  // then the start, phi and the durations
+  for (int i = 0; i < orbit_variables::FirstParameter(segments); ++i) variables.push_back(orbit_variables::Name(segments, i));
   // The reader checked that the parameter is a variable of the orbit.
   for (const std::string& name : variables) columns.variables.push_back(*orbit_variables::IndexOf(segments, name));
   columns.names = {variables.front()};

@@ -217,7 +217,7 @@ void ReadField(const CsvTable& t, int row, int column, bool admissible, double* 
 // state and phase finite, then each duration within the period that omega gives.
 Orbit ParseOrbit(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature, bool admissible) {
   const int n = signature.size();
-  const int first_parameter = ov::Parameter(n, ParameterId::kChi);
+  const int first_parameter = ov::FirstParameter(n);
   Eigen::VectorXd variables = Eigen::VectorXd::Zero(ov::Count(n));
   for (const auto& [column, index] : c.variables) {
     if (index >= first_parameter) {

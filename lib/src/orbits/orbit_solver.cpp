@@ -33,10 +33,10 @@ std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& ch
   for (int i = 0; i < n; ++i) free.push_back(ov::Duration(i));
   for (const std::string& name : choice.release) {
     const int index = VariableIndex(n, "free", name);
-    if (choice.tie_static_friction && index == ov::Parameter(n, ParameterId::kStaticFriction)) {
+    if (choice.tie_static_friction && index == ov::StaticLevel(n)) {
       throw InvalidInput::WithMessage("free", "free = 'u_r' is tied to u_s (u_r = u_s): release u_s instead");
     }
-    if (index < ov::Parameter(n, ParameterId::kChi)) {
+    if (index < ov::FirstParameter(n)) {
       throw InvalidInput::WithMessage("free", fmt::format("free = '{}' is an unknown already: x10, x20, v10, phi and "
                                                           "the durations always are (free releases a parameter)", name));
     }
@@ -61,7 +61,7 @@ int ContinuedVariable(const Signature& signature, const std::vector<int>& free, 
                       std::string_view parameter) {
   const int n = signature.size();
   const int index = VariableIndex(n, "parameter", parameter);
-  if (tie_static_friction && index == ov::Parameter(n, ParameterId::kStaticFriction)) {
+  if (tie_static_friction && index == ov::StaticLevel(n)) {
     throw InvalidInput::WithMessage("parameter", "parameter = 'u_r' is tied to u_s (tie_u_r): continue in u_s");
   }
   if (std::find(free.begin(), free.end(), index) != free.end()) {

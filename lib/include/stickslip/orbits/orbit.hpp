@@ -62,9 +62,14 @@ inline constexpr int kX20 = 1;
 inline constexpr int kV10 = 2;
 inline constexpr int kPhi = 3;
 inline int Duration(int i) { return 4 + i; }  // i = 0..n-1
-inline int Parameter(int n, ParameterId id) { return 4 + n + static_cast<int>(id); }
+inline int FirstParameter(int n) { return 4 + n; }
+inline int Parameter(int n, ParameterId id) { return FirstParameter(n) + static_cast<int>(id); }
+// The kinetic and static friction levels, as the model's interface names them (u_s and u_r).
+inline int KineticLevel(int n) { return FirstParameter(n) + Pascal2014::kKineticLevelParameter; }
+inline int StaticLevel(int n) { return FirstParameter(n) + Pascal2014::kStaticLevelParameter; }
 inline int Count(int n) { return 4 + n + kParameterCount; }
-// "x10", "x20", "v10", "phi", "d1".."dn", "chi", "eta", "omega", "u_s", "u_r".
+// The names of OrbitLayout (orbit_layout.hpp) for the paper's model: x10, x20, v10, phi, d1..dn,
+// chi, eta, omega, u_s, u_r.
 std::string Name(int n, int index);
 std::optional<int> IndexOf(int n, std::string_view name);
 Eigen::VectorXd Pack(const Orbit& orbit);
