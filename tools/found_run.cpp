@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -23,9 +25,27 @@ std::string InlineTable(const NamedValues& values) {
   return "{ " + text + " }";
 }
 
+// A TOML basic string: quotes, backslashes and control characters escaped (a run name may hold
+// any of them).
+std::string Quoted(std::string_view text) {
+  std::string quoted = "\"";
+  for (const char c : text) {
+    const auto code = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      quoted += '\\';
+      quoted += c;
+    } else if (code < 0x20 || code == 0x7f) {
+      quoted += fmt::format("\\u{:04X}", code);
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted + "\"";
+}
+
 std::string StringArray(const std::vector<std::string>& names) {
   std::string text;
-  for (const std::string& name : names) text += fmt::format("{}\"{}\"", text.empty() ? "" : ", ", name);
+  for (const std::string& name : names) text += fmt::format("{}{}", text.empty() ? "" : ", ", Quoted(name));
   return "[" + text + "]";
 }
 
@@ -65,17 +85,17 @@ RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& o
 }
 
 std::string RunFileText(const RunFile& run) {
-  std::string text = fmt::format("{}\noutput = \"{}\"\n", kFoundRunFileMarker, run.output);
-  text += fmt::format("[start]\nsignature = \"{}\"\nset = {}\nguess = {}\n", run.signature, InlineTable(run.set),
+  std::string text = fmt::format("{}\noutput = {}\n", kFoundRunFileMarker, Quoted(run.output));
+  text += fmt::format("[start]\nsignature = {}\nset = {}\nguess = {}\n", Quoted(run.signature), InlineTable(run.set),
                       InlineTable(run.guess));
   text += fmt::format("[unknowns]\nfree = {}\n", StringArray(run.free));
   if (!run.fix.empty()) text += fmt::format("fix = {}\n", StringArray(run.fix));
   text += fmt::format("tie_u_r = {}\n", run.tie_u_r);
-  text += fmt::format("[continuation]                         # edit: the parameter{} and range\nparameter = \"{}\"\n",
-                      run.trace ? "" : ", direction", run.parameter);
+  text += fmt::format("[continuation]                         # edit: the parameter{} and range\nparameter = {}\n",
+                      run.trace ? "" : ", direction", Quoted(run.parameter));
   if (!run.trace) text += fmt::format("direction = \"{}\"\n", run.direction > 0 ? "up" : "down");
   text += fmt::format("range = [{}, {}]\n", ExactNumber(run.range_min), ExactNumber(run.range_max));
-  if (run.trace) text += "[trace]                                # both ways from the start; TraceOptions' defaults\n";
+  if (run.trace) text += "[trace]                                # both ways from the start, with the trace's defaults\n";
   return text;
 }
 

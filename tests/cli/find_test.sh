@@ -49,6 +49,13 @@ for f in trace.csv branch-1/branch.csv branch-2/branch.csv; do
   cmp -s "$work/found/t41/$f" "$work/from-file/t41/$f" || fail "the run file's trace differs in $f"
 done
 
+# A run name with a quote and a backslash is a TOML string the run file escapes: `stickslip run`
+# reads it back and writes that very name (before, the file did not parse).
+name='q"uo\te'
+"$bin" find --preset paper-4.1 --write-run "$work/$name.toml" > /dev/null 2> "$work/q.err" || fail "find --write-run '$name.toml' exits $?"
+"$bin" run --results "$work/quoted" "$work/$name.toml" > /dev/null 2> "$work/q.err" || fail "run of '$name.toml' exits $?: $(cat "$work/q.err")"
+[ -f "$work/quoted/$name/branch.csv" ] || fail "run of '$name.toml' did not write '$name/': $(ls "$work/quoted" 2>&1)"
+
 # find --json: one object that python3 parses, equal to the text output.
 "$bin" find --preset paper-4.1 --json > "$work/found.json" 2> "$work/json.err" || fail "find --json exits $?: $(cat "$work/json.err")"
 "$bin" find --preset paper-4.1 > "$work/found.txt" 2>&1

@@ -62,6 +62,31 @@ TEST_F(AtomicFile, WriterDroppedBeforeCommitLeavesTheTargetAndNoTemporaryFile) {
   EXPECT_EQ(Entries(), 1);
 }
 
+// The temporary's name is predictable (its writer's pid): a link or file planted there is not the
+// writer's to truncate, write through or rename over the target (before, the planted link's target
+// received the file).
+TEST_F(AtomicFile, WriterRefusesALinkPlantedAtItsTemporaryName) {
+  const fs::path target = directory_ / "run.toml";
+  fs::path temporary;
+  {
+    AtomicFileWriter probe(target);  // this process's temporary name, then dropped
+    for (const fs::directory_entry& e : fs::directory_iterator(directory_)) temporary = e.path();
+  }
+  ASSERT_FALSE(temporary.empty());
+  const fs::path precious = directory_ / "precious.txt";
+  std::ofstream(precious) << "mine\n";
+  fs::create_symlink(precious, temporary);
+  try {
+    AtomicFileWriter out(target);
+    FAIL() << "a link at the temporary name was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is in the way"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(Contents(precious), "mine\n");
+  EXPECT_TRUE(fs::is_symlink(temporary));
+  EXPECT_FALSE(fs::exists(target));
+}
+
 TEST_F(AtomicFile, WriterRefusesAMissingDirectory) {
   EXPECT_THROW(AtomicFileWriter(directory_ / "missing" / "x.csv"), std::runtime_error);
   EXPECT_EQ(Entries(), 0);

@@ -169,6 +169,9 @@ def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(k
     (lambda: stickslip.simulate(preset="paper-5.1", set={"omega": "0.57"}),
      "set['omega'] must be a number, got str '0.57'"),
     (lambda: stickslip.solve(preset="paper-5.1", guess={"d1": False}), "guess['d1'] must be a number, got bool False"),
+    # bool('no') is True: tie_u_r = 'no' tied u_r to u_s before the fix (u_r = 0.1, not 0.2996)
+    (lambda: stickslip.solve(preset="paper-4.1", tie_u_r="no"), "tie_u_r must be True or False, got str 'no'"),
+    (lambda: stickslip.solve(preset="paper-4.1", paper_choice=1), "paper_choice must be True or False, got int 1"),
 ])
 def test_a_start_keyword_of_the_wrong_type_raises_type_error_naming_it(call, message):
     with pytest.raises(TypeError) as error:

@@ -20,6 +20,14 @@ def _number(value, field):
     return float(value)
 
 
+def _flag(value, field):
+    """`value` as a bool; TypeError naming `field` for anything else (bool('no') is True, so a str
+    would silently switch the option on)."""
+    if not isinstance(value, bool):
+        raise TypeError(f"{field} must be True or False, got {type(value).__name__} {value!r}")
+    return value
+
+
 def _text(value, field, valid):
     """`value` as the str the core takes, None as ""; TypeError naming `field` for any other type
     (the core's own conversion would raise pybind11's RuntimeError, naming no keyword)."""
@@ -67,7 +75,8 @@ def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, re
         "point": _text(point, "point", "a stored point 'RUN:LABEL'"), "results": str(results),
         "signature": "" if signature is None else str(signature),
         "set": pairs, "guess": _named_values(guess, "guess"), "free": [str(f) for f in (free or [])],
-        "fix": fixes, "tie_u_r": bool(tie_u_r), "paper_choice": bool(paper_choice),
+        "fix": fixes, "tie_u_r": _flag(tie_u_r, "tie_u_r"),
+        "paper_choice": _flag(paper_choice, "paper_choice"),
     }
 
 

@@ -44,7 +44,13 @@ AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& link_or_path) {
                     directory.string()));
   }
   temporary_ = directory / TemporaryName(path_);
-  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  // Exclusive and never through a link: a file planted at the (predictable) temporary name is not
+  // the run's to truncate or to rename over the output.
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd_ < 0 && (errno == EEXIST || errno == ELOOP)) {
+    throw std::runtime_error(fmt::format("cannot write '{}': '{}' is in the way (not this run's: remove it)",
+                                         path_.string(), temporary_.filename().string()));
+  }
   if (fd_ < 0) throw CannotWrite(path_, errno);
 }
 
