@@ -59,8 +59,11 @@ std::string ExactNumber(double x) {
 
 OmegaRange ParseOmegaRange(const char* field, const std::string& text) {
   const std::string valid = fmt::format("LO,HI with {} <= LO < HI <= {} (omega)", kMinOmega, kMaxOmega);
+  // Exactly one comma: with more, the message would name a part ('0.7,0.9' of '0.5,0.7,0.9').
   const auto comma = text.find(',');
-  if (comma == std::string::npos) throw InvalidInput(field, "'" + text + "'", valid);
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    throw InvalidInput(field, "'" + text + "'", valid);
+  }
   const OmegaRange range{ParseNumber(field, text.substr(0, comma), valid), ParseNumber(field, text.substr(comma + 1), valid)};
   if (!(kMinOmega <= range.low && range.low < range.high && range.high <= kMaxOmega)) {
     throw InvalidInput(field, "'" + text + "'", valid);

@@ -146,6 +146,8 @@ expect_rejected chi "missing" --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_
 expect_rejected trace "trace = '0.7,0.5' is invalid: valid range LO,HI with 0.01 <= LO < HI <= 100" "${p[@]}" --trace 0.7,0.5 --output t
 expect_rejected trace "trace = 'nan' is not a finite number: valid range LO,HI" "${p[@]}" --trace nan,0.7 --output t
 expect_rejected trace "trace = '0.5' is invalid: valid range LO,HI" "${p[@]}" --trace 0.5 --output t
+# Not a part of the text (before: trace = '0.7,0.9' is not a finite number).
+expect_rejected trace "trace = '0.5,0.7,0.9' is invalid: valid range LO,HI" "${p[@]}" --trace 0.5,0.7,0.9 --output t
 expect_rejected trace "trace = '0.1,0.2' is invalid: valid range LO,HI that holds the found orbit's omega = 0.6" "${p[@]}" \
   --trace 0.1,0.2 --output t
 expect_rejected output "output is missing: valid a run name, with --trace" "${p[@]}" --trace 0.5,0.7

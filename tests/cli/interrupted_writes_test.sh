@@ -49,7 +49,8 @@ tag=${BASH_REMATCH[1]:-none} dead_pid=${BASH_REMATCH[2]:-0}
 (exit 0) &
 other_dead=$!
 wait $other_dead
-mkdir -p "$r/.tr.tmp.$tag.$other_dead/branch-1" "$r/.tr.tmp.$tag.$$" "$r/.tr.tmp.0123456789abcdef.$dead_pid" "$r/.tr.tmp.99999"
+mkdir -p "$r/.tr.tmp.$tag.$other_dead/branch-1" "$r/.tr.tmp.$tag.$$" "$r/.tr.tmp.0123456789abcdef.$dead_pid" "$r/.tr.tmp.99999" \
+  "$r/.tr.tmp.$tag.4294967296"
 echo mine > "$r/.tr.tmp.$tag.$other_dead/NOTES.md"
 cp "$r/tr/branch-1/branch.csv" "$r/.tr.tmp.$tag.$other_dead/branch-1/"
 echo mine > "$r/.tr.tmp.$tag.$$/notes.txt"
@@ -58,7 +59,7 @@ echo mine > "$r/.tr.notes"
 [ ! -e "$r/$dead" ] && pass || fail "the dead writer's temporary stays"
 [ ! -e "$r/.tr.tmp.$tag.$other_dead/branch-1" ] && pass || fail "the dead writer's own files in a temporary stay"
 for kept in ".tr.tmp.$tag.$other_dead/NOTES.md" ".tr.tmp.$tag.$$/notes.txt" ".tr.tmp.0123456789abcdef.$dead_pid" \
-            ".tr.tmp.99999" ".tr.notes"; do
+            ".tr.tmp.99999" ".tr.tmp.$tag.4294967296" ".tr.notes"; do
   [ -e "$r/$kept" ] && pass || fail "$kept was removed"
 done
 diff -r "$work/before" "$r/tr" > /dev/null && pass || fail "the trace written beside them differs"
@@ -68,9 +69,10 @@ lines=(
   "note: left '$r/.tr.tmp.$tag.$$': its process $$ is running"
   "note: left '$r/.tr.tmp.0123456789abcdef.$dead_pid': written on another host or before this host's last boot"
   "note: left '$r/.tr.tmp.99999': its name does not say its host (an earlier version of stickslip wrote it)"
+  "note: left '$r/.tr.tmp.$tag.4294967296': 4294967296 is no process id of this system: no stickslip process wrote it"
 )
 for line in "${lines[@]}"; do
   grep -qxF "$line" "$work/stale.err" && pass || fail "stderr lacks [$line]: $(cat "$work/stale.err")"
 done
-[ "$(wc -l < "$work/stale.err")" -eq 5 ] && pass || fail "not one line per temporary: $(cat "$work/stale.err")"
+[ "$(wc -l < "$work/stale.err")" -eq 6 ] && pass || fail "not one line per temporary: $(cat "$work/stale.err")"
 finish

@@ -142,6 +142,17 @@ class PlotHostile(unittest.TestCase):
         with self.assertRaisesRegex(sp.BadInput, "a file in an existing directory"):
             sp.check_replaceable(os.path.join(self.work, "missing", "figure.png"), force=True)
 
+    def main_with_stderr(self, sp):
+        """The plotting module's main on RUN to self.output: its exit status and what it wrote to stderr."""
+        stderr = tempfile.TemporaryFile(mode="w+")
+        saved, sys.stderr = sys.stderr, stderr
+        try:
+            status = sp.main(["stickslip_plot.py", "--output", self.output, "--", RUN])
+        finally:
+            sys.stderr = saved
+        stderr.seek(0)
+        return status, stderr.read()
+
     def test_failed_drawing_is_one_line(self):
         # Whatever matplotlib raises while drawing or writing: exit 1, one line, no traceback.
         import stickslip_plot as sp
@@ -151,14 +162,7 @@ class PlotHostile(unittest.TestCase):
             raise OverflowError("cannot convert float infinity to integer")
         sp.save = failing
         try:
-            stderr = tempfile.TemporaryFile(mode="w+")
-            saved, sys.stderr = sys.stderr, stderr
-            try:
-                status = sp.main(["stickslip_plot.py", "--output", self.output, "--", RUN])
-            finally:
-                sys.stderr = saved
-            stderr.seek(0)
-            text = stderr.read()
+            status, text = self.main_with_stderr(sp)
         finally:
             sp.save = original
         self.assertEqual(status, 1)
@@ -182,14 +186,7 @@ class PlotHostile(unittest.TestCase):
             raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), name)
         matplotlib.figure.Figure.savefig = full
         try:
-            stderr = tempfile.TemporaryFile(mode="w+")
-            saved, sys.stderr = sys.stderr, stderr
-            try:
-                status = sp.main(["stickslip_plot.py", "--output", self.output, "--", RUN])
-            finally:
-                sys.stderr = saved
-            stderr.seek(0)
-            text = stderr.read()
+            status, text = self.main_with_stderr(sp)
         finally:
             matplotlib.figure.Figure.savefig = original
         self.assertEqual(status, 2)

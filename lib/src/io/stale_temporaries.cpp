@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <limits>
 #include <optional>
 #include <system_error>
 #include <vector>
@@ -22,6 +23,10 @@ std::optional<std::string> WhyAlive(const TemporaryWriter& writer) {
   if (writer.tag.empty()) return "its name does not say its host (an earlier version of stickslip wrote it)";
   if (writer.tag != ThisHostTag()) return "written on another host or before this host's last boot";
   if (!HasBootId()) return "this system has no boot id to tell a reused process id";
+  // kill() takes a pid_t: 4294967296 would ask about process 0 (this process group).
+  if (writer.pid <= 0 || writer.pid > std::numeric_limits<pid_t>::max()) {
+    return fmt::format("{} is no process id of this system: no stickslip process wrote it", writer.pid);
+  }
   if (::kill(static_cast<pid_t>(writer.pid), 0) == 0 || errno != ESRCH) {
     return fmt::format("its process {} is running", writer.pid);
   }
