@@ -50,12 +50,6 @@ void FindOrbitOptions::Validate() const {
 
 namespace {
 
-double ReducedPhase(double phase) {
-  double reduced = std::fmod(phase, 2.0 * std::numbers::pi);
-  if (reduced < 0.0) reduced += 2.0 * std::numbers::pi;
-  return reduced;
-}
-
 // Throws InvalidInput for options out of range, invalid parameters or a start outside kStateRange.
 void ValidateInputs(const Parameters& parameters, const State& x0, double phi, const FindOrbitOptions& options) {
   options.Validate();
@@ -225,7 +219,7 @@ Orbit ReadOffOrbit(const SimulationResult& record, const MotionType& events, con
                    double phi) {
   const Event& origin = record.events[events.origin];
   Orbit orbit{*events.signature, parameters, origin.state(0), origin.state(1), origin.state(2),
-              ReducedPhase(parameters.omega * origin.t + phi), {}};
+              PhaseInCycle(parameters.omega * origin.t + phi), {}};
   for (int j = events.origin; j < events.origin + events.segments; ++j) {
     orbit.durations.push_back(record.events[j + 1].t - record.events[j].t);
   }
@@ -287,12 +281,9 @@ StartInput StartInputOf(const Orbit& orbit) {
   for (int i = 0; i < orbit_variables::FirstParameter(n); ++i) {
     start.guess.emplace_back(orbit_variables::Name(n, i), variables(i));
   }
-  for (int i = 0; i < orbit.signature.size(); ++i) {
-    if (orbit.signature.EndKind(i) == SegmentEndKind::kAbnormalStop) {
-      start.free = {"u_s"};
-      start.tie_u_r = true;
-    }
-  }
+  const UnknownChoice unknowns = UnknownsAtFixedParameters(orbit.signature);
+  start.free = unknowns.release;
+  start.tie_u_r = unknowns.tie_static_friction;
   return start;
 }
 

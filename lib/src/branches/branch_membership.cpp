@@ -83,15 +83,6 @@ bool OtherParametersAgree(const Parameters& a, const Parameters& b, ParameterId 
   return true;
 }
 
-// The unknowns the orbit's equations are square in at fixed parameters (StartInputOf's rule): the
-// state, phase and durations, and with an abnormal stop u_s released and u_r tied to it (eq. 25).
-UnknownChoice UnknownsAtFixedParameters(const Signature& signature) {
-  for (int i = 0; i < signature.size(); ++i) {
-    if (signature.EndKind(i) == SegmentEndKind::kAbnormalStop) return {{"u_s"}, {}, true};
-  }
-  return {};
-}
-
 // The branch's orbit at `orbit`'s parameters: Newton from the points i and i + 1 interpolated at the
 // parameter value, or where Newton does not converge (at a fold, singular at a fixed parameter) the
 // interpolation itself.

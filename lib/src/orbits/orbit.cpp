@@ -1,5 +1,6 @@
 #include "stickslip/orbits/orbit.hpp"
 
+#include <cmath>
 #include <numbers>
 
 #include "stickslip/orbits/orbit_layout.hpp"
@@ -36,6 +37,12 @@ std::vector<State> Orbit::Sample(int count) const {
     }
   });
   return samples;
+}
+
+double PhaseInCycle(double phase) {
+  double reduced = std::fmod(phase, 2.0 * std::numbers::pi);
+  if (reduced < 0.0) reduced += 2.0 * std::numbers::pi;
+  return reduced;
 }
 
 namespace orbit_variables {

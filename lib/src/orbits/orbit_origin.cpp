@@ -1,6 +1,5 @@
 #include "stickslip/orbits/orbit_origin.hpp"
 
-#include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -49,8 +48,7 @@ Orbit WithOriginAt(const Orbit& orbit, int j) {
   rotated.x20 = sign * start(1);
   rotated.v10 = sign * start(2);
   const double phase = orbit.phi + orbit.parameters.omega * t + (mirrored ? std::numbers::pi : 0.0);
-  rotated.phi = std::fmod(phase, 2.0 * std::numbers::pi);
-  if (rotated.phi < 0.0) rotated.phi += 2.0 * std::numbers::pi;
+  rotated.phi = PhaseInCycle(phase);
   for (int i = 0; i < n; ++i) rotated.durations[i] = orbit.durations[(listed + i) % n];
   return rotated;
 }

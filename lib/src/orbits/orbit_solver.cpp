@@ -27,6 +27,16 @@ int VariableIndex(int n, std::string_view field, std::string_view name) {
                                                                   name, fmt::join(names, ", ")));
 }
 
+UnknownChoice UnknownsAtFixedParameters(const Signature& signature) {
+  for (int i = 0; i < signature.size(); ++i) {
+    if (signature.EndKind(i) == SegmentEndKind::kAbnormalStop) {
+      const int n = signature.size();
+      return {{ov::Name(n, ov::KineticLevel(n))}, {}, true};
+    }
+  }
+  return {};
+}
+
 std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice) {
   const int n = signature.size();
   std::vector<int> free = {ov::kX10, ov::kX20, ov::kV10, ov::kPhi};

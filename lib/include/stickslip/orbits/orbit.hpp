@@ -55,6 +55,9 @@ struct Orbit {
   std::vector<State> Sample(int count) const;
 };
 
+// A forcing phase reduced to [0, 2 pi).
+double PhaseInCycle(double phase);
+
 // Index arithmetic on the full variable vector of an n-segment signature.
 namespace orbit_variables {
 inline constexpr int kX10 = 0;

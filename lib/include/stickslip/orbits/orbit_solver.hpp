@@ -28,6 +28,11 @@ struct UnknownChoice {
 // "<field> = '<name>' is not a variable: valid x10, x20, ..." naming the caller's field.
 int VariableIndex(int n, std::string_view field, std::string_view name);
 
+// The unknowns an orbit's equations are square in at fixed parameters: the start state, the phase
+// and the durations; with an abnormal stop the kinetic level released and the static level tied to
+// it (u_s free, u_r = u_s: eq. 25).
+UnknownChoice UnknownsAtFixedParameters(const Signature& signature);
+
 // The free variable indices of a choice for a signature. Throws InvalidInput naming "free" or
 // "fix" for a name that is not a variable (or u_r released while tied to u_s), and "unknowns",
 // with both counts, when the system would not be square.
