@@ -43,7 +43,8 @@ Json OrbitVariablesJson(const Orbit& o, const std::vector<int>& free, bool tie_s
   Json out{{"signature", o.signature.ToString()}};
   for (ParameterId id : kAllParameters) out["parameters"][ToString(id)] = o.parameters[id];
   const Eigen::VectorXd variables = orbit_variables::Pack(o);
-  for (int i = 0; i <= orbit_variables::kPhi; ++i) out[orbit_variables::Name(o.signature.size(), i)] = variables(i);
+  out["phi"] = o.phi;  // first, as the keys have always come: phi, then the start state
+  for (int i = 0; i < orbit_variables::kPhi; ++i) out[orbit_variables::Name(o.signature.size(), i)] = variables(i);
   out["segments"] = Json::array();
   for (int i = 0; i < o.signature.size(); ++i) {
     out["segments"].push_back({{"mode", ToString(o.signature.segments()[i])}, {"duration", o.durations[i]}});
