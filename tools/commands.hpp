@@ -25,6 +25,7 @@ Command AddExportCommand(CLI::App& app);
 Command AddFindCommand(CLI::App& app);
 Command AddPlotCommand(CLI::App& app);
 Command AddTraceCommand(CLI::App& app);
+Command AddAtlasCommand(CLI::App& app);
 Command AddMapCommand(CLI::App& app);
 // map_sweep_command.hpp: Command AddMapSweepCommand(CLI::App& app, ...).
 

@@ -105,6 +105,7 @@ std::string DefaultOutput(const fs::path& input) {
   if (fs::is_regular_file(input)) return input.stem().string() + ".png";
   if (IsTraceDirectory(input)) return name + "-frequency-response.png";
   if (fs::is_regular_file(input / "regions.json")) return name + "-map.png";
+  if (fs::is_regular_file(input / "atlas.json")) return name + "-atlas.png";
   return name + "-bifurcation.png";
 }
 
@@ -116,7 +117,7 @@ int RunPlot(const PlotArgs& args) {
     // draws its directory, so its directory is what is read and checked, column by column, here.
     if (const std::string file = path.filename().string();
         (file == "branch.csv" || file == "special-points.csv" || file == "summary.json" || file == "trace.csv" ||
-         file == "trace.json") &&
+         file == "trace.json" || file == "atlas.json") &&
         fs::is_regular_file(path)) {
       path = path.has_parent_path() ? path.parent_path() : fs::path(".");
     }
@@ -134,8 +135,9 @@ int RunPlot(const PlotArgs& args) {
         ReadBruteForceMapCsv(text.str(), path.string());
       }
     }
-    // A missing or damaged run or trace is bad input, before any work (sweeps and orbit-type maps: the script).
-    if (!fs::is_regular_file(path) && !fs::is_regular_file(path / "regions.json")) {
+    // A missing or damaged run or trace is bad input, before any work (sweeps, orbit-type maps and
+    // atlases: the script).
+    if (!fs::is_regular_file(path) && !fs::is_regular_file(path / "regions.json") && !fs::is_regular_file(path / "atlas.json")) {
       if (IsTraceDirectory(path)) {
         ReadTraceFiles(path);
       } else {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
-# the orbit-type maps into results/maps/, and regenerates the tables (results/paper-table.md,
+# the orbit-type maps into results/maps/, the atlases into results/atlases/, and regenerates the
+# tables (results/paper-table.md, results/atlases/atlases.md,
 # results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures, and writes
 # results/README.md from its text in tools/results_readme.md with those tables spliced in (each table's
 # script runs tools/splice_readme.py; README.md itself holds no generated table).
@@ -51,6 +52,15 @@ mkdir -p results/maps
 for m in paper-5.1-omega-u_r paper-6-omega-u_r; do
   "$bin" plot results/maps/$m results/maps/$m-brute-force.csv --output results/figures/$m-map.png
 done
+# Atlases: every periodic motion over a range of omega (stickslip atlas), and their frequency responses.
+mkdir -p results/atlases
+"$bin" atlas --preset paper-4.1 --range 0.3,0.95 --steps 65 --results results/atlases --output paper-4.1-omega
+"$bin" atlas --preset paper-5.1 --range 0.4,0.8 --steps 40 --results results/atlases --output paper-5.1-omega
+"$bin" atlas --preset paper-6 --range 0.4,0.75 --steps 35 --results results/atlases --output paper-6-omega
+for a in paper-4.1-omega paper-5.1-omega paper-6-omega; do
+  "$bin" plot results/atlases/$a --yscale log --output results/figures/$a-atlas.png
+done
+/usr/bin/python3 tools/atlas_summary.py results
 /usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results

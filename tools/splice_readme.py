@@ -17,6 +17,7 @@ TABLES = {
     "runs": ("runs.md", "tools/summarize_runs.py"),
     "trace-intervals": ("trace-intervals.md", "tools/trace_intervals.py"),
     "orbit-type-maps": ("maps/maps.md", "tools/map_summary.py"),
+    "atlases": ("atlases/atlases.md", "tools/atlas_summary.py"),
     "paper-table": ("paper-table.md", "tools/paper_table.sh"),
     "benchmark": ("benchmark.md", "tools/benchmark.sh"),
 }

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   // A flag takes no value: CLI11 otherwise reads --allow-inadmissible=2 or =1e300 as true and =-1 as
   // false (a count), where bad input is wanted. Every subcommand copies this default.
   app.option_defaults()->disable_flag_override();
-  const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddCheckCommand(app),
+  const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddAtlasCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app), AddMapCommand(app),
                                          AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
   try {

@@ -12,6 +12,10 @@ Results it reads (by the files the command line writes):
   sweep             a brute-force sweep's CSV (stickslip sweep --output)
   map-sweep         a brute-force map's CSV (stickslip map-sweep --output)
   orbit-type map    an orbit-type map's directory (stickslip map: regions.json, curves.csv)
+  atlas             an atlas's directory (stickslip atlas: atlas.json, trace-<t>/): its frequency
+                    response, every branch of every trace coloured by orbit type, the exact orbits
+                    of the brute force's attractors overlaid, and below it a strip of the stable
+                    motions that coexist at each grid value
 
 Several results are drawn on one set of axes (an overlay): branches, curves, traces and sweeps
 over the same x quantity; an orbit-type map and/or a brute-force map with two-parameter curves
@@ -66,10 +70,12 @@ LIMIT_RANGE = (1e-300, 1e300)
 LIMIT_RESOLUTION = 1e-12
 # Inches (width, height) by what is drawn: the legend stands beside the axes.
 DEFAULT_SIZES = {"response": (9.0, 5.0), "map-sweep": (11.0, 4.6), "orbit-type-map": (9.4, 5.6),
-                 "orbit-type-map+map-sweep": (15.5, 5.6), "diagram": (11.5, 6.0)}
+                 "orbit-type-map+map-sweep": (15.5, 5.6), "diagram": (11.5, 6.0),
+                 "atlas": (10.0, 6.6)}
 INADMISSIBLE = dict(color="0.65", lw=0.9)
 # One colour per orbit type, in the order met (red is kept for the markers).
-COLOURS = ["C0", "C2", "C1", "C4", "C9", "C5", "C6", "C8", "C7"]
+COLOURS = ["C0", "C2", "C1", "C4", "C9", "C5", "C6", "C8", "C7",
+           "#aec7e8", "#98df8a", "#ffbb78", "#c5b0d5", "#9edae5", "#c49c94", "#f7b6d2", "#dbdb8d", "black"]
 # Marker and colour by kind of special point: smooth bifurcations, the codimension-two points of
 # a curve in two parameters, user values, ends, and the nonsmooth orbit-type changes (SK, GR, T0,
 # S0, NS, ...: every other code; NS is x2' touching zero in a slip, lib/README.md, not a torus).
@@ -248,6 +254,21 @@ class OrbitTypeMap(Result):
         return [self.first, self.second]
 
 
+class Atlas(Result):
+    """An atlas (atlas.json and its traces, trace-<t>/): `traces` [Trace] in file order."""
+    kind = "atlas"
+
+    def __init__(self, name, atlas, traces):
+        self.name, self.atlas, self.traces = name, atlas, traces
+        self.parameter = atlas["parameter"]
+
+    def columns(self):
+        seen = {}
+        for t in self.traces:
+            seen.update(dict.fromkeys(t.columns()))
+        return list(seen)
+
+
 def _rows(text):
     return list(csv.DictReader(io.StringIO(text)))
 
@@ -274,6 +295,12 @@ def _read_trace(directory):
             if bifurcation.get("followed"):
                 followed.append((entry, bifurcation, _read_branch(os.path.join(directory, bifurcation["followed"]))))
     return Trace(os.path.basename(os.path.normpath(directory)), trace, branches, followed)
+
+
+def _read_atlas(directory):
+    atlas = json.loads(_read(os.path.join(directory, "atlas.json")))
+    traces = [_read_trace(os.path.join(directory, t["name"])) for t in atlas["traces"]]
+    return Atlas(os.path.basename(os.path.normpath(directory)), atlas, traces)
 
 
 def _read_curves(path):
@@ -358,14 +385,17 @@ def csv_result(name, text, shown=None):
 def load(path):
     """The result stored at `path`: a run's, trace's or orbit-type map's directory (or one of its
     files), a sweep's or map-sweep's CSV. Raises BadInput for anything else."""
-    valid = ("a run, trace or orbit-type map directory (summary.json, trace.json, regions.json) "
+    valid = ("a run, trace, atlas or orbit-type map directory (summary.json, trace.json, atlas.json, regions.json) "
              "or a sweep or map-sweep CSV")
     path = os.fspath(path)
     if os.path.isfile(path) and os.path.basename(path) in ("branch.csv", "special-points.csv", "summary.json",
-                                                           "trace.csv", "trace.json", "regions.json", "curves.csv"):
+                                                           "trace.csv", "trace.json", "regions.json", "curves.csv",
+                                                           "atlas.json"):
         path = os.path.dirname(os.path.abspath(path))
     try:
         if os.path.isdir(path):
+            if os.path.isfile(os.path.join(path, "atlas.json")):
+                return _read_atlas(path)
             if os.path.isfile(os.path.join(path, "trace.json")):
                 return _read_trace(path)
             if os.path.isfile(os.path.join(path, "summary.json")):
@@ -659,7 +689,7 @@ class Canvas:
         return handles + list(self.markers.values()) + self.extra
 
 
-def draw_branch(canvas, branch, x, y, *, label_by="label", stable=None, skip=(), colour=None):
+def draw_branch(canvas, branch, x, y, *, label_by="label", stable=None, skip=(), colour=None, label_changes=True):
     """A branch's curve on canvas.ax: y over x, stable solid, unstable dashed, stretches that are
     no motion (admissible 0) thin grey; its special points marked by kind and queued for
     labelling (by their label, "LP4", or with label_by="type" their code)."""
@@ -688,10 +718,12 @@ def draw_branch(canvas, branch, x, y, *, label_by="label", stable=None, skip=(),
         text = row["label"] if label_by == "label" else kind
         if kind == "EP":
             continue
+        if not label_changes and kind not in MARKERS:
+            text = ""  # marked, not labelled: an atlas's many changes of type would bury its bifurcations
         canvas.mark(text, px, py, *MARKERS.get(kind, TYPE_CHANGE_MARKER), 6, legend_entry(kind))
 
 
-def draw_trace(canvas, trace, x, y):
+def draw_trace(canvas, trace, x, y, label_changes=True):
     """Every branch of the trace and every branch followed at a bifurcation: each orbit type in its
     own colour, the trace's start (a white circle), every switch to the adjacent type (a star),
     every change of type that did not switch and every smooth bifurcation marked and labelled by
@@ -706,7 +738,7 @@ def draw_trace(canvas, trace, x, y):
         if x not in branch.rows[0] or y not in branch.rows[0]:
             continue
         switch = [r for r in branch.special if r["test_function"] == switched_at.get(entry["name"])][-1:]
-        draw_branch(canvas, branch, x, y, label_by="type", skip=switch)
+        draw_branch(canvas, branch, x, y, label_by="type", skip=switch, label_changes=label_changes)
         for row in switch:
             canvas.mark(row["type"], _number(row[x]), _number(row[y]), *SWITCH_MARKER, 12,
                         "switch to the adjacent type")
@@ -715,7 +747,7 @@ def draw_trace(canvas, trace, x, y):
                         "the trace's start")
     for entry, bifurcation, branch in trace.followed:
         if x in branch.rows[0] and y in branch.rows[0]:
-            draw_branch(canvas, branch, x, y, label_by="type")
+            draw_branch(canvas, branch, x, y, label_by="type", label_changes=label_changes)
 
 
 def draw_sweep(canvas, sweep, x, y):
@@ -896,6 +928,10 @@ def _typeset(fig):
 
 def _layout(results):
     kinds = [r.kind for r in results]
+    if "atlas" in kinds:
+        if len(results) > 1:
+            raise BadInput("inputs", ", ".join(f"'{r.name}' ({r.kind})" for r in results), "an atlas alone")
+        return "atlas"
     maps = [r for r in results if r.kind in ("orbit-type-map", "map-sweep")]
     if not maps:
         return "response"
@@ -929,6 +965,8 @@ def figure(results, options=None, **keywords):
         with plt.rc_context({"font.size": pt(10)}):
             if layout == "plane":
                 return _plane_figure(results, options, plt)
+            if layout == "atlas":
+                return _atlas_figure(results[0], options, plt)
             return _response_figure(results, options, plt)
     finally:
         _FONT_SCALE[0] = 1.0
@@ -998,9 +1036,84 @@ def _response_figure(results, options, plt):
     return fig
 
 
+def draw_atlas_attractors(canvas, atlas, x, y):
+    """The exact orbits found from the brute force's attractors (atlas.json records their
+    amplitudes), where x is the atlas's parameter and y an amplitude: black crosses."""
+    from matplotlib.lines import Line2D
+    key = {"amplitude:x1": "amplitude_x1", "amplitude:x2": "amplitude_x2"}.get(y)
+    if x != atlas.parameter or key is None:
+        return
+    points = [(g["value"], a[key]) for g in atlas.atlas["grid"] for a in g["attractors"]
+              if a["fate"] == "on-branch" and a.get(key) is not None]
+    if points:
+        xs, ys = zip(*points)
+        canvas.ax.plot(xs, ys, "x", color="black", ms=4.5, mew=0.9, zorder=4)
+        canvas.extra.append(Line2D([], [], ls="", marker="x", color="black", ms=4.5, mew=0.9,
+                                   label="brute force (its attractors' exact orbits)"))
+
+
+def draw_coexistence(strip, atlas, colour):
+    """Below the response: at each grid value, the orbit types of the stable motions the brute
+    force found there (the attractors that lie on a branch), one row per type, in its colour."""
+    signature_of = {}
+    for t in atlas.traces:
+        for entry, _ in t.branches:
+            signature_of[f"{t.name}/{entry['name']}"] = entry["signature"]
+    rows = {}
+    for g in atlas.atlas["grid"]:
+        for place in g["stable_on"]:
+            rows.setdefault(signature_of.get(place, "?"), set()).add(g["value"])
+    for k, (signature, values) in enumerate(rows.items()):
+        strip.plot(sorted(values), [k] * len(values), "s", color=colour(signature), ms=4, mec="none")
+    strip.set_ylim(-0.8, max(len(rows), 1) - 0.2)
+    strip.set_yticks([])
+    strip.set_ylabel("stable\nmotions", fontsize=pt(8))
+    strip.grid(alpha=0.3, axis="x")
+
+
+def _atlas_title(atlas):
+    c = atlas.atlas["counts"]
+    others = c["attractors"] - c["on_branches"]
+    return (f"Atlas over {symbol(atlas.parameter)}{_named(atlas)}: {c['on_branches']} attractors on {c['branches']} branches "
+            f"of {len(c['orbit_types'])} orbit types, traced from {c['traces']} starts\n"
+            f"{others} other attractors listed in atlas.json (permanent sticks, unsettled motions, longer periods)")
+
+
+def _atlas_figure(atlas, options, plt):
+    x = options.x or atlas.parameter
+    y = options.y or "amplitude:x2"
+    _check_quantity(options, "x", x, [atlas])
+    _check_quantity(options, "y", y, [atlas])
+    _check_drawable(options, x, y, [atlas])
+    fig, (ax, strip) = plt.subplots(2, 1, figsize=options.size or DEFAULT_SIZES["atlas"], dpi=100, sharex=True,
+                                    gridspec_kw={"height_ratios": [4.2, 1.0]})
+    canvas = Canvas(ax)
+    for trace in atlas.traces:
+        draw_trace(canvas, trace, x, y, label_changes=False)
+    draw_atlas_attractors(canvas, atlas, x, y)
+    if x == atlas.parameter:
+        draw_coexistence(strip, atlas, canvas.colour)
+    ax.set_xscale(options.xscale)
+    ax.set_yscale(options.yscale)
+    if options.xlim:
+        ax.set_xlim(options.xlim)
+    if options.ylim:
+        ax.set_ylim(options.ylim)
+    strip.set_xlabel(quantity_label(x))
+    ax.set_ylabel(quantity_label(y))
+    ax.grid(alpha=0.3, which="major")
+    pairs = {(float(row["chi"]), float(row["eta"])) for b in _branches(atlas) for row in b.rows if "chi" in row}
+    if options.natural_frequencies and pairs and len(pairs) <= 2 and "omega" in (x, y):
+        mark_natural_frequencies(canvas, pairs, "x" if x == "omega" else "y")
+    _finish(fig, [(strip, Canvas(strip)), (ax, canvas)], options, _atlas_title(atlas))
+    return fig
+
+
 def _branches(result):
     if result.kind in ("branch", "curve"):
         return [result]
+    if result.kind == "atlas":
+        return [b for t in result.traces for b in _branches(t)]
     if result.kind == "trace":
         return [b for _, b in result.branches] + [b for _, _, b in result.followed]
     return []

@@ -11,6 +11,7 @@
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/orbit_origin.hpp"
+#include "stickslip/orbits/signature_edits.hpp"
 
 namespace stickslip {
 
@@ -36,9 +37,11 @@ std::vector<const OrbitBranch*> BranchesOf(const TraceResult& trace) {
 
 namespace {
 
-// The orbit at its least period when it reduces, else as given.
+// The orbit at its least period when it reduces, else as given; an antisymmetric one over its whole
+// period (FindOrbit writes a motion whose half-period symmetry it could not confirm to its
+// tolerance as a plain orbit: the same motion).
 Orbit LeastPeriodOf(const Orbit& orbit, const LeastPeriodOptions& options) {
-  return ReduceToLeastPeriod(orbit, options).orbit;
+  return Unfolded(ReduceToLeastPeriod(orbit, options).orbit, 1);
 }
 
 // How far `a` is from `b` as the tolerance measures it: the start states relative to b's, the
@@ -141,7 +144,8 @@ BranchMembership FindOnBranches(const Orbit& orbit, const std::vector<const Orbi
   for (int b = 0; b < static_cast<int>(branches.size()); ++b) {
     const OrbitBranch& branch = *branches[b];
     if (branch.orbits.empty()) continue;
-    const Signature branch_type = LeastPeriodSignature(branch.orbits.front().signature).least;
+    // Of its orbit, not its signature alone: a signature may repeat a shorter one whose orbit does not.
+    const Signature branch_type = LeastPeriodOf(branch.orbits.front(), options.least_period).signature;
     if (!SameTypeUpToOrigin(least.signature, branch_type)) continue;
     const PassageMatch match = NearestPassage(least, branch, parameter, options);
     membership.distance = std::min(membership.distance, match.distance);

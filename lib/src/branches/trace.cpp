@@ -10,12 +10,25 @@
 
 #include "stickslip/branches/bifurcation_branches.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/least_period.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 
 namespace stickslip {
 
 namespace {
+
+// A switch's start whose signature repeats a shorter one and whose orbit is that shorter one
+// written several times (a period-1 orbit listed over three periods, where a stick of a period-3
+// orbit vanishes onto the period-1 family) is continued at its least period: one motion, one
+// branch type.
+OrbitContinuationSetup AtLeastPeriod(OrbitContinuationSetup setup) {
+  const LeastPeriodOrbit reduced = ReduceToLeastPeriod(setup.start);
+  if (reduced.status != LeastPeriodStatus::kReduced) return setup;
+  setup.start = reduced.orbit;
+  setup.unknowns = UnknownsAtFixedParameters(reduced.orbit.signature);
+  return setup;
+}
 
 namespace ov = orbit_variables;
 
@@ -340,6 +353,7 @@ class Tracer {
         next.setup.start = sw.BranchStart();
         next.setup.unknowns = sw.unknowns;
         next.setup.options.direction = sw.direction;
+        next.setup = AtLeastPeriod(std::move(next.setup));
         // User values address the unknowns of the start's signature.
         if (next.setup.start.signature.ToString() != start_.start.signature.ToString()) {
           next.setup.options.user_values.clear();

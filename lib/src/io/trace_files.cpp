@@ -10,6 +10,7 @@
 
 #include "csv_table.hpp"
 #include "result_directory.hpp"
+#include "trace_directory.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
@@ -412,24 +413,32 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
   CheckOutputDirectory(results_root, output);
 }
 
-std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
+namespace detail {
+
+OwnedEntry TraceEntries() {
+  // The files a trace writes (its branches branch-<k>, its followed runs branch-<k>-<label>, and
+  // their run files); every other entry, at any depth, is the user's ("branch-notes.md", an export
+  // in branch-2/, a continuation written into branch-1/).
+  return EntriesWithRuns(
+      [](std::string_view name) { return name == kTraceCsv || name == kTraceJson || IsRunFileName(name); }, kBranchPrefix,
+      true);
+}
+
+void WriteTraceInto(const fs::path& directory, const StoredTrace& trace) {
   const TraceFiles files = FormatTraceFiles(trace);
+  for (const StoredRun& run : trace.runs) WriteRunFiles(directory, run);
+  for (const StoredRun& run : trace.followed_runs) WriteRunFiles(directory, run);
+  WriteFileAtomically(directory / kTraceCsv, files.trace_csv);
+  WriteFileAtomically(directory / kTraceJson, files.trace_json);
+}
+
+}  // namespace detail
+
+std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const StoredTrace& trace) {
   CheckTraceOutputDirectory(results_root, trace.output);
-  // The files a trace or a run writes (its branches branch-<k>, its followed runs branch-<k>-<label>,
-  // and their run files); every other entry of the old directory, at any depth, is the user's
-  // ("branch-notes.md", an export in branch-2/, a continuation written into branch-1/).
-  const detail::OwnedEntry ours = detail::EntriesWithRuns(
-      [](std::string_view name) { return name == kTraceCsv || name == kTraceJson || detail::IsRunFileName(name); },
-      kBranchPrefix, true);
   return detail::ReplaceDirectory(
-      results_root, trace.output,
-      [&](const fs::path& directory) {
-        for (const StoredRun& run : trace.runs) WriteRunFiles(directory, run);
-        for (const StoredRun& run : trace.followed_runs) WriteRunFiles(directory, run);
-        WriteFileAtomically(directory / kTraceCsv, files.trace_csv);
-        WriteFileAtomically(directory / kTraceJson, files.trace_json);
-      },
-      ours);
+      results_root, trace.output, [&](const fs::path& directory) { detail::WriteTraceInto(directory, trace); },
+      detail::TraceEntries());
 }
 
 StoredTrace ReadTraceFiles(const fs::path& trace_directory) {

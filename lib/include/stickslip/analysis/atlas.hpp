@@ -1,0 +1,116 @@
+// The atlas: every periodic motion over a range of one parameter, in three stages that compose
+// what exists (and change none of it):
+//   1. brute force (analysis/brute_force_map.hpp, one row): at every grid value of the parameter,
+//      the attractors simulation finds from rest, from the neighbouring value's final state and
+//      from scattered starts, each reduced to its least period;
+//   2. exact orbits: FindOrbit (analysis/orbit_finder.hpp) from every attractor, periodic or not
+//      yet settled, up to the period limit `max_multiple`. Its transient starts short (the motion
+//      is there, or close) and doubles while the section does not repeat: the brute force's fixed
+//      transient leaves slowly contracting motions unsettled, FindOrbit's rounds settle them;
+//   3. traces (branches/trace.hpp) over the whole range, both ways, from each exact orbit that lies
+//      on no branch traced so far (branches/branch_membership.hpp decides, on the exact orbit,
+//      not on the simulated state, which a slowly contracting motion has not yet reached).
+// Every attractor ends accounted for: on a branch (which, and the point), or unexplained with the
+// reason (not settled, a period above the limit, FindOrbit's status and message).
+//
+// Stages 1 and 2 run on every thread; stage 3 is sequential in grid order (whether an orbit needs
+// a trace depends on the traces before it), so the result does not depend on the thread count.
+//
+//   AtlasOptions o;
+//   o.brute_force.first = {ParameterId::kOmega, 0.3, 0.95, 65};
+//   const Atlas atlas = ComputeAtlas(paper_parameters, o);
+//   for (const AtlasAttractor& a : atlas.attractors) if (a.branch < 0) report(a.reason);
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stickslip/analysis/brute_force_map.hpp"
+#include "stickslip/analysis/orbit_finder.hpp"
+#include "stickslip/branches/branch_membership.hpp"
+#include "stickslip/branches/trace.hpp"
+#include "stickslip/progress.hpp"
+
+namespace stickslip {
+
+struct AtlasOptions {
+  // The brute force: `first` is the atlas's parameter, its range and grid (steps intervals); the
+  // starts, transient, record and threads as a brute-force map's. `second` is not used (the
+  // atlas is one row), nor are shard and shards.
+  BruteForceMapOptions brute_force;
+  // The period limit: attractors of a longer period are listed, not solved (1 to kMaxMultiple).
+  int max_multiple = 4;
+  // FindOrbit from each attractor (its max_multiple is the atlas's). The transient starts at 250
+  // forcing periods and doubles four times (up to 7750 in all) while the section does not repeat.
+  FindOrbitOptions find = [] {
+    FindOrbitOptions o;
+    o.transient_periods = 250;
+    return o;
+  }();
+  // Every trace: its range is the grid's; resonances, loops and switching as a trace's.
+  ContinuationOptions continuation;
+  TraceOptions trace;
+  BranchMembershipOptions membership;  // its parameter is the atlas's
+  // Called per stage: "cells" of the brute force, then "attractors" solved, then "attractors"
+  // placed (value = the parameter). Empty: no reports.
+  ProgressCallback progress = {};
+
+  static constexpr int kMaxMultiple = 100;
+  // Throws InvalidInput naming the field ("grid" for a grid value where the parameters fail
+  // Validate, "max_multiple", the brute force's, find's, trace's and continuation's own fields).
+  void Validate(const Parameters& base) const;
+};
+
+// What became of one brute-force attractor.
+enum class AttractorFate {
+  kOnBranch,     // its exact orbit lies on a traced branch (branch, point)
+  kNotSettled,   // no period on the section, even after FindOrbit's longer transients
+  kAboveLimit,   // periodic with a period above max_multiple
+  kIncomplete,   // a simulation stopped early (chattering, the event search's bound)
+  kNoOrbitType,  // periodic, but no orbit type describes it (a permanent stick: no segment end)
+  kNotSolved,    // FindOrbit gave no exact orbit: its status and message say why
+  kOffBranch,    // solved, but on no branch, not even the one traced from it (the reason says why)
+};
+const char* ToString(AttractorFate fate);  // "on-branch", "not-settled", ...
+
+struct AtlasAttractor {
+  int grid = 0;         // the grid index (the brute-force cell's i)
+  double value = 0.0;   // the parameter there
+  int index = 0;        // the attractor's index in its cell
+  Attractor attractor;  // as the brute force found it
+  std::optional<FindOrbitResult> found;  // where FindOrbit ran
+  AttractorFate fate = AttractorFate::kNotSettled;
+  int branch = -1;      // kOnBranch: index into Atlas::Branches()
+  int point = -1;       // kOnBranch: the branch's point on the near side of the passage
+  bool started_trace = false;  // the trace its exact orbit started is traces[trace]
+  std::string reason;   // one line: where it lies, or why on none
+};
+
+// A trace of the atlas, from one attractor's exact orbit.
+struct AtlasTrace {
+  int attractor = 0;   // index into Atlas::attractors
+  TraceResult result;
+  int first_branch = 0;  // its branches are Atlas::Branches()[first_branch, first_branch + count)
+  int count = 0;
+};
+
+struct Atlas {
+  std::string parameter;      // the atlas's parameter (an orbit variable's name)
+  BruteForceMap brute_force;
+  std::vector<AtlasAttractor> attractors;  // by grid index, then in their cell's order
+  std::vector<AtlasTrace> traces;          // in the order started
+  // Every branch of every trace, in trace order, each trace's down chain then its up chain (as
+  // a stored trace numbers them, io/trace_files.hpp): pointers into this atlas's `traces`.
+  std::vector<const OrbitBranch*> Branches() const;
+  // The periodic attractors with period <= max_multiple, and those of them on a branch.
+  int PeriodicWithinLimit() const;
+  int OnBranches() const;
+};
+
+// The atlas around `base` (the parameter replaced at each grid value), sections at forcing phase
+// 0. Throws InvalidInput (Validate); every numerical outcome is recorded. Bounded: the brute force's
+// runs, one FindOrbit per attractor, and at most one trace per attractor.
+Atlas ComputeAtlas(const Parameters& base, const AtlasOptions& options);
+
+}  // namespace stickslip

@@ -1,0 +1,55 @@
+// The result files of an atlas (analysis/atlas.hpp), results/<output>/, and their one writer:
+//   trace-<t>/           the atlas's traces, t = 1, 2, ... in the order they were started: each a
+//                        trace's directory (io/trace_files.hpp), so that `plot`, `check`, a restart
+//                        (--results results/<output>/trace-<t> --point branch-<k>:LABEL) and
+//                        `export --auto` work on them as on any trace
+//   atlas.json           the run file, version, output, parameter, range, grid, period limit; the
+//                        counts (attractors, periodic within the limit, on branches, unexplained,
+//                        traces, branches, orbit types); per grid value its attractors (the brute
+//                        force's status, period, signature, starts; FindOrbit's status, the exact
+//                        orbit's signature and amplitudes; the fate, the branch "trace-<t>/branch-<k>"
+//                        and point, or the reason) and the branches its stable motions lie on; per
+//                        trace the attractor it started from and how its directions ended
+//   atlas-intervals.csv  per branch, its pieces of one stability and admissibility: trace, branch,
+//                        signature, from, to (the parameter at the piece's first and last point),
+//                        stable, admissible, first_label, last_label, branch_end
+//   brute-force.csv      the brute force, as `stickslip map-sweep` writes a map (io/map_file.hpp)
+// Numbers in shortest round-trip form, no time or host: the same atlas gives the same bytes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "stickslip/analysis/atlas.hpp"
+#include "stickslip/io/run_file.hpp"
+#include "stickslip/io/trace_files.hpp"
+
+namespace stickslip {
+
+struct AtlasFiles {
+  std::string atlas_json;
+  std::string intervals_csv;
+  std::string brute_force_csv;
+};
+
+struct StoredAtlas {
+  std::string output;
+  std::vector<StoredTrace> traces;  // trace-1, trace-2, ...
+  AtlasFiles files;
+};
+
+// The stored form of an atlas just computed from `run` (its path, output and parameter) with
+// `options` (the range, grid and period limit it records).
+StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptions& options);
+
+// Throws InvalidInput as CheckOutputDirectory (result_files.hpp), except that a directory holding
+// an atlas (its atlas.json reads as one) may be replaced too.
+void CheckAtlasOutputDirectory(const std::filesystem::path& results_root, const std::string& output);
+
+// Writes results_root/<atlas.output>/ as a whole (into a temporary directory first, which then
+// replaces the old one); every other entry of the old directory, at any depth (notes, an export in
+// trace-2/branch-1/), moves into the new one, and their names are returned, sorted.
+std::vector<std::string> WriteAtlasFiles(const std::filesystem::path& results_root, const StoredAtlas& atlas);
+
+}  // namespace stickslip

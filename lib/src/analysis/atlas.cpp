@@ -1,0 +1,205 @@
+#include "stickslip/analysis/atlas.hpp"
+
+#include <atomic>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/numerics/parallel_for.hpp"
+
+namespace stickslip {
+
+const char* ToString(AttractorFate fate) {
+  switch (fate) {
+    case AttractorFate::kOnBranch: return "on-branch";
+    case AttractorFate::kNotSettled: return "not-settled";
+    case AttractorFate::kAboveLimit: return "above-period-limit";
+    case AttractorFate::kIncomplete: return "incomplete";
+    case AttractorFate::kNoOrbitType: return "no-orbit-type";
+    case AttractorFate::kNotSolved: return "not-solved";
+    case AttractorFate::kOffBranch: break;
+  }
+  return "off-branch";
+}
+
+namespace {
+
+// The brute force of the atlas: one row, its second axis a parameter other than the atlas's held
+// at its base value.
+BruteForceMapOptions OneRow(const Parameters& base, const AtlasOptions& options) {
+  BruteForceMapOptions row = options.brute_force;
+  const ParameterId held = row.first.parameter == ParameterId::kChi ? ParameterId::kEta : ParameterId::kChi;
+  row.second = {held, base[held], base[held], 0};
+  row.shard = 1;
+  row.shards = 1;
+  row.progress = options.progress;
+  return row;
+}
+
+FindOrbitOptions FindOf(const AtlasOptions& options) {
+  FindOrbitOptions find = options.find;
+  find.max_multiple = options.max_multiple;
+  find.progress = {};
+  return find;
+}
+
+// The fate of an attractor that FindOrbit is not asked about, if any.
+std::optional<AttractorFate> FateWithoutFind(const Attractor& a, int max_multiple) {
+  if (a.status == AttractorStatus::kIncomplete) return AttractorFate::kIncomplete;
+  if (a.status == AttractorStatus::kPeriodic && a.period > max_multiple) return AttractorFate::kAboveLimit;
+  return std::nullopt;
+}
+
+std::string ReasonWithoutFind(const AtlasAttractor& a, int max_multiple) {
+  if (a.fate == AttractorFate::kIncomplete) return "a simulation stopped early (chattering or the event search's bound)";
+  return fmt::format("period {} is above the period limit {}", a.attractor.period, max_multiple);
+}
+
+// Stage 1: the attractors of every grid value, in grid order, with the fate of those FindOrbit is
+// not asked about.
+std::vector<AtlasAttractor> AttractorsOf(const BruteForceMap& map, int max_multiple) {
+  std::vector<AtlasAttractor> attractors;
+  for (const MapCell& cell : map.cells) {
+    for (std::size_t k = 0; k < cell.attractors.size(); ++k) {
+      AtlasAttractor a{.grid = cell.i, .value = cell.first, .index = static_cast<int>(k), .attractor = cell.attractors[k]};
+      if (const auto fate = FateWithoutFind(a.attractor, max_multiple)) {
+        a.fate = *fate;
+        a.reason = ReasonWithoutFind(a, max_multiple);
+      }
+      attractors.push_back(std::move(a));
+    }
+  }
+  return attractors;
+}
+
+AttractorFate FateOfFind(const AtlasAttractor& a) {
+  switch (a.found->status) {
+    case FindOrbitStatus::kFound: return AttractorFate::kOffBranch;  // until stage 3 places it
+    case FindOrbitStatus::kSimulationIncomplete: return AttractorFate::kIncomplete;
+    case FindOrbitStatus::kNoOrbitType: return AttractorFate::kNoOrbitType;
+    case FindOrbitStatus::kNotPeriodic:
+      return a.attractor.status == AttractorStatus::kPeriodic ? AttractorFate::kNotSolved : AttractorFate::kNotSettled;
+    default: return AttractorFate::kNotSolved;
+  }
+}
+
+// Stage 2: FindOrbit from every attractor that needs it, on every thread (each writes its own).
+void SolveAttractors(std::vector<AtlasAttractor>& attractors, const Parameters& base, ParameterId parameter,
+                     double section_phase, const AtlasOptions& options) {
+  std::vector<int> asked;
+  for (std::size_t k = 0; k < attractors.size(); ++k) {
+    if (!FateWithoutFind(attractors[k].attractor, options.max_multiple)) asked.push_back(static_cast<int>(k));
+  }
+  const FindOrbitOptions find = FindOf(options);
+  std::mutex report;
+  int done = 0;
+  ParallelFor(static_cast<int>(asked.size()), options.brute_force.threads, [&](int i) {
+    AtlasAttractor& a = attractors[asked[i]];
+    Parameters p = base;
+    p[parameter] = a.value;
+    a.found = FindOrbit(p, a.attractor.section.front(), section_phase, find);
+    a.fate = FateOfFind(a);
+    a.reason = a.found->message;
+    if (!options.progress) return;
+    const std::lock_guard<std::mutex> lock(report);
+    options.progress({static_cast<double>(++done), static_cast<double>(asked.size()), "attractors solved", a.value});
+  });
+}
+
+OrbitContinuationSetup TraceStart(const FindOrbitResult& found, const std::string& parameter, const AtlasOptions& options) {
+  OrbitContinuationSetup setup{found.solution->orbit, found.problem->unknowns, parameter, ShootingChoice::kAuto,
+                               LinearSolverType::kKlu, options.continuation, {}, {}, {}};
+  setup.options.parameter_name = parameter;
+  setup.options.lambda_min = options.brute_force.first.from;
+  setup.options.lambda_max = options.brute_force.first.to;
+  setup.max_amplitude = options.trace.max_amplitude;
+  return setup;
+}
+
+// Where `a`'s exact orbit lies among `branches` (indices offset by `first`).
+bool Place(AtlasAttractor& a, const std::vector<const OrbitBranch*>& branches, int first,
+           const BranchMembershipOptions& membership) {
+  const BranchMembership m = FindOnBranches(a.found->solution->orbit, branches, membership);
+  a.reason = m.message;
+  if (!m.on_branch) return false;
+  a.fate = AttractorFate::kOnBranch;
+  a.branch = first + m.branch;
+  a.point = m.point;
+  return true;
+}
+
+}  // namespace
+
+void AtlasOptions::Validate(const Parameters& base) const {
+  if (max_multiple < 1 || max_multiple > kMaxMultiple) {
+    throw InvalidInput("max_multiple", std::to_string(max_multiple), fmt::format("1 <= max_multiple <= {}", kMaxMultiple));
+  }
+  OneRow(base, *this).Validate(base);
+  FindOf(*this).Validate();
+  trace.Validate();
+  membership.Validate();
+  ContinuationOptions c = continuation;
+  c.parameter_index = 0;  // ContinueOrbit sets it for the trace's parameter
+  c.lambda_min = brute_force.first.from;
+  c.lambda_max = brute_force.first.to;
+  c.Validate();
+}
+
+std::vector<const OrbitBranch*> Atlas::Branches() const {
+  std::vector<const OrbitBranch*> branches;
+  for (const AtlasTrace& t : traces) {
+    const std::vector<const OrbitBranch*> of_trace = BranchesOf(t.result);
+    branches.insert(branches.end(), of_trace.begin(), of_trace.end());
+  }
+  return branches;
+}
+
+int Atlas::PeriodicWithinLimit() const {
+  int n = 0;
+  for (const AtlasAttractor& a : attractors) n += a.found && a.found->Found();
+  return n;
+}
+
+int Atlas::OnBranches() const {
+  int n = 0;
+  for (const AtlasAttractor& a : attractors) n += a.fate == AttractorFate::kOnBranch;
+  return n;
+}
+
+Atlas ComputeAtlas(const Parameters& base, const AtlasOptions& options) {
+  options.Validate(base);
+  const ParameterId parameter = options.brute_force.first.parameter;
+  Atlas atlas;
+  atlas.parameter = ToString(parameter);
+  atlas.brute_force = ComputeBruteForceMap(base, 0.0, OneRow(base, options));
+  atlas.attractors = AttractorsOf(atlas.brute_force, options.max_multiple);
+  SolveAttractors(atlas.attractors, base, parameter, atlas.brute_force.section_phase, options);
+  BranchMembershipOptions membership = options.membership;
+  membership.parameter = atlas.parameter;
+  // Stage 3, in grid order: an orbit on no branch so far starts a trace, and must lie on it.
+  for (std::size_t k = 0; k < atlas.attractors.size(); ++k) {
+    AtlasAttractor& a = atlas.attractors[k];
+    if (!a.found || !a.found->Found()) continue;
+    if (Place(a, atlas.Branches(), 0, membership)) continue;
+    AtlasTrace trace{.attractor = static_cast<int>(k), .result = TraceOrbits(TraceStart(*a.found, atlas.parameter, options), options.trace)};
+    trace.first_branch = static_cast<int>(atlas.Branches().size());
+    trace.count = static_cast<int>(BranchesOf(trace.result).size());
+    atlas.traces.push_back(std::move(trace));
+    a.started_trace = true;
+    const AtlasTrace& t = atlas.traces.back();
+    if (!Place(a, BranchesOf(t.result), t.first_branch, membership)) {
+      a.reason = fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
+                             t.result.down.message, t.result.up.message);
+    }
+    if (options.progress) {
+      options.progress({static_cast<double>(k + 1), static_cast<double>(atlas.attractors.size()), "attractors placed", a.value});
+    }
+  }
+  return atlas;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,245 @@
+#include "stickslip/io/atlas_files.hpp"
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "result_directory.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/atomic_file.hpp"
+#include "stickslip/io/map_file.hpp"
+#include "stickslip/io/result_files.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
+#include "stickslip/version.hpp"
+#include "trace_directory.hpp"
+
+namespace stickslip {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kAtlasJson = "atlas.json";
+constexpr const char* kIntervalsCsv = "atlas-intervals.csv";
+constexpr const char* kBruteForceCsv = "brute-force.csv";
+constexpr const char* kTracePrefix = "trace-";
+
+std::string TraceName(std::size_t t) { return fmt::format("{}{}", kTracePrefix, t + 1); }
+
+// "trace-<t>/branch-<k>" of the atlas's branch `branch` (an index into Atlas::Branches()).
+std::string BranchPlace(const Atlas& atlas, int branch) {
+  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+    const AtlasTrace& trace = atlas.traces[t];
+    if (branch >= trace.first_branch && branch < trace.first_branch + trace.count) {
+      return fmt::format("{}/branch-{}", TraceName(t), branch - trace.first_branch + 1);
+    }
+  }
+  return "";
+}
+
+Json AttractorJson(const Atlas& atlas, const AtlasAttractor& a) {
+  const bool solved = a.found && a.found->solution;
+  const OrbitMeasures m = solved ? Measure(a.found->solution->orbit) : OrbitMeasures{NAN, NAN, NAN, NAN, 0, 0};
+  std::string started;
+  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+    if (&atlas.attractors[atlas.traces[t].attractor] == &a) started = TraceName(t);
+  }
+  return {{"status", ToString(a.attractor.status)},
+          {"period", a.attractor.period},
+          {"signature", a.attractor.signature},
+          {"starts", a.attractor.starts},
+          {"find", a.found ? ToString(a.found->status) : ""},
+          {"exact_signature", solved ? a.found->solution->orbit.signature.ToString() : ""},
+          {"amplitude_x1", m.amplitude_x1},
+          {"amplitude_x2", m.amplitude_x2},
+          {"fate", ToString(a.fate)},
+          {"branch", a.fate == AttractorFate::kOnBranch ? BranchPlace(atlas, a.branch) : ""},
+          {"point", a.fate == AttractorFate::kOnBranch ? a.point + 1 : 0},
+          {"started_trace", started},
+          {"reason", a.reason}};
+}
+
+// Per grid value: its attractors, and the branches its stable motions (the attractors placed)
+// lie on, each once.
+Json GridJson(const Atlas& atlas) {
+  Json grid = Json::array();
+  for (const MapCell& cell : atlas.brute_force.cells) {
+    Json attractors = Json::array();
+    std::set<std::string> stable;
+    for (const AtlasAttractor& a : atlas.attractors) {
+      if (a.grid != cell.i) continue;
+      attractors.push_back(AttractorJson(atlas, a));
+      if (a.fate == AttractorFate::kOnBranch) stable.insert(BranchPlace(atlas, a.branch));
+    }
+    grid.push_back({{"value", cell.first}, {"attractors", attractors}, {"stable_on", stable}});
+  }
+  return grid;
+}
+
+Json TracesJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
+  Json traces = Json::array();
+  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+    const AtlasAttractor& from = atlas.attractors[atlas.traces[t].attractor];
+    Json directions = Json::array();
+    for (const StoredTraceDirection& d : stored[t].directions) {
+      directions.push_back({{"direction", d.direction}, {"end", d.end}, {"message", d.message}});
+    }
+    traces.push_back({{"name", TraceName(t)},
+                      {"from", {{"value", from.value}, {"attractor", from.index + 1}}},
+                      {"signature", stored[t].signature},
+                      {"branches", stored[t].branches.size()},
+                      {"directions", directions}});
+  }
+  return traces;
+}
+
+Json CountsJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
+  std::set<std::string> types;
+  std::size_t branches = 0;
+  for (const StoredTrace& t : stored) {
+    branches += t.branches.size();
+    for (const StoredTraceBranch& b : t.branches) types.insert(b.signature);
+  }
+  const int placed = atlas.OnBranches();
+  Json fates = Json::object();
+  for (const AtlasAttractor& a : atlas.attractors) {
+    const char* fate = ToString(a.fate);
+    fates[fate] = fates.value(fate, 0) + 1;
+  }
+  return {{"attractors", atlas.attractors.size()},
+          {"fates", fates},
+          {"periodic_within_limit", atlas.PeriodicWithinLimit()},
+          {"on_branches", placed},
+          {"unexplained", static_cast<int>(atlas.attractors.size()) - placed},
+          {"traces", stored.size()},
+          {"branches", branches},
+          {"orbit_types", types}};
+}
+
+std::string FormatAtlasJson(const RunFile& run, const Atlas& atlas, const AtlasOptions& options,
+                            const std::vector<StoredTrace>& stored) {
+  const MapAxis& grid = options.brute_force.first;
+  Json json = Json::object();
+  json["run_file"] = run.path;
+  json["stickslip_version"] = Version();
+  json["output"] = run.output;
+  json["parameter"] = atlas.parameter;
+  json["range"] = {grid.from, grid.to};
+  json["grid_points"] = grid.Count();
+  json["max_multiple"] = options.max_multiple;
+  json["counts"] = CountsJson(atlas, stored);
+  json["grid"] = GridJson(atlas);
+  json["traces"] = TracesJson(atlas, stored);
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+// A point's stability and admissibility as its piece of branch has them: a labelled point (a
+// located change, whose margin is zero to rounding and may read inadmissible) takes those of the
+// unlabelled point before it on its branch, or after it at the branch's start.
+std::vector<std::pair<bool, bool>> PieceFlags(const std::vector<StoredTracePoint>& points) {
+  std::vector<std::pair<bool, bool>> flags(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::size_t from = i;
+    while (!points[from].label.empty() && from > 0 && points[from - 1].branch == points[i].branch) --from;
+    while (!points[from].label.empty() && from + 1 < points.size() && points[from + 1].branch == points[i].branch) ++from;
+    flags[i] = {points[from].stable, points[from].admissible};
+  }
+  return flags;
+}
+
+// atlas-intervals.csv: each branch cut where its stability or admissibility changes.
+std::string FormatIntervalsCsv(const std::vector<StoredTrace>& traces) {
+  std::string csv = "trace,branch,signature,from,to,stable,admissible,first_label,last_label,branch_end\n";
+  for (std::size_t t = 0; t < traces.size(); ++t) {
+    const std::vector<StoredTracePoint>& points = traces[t].points;
+    const std::vector<std::pair<bool, bool>> flags = PieceFlags(points);
+    for (std::size_t begin = 0; begin < points.size();) {
+      std::size_t end = begin;
+      while (end + 1 < points.size() && points[end + 1].branch == points[begin].branch && flags[end + 1] == flags[begin]) ++end;
+      // A piece begins where the one before it ends: at a located change.
+      const bool after_change = begin > 0 && points[begin - 1].branch == points[begin].branch && !points[begin - 1].label.empty();
+      const StoredTracePoint& first = after_change ? points[begin - 1] : points[begin];
+      const bool branch_ends = end + 1 == points.size() || points[end + 1].branch != first.branch;
+      // A piece ends where the next begins: at the next one's first point when that is a located change.
+      const StoredTracePoint& last = !branch_ends && !points[end + 1].label.empty() ? points[end + 1] : points[end];
+      csv += fmt::format("{},branch-{},{},{},{},{:d},{:d},{},{},{}\n", TraceName(t), first.branch, first.signature,
+                         first.lambda, last.lambda, flags[begin].first, flags[begin].second, first.label, last.label,
+                         branch_ends ? traces[t].branches[first.branch - 1].end : "");
+      begin = end + 1;
+    }
+  }
+  return csv;
+}
+
+bool IsAtlasFile(std::string_view name) { return name == kAtlasJson || name == kIntervalsCsv || name == kBruteForceCsv; }
+
+// Ours: the atlas's files, its trace-<t>/ directories and, in them, what a trace owns.
+detail::OwnedEntry AtlasEntries() {
+  const detail::OwnedEntry trace = detail::TraceEntries();
+  return [trace](const fs::path& relative) {
+    const std::string top = relative.begin()->string();
+    if (!detail::IsNumberedName(top, kTracePrefix, false)) return std::distance(relative.begin(), relative.end()) == 1 && IsAtlasFile(top);
+    return std::distance(relative.begin(), relative.end()) == 1 || trace(relative.lexically_relative(top));
+  };
+}
+
+}  // namespace
+
+StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptions& options) {
+  StoredAtlas stored{.output = run.output};
+  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+    RunFile trace_run = run;
+    trace_run.output = TraceName(t);
+    stored.traces.push_back(RecordTrace(trace_run, atlas.traces[t].result));
+  }
+  stored.files = {FormatAtlasJson(run, atlas, options, stored.traces), FormatIntervalsCsv(stored.traces),
+                  BruteForceMapCsv(atlas.brute_force)};
+  return stored;
+}
+
+void CheckAtlasOutputDirectory(const fs::path& results_root, const std::string& output) {
+  const fs::path file = results_root / output / kAtlasJson;
+  std::error_code ignored;
+  if (!fs::exists(file, ignored)) return CheckOutputDirectory(results_root, output);
+  // Recognised by what any version's atlas.json has, not read whole.
+  try {
+    const Json json = detail::ParseJsonObject(detail::ReadTextFile(file), file);
+    for (const char* key : {"stickslip_version", "grid", "traces"}) {
+      if (!json.contains(key)) throw detail::KeyError(file, key, "is missing");
+    }
+  } catch (const InvalidInput& e) {
+    throw InvalidInput::WithMessage(
+        "output", fmt::format("output = '{}' is invalid: '{}' holds no stickslip atlas ({}): valid a new name or the "
+                              "directory of a stickslip atlas",
+                              output, (results_root / output).string(), e.what()));
+  }
+  if (const std::error_code failed = CanCreateFileIn(results_root / output)) {
+    throw InvalidInput::WithMessage("output", fmt::format("output = '{}' is invalid: '{}' cannot be written ({}): valid a "
+                                                          "directory that can be written",
+                                                          output, (results_root / output).string(), failed.message()));
+  }
+}
+
+std::vector<std::string> WriteAtlasFiles(const fs::path& results_root, const StoredAtlas& atlas) {
+  CheckAtlasOutputDirectory(results_root, atlas.output);
+  return detail::ReplaceDirectory(
+      results_root, atlas.output,
+      [&](const fs::path& directory) {
+        for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+          fs::create_directory(directory / TraceName(t));
+          detail::WriteTraceInto(directory / TraceName(t), atlas.traces[t]);
+        }
+        WriteFileAtomically(directory / kAtlasJson, atlas.files.atlas_json);
+        WriteFileAtomically(directory / kIntervalsCsv, atlas.files.intervals_csv);
+        WriteFileAtomically(directory / kBruteForceCsv, atlas.files.brute_force_csv);
+      },
+      AtlasEntries());
+}
+
+}  // namespace stickslip

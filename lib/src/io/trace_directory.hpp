@@ -1,0 +1,19 @@
+// Internal to io/: a trace's directory as a part of a larger result (an atlas's trace-<t>/, io/
+// atlas_files.hpp), written and owned as WriteTraceFiles writes and owns a trace's own.
+#pragma once
+
+#include <filesystem>
+
+#include "result_directory.hpp"
+#include "stickslip/io/trace_files.hpp"
+
+namespace stickslip::detail {
+
+// The entries of a trace's directory that are the trace's (relative to it): trace.csv,
+// trace.json, branch-<k>/ and branch-<k>-<label>/ with their run files.
+OwnedEntry TraceEntries();
+
+// The trace's files, written into `directory` (which exists).
+void WriteTraceInto(const std::filesystem::path& directory, const StoredTrace& trace);
+
+}  // namespace stickslip::detail

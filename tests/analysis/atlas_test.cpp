@@ -1,0 +1,114 @@
+// The atlas: over a small range of the section 4.1 data every exact orbit found from the brute
+// force lies on a traced branch, the paper's own orbit (solved from its printed digits, not from the
+// atlas) lies on one too, no branch is a shorter orbit written over several periods, the result does
+// not depend on the thread count, and bad options are refused naming the field.
+#include "stickslip/analysis/atlas.hpp"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/pascal_2014/modal.hpp"
+#include "stickslip/orbits/least_period.hpp"
+#include "support/solved_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+// A small atlas of the section 4.1 data over omega in [0.55, 0.65]: its period-3 sticking families,
+// the fold and the grazing at omega = 0.5999775 where the period-3 orbit's stick vanishes onto the
+// period-1 family, and the paper's orbit at omega = 0.6.
+AtlasOptions SmallOptions(int threads) {
+  AtlasOptions o;
+  o.brute_force.first = {ParameterId::kOmega, 0.55, 0.65, 4};
+  o.brute_force.transient_periods = 300;
+  o.brute_force.scattered_starts = 2;
+  o.brute_force.threads = threads;
+  return o;
+}
+
+const Atlas& SmallAtlas() {
+  static const Atlas atlas = ComputeAtlas(SolvedPreset("paper-4.1").parameters, SmallOptions(2));
+  return atlas;
+}
+
+TEST(Atlas, EveryExactOrbitFoundFromTheBruteForceLiesOnATracedBranch) {
+  const Atlas& atlas = SmallAtlas();
+  ASSERT_GT(atlas.PeriodicWithinLimit(), 0);
+  EXPECT_EQ(atlas.OnBranches(), atlas.PeriodicWithinLimit());
+  for (const AtlasAttractor& a : atlas.attractors) {
+    if (a.found && a.found->Found()) {
+      EXPECT_EQ(a.fate, AttractorFate::kOnBranch) << "omega " << a.value << ": " << a.reason;
+    }
+    // Nothing is dropped: an attractor not on a branch says why.
+    if (a.fate != AttractorFate::kOnBranch) {
+      EXPECT_FALSE(a.reason.empty());
+    }
+  }
+}
+
+TEST(Atlas, ThePapersOrbitSolvedFromItsPrintedDigitsLiesOnABranch) {
+  const Atlas& atlas = SmallAtlas();
+  BranchMembershipOptions options;
+  options.parameter = "omega";
+  const BranchMembership m = FindOnBranches(SolvedPreset("paper-4.1"), atlas.Branches(), options);
+  EXPECT_TRUE(m.on_branch) << m.message;
+}
+
+TEST(Atlas, NoBranchIsAShorterOrbitWrittenOverSeveralPeriods) {
+  // At omega = 0.5999775 the stick of the period-3 orbit 'slip- stick slip+ slip- / antisymmetric
+  // period 3' vanishes onto the period-1 family: the branch beyond is the period-1 orbit, and is
+  // traced as such.
+  for (const OrbitBranch* branch : SmallAtlas().Branches()) {
+    for (const Orbit* orbit : {&branch->orbits.front(), &branch->orbits.back()}) {
+      EXPECT_NE(ReduceToLeastPeriod(*orbit).status, LeastPeriodStatus::kReduced) << orbit->signature.ToString();
+    }
+  }
+}
+
+TEST(Atlas, DoesNotDependOnTheThreadCount) {
+  const Atlas one = ComputeAtlas(SolvedPreset("paper-4.1").parameters, SmallOptions(1));
+  const Atlas& two = SmallAtlas();
+  ASSERT_EQ(one.attractors.size(), two.attractors.size());
+  for (std::size_t k = 0; k < one.attractors.size(); ++k) {
+    EXPECT_EQ(one.attractors[k].fate, two.attractors[k].fate);
+    EXPECT_EQ(one.attractors[k].branch, two.attractors[k].branch);
+    EXPECT_EQ(one.attractors[k].point, two.attractors[k].point);
+  }
+  const std::vector<const OrbitBranch*> a = one.Branches(), b = two.Branches();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    ASSERT_EQ(a[k]->orbits.size(), b[k]->orbits.size());
+    EXPECT_EQ(a[k]->orbits.back().parameters.omega, b[k]->orbits.back().parameters.omega);
+  }
+}
+
+void ExpectRefused(const AtlasOptions& options, const std::string& field) {
+  try {
+    ComputeAtlas(SolvedPreset("paper-4.1").parameters, options);
+    ADD_FAILURE() << "accepted; want " << field << " refused";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), field) << e.what();
+  }
+}
+
+TEST(Atlas, RefusesAPeriodLimitOutOfRange) {
+  for (int limit : {0, AtlasOptions::kMaxMultiple + 1}) {
+    AtlasOptions o = SmallOptions(1);
+    o.max_multiple = limit;
+    ExpectRefused(o, "max_multiple");
+  }
+}
+
+TEST(Atlas, RefusesAGridValueOnANaturalFrequency) {
+  // omega1 of eq. 56 for chi = 0.3, eta = 4, as a grid value.
+  const Parameters p = SolvedPreset("paper-4.1").parameters;
+  const double omega1 = NaturalFrequencies(p.chi, p.eta).first;
+  AtlasOptions o = SmallOptions(1);
+  o.brute_force.first = {ParameterId::kOmega, omega1 - 0.1, omega1, 2};
+  ExpectRefused(o, "grid");
+}
+
+}  // namespace
+}  // namespace stickslip
