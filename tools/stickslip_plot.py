@@ -1065,7 +1065,14 @@ def draw_coexistence(strip, atlas, colour):
             rows.setdefault(signature_of.get(place, "?"), set()).add(g["value"])
     for k, (signature, values) in enumerate(rows.items()):
         strip.plot(sorted(values), [k] * len(values), "s", color=colour(signature), ms=4, mec="none")
-    strip.set_ylim(-0.8, max(len(rows), 1) - 0.2)
+    # Below them, where the brute force found a motion no periodic orbit up to the limit describes.
+    others = [g["value"] for g in atlas.atlas["grid"]
+              if any(a["fate"] in ("not-settled", "above-period-limit") for a in g["attractors"])]
+    if others:
+        strip.plot(others, [-1] * len(others), "|", color="0.45", ms=6)
+        strip.text(1.01, -1, "not periodic\nwithin the limit", transform=strip.get_yaxis_transform(), fontsize=pt(7),
+                   va="center", color="0.35")
+    strip.set_ylim(-1.8 if others else -0.8, max(len(rows), 1) - 0.2)
     strip.set_yticks([])
     strip.set_ylabel("stable\nmotions", fontsize=pt(8))
     strip.grid(alpha=0.3, axis="x")
@@ -1097,6 +1104,9 @@ def _atlas_figure(atlas, options, plt):
     ax.set_yscale(options.yscale)
     if options.xlim:
         ax.set_xlim(options.xlim)
+    elif x == atlas.parameter and options.xscale == "linear":  # the range asked for, where nothing was found too
+        low, high = atlas.atlas["range"]
+        ax.set_xlim(low - 0.02 * (high - low), high + 0.02 * (high - low))
     if options.ylim:
         ax.set_ylim(options.ylim)
     strip.set_xlabel(quantity_label(x))

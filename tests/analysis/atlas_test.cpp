@@ -1,15 +1,23 @@
 // The atlas: over a small range of the section 4.1 data every exact orbit found from the brute
 // force lies on a traced branch, the paper's own orbit (solved from its printed digits, not from the
-// atlas) lies on one too, no branch is a shorter orbit written over several periods, the result does
-// not depend on the thread count, and bad options are refused naming the field.
+// atlas) lies on one too, every attractor of an independent census (tests/data/paper-4.1-census.csv,
+// made once with other settings) lies on one, no branch is a shorter orbit written over several
+// periods, the result does not depend on the thread count, and bad options are refused naming the
+// field.
 #include "stickslip/analysis/atlas.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/pascal_2014/modal.hpp"
+#include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/orbits/least_period.hpp"
 #include "support/solved_presets.hpp"
 
@@ -81,6 +89,54 @@ TEST(Atlas, DoesNotDependOnTheThreadCount) {
   for (std::size_t k = 0; k < a.size(); ++k) {
     ASSERT_EQ(a[k]->orbits.size(), b[k]->orbits.size());
     EXPECT_EQ(a[k]->orbits.back().parameters.omega, b[k]->orbits.back().parameters.omega);
+  }
+}
+
+struct CensusAttractor {
+  double omega = 0.0;
+  double section_phase = 0.0;
+  State section = State::Zero();
+  std::string signature;
+};
+
+// tests/data/paper-4.1-census.csv: '#' comments, a header, then omega, section_phase, period,
+// signature, x1, x2, v1, v2 (the signature without commas).
+std::vector<CensusAttractor> ReadCensus() {
+  std::ifstream in(std::filesystem::path(STICKSLIP_SOURCE_DIR) / "tests/data/paper-4.1-census.csv");
+  std::vector<CensusAttractor> census;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line.front() == '#') continue;
+    if (std::exchange(header, false)) continue;
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    CensusAttractor a{std::stod(f[0]), std::stod(f[1]), State(std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7])), f[3]};
+    census.push_back(a);
+  }
+  return census;
+}
+
+TEST(Atlas, FindsEveryAttractorOfAnIndependentCensus) {
+  const std::vector<CensusAttractor> census = ReadCensus();
+  ASSERT_EQ(census.size(), 46u);
+  const Parameters base = SolvedPreset("paper-4.1").parameters;
+  AtlasOptions o;  // the atlas's own settings, as `stickslip atlas --preset paper-4.1` takes them, on a grid of 0.01
+  o.brute_force.first = {ParameterId::kOmega, 0.3, 0.45, 15};
+  o.brute_force.centre = FindPaperExample("paper-4.1")->initial_state;
+  const Atlas atlas = ComputeAtlas(base, o);
+  BranchMembershipOptions membership;
+  membership.parameter = "omega";
+  FindOrbitOptions find;
+  find.transient_periods = 100;  // the census's states have settled
+  for (const CensusAttractor& a : census) {
+    Parameters p = base;
+    p.omega = a.omega;
+    const FindOrbitResult found = FindOrbit(p, a.section, a.section_phase, find);
+    ASSERT_TRUE(found.Found()) << "omega " << a.omega << " '" << a.signature << "': " << found.message;
+    const BranchMembership m = FindOnBranches(found.solution->orbit, atlas.Branches(), membership);
+    EXPECT_TRUE(m.on_branch) << "omega " << a.omega << " '" << a.signature << "': " << m.message;
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
+#include "stickslip/orbits/orbit_origin.hpp"
 
 namespace stickslip {
 
@@ -32,7 +33,7 @@ namespace {
 // at its base value.
 BruteForceMapOptions OneRow(const Parameters& base, const AtlasOptions& options) {
   BruteForceMapOptions row = options.brute_force;
-  const ParameterId held = row.first.parameter == ParameterId::kChi ? ParameterId::kEta : ParameterId::kChi;
+  const ParameterId held = kAllParameters[row.first.parameter == kAllParameters[0] ? 1 : 0];
   row.second = {held, base[held], base[held], 0};
   row.shard = 1;
   row.shards = 1;
@@ -110,9 +111,10 @@ void SolveAttractors(std::vector<AtlasAttractor>& attractors, const Parameters& 
   });
 }
 
-OrbitContinuationSetup TraceStart(const FindOrbitResult& found, const std::string& parameter, const AtlasOptions& options) {
-  OrbitContinuationSetup setup{found.solution->orbit, found.problem->unknowns, parameter, ShootingChoice::kAuto,
-                               LinearSolverType::kKlu, options.continuation, {}, {}, {}};
+OrbitContinuationSetup TraceStart(const Orbit& start, const UnknownChoice& unknowns, const std::string& parameter,
+                                  const AtlasOptions& options) {
+  OrbitContinuationSetup setup{start, unknowns, parameter, ShootingChoice::kAuto, LinearSolverType::kKlu,
+                               options.continuation, {}, {}, {}};
   setup.options.parameter_name = parameter;
   setup.options.lambda_min = options.brute_force.first.from;
   setup.options.lambda_max = options.brute_force.first.to;
@@ -170,6 +172,50 @@ int Atlas::OnBranches() const {
   return n;
 }
 
+namespace {
+
+// Stage 3 for the attractor `k`: placed on a branch traced before it, or on the trace started from
+// its exact orbit; then its mirror image traced where no branch holds it.
+class Placer {
+ public:
+  Placer(Atlas& atlas, const AtlasOptions& options) : atlas_(atlas), options_(options), membership_(options.membership) {
+    membership_.parameter = atlas.parameter;
+  }
+
+  void Place(int k) {
+    AtlasAttractor& a = atlas_.attractors[k];
+    const Orbit& orbit = a.found->solution->orbit;
+    if (!stickslip::Place(a, atlas_.Branches(), 0, membership_)) {
+      const AtlasTrace& t = Trace(k, orbit, false);
+      a.started_trace = true;
+      if (!stickslip::Place(a, BranchesOf(t.result), t.first_branch, membership_)) {
+        a.reason = fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
+                               t.result.down.message, t.result.up.message);
+      }
+    }
+    if (orbit.signature.antisymmetric()) return;
+    const Orbit mirror = MirrorImage(orbit);
+    if (!FindOnBranches(mirror, atlas_.Branches(), membership_).on_branch) Trace(k, mirror, true);
+  }
+
+ private:
+  const AtlasTrace& Trace(int k, const Orbit& start, bool mirror) {
+    const UnknownChoice& unknowns = atlas_.attractors[k].found->problem->unknowns;
+    AtlasTrace trace{.attractor = k, .mirror = mirror,
+                     .result = TraceOrbits(TraceStart(start, unknowns, atlas_.parameter, options_), options_.trace)};
+    trace.first_branch = static_cast<int>(atlas_.Branches().size());
+    trace.count = static_cast<int>(BranchesOf(trace.result).size());
+    atlas_.traces.push_back(std::move(trace));
+    return atlas_.traces.back();
+  }
+
+  Atlas& atlas_;
+  const AtlasOptions& options_;
+  BranchMembershipOptions membership_;
+};
+
+}  // namespace
+
 Atlas ComputeAtlas(const Parameters& base, const AtlasOptions& options) {
   options.Validate(base);
   const ParameterId parameter = options.brute_force.first.parameter;
@@ -178,23 +224,12 @@ Atlas ComputeAtlas(const Parameters& base, const AtlasOptions& options) {
   atlas.brute_force = ComputeBruteForceMap(base, 0.0, OneRow(base, options));
   atlas.attractors = AttractorsOf(atlas.brute_force, options.max_multiple);
   SolveAttractors(atlas.attractors, base, parameter, atlas.brute_force.section_phase, options);
-  BranchMembershipOptions membership = options.membership;
-  membership.parameter = atlas.parameter;
-  // Stage 3, in grid order: an orbit on no branch so far starts a trace, and must lie on it.
+  // Stage 3, in grid order: whether an orbit needs a trace depends on the traces before it.
+  Placer placer(atlas, options);
   for (std::size_t k = 0; k < atlas.attractors.size(); ++k) {
-    AtlasAttractor& a = atlas.attractors[k];
+    const AtlasAttractor& a = atlas.attractors[k];
     if (!a.found || !a.found->Found()) continue;
-    if (Place(a, atlas.Branches(), 0, membership)) continue;
-    AtlasTrace trace{.attractor = static_cast<int>(k), .result = TraceOrbits(TraceStart(*a.found, atlas.parameter, options), options.trace)};
-    trace.first_branch = static_cast<int>(atlas.Branches().size());
-    trace.count = static_cast<int>(BranchesOf(trace.result).size());
-    atlas.traces.push_back(std::move(trace));
-    a.started_trace = true;
-    const AtlasTrace& t = atlas.traces.back();
-    if (!Place(a, BranchesOf(t.result), t.first_branch, membership)) {
-      a.reason = fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
-                             t.result.down.message, t.result.up.message);
-    }
+    placer.Place(static_cast<int>(k));
     if (options.progress) {
       options.progress({static_cast<double>(k + 1), static_cast<double>(atlas.attractors.size()), "attractors placed", a.value});
     }

@@ -48,7 +48,7 @@ Json AttractorJson(const Atlas& atlas, const AtlasAttractor& a) {
   const OrbitMeasures m = solved ? Measure(a.found->solution->orbit) : OrbitMeasures{NAN, NAN, NAN, NAN, 0, 0};
   std::string started;
   for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
-    if (&atlas.attractors[atlas.traces[t].attractor] == &a) started = TraceName(t);
+    if (&atlas.attractors[atlas.traces[t].attractor] == &a && !atlas.traces[t].mirror) started = TraceName(t);
   }
   return {{"status", ToString(a.attractor.status)},
           {"period", a.attractor.period},
@@ -91,7 +91,7 @@ Json TracesJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
       directions.push_back({{"direction", d.direction}, {"end", d.end}, {"message", d.message}});
     }
     traces.push_back({{"name", TraceName(t)},
-                      {"from", {{"value", from.value}, {"attractor", from.index + 1}}},
+                      {"from", {{"value", from.value}, {"attractor", from.index + 1}, {"mirror_image", atlas.traces[t].mirror}}},
                       {"signature", stored[t].signature},
                       {"branches", stored[t].branches.size()},
                       {"directions", directions}});

@@ -53,4 +53,16 @@ Orbit WithOriginAt(const Orbit& orbit, int j) {
   return rotated;
 }
 
+Orbit MirrorImage(const Orbit& orbit) {
+  std::vector<Mode> modes;
+  for (Mode mode : orbit.signature.segments()) modes.push_back(Mirror(mode));
+  Orbit mirrored = orbit;
+  mirrored.signature = Signature(modes, orbit.signature.antisymmetric(), orbit.signature.period_multiple());
+  mirrored.x10 = -orbit.x10;
+  mirrored.x20 = -orbit.x20;
+  mirrored.v10 = -orbit.v10;
+  mirrored.phi = PhaseInCycle(orbit.phi + std::numbers::pi);
+  return mirrored;
+}
+
 }  // namespace stickslip

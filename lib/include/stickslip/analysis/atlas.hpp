@@ -9,7 +9,9 @@
 //      transient leaves slowly contracting motions unsettled, FindOrbit's rounds settle them;
 //   3. traces (branches/trace.hpp) over the whole range, both ways, from each exact orbit that lies
 //      on no branch traced so far (branches/branch_membership.hpp decides, on the exact orbit,
-//      not on the simulated state, which a slowly contracting motion has not yet reached).
+//      not on the simulated state, which a slowly contracting motion has not yet reached), and from
+//      its mirror image (orbits/orbit_origin.hpp) where that lies on none either: the other motion of
+//      an asymmetric pair, whose basin the brute force may have missed.
 // Every attractor ends accounted for: on a branch (which, and the point), or unexplained with the
 // reason (not settled, a period above the limit, FindOrbit's status and message).
 //
@@ -90,6 +92,7 @@ struct AtlasAttractor {
 // A trace of the atlas, from one attractor's exact orbit.
 struct AtlasTrace {
   int attractor = 0;   // index into Atlas::attractors
+  bool mirror = false;  // started from the mirror image of the attractor's exact orbit
   TraceResult result;
   int first_branch = 0;  // its branches are Atlas::Branches()[first_branch, first_branch + count)
   int count = 0;

@@ -26,4 +26,10 @@ Signature WithOriginAt(const Signature& signature, int j);
 // std::out_of_range for j outside [0, OriginCount).
 Orbit WithOriginAt(const Orbit& orbit, int j);
 
+// The orbit's mirror image, the other motion of an asymmetric pair: the system is symmetric under
+// x -> -x with the forcing half a period on (cos(w t + phi + pi) = -cos(w t + phi)), so -X(t) with
+// the phase phi + pi and every slip's direction reversed is a motion whenever X(t) is. An
+// antisymmetric orbit is its own (from another origin).
+Orbit MirrorImage(const Orbit& orbit);
+
 }  // namespace stickslip
