@@ -19,7 +19,7 @@
 #include "stickslip/version.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/stored_run.hpp"
-#include "stickslip/model/pascal_2014/modal.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 #include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -57,10 +57,16 @@ py::list ModeList(const std::vector<Mode>& modes) {
 
 // ---- Parameters
 
-Parameters MakeParameters(double chi, double eta, double omega, double u_s, double u_r) {
-  const Parameters p{chi, eta, omega, u_s, u_r};
+// The model's description: parameter and state names for the bindings below.
+const ModelDescription& Model() { return Pascal2014{}.Description(); }
+
+Parameters Checked(const Parameters& p) {
   if (const std::optional<InvalidInput> invalid = Validate(p)) throw *invalid;
   return p;
+}
+
+Parameters MakeParameters(double chi, double eta, double omega, double u_s, double u_r) {
+  return Checked(Parameters{chi, eta, omega, u_s, u_r});
 }
 
 std::string DescribeParameters(const Parameters& p) {
@@ -252,17 +258,26 @@ py::dict VariablesDict(const Orbit& orbit) {
   return d;
 }
 
+// The start state's variables by the layout's names (x10, x20, v10 in the paper's model); the
+// contact's velocity, the last component, is zero at the start.
+void BindStartState(py::class_<SolvedOrbit>& orbit) {
+  const std::vector<std::string>& components = Model().state_components;
+  for (int i = 0; i < ov::kPhi; ++i) {
+    const std::string doc = fmt::format("{} at the start (a stop: {} = 0)", components[i], components.back());
+    orbit.def_property_readonly(
+        ov::Name(0, i).c_str(), [i](const SolvedOrbit& s) { return ov::Pack(s.orbit)(i); }, doc.c_str());
+  }
+}
+
 void BindSolvedOrbit(py::module_& m) {
-  py::class_<SolvedOrbit>(m, "Orbit",
-                          "A periodic orbit solved by stickslip.solve: its unknowns, the Newton summary, the\n"
-                          "admissibility margins (> 0 admissible), the Floquet multipliers and the verification by\n"
-                          "the exact and the Odeint simulators, as `stickslip solve` reports them. Time is the\n"
-                          "paper's scaled time t.")
-      .def_property_readonly("signature", [](const SolvedOrbit& s) { return s.orbit.signature; })
+  py::class_<SolvedOrbit> orbit(m, "Orbit",
+                                "A periodic orbit solved by stickslip.solve: its unknowns, the Newton summary, the\n"
+                                "admissibility margins (> 0 admissible), the Floquet multipliers and the verification by\n"
+                                "the exact and the Odeint simulators, as `stickslip solve` reports them. Time is the\n"
+                                "paper's scaled time t.");
+  BindStartState(orbit);
+  orbit.def_property_readonly("signature", [](const SolvedOrbit& s) { return s.orbit.signature; })
       .def_property_readonly("parameters", [](const SolvedOrbit& s) { return s.orbit.parameters; })
-      .def_property_readonly("x10", [](const SolvedOrbit& s) { return s.orbit.x10; }, "x1 at the start (a stop)")
-      .def_property_readonly("x20", [](const SolvedOrbit& s) { return s.orbit.x20; }, "x2 at the start")
-      .def_property_readonly("v10", [](const SolvedOrbit& s) { return s.orbit.v10; }, "x1' at the start (x2' = 0)")
       .def_property_readonly("phi", [](const SolvedOrbit& s) { return s.orbit.phi; }, "forcing phase at t = 0 (rad)")
       .def_property_readonly(
           "durations", [](const SolvedOrbit& s) { return py::array_t<double>(py::cast(s.orbit.durations)); },
@@ -375,28 +390,44 @@ void BindSignature(py::module_& m) {
       .def("__hash__", [](const Signature& s) { return py::hash(py::str(s.ToString())); });
 }
 
+// The parameters' values in the order of the model's description.
+std::vector<double> ParameterValues(const Parameters& p) {
+  std::vector<double> values;
+  for (int k = 0; k < Pascal2014::kParameterCount; ++k) values.push_back(Pascal2014::ParameterAt(p, k));
+  return values;
+}
+
+// "chi, eta, omega, u_s, u_r": the model's parameter names.
+std::string ParameterNames() {
+  std::vector<std::string> names;
+  for (const ParameterDescription& d : Model().parameters) names.push_back(d.name);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+// Each parameter by its name as a read-only property: p.omega.
+void BindParameterValues(py::class_<Parameters>& parameters) {
+  for (int k = 0; k < Pascal2014::kParameterCount; ++k) {
+    parameters.def_property_readonly(Model().parameters[k].name.c_str(),
+                                     [k](const Parameters& p) { return Pascal2014::ParameterAt(p, k); });
+  }
+}
+
 void BindParameters(py::module_& m) {
-  py::class_<Parameters>(m, "Parameters",
-                         "The oscillator's dimensionless data (Pascal 2014, eq. 3), checked on construction:\n"
-                         "  chi    stiffness ratio k2/(k1+k2), 0.01 <= chi <= 0.99\n"
-                         "  eta    mass ratio m1/m2, 0.01 <= eta <= 100\n"
-                         "  omega  forcing frequency, 0.01 <= omega <= 100, not a natural frequency\n"
-                         "  u_s    sliding friction level, 1e-06 <= u_s <= 1000\n"
-                         "  u_r    static friction level, u_s <= u_r <= 1000\n"
-                         "Bad values raise ValueError with the command line's message.")
-      .def(py::init(&MakeParameters), py::kw_only(), py::arg("chi"), py::arg("eta"), py::arg("omega"),
-           py::arg("u_s"), py::arg("u_r"))
-      .def_property_readonly("chi", [](const Parameters& p) { return p.chi; })
-      .def_property_readonly("eta", [](const Parameters& p) { return p.eta; })
-      .def_property_readonly("omega", [](const Parameters& p) { return p.omega; })
-      .def_property_readonly("u_s", [](const Parameters& p) { return p.u_s; })
-      .def_property_readonly("u_r", [](const Parameters& p) { return p.u_r; })
+  py::class_<Parameters> parameters(m, "Parameters",
+                                    "The oscillator's dimensionless data (Pascal 2014, eq. 3), checked on construction:\n"
+                                    "  chi    stiffness ratio k2/(k1+k2), 0.01 <= chi <= 0.99\n"
+                                    "  eta    mass ratio m1/m2, 0.01 <= eta <= 100\n"
+                                    "  omega  forcing frequency, 0.01 <= omega <= 100, not a natural frequency\n"
+                                    "  u_s    sliding friction level, 1e-06 <= u_s <= 1000\n"
+                                    "  u_r    static friction level, u_s <= u_r <= 1000\n"
+                                    "Bad values raise ValueError with the command line's message.");
+  BindParameterValues(parameters);
+  parameters
+      .def(py::init(&MakeParameters), py::kw_only(), py::arg("chi"), py::arg("eta"), py::arg("omega"), py::arg("u_s"),
+           py::arg("u_r"))
       .def_property_readonly(
           "natural_frequencies",
-          [](const Parameters& p) {
-            const auto [w1, w2] = NaturalFrequencies(p.chi, p.eta);
-            return py::make_tuple(w1, w2);
-          },
+          [](const Parameters& p) { return py::tuple(py::cast(Pascal2014{}.NaturalFrequencies(p))); },
           "(omega1, omega2): the natural frequencies of the slip (eq. 56), where the forced amplitude\n"
           "is singular")
       .def(
@@ -405,28 +436,29 @@ void BindParameters(py::module_& m) {
             Parameters q = p;
             for (const auto& [key, value] : changes) {
               const std::string name = py::str(key);
-              const std::optional<ParameterId> id = ParameterFromString(name);
-              if (!id) throw InvalidInput("parameter", "'" + name + "'", "chi, eta, omega, u_s, u_r");
-              q[*id] = value.cast<double>();
+              const std::optional<int> k = Model().ParameterIndex(name);
+              if (!k) throw InvalidInput("parameter", "'" + name + "'", ParameterNames());
+              Pascal2014::ParameterAt(q, *k) = value.cast<double>();
             }
-            return MakeParameters(q.chi, q.eta, q.omega, q.u_s, q.u_r);
+            return Checked(q);
           },
           "A copy with the given values changed, checked: p.replace(omega=0.58)")
       .def("as_dict",
            [](const Parameters& p) {
              py::dict d;
-             for (ParameterId id : kAllParameters) d[ToString(id)] = p[id];
+             const std::vector<double> values = ParameterValues(p);
+             for (int k = 0; k < Pascal2014::kParameterCount; ++k) d[py::str(Model().parameters[k].name)] = values[k];
              return d;
            })
-      .def("__eq__",
-           [](const Parameters& a, const Parameters& b) {
-             return a.chi == b.chi && a.eta == b.eta && a.omega == b.omega && a.u_s == b.u_s && a.u_r == b.u_r;
-           })
+      .def("__eq__", [](const Parameters& a, const Parameters& b) { return ParameterValues(a) == ParameterValues(b); })
       .def("__repr__", [](const Parameters& p) { return "stickslip.Parameters(" + DescribeParameters(p) + ")"; })
-      .def(py::pickle([](const Parameters& p) { return py::make_tuple(p.chi, p.eta, p.omega, p.u_s, p.u_r); },
+      .def(py::pickle([](const Parameters& p) { return py::tuple(py::cast(ParameterValues(p))); },
                       [](const py::tuple& t) {
-                        return MakeParameters(t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>(),
-                                              t[3].cast<double>(), t[4].cast<double>());
+                        Parameters p;
+                        for (int k = 0; k < Pascal2014::kParameterCount; ++k) {
+                          Pascal2014::ParameterAt(p, k) = t[k].cast<double>();
+                        }
+                        return Checked(p);
                       }));
 }
 
@@ -530,6 +562,14 @@ void BindOrbits(py::module_& m) {
         return Find(start, FindCommand{transients, max_multiple, tolerance, confirmations});
       },
       py::arg("start"), py::arg("transients"), py::arg("max_multiple"), py::arg("tolerance"), py::arg("confirmations"));
+  // The model's state at t = 0 by name (x10, x20, v10, v20), and the variables of an n-segment
+  // orbit before its parameters (x10, x20, v10, phi, d1..dn), unknowns unless fixed (FreeIndices).
+  m.def("_initial_state", [] { return Model().initial_state; });
+  m.def("_orbit_start_variables", [](int n) {
+    std::vector<std::string> names;
+    for (int i = 0; i < ov::FirstParameter(n); ++i) names.push_back(ov::Name(n, i));
+    return names;
+  }, py::arg("n"));
   m.def("_set_keys", [] {
     py::list keys;
     for (const SetKey& k : SetKeys()) {

@@ -10,6 +10,7 @@ from . import _stickslip as _core
 from ._stickslip import Orbit, Parameters
 
 _DEFAULTS = _core._continuation_defaults()
+_INITIAL_STATE = tuple(_core._initial_state())  # the model's state at t = 0 by name
 
 
 def _number(value, field):
@@ -55,9 +56,9 @@ def _start(parameters=None, state=None, phi=None, *, preset=None, point=None, re
         pairs += list(parameters.as_dict().items())
     if state is not None:
         values = [float(x) for x in _np.asarray(state, dtype=float).ravel()]
-        if len(values) != 4:
-            raise TypeError(f"state must hold (x10, x20, v10, v20), got {len(values)} values")
-        pairs += list(zip(("x10", "x20", "v10", "v20"), values))
+        if len(values) != len(_INITIAL_STATE):
+            raise TypeError(f"state must hold ({', '.join(_INITIAL_STATE)}), got {len(values)} values")
+        pairs += list(zip(_INITIAL_STATE, values))
     if phi is not None:
         pairs.append(("phi", float(phi)))
     pairs += _named_values(set, "set")
@@ -88,9 +89,9 @@ def _orbit_start(orbit, results, others):
     given = [name for name, value in others.items() if value not in (None, False)]
     if given:
         raise TypeError(f"start= is the whole start: {given[0]}= cannot be given with it")
-    # x10, x20, v10, phi and the durations are unknowns unless fixed, the parameters only if released
-    # (the start builder's rule, FreeIndices).
-    always = ["x10", "x20", "v10", "phi"] + [f"d{k}" for k in range(1, len(orbit.durations) + 1)]
+    # The start state, phi and the durations are unknowns unless fixed, the parameters only if
+    # released (the start builder's rule, FreeIndices).
+    always = _core._orbit_start_variables(len(orbit.durations))
     unknowns = orbit.unknowns
     return _start(orbit.parameters, results=results, signature=orbit.signature,
                   guess={name: orbit.variables[name] for name in always},

@@ -14,6 +14,12 @@ namespace {
 
 namespace ov = orbit_variables;
 
+// The static friction level equals the kinetic one: an abnormal stop is possible (eq. 25).
+bool EqualFrictionLevels(const Parameters& p) {
+  return Pascal2014::ParameterAt(p, Pascal2014::kStaticLevelParameter) ==
+         Pascal2014::ParameterAt(p, Pascal2014::kKineticLevelParameter);
+}
+
 // The exact simulator over one period from the orbit's start: the segments in the orbit's order,
 // each starting where the orbit says, and the state back at the start. "" when it is so.
 std::string SimulationDisagrees(const Orbit& orbit, double tolerance) {
@@ -175,8 +181,7 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
     throw InvalidInput("margin", located.margin,
                        fmt::format("a margin of the signature '{}'", located.orbit.signature.ToString()));
   }
-  const Parameters& p = located.orbit.parameters;
-  const bool equal_friction = located.unknowns.tie_static_friction || p.u_r == p.u_s;
+  const bool equal_friction = located.unknowns.tie_static_friction || EqualFrictionLevels(located.orbit.parameters);
   const std::vector<AdjacentType> candidates =
       AdjacentTypes(base, margin->segment, located.orbit.signature, equal_friction);
   if (candidates.empty()) {

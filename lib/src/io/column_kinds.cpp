@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/start_problem.hpp"
 
 namespace stickslip::detail {
@@ -12,6 +13,11 @@ namespace {
 
 ValidValues Range(double min, double max, std::string text) {
   return {.min = min, .max = max, .text = std::move(text)};
+}
+
+// The model's description of parameter `id`: its name and valid range.
+const ParameterDescription& Described(ParameterId id) {
+  return Pascal2014{}.Description().parameters[static_cast<int>(id)];
 }
 
 }  // namespace
@@ -23,21 +29,17 @@ bool ValidValues::Holds(double value) const {
 }
 
 ValidValues ModelParameter(ParameterId id) {
-  switch (id) {
-    case ParameterId::kChi: return Range(kMinChi, kMaxChi, std::string(kChiRange));
-    case ParameterId::kEta: return Range(kMinEta, kMaxEta, std::string(kEtaRange));
-    case ParameterId::kOmega: return Range(kMinOmega, kMaxOmega, fmt::format("{} <= omega <= {}", kMinOmega, kMaxOmega));
-    case ParameterId::kSlidingFriction: return Range(kMinSlidingFriction, kMaxFriction, std::string(kSlidingFrictionRange));
-    case ParameterId::kStaticFriction:
-      return Range(kMinSlidingFriction, kMaxFriction, fmt::format("{} <= u_r <= {}", kMinSlidingFriction, kMaxFriction));
-  }
-  return {};
+  const ParameterDescription& d = Described(id);
+  return Range(d.minimum, d.maximum, fmt::format("{} <= {} <= {}", d.minimum, d.name, d.maximum));
 }
 
 ValidValues BranchParameter(ParameterId id) {
-  if (id != ParameterId::kSlidingFriction && id != ParameterId::kStaticFriction) return ModelParameter(id);
-  return Range(-kMaxFriction, kMaxFriction,
-               fmt::format("|{}| <= {} (a branch ends where a released u_s reaches 0)", ToString(id), kMaxFriction));
+  const int k = static_cast<int>(id);
+  if (k != Pascal2014::kKineticLevelParameter && k != Pascal2014::kStaticLevelParameter) return ModelParameter(id);
+  const ParameterDescription& d = Described(id);
+  return Range(-d.maximum, d.maximum,
+               fmt::format("|{}| <= {} (a branch ends where a released {} reaches 0)", d.name, d.maximum,
+                           Described(kAllParameters[Pascal2014::kKineticLevelParameter]).name));
 }
 
 ValidValues Finite() { return {.text = "a finite number"}; }

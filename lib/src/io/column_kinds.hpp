@@ -26,11 +26,13 @@ struct ValidValues {
   bool Holds(double value) const;
 };
 
-// chi, eta, omega, u_s or u_r as an input gives it (a map's grid): the model's valid range.
+// A model parameter as an input gives it (a map's grid): the range of the model's description,
+// "min <= name <= max".
 ValidValues ModelParameter(ParameterId id);
-// The same on a stored branch: chi, eta and omega in the model's range; u_s and u_r within
-// |value| <= 1000, since a released u_s ends its family where it reaches 0, located to the
-// event tolerance on either side (-2.7e-11 in results/paper-4.2-omega-up).
+// The same on a stored branch, but the friction levels (the model's kinetic and static level, u_s
+// and u_r) within |value| <= their maximum, since a released kinetic level ends its family where
+// it reaches 0, located to the event tolerance on either side (-2.7e-11 in
+// results/paper-4.2-omega-up).
 ValidValues BranchParameter(ParameterId id);
 // Any finite number: a start state's component, a phase, a section state.
 ValidValues Finite();

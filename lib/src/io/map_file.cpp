@@ -83,7 +83,8 @@ std::pair<ParameterId, ParameterId> MapParameters(const CsvTable& table) {
     second = ParameterFromString(header[5]);
   }
   if (!first || !second || fmt::format("{}", fmt::join(header, ",")) != Header(*first, *second)) {
-    throw table.HeaderError(fmt::format("the header is invalid: valid {}", Header(ParameterId::kOmega, ParameterId::kStaticFriction)));
+    const BruteForceMap by_default;  // the header of the default axes as the example
+    throw table.HeaderError(fmt::format("the header is invalid: valid {}", Header(by_default.first, by_default.second)));
   }
   return {*first, *second};
 }

@@ -18,6 +18,7 @@
 namespace stickslip {
 
 namespace fs = std::filesystem;
+namespace ov = orbit_variables;
 using Json = nlohmann::ordered_json;
 
 namespace {
@@ -40,29 +41,45 @@ RunFile CurveRun(const MapCurve& c, const OrbitTypeMap& map) {
   return run;
 }
 
+// The orbit variables curves.csv lists before the durations, in the layout's indices of an
+// n-segment orbit: the model's parameters, phi, then the start state.
+std::vector<int> OrbitColumns(int n) {
+  std::vector<int> columns;
+  for (int i = ov::FirstParameter(n); i < ov::Count(n); ++i) columns.push_back(i);
+  columns.push_back(ov::kPhi);
+  for (int i = 0; i < ov::kPhi; ++i) columns.push_back(i);
+  return columns;
+}
+
 std::string FormatCurvesCsv(const OrbitTypeMap& map) {
   const MapRectangle& r = map.rectangle;
-  std::string out = fmt::format("curve,kind,from,direction,signature,pt,label,{},{},stable,admissible,chi,eta,omega,u_s,u_r,phi,"
-                                "x10,x20,v10,durations\n",
-                                r.first, r.second);
+  std::vector<std::string> names;
+  for (int i : OrbitColumns(0)) names.push_back(ov::Name(0, i));
+  std::string out = fmt::format("curve,kind,from,direction,signature,pt,label,{},{},stable,admissible,{},durations\n",
+                                r.first, r.second, fmt::join(names, ","));
   for (const MapCurve& c : map.curves) {
     const std::vector<std::string> labels = PointLabels(c.branch.branch);
     for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
       const Orbit& o = c.branch.orbits[k];
-      const Parameters& p = o.parameters;
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{:d},{:d},{},{},{},{},{},{},{},{},{},{}\n", c.id, c.kind, c.from, c.direction,
+      const Eigen::VectorXd variables = ov::Pack(o);
+      std::vector<double> values;
+      for (int i : OrbitColumns(o.signature.size())) values.push_back(variables(i));
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{:d},{:d},{},{}\n", c.id, c.kind, c.from, c.direction,
                          o.signature.ToString(), k + 1, labels[k], c.first[k], c.second[k], static_cast<int>(c.stable[k]),
-                         static_cast<int>(c.admissible[k]), p.chi, p.eta, p.omega, p.u_s, p.u_r, o.phi, o.x10, o.x20, o.v10,
-                         fmt::join(o.durations, ";"));
+                         static_cast<int>(c.admissible[k]), fmt::join(values, ","), fmt::join(o.durations, ";"));
     }
   }
   return out;
 }
 
+// phi first, then the start state by the layout's names, as the keys have always come.
 Json OrbitJson(const MapOrbit& o) {
-  return Json{{"signature", o.signature}, {"admissible", o.admissible}, {"stable", o.stable}, {"from", o.from},
-              {"phi", o.orbit.phi},         {"x10", o.orbit.x10},         {"x20", o.orbit.x20},   {"v10", o.orbit.v10},
-              {"durations", o.orbit.durations}};
+  Json out{{"signature", o.signature}, {"admissible", o.admissible}, {"stable", o.stable}, {"from", o.from},
+           {"phi", o.orbit.phi}};
+  const Eigen::VectorXd variables = ov::Pack(o.orbit);
+  for (int i = 0; i < ov::kPhi; ++i) out[ov::Name(o.orbit.signature.size(), i)] = variables(i);
+  out["durations"] = o.orbit.durations;
+  return out;
 }
 
 std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,

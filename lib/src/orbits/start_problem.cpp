@@ -142,29 +142,39 @@ void CheckDurations(const Values& v, Orbit* orbit) {
   }
 }
 
-// u_s <= 0 is no start: the sliding-friction margin ends the physical family there (a branch's
-// end at u_s = 0 stores u_s to the event tolerance, -2.7e-11 in results/paper-4.2-omega-up).
+// The model's parameter k, as its description names it and gives its range.
+const ParameterDescription& DescribedParameter(int k) { return Pascal2014{}.Description().parameters[k]; }
+
+// A kinetic friction level <= 0 is no start: the sliding-friction margin ends the physical family
+// there (a branch's end at u_s = 0 stores u_s to the event tolerance, -2.7e-11 in
+// results/paper-4.2-omega-up).
 InvalidInput ParameterError(const InvalidInput& invalid, const Parameters& p) {
-  if (invalid.field() != "u_s" || !(p.u_s <= 0.0)) return invalid;
-  return InvalidInput("u_s", p.u_s,
-                      fmt::format("{}; u_s <= 0 is the end of the physical family (eq. 4), where no orbit continues",
-                                  kSlidingFrictionRange));
+  const ParameterDescription& kinetic = DescribedParameter(Pascal2014::kKineticLevelParameter);
+  const double level = Pascal2014::ParameterAt(p, Pascal2014::kKineticLevelParameter);
+  if (invalid.field() != kinetic.name || !(level <= 0.0)) return invalid;
+  return InvalidInput(kinetic.name, level,
+                      fmt::format("{}; {} <= 0 is the end of the physical family (eq. 4), where no orbit continues",
+                                  kinetic.range, kinetic.name));
 }
 
-// Every parameter given (or tied) and valid.
+// Every parameter given (or, the static level under tie_u_r, tied to the kinetic one) and valid.
 Parameters CheckedParameters(const Values& v, int n, bool tie_u_r) {
   Parameters p;
-  for (ParameterId id : kAllParameters) {
-    const int index = ov::Parameter(n, id);
-    const bool tied = tie_u_r && id == ParameterId::kStaticFriction;
+  for (int k = 0; k < Pascal2014::kParameterCount; ++k) {
+    const int index = ov::FirstParameter(n) + k;
+    const bool tied = tie_u_r && k == Pascal2014::kStaticLevelParameter;
+    const std::string& name = DescribedParameter(k).name;
     if (!v.given[index] && !tied) {
       throw InvalidInput::WithMessage(
-          ToString(id), fmt::format("{} is missing: give set {}=VALUE ({}), a preset or a restart point", ToString(id),
-                                    ToString(id), SetKeyRange(ToString(id))));
+          name, fmt::format("{} is missing: give set {}=VALUE ({}), a preset or a restart point", name, name,
+                            SetKeyRange(name)));
     }
-    p[id] = v.x(index);
+    Pascal2014::ParameterAt(p, k) = v.x(index);
   }
-  if (tie_u_r) p.u_r = p.u_s;
+  if (tie_u_r) {
+    const double kinetic = Pascal2014::ParameterAt(p, Pascal2014::kKineticLevelParameter);
+    Pascal2014::ParameterAt(p, Pascal2014::kStaticLevelParameter) = kinetic;
+  }
   if (auto invalid = Validate(p)) throw ParameterError(*invalid, p);
   return p;
 }
@@ -275,13 +285,17 @@ StartProblem BuildStartProblem(const StartInput& input) {
   if (input.parameter) {
     parameter = ContinuedVariable(signature, free, unknowns.tie_static_friction, *input.parameter);
   }
-  // Under tie_u_r, u_r follows u_s: a different u_r of the user's was dropped silently.
+  // Under tie_u_r, the static level follows the kinetic one: a different static level of the
+  // user's was dropped silently.
   if (unknowns.tie_static_friction) {
-    const double u_s = orbit.parameters.u_s;
+    const std::string& kinetic = DescribedParameter(Pascal2014::kKineticLevelParameter).name;
+    const std::string& static_level = DescribedParameter(Pascal2014::kStaticLevelParameter).name;
+    const double level = Pascal2014::ParameterAt(orbit.parameters, Pascal2014::kKineticLevelParameter);
     for (const auto& [name, value] : values) {
-      if (name != "u_r" || value == u_s) continue;
+      if (name != static_level || value == level) continue;
       throw InvalidInput::WithMessage(
-          "u_r", fmt::format("u_r = {} is invalid with tie-u_r: valid u_r = u_s = {}, or no u_r (it follows u_s)", value, u_s));
+          static_level, fmt::format("{} = {} is invalid with tie-u_r: valid {} = {} = {}, or no {} (it follows {})",
+                                    static_level, value, static_level, kinetic, level, static_level, kinetic));
     }
   }
   return {std::move(orbit), unknowns, free, parameter};

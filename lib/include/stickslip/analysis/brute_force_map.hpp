@@ -22,9 +22,9 @@
 // j mod shards = shard - 1 (for job arrays and MPI ranks); the shards merged (io/map_file.hpp) give
 // the unsharded map.
 //
-//   BruteForceMapOptions o;
-//   o.first = {ParameterId::kOmega, 0.5, 0.7, 20};
-//   o.second = {ParameterId::kStaticFriction, 0.2, 0.6, 20};
+//   BruteForceMapOptions o;  // by default omega along i and u_r along j: their ranges
+//   o.first.from = 0.5, o.first.to = 0.7, o.first.steps = 20;
+//   o.second.from = 0.2, o.second.to = 0.6, o.second.steps = 20;
 //   const BruteForceMap map = ComputeBruteForceMap(paper_parameters, phi, o);
 #pragma once
 
@@ -34,13 +34,19 @@
 
 #include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/progress.hpp"
 
 namespace stickslip {
 
+// The axes a map has unless told: the model's forcing frequency along i, its static friction level
+// along j (omega and u_r in the paper's model).
+inline constexpr ParameterId kDefaultFirstAxis = kAllParameters[Pascal2014::kForcingFrequencyParameter];
+inline constexpr ParameterId kDefaultSecondAxis = kAllParameters[Pascal2014::kStaticLevelParameter];
+
 // One axis of the grid: steps + 1 values from `from` to `to`, evenly spaced.
 struct MapAxis {
-  ParameterId parameter = ParameterId::kOmega;
+  ParameterId parameter = kDefaultFirstAxis;
   double from = 0.0;
   double to = 0.0;
   int steps = 10;  // intervals between from and to (0 to BruteForceMapOptions::kMaxSteps): one value when 0
@@ -51,8 +57,8 @@ struct MapAxis {
 };
 
 struct BruteForceMapOptions {
-  MapAxis first{ParameterId::kOmega};               // index i; the neighbour chain runs along it
-  MapAxis second{ParameterId::kStaticFriction};     // index j; each value is a row
+  MapAxis first{kDefaultFirstAxis};    // index i; the neighbour chain runs along it
+  MapAxis second{kDefaultSecondAxis};  // index j; each value is a row
   int transient_periods = 500;  // forcing periods discarded per run (0 to kMaxTransientPeriods)
   // Forcing periods recorded per run (2 to kMaxRecordedPeriods): periods up to recorded/2 are
   // detected; a signature is read when the record holds the origin and one whole period after it
@@ -121,8 +127,8 @@ struct MapCell {
 };
 
 struct BruteForceMap {
-  ParameterId first = ParameterId::kOmega;
-  ParameterId second = ParameterId::kStaticFriction;
+  ParameterId first = kDefaultFirstAxis;
+  ParameterId second = kDefaultSecondAxis;
   int first_count = 0;   // cells along i
   int second_count = 0;  // cells along j
   double section_phase = 0.0;  // the forcing phase at the section times

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -68,6 +69,11 @@ struct Pascal2014 {
   }
   template <typename T>
   T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
+  // omega1 < omega2 of a slip (eq. 56), where the forced amplitude is singular.
+  std::array<double, 2> NaturalFrequencies(const Parameters& p) const {
+    const auto [omega1, omega2] = stickslip::NaturalFrequencies(p.chi, p.eta);
+    return {omega1, omega2};
+  }
 
   template <typename T>
   T ContactVelocity(const StateT<T>& x) const { return x(3); }
