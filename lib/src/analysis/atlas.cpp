@@ -111,6 +111,12 @@ void SolveAttractors(std::vector<AtlasAttractor>& attractors, const Parameters& 
   });
 }
 
+TraceOptions TraceOptionsOf(const AtlasOptions& options) {
+  TraceOptions trace = options.trace;
+  trace.record_other_switches = true;
+  return trace;
+}
+
 OrbitContinuationSetup TraceStart(const Orbit& start, const UnknownChoice& unknowns, const std::string& parameter,
                                   const AtlasOptions& options) {
   OrbitContinuationSetup setup{start, unknowns, parameter, ShootingChoice::kAuto, LinearSolverType::kKlu,
@@ -139,6 +145,9 @@ bool Place(AtlasAttractor& a, const std::vector<const OrbitBranch*>& branches, i
 void AtlasOptions::Validate(const Parameters& base) const {
   if (max_multiple < 1 || max_multiple > kMaxMultiple) {
     throw InvalidInput("max_multiple", std::to_string(max_multiple), fmt::format("1 <= max_multiple <= {}", kMaxMultiple));
+  }
+  if (max_traces < 1 || max_traces > kMaxTraces) {
+    throw InvalidInput("max_traces", std::to_string(max_traces), fmt::format("1 <= max_traces <= {}", kMaxTraces));
   }
   OneRow(base, *this).Validate(base);
   FindOf(*this).Validate();
@@ -185,28 +194,44 @@ class Placer {
   void Place(int k) {
     AtlasAttractor& a = atlas_.attractors[k];
     const Orbit& orbit = a.found->solution->orbit;
+    const UnknownChoice& unknowns = a.found->problem->unknowns;
     if (!stickslip::Place(a, atlas_.Branches(), 0, membership_)) {
-      const AtlasTrace& t = Trace(k, orbit, false);
-      a.started_trace = true;
-      if (!stickslip::Place(a, BranchesOf(t.result), t.first_branch, membership_)) {
-        a.reason = fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
-                               t.result.down.message, t.result.up.message);
+      a.started_trace = TraceIfNew({.attractor = k}, orbit, unknowns);
+      const std::vector<const OrbitBranch*> branches = atlas_.Branches();
+      if (!stickslip::Place(a, branches, 0, membership_)) {
+        a.reason = a.started_trace ? fmt::format("its own trace does not pass through it ({})", a.reason)
+                                   : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
       }
     }
-    if (orbit.signature.antisymmetric()) return;
-    const Orbit mirror = MirrorImage(orbit);
-    if (!FindOnBranches(mirror, atlas_.Branches(), membership_).on_branch) Trace(k, mirror, true);
+    if (!orbit.signature.antisymmetric()) TraceIfNew({.attractor = k, .mirror = true}, MirrorImage(orbit), unknowns);
   }
 
  private:
-  const AtlasTrace& Trace(int k, const Orbit& start, bool mirror) {
-    const UnknownChoice& unknowns = atlas_.attractors[k].found->problem->unknowns;
-    AtlasTrace trace{.attractor = k, .mirror = mirror,
-                     .result = TraceOrbits(TraceStart(start, unknowns, atlas_.parameter, options_), options_.trace)};
-    trace.first_branch = static_cast<int>(atlas_.Branches().size());
-    trace.count = static_cast<int>(BranchesOf(trace.result).size());
-    atlas_.traces.push_back(std::move(trace));
-    return atlas_.traces.back();
+  // Traces from `start` unless a branch holds it already or max_traces is reached; then from every
+  // switch a new trace confirmed but did not take, in turn. True if `start` was traced.
+  bool TraceIfNew(AtlasTrace from, const Orbit& start, const UnknownChoice& unknowns) {
+    if (FindOnBranches(start, atlas_.Branches(), membership_).on_branch) return false;
+    if (static_cast<int>(atlas_.traces.size()) >= options_.max_traces) return false;
+    from.result = TraceOrbits(AtLeastPeriod(TraceStart(start, unknowns, atlas_.parameter, options_)), TraceOptionsOf(options_));
+    from.first_branch = static_cast<int>(atlas_.Branches().size());
+    from.count = static_cast<int>(BranchesOf(from.result).size());
+    atlas_.traces.push_back(std::move(from));
+    // Copied out first: the traces below grow atlas_.traces.
+    const AtlasTrace& added = atlas_.traces.back();
+    std::vector<std::pair<int, TypeSwitch>> others;
+    int branch = added.first_branch;
+    for (const TraceDirection* chain : {&added.result.down, &added.result.up}) {
+      for (const TraceLink& link : chain->links) {
+        for (const TypeSwitch& sw : link.other_switches) others.emplace_back(branch, sw);
+        ++branch;
+      }
+    }
+    const int attractor = added.attractor;
+    for (const auto& [at, sw] : others) {
+      TraceIfNew({.attractor = attractor, .from_branch = at, .adjacent = sw.adjacent->edit.signature.ToString()},
+                 sw.BranchStart(), sw.unknowns);
+    }
+    return true;
   }
 
   Atlas& atlas_;

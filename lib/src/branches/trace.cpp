@@ -18,17 +18,6 @@ namespace stickslip {
 
 namespace {
 
-// A switch's start whose signature repeats a shorter one and whose orbit is that shorter one
-// written several times (a period-1 orbit listed over three periods, where a stick of a period-3
-// orbit vanishes onto the period-1 family) is continued at its least period: one motion, one
-// branch type.
-OrbitContinuationSetup AtLeastPeriod(OrbitContinuationSetup setup) {
-  const LeastPeriodOrbit reduced = ReduceToLeastPeriod(setup.start);
-  if (reduced.status != LeastPeriodStatus::kReduced) return setup;
-  setup.start = reduced.orbit;
-  setup.unknowns = UnknownsAtFixedParameters(reduced.orbit.signature);
-  return setup;
-}
 
 namespace ov = orbit_variables;
 
@@ -336,40 +325,51 @@ class Tracer {
     }
   }
 
+  // The next branch of direction d starts on the confirmed switch `sw` at `margin`.
+  void TakeSwitch(int d, const OrbitContinuationSetup& setup, const std::string& margin, TypeSwitch sw) {
+    Next& next = next_[d];
+    next.setup = setup;
+    next.setup.start = sw.BranchStart();
+    next.setup.unknowns = sw.unknowns;
+    next.setup.options.direction = sw.direction;
+    next.setup = AtLeastPeriod(std::move(next.setup));
+    // User values address the unknowns of the start's signature.
+    if (next.setup.start.signature.ToString() != start_.start.signature.ToString()) {
+      next.setup.options.user_values.clear();
+    } else {
+      next.setup.options.user_values = start_.options.user_values;
+    }
+    next.start = LinkStart::kSwitch;
+    next.margin = margin;
+    next.type_switch = std::move(sw);
+    next.past = false;
+  }
+
   // The switch at the end of `b` (every margin located there, in turn); true if the chain goes on.
   bool Switch(int d, const OrbitBranch& b, const OrbitContinuationSetup& setup,
               const std::vector<const SpecialPoint*>& changes, TraceLink* link) {
     std::vector<std::string> reasons;
     bool any_candidate = false;
+    bool taken = false;
     std::optional<TypeSwitch> first;
     for (const SpecialPoint* s : changes) {
       const LocatedTypeChange located = TypeChangeAt(b, *s, setup);
       TypeSwitch sw = SwitchAt(located, options_.type_switch);
-      if (sw.status == TypeSwitchStatus::kConfirmed) {
+      if (sw.status == TypeSwitchStatus::kConfirmed && taken) {
+        link->other_switches.push_back(std::move(sw));
+      } else if (sw.status == TypeSwitchStatus::kConfirmed) {
         link->end = TraceEnd::kSwitched;
         link->message = fmt::format("{}: {}", located.margin, sw.reason);
-        Next& next = next_[d];
-        next.setup = setup;
-        next.setup.start = sw.BranchStart();
-        next.setup.unknowns = sw.unknowns;
-        next.setup.options.direction = sw.direction;
-        next.setup = AtLeastPeriod(std::move(next.setup));
-        // User values address the unknowns of the start's signature.
-        if (next.setup.start.signature.ToString() != start_.start.signature.ToString()) {
-          next.setup.options.user_values.clear();
-        } else {
-          next.setup.options.user_values = start_.options.user_values;
-        }
-        next.start = LinkStart::kSwitch;
-        next.margin = located.margin;
-        next.type_switch = std::move(sw);
-        next.past = false;
-        return true;
+        TakeSwitch(d, setup, located.margin, std::move(sw));
+        taken = true;
+        if (!options_.record_other_switches) return true;
+      } else if (!taken) {
+        any_candidate = any_candidate || sw.status == TypeSwitchStatus::kNotConfirmed;
+        reasons.push_back(fmt::format("{}: {}", located.margin, sw.reason));
+        if (!first) first = std::move(sw);
       }
-      any_candidate = any_candidate || sw.status == TypeSwitchStatus::kNotConfirmed;
-      reasons.push_back(fmt::format("{}: {}", located.margin, sw.reason));
-      if (!first) first = std::move(sw);
     }
+    if (taken) return true;
     const std::string why = fmt::format("{}", fmt::join(reasons, "; "));
     if (options_.follow_past_unswitched) {
       link->end = TraceEnd::kSameTypeOn;
@@ -440,6 +440,14 @@ bool TraceResult::NotAMotion() const { return down.end == TraceEnd::kNotAMotion;
 
 bool TraceResult::Failed() const {
   return down.end == TraceEnd::kContinuationFailed || up.end == TraceEnd::kContinuationFailed;
+}
+
+OrbitContinuationSetup AtLeastPeriod(OrbitContinuationSetup setup) {
+  const LeastPeriodOrbit reduced = ReduceToLeastPeriod(setup.start);
+  if (reduced.status != LeastPeriodStatus::kReduced) return setup;
+  setup.start = reduced.orbit;
+  setup.unknowns = UnknownsAtFixedParameters(reduced.orbit.signature);
+  return setup;
 }
 
 TraceResult TraceOrbits(const OrbitContinuationSetup& start, const TraceOptions& options) {

@@ -48,7 +48,8 @@ Json AttractorJson(const Atlas& atlas, const AtlasAttractor& a) {
   const OrbitMeasures m = solved ? Measure(a.found->solution->orbit) : OrbitMeasures{NAN, NAN, NAN, NAN, 0, 0};
   std::string started;
   for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
-    if (&atlas.attractors[atlas.traces[t].attractor] == &a && !atlas.traces[t].mirror) started = TraceName(t);
+    const AtlasTrace& trace = atlas.traces[t];
+    if (&atlas.attractors[trace.attractor] == &a && !trace.mirror && trace.from_branch < 0) started = TraceName(t);
   }
   return {{"status", ToString(a.attractor.status)},
           {"period", a.attractor.period},
@@ -82,16 +83,25 @@ Json GridJson(const Atlas& atlas) {
   return grid;
 }
 
+// Where a trace started: an attractor's exact orbit, its mirror image, or a switch another trace
+// confirmed at a branch's end and did not take.
+Json FromJson(const Atlas& atlas, const AtlasTrace& trace) {
+  const AtlasAttractor& a = atlas.attractors[trace.attractor];
+  if (trace.from_branch >= 0) {
+    return {{"switch_at_end_of", BranchPlace(atlas, trace.from_branch)}, {"adjacent", trace.adjacent}};
+  }
+  return {{"value", a.value}, {"attractor", a.index + 1}, {"mirror_image", trace.mirror}};
+}
+
 Json TracesJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
   Json traces = Json::array();
   for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
-    const AtlasAttractor& from = atlas.attractors[atlas.traces[t].attractor];
     Json directions = Json::array();
     for (const StoredTraceDirection& d : stored[t].directions) {
       directions.push_back({{"direction", d.direction}, {"end", d.end}, {"message", d.message}});
     }
     traces.push_back({{"name", TraceName(t)},
-                      {"from", {{"value", from.value}, {"attractor", from.index + 1}, {"mirror_image", atlas.traces[t].mirror}}},
+                      {"from", FromJson(atlas, atlas.traces[t])},
                       {"signature", stored[t].signature},
                       {"branches", stored[t].branches.size()},
                       {"directions", directions}});

@@ -11,7 +11,10 @@
 //      on no branch traced so far (branches/branch_membership.hpp decides, on the exact orbit,
 //      not on the simulated state, which a slowly contracting motion has not yet reached), and from
 //      its mirror image (orbits/orbit_origin.hpp) where that lies on none either: the other motion of
-//      an asymmetric pair, whose basin the brute force may have missed.
+//      an asymmetric pair, whose basin the brute force may have missed; and, where several margins
+//      change sign at a branch's end and more than one adjacent type is confirmed there, from each
+//      confirmed switch the trace did not take (TraceOptions::record_other_switches) that lies on
+//      no branch: every adjacent type is followed, whichever one the step size made the chain take.
 // Every attractor ends accounted for: on a branch (which, and the point), or unexplained with the
 // reason (not settled, a period above the limit, FindOrbit's status and message).
 //
@@ -54,11 +57,15 @@ struct AtlasOptions {
   ContinuationOptions continuation;
   TraceOptions trace;
   BranchMembershipOptions membership;  // its parameter is the atlas's
+  // At most this many traces (1 to kMaxTraces); starts beyond it are not traced (an attractor then
+  // says so: off-branch).
+  int max_traces = 500;
   // Called per stage: "cells" of the brute force, then "attractors" solved, then "attractors"
   // placed (value = the parameter). Empty: no reports.
   ProgressCallback progress = {};
 
   static constexpr int kMaxMultiple = 100;
+  static constexpr int kMaxTraces = 100000;
   // Throws InvalidInput naming the field ("grid" for a grid value where the parameters fail
   // Validate, "max_multiple", the brute force's, find's, trace's and continuation's own fields).
   void Validate(const Parameters& base) const;
@@ -91,8 +98,12 @@ struct AtlasAttractor {
 
 // A trace of the atlas, from one attractor's exact orbit.
 struct AtlasTrace {
-  int attractor = 0;   // index into Atlas::attractors
+  int attractor = 0;   // index into Atlas::attractors: the attractor being placed when it started
   bool mirror = false;  // started from the mirror image of the attractor's exact orbit
+  // Started from a confirmed switch to the type `adjacent` that another trace did not take, at the
+  // end of Branches()[from_branch]; -1 otherwise.
+  int from_branch = -1;
+  std::string adjacent;
   TraceResult result;
   int first_branch = 0;  // its branches are Atlas::Branches()[first_branch, first_branch + count)
   int count = 0;

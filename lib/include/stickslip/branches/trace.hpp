@@ -63,6 +63,10 @@ struct TraceOptions {
   // kMaxTraceBranches): each continued as one branch from its start, ending as a branch does (no
   // switching on it); the others are recorded only.
   int follow_bifurcations = 0;
+  // Where several margins change sign at a branch's end (section 4.1's omega = 0.5999775: SK, T0
+  // and GR at once), try every one and record the confirmed switches the chain does not take
+  // (TraceLink::other_switches); the chain takes the first, as without it. The atlas follows them.
+  bool record_other_switches = false;
   TypeSwitchOptions type_switch;  // at every change of type
   // Called after every accepted point of every branch: done = the points so far, total =
   // 2 max_branches max_points (an upper bound), unit "points", value = lambda. Empty: no reports.
@@ -129,6 +133,8 @@ struct TraceLink {
   TraceEnd end = TraceEnd::kContinuationFailed;  // how the branch ended, in the trace's terms
   std::string message;
   std::vector<BifurcationMet> bifurcations;  // at its located BP, PD and SB, in branch order
+  // With TraceOptions::record_other_switches: the confirmed switches at its end the chain did not take.
+  std::vector<TypeSwitch> other_switches;
 };
 
 struct TraceDirection {
@@ -157,5 +163,13 @@ struct TraceResult {
 // continue_past_terminal set: the trace decides at every change of type), as ContinueOrbit does for
 // an invalid setup.
 TraceResult TraceOrbits(const OrbitContinuationSetup& start, const TraceOptions& options = {});
+
+// `setup` with its start at its least period: a start whose signature repeats a shorter one and
+// whose orbit is that shorter one written several times (a period-1 orbit listed over three periods,
+// where a stick of a period-3 orbit vanishes onto the period-1 family) is continued as the shorter
+// one, with the unknowns at fixed parameters (UnknownsAtFixedParameters): one motion, one branch
+// type. Any other start as it is. A trace's switches go through it, and so does the atlas's start
+// from a switch a trace did not take.
+OrbitContinuationSetup AtLeastPeriod(OrbitContinuationSetup setup);
 
 }  // namespace stickslip
