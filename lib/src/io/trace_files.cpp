@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
+#include <set>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -417,10 +418,17 @@ std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const Sto
   CheckTraceOutputDirectory(results_root, trace.output);
   // The files a trace or a run writes (its branches branch-<k>, its followed runs branch-<k>-<label>,
   // and their run files); every other entry of the old directory, at any depth, is the user's
-  // ("branch-notes.md", an export in branch-2/, a continuation written into branch-1/).
+  // ("branch-notes.md", an export in branch-2/, a continuation written into branch-1/). Of the old
+  // directory's branches only those its trace.json lists are the trace's: a "branch-9" it does not
+  // list (a directory or a file of the user's) is kept whole.
+  const auto own_file = [](std::string_view name) {
+    return name == kTraceCsv || name == kTraceJson || detail::IsRunFileName(name);
+  };
   const detail::OwnedEntry ours = detail::EntriesWithRuns(
-      [](std::string_view name) { return name == kTraceCsv || name == kTraceJson || detail::IsRunFileName(name); },
-      kBranchPrefix, true);
+      own_file, [](std::string_view name) { return detail::IsNumberedName(name, kBranchPrefix, true); });
+  const std::set<std::string> listed = detail::ListedNames(results_root / trace.output / kTraceJson, {"name", "followed"});
+  const detail::OwnedEntry ours_before =
+      detail::EntriesWithRuns(own_file, [&listed](std::string_view name) { return listed.contains(std::string(name)); });
   return detail::ReplaceDirectory(
       results_root, trace.output,
       [&](const fs::path& directory) {
@@ -429,7 +437,7 @@ std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const Sto
         WriteFileAtomically(directory / kTraceCsv, files.trace_csv);
         WriteFileAtomically(directory / kTraceJson, files.trace_json);
       },
-      ours);
+      ours, ours_before);
 }
 
 StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
