@@ -7,40 +7,25 @@
 # is stopped at a known point (STICKSLIP_TEST_PAUSE_BEFORE_RENAME, test-only), not signalled at a
 # guessed time; interrupted_writes_test.sh does the same for a trace's directory.
 source "$(dirname "$0")/expect.sh"
+source "$(dirname "$0")/paused_writer.sh"
 r="$work/r"
 mkdir -p "$r"
 args=(sweep --preset paper-5.1 --from 0.55 --to 0.56 --steps 1 --transients 0 --periods 2 --threads 1 --output "$r/x.csv")
 "$bin" "${args[@]}" > /dev/null 2>&1 && pass || fail "first sweep"
 cp "$r/x.csv" "$work/before.csv"
 
-# Starts the sweep, paused just before its temporary file moves into place. SIGINT at its default
-# (bash ignores it in a background job).
-start_paused() {
-  rm -f "$work/paused"
-  STICKSLIP_TEST_PAUSE_BEFORE_RENAME="$work/paused" /usr/bin/python3 -c \
-    'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
-    "$bin" "${args[@]}" --force > /dev/null 2> "$work/paused.err" &
-  writer=$!
-  for _ in $(seq 600); do [ -e "$work/paused" ] && return 0; sleep 0.1; done
-  fail "the writer did not reach its pause: $(cat "$work/paused.err")"
-  return 1
-}
 temporaries() { (cd "$r" && ls -A | grep '^\.x\.csv\.tmp\.') }
 
 for signal in TERM HUP INT; do
-  start_paused || continue
+  start_paused --force || continue
   [ -n "$(temporaries)" ] && pass || fail "SIG$signal: no temporary file while paused"
-  kill -s $signal $writer
-  wait $writer 2> /dev/null
-  code=$?
-  want=$((128 + $(kill -l $signal)))
-  [ $code -eq $want ] && pass || fail "SIG$signal: exit $code, want $want: $(cat "$work/paused.err")"
+  signal_paused $signal
   [ "$(ls -A "$r")" = x.csv ] && pass || fail "SIG$signal: left $(ls -A "$r")"
   cmp -s "$work/before.csv" "$r/x.csv" && pass || fail "SIG$signal: the earlier file changed"
 done
 
 # SIGKILL cannot be caught: the writer's temporary file stays, named with this host's tag and its pid.
-start_paused && kill -s KILL $writer
+start_paused --force && kill -s KILL $writer
 wait $writer 2> /dev/null
 dead=$(temporaries)
 if [[ "$dead" =~ ^\.x\.csv\.tmp\.([0-9a-f]{16})\.([0-9]+)$ ]]; then pass; else fail "SIGKILL left '$dead'"; fi
@@ -64,14 +49,9 @@ for kept in ".x.csv.tmp.$tag.$$" ".x.csv.tmp.0123456789abcdef.$dead_pid" ".x.csv
   [ -e "$r/$kept" ] && pass || fail "$kept was removed"
 done
 cmp -s "$work/before.csv" "$r/x.csv" && pass || fail "the file written beside them differs"
-lines=(
-  "note: removed '$r/$dead': a temporary of process $dead_pid on this host, which has ended"
-  "note: left '$r/.x.csv.tmp.$tag.$$': its process $$ is running"
-  "note: left '$r/.x.csv.tmp.0123456789abcdef.$dead_pid': written on another host or before this host's last boot"
+expect_notes "$work/stale.err" \
+  "note: removed '$r/$dead': a temporary of process $dead_pid on this host, which has ended" \
+  "note: left '$r/.x.csv.tmp.$tag.$$': its process $$ is running" \
+  "note: left '$r/.x.csv.tmp.0123456789abcdef.$dead_pid': written on another host or before this host's last boot" \
   "note: left '$r/.x.csv.tmp.99999': its name does not say its host (an earlier version of stickslip wrote it)"
-)
-for line in "${lines[@]}"; do
-  grep -qxF "$line" "$work/stale.err" && pass || fail "stderr lacks [$line]: $(cat "$work/stale.err")"
-done
-[ "$(grep -c '^note: ' "$work/stale.err")" -eq 4 ] && pass || fail "not one line per temporary file: $(cat "$work/stale.err")"
 finish
