@@ -190,6 +190,11 @@ def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(k
     (lambda: stickslip.trace("omega", (0.5, 0.6), preset="paper-4.1", allow_inadmissible="yes"),
      "allow_inadmissible = 'yes' is invalid: valid range True or False"),
     (lambda: stickslip.run(5), "path = 5 is invalid: valid range a str or an os.PathLike path"),
+    # int() took 2.5 as 2 and '3' as 3 before the fix
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3).sample(0, 2.5),
+     "n = 2.5 is invalid: valid range an int (not bool)"),
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3).sample("1"),
+     "point = '1' is invalid: valid range an int (not bool)"),
 ])
 def test_a_keyword_of_the_wrong_type_raises_the_bad_input_error_naming_it(call, message):
     # One check for every keyword (_inputs._checked): a ValueError, as all bad input, and a TypeError.

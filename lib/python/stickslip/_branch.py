@@ -114,7 +114,7 @@ class Branch(_Table):
     def sample(self, point, n=200):
         """(t, x) over one period of the orbit at branch point `point` (0-based, negative from the
         end): n >= 2 equally spaced times and the state (x1, x2, x1', x2') at each."""
-        return self._stored.sample(int(point), int(n))
+        return self._stored.sample(_checked(point, "point", "index"), _checked(n, "n", "index"))
 
     def special_point(self, label):
         """The special point labelled `label` ("LP4")."""
@@ -152,7 +152,7 @@ class Branch(_Table):
         given = {"output": output, "ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
         options = {key: None if value is None else _checked(value, key, kinds[key]) for key, value in given.items()}
         options["range"] = None if range is None else _pair(range, "range")
-        if _checked(side, "side", "count", "+1 or -1") not in (1, -1):
+        if _checked(side, "side", "index", "+1 or -1") not in (1, -1):
             raise ValueError(f"side = {side!r} is invalid: valid range +1 or -1")
         return Branch(self._computed.switch(_checked(label, "label", "text"), int(side), options))
 

@@ -24,6 +24,7 @@ class InvalidArgument(TypeError, ValueError):
 _KINDS = {
     "number": "a number (int or float, not bool) of magnitude below 1.8e308",
     "count": "a whole number (int, or a float without a fraction; not bool)",
+    "index": "an int (not bool) of magnitude below 2**31",
     "flag": "True or False",
     "text": "a str",
     "path": "a str or an os.PathLike path",
@@ -33,7 +34,8 @@ _KINDS = {
 def _checked(value, field, kind, valid=None):
     """The one check of a keyword argument's type, for every function of the module: `value` as the
     compiled core takes it (a float for "number"; for "count" the value itself, whose range the
-    library states; a bool for "flag"; a str for "text" and "path"), or InvalidArgument naming
+    library states; an int for "index"; a bool for "flag"; a str for "text" and "path"), or
+    InvalidArgument naming
     `field`, the value and `valid` (by default what the kind must be). A bool is no number though
     float(True) is 1.0, a str none though float("1e-6") is 1e-06, and bool("no") is True: each
     would pass a wrong value on silently; an int beyond a double raised OverflowError."""
@@ -41,6 +43,8 @@ def _checked(value, field, kind, valid=None):
         return value
     if kind == "text" and isinstance(value, str):
         return value
+    if kind == "index" and isinstance(value, _numbers.Integral) and not isinstance(value, bool) and abs(value) < 2**31:
+        return int(value)
     if kind == "path" and isinstance(value, (str, _os.PathLike)) and isinstance(_os.fspath(value), str):
         return _os.fspath(value)
     if kind in ("number", "count") and isinstance(value, _numbers.Real) and not isinstance(value, bool):
