@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/trace_files.hpp"
 #include "stickslip/orbits/start_problem.hpp"
 
 namespace stickslip::cli {
@@ -13,6 +15,17 @@ namespace {
 std::string FieldOf(const std::string& name) { return name.substr(name.find_first_not_of('-')); }
 
 }  // namespace
+
+void CheckHoldsRun(const std::filesystem::path& directory, const std::string& field, std::string_view valid) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::exists(directory / "branch.csv", error)) return;
+  const char* why = !fs::exists(directory, error)        ? "it does not exist"
+                    : !fs::is_directory(directory, error) ? "it is not a directory"
+                    : IsTraceDirectory(directory)         ? "it is a trace's directory (its runs are its branch-<k>/)"
+                                                          : "it holds no branch.csv";
+  throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: {}: valid {}", field, directory.string(), why, valid));
+}
 
 CLI::Option* AddNumberOption(CLI::App& cmd, const std::string& name, double* value, const std::string& valid_range,
                              const std::string& help) {

@@ -2,6 +2,7 @@
 // --set, the parameters in one line.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -47,6 +48,15 @@ CLI::Option* AddCountOption(CLI::App& cmd, const std::string& name, int* value, 
 inline constexpr const char* kForceHelp =
     "replace the file even if another command or the user wrote it (without it, only a file whose first line shows "
     "that this command wrote it is replaced)";
+
+// What a run's directory holds, for the messages of the commands that read one.
+inline constexpr std::string_view kRunDirectory =
+    "a run's directory (results/<run>/, holding branch.csv, special-points.csv and summary.json)";
+
+// Throws InvalidInput naming `field` when `directory` holds no run (no branch.csv there), saying why
+// (it does not exist, it is a trace's directory, it holds no branch.csv) and what the command
+// reads, `valid`; a damaged run is left to the reader, whose message names the file and line.
+void CheckHoldsRun(const std::filesystem::path& directory, const std::string& field, std::string_view valid);
 
 // The help text of --set, listing every key with its meaning and valid range (SetKeys).
 std::string SetKeysHelp();

@@ -47,6 +47,7 @@ int RunExport(const ExportArgs& args) {
     throw InvalidInput::WithMessage("directory", "directory = '' is invalid: it is empty: valid results/<run>/ of a run");
   }
   const fs::path dir(args.directory);
+  CheckHoldsRun(dir, "directory", fmt::format("{}, or one branch-<k>/ of a trace's directory", kRunDirectory));
   if (args.samples < 2 || args.samples > 100000) {
     throw InvalidInput("samples", args.samples, "2 <= samples <= 100000");
   }

@@ -1,12 +1,14 @@
 // stickslip find: from a simulated motion to its exact periodic orbit (analysis/orbit_finder.hpp):
 // the detected period and orbit type, the solved orbit as solve prints it (or as JSON), the solve
 // command line (or a run file) that reproduces it, and at once the trace from it (--trace).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -69,6 +71,20 @@ int ExitCode(FindOrbitStatus status) {
   return kExitNotAMotion;
 }
 
+// Whether `path` lies inside `directory` (both as they resolve, links followed): a run file there
+// would be replaced or deleted by the trace that replaces the directory, or would replace its files.
+bool IsInside(const std::filesystem::path& path, const std::filesystem::path& directory) {
+  namespace fs = std::filesystem;
+  const auto resolved = [](const fs::path& given) {
+    std::error_code error;  // a path that cannot be resolved is compared as written
+    const fs::path canonical = fs::weakly_canonical(fs::absolute(given), error);
+    return error ? fs::absolute(given).lexically_normal() : canonical;
+  };
+  const fs::path file = resolved(path), root = resolved(directory);
+  const auto [end, unused] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
+  return end == root.end();
+}
+
 // What find writes after the work, checked before it: the trace's directory and the run file, their
 // ranges and their combinations. Throws InvalidInput naming the option.
 struct FindOutputs {
@@ -76,7 +92,7 @@ struct FindOutputs {
   std::optional<OmegaRange> range;  // the run file's --range
 };
 FindOutputs CheckOutputs(const FindArgs& args) {
-  auto refuse = [](const char* field, const std::string& value, const char* valid) {
+  auto refuse = [](const char* field, const std::string& value, const std::string& valid) {
     throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: valid {}", field, value, valid));
   };
   if (args.json && !args.trace.empty()) refuse("json", "true", "without --trace (the trace reports in text; its trace.json is JSON)");
@@ -92,6 +108,11 @@ FindOutputs CheckOutputs(const FindArgs& args) {
     CheckTraceOutputDirectory(args.start.results, args.output);
   }
   if (!args.range.empty()) outputs.range = ParseOmegaRange("range", args.range);
+  const std::filesystem::path trace_directory = std::filesystem::path(args.start.results) / args.output;
+  if (outputs.trace && args.write_run_given && IsInside(args.write_run, trace_directory)) {
+    refuse("write-run", args.write_run,
+           fmt::format("a file outside the trace's directory '{}' (the trace replaces it whole)", trace_directory.string()));
+  }
   if (args.write_run_given) {
     const OutputMarker marker{"stickslip find", [](std::string_view line) { return line == kFoundRunFileMarker; }};
     CheckReplaceableOutputFile(args.write_run, "write-run", marker, args.force);
@@ -99,11 +120,11 @@ FindOutputs CheckOutputs(const FindArgs& args) {
   return outputs;
 }
 
-// A range that does not hold the found orbit's omega traces nothing from it: bad input, found only
-// after the work.
-void CheckRangeHolds(const char* field, const std::string& text, const OmegaRange& range, double omega) {
-  if (range.low <= omega && omega <= range.high) return;
-  throw InvalidInput(field, "'" + text + "'", fmt::format("LO,HI that holds the found orbit's omega = {}", omega));
+// A range that does not hold omega traces nothing from the found orbit: find holds the parameters,
+// so the orbit's omega is the start's, and the range is refused before the simulation.
+void CheckRangeHolds(const char* field, const std::string& text, const std::optional<OmegaRange>& range, double omega) {
+  if (!range || (range->low <= omega && omega <= range->high)) return;
+  throw InvalidInput(field, "'" + text + "'", fmt::format("LO,HI that holds the start's omega = {}", omega));
 }
 
 // The run file's name for the run: --output, else the file's stem where it is a run name.
@@ -115,8 +136,6 @@ std::string RunFileOutput(const FindArgs& args) {
 
 // The run file and the trace of the found orbit; returns the trace's exit code (kExitOk without one).
 int WriteAndTrace(const FindArgs& args, const FindOutputs& outputs, const StartInput& solved, double omega) {
-  if (outputs.trace) CheckRangeHolds("trace", args.trace, *outputs.trace, omega);
-  if (outputs.range) CheckRangeHolds("range", args.range, *outputs.range, omega);
   if (args.write_run_given) {
     const OmegaRange range = outputs.range ? *outputs.range : outputs.trace ? *outputs.trace : RangeAround(omega);
     const RunFile run = FoundRun(solved, range, RunFileOutput(args), args.run_kind == "trace");
@@ -169,6 +188,8 @@ void PrintFound(const FindOrbitResult& found, const FindOrbitOptions& options) {
 int RunFind(const FindArgs& args) {
   const FindOutputs outputs = CheckOutputs(args);
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
+  CheckRangeHolds("trace", args.trace, outputs.trace, input.parameters.omega);
+  CheckRangeHolds("range", args.range, outputs.range, input.parameters.omega);
   // The texts become numbers here; FindOptionsOf checks them, as it does for Python's find.
   auto number = [](const char* field, const std::string& text) { return ParseNumber(field, text, FindOptionRange(field)); };
   FindCommand command;

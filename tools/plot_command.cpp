@@ -86,17 +86,22 @@ int RunProgram(const std::vector<std::string>& argv, std::string* why) {
   return -1;
 }
 
+// What plot draws, for the messages of an input it cannot.
+std::string PlotInputs() {
+  return fmt::format(
+      "a run or trace name under --results, or the path of a result: {}, a trace's (trace.json, branch-<k>/), an "
+      "orbit-type map's (regions.json), a sweep's or map-sweep's CSV",
+      kRunDirectory);
+}
+
 // Where an input is: a run or trace named under --results (as before), else a path to a result
 // directory or file (a sweep's or map-sweep's CSV, an orbit-type map's directory).
 fs::path ResolveInput(const std::string& input, const std::string& results) {
-  constexpr std::string_view kValid =
-      "a run or trace name under --results, or the path of a result: a run, trace or orbit-type map directory, a "
-      "sweep or map-sweep CSV";
   if (IsRunName(input) && fs::exists(fs::path(results) / input)) return fs::path(results) / input;
   std::error_code error;
   if (!input.empty() && input.find('\n') == std::string::npos && fs::exists(fs::path(input), error)) return input;
   if (IsRunName(input)) return fs::path(results) / input;  // reported missing by the readers below
-  throw InvalidInput("run", "'" + input + "'", std::string(kValid));
+  throw InvalidInput("run", "'" + input + "'", PlotInputs());
 }
 
 // <run>-bifurcation.png, <trace>-frequency-response.png, <map>-map.png, <file>.png (a CSV's stem).
@@ -141,6 +146,7 @@ int RunPlot(const PlotArgs& args) {
       if (IsTraceDirectory(path)) {
         ReadTraceFiles(path);
       } else {
+        CheckHoldsRun(path, "run", PlotInputs());
         ReadRunFiles(path);
       }
     }

@@ -49,6 +49,20 @@ for f in trace.csv branch-1/branch.csv branch-2/branch.csv; do
   cmp -s "$work/found/t41/$f" "$work/from-file/t41/$f" || fail "the run file's trace differs in $f"
 done
 
+# A run file inside the trace's own directory is refused before the work, even with --force: the trace
+# replaces that directory whole (before: a run file at branch-1/branch.csv was reported written and
+# then replaced, and one at trace.json replaced the trace's, which then refused to write, exit 2
+# after the work with the earlier trace damaged). Nothing written, the trace as it was.
+for inside in trace.json branch-1/branch.csv notes.toml ../t41/new.toml; do
+  "$bin" find --preset paper-4.1 --trace "$range" --results "$work/found" --output t41 \
+    --write-run "$work/found/t41/$inside" --force > "$work/in.out" 2> "$work/in.err"
+  code=$?
+  [ "$code" -eq 2 ] && [ "$(wc -l < "$work/in.err")" -eq 1 ] && [ ! -s "$work/in.out" ] &&
+    grep -qF "write-run = '$work/found/t41/$inside' is invalid: valid a file outside the trace's directory '$work/found/t41'" "$work/in.err" ||
+    fail "--write-run $inside inside the trace: exit $code, $(cat "$work/in.err")"
+  diff -r "$work/found/t41" "$work/by-hand/t41" > /dev/null || fail "--write-run $inside changed the trace"
+done
+
 # A run name with a quote and a backslash is a TOML string the run file escapes: `stickslip run`
 # reads it back and writes that very name (before, the file did not parse).
 name='q"uo\te'
@@ -148,8 +162,15 @@ expect_rejected trace "trace = 'nan' is not a finite number: valid range LO,HI" 
 expect_rejected trace "trace = '0.5' is invalid: valid range LO,HI" "${p[@]}" --trace 0.5 --output t
 # Not a part of the text (before: trace = '0.7,0.9' is not a finite number).
 expect_rejected trace "trace = '0.5,0.7,0.9' is invalid: valid range LO,HI" "${p[@]}" --trace 0.5,0.7,0.9 --output t
-expect_rejected trace "trace = '0.1,0.2' is invalid: valid range LO,HI that holds the found orbit's omega = 0.6" "${p[@]}" \
+expect_rejected trace "trace = '0.1,0.2' is invalid: valid range LO,HI that holds the start's omega = 0.6" "${p[@]}" \
   --trace 0.1,0.2 --output t
+expect_rejected range "range = '0.1,0.2' is invalid: valid range LO,HI that holds the start's omega = 0.6" "${p[@]}" \
+  --range 0.1,0.2
+# Refused before the simulation (before: after 1e6 transient periods, the orbit printed first).
+timeout 30 "$bin" find "${p[@]}" --transients 1000000 --trace 0.1,0.2 --output t > "$work/early.out" 2> "$work/early.err"
+code=$?
+[ "$code" -eq 2 ] && [ ! -s "$work/early.out" ] && grep -q "trace = '0.1,0.2' is invalid" "$work/early.err" ||
+  fail "--trace without the start's omega is refused only after the simulation: exit $code, $(head -c 300 "$work/early.out")"
 expect_rejected output "output is missing: valid a run name, with --trace" "${p[@]}" --trace 0.5,0.7
 expect_rejected range "range = '0.7,0.5' is invalid" "${p[@]}" --range 0.7,0.5
 expect_rejected range "range = '0.5,0.7' is invalid: valid left out with --trace" "${p[@]}" --trace 0.5,0.7 --output t --range 0.5,0.7

@@ -6,33 +6,18 @@
 # writer is stopped at a known point (STICKSLIP_TEST_PAUSE_BEFORE_RENAME, test-only), not signalled
 # at a guessed time.
 source "$(dirname "$0")/expect.sh"
+source "$(dirname "$0")/paused_writer.sh"
 r="$work/r"
 args=(trace --preset paper-4.1 --parameter omega --range 0.55,0.65 --results "$r" --output tr)
 "$bin" "${args[@]}" > /dev/null 2>&1 && pass || fail "first trace"
 cp -a "$r/tr" "$work/before"
 
-# Starts the trace, paused just before its temporary moves into place. SIGINT at its default (bash
-# ignores it in a background job).
-start_paused() {
-  rm -f "$work/paused"
-  STICKSLIP_TEST_PAUSE_BEFORE_RENAME="$work/paused" /usr/bin/python3 -c \
-    'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
-    "$bin" "${args[@]}" > /dev/null 2> "$work/paused.err" &
-  writer=$!
-  for _ in $(seq 600); do [ -e "$work/paused" ] && return 0; sleep 0.1; done
-  fail "the writer did not reach its pause: $(cat "$work/paused.err")"
-  return 1
-}
 temporaries() { (cd "$r" && ls -A | grep '^\.tr\.tmp\.') }
 
 for signal in TERM HUP INT; do
   start_paused || continue
   [ -n "$(temporaries)" ] && pass || fail "SIG$signal: no temporary while paused"
-  kill -s $signal $writer
-  wait $writer 2> /dev/null
-  code=$?
-  want=$((128 + $(kill -l $signal)))
-  [ $code -eq $want ] && pass || fail "SIG$signal: exit $code, want $want: $(cat "$work/paused.err")"
+  signal_paused $signal
   [ -z "$(ls -A "$r" | grep -v '^tr$')" ] && pass || fail "SIG$signal: left $(ls -A "$r")"
   diff -r "$work/before" "$r/tr" > /dev/null && pass || fail "SIG$signal: the earlier trace changed"
 done
@@ -63,16 +48,11 @@ for kept in ".tr.tmp.$tag.$other_dead/NOTES.md" ".tr.tmp.$tag.$$/notes.txt" ".tr
   [ -e "$r/$kept" ] && pass || fail "$kept was removed"
 done
 diff -r "$work/before" "$r/tr" > /dev/null && pass || fail "the trace written beside them differs"
-lines=(
-  "note: removed '$r/$dead': a temporary of process $dead_pid on this host, which has ended"
-  "note: left '$r/.tr.tmp.$tag.$other_dead': its process $other_dead has ended, but it holds files stickslip did not write"
-  "note: left '$r/.tr.tmp.$tag.$$': its process $$ is running"
-  "note: left '$r/.tr.tmp.0123456789abcdef.$dead_pid': written on another host or before this host's last boot"
-  "note: left '$r/.tr.tmp.99999': its name does not say its host (an earlier version of stickslip wrote it)"
+expect_notes "$work/stale.err" \
+  "note: removed '$r/$dead': a temporary of process $dead_pid on this host, which has ended" \
+  "note: left '$r/.tr.tmp.$tag.$other_dead': its process $other_dead has ended, but it holds files stickslip did not write" \
+  "note: left '$r/.tr.tmp.$tag.$$': its process $$ is running" \
+  "note: left '$r/.tr.tmp.0123456789abcdef.$dead_pid': written on another host or before this host's last boot" \
+  "note: left '$r/.tr.tmp.99999': its name does not say its host (an earlier version of stickslip wrote it)" \
   "note: left '$r/.tr.tmp.$tag.4294967296': 4294967296 is no process id of this system: no stickslip process wrote it"
-)
-for line in "${lines[@]}"; do
-  grep -qxF "$line" "$work/stale.err" && pass || fail "stderr lacks [$line]: $(cat "$work/stale.err")"
-done
-[ "$(wc -l < "$work/stale.err")" -eq 6 ] && pass || fail "not one line per temporary: $(cat "$work/stale.err")"
 finish

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A trace or a map written again keeps what it did not write, at every depth, and lists it: the
 # AUTO export's b., s. and d. files inside a trace's branch-<k>/, the user's notes and directories there
-# and inside a map's curve-<k>/ (issue 22: they were deleted). And a run or a trace written into a
+# and inside a map's curve-<k>/, a branch-<k> or curve-<k> the trace's or map's index does not list
+# (issue 22: they were deleted). And a run or a trace written into a
 # trace's own entries (--output branch-2 with --results the trace) is refused: exit 2, one line,
 # the trace untouched.
 source "$(dirname "$0")/expect.sh"
@@ -23,6 +24,20 @@ grep -qF "tr: kept 5 other file(s) of $r/tr: branch-1/NOTES.md, branch-1/plots, 
   "$work/again.txt" && pass || fail "kept files not listed: $(cat "$work/again.txt")"
 rm -r "$r/tr/branch-2/b.branch-2" "$r/tr/branch-2/s.branch-2" "$r/tr/branch-2/d.branch-2" "$r/tr/branch-1/NOTES.md" "$r/tr/branch-1/plots"
 diff -r "$work/first" "$r/tr" > /dev/null && pass || fail "the trace written again differs from the first"
+
+# Entries named as the trace names its branches but that its trace.json does not list are the
+# user's, at any depth: a directory branch-9/ (a run's three files and notes in it), a file branch-8,
+# a branch-7/ inside branch-2/ (before: the top-level ones were deleted as the trace's own).
+[ ! -e "$r/tr/branch-7" ] && [ ! -e "$r/tr/branch-8" ] && [ ! -e "$r/tr/branch-9" ] || fail "the trace has 7 branches or more"
+mkdir "$r/tr/branch-9" "$r/tr/branch-2/branch-7"
+cp "$r/tr/branch-1/"* "$r/tr/branch-9/" && echo n > "$r/tr/branch-9/NOTES.md"
+echo n > "$r/tr/branch-8" && echo n > "$r/tr/branch-2/branch-7/NOTES.md"
+cp -r "$r/tr" "$work/mine-branches"
+"$bin" trace "${p41[@]}" --results "$r" --output tr > "$work/again.txt" 2>&1
+diff -r "$work/mine-branches" "$r/tr" > /dev/null && pass || fail "the trace written again lost the user's branch-<k>: $(ls -R "$r/tr")"
+grep -qF "tr: kept 3 other file(s) of $r/tr: branch-2/branch-7, branch-8, branch-9" "$work/again.txt" && pass ||
+  fail "the user's branch-<k> not listed: $(cat "$work/again.txt")"
+rm -r "$r/tr/branch-9" "$r/tr/branch-8" "$r/tr/branch-2/branch-7"
 
 # Into the trace's own entries: refused before the work, the trace as it was.
 restart=(--results "$r/tr" --point branch-2:EP1 --parameter omega --range 0.3,0.69 --ds 0.005 --ds-max 0.05)
@@ -49,4 +64,11 @@ mkdir "$work/m/curve-1/mine" && echo p > "$work/m/curve-1/mine/a.txt"
 grep -qF "kept 2 other file(s): curve-1/NOTES.md, curve-1/mine" "$work/m.txt" && pass || fail "not listed: $(cat "$work/m.txt")"
 rm -r "$work/m/curve-1/NOTES.md" "$work/m/curve-1/mine"
 diff -r "$work/m-first" "$work/m" > /dev/null && pass || fail "the map written again differs from the first"
+# And a curve-<k> its regions.json does not list, a directory or a file, is the user's.
+[ ! -e "$work/m/curve-98" ] && [ ! -e "$work/m/curve-99" ] || fail "the map has 98 curves or more"
+mkdir "$work/m/curve-99" && cp "$work/m/curve-1/"* "$work/m/curve-99/" && echo n > "$work/m/curve-98"
+cp -r "$work/m" "$work/m-mine"
+"$bin" map "${map[@]}" > "$work/m.txt" 2>&1 && pass || fail "map again: $(cat "$work/m.txt")"
+diff -r "$work/m-mine" "$work/m" > /dev/null && pass || fail "the map written again lost the user's curve-<k>: $(ls "$work/m")"
+grep -qF "kept 2 other file(s): curve-98, curve-99" "$work/m.txt" && pass || fail "not listed: $(cat "$work/m.txt")"
 finish

@@ -87,7 +87,13 @@ expect 2 "it is a directory" "$bin" plot paper-5.1-omega-up --results "$root/res
 expect 2 "ending in .png" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$work/out/diagram.txt"
 expect 2 "it is empty" "$bin" plot paper-5.1-omega-up --results "$root/results" --output ""
 expect 2 "does not exist" "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$work/out/missing/x.png"
-expect 2 "cannot read" "$bin" plot paper-5.1-omega-up --results "$work/out" --output "$png"
+# A directory that holds no result: the message says what plot reads (before: "cannot read
+# '<dir>/branch.csv'", not what a valid input is).
+expect 2 "run = '$work/out/paper-5.1-omega-up' is invalid: it does not exist: valid a run or trace name under --results" \
+  "$bin" plot paper-5.1-omega-up --results "$work/out" --output "$png"
+mkdir "$work/not-a-run"
+expect 2 "run = '$work/not-a-run' is invalid: it holds no branch.csv: valid a run or trace name under --results, or the path of a result: a run's directory (results/<run>/, holding branch.csv, special-points.csv and summary.json), a trace's (trace.json, branch-<k>/)" \
+  "$bin" plot "$work/not-a-run" --output "$png"
 # No interpreter, and an interpreter without matplotlib (a module of that name that fails to import).
 expect 1 "apt-get install" env STICKSLIP_PYTHON=/nonexistent/python3 "$bin" plot paper-5.1-omega-up --results "$root/results" --output "$png"
 mkdir -p "$work/fake/matplotlib"

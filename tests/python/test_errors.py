@@ -148,8 +148,8 @@ def test_a_saved_run_does_not_replace_a_directory_of_the_user(tmp_path):
 # type", a RuntimeError) or that passed unchecked (a NaN user value) are ValueErrors naming them.
 @pytest.mark.parametrize("keywords, message", [
     ({"max_points": 10**30}, "max-points = 1000000000000000000000000000000 is invalid"),
-    ({"max_points": "3"}, "max-points = '3' is invalid: valid range whole numbers"),
-    ({"max_points": True}, "max-points = True is invalid"),
+    ({"max_points": "3"}, "max_points = '3' is invalid: valid range a whole number"),
+    ({"max_points": True}, "max_points = True is invalid"),
     ({"detect_folds": "maybe"}, "detect_folds = 'maybe' is invalid: valid range True or False"),
     ({"detect_branch_points": 1}, "detect_branch_points = 1 is invalid: valid range True or False"),
     ({"user_values": [float("nan")]}, "user_values = nan is invalid: valid range finite numbers"),
@@ -162,21 +162,46 @@ def test_continuation_keywords_of_the_wrong_kind_raise_value_error_naming_them(k
 
 @pytest.mark.parametrize("call, message", [
     # pybind11's RuntimeError "Unable to cast Python instance of type <class 'int'>" before the fix
-    (lambda: stickslip.solve(preset=5), "preset must be a str (a paper preset's name: paper-4.1, "),
-    (lambda: stickslip.solve(point=5), "point must be a str (a stored point 'RUN:LABEL'), got int 5"),
+    (lambda: stickslip.solve(preset=5), "preset = 5 is invalid: valid range a str, a paper preset's name: paper-4.1, "),
+    (lambda: stickslip.solve(point=5), "point = 5 is invalid: valid range a str, a stored point 'RUN:LABEL'"),
+    (lambda: stickslip.solve(preset="paper-5.1", shooting=5), "shooting = 5 is invalid: valid range a str"),
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", shooting=5),
+     "shooting = 5 is invalid: valid range a str"),
     # taken as 1.0 before the fix
-    (lambda: stickslip.solve(preset="paper-5.1", set={"omega": True}), "set['omega'] must be a number, got bool True"),
+    (lambda: stickslip.solve(preset="paper-5.1", set={"omega": True}),
+     "set['omega'] = True is invalid: valid range a number (int or float, not bool)"),
     (lambda: stickslip.simulate(preset="paper-5.1", set={"omega": "0.57"}),
-     "set['omega'] must be a number, got str '0.57'"),
-    (lambda: stickslip.solve(preset="paper-5.1", guess={"d1": False}), "guess['d1'] must be a number, got bool False"),
+     "set['omega'] = '0.57' is invalid: valid range a number"),
+    (lambda: stickslip.solve(preset="paper-5.1", guess={"d1": False}), "guess['d1'] = False is invalid: valid range a number"),
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", ds=True),
+     "ds = True is invalid: valid range a number"),
+    # float("1e-6") and str(5) took them before the fix
+    (lambda: stickslip.find(preset="paper-4.1", tolerance="1e-6"), "tolerance = '1e-6' is invalid: valid range a number"),
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", output=5),
+     "output = 5 is invalid: valid range a str"),
+    (lambda: stickslip.sweep(preset="paper-5.1", range=(0.55, 0.6), parameter=5), "parameter = 5 is invalid: valid range a str"),
+    # OverflowError ("int too large to convert to float") before the fix
+    (lambda: stickslip.simulate(preset="paper-5.1", periods=10**400), "periods = 1000000000"),
+    (lambda: stickslip.continue_orbit("omega", (0.5, 10**400), preset="paper-5.1"), "range = (0.5, 1000000000"),
+    (lambda: stickslip.find(preset="paper-4.1", tolerance=-10**309), "tolerance = -1000000000"),
     # bool('no') is True: tie_u_r = 'no' tied u_r to u_s before the fix (u_r = 0.1, not 0.2996)
-    (lambda: stickslip.solve(preset="paper-4.1", tie_u_r="no"), "tie_u_r must be True or False, got str 'no'"),
-    (lambda: stickslip.solve(preset="paper-4.1", paper_choice=1), "paper_choice must be True or False, got int 1"),
+    (lambda: stickslip.solve(preset="paper-4.1", tie_u_r="no"), "tie_u_r = 'no' is invalid: valid range True or False"),
+    (lambda: stickslip.solve(preset="paper-4.1", paper_choice=1), "paper_choice = 1 is invalid: valid range True or False"),
+    (lambda: stickslip.trace("omega", (0.5, 0.6), preset="paper-4.1", allow_inadmissible="yes"),
+     "allow_inadmissible = 'yes' is invalid: valid range True or False"),
+    (lambda: stickslip.run(5), "path = 5 is invalid: valid range a str or an os.PathLike path"),
+    # int() took 2.5 as 2 and '3' as 3 before the fix
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3).sample(0, 2.5),
+     "n = 2.5 is invalid: valid range an int (not bool)"),
+    (lambda: stickslip.continue_orbit("omega", (0.5, 0.6), preset="paper-5.1", max_points=3).sample("1"),
+     "point = '1' is invalid: valid range an int (not bool)"),
 ])
-def test_a_start_keyword_of_the_wrong_type_raises_type_error_naming_it(call, message):
-    with pytest.raises(TypeError) as error:
+def test_a_keyword_of_the_wrong_type_raises_the_bad_input_error_naming_it(call, message):
+    # One check for every keyword (_inputs._checked): a ValueError, as all bad input, and a TypeError.
+    with pytest.raises(stickslip.InvalidArgument) as error:
         call()
-    assert message in str(error.value)
+    assert isinstance(error.value, ValueError) and isinstance(error.value, TypeError)
+    assert message in str(error.value) and "\n" not in str(error.value)
 
 
 def test_numbers_of_numpy_are_numbers():

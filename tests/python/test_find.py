@@ -79,7 +79,7 @@ def test_continue_orbit_from_an_orbit_keeps_its_unknowns():
 
 def test_start_is_an_orbit_and_the_whole_start():
     orbit = stickslip.solve(preset="paper-4.1")
-    with pytest.raises(TypeError, match="start must be a stickslip.Orbit"):
+    with pytest.raises(TypeError, match="start = .* is invalid: valid range a stickslip.Orbit"):
         stickslip.continue_orbit("omega", (0.5, 0.7), start=stickslip.find(preset="paper-4.1"))
     with pytest.raises(TypeError, match="preset= cannot be given with it"):
         stickslip.trace("omega", (0.5, 0.7), start=orbit, preset="paper-4.1")

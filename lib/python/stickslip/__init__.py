@@ -23,7 +23,8 @@ The same computations as the command line, with the same keys and the same check
 
 Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
 ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
-range>"); a Newton method that does not converge raises ConvergenceError, whose `summary`
+range>"); a keyword of the wrong type (ds=True, tolerance="1e-6") InvalidArgument, a ValueError and
+a TypeError with a message of that form; a Newton method that does not converge raises ConvergenceError, whose `summary`
 attribute holds the Newton summary. Long computations release the GIL; a sweep runs its chains
 on every core.
 """
@@ -39,11 +40,11 @@ from ._stickslip import ConvergenceError, MapSweepResult, Orbit, Parameters, Sig
 from ._stickslip import __version__
 from ._branch import Branch, Continuation
 from ._trace import Trace
-from ._inputs import _one_off_run, _start
+from ._inputs import InvalidArgument, _checked, _one_off_run, _optional_text, _pair, _start
 from . import plotting
 
 __all__ = [
-    "Branch", "Continuation", "ConvergenceError", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
+    "Branch", "Continuation", "ConvergenceError", "InvalidArgument", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
     "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
     "plot", "plotting", "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
@@ -158,7 +159,8 @@ def simulate(parameters=None, state=None, phi=None, *, periods=2.0, method="exac
     stops early (chattering) is returned with completed False and the reason in `message`.
     """
     start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
-    return Simulation(_core._simulate(start, float(periods), str(method), float(samples_per_period)))
+    return Simulation(_core._simulate(start, _checked(periods, "periods", "number"), _checked(method, "method", "text"),
+                                      _checked(samples_per_period, "samples_per_period", "number")))
 
 
 def solve(parameters=None, signature=None, *, preset=None, point=None, results="results", set=None, guess=None,
@@ -181,7 +183,7 @@ def solve(parameters=None, signature=None, *, preset=None, point=None, results="
     """
     start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
                    guess=guess, free=free, fix=fix, tie_u_r=tie_u_r, paper_choice=paper_choice)
-    return _core._solve(start, str(shooting), "" if linear_solver is None else str(linear_solver))
+    return _core._solve(start, _checked(shooting, "shooting", "text"), _optional_text(linear_solver, "linear_solver"))
 
 
 @_dataclass(frozen=True)
@@ -219,7 +221,9 @@ def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple
     4, 5). Bad input raises ValueError.
     """
     start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
-    return Found(**_core._find(start, float(transients), float(max_multiple), float(tolerance), float(confirmations)))
+    numbers = [_checked(value, name, "number") for name, value in (("transients", transients), ("max_multiple", max_multiple),
+                                                                  ("tolerance", tolerance), ("confirmations", confirmations))]
+    return Found(**_core._find(start, *numbers))
 
 
 def continue_orbit(parameter, range, **keywords):
@@ -305,9 +309,12 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
     for key in _NOT_TRACE_KEYWORDS:
         if key in keywords:
             raise TypeError(f"trace() got an unexpected keyword argument '{key}' (a trace goes both ways)")
-    options = {"max_branches": max_branches, "max_amplitude": float(max_amplitude),
-               "loop_tolerance": float(loop_tolerance), "follow_past_unswitched": follow_past_unswitched,
-               "follow_bifurcations": follow_bifurcations, "allow_inadmissible": allow_inadmissible}
+    options = {"max_branches": _checked(max_branches, "max_branches", "count"),
+               "max_amplitude": _checked(max_amplitude, "max_amplitude", "number"),
+               "loop_tolerance": _checked(loop_tolerance, "loop_tolerance", "number"),
+               "follow_past_unswitched": _checked(follow_past_unswitched, "follow_past_unswitched", "flag"),
+               "follow_bifurcations": _checked(follow_bifurcations, "follow_bifurcations", "count"),
+               "allow_inadmissible": _checked(allow_inadmissible, "allow_inadmissible", "flag")}
     return Trace(_core._trace(_one_off_run(parameter, range, **keywords), options))
 
 
@@ -315,7 +322,7 @@ def run(path, results="results"):
     """Run a run file (TOML, continuation-scripts/), as `stickslip run`, without writing: returns the
     Branch, or the Trace of a run file with a [trace] table; result.save(f"{results}/{result.output}")
     writes the files `stickslip run` writes. Restart points are read from `results`."""
-    run_input = _core._run_file(str(path), str(results))
+    run_input = _core._run_file(_checked(path, "path", "path"), _checked(results, "results", "path"))
     if run_input.is_trace:
         return Trace(_core._trace(run_input, None))
     return Branch(_core._continue(run_input))
@@ -344,10 +351,12 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
     result.csv() is the file `stickslip sweep --output` writes.
     """
     origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
-    low, high = range
-    options = {"parameter": str(parameter), "from": float(low), "to": float(high), "steps": float(steps),
-               "transients": float(transients), "periods": float(periods), "start": str(start),
-               "chains": float(chains), "scatter": float(scatter), "seed": float(seed), "threads": float(threads)}
+    low, high = _pair(range, "range")
+    numbers = {"steps": steps, "transients": transients, "periods": periods, "chains": chains, "scatter": scatter,
+               "seed": seed, "threads": threads}
+    options = {"parameter": _checked(parameter, "parameter", "text"), "from": low, "to": high,
+               "start": _checked(start, "start", "text"),
+               **{name: _checked(value, name, "number") for name, value in numbers.items()}}
     return _core._sweep(origin, options)
 
 
@@ -379,10 +388,11 @@ def map_sweep(parameters=None, state=None, phi=None, *, first_range, second_rang
     `stickslip map-sweep --output` writes. The GIL is released while the map is computed.
     """
     origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
-    options = {"first": str(first), "second": str(second), "first_from": float(first_range[0]),
-               "first_to": float(first_range[1]), "first_steps": float(first_steps),
-               "second_from": float(second_range[0]), "second_to": float(second_range[1]),
-               "second_steps": float(second_steps), "transients": float(transients), "periods": float(periods),
-               "starts": float(starts), "scatter": float(scatter), "seed": float(seed),
-               "tolerance": float(tolerance), "threads": float(threads)}
+    first_from, first_to = _pair(first_range, "first_range")
+    second_from, second_to = _pair(second_range, "second_range")
+    numbers = {"first_steps": first_steps, "second_steps": second_steps, "transients": transients, "periods": periods,
+               "starts": starts, "scatter": scatter, "seed": seed, "tolerance": tolerance, "threads": threads}
+    options = {"first": _checked(first, "first", "text"), "second": _checked(second, "second", "text"),
+               "first_from": first_from, "first_to": first_to, "second_from": second_from, "second_to": second_to,
+               **{name: _checked(value, name, "number") for name, value in numbers.items()}}
     return _core._map_sweep(origin, options)

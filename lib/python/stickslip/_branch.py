@@ -8,7 +8,7 @@ import io as _io
 import numpy as _np
 
 from . import _stickslip as _core
-from ._inputs import _one_off_run
+from ._inputs import _checked, _one_off_run, _pair
 
 _TEXT_COLUMNS = ("label", "type", "test_function")
 _INTEGER_COLUMNS = ("pt", "stable", "admissible", "stops", "sticks", "newton_iterations", "located")
@@ -95,14 +95,14 @@ class Branch(_Table):
     @classmethod
     def load(cls, directory):
         """The run stored in `directory` (branch.csv, special-points.csv, summary.json)."""
-        return cls(_core._StoredRun.load(str(directory)))
+        return cls(_core._StoredRun.load(_checked(directory, "directory", "path")))
 
     def save(self, directory):
         """Writes the run's three files into `directory`, whose name becomes the run's output name
         (results/<name>/, as `--output name` would). The directory is replaced as a whole; other
         files in it are kept and their names returned. A directory that does not hold a stickslip
         run raises ValueError, and nothing is touched."""
-        return self._stored.save(str(directory))
+        return self._stored.save(_checked(directory, "directory", "path"))
 
     def files(self):
         """{file name: text} of the three result files."""
@@ -114,7 +114,7 @@ class Branch(_Table):
     def sample(self, point, n=200):
         """(t, x) over one period of the orbit at branch point `point` (0-based, negative from the
         end): n >= 2 equally spaced times and the state (x1, x2, x1', x2') at each."""
-        return self._stored.sample(int(point), int(n))
+        return self._stored.sample(_checked(point, "point", "index"), _checked(n, "n", "index"))
 
     def special_point(self, label):
         """The special point labelled `label` ("LP4")."""
@@ -148,9 +148,13 @@ class Branch(_Table):
         if self._computed is None:
             raise ValueError(f"switch = {label!r} is invalid: valid on a branch computed in this process "
                              "(a loaded branch: continue_orbit(point='RUN:LABEL', switch_branch=True) at a PD or an SB)")
-        options = {"range": None if range is None else (float(range[0]), float(range[1])), "output": output,
-                   "ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
-        return Branch(self._computed.switch(str(label), int(side), options))
+        kinds = {"output": "text", "ds": "number", "ds_min": "number", "ds_max": "number", "max_points": "count"}
+        given = {"output": output, "ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
+        options = {key: None if value is None else _checked(value, key, kinds[key]) for key, value in given.items()}
+        options["range"] = None if range is None else _pair(range, "range")
+        if _checked(side, "side", "index", "+1 or -1") not in (1, -1):
+            raise ValueError(f"side = {side!r} is invalid: valid range +1 or -1")
+        return Branch(self._computed.switch(_checked(label, "label", "text"), int(side), options))
 
     def plot(self, **options):
         """The branch as a matplotlib Figure, as `stickslip plot` draws it: y over x (default
@@ -203,7 +207,7 @@ class Continuation:
     def from_run_file(cls, path, results="results"):
         """The continuation a run file describes, to be stepped."""
         self = cls.__new__(cls)
-        self._stepper = _core._Stepper(_core._run_file(str(path), str(results)))
+        self._stepper = _core._Stepper(_core._run_file(_checked(path, "path", "path"), _checked(results, "results", "path")))
         self._yielded = 0
         return self
 

@@ -4,6 +4,7 @@ NumPy arrays, how each branch began and ended and how each direction ended (trac
 
 from . import _stickslip as _core
 from ._branch import Branch, _read_table, _Table
+from ._inputs import _checked
 
 
 class Trace(_Table):
@@ -38,14 +39,14 @@ class Trace(_Table):
     @classmethod
     def load(cls, directory):
         """The trace stored in `directory` (trace.json, trace.csv, branch-<k>/)."""
-        return cls(_core._StoredTrace.load(str(directory)))
+        return cls(_core._StoredTrace.load(_checked(directory, "directory", "path")))
 
     def save(self, directory):
         """Writes the trace's files into `directory`, whose name becomes the trace's output name. The
         directory is replaced as a whole; other files in it are kept and their names returned. A
         directory that holds neither a stickslip trace nor a run raises ValueError, and nothing is
         touched."""
-        return self._stored.save(str(directory))
+        return self._stored.save(_checked(directory, "directory", "path"))
 
     def files(self):
         """{file name: text} of trace.csv and trace.json (each branch's: branch.files())."""

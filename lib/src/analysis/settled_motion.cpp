@@ -93,6 +93,26 @@ LeastSectionPeriod LeastPeriodOnSection(const std::vector<State>& section, doubl
   return {p, 0.0};
 }
 
+struct PerPeriod {
+  double stops = 0.0;
+  double sticks = 0.0;
+};
+
+// Stops and sticks per forcing period over the first `periods` forcing periods of the record (the
+// events are in time order).
+PerPeriod CountPerPeriod(const SimulationResult& r, int periods, double forcing_period) {
+  PerPeriod count;
+  const double end = periods * forcing_period;
+  for (const Event& e : r.events) {
+    if (e.t >= end) break;
+    count.stops += e.kind == EventKind::kStop;
+    count.sticks += e.mode_after == Mode::kStick;
+  }
+  count.stops /= periods;
+  count.sticks /= periods;
+  return count;
+}
+
 }  // namespace
 
 SettledMotion SimulateSettled(const Parameters& p, const State& start, double phi_section, const SettleOptions& o) {
@@ -123,16 +143,16 @@ SettledMotion SimulateSettled(const Parameters& p, const State& start, double ph
   }
   for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAt(r, k * period));
   motion.last = motion.section.back();
-  for (const Event& e : r.events) {
-    motion.stops_per_period += e.kind == EventKind::kStop;
-    motion.sticks_per_period += e.mode_after == Mode::kStick;
-  }
   motion.amplitude_x2 = AmplitudeX2(r);
-  motion.stops_per_period /= o.recorded_periods;
-  motion.sticks_per_period /= o.recorded_periods;
   const LeastSectionPeriod least = LeastPeriodOnSection(motion.section, o.periodicity_tolerance);
   motion.period = least.period;
   motion.settling = least.settling;
+  // Over whole least periods (a period-p motion gives multiples of 1/p), the record's whole when
+  // there is none: a window of part of a period would count that part's events once too few or many.
+  const int counted = least.period > 0 ? o.recorded_periods / least.period * least.period : o.recorded_periods;
+  const PerPeriod per_period = CountPerPeriod(r, counted, period);
+  motion.stops_per_period = per_period.stops;
+  motion.sticks_per_period = per_period.sticks;
   return motion;
 }
 

@@ -1,6 +1,8 @@
 #include "stickslip/io/atlas_files.hpp"
 
 #include <cmath>
+#include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <system_error>
@@ -189,14 +191,32 @@ std::string FormatIntervalsCsv(const std::vector<StoredTrace>& traces) {
 
 bool IsAtlasFile(std::string_view name) { return name == kAtlasJson || name == kIntervalsCsv || name == kBruteForceCsv; }
 
-// Ours: the atlas's files, its trace-<t>/ directories and, in them, what a trace owns.
+// The atlas's files and trace directories, `own_trace` telling which trace-<t> names are its and
+// `in_trace` what is the trace's inside one of them.
+detail::OwnedEntry AtlasEntries(const detail::OwnedName& own_trace,
+                                const std::function<detail::OwnedEntry(const std::string& trace)>& in_trace) {
+  return [own_trace, in_trace](const fs::path& relative) {
+    const std::string top = relative.begin()->string();
+    if (!own_trace(top)) return std::distance(relative.begin(), relative.end()) == 1 && IsAtlasFile(top);
+    return std::distance(relative.begin(), relative.end()) == 1 || in_trace(top)(relative.lexically_relative(top));
+  };
+}
+
+// What an atlas writes: its files, trace-<t>/ and in them what a trace writes.
 detail::OwnedEntry AtlasEntries() {
   const detail::OwnedEntry trace = detail::TraceEntries();
-  return [trace](const fs::path& relative) {
-    const std::string top = relative.begin()->string();
-    if (!detail::IsNumberedName(top, kTracePrefix, false)) return std::distance(relative.begin(), relative.end()) == 1 && IsAtlasFile(top);
-    return std::distance(relative.begin(), relative.end()) == 1 || trace(relative.lexically_relative(top));
-  };
+  return AtlasEntries([](std::string_view name) { return detail::IsNumberedName(name, kTracePrefix, false); },
+                      [trace](const std::string&) { return trace; });
+}
+
+// What the atlas in `directory` wrote: its files, the traces its atlas.json lists, and in them what
+// their trace.json lists (a user's trace-9/, or branch-9/ in a trace, is the user's).
+detail::OwnedEntry AtlasEntriesBefore(const fs::path& directory) {
+  const std::set<std::string> listed = detail::ListedNames(directory / kAtlasJson, {"name"});
+  std::map<std::string, detail::OwnedEntry> traces;
+  for (const std::string& name : listed) traces[name] = detail::TraceEntriesBefore(directory / name);
+  return AtlasEntries([listed](std::string_view name) { return listed.contains(std::string(name)); },
+                      [traces](const std::string& name) { return traces.at(name); });
 }
 
 }  // namespace
@@ -249,7 +269,7 @@ std::vector<std::string> WriteAtlasFiles(const fs::path& results_root, const Sto
         WriteFileAtomically(directory / kIntervalsCsv, atlas.files.intervals_csv);
         WriteFileAtomically(directory / kBruteForceCsv, atlas.files.brute_force_csv);
       },
-      AtlasEntries());
+      AtlasEntries(), AtlasEntriesBefore(results_root / atlas.output));
 }
 
 }  // namespace stickslip

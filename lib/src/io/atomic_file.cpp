@@ -11,8 +11,10 @@
 #include <unistd.h>
 
 #include "deferred_signals.hpp"
+#include "stale_temporaries.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "temporary_name.hpp"
+#include "test_fault_points.hpp"
 
 namespace stickslip {
 
@@ -43,6 +45,7 @@ AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& link_or_path) {
         fmt::format("cannot write '{}': directory '{}' does not exist", path_.string(),
                     directory.string()));
   }
+  detail::RemoveStaleFileTemporaries(path_);  // a killed writer's, provably dead; the others listed
   temporary_ = directory / TemporaryName(path_);
   // Exclusive and never through a link: a file planted at the (predictable) temporary name is not
   // the run's to truncate or to rename over the output.
@@ -103,6 +106,7 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
   AtomicFileWriter out(path);
   out.Write(content);
   out.Close();
+  if (signals.Outermost()) detail::PauseBeforeRenameForTests();
   detail::DeferredSignals::ThrowIfPending();
   out.Commit();
 }
@@ -115,6 +119,7 @@ void WriteFilesAtomically(const std::vector<FileContent>& files) {
     writers.back()->Write(file.content);
     writers.back()->Close();
   }
+  if (signals.Outermost()) detail::PauseBeforeRenameForTests();
   detail::DeferredSignals::ThrowIfPending();
   for (std::size_t k = 0; k < writers.size(); ++k) {
     try {

@@ -261,10 +261,14 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const
   fs::create_directories(parent, error);
   if (error) throw InvalidInput("output", "'" + directory.string() + "'", "a directory that can be created");
   // The curves' directories are curve-<k>; "curve-3-continued" or "curve-notes.md" is the user's.
-  // In them, their run files; anything else there is the user's too.
-  const detail::OwnedEntry ours = detail::EntriesWithRuns(
-      [](std::string_view name) { return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd; }, "curve-",
-      false);
+  // In them, their run files; anything else there is the user's too. Of the old directory's curves
+  // only those its regions.json lists are the map's: a "curve-9" it does not list is kept whole.
+  const auto own_file = [](std::string_view name) { return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd; };
+  const detail::OwnedEntry ours =
+      detail::EntriesWithRuns(own_file, [](std::string_view name) { return detail::IsNumberedName(name, "curve-", false); });
+  const std::set<std::string> listed = detail::ListedNames(directory / kRegionsJson, {"directory"});
+  const detail::OwnedEntry ours_before =
+      detail::EntriesWithRuns(own_file, [&listed](std::string_view name) { return listed.contains(std::string(name)); });
   return detail::ReplaceDirectory(
       parent, directory.filename().string(),
       [&](const fs::path& target) {
@@ -273,7 +277,7 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const
         WriteFileAtomically(target / kRegionsJson, files.regions_json);
         if (!files.comparison_md.empty()) WriteFileAtomically(target / kComparisonMd, files.comparison_md);
       },
-      ours);
+      ours, ours_before);
 }
 
 }  // namespace stickslip

@@ -72,16 +72,43 @@ bool IsRunEntry(const fs::path& relative) {
   return std::distance(relative.begin(), relative.end()) == 1 && IsRunFileName(relative.filename().string());
 }
 
-OwnedEntry EntriesWithRuns(std::function<bool(std::string_view name)> own_file, std::string prefix, bool labelled) {
-  return [own_file = std::move(own_file), prefix = std::move(prefix), labelled](const fs::path& relative) {
+OwnedEntry EntriesWithRuns(OwnedName own_file, OwnedName own_run) {
+  return [own_file = std::move(own_file), own_run = std::move(own_run)](const fs::path& relative) {
     const std::string top = relative.begin()->string();
-    const bool run = IsNumberedName(top, prefix, labelled);
+    const bool run = own_run(top);
     switch (std::distance(relative.begin(), relative.end())) {
       case 1: return own_file(top) || run;
       case 2: return run && IsRunFileName(relative.filename().string());
       default: return false;
     }
   };
+}
+
+namespace {
+
+std::set<std::string> ValuesOf(const nlohmann::ordered_json& json, const std::vector<std::string>& keys) {
+  std::set<std::string> found;
+  if (json.is_array()) {
+    for (const auto& element : json) found.merge(ValuesOf(element, keys));
+  } else if (json.is_object()) {
+    for (const auto& [key, value] : json.items()) {
+      if (value.is_string() && std::find(keys.begin(), keys.end(), key) != keys.end()) found.insert(value.get<std::string>());
+      found.merge(ValuesOf(value, keys));
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
+std::set<std::string> ListedNames(const fs::path& index, const std::vector<std::string>& keys) {
+  std::error_code ignored;
+  if (!fs::is_regular_file(index, ignored)) return {};
+  try {
+    return ValuesOf(ParseJsonObject(ReadTextFile(index), index), keys);
+  } catch (const InvalidInput&) {
+    return {};  // a damaged index lists nothing: every numbered entry is then the user's, and kept
+  }
 }
 
 namespace {
@@ -139,7 +166,8 @@ std::vector<std::string> SortedNames(const std::vector<fs::path>& entries) {
 }  // namespace
 
 std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const std::string& output,
-                                          const std::function<void(const fs::path&)>& write, const OwnedEntry& ours) {
+                                          const std::function<void(const fs::path&)>& write, const OwnedEntry& ours,
+                                          const OwnedEntry& ours_before) {
   fs::create_directories(results_root);
   RemoveStaleTemporaries(results_root, output, ours);
   // Destroyed last: a signal during the write ends in the catch below, then the process ends by it.
@@ -157,7 +185,7 @@ std::vector<std::string> ReplaceDirectory(const fs::path& results_root, const st
     if (signals.Outermost()) PauseBeforeRenameForTests();
     DeferredSignals::ThrowIfPending();
     if (fs::exists(target)) {
-      for (const fs::path& entry : OthersIn(target, {}, ours)) {
+      for (const fs::path& entry : OthersIn(target, {}, ours_before)) {
         MoveEntry(target, temporary, entry);
         kept.push_back(entry);
       }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,23 +41,31 @@ bool IsRunFileName(std::string_view name);
 // The entries a run's directory owns: its three files.
 bool IsRunEntry(const std::filesystem::path& relative);
 
-// The entries owned by a directory that holds, besides the files `own_file` names, run
-// directories named by IsNumberedName(prefix, labelled) (a trace's branch-<k>, a map's curve-<k>):
-// those directories and their three files. Anything else inside them is the user's (an export, notes,
-// a continuation written into them).
-OwnedEntry EntriesWithRuns(std::function<bool(std::string_view name)> own_file, std::string prefix, bool labelled);
+// The entries owned by a directory that holds, besides the files `own_file` names, the run
+// directories `own_run` names (a trace's branch-<k>, a map's curve-<k>): those directories and their
+// three files. Anything else inside them is the user's (an export, notes, a continuation written
+// into them).
+using OwnedName = std::function<bool(std::string_view name)>;
+OwnedEntry EntriesWithRuns(OwnedName own_file, OwnedName own_run);
 
-// Writes results_root/<output>/ as a whole: `write` fills a temporary directory beside it, which
-// then replaces the old one. Every entry of the old directory, at any depth, for which `ours` is
-// false (a file of the user's, an export, a directory of the user's, moved whole) moves into the
-// same place in the new one first (inside an entry of ours that is a directory); their relative
-// paths are returned, sorted. On a failure the old directory stays as it was, and of the temporary
-// one only `ours` entries are removed (a file of the user's that could not be moved back stays).
+// The values of `keys`, at any depth, of the JSON object in `index` (a trace.json's branch names,
+// a regions.json's curve directories): the run directories an earlier writer listed there, and so
+// the only ones of its directory that are its own (a user's "branch-9/" there is the user's). None
+// where the file is missing or no JSON object.
+std::set<std::string> ListedNames(const std::filesystem::path& index, const std::vector<std::string>& keys);
+
+// Writes results_root/<output>/ as a whole: `write` fills a temporary directory beside it with
+// entries for which `ours` is true, which then replaces the old one. Every entry of the old
+// directory, at any depth, for which `ours_before` (what its writer made) is false (a file of the
+// user's, an export, a directory of the user's, moved whole) moves into the same place in the new
+// one first (inside an entry of ours that is a directory); their relative paths are returned,
+// sorted. On a failure the old directory stays as it was, and of the temporary one only `ours`
+// entries are removed (a file of the user's that could not be moved back stays).
 // SIGINT, SIGTERM and SIGHUP while the temporary exists are a failure too, after which the process
 // ends by the signal (deferred_signals.hpp). First, the temporaries that earlier writers of the
 // output left and that are provably dead are removed, the others listed (stale_temporaries.hpp).
 std::vector<std::string> ReplaceDirectory(const std::filesystem::path& results_root, const std::string& output,
                                           const std::function<void(const std::filesystem::path&)>& write,
-                                          const OwnedEntry& ours);
+                                          const OwnedEntry& ours, const OwnedEntry& ours_before);
 
 }  // namespace stickslip::detail

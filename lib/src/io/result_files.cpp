@@ -439,7 +439,7 @@ std::vector<std::string> WriteRunFiles(const fs::path& results_root, const Store
         WriteFileAtomically(directory / kSpecialPointsFile, files.special_points_csv);
         WriteFileAtomically(directory / kSummaryFile, files.summary_json);
       },
-      detail::IsRunEntry);
+      detail::IsRunEntry, detail::IsRunEntry);
 }
 
 StoredRun ReadRunFiles(const fs::path& run_directory) {

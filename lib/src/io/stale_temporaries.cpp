@@ -79,4 +79,23 @@ void RemoveStaleTemporaries(const fs::path& results_root, const std::string& out
   for (const auto& [temporary, writer] : found) fmt::print(stderr, "{}\n", Clean(temporary, writer, ours));
 }
 
+void RemoveStaleFileTemporaries(const fs::path& target) {
+  const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ignored;
+  std::vector<std::pair<fs::path, TemporaryWriter>> found;
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, ignored)) {
+    const std::optional<TemporaryWriter> writer = WriterOf(entry.path().filename().string(), target.filename().string(), "tmp");
+    if (writer && entry.is_regular_file(ignored) && !entry.is_symlink(ignored)) found.emplace_back(entry.path(), *writer);
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [temporary, writer] : found) {
+    if (const std::optional<std::string> why = WhyAlive(writer)) {
+      fmt::print(stderr, "note: left '{}': {}\n", temporary.string(), *why);
+    } else if (fs::remove(temporary, ignored)) {
+      fmt::print(stderr, "note: removed '{}': a temporary of process {} on this host, which has ended\n",
+                 temporary.string(), writer.pid);
+    }
+  }
+}
+
 }  // namespace stickslip::detail

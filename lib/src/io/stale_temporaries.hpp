@@ -18,4 +18,10 @@ namespace stickslip::detail {
 // temporary, removed or left, saying why.
 void RemoveStaleTemporaries(const std::filesystem::path& results_root, const std::string& output, const OwnedEntry& ours);
 
+// Before a file is written beside `target` (io/atomic_file.hpp): each temporary file of that target
+// (a regular file, not a link, named exactly as temporary_name.hpp names them) written on this host
+// in this boot by a process that no longer exists is removed; every other stays, for the reasons
+// above. One line on stderr per temporary, removed or left, saying why.
+void RemoveStaleFileTemporaries(const std::filesystem::path& target);
+
 }  // namespace stickslip::detail

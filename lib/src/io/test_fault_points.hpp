@@ -5,8 +5,9 @@
 namespace stickslip::detail {
 
 // Where STICKSLIP_TEST_PAUSE_BEFORE_RENAME names a file: creates it, then waits (at most a minute)
-// for a deferred signal (deferred_signals.hpp). ReplaceDirectory calls it once its temporary is
-// written, just before it moves into place.
+// for a deferred signal (deferred_signals.hpp). ReplaceDirectory, WriteFileAtomically and
+// WriteFilesAtomically call it once their temporary is written, just before it moves into place
+// (only the outermost writer: a directory's files do not pause).
 void PauseBeforeRenameForTests();
 
 }  // namespace stickslip::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
+#include <set>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -415,13 +416,22 @@ void CheckTraceOutputDirectory(const fs::path& results_root, const std::string& 
 
 namespace detail {
 
+namespace {
+bool IsTraceFile(std::string_view name) { return name == kTraceCsv || name == kTraceJson || IsRunFileName(name); }
+}  // namespace
+
 OwnedEntry TraceEntries() {
   // The files a trace writes (its branches branch-<k>, its followed runs branch-<k>-<label>, and
   // their run files); every other entry, at any depth, is the user's ("branch-notes.md", an export
   // in branch-2/, a continuation written into branch-1/).
-  return EntriesWithRuns(
-      [](std::string_view name) { return name == kTraceCsv || name == kTraceJson || IsRunFileName(name); }, kBranchPrefix,
-      true);
+  return EntriesWithRuns(IsTraceFile, [](std::string_view name) { return IsNumberedName(name, kBranchPrefix, true); });
+}
+
+OwnedEntry TraceEntriesBefore(const fs::path& directory) {
+  // Of the old directory's branches only those its trace.json lists are the trace's: a "branch-9" it
+  // does not list (a directory or a file of the user's) is kept whole.
+  const std::set<std::string> listed = ListedNames(directory / kTraceJson, {"name", "followed"});
+  return EntriesWithRuns(IsTraceFile, [listed](std::string_view name) { return listed.contains(std::string(name)); });
 }
 
 void WriteTraceInto(const fs::path& directory, const StoredTrace& trace) {
@@ -438,7 +448,7 @@ std::vector<std::string> WriteTraceFiles(const fs::path& results_root, const Sto
   CheckTraceOutputDirectory(results_root, trace.output);
   return detail::ReplaceDirectory(
       results_root, trace.output, [&](const fs::path& directory) { detail::WriteTraceInto(directory, trace); },
-      detail::TraceEntries());
+      detail::TraceEntries(), detail::TraceEntriesBefore(results_root / trace.output));
 }
 
 StoredTrace ReadTraceFiles(const fs::path& trace_directory) {

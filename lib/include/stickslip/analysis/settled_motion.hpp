@@ -32,6 +32,9 @@ struct SettledMotion {
   // The section after the transient: the states at t = k 2 pi/omega, k = 1..recorded_periods,
   // time 0 being the end of the transient. Empty when the simulation stopped early.
   std::vector<State> section;
+  // Stops and sticks per forcing period, counted over the largest whole number of least periods
+  // (`period`) the record holds, so that a motion of period p gives multiples of 1/p; over the
+  // whole record when no period was found.
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
   // Smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none. Reduced to
