@@ -10,9 +10,12 @@ set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 # Only what this job runs: the program, its MPI front end and the Python module (the figures'
 # scripts), not the tests and benchmarks, nor the packages they need.
+started=$SECONDS
 stickslip_install_packages "${STICKSLIP_PACKAGES[@]}"
+installed=$SECONDS
 stickslip_build "$STICKSLIP_ROOT/build/release" -DCMAKE_BUILD_TYPE=Release -DSTICKSLIP_BUILD_TESTS=OFF \
   -DSTICKSLIP_BUILD_BENCHMARKS=OFF
+built=$SECONDS
 bin="$STICKSLIP_ROOT/build/release/tools/stickslip"
 cd "$STICKSLIP_ROOT"
 "$bin" run --results results continuation-scripts/*.toml
@@ -66,3 +69,4 @@ tools/paper_table.sh "$bin"
 /usr/bin/python3 tools/plot_figures.py --stickslip "$bin" --results results
 /usr/bin/python3 tools/summarize_runs.py results
 /usr/bin/python3 tools/trace_intervals.py results
+stickslip_print_times tools/run.sh install $((installed - started)) build $((built - installed)) run $((SECONDS - built))

@@ -10,7 +10,7 @@ STICKSLIP_PACKAGES=(
   cmake ninja-build g++
   libeigen3-dev libsuitesparse-dev libboost-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenmpi-dev openmpi-bin
-  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib python3-pandas
+  python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pandas
 )
 # What only the tests (tools/test.sh) need besides: GoogleTest, Google Benchmark, clang and its
 # sanitizer runtimes for the libFuzzer targets, AUTO-07p for the export's test, pytest.
@@ -50,4 +50,16 @@ stickslip_build() {
     printf '%s\n' "$options" > "$dir/stickslip-options"
   fi
   cmake --build "$dir" -j "$(nproc)"
+}
+
+# stickslip_print_times <script> <phase> <seconds> [<phase> <seconds>...]: the script's wall time,
+# phase by phase, on one line (tools/fresh_install_check.sh reports it for a fresh machine).
+stickslip_print_times() {
+  local script=$1 line=""
+  shift
+  while [ $# -ge 2 ]; do
+    line+="${line:+, }$1: $2 s"
+    shift 2
+  done
+  echo "== $script wall time: $line"
 }

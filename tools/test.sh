@@ -4,7 +4,9 @@
 #   tools/test.sh --sanitize  AddressSanitizer + UndefinedBehaviorSanitizer build in build/asan
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
+started=$SECONDS
 stickslip_install_packages "${STICKSLIP_PACKAGES[@]}" "${STICKSLIP_TEST_PACKAGES[@]}"
+installed=$SECONDS
 if [ "${1:-}" = "--sanitize" ]; then
   dir="$STICKSLIP_ROOT/build/asan"
   # -O1 and line tables only (-g1): the sanitizers' reports keep their function names and lines,
@@ -19,7 +21,9 @@ else
   # The tests and benchmarks on explicitly: tools/run.sh turns them off in the same tree.
   stickslip_build "$dir" -DCMAKE_BUILD_TYPE=Release -DSTICKSLIP_BUILD_TESTS=ON -DSTICKSLIP_BUILD_BENCHMARKS=ON
 fi
+built=$SECONDS
 # Open MPI is one of the packages installed above: the MPI checks of the map-sweep tests must run
 # here (they fail, not skip, when stickslip-mpi or mpirun is missing).
 export STICKSLIP_REQUIRE_MPI=1
 ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"
+stickslip_print_times "tools/test.sh${1:+ $1}" install $((installed - started)) build $((built - installed)) test $((SECONDS - built))
