@@ -20,66 +20,55 @@ namespace stickslip::cli {
 
 namespace {
 
-// The options as given, with the library's defaults (AtlasOptions, BruteForceMapOptions).
-const AtlasOptions kDefaults;
+// The options as given, with the library's defaults (AtlasCommand).
+const AtlasCommand kDefaults;
 struct AtlasArgs {
   StartFlags origin;
-  std::string parameter = ToString(kDefaults.brute_force.first.parameter);
+  std::string parameter = kDefaults.parameter;
   std::string range;  // LO,HI: required
-  int steps = 40;
-  int transients = kDefaults.brute_force.transient_periods;
-  int periods = kDefaults.brute_force.recorded_periods;
-  int starts = kDefaults.brute_force.scattered_starts;
-  double scatter = kDefaults.brute_force.scatter;
-  int seed = static_cast<int>(kDefaults.brute_force.seed);
-  double tolerance = kDefaults.brute_force.periodicity_tolerance;
-  int max_multiple = kDefaults.max_multiple;
-  double max_amplitude = kDefaults.trace.max_amplitude;
-  int threads = kDefaults.brute_force.threads;
+  int steps = static_cast<int>(kDefaults.steps);
+  int transients = static_cast<int>(kDefaults.transients);
+  int periods = static_cast<int>(kDefaults.periods);
+  int starts = static_cast<int>(kDefaults.starts);
+  double scatter = kDefaults.scatter;
+  int seed = static_cast<int>(kDefaults.seed);
+  double tolerance = kDefaults.tolerance;
+  int max_multiple = static_cast<int>(kDefaults.max_multiple);
+  double max_amplitude = kDefaults.max_amplitude;
+  int threads = static_cast<int>(kDefaults.threads);
   std::string output;  // required
 };
 
-// "LO,HI": two numbers, LO < HI (each grid value is checked against the parameter's range).
+// "LO,HI": two numbers (AtlasOptionsOf checks LO < HI and each grid value).
 std::pair<double, double> ParseRange(const std::string& text) {
   const std::string valid = "LO,HI with LO < HI, both within the parameter's valid range";
   const auto comma = text.find(',');
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
     throw InvalidInput("range", "'" + text + "'", valid);
   }
-  const double low = ParseNumber("range", text.substr(0, comma), valid);
-  const double high = ParseNumber("range", text.substr(comma + 1), valid);
-  if (!(low < high)) throw InvalidInput("range", "'" + text + "'", valid);
-  return {low, high};
+  return {ParseNumber("range", text.substr(0, comma), valid), ParseNumber("range", text.substr(comma + 1), valid)};
 }
 
 AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
-  MapSweepCommand grid;
-  grid.first = args.parameter;
-  std::tie(grid.first_from, grid.first_to) = ParseRange(args.range);
-  grid.first_steps = args.steps;
-  // One row: a parameter other than the atlas's, held at its value.
-  grid.second = args.parameter == "chi" ? "eta" : "chi";
-  grid.second_from = grid.second_to = origin.parameters[*ParameterFromString(grid.second)];
-  grid.second_steps = 0;
-  grid.transients = args.transients;
-  grid.periods = args.periods;
-  grid.starts = args.starts;
-  grid.scatter = args.scatter;
-  grid.seed = args.seed;
-  grid.tolerance = args.tolerance;
-  grid.threads = args.threads;
-  AtlasOptions options;
+  AtlasCommand c;
+  c.parameter = args.parameter;
+  std::tie(c.from, c.to) = ParseRange(args.range);
+  c.steps = args.steps;
+  c.transients = args.transients;
+  c.periods = args.periods;
+  c.starts = args.starts;
+  c.scatter = args.scatter;
+  c.seed = args.seed;
+  c.tolerance = args.tolerance;
+  c.threads = args.threads;
+  c.max_multiple = args.max_multiple;
+  c.max_amplitude = args.max_amplitude;
   try {
-    options.brute_force = MapOptionsOf(grid, origin);
-  } catch (const InvalidInput& e) {  // the grid's own names: first is --parameter, first-steps --steps
-    if (e.field() == "first") throw e.Renamed("parameter");
-    if (e.field() == "first-steps") throw e.Renamed("steps");
+    return AtlasOptionsOf(c, origin);
+  } catch (const InvalidInput& e) {  // the range as the user wrote it
+    if (e.field() == "range") throw InvalidInput("range", "'" + args.range + "'", "LO,HI with LO < HI, both within the parameter's valid range");
     throw;
   }
-  options.max_multiple = args.max_multiple;
-  options.trace.max_amplitude = args.max_amplitude;
-  options.Validate(origin.parameters);
-  return options;
 }
 
 void Report(const std::string& output, const Atlas& atlas, const StoredAtlas& stored, double seconds,

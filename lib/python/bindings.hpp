@@ -62,5 +62,6 @@ void BindErrors(py::module_& m);  // ConvergenceError, and InvalidInput as Value
 void BindOrbits(py::module_& m);
 void BindBranches(py::module_& m);
 void BindTraces(py::module_& m);  // trace_bindings.cpp: traces and brute-force maps
+void BindAtlas(py::module_& m);   // atlas_bindings.cpp
 
 }  // namespace stickslip::python

@@ -605,4 +605,5 @@ PYBIND11_MODULE(_stickslip, m) {
   stickslip::python::BindOrbits(m);
   stickslip::python::BindBranches(m);
   stickslip::python::BindTraces(m);
+  stickslip::python::BindAtlas(m);
 }

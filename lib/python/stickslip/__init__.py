@@ -40,11 +40,12 @@ from ._stickslip import ConvergenceError, MapSweepResult, Orbit, Parameters, Sig
 from ._stickslip import __version__
 from ._branch import Branch, Continuation
 from ._trace import Trace
+from ._atlas import Atlas
 from ._inputs import InvalidArgument, _checked, _one_off_run, _optional_text, _pair, _start
 from . import plotting
 
 __all__ = [
-    "Branch", "Continuation", "ConvergenceError", "InvalidArgument", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
+    "Atlas", "atlas", "Branch", "Continuation", "ConvergenceError", "InvalidArgument", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
     "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
     "plot", "plotting", "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
@@ -396,3 +397,33 @@ def map_sweep(parameters=None, state=None, phi=None, *, first_range, second_rang
                "first_from": first_from, "first_to": first_to, "second_from": second_from, "second_to": second_to,
                **{name: _checked(value, name, "number") for name, value in numbers.items()}}
     return _core._map_sweep(origin, options)
+
+
+_ATLAS_DEFAULTS = _core._atlas_defaults()
+
+
+def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATLAS_DEFAULTS["steps"],
+          transients=_ATLAS_DEFAULTS["transients"], periods=_ATLAS_DEFAULTS["periods"], starts=_ATLAS_DEFAULTS["starts"],
+          scatter=_ATLAS_DEFAULTS["scatter"], seed=_ATLAS_DEFAULTS["seed"], tolerance=_ATLAS_DEFAULTS["tolerance"],
+          max_multiple=_ATLAS_DEFAULTS["max_multiple"], max_amplitude=_ATLAS_DEFAULTS["max_amplitude"],
+          threads=_ATLAS_DEFAULTS["threads"], output="atlas", preset=None, point=None, results="results", set=None):
+    """Every periodic motion over `range` = (min, max) of `parameter` (chi, eta, omega, u_s, u_r), as
+    `stickslip atlas`: a brute force on steps + 1 grid values (rest, the neighbouring value's
+    attractor and `starts` scattered states around the given state at each; transients, periods,
+    scatter, seed, tolerance as map_sweep's), the exact orbit of every attractor of period up to
+    max_multiple (1 to 100; find, whose transient doubles until the motion has settled), and a trace
+    over the whole range from each exact orbit on no branch yet, from its mirror image, and from every
+    confirmed adjacent type a trace did not take (max_amplitude ends a trace at a resonance).
+    parameters, state, phi, preset, point, set: as simulate; output: the name atlas.json records.
+    Returns an Atlas whatever it found (every attractor on a branch or listed with the reason); bad
+    input raises ValueError. The GIL is released while it runs; the result does not depend on threads.
+    """
+    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    low, high = _pair(range, "range")
+    numbers = {"steps": steps, "transients": transients, "periods": periods, "starts": starts, "scatter": scatter,
+               "seed": seed, "tolerance": tolerance, "threads": threads, "max_multiple": max_multiple,
+               "max_amplitude": max_amplitude}
+    options = {"parameter": _checked(parameter, "parameter", "text"), "from": low, "to": high,
+               **{name: _checked(value, name, "number") for name, value in numbers.items()}}
+    return Atlas(_core._atlas(origin, options, _checked(output, "output", "text")))
+

@@ -65,7 +65,9 @@ Json AttractorJson(const Atlas& atlas, const AtlasAttractor& a) {
           {"branch", a.fate == AttractorFate::kOnBranch ? BranchPlace(atlas, a.branch) : ""},
           {"point", a.fate == AttractorFate::kOnBranch ? a.point + 1 : 0},
           {"started_trace", started},
-          {"reason", a.reason}};
+          {"reason", a.fate == AttractorFate::kOnBranch
+                         ? fmt::format("on {} between its points {} and {}", BranchPlace(atlas, a.branch), a.point + 1, a.point + 2)
+                         : a.reason}};
 }
 
 // Per grid value: its attractors, and the branches its stable motions (the attractors placed)

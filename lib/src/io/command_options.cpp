@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string_view>
@@ -250,6 +251,49 @@ BruteForceMapOptions MapOptionsOf(const MapSweepCommand& c, const ModelStart& or
   o.shards = c.shards;
   o.Validate(origin.parameters);  // scatter, the shard, the cells' parameters ("grid ...")
   return o;
+}
+
+AtlasOptions AtlasOptionsOf(const AtlasCommand& c, const ModelStart& origin) {
+  if (!(c.from < c.to)) {
+    throw InvalidInput("range", fmt::format("'{},{}'", c.from, c.to), "LO,HI with LO < HI, both within the parameter's valid range");
+  }
+  // The brute force is one row of a map: its second axis a parameter other than the atlas's, held.
+  MapSweepCommand grid;
+  grid.first = c.parameter;
+  grid.first_from = c.from;
+  grid.first_to = c.to;
+  grid.first_steps = c.steps;
+  const std::optional<ParameterId> first = ParameterFromString(c.parameter);
+  const ParameterId held = kAllParameters[first == kAllParameters[0] ? 1 : 0];
+  grid.second = ToString(held);
+  grid.second_from = grid.second_to = origin.parameters[held];
+  grid.second_steps = 0;
+  grid.transients = c.transients;
+  grid.periods = c.periods;
+  grid.starts = c.starts;
+  grid.scatter = c.scatter;
+  grid.seed = c.seed;
+  grid.tolerance = c.tolerance;
+  grid.threads = c.threads;
+  AtlasOptions options;
+  try {
+    options.brute_force = MapOptionsOf(grid, origin);
+  } catch (const InvalidInput& e) {  // the grid's names: first is the parameter, first-steps the steps
+    if (e.field() == "first") throw e.Renamed("parameter");
+    if (e.field() == "first-steps") throw e.Renamed("steps");
+    throw;
+  }
+  const std::string multiples = fmt::format("whole numbers 1 <= max-multiple <= {}", AtlasOptions::kMaxMultiple);
+  if (!(c.max_multiple >= 1 && c.max_multiple <= AtlasOptions::kMaxMultiple && std::trunc(c.max_multiple) == c.max_multiple)) {
+    throw InvalidInput("max-multiple", c.max_multiple, multiples);
+  }
+  options.max_multiple = static_cast<int>(c.max_multiple);
+  if (!(std::isfinite(c.max_amplitude) && c.max_amplitude > 0.0)) {
+    throw InvalidInput("max-amplitude", c.max_amplitude, "a finite max-amplitude > 0");
+  }
+  options.trace.max_amplitude = c.max_amplitude;
+  options.Validate(origin.parameters);
+  return options;
 }
 
 }  // namespace stickslip

@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "stickslip/analysis/atlas.hpp"
 #include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/analysis/sweep.hpp"
@@ -130,5 +131,28 @@ struct MapSweepCommand {
 // texts and messages.
 std::string MapSweepOptionRange(std::string_view field);
 BruteForceMapOptions MapOptionsOf(const MapSweepCommand& command, const ModelStart& origin);
+
+// atlas: the options as given (the command line's flags, Python's keywords; numbers not yet checked
+// to be whole or in range), the defaults the library's (AtlasOptions; the grid's steps 40).
+// AtlasOptionsOf checks them as the command line names them ("parameter", "range", "steps",
+// "transients", "periods", "starts", "seed", "tolerance", "threads", "max-multiple",
+// "max-amplitude"; the grid values' parameters as "grid"), the brute force's scattered starts
+// around the origin's state.
+struct AtlasCommand {
+  std::string parameter = ToString(AtlasOptions{}.brute_force.first.parameter);
+  double from = 0.0;  // the range: from < to
+  double to = 0.0;
+  double steps = 40;
+  double transients = AtlasOptions{}.brute_force.transient_periods;
+  double periods = AtlasOptions{}.brute_force.recorded_periods;
+  double starts = AtlasOptions{}.brute_force.scattered_starts;
+  double scatter = AtlasOptions{}.brute_force.scatter;
+  double seed = static_cast<double>(AtlasOptions{}.brute_force.seed);
+  double tolerance = AtlasOptions{}.brute_force.periodicity_tolerance;
+  double threads = AtlasOptions{}.brute_force.threads;
+  double max_multiple = AtlasOptions{}.max_multiple;
+  double max_amplitude = AtlasOptions{}.trace.max_amplitude;
+};
+AtlasOptions AtlasOptionsOf(const AtlasCommand& command, const ModelStart& origin);
 
 }  // namespace stickslip
