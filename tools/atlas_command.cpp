@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "brute_force_flags.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "progress_line.hpp"
@@ -27,15 +28,9 @@ struct AtlasArgs {
   std::string parameter = kDefaults.parameter;
   std::string range;  // LO,HI: required
   int steps = static_cast<int>(kDefaults.steps);
-  int transients = static_cast<int>(kDefaults.transients);
-  int periods = static_cast<int>(kDefaults.periods);
-  int starts = static_cast<int>(kDefaults.starts);
-  double scatter = kDefaults.scatter;
-  int seed = static_cast<int>(kDefaults.seed);
-  double tolerance = kDefaults.tolerance;
+  BruteForceFlags brute;
   int max_multiple = static_cast<int>(kDefaults.max_multiple);
   double max_amplitude = kDefaults.max_amplitude;
-  int threads = static_cast<int>(kDefaults.threads);
   std::string output;  // required
 };
 
@@ -54,13 +49,13 @@ AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
   c.parameter = args.parameter;
   std::tie(c.from, c.to) = ParseRange(args.range);
   c.steps = args.steps;
-  c.transients = args.transients;
-  c.periods = args.periods;
-  c.starts = args.starts;
-  c.scatter = args.scatter;
-  c.seed = args.seed;
-  c.tolerance = args.tolerance;
-  c.threads = args.threads;
+  c.transients = args.brute.transients;
+  c.periods = args.brute.periods;
+  c.starts = args.brute.starts;
+  c.scatter = args.brute.scatter;
+  c.seed = args.brute.seed;
+  c.tolerance = args.brute.tolerance;
+  c.threads = args.brute.threads;
   c.max_multiple = args.max_multiple;
   c.max_amplitude = args.max_amplitude;
   try {
@@ -137,23 +132,12 @@ Command AddAtlasCommand(CLI::App& app) {
                                           "the parameter's valid range; required)");
   AddCountOption(*cmd, "--steps", &args->steps, 0, BruteForceMapOptions::kMaxSteps,
                  "intervals of the brute-force grid over the range (0 to 1e4)");
-  AddCountOption(*cmd, "--transients", &args->transients, 0, kMaxTransientPeriods,
-                 "forcing periods discarded per brute-force run (0 to 1e6)");
-  AddCountOption(*cmd, "--periods", &args->periods, 2, BruteForceMapOptions::kMaxRecordedPeriods,
-                 "forcing periods recorded per brute-force run (2 to 1e5)");
-  AddCountOption(*cmd, "--starts", &args->starts, 0, BruteForceMapOptions::kMaxScatteredStarts,
-                 "scattered starts per grid value besides rest and the neighbour (0 to 1000)");
-  AddNumberOption(*cmd, "--scatter", &args->scatter, "0 <= scatter <= 1e6",
-                  "half-width of the box the scattered starts are drawn from, around the given state (0 to 1e6)");
-  AddCountOption(*cmd, "--seed", &args->seed, 0, 1000000000, "seed of the scattered starts (0 to 1e9)");
-  AddNumberOption(*cmd, "--tolerance", &args->tolerance, MapSweepOptionRange("tolerance"),
-                  "section points repeat, and two runs' orbits agree, within this (absolute, max norm; 1e-14 to 1e-2)");
+  AddBruteForceFlags(*cmd, &args->brute, "grid value");
   AddCountOption(*cmd, "--max-multiple", &args->max_multiple, 1, AtlasOptions::kMaxMultiple,
                  fmt::format("the period limit, in forcing periods: longer attractors are listed, not solved (1 to {})",
                              AtlasOptions::kMaxMultiple));
   AddNumberOption(*cmd, "--max-amplitude", &args->max_amplitude, "a finite max-amplitude > 0",
                   "a trace's direction ends at a resonance where max |x1|, |x2| over the orbit passes this (> 0)");
-  AddCountOption(*cmd, "--threads", &args->threads, 0, 1024, "threads (0: every core; 0 to 1024)");
   return {cmd, [args, cmd] {
             if (cmd->count("--range") == 0) throw InvalidInput("range", "(not given)", "--range LO,HI is required");
             return RunAtlas(*args);

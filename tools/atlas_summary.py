@@ -9,8 +9,9 @@ Usage: /usr/bin/python3 tools/atlas_summary.py RESULTS"""
 import csv
 import json
 import os
-import subprocess
 import sys
+
+import splice_readme
 
 FATES = ("on-branch", "no-orbit-type", "not-settled", "above-period-limit", "incomplete", "not-solved", "off-branch")
 
@@ -44,10 +45,7 @@ def main(results):
     for name in atlases:
         lines += ["", f"Intervals of `{name}` (atlas-intervals.csv):", ""]
         lines += intervals_table(os.path.join(directory, name, "atlas-intervals.csv"))
-    with open(os.path.join(directory, "atlases.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    subprocess.run([sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "splice_readme.py"),
-                    results], check=True)
+    splice_readme.write_table(results, "atlases", lines)
 
 
 if __name__ == "__main__":

@@ -6,9 +6,10 @@ writes RESULTS/README.md anew (tools/splice_readme.py), this table between its o
 Usage: /usr/bin/python3 tools/map_summary.py RESULTS"""
 import json
 import os
-import subprocess
 import sys
 from collections import Counter
+
+import splice_readme
 
 
 def main(results):
@@ -32,11 +33,7 @@ def main(results):
             f'{c.get("compared", "–")} of {c.get("cells", "–")} | {c.get("agreeing", "–")} ({c.get("agreeing_stable", "–")}) | '
             f'{c["agreement"]:.3f} | {c.get("disagreements", "–")} ({c.get("explained", "–")}) |' if c else
             f'| {name} | | | | | | | | | |')
-    out = os.path.join(maps, "maps.md")
-    with open(out, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    subprocess.run([sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "splice_readme.py"),
-                    results], check=True)
+    splice_readme.write_table(results, "orbit-type-maps", lines)
 
 
 if __name__ == "__main__":

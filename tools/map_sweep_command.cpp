@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "brute_force_flags.hpp"
 #include "cli_common.hpp"
 #include "progress_line.hpp"
 #include "start_options.hpp"
@@ -34,13 +35,7 @@ struct MapSweepArgs {
   double first_from = 0.0, first_to = 0.0, second_from = 0.0, second_to = 0.0;  // required
   int first_steps = kDefaults.first.steps;
   int second_steps = kDefaults.second.steps;
-  int transients = kDefaults.transient_periods;
-  int periods = kDefaults.recorded_periods;
-  int starts = kDefaults.scattered_starts;
-  double scatter = kDefaults.scatter;
-  int seed = static_cast<int>(kDefaults.seed);
-  double tolerance = kDefaults.periodicity_tolerance;
-  int threads = kDefaults.threads;
+  BruteForceFlags brute;
   std::string shard = fmt::format("{}/{}", kDefaults.shard, kDefaults.shards);
   std::string output;
   std::string merge;  // the merged file
@@ -107,13 +102,13 @@ MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   c.second_from = args.second_from;
   c.second_to = args.second_to;
   c.second_steps = args.second_steps;
-  c.transients = args.transients;
-  c.periods = args.periods;
-  c.starts = args.starts;
-  c.scatter = args.scatter;
-  c.seed = args.seed;
-  c.tolerance = args.tolerance;
-  c.threads = args.threads;
+  c.transients = args.brute.transients;
+  c.periods = args.brute.periods;
+  c.starts = args.brute.starts;
+  c.scatter = args.brute.scatter;
+  c.seed = args.brute.seed;
+  c.tolerance = args.brute.tolerance;
+  c.threads = args.brute.threads;
   std::tie(c.shard, c.shards) = ParseShard(args.shard);
   // Ranks split the rows as shards do (rank 0, the first shard, has the most), so the bound on the
   // runs is checked for a rank's rows.
@@ -185,19 +180,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, in
   AddNumberOption(*cmd, "--second-to", &args->second_to, range, "its value at j = --second-steps");
   AddCountOption(*cmd, "--second-steps", &args->second_steps, 0, BruteForceMapOptions::kMaxSteps,
                  "intervals along j (0 to 1e4)");
-  AddCountOption(*cmd, "--transients", &args->transients, 0, kMaxTransientPeriods,
-                 "forcing periods discarded per run (0 to 1e6)");
-  AddCountOption(*cmd, "--periods", &args->periods, 2, BruteForceMapOptions::kMaxRecordedPeriods,
-                 "forcing periods recorded per run (2 to 1e5): periods up to half of it are detected, a signature "
-                 "needs about 2k + 1 for period k");
-  AddCountOption(*cmd, "--starts", &args->starts, 0, BruteForceMapOptions::kMaxScatteredStarts,
-                 "starts per cell besides rest and the neighbour: the given state (--preset's, --set x10=...; rest if none) and states scattered around it (0 to 1000)");
-  AddNumberOption(*cmd, "--scatter", &args->scatter, "0 <= scatter <= 1e6",
-                  "half-width of the box around the given state the scattered starts are drawn from (0 to 1e6)");
-  AddCountOption(*cmd, "--seed", &args->seed, 0, 1000000000, "seed of the scattered starts (0 to 1e9)");
-  AddNumberOption(*cmd, "--tolerance", &args->tolerance, MapSweepOptionRange("tolerance"),
-                  "section points repeat, and two runs' orbits agree, within this (absolute, max norm; 1e-14 to 1e-2)");
-  AddCountOption(*cmd, "--threads", &args->threads, 0, 1024, "threads (0: every core; 0 to 1024)");
+  AddBruteForceFlags(*cmd, &args->brute, "cell");
   if (shards) {
     cmd->add_option("--shard", args->shard, "compute only the rows j with j mod N = k - 1 (k/N, 1 <= k <= N)")
         ->type_name("K/N")->capture_default_str();

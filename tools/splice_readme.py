@@ -41,6 +41,14 @@ def generate(results, template=TEMPLATE):
     return HEADER + MARKERS.sub(table, text)
 
 
+def write_table(results, name, lines):
+    """Writes the table of marker `name` (its file in TABLES, under `results`) from `lines`, then
+    RESULTS/README.md anew: what each table's script ends with."""
+    with open(os.path.join(results, TABLES[name][0]), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    main([results])
+
+
 def main(argv):
     if len(argv) > 2 or any(a.startswith("-") for a in argv):
         raise SystemExit(__doc__)

@@ -1,5 +1,5 @@
 // Every label any run wrote restarts (issue 22, defect 3): for each special point of every run
-// directory in results/ (runs, the branches of traces and the curves of maps), the start builder
+// directory in results/ (runs, the branches of traces and atlases, the curves of maps), the start builder
 // accepts its stored variables, Newton at the label's parameter converges from them to 1e-10, and
 // one continuation step from it is accepted one way or the other; where the label is a family's
 // end (u_s reached 0), the refusal says so. A fixed amount of work per label: one Newton solve
@@ -18,6 +18,7 @@
 
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/result_files.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/start_input.hpp"
 #include "stickslip/io/trace_files.hpp"
@@ -51,6 +52,13 @@ RunFile RunFileOf(const fs::path& run, const StoredSummary& summary) {
   const std::size_t key = regions.find("\"trace\": \"");
   const std::size_t begin = key + 10, end = regions.find('"', begin);
   return ReadRunFile(kSource / ReadTraceFiles(kSource / regions.substr(begin, end - begin)).run_file);
+}
+
+// The run's choice of unknowns: its run file's; for a run the command line made with no run file (an
+// atlas's branches, started from found orbits and switches), the unknowns at fixed parameters.
+UnknownChoice UnknownsOf(const fs::path& run, const StoredSummary& summary) {
+  if (summary.run_file == kOneOffRunPath) return UnknownsAtFixedParameters(Signature::Parse(summary.signature));
+  return StartUnknowns(StartInputOf(RunFileOf(run, summary), kResults));
 }
 
 struct LabelCase {
@@ -145,8 +153,7 @@ TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
   std::size_t labels = 0;
   for (const fs::path& run : runs) {
     const StoredRun stored = ReadRunFiles(run);
-    const RunFile file = RunFileOf(run, stored.summary);
-    const UnknownChoice unknowns = StartUnknowns(StartInputOf(file, kResults));
+    const UnknownChoice unknowns = UnknownsOf(run, stored.summary);
     const ShootingChoice shooting = *ShootingChoiceFromString(stored.summary.shooting);
     for (const StoredSpecialPoint& s : stored.special_points) {
       ExpectRestarts({run, s.point.label, stored.summary.parameter, unknowns, shooting});

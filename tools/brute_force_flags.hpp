@@ -1,0 +1,28 @@
+// The brute force's options, declared once for the commands that run one (map-sweep, atlas): the
+// transient and the record of every run, the scattered starts, the periodicity tolerance and the
+// threads, with the library's defaults (BruteForceMapOptions).
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "stickslip/analysis/brute_force_map.hpp"
+
+namespace stickslip::cli {
+
+struct BruteForceFlags {
+  int transients = BruteForceMapOptions{}.transient_periods;
+  int periods = BruteForceMapOptions{}.recorded_periods;
+  int starts = BruteForceMapOptions{}.scattered_starts;
+  double scatter = BruteForceMapOptions{}.scatter;
+  int seed = static_cast<int>(BruteForceMapOptions{}.seed);
+  double tolerance = BruteForceMapOptions{}.periodicity_tolerance;
+  int threads = BruteForceMapOptions{}.threads;
+};
+
+// --transients, --periods, --starts, --scatter, --seed, --tolerance and --threads on `cmd`; `per`
+// names what the starts are per ("cell", "grid value").
+void AddBruteForceFlags(CLI::App& cmd, BruteForceFlags* flags, const std::string& per);
+
+}  // namespace stickslip::cli
