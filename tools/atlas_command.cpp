@@ -31,6 +31,7 @@ struct AtlasArgs {
   BruteForceFlags brute;
   int max_multiple = static_cast<int>(kDefaults.max_multiple);
   double max_amplitude = kDefaults.max_amplitude;
+  int max_points = static_cast<int>(kDefaults.max_points);
   std::string output;  // required
 };
 
@@ -58,12 +59,8 @@ AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
   c.threads = args.brute.threads;
   c.max_multiple = args.max_multiple;
   c.max_amplitude = args.max_amplitude;
-  try {
-    return AtlasOptionsOf(c, origin);
-  } catch (const InvalidInput& e) {  // the range as the user wrote it
-    if (e.field() == "range") throw InvalidInput("range", "'" + args.range + "'", "LO,HI with LO < HI, both within the parameter's valid range");
-    throw;
-  }
+  c.max_points = args.max_points;
+  return AtlasOptionsOf(c, origin);
 }
 
 void Report(const std::string& output, const Atlas& atlas, const StoredAtlas& stored, double seconds,
@@ -71,8 +68,8 @@ void Report(const std::string& output, const Atlas& atlas, const StoredAtlas& st
   std::size_t branches = 0;
   for (const StoredTrace& t : stored.traces) branches += t.branches.size();
   const int unexplained = static_cast<int>(atlas.attractors.size()) - atlas.OnBranches();
-  fmt::print("{}: {} attractor(s) at {} value(s) of {}: {} solved, {} on a branch, {} unexplained; {} trace(s), {} "
-             "branch(es) in {:.1f} s\n",
+  fmt::print("{}: {} attractor(s) at {} value(s) of {}: {} periodic within the limit, {} on a branch, {} listed with "
+             "the reason; {} trace(s), {} branch(es) in {:.1f} s\n",
              output, atlas.attractors.size(), atlas.brute_force.cells.size(), atlas.parameter, atlas.PeriodicWithinLimit(),
              atlas.OnBranches(), unexplained, stored.traces.size(), branches, seconds);
   for (const AtlasAttractor& a : atlas.attractors) {
@@ -138,6 +135,9 @@ Command AddAtlasCommand(CLI::App& app) {
                              AtlasOptions::kMaxMultiple));
   AddNumberOption(*cmd, "--max-amplitude", &args->max_amplitude, "a finite max-amplitude > 0",
                   "a trace's direction ends at a resonance where max |x1|, |x2| over the orbit passes this (> 0)");
+  AddCountOption(*cmd, "--max-points", &args->max_points, 1, kMaxRunPoints,
+                 "points per branch of every trace (1 to 1e6): near a natural frequency a branch may creep, and this "
+                 "ends it (max-points) before its amplitude reaches --max-amplitude");
   return {cmd, [args, cmd] {
             if (cmd->count("--range") == 0) throw InvalidInput("range", "(not given)", "--range LO,HI is required");
             return RunAtlas(*args);

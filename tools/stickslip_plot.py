@@ -1081,12 +1081,18 @@ def draw_coexistence(strip, atlas, colour):
 def _atlas_title(atlas):
     c = atlas.atlas["counts"]
     others = c["attractors"] - c["on_branches"]
-    return (f"Atlas over {symbol(atlas.parameter)}{_named(atlas)}: {c['on_branches']} attractors on {c['branches']} branches "
-            f"of {len(c['orbit_types'])} orbit types, traced from {c['traces']} starts\n"
-            f"{others} other attractors listed in atlas.json (permanent sticks, unsettled motions, longer periods)")
+    plural = lambda n, word: f"{n} {word}" + ("" if n == 1 else "s")
+    return (f"Atlas over {symbol(atlas.parameter)}{_named(atlas)}: {plural(c['on_branches'], 'attractor')} on "
+            f"{plural(c['branches'], 'branch').replace('branchs', 'branches')} of {plural(len(c['orbit_types']), 'orbit type')}, "
+            f"traced from {plural(c['traces'], 'start')}\n"
+            f"{plural(others, 'other attractor')} listed in atlas.json with the reason (no orbit type, not settled, a "
+            f"longer period, not solved)")
 
 
 def _atlas_figure(atlas, options, plt):
+    if not atlas.traces:
+        raise BadInput("input", f"'{atlas.name}'", "an atlas with at least one traced branch (this one traced none: "
+                       "its atlas.json lists every attractor with the reason)")
     x = options.x or atlas.parameter
     y = options.y or "amplitude:x2"
     _check_quantity(options, "x", x, [atlas])

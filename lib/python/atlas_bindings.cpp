@@ -33,6 +33,7 @@ constexpr std::pair<const char*, double AtlasCommand::*> kAtlasNumbers[] = {
     {"threads", &AtlasCommand::threads},
     {"max_multiple", &AtlasCommand::max_multiple},
     {"max_amplitude", &AtlasCommand::max_amplitude},
+    {"max_points", &AtlasCommand::max_points},
 };
 
 // The atlas of `start` with the keywords `o`; the GIL is released while it runs, taken after

@@ -56,6 +56,21 @@ for f in NOTES.md trace-1/branch-1/NOTES.md trace-9/kept.txt; do
 done
 grep -q "kept 3 other file(s)" "$work/again.txt" && pass || fail "the kept files are not listed: $(cat "$work/again.txt")"
 
+# A run file's names directly in a trace-<t>/ are the user's there (an atlas's trace never replaced a
+# run), and a re-run after a re-run keeps everything (trace-9/ now the atlas's, holding the user's).
+echo mine > "$r/a/trace-1/summary.json"
+"$bin" atlas "${small[@]}" --output a --threads 2 > /dev/null 2>&1 && pass || fail "the second re-run failed"
+for f in NOTES.md trace-1/branch-1/NOTES.md trace-9/kept.txt trace-1/summary.json; do
+  [ "$(cat "$r/a/$f" 2>/dev/null)" = mine ] && pass || fail "the second re-run lost a/$f"
+done
+
+# A brute-force state find does not take as a start (|x| > 1e6, from scattered starts of the
+# documented largest spread) is that attractor's reason, not bad input.
+"$bin" atlas --preset paper-4.1 --range 0.55,0.65 --steps 1 --starts 2 --scatter 1e6 --transients 50 \
+  --results "$work/scatter" --output s > "$work/scatter.txt" 2>&1 && pass || fail "a scattered atlas: $(cat "$work/scatter.txt")"
+grep -q "not-solved: find cannot start from its state" "$work/scatter.txt" && pass ||
+  fail "the attractor out of find's range is not listed: $(cat "$work/scatter.txt")"
+
 # Its figure.
 "$bin" plot "$r/a" --output "$work/a.svg" > /dev/null 2> "$work/plot.err" && [ -s "$work/a.svg" ] && pass ||
   fail "plot of an atlas: $(cat "$work/plot.err")"
@@ -69,8 +84,16 @@ expect 2 "steps" "$bin" atlas "${small[@]}" --output b --steps 100000000
 expect 2 "output" "$bin" atlas --preset paper-4.1 --range 0.58,0.62 --results "$r"
 # omega1 = 0.70121... of the section 4.1 data (eq. 56) as a grid value.
 omega1=$(/usr/bin/python3 -c "import math; c, e = 0.3, 4.0; b = 1 + c * e; print(repr(math.sqrt((b - math.sqrt(b * b - 4 * c * e * (1 - c))) / 2)))")
-expect 2 "grid" "$bin" atlas --preset paper-4.1 --range "0.6,$omega1" --steps 1 --results "$r" --output b
-# An existing directory that is not an atlas is the user's.
+expect 2 "away from the natural frequencies" "$bin" atlas --preset paper-4.1 --range "0.6,$omega1" --steps 1 --results "$r" --output b
+# An existing directory that is not an atlas is the user's, a run's included; a link to an atlas is
+# refused (its target's entries would move); the output is one name.
 mkdir -p "$r/mine" && echo data > "$r/mine/data.txt"
 expect 2 "output = 'mine'" "$bin" atlas "${small[@]}" --output mine
+"$bin" continue --preset paper-4.1 --parameter omega --range 0.59,0.61 --results "$r" --output run1 > /dev/null 2>&1
+expect 2 "output = 'run1'" "$bin" atlas "${small[@]}" --output run1
+ln -s a "$r/link"
+expect 2 "is a symbolic link" "$bin" atlas "${small[@]}" --output link
+for name in ../x . a/b; do expect 2 "output = '$name'" "$bin" atlas "${small[@]}" --output "$name"; done
+# Both ends of the range are values of the parameter, whatever the steps.
+expect 2 "range = '-1,0.65'" "$bin" atlas --preset paper-4.1 --range -1,0.65 --steps 0 --results "$r" --output b
 finish

@@ -102,9 +102,14 @@ void SolveAttractors(std::vector<AtlasAttractor>& attractors, const Parameters& 
     AtlasAttractor& a = attractors[asked[i]];
     Parameters p = base;
     p[parameter] = a.value;
-    a.found = FindOrbit(p, a.attractor.section.front(), section_phase, find);
-    a.fate = FateOfFind(a);
-    a.reason = a.found->message;
+    try {
+      a.found = FindOrbit(p, a.attractor.section.front(), section_phase, find);
+      a.fate = FateOfFind(a);
+      a.reason = a.found->message;
+    } catch (const InvalidInput& e) {  // a simulated state find does not take as a start (|x| > 1e6)
+      a.fate = AttractorFate::kNotSolved;
+      a.reason = fmt::format("find cannot start from its state: {}", e.what());
+    }
     if (!options.progress) return;
     const std::lock_guard<std::mutex> lock(report);
     options.progress({static_cast<double>(++done), static_cast<double>(asked.size()), "attractors solved", a.value});
@@ -126,6 +131,13 @@ OrbitContinuationSetup TraceStart(const Orbit& start, const UnknownChoice& unkno
   setup.options.lambda_max = options.brute_force.first.to;
   setup.max_amplitude = options.trace.max_amplitude;
   return setup;
+}
+
+// Why an attractor is not on the trace started from it: where it was looked for, and how the trace's
+// directions ended (a resonance or a bound right at the start leaves a single point, no passage).
+std::string OwnTraceMissed(const std::string& where, const TraceResult& trace) {
+  return fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", where, trace.down.message,
+                     trace.up.message);
 }
 
 // Where `a`'s exact orbit lies among `branches` (indices offset by `first`).
@@ -171,7 +183,9 @@ std::vector<const OrbitBranch*> Atlas::Branches() const {
 
 int Atlas::PeriodicWithinLimit() const {
   int n = 0;
-  for (const AtlasAttractor& a : attractors) n += a.found && a.found->Found();
+  for (const AtlasAttractor& a : attractors) {
+    n += a.fate == AttractorFate::kOnBranch || a.fate == AttractorFate::kOffBranch || a.fate == AttractorFate::kNotSolved;
+  }
   return n;
 }
 
@@ -199,7 +213,7 @@ class Placer {
       a.started_trace = TraceIfNew({.attractor = k}, orbit, unknowns);
       const std::vector<const OrbitBranch*> branches = atlas_.Branches();
       if (!stickslip::Place(a, branches, 0, membership_)) {
-        a.reason = a.started_trace ? fmt::format("its own trace does not pass through it ({})", a.reason)
+        a.reason = a.started_trace ? OwnTraceMissed(a.reason, atlas_.traces.back().result)
                                    : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
       }
     }

@@ -102,14 +102,17 @@ Orbit BranchOrbitAt(const OrbitBranch& branch, int i, double t, const Orbit& orb
 }
 
 // Where `branch` passes `value` of the parameter: the points i whose interval [i, i + 1] holds it,
-// with the fraction t of the way from i to i + 1.
-std::vector<std::pair<int, double>> Passages(const OrbitBranch& branch, ParameterId parameter, double value) {
+// widened by `tolerance` (relative to 1 + |value|: a start located at a branch's end lies a rounding
+// error outside it), with the fraction t in [0, 1] of the way from i to i + 1.
+std::vector<std::pair<int, double>> Passages(const OrbitBranch& branch, ParameterId parameter, double value,
+                                             double tolerance) {
   std::vector<std::pair<int, double>> passages;
+  const double margin = tolerance * (1.0 + std::abs(value));
   for (int i = 0; i + 1 < static_cast<int>(branch.orbits.size()); ++i) {
     const double low = branch.orbits[i].parameters[parameter];
     const double high = branch.orbits[i + 1].parameters[parameter];
-    if (value < std::min(low, high) || value > std::max(low, high)) continue;
-    passages.emplace_back(i, high == low ? 0.0 : (value - low) / (high - low));
+    if (value < std::min(low, high) - margin || value > std::max(low, high) + margin) continue;
+    passages.emplace_back(i, high == low ? 0.0 : std::clamp((value - low) / (high - low), 0.0, 1.0));
   }
   return passages;
 }
@@ -123,7 +126,7 @@ struct PassageMatch {
 PassageMatch NearestPassage(const Orbit& least, const OrbitBranch& branch, ParameterId parameter,
                             const BranchMembershipOptions& options) {
   PassageMatch match;
-  for (const auto& [i, t] : Passages(branch, parameter, least.parameters[parameter])) {
+  for (const auto& [i, t] : Passages(branch, parameter, least.parameters[parameter], options.tolerance)) {
     const Orbit& near = branch.orbits[t <= 0.5 ? i : i + 1];
     if (!OtherParametersAgree(least.parameters, near.parameters, parameter, options.tolerance)) continue;
     const Orbit there = BranchOrbitAt(branch, i, t, least, options);

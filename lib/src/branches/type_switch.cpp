@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -98,6 +102,127 @@ TypeSwitch Confirmed(const LocatedTypeChange& located, const AdjacentType& adjac
           .singular_start = singular_start,
           .unknowns = unknowns};
 }
+
+// One candidate adjacent type tried at a located change: its start (the located orbit edited and
+// corrected on the new type, which must be the same orbit, with no margin already negative), then an
+// orbit on it just past the boundary, by nudging the parameter either way, or where the new
+// segment's length grows as a root of the step (a grazing), by giving that length and solving for
+// the parameter. reasons() says, in the order tried, why each way did not confirm it.
+class CandidateTrial {
+ public:
+  CandidateTrial(const LocatedTypeChange& located, const Margin& margin, const AdjacentType& adjacent,
+                 const TypeSwitchOptions& options, ParameterId parameter, std::string name)
+      : located_(located),
+        margin_(margin),
+        adjacent_(adjacent),
+        options_(options),
+        name_(std::move(name)),
+        parameter_(parameter),
+        lambda_(located.orbit.parameters[parameter_]),
+        unknowns_(Renamed(located.unknowns, adjacent.edit)),
+        free_(FreeIndices(adjacent.edit.signature, unknowns_)) {}
+
+  // The confirmed switch, or nullopt (reasons() says why).
+  std::optional<TypeSwitch> Run() {
+    if (std::optional<std::string> why = NotVanished()) return Fail(*why);
+    const OrbitSolution start = SolveOrbit(AdjacentStart(located_.orbit, margin_, adjacent_), free_,
+                                           unknowns_.tie_static_friction, options_.solver);
+    if (std::optional<std::string> why = BadStart(start)) return Fail(*why);
+    if (std::optional<TypeSwitch> confirmed = ByNudges(start.orbit)) return confirmed;
+    return ByGivenDuration(start.orbit);
+  }
+
+  const std::vector<std::string>& reasons() const { return reasons_; }
+
+ private:
+  std::nullopt_t Fail(std::string why) {
+    reasons_.push_back(std::move(why));
+    return std::nullopt;
+  }
+
+  // A removal needs the segment removed to have vanished at the located point.
+  std::optional<std::string> NotVanished() const {
+    const bool removal = adjacent_.new_segment < 0 && adjacent_.kind != TypeEdit::kSplitAtAbnormalStop;
+    const double vanished = located_.orbit.durations[adjacent_.segment];
+    if (!removal || std::abs(vanished) <= options_.same_orbit * located_.orbit.Period()) return std::nullopt;
+    return fmt::format("{}: segment {} has not vanished (duration {:.3g})", name_, adjacent_.segment + 1, vanished);
+  }
+
+  std::optional<std::string> BadStart(const OrbitSolution& start) const {
+    if (!start.summary.Converged()) return name_ + ": the start does not solve the new type's equations";
+    const double moved = OrbitDistance(start.orbit, located_.orbit);
+    if (!(moved <= options_.same_orbit)) {
+      return fmt::format("{}: the corrected start moved {:.3g} off the located orbit", name_, moved);
+    }
+    // A margin already negative at the start: the new type is not a motion next to the located
+    // orbit on either side (a new slip that accelerates away from its stop, a new stick that the
+    // force does not leave at once).
+    const Margin at_start = SmallestMargin(AdmissibilityMargins(start.orbit));
+    if (!(at_start.value >= -options_.start_margin_tolerance)) {
+      return fmt::format("{}: margin {} = {:.3g} at the start, so the new segment cannot stay short", name_,
+                         at_start.Name(), at_start.value);
+    }
+    return std::nullopt;
+  }
+
+  // An orbit past the boundary, the parameter nudged either way from the start.
+  std::optional<TypeSwitch> ByNudges(const Orbit& start) {
+    const double step = options_.nudge * (1.0 + std::abs(lambda_));
+    std::vector<std::pair<OrbitSolution, std::string>> tries;  // an orbit past the boundary, how it was found
+    for (const int direction : {located_.past, -located_.past}) {
+      Orbit guess = start;
+      guess.parameters[parameter_] = lambda_ + direction * step;
+      tries.emplace_back(SolveOrbit(guess, free_, unknowns_.tie_static_friction, options_.solver),
+                         direction == located_.past ? "past the boundary" : "before the boundary");
+    }
+    for (const auto& [past, side] : tries) {
+      const std::string why =
+          past.summary.Converged() ? NotConfirmed(past.orbit, adjacent_, options_) : "no convergence on the new type";
+      if (why.empty()) return Confirmed(located_, adjacent_, start, past.orbit, side, unknowns_, lambda_, false);
+      reasons_.push_back(fmt::format("{} {}: {}", name_, side, why));
+    }
+    return std::nullopt;
+  }
+
+  // Where the new segment's length grows as a root of the parameter step (a grazing, where the
+  // Jacobian is singular at the start, and Newton may find the other root), give the length,
+  // centred on the grazing time for a split, and solve for the parameter; longer lengths where
+  // the shortest leaves the end condition too flat to solve (a slip starting with x2'' = 0).
+  std::optional<TypeSwitch> ByGivenDuration(const Orbit& start) {
+    for (const double fraction : adjacent_.new_segment >= 0 ? options_.new_durations : std::vector<double>{}) {
+      Orbit guess = start;
+      const double length = fraction * guess.Period();
+      guess.durations[adjacent_.new_segment] = length;
+      if (adjacent_.kind == TypeEdit::kSplit) {
+        guess.durations[adjacent_.new_segment - 1] -= std::min(length / 2, guess.durations[adjacent_.new_segment - 1]);
+        guess.durations[adjacent_.new_segment + 1] -= std::min(length / 2, guess.durations[adjacent_.new_segment + 1]);
+      }
+      std::vector<int> released = free_;
+      const auto held = std::find(released.begin(), released.end(), ov::Duration(adjacent_.new_segment));
+      if (held == released.end()) break;  // the new segment's duration is held by the user's fix
+      released.erase(held);
+      released.push_back(ov::Parameter(guess.signature.size(), parameter_));
+      const OrbitSolution given = SolveOrbit(guess, released, unknowns_.tie_static_friction, options_.solver);
+      const std::string side = fmt::format("with the new segment's duration given ({:g} of the period)", fraction);
+      const std::string why =
+          given.summary.Converged() ? NotConfirmed(given.orbit, adjacent_, options_) : "no convergence on the new type";
+      if (why.empty()) return Confirmed(located_, adjacent_, start, given.orbit, side, unknowns_, lambda_, true);
+      reasons_.push_back(fmt::format("{} {}: {}", name_, side, why));
+    }
+    return std::nullopt;
+  }
+
+  const LocatedTypeChange& located_;
+  const Margin& margin_;
+  const AdjacentType& adjacent_;
+  const TypeSwitchOptions& options_;
+  std::string name_;
+  ParameterId parameter_;
+  double lambda_;
+  UnknownChoice unknowns_;
+  std::vector<int> free_;
+  std::vector<std::string> reasons_;
+};
 
 }  // namespace
 
@@ -195,82 +320,20 @@ TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& o
     }
     return result;
   }
-  const ParameterId parameter = ParameterIdOf(located.parameter);
-  const double lambda = located.orbit.parameters[parameter];
-  const double step = options.nudge * (1.0 + std::abs(lambda));
+  const ParameterId parameter = ParameterIdOf(located.parameter);  // InvalidInput for one that is no parameter
   std::vector<std::string> reasons;
   for (const AdjacentType& adjacent : candidates) {
     const std::string name = fmt::format("'{}' ({})", adjacent.edit.signature.ToString(), adjacent.bifurcation);
-    const bool removal = adjacent.new_segment < 0 && adjacent.kind != TypeEdit::kSplitAtAbnormalStop;
-    const double vanished = located.orbit.durations[adjacent.segment];
-    if (removal && !(std::abs(vanished) <= options.same_orbit * located.orbit.Period())) {
-      reasons.push_back(
-          fmt::format("{}: segment {} has not vanished (duration {:.3g})", name, adjacent.segment + 1, vanished));
-      continue;
-    }
+    std::optional<CandidateTrial> trial;
+    std::optional<std::string> failed;
     try {
-      const UnknownChoice unknowns = Renamed(located.unknowns, adjacent.edit);
-      const std::vector<int> free = FreeIndices(adjacent.edit.signature, unknowns);
-      const OrbitSolution start = SolveOrbit(AdjacentStart(located.orbit, *margin, adjacent), free,
-                                             unknowns.tie_static_friction, options.solver);
-      if (!start.summary.Converged()) {
-        reasons.push_back(name + ": the start does not solve the new type's equations");
-        continue;
-      }
-      const double moved = OrbitDistance(start.orbit, located.orbit);
-      if (!(moved <= options.same_orbit)) {
-        reasons.push_back(fmt::format("{}: the corrected start moved {:.3g} off the located orbit", name, moved));
-        continue;
-      }
-      // A margin already negative at the start: the new type is not a motion next to the located
-      // orbit on either side (a new slip that accelerates away from its stop, a new stick that the
-      // force does not leave at once).
-      const Margin at_start = SmallestMargin(AdmissibilityMargins(start.orbit));
-      if (!(at_start.value >= -options.start_margin_tolerance)) {
-        reasons.push_back(fmt::format("{}: margin {} = {:.3g} at the start, so the new segment cannot stay short", name,
-                                      at_start.Name(), at_start.value));
-        continue;
-      }
-      std::vector<std::pair<OrbitSolution, std::string>> tries;  // an orbit past the boundary, how it was found
-      for (const int direction : {located.past, -located.past}) {
-        Orbit guess = start.orbit;
-        guess.parameters[parameter] = lambda + direction * step;
-        tries.emplace_back(SolveOrbit(guess, free, unknowns.tie_static_friction, options.solver),
-                           direction == located.past ? "past the boundary" : "before the boundary");
-      }
-      for (const auto& [past, side] : tries) {
-        const std::string why =
-            past.summary.Converged() ? NotConfirmed(past.orbit, adjacent, options) : "no convergence on the new type";
-        if (why.empty()) return Confirmed(located, adjacent, start.orbit, past.orbit, side, unknowns, lambda, false);
-        reasons.push_back(fmt::format("{} {}: {}", name, side, why));
-      }
-      // Where the new segment's length grows as a root of the parameter step (a grazing, where the
-      // Jacobian is singular at the start, and Newton may find the other root), give the length,
-      // centred on the grazing time for a split, and solve for the parameter; longer lengths where
-      // the shortest leaves the end condition too flat to solve (a slip starting with x2'' = 0).
-      for (const double fraction : adjacent.new_segment >= 0 ? options.new_durations : std::vector<double>{}) {
-        Orbit guess = start.orbit;
-        const double length = fraction * guess.Period();
-        guess.durations[adjacent.new_segment] = length;
-        if (adjacent.kind == TypeEdit::kSplit) {
-          guess.durations[adjacent.new_segment - 1] -= std::min(length / 2, guess.durations[adjacent.new_segment - 1]);
-          guess.durations[adjacent.new_segment + 1] -= std::min(length / 2, guess.durations[adjacent.new_segment + 1]);
-        }
-        std::vector<int> released = free;
-        const auto held = std::find(released.begin(), released.end(), ov::Duration(adjacent.new_segment));
-        if (held == released.end()) break;  // the new segment's duration is held by the user's fix
-        released.erase(held);
-        released.push_back(ov::Parameter(guess.signature.size(), parameter));
-        const OrbitSolution given = SolveOrbit(guess, released, unknowns.tie_static_friction, options.solver);
-        const std::string side = fmt::format("with the new segment's duration given ({:g} of the period)", fraction);
-        const std::string why =
-            given.summary.Converged() ? NotConfirmed(given.orbit, adjacent, options) : "no convergence on the new type";
-        if (why.empty()) return Confirmed(located, adjacent, start.orbit, given.orbit, side, unknowns, lambda, true);
-        reasons.push_back(fmt::format("{} {}: {}", name, side, why));
-      }
+      trial.emplace(located, *margin, adjacent, options, parameter, name);
+      if (std::optional<TypeSwitch> confirmed = trial->Run()) return std::move(*confirmed);
     } catch (const InvalidInput& e) {
-      reasons.push_back(name + ": " + e.what());
+      failed = name + ": " + e.what();
     }
+    if (trial) reasons.insert(reasons.end(), trial->reasons().begin(), trial->reasons().end());
+    if (failed) reasons.push_back(*failed);
   }
   result.status = TypeSwitchStatus::kNotConfirmed;
   for (const std::string& r : reasons) result.reason += (result.reason.empty() ? "" : "; ") + r;

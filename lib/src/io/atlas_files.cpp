@@ -194,13 +194,18 @@ std::string FormatIntervalsCsv(const std::vector<StoredTrace>& traces) {
 bool IsAtlasFile(std::string_view name) { return name == kAtlasJson || name == kIntervalsCsv || name == kBruteForceCsv; }
 
 // The atlas's files and trace directories, `own_trace` telling which trace-<t> names are its and
-// `in_trace` what is the trace's inside one of them.
+// `in_trace` what is the trace's inside one of them. A run's three files directly in a trace-<t>/
+// are the user's: an atlas's trace never replaced a run.
 detail::OwnedEntry AtlasEntries(const detail::OwnedName& own_trace,
                                 const std::function<detail::OwnedEntry(const std::string& trace)>& in_trace) {
   return [own_trace, in_trace](const fs::path& relative) {
     const std::string top = relative.begin()->string();
-    if (!own_trace(top)) return std::distance(relative.begin(), relative.end()) == 1 && IsAtlasFile(top);
-    return std::distance(relative.begin(), relative.end()) == 1 || in_trace(top)(relative.lexically_relative(top));
+    const auto depth = std::distance(relative.begin(), relative.end());
+    if (!own_trace(top)) return depth == 1 && IsAtlasFile(top);
+    if (depth == 1) return true;
+    const fs::path inside = relative.lexically_relative(top);
+    if (depth == 2 && detail::IsRunFileName(inside.string())) return false;
+    return in_trace(top)(inside);
   };
 }
 
@@ -211,14 +216,20 @@ detail::OwnedEntry AtlasEntries() {
                       [trace](const std::string&) { return trace; });
 }
 
-// What the atlas in `directory` wrote: its files, the traces its atlas.json lists, and in them what
-// their trace.json lists (a user's trace-9/, or branch-9/ in a trace, is the user's).
+// What the atlas in `directory` wrote: its files, the traces its atlas.json lists and in them what
+// their trace.json lists, and a trace-<t>/ left holding only the user's files by an earlier re-run
+// that wrote fewer traces (no trace.json: the directory is the atlas's, everything in it the
+// user's). A trace-<t>/ of the user's with a trace.json in it is the user's whole.
 detail::OwnedEntry AtlasEntriesBefore(const fs::path& directory) {
   const std::set<std::string> listed = detail::ListedNames(directory / kAtlasJson, {"name"});
-  std::map<std::string, detail::OwnedEntry> traces;
-  for (const std::string& name : listed) traces[name] = detail::TraceEntriesBefore(directory / name);
-  return AtlasEntries([listed](std::string_view name) { return listed.contains(std::string(name)); },
-                      [traces](const std::string& name) { return traces.at(name); });
+  const auto own = [directory, listed](std::string_view name) {
+    std::error_code ignored;
+    return listed.contains(std::string(name)) ||
+           (detail::IsNumberedName(name, kTracePrefix, false) &&
+            fs::is_directory(fs::symlink_status(directory / name, ignored)) &&
+            !fs::exists(fs::symlink_status(directory / name / "trace.json", ignored)));
+  };
+  return AtlasEntries(own, [directory](const std::string& name) { return detail::TraceEntriesBefore(directory / name); });
 }
 
 }  // namespace
@@ -236,26 +247,31 @@ StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptio
 }
 
 void CheckAtlasOutputDirectory(const fs::path& results_root, const std::string& output) {
-  const fs::path file = results_root / output / kAtlasJson;
-  std::error_code ignored;
-  if (!fs::exists(file, ignored)) return CheckOutputDirectory(results_root, output);
-  // Recognised by what any version's atlas.json has, not read whole.
+  const fs::path target = results_root / output;
+  const std::string shown = "'" + output + "'";
+  if (!IsRunName(output)) throw InvalidInput("output", shown, std::string(kRunNameRule));
+  std::error_code error;
+  const fs::file_status status = fs::symlink_status(target, error);
+  if (!fs::exists(status)) return CheckOutputDirectory(results_root, output);
+  // Only an atlas is replaced: recognised by what any version's atlas.json has, not read whole. A
+  // link is refused (its target's entries would move out from under it), as is any other directory.
+  const auto refuse = [&](const std::string& why) {
+    return InvalidInput::WithMessage("output", fmt::format("output = {} is invalid: '{}' {}: valid a new name or the "
+                                                           "directory of a stickslip atlas",
+                                                           shown, target.string(), why));
+  };
+  if (fs::is_symlink(status)) throw refuse("is a symbolic link");
+  if (!fs::is_directory(status)) throw refuse("is not a directory");
   try {
+    const fs::path file = target / kAtlasJson;
     const Json json = detail::ParseJsonObject(detail::ReadTextFile(file), file);
     for (const char* key : {"stickslip_version", "grid", "traces"}) {
       if (!json.contains(key)) throw detail::KeyError(file, key, "is missing");
     }
   } catch (const InvalidInput& e) {
-    throw InvalidInput::WithMessage(
-        "output", fmt::format("output = '{}' is invalid: '{}' holds no stickslip atlas ({}): valid a new name or the "
-                              "directory of a stickslip atlas",
-                              output, (results_root / output).string(), e.what()));
+    throw refuse(fmt::format("holds no stickslip atlas ({})", e.what()));
   }
-  if (const std::error_code failed = CanCreateFileIn(results_root / output)) {
-    throw InvalidInput::WithMessage("output", fmt::format("output = '{}' is invalid: '{}' cannot be written ({}): valid a "
-                                                          "directory that can be written",
-                                                          output, (results_root / output).string(), failed.message()));
-  }
+  if (const std::error_code failed = CanCreateFileIn(target)) throw refuse(fmt::format("cannot be written ({})", failed.message()));
 }
 
 std::vector<std::string> WriteAtlasFiles(const fs::path& results_root, const StoredAtlas& atlas) {

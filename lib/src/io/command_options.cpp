@@ -254,8 +254,18 @@ BruteForceMapOptions MapOptionsOf(const MapSweepCommand& c, const ModelStart& or
 }
 
 AtlasOptions AtlasOptionsOf(const AtlasCommand& c, const ModelStart& origin) {
-  if (!(c.from < c.to)) {
-    throw InvalidInput("range", fmt::format("'{},{}'", c.from, c.to), "LO,HI with LO < HI, both within the parameter's valid range");
+  const std::string range = fmt::format("'{},{}'", c.from, c.to);
+  const std::string valid = "LO,HI with LO < HI, both within the parameter's valid range";
+  if (!(c.from < c.to)) throw InvalidInput("range", range, valid);
+  // Both ends, whatever the grid's steps (with none, the one grid value is LO).
+  if (const std::optional<ParameterId> id = ParameterFromString(c.parameter)) {
+    for (const double end : {c.from, c.to}) {
+      Parameters p = origin.parameters;
+      p[*id] = end;
+      if (const std::optional<InvalidInput> invalid = Validate(p, *id)) {
+        throw InvalidInput::WithMessage("range", fmt::format("range = {} is invalid: {}", range, invalid->what()));
+      }
+    }
   }
   // The brute force is one row of a map: its second axis a parameter other than the atlas's, held.
   MapSweepCommand grid;
@@ -292,6 +302,7 @@ AtlasOptions AtlasOptionsOf(const AtlasCommand& c, const ModelStart& origin) {
     throw InvalidInput("max-amplitude", c.max_amplitude, "a finite max-amplitude > 0");
   }
   options.trace.max_amplitude = c.max_amplitude;
+  options.continuation.max_points = WholeNumber("max-points", c.max_points, 1, kMaxRunPoints);
   options.Validate(origin.parameters);
   return options;
 }

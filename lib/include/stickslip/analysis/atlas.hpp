@@ -117,7 +117,9 @@ struct Atlas {
   // Every branch of every trace, in trace order, each trace's down chain then its up chain (as
   // a stored trace numbers them, io/trace_files.hpp): pointers into this atlas's `traces`.
   std::vector<const OrbitBranch*> Branches() const;
-  // The periodic attractors with period <= max_multiple, and those of them on a branch.
+  // The periodic attractors with period <= max_multiple and an orbit type (those find was asked about
+  // and did not find not settled, incomplete or without an orbit type: on a branch, off one, or
+  // not solved), and those of them on a branch.
   int PeriodicWithinLimit() const;
   int OnBranches() const;
 };

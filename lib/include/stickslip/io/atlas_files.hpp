@@ -1,6 +1,6 @@
 // The result files of an atlas (analysis/atlas.hpp), results/<output>/, and their one writer:
 //   trace-<t>/           the atlas's traces, t = 1, 2, ... in the order they were started: each a
-//                        trace's directory (io/trace_files.hpp), so that `plot`, `check`, a restart
+//                        trace's directory (io/trace_files.hpp), so that `plot`, a restart
 //                        (--results results/<output>/trace-<t> --point branch-<k>:LABEL) and
 //                        `export --auto` work on them as on any trace
 //   atlas.json           the run file, version, output, parameter, range, grid, period limit; the
@@ -43,8 +43,9 @@ struct StoredAtlas {
 // `options` (the range, grid and period limit it records).
 StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptions& options);
 
-// Throws InvalidInput as CheckOutputDirectory (result_files.hpp), except that a directory holding
-// an atlas (its atlas.json reads as one) may be replaced too.
+// Throws InvalidInput naming "output" unless it is a run name (IsRunName) that is new (then as
+// CheckOutputDirectory, result_files.hpp) or names a directory holding an atlas (its atlas.json reads
+// as one; not a symbolic link) that can be written.
 void CheckAtlasOutputDirectory(const std::filesystem::path& results_root, const std::string& output);
 
 // Writes results_root/<atlas.output>/ as a whole (into a temporary directory first, which then
