@@ -6,10 +6,14 @@
 // field.
 #include "stickslip/analysis/atlas.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -19,6 +23,7 @@
 #include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/orbits/least_period.hpp"
+#include "stickslip/orbits/orbit_origin.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -89,6 +94,56 @@ TEST(Atlas, DoesNotDependOnTheThreadCount) {
   for (std::size_t k = 0; k < a.size(); ++k) {
     ASSERT_EQ(a[k]->orbits.size(), b[k]->orbits.size());
     EXPECT_EQ(a[k]->orbits.back().parameters.omega, b[k]->orbits.back().parameters.omega);
+  }
+}
+
+// An orbit type up to the choice of origin (a trace keeps its start's origin, so one family met from
+// two starts is written from two segment ends): the least of its rotations' texts.
+std::string UpToOrigin(const Signature& signature) {
+  std::string least = signature.ToString();
+  for (int j = 0; j < OriginCount(signature); ++j) least = std::min(least, WithOriginAt(signature, j).ToString());
+  return least;
+}
+
+// What two atlases must share: every branch's orbit type (up to origin), and every located special
+// point (not the ends, which a step size places) by kind and parameter, each once. Which branch a
+// point is stored on is not compared: where several margins change sign at one point, a branch that
+// one atlas traces into it another may trace out of it.
+struct Shared {
+  std::set<std::string> types;
+  std::vector<std::pair<std::string, double>> points;
+};
+
+Shared SharedOf(const Atlas& atlas) {
+  Shared shared;
+  for (const OrbitBranch* b : atlas.Branches()) {
+    shared.types.insert(UpToOrigin(b->orbits.front().signature));
+    for (const SpecialPoint& s : b->branch.special_points) {
+      if (s.type != "EP" && s.located) shared.points.emplace_back(s.type, s.lambda);
+    }
+  }
+  std::sort(shared.points.begin(), shared.points.end());
+  const auto same = [](const auto& a, const auto& b) { return a.first == b.first && std::abs(a.second - b.second) <= 1e-8; };
+  shared.points.erase(std::unique(shared.points.begin(), shared.points.end(), same), shared.points.end());
+  return shared;
+}
+
+TEST(Atlas, EveryAdjacentTypeIsFollowedWhateverTheStepSize) {
+  // At omega = 0.5999775 three margins change sign at once (SK, T0, GR) and more than one adjacent
+  // type is confirmed: which one a trace takes depends on where its steps land; the atlas follows
+  // every one, so two step sizes give the same orbit types and special points.
+  AtlasOptions coarse = SmallOptions(2), fine = SmallOptions(2);
+  coarse.brute_force.first = fine.brute_force.first = {ParameterId::kOmega, 0.58, 0.62, 2};
+  fine.continuation.step.ds = coarse.continuation.step.ds / 3;
+  fine.continuation.step.ds_max = coarse.continuation.step.ds_max / 3;
+  const Parameters base = SolvedPreset("paper-4.1").parameters;
+  const Shared a = SharedOf(ComputeAtlas(base, coarse)), b = SharedOf(ComputeAtlas(base, fine));
+  EXPECT_EQ(a.types, b.types);
+  EXPECT_GE(a.types.size(), 4u);  // 'slip- / antisymmetric', 'slip- stick / antisymmetric' and two period-3 types
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t k = 0; k < a.points.size(); ++k) {
+    EXPECT_EQ(a.points[k].first, b.points[k].first);
+    EXPECT_NEAR(a.points[k].second, b.points[k].second, 1e-8) << a.points[k].first;
   }
 }
 
