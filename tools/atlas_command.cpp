@@ -46,17 +46,10 @@ std::pair<double, double> ParseRange(const std::string& text) {
 }
 
 AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
-  AtlasCommand c;
+  AtlasCommand c = WithBruteForceFlags(AtlasCommand{}, args.brute);
   c.parameter = args.parameter;
   std::tie(c.from, c.to) = ParseRange(args.range);
   c.steps = args.steps;
-  c.transients = args.brute.transients;
-  c.periods = args.brute.periods;
-  c.starts = args.brute.starts;
-  c.scatter = args.brute.scatter;
-  c.seed = args.brute.seed;
-  c.tolerance = args.brute.tolerance;
-  c.threads = args.brute.threads;
   c.max_multiple = args.max_multiple;
   c.max_amplitude = args.max_amplitude;
   c.max_points = args.max_points;

@@ -25,4 +25,17 @@ struct BruteForceFlags {
 // names what the starts are per ("cell", "grid value").
 void AddBruteForceFlags(CLI::App& cmd, BruteForceFlags* flags, const std::string& per);
 
+// `command` (MapSweepCommand, AtlasCommand: io/command_options.hpp) with the flags' values.
+template <typename Command>
+Command WithBruteForceFlags(Command command, const BruteForceFlags& flags) {
+  command.transients = flags.transients;
+  command.periods = flags.periods;
+  command.starts = flags.starts;
+  command.scatter = flags.scatter;
+  command.seed = flags.seed;
+  command.tolerance = flags.tolerance;
+  command.threads = flags.threads;
+  return command;
+}
+
 }  // namespace stickslip::cli

@@ -93,7 +93,7 @@ int RunMerge(const MapSweepArgs& args) {
 
 MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
-  MapSweepCommand c;
+  MapSweepCommand c = WithBruteForceFlags(MapSweepCommand{}, args.brute);
   c.first = args.first;
   c.second = args.second;
   c.first_from = args.first_from;
@@ -102,13 +102,6 @@ MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   c.second_from = args.second_from;
   c.second_to = args.second_to;
   c.second_steps = args.second_steps;
-  c.transients = args.brute.transients;
-  c.periods = args.brute.periods;
-  c.starts = args.brute.starts;
-  c.scatter = args.brute.scatter;
-  c.seed = args.brute.seed;
-  c.tolerance = args.brute.tolerance;
-  c.threads = args.brute.threads;
   std::tie(c.shard, c.shards) = ParseShard(args.shard);
   // Ranks split the rows as shards do (rank 0, the first shard, has the most), so the bound on the
   // runs is checked for a rank's rows.

@@ -33,7 +33,7 @@ namespace {
 // at its base value.
 BruteForceMapOptions OneRow(const Parameters& base, const AtlasOptions& options) {
   BruteForceMapOptions row = options.brute_force;
-  const ParameterId held = kAllParameters[row.first.parameter == kAllParameters[0] ? 1 : 0];
+  const ParameterId held = HeldBeside(row.first.parameter);
   row.second = {held, base[held], base[held], 0};
   row.shard = 1;
   row.shards = 1;
@@ -153,6 +153,8 @@ bool Place(AtlasAttractor& a, const std::vector<const OrbitBranch*>& branches, i
 }
 
 }  // namespace
+
+ParameterId HeldBeside(ParameterId parameter) { return kAllParameters[parameter == kAllParameters[0] ? 1 : 0]; }
 
 void AtlasOptions::Validate(const Parameters& base) const {
   if (max_multiple < 1 || max_multiple > kMaxMultiple) {

@@ -274,7 +274,7 @@ AtlasOptions AtlasOptionsOf(const AtlasCommand& c, const ModelStart& origin) {
   grid.first_to = c.to;
   grid.first_steps = c.steps;
   const std::optional<ParameterId> first = ParameterFromString(c.parameter);
-  const ParameterId held = kAllParameters[first == kAllParameters[0] ? 1 : 0];
+  const ParameterId held = first ? HeldBeside(*first) : kAllParameters[0];  // none: MapOptionsOf refuses it
   grid.second = ToString(held);
   grid.second_from = grid.second_to = origin.parameters[held];
   grid.second_steps = 0;

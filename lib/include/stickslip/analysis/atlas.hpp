@@ -124,6 +124,10 @@ struct Atlas {
   int OnBranches() const;
 };
 
+// The parameter the atlas's brute force (one row of a map) holds as its second axis, at its base
+// value: one other than the atlas's `parameter`.
+ParameterId HeldBeside(ParameterId parameter);
+
 // The atlas around `base` (the parameter replaced at each grid value), sections at forcing phase
 // 0. Throws InvalidInput (Validate); every numerical outcome is recorded. Bounded: the brute force's
 // runs, one FindOrbit per attractor, and at most one trace per attractor.
