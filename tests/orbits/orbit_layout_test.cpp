@@ -36,11 +36,12 @@ TEST(OrbitLayout, NamesThePaperModelsVariablesInTheEquationsOrder) {
 }
 
 TEST(OrbitLayout, NamesTheTestModelsVariablesFromItsDescription) {
-  ExpectLayoutOfTheEquations(DenHartogOscillator{}, "slip- slip+");
-  const OrbitLayout layout(DenHartogOscillator{}.Description(), 2);
-  EXPECT_EQ(layout.Name(0), "x0");  // the start without the contact's velocity
+  const DenHartogOscillator model;  // the layout refers to its description
+  ExpectLayoutOfTheEquations(model, "slip- slip+");
+  const OrbitLayout layout(model.Description(), 2);
+  EXPECT_EQ(layout.Name(0), "x1_0");  // the start without the contact's velocity
   EXPECT_EQ(layout.Name(1), "phi");
-  EXPECT_EQ(layout.Name(layout.Parameter(1)), "beta");
+  EXPECT_EQ(layout.Name(layout.Parameter(1)), "F_k");
 }
 
 }  // namespace

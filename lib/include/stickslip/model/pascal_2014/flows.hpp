@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "stickslip/model/flow_derivatives.hpp"
 #include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/model/mode.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
@@ -117,17 +118,6 @@ StateT<T> Flow(Mode mode, const StateT<T>& start, const T& phase, const T& s,
                const BasicParameters<T>& p) {
   return MotionInMode(mode, start, phase, p).StateAt(s);
 }
-
-// A flow and its exact first derivatives, for a model with a state of `kStateSize` components and
-// `kParameters` parameters (oscillator_model.hpp).
-template <int kStateSize, int kParameters>
-struct BasicFlowDerivatives {
-  Eigen::Matrix<double, kStateSize, 1> state;                  // X(s)
-  Eigen::Matrix<double, kStateSize, kStateSize> d_start;       // dX(s)/dX(0)
-  Eigen::Matrix<double, kStateSize, 1> d_elapsed;              // dX(s)/ds, the vector field
-  Eigen::Matrix<double, kStateSize, 1> d_phase;                // dX(s)/dpsi
-  Eigen::Matrix<double, kStateSize, kParameters> d_parameters;  // columns in the model's parameter order
-};
 
 // The paper's flow with its derivatives (forward-mode automatic differentiation through the
 // closed form above; no finite differences).

@@ -1,0 +1,270 @@
+// The linear oscillator with one Coulomb contact (model/linear_oscillator.hpp), against what is
+// independent of its closed forms: M. Pascal's model through its own code after the paper's
+// scaling (../shared/FRICTION-LITERATURE.md), the Odeint integration of M q'' + K q = g cos + F on
+// random models, central differences of its flows, and its data checks.
+#include "stickslip/model/linear_oscillator.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/odeint_simulation.hpp"
+#include "stickslip/orbits/orbit_system.hpp"
+#include "stickslip/orbits/periodicity_equations.hpp"
+#include "stickslip/orbits/stability.hpp"
+#include "support/solved_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+static_assert(IntegrableOscillatorModel<LinearOscillator<2>>);
+static_assert(IntegrableOscillatorModel<LinearOscillator<3>>);
+
+// Pascal's two masses in physical units: m1 = eta m2, k1 + k2 = S, k2 = chi S, forcing F0 cos on
+// mass 2 and the contact on mass 2 with mu_k N = u_s eta F0, mu_s N = u_r eta F0. The paper's
+// scaling: t = t~ / Omega with Omega = sqrt(S/m1), omega~ = omega Omega, y = eta F0 x / S.
+struct PhysicalTwoMasses {
+  double m2 = 2.0, stiffness_sum = 5.0, f0 = 3.0;
+  LinearOscillatorData Data(const Parameters& p) const {
+    LinearOscillatorData data;
+    data.mass = Eigen::Vector2d(p.eta * m2, m2).asDiagonal();
+    const double k2 = p.chi * stiffness_sum;
+    data.stiffness = (Eigen::Matrix2d() << stiffness_sum, -k2, -k2, k2).finished();
+    data.forcing = Eigen::Vector2d(0.0, f0);
+    return data;
+  }
+  double Omega(const Parameters& p) const { return std::sqrt(stiffness_sum / (p.eta * m2)); }
+  double Length(const Parameters& p) const { return p.eta * f0 / stiffness_sum; }
+  LinearOscillator<2>::Parameters Of(const Parameters& p) const {
+    return {p.omega * Omega(p), p.u_s * p.eta * f0, p.u_r * p.eta * f0};
+  }
+};
+
+BasicOrbit<LinearOscillator<2>> InPhysicalUnits(const Orbit& o, const PhysicalTwoMasses& physical) {
+  const Parameters& p = o.parameters;
+  const double length = physical.Length(p), omega = physical.Omega(p);
+  BasicOrbit<LinearOscillator<2>> converted{o.signature, physical.Of(p), length * o.InitialState(), o.phi, {}};
+  converted.start.tail<2>() *= omega;
+  for (double d : o.durations) converted.durations.push_back(d / omega);
+  return converted;
+}
+
+Eigen::VectorXd VariablesOf(const BasicOrbit<LinearOscillator<2>>& o, const BasicPeriodicityEquations<LinearOscillator<2>>& e) {
+  using Equations = BasicPeriodicityEquations<LinearOscillator<2>>;
+  Eigen::VectorXd v(e.VariableCount());
+  v.head<3>() = o.start.head<3>();
+  v(Equations::kPhi) = o.phi;
+  for (std::size_t i = 0; i < o.durations.size(); ++i) v(Equations::Duration(static_cast<int>(i))) = o.durations[i];
+  v.segment<3>(e.Parameter(0)) << o.parameters.omega, o.parameters.F_k, o.parameters.F_s;
+  return v;
+}
+
+class PascalInPhysicalUnits : public testing::TestWithParam<const char*> {};
+
+// The paper's orbit, converted, solves the general model's periodicity equations; Newton from a
+// perturbed guess comes back to it within 1e-10 after conversion; and the Floquet multipliers
+// (invariant under the scaling, a similarity of the monodromy) agree with the paper model's.
+TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
+  const Orbit paper = SolvedPreset(GetParam());
+  const PhysicalTwoMasses physical;
+  const LinearOscillator<2> model(physical.Data(paper.parameters));
+  const BasicOrbit<LinearOscillator<2>> orbit = InPhysicalUnits(paper, physical);
+  ASSERT_FALSE(model.Validate(orbit.parameters));
+  using Equations = BasicPeriodicityEquations<LinearOscillator<2>>;
+  const Equations equations(model, orbit.signature, Shooting::kSingle);
+  Eigen::VectorXd residual;
+  equations.Evaluate(VariablesOf(orbit, equations), &residual, nullptr);
+  EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-10 * physical.Length(paper.parameters));
+
+  std::vector<int> free(equations.Parameter(0));
+  std::iota(free.begin(), free.end(), 0);
+  const BasicOrbitSystem<LinearOscillator<2>> system(equations, VariablesOf(orbit, equations), free, false);
+  Eigen::VectorXd guess = system.Unknowns(VariablesOf(orbit, equations));
+  guess(0) *= 1.001;
+  guess(Equations::kPhi) += 1e-3;
+  const NewtonResult solved = SolveNewton(system, guess);
+  ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
+  const Eigen::VectorXd v = system.Variables(solved.solution);
+  const double length = physical.Length(paper.parameters), omega = physical.Omega(paper.parameters);
+  EXPECT_NEAR(v(0) / length, paper.x10, 1e-10);
+  EXPECT_NEAR(v(1) / length, paper.x20, 1e-10);
+  EXPECT_NEAR(v(2) / (length * omega), paper.v10, 1e-10);
+  EXPECT_NEAR(std::remainder(v(Equations::kPhi) - paper.phi, 2 * std::numbers::pi), 0.0, 1e-10);
+  for (std::size_t i = 0; i < paper.durations.size(); ++i) {
+    EXPECT_NEAR(v(Equations::Duration(static_cast<int>(i))) * omega, paper.durations[i], 1e-10) << "segment " << i;
+  }
+
+  const auto general = StabilityOf(model, orbit).multipliers;
+  const auto scaled = StabilityOf(paper).multipliers;
+  for (std::size_t i = 0; i < scaled.size(); ++i) EXPECT_LT(std::abs(general[i] - scaled[i]), 1e-9) << "multiplier " << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(PaperOrbits, PascalInPhysicalUnits, testing::Values("paper-4.1", "paper-5.1", "paper-6"),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                           std::string name = std::string(info.param).substr(6);
+                           for (char& c : name) c = c == '.' ? '_' : c;
+                           return "Section" + name;
+                         });
+
+// A random model of three coordinates: M = A A^T + I, K = B B^T + I (both positive definite),
+// forcing on every coordinate, the static level above the kinetic.
+LinearOscillatorData RandomThreeMasses(std::mt19937& random) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  const Eigen::Matrix3d a = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
+  const Eigen::Matrix3d b = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
+  LinearOscillatorData data;
+  data.mass = a * a.transpose() + Eigen::Matrix3d::Identity();
+  data.stiffness = 2.0 * (b * b.transpose() + Eigen::Matrix3d::Identity());
+  data.forcing = Eigen::Vector3d::NullaryExpr([&] { return entry(random); });
+  return data;
+}
+
+// The exact simulator (the closed forms in the modal bases) and Odeint (the equations of motion
+// solved with M at every step, sharing no flow or event code) agree on every stop, stick and stick
+// exit over five forcing periods, from rest, on random three-mass models.
+TEST(LinearOscillator, ExactFlowsAgreeWithOdeintOnRandomThreeMassModels) {
+  std::mt19937 random(20261128);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int events = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    const LinearOscillator<3> model(RandomThreeMasses(random));
+    const LinearOscillator<3>::Parameters p{0.3 + 2.0 * unit(random), 0.05 + 0.3 * unit(random), 0.0};
+    LinearOscillator<3>::Parameters q = p;
+    q.F_s = p.F_k * (1.0 + unit(random));
+    if (model.Validate(q)) continue;
+    BasicSimulationOptions<LinearOscillator<3>::State> options;
+    options.duration = 5.0 * 2.0 * std::numbers::pi / q.omega;
+    LinearOscillator<3>::State start = LinearOscillator<3>::State::Zero();
+    start.head<3>() = Eigen::Vector3d::NullaryExpr([&] { return unit(random) - 0.5; });
+    const double phi = 2.0 * std::numbers::pi * unit(random);
+    const auto a = SimulateExact(model, q, start, phi, options);
+    const auto b = SimulateOdeint(model, q, start, phi, options);
+    ASSERT_TRUE(a.Completed()) << a.message;
+    ASSERT_TRUE(b.Completed()) << b.message;
+    ASSERT_EQ(a.events.size(), b.events.size()) << "trial " << trial;
+    for (std::size_t i = 0; i < a.events.size(); ++i) {
+      EXPECT_EQ(a.events[i].mode_after, b.events[i].mode_after) << "trial " << trial << ", event " << i;
+      EXPECT_NEAR(a.events[i].t, b.events[i].t, 1e-7) << "trial " << trial << ", event " << i;
+      EXPECT_LT((a.events[i].state - b.events[i].state).lpNorm<Eigen::Infinity>(), 1e-7) << "trial " << trial;
+    }
+    events += static_cast<int>(a.events.size());
+  }
+  EXPECT_GT(events, 20) << "the random models must stop and stick";
+}
+
+// Every derivative of a flow against central differences of the flow, in each mode, on a random
+// three-mass model, away from rest so that no term vanishes by symmetry; and the transition
+// matrix (the flow without forcing or friction) against the flow's derivative in its start.
+TEST(LinearOscillator, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
+  std::mt19937 random(7);
+  const LinearOscillator<3> model(RandomThreeMasses(random));
+  const LinearOscillator<3>::Parameters p{0.77, 0.2, 0.3};
+  LinearOscillator<3>::State x;
+  x << 0.3, -0.2, 0.1, 0.4, 0.25, -0.15;
+  const double phase = 0.9, s = 1.7, h = 1e-6;
+  for (Mode mode : {Mode::kSlipNegative, Mode::kSlipPositive, Mode::kStick}) {
+    const auto d = model.FlowWithDerivatives(mode, x, phase, s, p);
+    EXPECT_LT((d.state - model.Flow(mode, x, phase, s, p)).norm(), 1e-14);
+    for (int j = 0; j < 6; ++j) {
+      LinearOscillator<3>::State e = LinearOscillator<3>::State::Unit(j) * h;
+      const LinearOscillator<3>::State difference = (model.Flow(mode, LinearOscillator<3>::State(x + e), phase, s, p) -
+                               model.Flow(mode, LinearOscillator<3>::State(x - e), phase, s, p)) / (2 * h);
+      EXPECT_LT((difference - d.d_start.col(j)).norm(), 1e-7) << "start " << j;
+    }
+    EXPECT_LT((model.TransitionMatrix(mode, s, p) - d.d_start).norm(), 1e-12);
+    const LinearOscillator<3>::State time = (model.Flow(mode, x, phase, s + h, p) - model.Flow(mode, x, phase, s - h, p)) / (2 * h);
+    EXPECT_LT((time - d.d_elapsed).norm(), 1e-7);
+    const LinearOscillator<3>::State along_phase = (model.Flow(mode, x, phase + h, s, p) - model.Flow(mode, x, phase - h, s, p)) / (2 * h);
+    EXPECT_LT((along_phase - d.d_phase).norm(), 1e-7);
+    for (int k = 0; k < 3; ++k) {
+      auto up = p, down = p;
+      LinearOscillator<3>::ParameterAt(up, k) += h;
+      LinearOscillator<3>::ParameterAt(down, k) -= h;
+      const LinearOscillator<3>::State difference = (model.Flow(mode, x, phase, s, up) - model.Flow(mode, x, phase, s, down)) / (2 * h);
+      EXPECT_LT((difference - d.d_parameters.col(k)).norm(), 1e-7) << "parameter " << k;
+    }
+  }
+}
+
+// In a stick the held coordinate does not move and the holding force, written from the closed
+// forms, is the one the equations of motion give (the integrator's).
+TEST(LinearOscillator, StickHoldsTheContactWithTheForceTheEquationsOfMotionNeed) {
+  std::mt19937 random(11);
+  const LinearOscillator<3> model(RandomThreeMasses(random));
+  const LinearOscillator<3>::Parameters p{1.3, 0.2, 10.0};
+  LinearOscillator<3>::State x;
+  x << 0.3, -0.2, 0.1, 0.4, 0.25, 0.0;
+  const LinearOscillator<3>::Motion motion = model.MotionInMode(Mode::kStick, x, 0.4, p);
+  const SinusoidSum force = model.StickForceAlong(motion, 0.4, p);
+  for (double s : {0.0, 0.5, 2.0}) {
+    const LinearOscillator<3>::State y = motion.StateAt(s);
+    EXPECT_NEAR(y(2), 0.1, 1e-14);
+    EXPECT_NEAR(y(5), 0.0, 1e-14);
+    const double psi = 0.4 + p.omega * s;
+    EXPECT_NEAR(model.StickForce(y, psi, p), model.HoldingForce(y, psi, p), 1e-12);
+    EXPECT_NEAR(force(s), model.HoldingForce(y, psi, p), 1e-12);
+    EXPECT_NEAR(model.StickForceRate(y, psi, p), model.HoldingForceRate(y, psi, p), 1e-12);
+  }
+}
+
+LinearOscillatorData TwoMasses() {
+  LinearOscillatorData data;
+  data.mass = Eigen::Matrix2d::Identity();
+  data.stiffness = (Eigen::Matrix2d() << 2.0, -1.0, -1.0, 1.0).finished();
+  data.forcing = Eigen::Vector2d(0.0, 1.0);
+  return data;
+}
+
+void ExpectRejected(const LinearOscillatorData& data, const std::string& field) {
+  try {
+    const LinearOscillator<2> model(data);
+    ADD_FAILURE() << "accepted, expected a complaint about " << field;
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(field, 0), 0u) << e.what();
+  }
+}
+
+TEST(LinearOscillator, RejectsDataThatIsNotAnOscillatorNamingTheField) {
+  LinearOscillatorData bad = TwoMasses();
+  bad.mass(0, 1) = 0.5;
+  ExpectRejected(bad, "mass");  // not symmetric
+  bad = TwoMasses();
+  bad.mass(1, 1) = -1.0;
+  ExpectRejected(bad, "mass");  // not positive definite
+  bad = TwoMasses();
+  bad.stiffness(0, 0) = std::numeric_limits<double>::quiet_NaN();
+  ExpectRejected(bad, "stiffness");
+  bad = TwoMasses();
+  bad.stiffness = Eigen::Matrix2d::Ones();  // singular: a rigid-body mode, not yet served
+  ExpectRejected(bad, "stiffness");
+  bad = TwoMasses();
+  bad.forcing = Eigen::Vector3d::Ones();
+  ExpectRejected(bad, "forcing");
+  bad = TwoMasses();
+  bad.coordinates = {"x", "x"};
+  ExpectRejected(bad, "coordinates");
+  bad = TwoMasses();
+  bad.mass = Eigen::Matrix3d::Identity();
+  ExpectRejected(bad, "mass");  // three coordinates for a model of two
+}
+
+TEST(LinearOscillator, RefusesAForcingFrequencyOnANaturalFrequencyOfASlipOrAStick) {
+  const LinearOscillator<2> model(TwoMasses());
+  const double slip = std::sqrt((3.0 - std::sqrt(5.0)) / 2.0), stick = std::sqrt(2.0);  // eigenvalues of K; K_11
+  for (double omega : {slip, stick}) {
+    const auto invalid = model.Validate({omega, 0.1, 0.1});
+    ASSERT_TRUE(invalid);
+    EXPECT_EQ(std::string(invalid->what()).rfind("omega", 0), 0u) << invalid->what();
+  }
+  EXPECT_FALSE(model.Validate({1.0, 0.1, 0.2}));
+  EXPECT_TRUE(model.Validate({1.0, 0.2, 0.1}));  // static below kinetic
+  EXPECT_EQ(model.Description().initial_state, (std::vector<std::string>{"x1_0", "x2_0", "v1_0", "v2_0"}));
+}
+
+}  // namespace
+}  // namespace stickslip
