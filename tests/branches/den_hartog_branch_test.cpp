@@ -1,0 +1,142 @@
+// A branch of the general linear oscillator (model/linear_oscillator.hpp) through the
+// continuation engine, against Den Hartog's closed forms (Trans. ASME APM 53 (1931) 107;
+// ../shared/FRICTION-LITERATURE.md): the non-sticking orbit's amplitude
+// X = sqrt(V^2 - beta^2 U^2) along a branch in the friction level, the level
+// beta* = |V| / sqrt(U^2 + 1/r^4) where its turning points start to stick (r^2 X = beta), the
+// one-term harmonic balance's error, and the degenerate frequencies r = 1/(2n) (Csernak, Stepan &
+// Shaw 2007) where the full-period periodicity equations are singular and the half-period ones are not.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <variant>
+
+#include <Eigen/SVD>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "stickslip/continuation/continuation.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_system.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
+
+namespace stickslip {
+namespace {
+
+using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
+using System = BasicOrbitSystem<DenHartogOscillator>;
+
+double StickingLevel(double r) {
+  const DenHartogOrbit o(r, 0.0);
+  return std::abs(o.v) / std::sqrt(o.u * o.u + 1.0 / std::pow(r, 4));
+}
+
+// The smallest admissibility margin of the orbit at the unknowns u: zero where it stops being
+// the non-sticking orbit (the library's margins; the closed form is what they are checked against).
+class SmallestMarginMonitor : public Monitor {
+ public:
+  SmallestMarginMonitor(const DenHartogOscillator& model, const System& system) : model_(model), system_(system) {}
+  std::vector<TestFunctionInfo> TestFunctions() const override { return {{"margin", "ST", true}}; }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd*) const override {
+    const Eigen::VectorXd v = system_.Variables(u);
+    const BasicOrbit<DenHartogOscillator> orbit{
+        system_.equations().signature(), {v(3), v(4), v(5)}, {v(0), 0.0}, v(1), {v(2)}};
+    *tests = Eigen::VectorXd::Constant(1, SmallestMargin(AdmissibilityMargins(model_, orbit)).value);
+  }
+
+ private:
+  const DenHartogOscillator& model_;
+  const System& system_;
+};
+
+class DenHartogBranchInFriction : public testing::TestWithParam<double> {};
+
+// From beta = 0.05 upwards with the static level tied to the kinetic one: every point's amplitude
+// is Den Hartog's X(r, beta), and the branch ends where the turning points start to stick, at beta*.
+TEST_P(DenHartogBranchInFriction, FollowsTheClosedFormAmplitudeAndEndsWhereTheTurningPointsStick) {
+  const double r = GetParam();
+  const DenHartogOscillator model;
+  const Equations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
+  const Eigen::VectorXd start = DenHartogVariables(DenHartogOrbit(r, 0.05), equations);
+  const System system(equations, start, {0, 1, 2, 4}, true);  // x0, phi, the half period, F_k (= F_s)
+  const SmallestMarginMonitor monitor(model, system);
+  ContinuationOptions options;
+  options.parameter_index = 3;
+  options.lambda_max = 2.0;
+  options.max_points = 500;
+  const Branch branch = Continuation(system, &monitor, options, system.Unknowns(start)).Run();
+  ASSERT_GT(branch.points.size(), 5u);
+  double worst = 0.0;
+  for (const BranchPoint& point : branch.points) {
+    const double beta = point.u(3);
+    EXPECT_NEAR(point.u(0), DenHartogOrbit(r, beta).amplitude, 1e-9) << "beta = " << beta;
+    EXPECT_NEAR(point.u(2), std::numbers::pi / r, 1e-9) << "beta = " << beta;
+    worst = std::max(worst, std::abs(point.u(0) - DenHartogOrbit(r, beta).amplitude));
+  }
+  RecordProperty("points", static_cast<int>(branch.points.size()));
+  RecordProperty("worst_amplitude_difference", fmt::format("{:.3g}", worst));
+  const auto stick = std::find_if(branch.special_points.begin(), branch.special_points.end(),
+                                  [](const SpecialPoint& p) { return p.type == "ST"; });
+  ASSERT_NE(stick, branch.special_points.end()) << ToString(branch.end) << ": " << branch.end_message;
+  EXPECT_TRUE(stick->located);
+  EXPECT_NEAR(branch.points[stick->point].u(3), StickingLevel(r), 1e-8) << "r = " << r;
+  RecordProperty("sticking_level_difference", fmt::format("{:.3g}", branch.points[stick->point].u(3) - StickingLevel(r)));
+}
+
+INSTANTIATE_TEST_SUITE_P(FrequencyRatios, DenHartogBranchInFriction, testing::Values(0.8, 1.5, 2.5));
+
+// Newton from the one-term harmonic balance's amplitude sqrt(1 - (4 beta/pi)^2) / |1 - r^2| (the
+// equivalent viscous damping) converges to Den Hartog's X; the balance's error is within 0.7 beta^2
+// relative for beta up to beta*/2 on r in [0.6, 3] (nearer beta* it grows: 1.2 beta^2 at 0.99 beta*).
+TEST(DenHartogOrbit, OneTermHarmonicBalanceIsWithinItsBoundAndNewtonCorrectsIt) {
+  const DenHartogOscillator model;
+  const Equations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
+  for (double r : {0.6, 0.8, 1.2, 1.5, 2.0, 2.5, 3.0}) {
+    for (double fraction : {0.1, 0.5}) {
+      const double beta = fraction * StickingLevel(r);
+      const DenHartogOrbit exact(r, beta);
+      const double balance = std::sqrt(1.0 - std::pow(4.0 * beta / std::numbers::pi, 2)) / std::abs(1.0 - r * r);
+      EXPECT_LE(std::abs(balance - exact.amplitude) / exact.amplitude, 0.7 * beta * beta) << "r = " << r;
+      Eigen::VectorXd guess = DenHartogVariables(exact, equations);
+      guess(0) = balance;
+      guess(Equations::kPhi) += 0.05;
+      const System system(equations, guess, {0, 1, 2}, true);
+      const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
+      ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
+      EXPECT_NEAR(solved.solution(0), exact.amplitude, 1e-10) << "r = " << r << ", beta = " << beta;
+    }
+  }
+}
+
+// Smallest over largest singular value of the periodicity equations' Jacobian in the start, the
+// phase and the durations, at Den Hartog's orbit.
+double Conditioning(const char* signature, double r, double beta) {
+  const DenHartogOscillator model;
+  const Equations equations(model, Signature::Parse(signature), Shooting::kSingle);
+  const Eigen::VectorXd v = DenHartogVariables(DenHartogOrbit(r, beta), equations);
+  std::vector<int> free(equations.Parameter(0));
+  std::iota(free.begin(), free.end(), 0);
+  const System system(equations, v, free, false);
+  Eigen::VectorXd residual;
+  JacobianMatrix jacobian;
+  system.Evaluate(system.Unknowns(v), &residual, &jacobian);
+  EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12) << signature << ", r = " << r;
+  const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(std::get<Eigen::MatrixXd>(jacobian)).singularValues();
+  return s(s.size() - 1) / s(0);
+}
+
+// At r = 1/(2n) the free oscillation's period divides the half period: every orbit of the
+// continuum that it adds is periodic (a multiplier 1, U = 0: the amplitude does not depend on the
+// friction), so the full-period equations are singular there; the antisymmetric half-period ones
+// ask for x(T/2) = -x(0), which the free oscillation (returning to +x) does not satisfy: regular.
+TEST(DenHartogOrbit, DegenerateFrequencyMakesTheFullPeriodEquationsSingularNotTheHalfPeriods) {
+  for (double r : {0.5, 0.25}) {
+    EXPECT_LT(Conditioning("slip- slip+", r, 0.05), 1e-12) << "r = " << r;
+    EXPECT_GT(Conditioning("slip- / antisymmetric", r, 0.05), 1e-3) << "r = " << r;
+  }
+  EXPECT_GT(Conditioning("slip- slip+", 0.8, 0.05), 1e-3);  // away from 1/(2n): regular both ways
+}
+
+}  // namespace
+}  // namespace stickslip
