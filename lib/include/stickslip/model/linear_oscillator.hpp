@@ -116,7 +116,7 @@ class LinearOscillator {
     stiffness_ = data.stiffness;
     forcing_ = data.forcing;
     mass_factor_ = mass_.llt();
-    compliance_ = mass_.inverse();
+    compliance_ = mass_factor_.solve(Square::Identity());
     slip_ = BasisOf(modes.slip, data);
     stick_ = BasisOf(modes.stick, data);
     holding_stiffness_ = modes.holding_stiffness;

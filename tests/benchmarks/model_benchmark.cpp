@@ -1,0 +1,133 @@
+// The general linear oscillator (model/linear_oscillator.hpp) against the paper model's
+// specialised closed forms, on the same orbit (section 4.1's, converted to a physical two-mass
+// description as tests/model/linear_oscillator_test.cpp does), and its cost against the number of
+// coordinates on chains of n = 1, 2, 5, 10 masses. Per evaluation of what a continuation point
+// asks: the periodicity equations with their Jacobian, the admissibility margins (root finding
+// included), the monodromy and its multipliers.
+//
+//   build/release/tests/model_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// The ratio general/pascal of the medians of one run is the figure the general-oscillator issue asks for.
+#include <cmath>
+#include <numbers>
+
+#include <benchmark/benchmark.h>
+
+#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/model/pascal_2014.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
+#include "stickslip/orbits/paper_presets.hpp"
+#include "stickslip/orbits/periodicity_equations.hpp"
+#include "stickslip/orbits/stability.hpp"
+
+namespace stickslip {
+namespace {
+
+Orbit Section41() {
+  const PaperPreset& preset = *FindPaperPreset("paper-4.1");
+  const Orbit guess = preset.Guess();
+  return SolveOrbit(guess, FreeIndices(guess.signature, preset.unknowns), preset.unknowns.tie_static_friction).orbit;
+}
+
+// m2 = 1, k1 + k2 = 1, F0 = 1: m1 = eta, lengths scale by eta, time by sqrt(eta).
+LinearOscillatorData TwoMasses(const Parameters& p) {
+  LinearOscillatorData data;
+  data.mass = Eigen::Vector2d(p.eta, 1.0).asDiagonal();
+  data.stiffness = (Eigen::Matrix2d() << 1.0, -p.chi, -p.chi, p.chi).finished();
+  data.forcing = Eigen::Vector2d(0.0, 1.0);
+  return data;
+}
+BasicOrbit<LinearOscillator<2>> Converted(const Orbit& o) {
+  const Parameters& p = o.parameters;
+  const double omega = 1.0 / std::sqrt(p.eta);
+  BasicOrbit<LinearOscillator<2>> c{o.signature, {p.omega * omega, p.u_s * p.eta, p.u_r * p.eta}, p.eta * o.InitialState(), o.phi, {}};
+  c.start.tail<2>() *= omega;
+  for (double d : o.durations) c.durations.push_back(d / omega);
+  return c;
+}
+
+template <typename Model>
+Eigen::VectorXd VariablesOf(const BasicOrbit<Model>& o, const BasicPeriodicityEquations<Model>& e) {
+  constexpr int S = Model::kStateSize;
+  Eigen::VectorXd v(e.VariableCount());
+  v.head(S - 1) = o.start.head(S - 1);
+  v(S - 1) = o.phi;
+  for (std::size_t i = 0; i < o.durations.size(); ++i) v(S + static_cast<int>(i)) = o.durations[i];
+  for (int k = 0; k < Model::kParameterCount; ++k) v(e.Parameter(k)) = Model::ParameterAt(o.parameters, k);
+  return v;
+}
+
+template <typename Model>
+void Periodicity(benchmark::State& state, const Model& model, const BasicOrbit<Model>& orbit) {
+  const BasicPeriodicityEquations<Model> equations(model, orbit.signature, Shooting::kSingle);
+  const Eigen::VectorXd v = VariablesOf(orbit, equations);
+  Eigen::VectorXd residual;
+  Eigen::MatrixXd jacobian;
+  for (auto _ : state) {
+    equations.Evaluate(v, &residual, &jacobian);
+    benchmark::DoNotOptimize(jacobian.data());
+  }
+}
+template <typename Model>
+void Margins(benchmark::State& state, const Model& model, const BasicOrbit<Model>& orbit) {
+  for (auto _ : state) benchmark::DoNotOptimize(AdmissibilityMargins(model, orbit));
+}
+template <typename Model>
+void Multipliers(benchmark::State& state, const Model& model, const BasicOrbit<Model>& orbit) {
+  for (auto _ : state) benchmark::DoNotOptimize(StabilityOf(model, orbit));
+}
+
+void PeriodicityPascal(benchmark::State& state) { Periodicity(state, Pascal2014{}, Section41().OnModel()); }
+void PeriodicityGeneral(benchmark::State& state) {
+  const Orbit o = Section41();
+  Periodicity(state, LinearOscillator<2>(TwoMasses(o.parameters)), Converted(o));
+}
+void MarginsPascal(benchmark::State& state) { Margins(state, Pascal2014{}, Section41().OnModel()); }
+void MarginsGeneral(benchmark::State& state) {
+  const Orbit o = Section41();
+  Margins(state, LinearOscillator<2>(TwoMasses(o.parameters)), Converted(o));
+}
+void MultipliersPascal(benchmark::State& state) { Multipliers(state, Pascal2014{}, Section41().OnModel()); }
+void MultipliersGeneral(benchmark::State& state) {
+  const Orbit o = Section41();
+  Multipliers(state, LinearOscillator<2>(TwoMasses(o.parameters)), Converted(o));
+}
+BENCHMARK(PeriodicityPascal)->Unit(benchmark::kMicrosecond);
+BENCHMARK(PeriodicityGeneral)->Unit(benchmark::kMicrosecond);
+BENCHMARK(MarginsPascal)->Unit(benchmark::kMicrosecond);
+BENCHMARK(MarginsGeneral)->Unit(benchmark::kMicrosecond);
+BENCHMARK(MultipliersPascal)->Unit(benchmark::kMicrosecond);
+BENCHMARK(MultipliersGeneral)->Unit(benchmark::kMicrosecond);
+
+// n unit masses in a chain, unit springs between neighbours and from the first to the ground,
+// forced on the first, the contact on the last; an orbit-like point of "slip- stick / antisymmetric"
+// (the cost does not depend on the point being a solution).
+template <int N>
+void Chain(benchmark::State& state) {
+  LinearOscillatorData data;
+  data.mass = Eigen::MatrixXd::Identity(N, N);
+  data.stiffness = Eigen::MatrixXd::Zero(N, N);
+  for (int i = 0; i < N; ++i) data.stiffness(i, i) = i + 1 < N ? 2.0 : 1.0;
+  for (int i = 0; i + 1 < N; ++i) data.stiffness(i, i + 1) = data.stiffness(i + 1, i) = -1.0;
+  data.forcing = Eigen::VectorXd::Unit(N, 0);
+  const LinearOscillator<N> model(data);
+  BasicOrbit<LinearOscillator<N>> orbit{Signature::Parse("slip- stick / antisymmetric"), {0.777, 0.05, 0.08}, {}, 0.3, {2.0, 1.5}};
+  orbit.start = LinearOscillator<N>::State::Zero();
+  for (int i = 0; i < N; ++i) orbit.start(i) = 0.1 * (i + 1);
+  if (model.Validate(orbit.parameters)) {
+    state.SkipWithError("omega on a natural frequency");
+    return;
+  }
+  if (state.range(0) == 0) Periodicity(state, model, orbit);
+  if (state.range(0) == 1) Margins(state, model, orbit);
+}
+BENCHMARK(Chain<1>)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Chain<2>)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Chain<5>)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Chain<10>)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace stickslip
+
+BENCHMARK_MAIN();
