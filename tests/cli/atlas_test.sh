@@ -96,4 +96,9 @@ expect 2 "is a symbolic link" "$bin" atlas "${small[@]}" --output link
 for name in ../x . a/b; do expect 2 "output = '$name'" "$bin" atlas "${small[@]}" --output "$name"; done
 # Both ends of the range are values of the parameter, whatever the steps.
 expect 2 "range = '-1,0.65'" "$bin" atlas --preset paper-4.1 --range -1,0.65 --steps 0 --results "$r" --output b
+# A link the user put at a name the atlas writes is refused before any work; it and its target stay.
+mkdir -p "$work/elsewhere" && echo mine > "$work/elsewhere/data.txt"
+mv "$r/a/trace-1" "$work/trace-1-moved" && ln -s "$work/elsewhere" "$r/a/trace-1"
+expect 2 "'trace-1', a symbolic link at a name the atlas writes" "$bin" atlas "${small[@]}" --output a
+[ -L "$r/a/trace-1" ] && [ "$(cat "$work/elsewhere/data.txt")" = mine ] && pass || fail "the link or its target was touched"
 finish

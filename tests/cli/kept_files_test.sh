@@ -71,4 +71,11 @@ cp -r "$work/m" "$work/m-mine"
 "$bin" map "${map[@]}" > "$work/m.txt" 2>&1 && pass || fail "map again: $(cat "$work/m.txt")"
 diff -r "$work/m-mine" "$work/m" > /dev/null && pass || fail "the map written again lost the user's curve-<k>: $(ls "$work/m")"
 grep -qF "kept 2 other file(s): curve-98, curve-99" "$work/m.txt" && pass || fail "not listed: $(cat "$work/m.txt")"
+# A link the user put at a name the trace writes is never removed (no writer makes links): the
+# re-run fails, saying so, and the trace stays as it was with the link and its target.
+mkdir -p "$work/elsewhere" && echo mine > "$work/elsewhere/data.txt"
+mv "$r/tr/branch-1" "$work/branch-1-moved" && ln -s "$work/elsewhere" "$r/tr/branch-1"
+"$bin" trace "${p41[@]}" --results "$r" --output tr > "$work/link.txt" 2>&1 && fail "a trace over a link succeeded" || pass
+grep -qF "cannot keep" "$work/link.txt" && pass || fail "the failure does not say why: $(cat "$work/link.txt")"
+[ -L "$r/tr/branch-1" ] && [ "$(cat "$work/elsewhere/data.txt")" = mine ] && pass || fail "the link or its target was touched"
 finish

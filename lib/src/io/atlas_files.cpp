@@ -271,6 +271,13 @@ void CheckAtlasOutputDirectory(const fs::path& results_root, const std::string& 
   } catch (const InvalidInput& e) {
     throw refuse(fmt::format("holds no stickslip atlas ({})", e.what()));
   }
+  // A link at a name the atlas writes is the user's (no writer makes links): refused before any
+  // work, rather than kept at the end by failing the replacement.
+  for (const std::string& name : detail::ListedNames(target / kAtlasJson, {"name"})) {
+    if (fs::is_symlink(fs::symlink_status(target / name, error))) {
+      throw refuse(fmt::format("holds '{}', a symbolic link at a name the atlas writes", name));
+    }
+  }
   if (const std::error_code failed = CanCreateFileIn(target)) throw refuse(fmt::format("cannot be written ({})", failed.message()));
 }
 

@@ -114,13 +114,14 @@ std::set<std::string> ListedNames(const fs::path& index, const std::vector<std::
 namespace {
 
 // The entries below root/relative that are not ours, at every depth: a directory of ours (not a
-// link) is looked into, one of the user's is taken whole. Listed before anything moves: POSIX
-// leaves open what a listing shows of entries moved during it.
+// link) is looked into, one of the user's is taken whole. A symbolic link is the user's whatever
+// its name: no writer makes one. Listed before anything moves: POSIX leaves open what a listing
+// shows of entries moved during it.
 std::vector<fs::path> OthersIn(const fs::path& root, const fs::path& relative, const OwnedEntry& ours) {
   std::vector<fs::path> others;
   for (const fs::directory_entry& entry : fs::directory_iterator(root / relative)) {
     const fs::path name = relative / entry.path().filename();
-    if (!ours(name)) {
+    if (!ours(name) || entry.is_symlink()) {
       others.push_back(name);
     } else if (entry.is_directory() && !entry.is_symlink()) {
       const std::vector<fs::path> deeper = OthersIn(root, name, ours);
