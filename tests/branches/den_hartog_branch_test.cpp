@@ -4,11 +4,13 @@
 // X = sqrt(V^2 - beta^2 U^2) along a branch in the friction level, the level
 // beta* = |V| / sqrt(U^2 + 1/r^4) where its turning points start to stick (r^2 X = beta), the
 // one-term harmonic balance's error, and the degenerate frequencies r = 1/(2n) (Csernak, Stepan &
-// Shaw 2007) where the full-period periodicity equations are singular and the half-period ones are not.
+// Shaw 2007) where the full-period periodicity equations are singular and the half-period ones are not;
+// with viscous damping, the energy balance over a period and the viscous response as friction vanishes.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <tuple>
 #include <variant>
 
 #include <Eigen/SVD>
@@ -136,6 +138,64 @@ TEST(DenHartogOrbit, DegenerateFrequencyMakesTheFullPeriodEquationsSingularNotTh
     EXPECT_GT(Conditioning("slip- / antisymmetric", r, 0.05), 1e-3) << "r = " << r;
   }
   EXPECT_GT(Conditioning("slip- slip+", 0.8, 0.05), 1e-3);  // away from 1/(2n): regular both ways
+}
+
+// Den Hartog's oscillator with viscous damping c (Phil. Mag. 9 (1930) 801: combined viscous and
+// Coulomb damping), x'' + c x' + x = cos(omega t + phi) + F, solved by Newton from the undamped
+// orbit: the non-sticking orbit with two stops per period, on "slip- / antisymmetric".
+BasicOrbit<LinearOscillator<1>> DampedOrbit(const LinearOscillator<1>& model, double r, double beta) {
+  using DampedEquations = BasicPeriodicityEquations<LinearOscillator<1>>;
+  const DampedEquations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
+  const DenHartogOrbit undamped(r, beta);
+  Eigen::VectorXd guess(equations.VariableCount());
+  guess << undamped.amplitude, undamped.phi, std::numbers::pi / r, r, beta, beta;
+  const BasicOrbitSystem<LinearOscillator<1>> system(equations, guess, {0, 1, 2}, true);
+  const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
+  EXPECT_TRUE(solved.summary.Converged()) << solved.summary.message;
+  const Eigen::VectorXd v = system.Variables(solved.solution);
+  return {equations.signature(), {r, beta, beta}, {v(0), 0.0}, v(1), {v(2)}};
+}
+
+LinearOscillator<1> DampedDenHartog(double c) {
+  LinearOscillatorData data = DenHartogData();
+  data.damping = Eigen::MatrixXd::Constant(1, 1, c);
+  return LinearOscillator<1>(data);
+}
+
+// Over a period of a periodic orbit the forcing's work equals what viscous damping and friction
+// dissipate: int cos(psi) x' dt = int c x'^2 dt + F_k int |x'| dt, and on the half period from the
+// upper to the lower turning point int |x'| dt = 2X. Integrated by Simpson's rule on the exact flow.
+TEST(DampedDenHartogOrbit, BalancesTheForcingsWorkWithViscousAndFrictionLosses) {
+  for (const auto& [r, beta, c] : {std::tuple{0.8, 0.2, 0.1}, std::tuple{1.5, 0.25, 0.3}, std::tuple{2.5, 0.1, 0.05}}) {
+    const LinearOscillator<1> model = DampedDenHartog(c);
+    const BasicOrbit<LinearOscillator<1>> orbit = DampedOrbit(model, r, beta);
+    ASSERT_GT(SmallestMargin(AdmissibilityMargins(model, orbit)).value, 0.0) << "r = " << r;
+    const double half = orbit.durations[0];
+    constexpr int kIntervals = 4000;  // even, for Simpson's rule
+    double work = 0.0, viscous = 0.0, travel = 0.0;
+    for (int i = 0; i <= kIntervals; ++i) {
+      const double t = half * i / kIntervals;
+      const double weight = (i == 0 || i == kIntervals ? 1.0 : i % 2 == 1 ? 4.0 : 2.0) * half / (3.0 * kIntervals);
+      const auto x = model.Flow(Mode::kSlipNegative, orbit.start, orbit.phi, t, orbit.parameters);
+      work += weight * std::cos(orbit.phi + r * t) * x(1);
+      viscous += weight * c * x(1) * x(1);
+      travel += weight * std::abs(x(1));
+    }
+    const auto lower = model.Flow(Mode::kSlipNegative, orbit.start, orbit.phi, half, orbit.parameters);
+    EXPECT_NEAR(lower(0), -orbit.start(0), 1e-10) << "antisymmetry, r = " << r;
+    EXPECT_NEAR(travel, 2.0 * orbit.start(0), 1e-10) << "r = " << r;
+    EXPECT_NEAR(work, viscous + beta * travel, 1e-10 * work) << "r = " << r;
+  }
+}
+
+// As the friction level vanishes the orbit becomes the linear viscous response,
+// X = 1/sqrt((1 - r^2)^2 + (c r)^2), up to O(beta).
+TEST(DampedDenHartogOrbit, TendsToTheViscousResponseAsFrictionVanishes) {
+  for (const auto& [r, c] : {std::pair{0.8, 0.1}, std::pair{1.5, 0.3}, std::pair{2.5, 0.05}}) {
+    const BasicOrbit<LinearOscillator<1>> orbit = DampedOrbit(DampedDenHartog(c), r, 1e-7);
+    const double viscous = 1.0 / std::sqrt(std::pow(1.0 - r * r, 2) + std::pow(c * r, 2));
+    EXPECT_NEAR(orbit.start(0), viscous, 1e-5 * viscous) << "r = " << r;
+  }
 }
 
 }  // namespace

@@ -112,8 +112,9 @@ INSTANTIATE_TEST_SUITE_P(PaperOrbits, PascalInPhysicalUnits, testing::Values("pa
                          });
 
 // A random model of three coordinates: M = A A^T + I, K = B B^T + I (both positive definite),
-// forcing on every coordinate, the static level above the kinetic.
-LinearOscillatorData RandomThreeMasses(std::mt19937& random) {
+// forcing on every coordinate; with `damped`, a random damping matrix, not symmetric (as friction
+// coupling makes it in brake models), with a positive definite symmetric part.
+LinearOscillatorData RandomThreeMasses(std::mt19937& random, bool damped = false) {
   std::uniform_real_distribution<double> entry(-1.0, 1.0);
   const Eigen::Matrix3d a = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
   const Eigen::Matrix3d b = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
@@ -121,18 +122,24 @@ LinearOscillatorData RandomThreeMasses(std::mt19937& random) {
   data.mass = a * a.transpose() + Eigen::Matrix3d::Identity();
   data.stiffness = 2.0 * (b * b.transpose() + Eigen::Matrix3d::Identity());
   data.forcing = Eigen::Vector3d::NullaryExpr([&] { return entry(random); });
+  if (damped) {
+    const Eigen::Matrix3d c = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
+    data.damping = 0.1 * (c * c.transpose() + Eigen::Matrix3d::Identity()) + 0.05 * (c - c.transpose());
+  }
   return data;
 }
 
 // The exact simulator (the closed forms in the modal bases) and Odeint (the equations of motion
 // solved with M at every step, sharing no flow or event code) agree on every stop, stick and stick
-// exit over five forcing periods, from rest, on random three-mass models.
-TEST(LinearOscillator, ExactFlowsAgreeWithOdeintOnRandomThreeMassModels) {
-  std::mt19937 random(20261128);
+// exit over five forcing periods, from rest, on random three-mass models, undamped and damped.
+class RandomThreeMassModels : public testing::TestWithParam<bool> {};
+
+TEST_P(RandomThreeMassModels, ExactFlowsAgreeWithOdeint) {
+  std::mt19937 random(GetParam() ? 77 : 20261128);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int events = 0;
   for (int trial = 0; trial < 6; ++trial) {
-    const LinearOscillator<3> model(RandomThreeMasses(random));
+    const LinearOscillator<3> model(RandomThreeMasses(random, GetParam()));
     const LinearOscillator<3>::Parameters p{0.3 + 2.0 * unit(random), 0.05 + 0.3 * unit(random), 0.0};
     LinearOscillator<3>::Parameters q = p;
     q.F_s = p.F_k * (1.0 + unit(random));
@@ -157,12 +164,15 @@ TEST(LinearOscillator, ExactFlowsAgreeWithOdeintOnRandomThreeMassModels) {
   EXPECT_GT(events, 20) << "the random models must stop and stick";
 }
 
+INSTANTIATE_TEST_SUITE_P(Damping, RandomThreeMassModels, testing::Bool(),
+                         [](const testing::TestParamInfo<bool>& info) { return info.param ? "Damped" : "Undamped"; });
+
 // Every derivative of a flow against central differences of the flow, in each mode, on a random
 // three-mass model, away from rest so that no term vanishes by symmetry; and the transition
 // matrix (the flow without forcing or friction) against the flow's derivative in its start.
 TEST(LinearOscillator, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
   std::mt19937 random(7);
-  const LinearOscillator<3> model(RandomThreeMasses(random));
+  const LinearOscillator<3> model(RandomThreeMasses(random, true));
   const LinearOscillator<3>::Parameters p{0.77, 0.2, 0.3};
   LinearOscillator<3>::State x;
   x << 0.3, -0.2, 0.1, 0.4, 0.25, -0.15;
@@ -195,12 +205,12 @@ TEST(LinearOscillator, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
 // forms, is the one the equations of motion give (the integrator's).
 TEST(LinearOscillator, StickHoldsTheContactWithTheForceTheEquationsOfMotionNeed) {
   std::mt19937 random(11);
-  const LinearOscillator<3> model(RandomThreeMasses(random));
+  const LinearOscillator<3> model(RandomThreeMasses(random, true));
   const LinearOscillator<3>::Parameters p{1.3, 0.2, 10.0};
   LinearOscillator<3>::State x;
   x << 0.3, -0.2, 0.1, 0.4, 0.25, 0.0;
   const LinearOscillator<3>::Motion motion = model.MotionInMode(Mode::kStick, x, 0.4, p);
-  const SinusoidSum force = model.StickForceAlong(motion, 0.4, p);
+  const ExponentialSum force = model.StickForceAlong(motion, 0.4, p);
   for (double s : {0.0, 0.5, 2.0}) {
     const LinearOscillator<3>::State y = motion.StateAt(s);
     EXPECT_NEAR(y(2), 0.1, 1e-14);

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <set>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
@@ -40,23 +42,47 @@ void CheckSymmetricPositiveDefinite(const char* field, const Eigen::MatrixXd& a,
   }
 }
 
-ModalBasis ModesOfPair(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness) {
-  ModalBasis basis;
-  if (mass.rows() == 0) return {Eigen::MatrixXd(0, 0), Eigen::MatrixXd(0, 0), Eigen::VectorXd(0)};
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
-  basis.shapes = solver.eigenvectors();  // mass-normalised by the solver
-  basis.projector = basis.shapes.transpose() * mass;
+// The first-order system of M q'' + C q' + K q = input on the coordinates `free` (the others held):
+// A = [[0, I], [-M^-1 K, -M^-1 C]] on (q_free, q_free'), with its eigenvectors.
+FirstOrderBasis BasisOf(const LinearOscillatorData& data, const Eigen::MatrixXd& damping, Eigen::Index free) {
+  const Eigen::Index n = data.mass.rows(), d = 2 * free;
+  FirstOrderBasis basis;
+  for (Eigen::Index j = 0; j < free; ++j) basis.components.push_back(static_cast<int>(j));
+  for (Eigen::Index j = 0; j < free; ++j) basis.components.push_back(static_cast<int>(n + j));
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(d);
+  basis.forcing = basis.friction = basis.held_position = basis.held_velocity = zero;
+  basis.system = Eigen::MatrixXd::Zero(d, d);
+  if (free == 0) {
+    basis.system_inverse = basis.system;
+    basis.shapes = basis.projector = Eigen::MatrixXcd(0, 0);
+    basis.eigenvalues = Eigen::VectorXcd(0);
+    return basis;
+  }
+  const Eigen::LLT<Eigen::MatrixXd> mass(data.mass.topLeftCorner(free, free));
+  basis.system.topRightCorner(free, free).setIdentity();
+  basis.system.bottomLeftCorner(free, free) = -mass.solve(data.stiffness.topLeftCorner(free, free));
+  basis.system.bottomRightCorner(free, free) = -mass.solve(damping.topLeftCorner(free, free));
+  basis.system_inverse = basis.system.inverse();
+  basis.forcing.tail(free) = mass.solve(data.forcing.head(free));
+  if (free == n) {
+    basis.friction.tail(free) = mass.solve(Eigen::VectorXd::Unit(n, n - 1));
+  } else {
+    basis.held_position.tail(free) = -mass.solve(data.stiffness.col(n - 1).head(free));
+    basis.held_velocity.tail(free) = -mass.solve(damping.col(n - 1).head(free));
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(basis.system);
   basis.eigenvalues = solver.eigenvalues();
-  return basis;
-}
-
-// The stick's basis on the n - 1 free coordinates, padded with the held contact's zero row/column.
-ModalBasis StickModes(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness) {
-  const Eigen::Index r = mass.rows() - 1;
-  const ModalBasis free = ModesOfPair(mass.topLeftCorner(r, r), stiffness.topLeftCorner(r, r));
-  ModalBasis basis{Eigen::MatrixXd::Zero(r + 1, r), Eigen::MatrixXd::Zero(r, r + 1), free.eigenvalues};
-  basis.shapes.topRows(r) = free.shapes;
-  basis.projector.leftCols(r) = free.projector;
+  basis.shapes = solver.eigenvectors();
+  basis.projector = basis.shapes.inverse();
+  // Dependent eigenvectors (a repeated eigenvalue without a full set, as at critical damping)
+  // would need polynomial terms: refused, with the conditioning as the evidence.
+  const double conditioning = basis.shapes.norm() * basis.projector.norm();
+  if (!(conditioning < 1e10)) {
+    throw Invalid(damping.isZero() ? "stiffness" : "damping",
+                  fmt::format("gives {} modes whose eigenvectors are nearly dependent (conditioning {:.3g}): valid "
+                              "matrices with distinct modes",
+                              free == n ? "slip" : "stick", conditioning));
+  }
   return basis;
 }
 
@@ -81,15 +107,22 @@ LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {
   }
   CheckSymmetricPositiveDefinite("mass", data.mass, n);
   CheckSymmetricPositiveDefinite("stiffness", data.stiffness, n);
+  const Eigen::MatrixXd damping = data.damping.size() == 0 ? Eigen::MatrixXd::Zero(n, n) : data.damping;
+  if (damping.rows() != n || damping.cols() != n) {
+    throw Invalid("damping", fmt::format("is {}x{}: valid a {}x{} matrix or none", damping.rows(), damping.cols(), n, n));
+  }
+  if (!damping.allFinite()) throw Invalid("damping", "has an entry that is not finite: valid finite entries");
   if (data.forcing.size() != n) {
     throw Invalid("forcing", fmt::format("has {} entries: valid one per coordinate, {}", data.forcing.size(), n));
   }
   if (!data.forcing.allFinite()) throw Invalid("forcing", "has an entry that is not finite: valid finite entries");
   CheckNames(data.coordinates, n);
-  LinearOscillatorModes modes{ModesOfPair(data.mass, data.stiffness), StickModes(data.mass, data.stiffness), {}, 0.0};
+  LinearOscillatorModes modes{BasisOf(data, damping, n), BasisOf(data, damping, n - 1), {}, 0.0};
   const Eigen::MatrixXd mass_inverse = data.mass.llt().solve(Eigen::MatrixXd::Identity(n, n));
   const double contact_compliance = mass_inverse(n - 1, n - 1);
-  modes.holding_stiffness = (mass_inverse * data.stiffness).row(n - 1) / contact_compliance;
+  modes.holding.resize(2 * n);
+  modes.holding << (mass_inverse * data.stiffness).row(n - 1), (mass_inverse * damping).row(n - 1);
+  modes.holding /= contact_compliance;
   modes.holding_forcing = mass_inverse.row(n - 1).dot(data.forcing) / contact_compliance;
   return modes;
 }
@@ -98,10 +131,15 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
   const Eigen::Index n = data.mass.rows();
   ModelDescription d;
   d.name = data.name;
-  double highest = modes.slip.eigenvalues.maxCoeff();
-  if (n > 1) highest = std::max(highest, modes.stick.eigenvalues.maxCoeff());
-  const double lowest = 1e-3 * std::sqrt(modes.slip.eigenvalues.minCoeff());
-  highest = 1e3 * std::sqrt(highest);
+  double lowest = std::numeric_limits<double>::infinity(), highest = 0.0;
+  for (const FirstOrderBasis* basis : {&modes.slip, &modes.stick}) {
+    for (const std::complex<double>& lambda : basis->eigenvalues) {
+      lowest = std::min(lowest, std::abs(lambda));
+      highest = std::max(highest, std::abs(lambda));
+    }
+  }
+  lowest *= 1e-3;
+  highest *= 1e3;
   d.parameters = {
       {"omega", "forcing frequency", "rad/s", lowest, highest,
        fmt::format("{:.6g} <= omega <= {:.6g}, away from the natural frequencies", lowest, highest)},

@@ -21,12 +21,15 @@ const char* ToString(MarginKind kind) {
   return "friction-level";
 }
 
-Extremum InteriorMinimum(const SinusoidSum& f, double d) {
+namespace {
+
+template <typename F>
+Extremum InteriorMinimumOf(const F& f, double d) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const double guard = 1e-9 * std::max(1.0, d);
   Extremum best{0.0, kInfinity};
-  const SinusoidSum df = f.Derivative();
-  const SinusoidSum d2f = df.Derivative();
+  const F df = f.Derivative();
+  const F d2f = df.Derivative();
   if (std::isnan(d)) return {0.0, std::numeric_limits<double>::quiet_NaN()};
   if (!(d > 2 * guard)) return best;
   const ZeroSearch critical = Zeros(df, guard, d - guard, std::numeric_limits<int>::max());
@@ -38,6 +41,11 @@ Extremum InteriorMinimum(const SinusoidSum& f, double d) {
   }
   return best;
 }
+
+}  // namespace
+
+Extremum InteriorMinimum(const SinusoidSum& f, double d) { return InteriorMinimumOf(f, d); }
+Extremum InteriorMinimum(const ExponentialSum& f, double d) { return InteriorMinimumOf(f, d); }
 
 std::string Margin::Name() const {
   return segment < 0 ? std::string(base) : fmt::format("{}:{}", base, segment + 1);

@@ -57,7 +57,8 @@ SegmentSearch SlipEnd(const M& model, Mode mode, const typename M::Motion& motio
 // `found` with the first crossing of a stick constraint in [from, to], into `next`, if it comes
 // before the end found already. A touch leaves the constraint satisfied and the stick goes on;
 // touches are rare, so the search looks past each one, all of them within one search's bound.
-inline SegmentSearch FirstCrossing(const SinusoidSum& constraint, Mode next, double from, double to,
+template <EventFunction F>
+SegmentSearch FirstCrossing(const F& constraint, Mode next, double from, double to,
                                    const ZeroSearchOptions& zeros, SegmentSearch found) {
   ZeroSearchOptions left = zeros;
   while (from < to) {
@@ -93,18 +94,19 @@ template <OscillatorModel M>
 SegmentSearch StickEnd(const M& model, const typename M::Motion& motion, double phase, double horizon,
                        const typename M::Parameters& p, const ZeroSearchOptions& zeros) {
   constexpr double kMaxReachPeriods = 64.0;
-  const SinusoidSum force = model.StickForceAlong(motion, phase, p);
+  using F = typename M::EventFunction;
+  const F force = model.StickForceAlong(motion, phase, p);
   const double threshold = model.StaticThreshold(p);
-  const SinusoidSum g = force.Affine(1.0, threshold);
-  const SinusoidSum g1 = force.Affine(-1.0, threshold);
+  const F g = force.Affine(1.0, threshold);
+  const F g1 = force.Affine(-1.0, threshold);
   SegmentSearch result;
-  const double g_level = 2.0 * zeros.touch_tolerance * g.Scale();  // twice: room for rounding
-  const double g1_level = 2.0 * zeros.touch_tolerance * g1.Scale();
   const double period = 2.0 * std::numbers::pi / model.ForcingFrequency(p);
   double from = 0.0;
   for (double reach = period;; reach = std::min(2.0 * reach, kMaxReachPeriods * period)) {
     double to = std::min(horizon, from + reach);
-    while (to < horizon && !(std::abs(g(to)) > g_level && std::abs(g1(to)) > g1_level)) {
+    // Twice the touch level: room for rounding.
+    const auto clear = [&](const F& f) { return std::abs(f(to)) > 2.0 * zeros.touch_tolerance * SizeAt(f, to); };
+    while (to < horizon && !(clear(g) && clear(g1))) {
       to = std::min(horizon, to + 1e-3 * reach);
     }
     result = FirstCrossing(g, Mode::kSlipPositive, from, to, zeros, std::move(result));

@@ -1,22 +1,26 @@
 // A linear oscillator with one Coulomb contact as an OscillatorModel (oscillator_model.hpp),
 // at a fixed number N of coordinates (linear_oscillator_data.hpp gives the equations):
-//   M q'' + K q = g cos(omega t + phi) + e_N F,
+//   M q'' + C q' + K q = g cos(omega t + phi) + e_N F,
 // slip (q_N' != 0): F = -F_k sign(q_N'); stick (q_N' = 0 held): F is what keeps q_N'' = 0,
 // admissible while |F| <= F_s. The state is (q, q'); the contact's velocity is q_N'.
 //
-// In each mode the motion is exact, written in the mode's modal basis: with eta = P q,
-//   eta_i(s) = c_i + d_i s + Q_i cos(omega s + psi) + a_i cos(omega_i s) + b_i sin(omega_i s),
-// the static response c (+ d s) to the friction force in a slip or to the held coordinate in a
-// stick, the forced response Q_i = (Phi^T g)_i / (omega_i^2 - omega^2), and the free oscillation
-// that meets the start; in a stick q_N = q_N(0) + q_N'(0) s besides. The bases are computed once
-// per model, so the parameters (omega, F_k, F_s) enter linearly or through Q_i: forward-mode AD
-// runs through MotionInMode for every derivative the orbit layer asks for.
-// The parameters are omega, F_k and F_s; the matrices are the model's data. Damping, a singular K,
-// a belt, autonomous orbits and continuation in the matrices' entries come next.
+// In each mode the components y of the state that move obey y' = A y + e + f s + b cos(psi),
+// psi = omega s + phase (e: the friction force in a slip, the held q_N in a stick; f: the held
+// q_N' in a stick), solved exactly as
+//   y(s) = alpha + beta s + Re(Z e^{i psi}) + sum_k V_k d_k e^{lambda_k s},
+// beta = -A^-1 f, alpha = A^-1 (beta - e), Z = (i omega - A)^-1 b = sum_k V_k (W b)_k / (i omega - lambda_k),
+// d = W (y(0) - the particular part at 0). The bases (A's eigenvectors V, W = V^-1) are computed
+// once per model, so the parameters (omega, F_k, F_s) enter linearly or through
+// 1/(i omega - lambda_k): forward-mode AD runs through MotionInMode for every derivative the orbit
+// layer asks for, and every function along a mode is an ExponentialSum for the root finder.
+// The parameters are omega, F_k and F_s; the matrices are the model's data. A singular K, a belt,
+// autonomous orbits and continuation in the matrices' entries come next.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <complex>
 #include <optional>
 #include <vector>
 
@@ -30,7 +34,7 @@
 #include "stickslip/model/linear_oscillator_data.hpp"
 #include "stickslip/model/mode.hpp"
 #include "stickslip/model/model_description.hpp"
-#include "stickslip/numerics/sinusoid_sum.hpp"
+#include "stickslip/numerics/exponential_sum.hpp"
 
 namespace stickslip {
 
@@ -54,47 +58,57 @@ class LinearOscillator {
   using State = StateT<double>;
   using Parameters = ParametersT<double>;
   using FlowDerivatives = BasicFlowDerivatives<2 * N, 3>;
+  using EventFunction = ExponentialSum;
   template <typename T>
   static T& ParameterAt(ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.F_k : p.F_s; }
   template <typename T>
   static const T& ParameterAt(const ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.F_k : p.F_s; }
 
-  using Square = Eigen::Matrix<double, N, N>;
-  using Vector = Eigen::Matrix<double, N, 1>;
-  using Row = Eigen::Matrix<double, 1, N>;
-  // A mode's modal basis at fixed size; modes beyond `count` have zero shapes (lambda 1, unused).
+  using Real = Eigen::Matrix<double, 2 * N, 2 * N>;
+  using Complex = Eigen::Matrix<std::complex<double>, 2 * N, 2 * N>;
+  using Vector = Eigen::Matrix<double, 2 * N, 1>;
+  // A mode's first-order basis at fixed size, on its first `size` entries (FirstOrderBasis).
   struct Basis {
-    Square shapes = Square::Zero(), projector = Square::Zero();
-    Vector eigenvalues = Vector::Ones(), frequencies = Vector::Ones();
-    Vector forcing = Vector::Zero();     // Phi^T g
-    Vector contact = Vector::Zero();     // Phi^T e_N: the friction force's modal load (a slip)
-    Vector coupling = Vector::Zero();    // Phi^T K e_N: the held coordinate's load (a stick)
-    int count = 0;
+    int size = 0;
+    std::array<int, 2 * N> component{};
+    Real inverse = Real::Zero();
+    Complex shapes = Complex::Zero(), projector = Complex::Zero();
+    Eigen::Matrix<std::complex<double>, 2 * N, 1> eigenvalues = Eigen::Matrix<std::complex<double>, 2 * N, 1>::Zero();
+    Complex forced_shapes = Complex::Zero();  // column k: V_k (W b)_k
+    Vector forcing = Vector::Zero(), friction = Vector::Zero(), held_position = Vector::Zero(), held_velocity = Vector::Zero();
+    // 2 for the first of a complex-conjugate pair (its real part counts twice), 1 for a real
+    // eigenvalue, 0 for the second of a pair.
+    std::array<int, 2 * N> weight{};
   };
 
   // A motion points at its model's basis: the model must outlive the motions it makes.
   template <typename T>
   struct MotionT {
     const Basis* basis = nullptr;
-    bool holds = false;            // a stick: q_N = held_position + held_velocity s
+    bool holds = false;  // a stick: q_N = held_position + held_velocity s
     T omega{}, phase{}, held_position{}, held_velocity{};
-    Eigen::Matrix<T, N, 1> constant, slope, forced, a, b;  // per mode, as in the header comment
+    StateT<T> alpha, beta, forced_re, forced_im, d_re, d_im;  // on the basis's components, as in the header
 
     StateT<T> StateAt(const T& s) const {
       using std::cos;
+      using std::exp;
       using std::sin;
-      const T zero = omega * 0.0;
-      Eigen::Matrix<T, N, 1> eta = Eigen::Matrix<T, N, 1>::Constant(zero), rate = eta;
-      const T c = cos(omega * s + phase), sn = sin(omega * s + phase);
-      for (int i = 0; i < basis->count; ++i) {
-        const double w = basis->frequencies(i);
-        const T ci = cos(w * s), si = sin(w * s);
-        eta(i) = constant(i) + slope(i) * s + forced(i) * c + a(i) * ci + b(i) * si;
-        rate(i) = slope(i) - forced(i) * omega * sn + w * (b(i) * ci - a(i) * si);
+      const T psi = omega * s + phase;
+      const T c = cos(psi), sn = sin(psi);
+      StateT<T> x = StateT<T>::Constant(omega * 0.0);
+      for (int i = 0; i < basis->size; ++i) {
+        x(basis->component[i]) = alpha(i) + beta(i) * s + forced_re(i) * c - forced_im(i) * sn;
       }
-      StateT<T> x;
-      x.template head<N>() = Times(basis->shapes, eta, zero);
-      x.template tail<N>() = Times(basis->shapes, rate, zero);
+      for (int k = 0; k < basis->size; ++k) {
+        if (basis->weight[k] == 0) continue;
+        const std::complex<double> lambda = basis->eigenvalues(k);
+        const T growth = exp(lambda.real() * s) * double(basis->weight[k]);
+        const T p = growth * (d_re(k) * cos(lambda.imag() * s) - d_im(k) * sin(lambda.imag() * s));
+        const T q = growth * (d_re(k) * sin(lambda.imag() * s) + d_im(k) * cos(lambda.imag() * s));
+        for (int i = 0; i < basis->size; ++i) {
+          x(basis->component[i]) += basis->shapes(i, k).real() * p - basis->shapes(i, k).imag() * q;
+        }
+      }
       if (holds) {
         x(kContact) += held_position + held_velocity * s;
         x(N + kContact) += held_velocity;
@@ -114,27 +128,30 @@ class LinearOscillator {
     description_ = DescribeLinearOscillator(data, modes);
     mass_ = data.mass;
     stiffness_ = data.stiffness;
+    damping_ = data.damping.size() == 0 ? Eigen::Matrix<double, N, N>::Zero() : Eigen::Matrix<double, N, N>(data.damping);
     forcing_ = data.forcing;
     mass_factor_ = mass_.llt();
-    compliance_ = mass_factor_.solve(Square::Identity());
-    slip_ = BasisOf(modes.slip, data);
-    stick_ = BasisOf(modes.stick, data);
-    holding_stiffness_ = modes.holding_stiffness;
+    compliance_ = mass_factor_.solve(Eigen::Matrix<double, N, N>::Identity());
+    slip_ = BasisOf(modes.slip);
+    stick_ = BasisOf(modes.stick);
+    holding_ = modes.holding;
     holding_forcing_ = modes.holding_forcing;
   }
+
   const ModelDescription& Description() const { return description_; }
 
-  // The closed forms need a forcing frequency away from every natural frequency of a slip and of
-  // a stick (Q_i has omega_i^2 - omega^2 in its denominator).
+  // The closed forms need a forcing frequency away from every undamped natural frequency of a
+  // slip and of a stick (1/(i omega - lambda_k) in Z).
   std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) const {
     const ParameterDescription& d = description_.parameters[0];
     if (!(p.omega >= d.minimum && p.omega <= d.maximum)) return InvalidInput("omega", p.omega, d.range);
     for (const Basis* basis : {&slip_, &stick_}) {
-      for (int i = 0; i < basis->count; ++i) {
-        if (std::abs(p.omega * p.omega - basis->eigenvalues(i)) <= 1e-9 * basis->eigenvalues(i)) {
+      for (int k = 0; k < basis->size; ++k) {
+        const std::complex<double> lambda = basis->eigenvalues(k);
+        if (std::abs(std::complex<double>(0.0, p.omega) - lambda) <= 1e-9 * std::abs(lambda)) {
           return InvalidInput("omega", p.omega,
-                              fmt::format("{} away from the natural frequency {:.10g} of a {}", d.range,
-                                          basis->frequencies(i), basis == &slip_ ? "slip" : "stick"));
+                              fmt::format("{} away from the natural frequency {:.10g} of a {}", d.range, lambda.imag(),
+                                          basis == &slip_ ? "slip" : "stick"));
         }
       }
     }
@@ -188,7 +205,7 @@ class LinearOscillator {
     return m;
   }
   // S = I + (f+ - f-) grad(h)^T / (grad(h) . f- + dh/dt) (Leine & Nijmeijer 2004): the fields
-  // differ in the accelerations only; h = q_N' at a stop, h = F(q, t) -+ F_s at a stick's end.
+  // differ in the accelerations only; h = q_N' at a stop, h = F(q, q', t) -+ F_s at a stick's end.
   template <typename T>
   Eigen::Matrix<T, 2 * N, 2 * N> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase,
                                                  const ParametersT<T>& p) const {
@@ -197,13 +214,14 @@ class LinearOscillator {
     if (before == after) return m;  // an abnormal stop
     const Eigen::Matrix<T, N, 1> jump = Acceleration(after, x, phase, p) - Acceleration(before, x, phase, p);
     if (before != Mode::kStick) {
-      m.col(N + kContact).template tail<N>() += jump / ContactAcceleration(before, x, phase, p);
+      const T slope = ContactAcceleration(before, x, phase, p);
+      for (int i = 0; i < N; ++i) m(N + i, N + kContact) += jump(i) / slope;
     } else {
       StateT<T> at_rest = x;
       at_rest(N + kContact) = ZeroLike(p);
       const T rate = StickForceRate(at_rest, phase, p);
       for (int i = 0; i < N; ++i) {
-        for (int j = 0; j < N; ++j) m(N + i, j) += jump(i) * holding_stiffness_(j) / rate;
+        for (int j = 0; j < 2 * N; ++j) m(N + i, j) += jump(i) * holding_(j) / rate;
       }
     }
     return m;
@@ -213,19 +231,24 @@ class LinearOscillator {
 
   template <typename T>
   T ContactVelocity(const StateT<T>& x) const { return x(N + kContact); }
-  // q'' in a mode: M^-1 (g cos psi - K q + e_N F), with F = -F_k sign(q_N') in a slip and the
-  // holding force in a stick.
+  // q'' in a mode: M^-1 (g cos psi - K q - C q' + e_N F), with F = -F_k sign(q_N') in a slip and
+  // the holding force in a stick (then q_N'' = 0 exactly).
   template <typename T>
   Eigen::Matrix<T, N, 1> Acceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     using std::cos;
     // (Each branch made a T: a conditional between AD expression types would keep a dangling one.)
     const T friction = mode == Mode::kStick ? StickForce(x, phase, p) : T(-double(SlipDirection(mode)) * p.F_k);
-    const T zero = ZeroLike(p);
-    Eigen::Matrix<T, N, 1> load = Times(Square(-stiffness_), Eigen::Matrix<T, N, 1>(x.template head<N>()), zero);
-    for (int i = 0; i < N; ++i) load(i) += forcing_(i) * cos(phase);
+    Eigen::Matrix<T, N, 1> load = Eigen::Matrix<T, N, 1>::Constant(ZeroLike(p));
+    for (int i = 0; i < N; ++i) {
+      load(i) += forcing_(i) * cos(phase);
+      for (int j = 0; j < N; ++j) load(i) -= stiffness_(i, j) * x(j) + damping_(i, j) * x(N + j);
+    }
     load(kContact) += friction;
-    Eigen::Matrix<T, N, 1> q2 = Times(compliance_, load, zero);
-    if (mode == Mode::kStick) q2(kContact) = zero;  // exactly, not to rounding
+    Eigen::Matrix<T, N, 1> q2 = Eigen::Matrix<T, N, 1>::Constant(ZeroLike(p));
+    for (int i = 0; i < N; ++i) {
+      for (int j = 0; j < N; ++j) q2(i) += compliance_(i, j) * load(j);
+    }
+    if (mode == Mode::kStick) q2(kContact) = ZeroLike(p);
     return q2;
   }
   template <typename T>
@@ -245,12 +268,18 @@ class LinearOscillator {
   template <typename T>
   T StickForce(const StateT<T>& x, const T& phase, const ParametersT<T>&) const {
     using std::cos;
-    return Dot(holding_stiffness_, x.template head<N>()) - holding_forcing_ * cos(phase);
+    T force = holding_(0) * x(0);
+    for (int j = 1; j < 2 * N; ++j) force += holding_(j) * x(j);
+    return force - holding_forcing_ * cos(phase);
   }
+  // dF/dt along a stick: the holding weights on (q', q''), q'' the stick's accelerations.
   template <typename T>
   T StickForceRate(const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     using std::sin;
-    return Dot(holding_stiffness_, x.template tail<N>()) + holding_forcing_ * p.omega * sin(phase);
+    const Eigen::Matrix<T, N, 1> q2 = Acceleration(Mode::kStick, x, phase, p);
+    T rate = holding_forcing_ * p.omega * sin(phase);
+    for (int j = 0; j < N; ++j) rate += holding_(j) * x(N + j) + holding_(N + j) * q2(j);
+    return rate;
   }
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.F_s; }
@@ -262,11 +291,11 @@ class LinearOscillator {
     return Mode::kStick;
   }
 
-  SinusoidSum ContactVelocityAlong(const Motion& motion) const { return CoordinateAlong(motion, kContact).Derivative(); }
-  SinusoidSum CoordinateAlong(const Motion& motion, int j) const { return Along(motion, Row::Unit(j), 0.0); }
+  ExponentialSum ContactVelocityAlong(const Motion& motion) const { return Along(motion, Vector::Unit(N + kContact), 0.0); }
+  ExponentialSum CoordinateAlong(const Motion& motion, int j) const { return Along(motion, Vector::Unit(j), 0.0); }
   bool HeldInStick(int j) const { return j == kContact; }
-  SinusoidSum StickForceAlong(const Motion& motion, double, const Parameters&) const {
-    return Along(motion, holding_stiffness_, -holding_forcing_);
+  ExponentialSum StickForceAlong(const Motion& motion, double, const Parameters&) const {
+    return Along(motion, holding_.transpose(), -holding_forcing_);
   }
 
   // For an integrator (integrable_oscillator_model.hpp), from the equations of motion alone: the
@@ -277,43 +306,54 @@ class LinearOscillator {
     if (mode == Mode::kStick) {
       dx.template tail<N>() = HeldAcceleration(x, phase);
     } else {
-      Vector load = forcing_ * std::cos(phase) - stiffness_ * x.template head<N>();
+      Eigen::Matrix<double, N, 1> load = Load(x, phase);
       load(kContact) -= SlipDirection(mode) * p.F_k;
       dx.template tail<N>() = mass_factor_.solve(load);
     }
     return dx;
   }
-  // The contact's row of M q'' + K q = g cos psi + F with the held accelerations.
+  // The contact's row of M q'' + C q' + K q = g cos psi + F with the held accelerations.
   double HoldingForce(const State& x, double phase, const Parameters&) const {
-    return mass_.row(kContact).dot(HeldAcceleration(x, phase)) + stiffness_.row(kContact).dot(x.template head<N>()) -
-           forcing_(kContact) * std::cos(phase);
+    return mass_.row(kContact).dot(HeldAcceleration(x, phase)) - Load(x, phase)(kContact);
   }
+  // Its time derivative at rest: the same row differentiated, q''' of the free coordinates from
+  // the time derivative of their equations.
   double HoldingForceRate(const State& x, double phase, const Parameters& p) const {
-    const double omega = p.omega;
-    Vector jerk = Vector::Zero();
+    const Eigen::Matrix<double, N, 1> q2 = HeldAcceleration(x, phase);
+    const Eigen::Matrix<double, N, 1> load_rate =
+        -forcing_ * p.omega * std::sin(phase) - stiffness_ * x.template tail<N>() - damping_ * q2;
+    Eigen::Matrix<double, N, 1> q3 = Eigen::Matrix<double, N, 1>::Zero();
     if constexpr (N > 1) {
-      const Eigen::Matrix<double, N - 1, 1> load =
-          -forcing_.template head<N - 1>() * omega * std::sin(phase) - stiffness_.template topRows<N - 1>() * x.template tail<N>();
-      jerk.template head<N - 1>() = mass_.template topLeftCorner<N - 1, N - 1>().llt().solve(load);
+      q3.template head<N - 1>() = mass_.template topLeftCorner<N - 1, N - 1>().llt().solve(load_rate.template head<N - 1>());
     }
-    return mass_.row(kContact).dot(jerk) + stiffness_.row(kContact).dot(x.template tail<N>()) +
-           forcing_(kContact) * omega * std::sin(phase);
+    return mass_.row(kContact).dot(q3) - load_rate(kContact);
   }
   double HoldingForceScale(const State& x, const Parameters& p) const {
-    return std::max(stiffness_.row(kContact).cwiseAbs().dot(x.template head<N>().cwiseAbs()) + std::abs(forcing_(kContact)), p.F_s);
+    return std::max(stiffness_.row(kContact).cwiseAbs().dot(x.template head<N>().cwiseAbs()) +
+                        damping_.row(kContact).cwiseAbs().dot(x.template tail<N>().cwiseAbs()) + std::abs(forcing_(kContact)),
+                    p.F_s);
   }
 
  private:
-  Basis BasisOf(const ModalBasis& modal, const LinearOscillatorData& data) const {
+  Basis BasisOf(const FirstOrderBasis& b) const {
     Basis basis;
-    basis.count = static_cast<int>(modal.eigenvalues.size());
-    basis.shapes.leftCols(basis.count) = modal.shapes;
-    basis.projector.topRows(basis.count) = modal.projector;
-    basis.eigenvalues.head(basis.count) = modal.eigenvalues;
-    basis.frequencies = basis.eigenvalues.cwiseSqrt();
-    basis.forcing.head(basis.count) = modal.shapes.transpose() * data.forcing;
-    basis.contact.head(basis.count) = modal.shapes.row(kContact).transpose();
-    basis.coupling.head(basis.count) = modal.shapes.transpose() * data.stiffness.col(kContact);
+    basis.size = static_cast<int>(b.components.size());
+    const int d = basis.size;
+    std::copy(b.components.begin(), b.components.end(), basis.component.begin());
+    basis.inverse.topLeftCorner(d, d) = b.system_inverse;
+    basis.shapes.topLeftCorner(d, d) = b.shapes;
+    basis.projector.topLeftCorner(d, d) = b.projector;
+    basis.eigenvalues.head(d) = b.eigenvalues;
+    basis.forcing.head(d) = b.forcing;
+    basis.friction.head(d) = b.friction;
+    basis.held_position.head(d) = b.held_position;
+    basis.held_velocity.head(d) = b.held_velocity;
+    const Eigen::VectorXcd modal_forcing = b.projector * b.forcing.cast<std::complex<double>>();
+    for (int k = 0; k < d; ++k) {
+      basis.forced_shapes.col(k).head(d) = b.shapes.col(k) * modal_forcing(k);
+      const double nu = b.eigenvalues(k).imag();
+      basis.weight[k] = nu > 0.0 ? 2 : nu == 0.0 ? 1 : 0;  // exact conjugates from the real Schur form
+    }
     return basis;
   }
   // Forward-mode AD with derivative vectors of run-time size (the orbit layer's gradients) needs
@@ -321,78 +361,112 @@ class LinearOscillator {
   // and products with the model's matrices are written out.
   template <typename T>
   static T ZeroLike(const ParametersT<T>& p) { return T(p.omega * 0.0); }
-  template <typename T, typename Vec>
-  static Eigen::Matrix<T, N, 1> Times(const Square& a, const Vec& v, const T& zero) {
-    Eigen::Matrix<T, N, 1> product = Eigen::Matrix<T, N, 1>::Constant(zero);
-    for (int i = 0; i < N; ++i) {
-      for (int j = 0; j < N; ++j) product(i) += a(i, j) * v(j);
-    }
-    return product;
-  }
-  template <typename Vec>
-  static auto Dot(const Row& w, const Vec& v) {
-    typename Vec::Scalar sum = w(0) * v(0);
-    for (int j = 1; j < N; ++j) sum += w(j) * v(j);
-    return sum;
-  }
+
   // `loaded`: with the forcing and the friction force (the flow), or without (its linear part).
   template <typename T>
   MotionT<T> MotionFrom(Mode mode, const StateT<T>& start, const T& phase, const ParametersT<T>& p, bool loaded) const {
     using std::cos;
     using std::sin;
     const bool stick = mode == Mode::kStick;
+    const T zero = ZeroLike(p);
     MotionT<T> m;
     m.basis = stick ? &stick_ : &slip_;
     m.holds = stick;
     m.omega = p.omega;
     m.phase = phase;
-    const T zero = ZeroLike(p);
     m.held_position = stick ? start(kContact) : zero;
     m.held_velocity = stick ? start(N + kContact) : zero;
     const Basis& b = *m.basis;
+    const int d = b.size;
     const T friction = stick || !loaded ? zero : T(-double(SlipDirection(mode)) * p.F_k);
-    const Eigen::Matrix<T, N, 1> eta0 = Times(b.projector, Eigen::Matrix<T, N, 1>(start.template head<N>()), zero);
-    const Eigen::Matrix<T, N, 1> rate0 = Times(b.projector, Eigen::Matrix<T, N, 1>(start.template tail<N>()), zero);
-    for (int i = 0; i < N; ++i) {
-      const double lambda = b.eigenvalues(i);
-      // A slip's static response to the friction force; a stick's to the held coordinate.
-      m.constant(i) = (friction * b.contact(i) - b.coupling(i) * m.held_position) / lambda;
-      m.slope(i) = -b.coupling(i) * m.held_velocity / lambda;
-      m.forced(i) = loaded ? T(b.forcing(i) / (lambda - p.omega * p.omega)) : zero;
-      m.a(i) = eta0(i) - m.constant(i) - m.forced(i) * cos(phase);
-      m.b(i) = (rate0(i) - m.slope(i) + m.forced(i) * p.omega * sin(phase)) / b.frequencies(i);
+    // The constant and linear inputs e + f s, then alpha + beta s that answers them.
+    StateT<T> e = StateT<T>::Constant(zero), f = e;
+    for (int i = 0; i < d; ++i) {
+      e(i) = b.friction(i) * friction + b.held_position(i) * m.held_position + b.held_velocity(i) * m.held_velocity;
+      f(i) = b.held_position(i) * m.held_velocity;
+    }
+    m.alpha = m.beta = m.forced_re = m.forced_im = m.d_re = m.d_im = StateT<T>::Constant(zero);
+    for (int i = 0; i < d; ++i) {
+      for (int j = 0; j < d; ++j) m.beta(i) -= b.inverse(i, j) * f(j);
+    }
+    for (int i = 0; i < d; ++i) {
+      for (int j = 0; j < d; ++j) m.alpha(i) += b.inverse(i, j) * (m.beta(j) - e(j));
+    }
+    // Z = sum_k V_k (W b)_k / (i omega - lambda_k), 1/(i omega - lambda) = (-sigma - i(omega - nu)) / |.|^2.
+    if (loaded) {
+      for (int k = 0; k < d; ++k) {
+        const std::complex<double> lambda = b.eigenvalues(k);
+        const T detune = p.omega - lambda.imag();
+        const T norm = lambda.real() * lambda.real() + detune * detune;
+        const T r_re = -lambda.real() / norm, r_im = -detune / norm;
+        for (int i = 0; i < d; ++i) {
+          const std::complex<double> u = b.forced_shapes(i, k);
+          m.forced_re(i) += u.real() * r_re - u.imag() * r_im;
+          m.forced_im(i) += u.real() * r_im + u.imag() * r_re;
+        }
+      }
+    }
+    // d = W (y(0) - alpha - Re(Z e^{i phase})).
+    const T c = cos(phase), sn = sin(phase);
+    for (int j = 0; j < d; ++j) {
+      const T free = start(b.component[j]) - m.alpha(j) - (m.forced_re(j) * c - m.forced_im(j) * sn);
+      for (int k = 0; k < d; ++k) {
+        m.d_re(k) += b.projector(k, j).real() * free;
+        m.d_im(k) += b.projector(k, j).imag() * free;
+      }
     }
     return m;
   }
-  // q'' in a stick from the equations: q_N'' = 0 and M_rr q_r'' = g_r cos psi - (K q)_r.
-  Vector HeldAcceleration(const State& x, double phase) const {
-    Vector q2 = Vector::Zero();
+  Eigen::Matrix<double, N, 1> Load(const State& x, double phase) const {
+    return forcing_ * std::cos(phase) - stiffness_ * x.template head<N>() - damping_ * x.template tail<N>();
+  }
+  // q'' in a stick from the equations: q_N'' = 0 and M_rr q_r'' = (g cos psi - K q - C q')_r.
+  Eigen::Matrix<double, N, 1> HeldAcceleration(const State& x, double phase) const {
+    Eigen::Matrix<double, N, 1> q2 = Eigen::Matrix<double, N, 1>::Zero();
     if constexpr (N > 1) {
-      const Eigen::Matrix<double, N - 1, 1> load =
-          forcing_.template head<N - 1>() * std::cos(phase) - stiffness_.template topRows<N - 1>() * x.template head<N>();
-      q2.template head<N - 1>() = mass_.template topLeftCorner<N - 1, N - 1>().llt().solve(load);
+      q2.template head<N - 1>() = mass_.template topLeftCorner<N - 1, N - 1>().llt().solve(Load(x, phase).template head<N - 1>());
     }
     return q2;
   }
-  // w . q(s) + forcing_weight cos(omega s + psi) along a motion, as a sum the root finder searches.
-  SinusoidSum Along(const Motion& m, const Row& w, double forcing_weight) const {
-    const Row weights = w * m.basis->shapes;
-    const double held = m.holds ? w(kContact) : 0.0;
-    const double forced = (weights * m.forced)(0) + forcing_weight;
-    std::vector<Sinusoid> terms{{m.omega, forced * std::cos(m.phase), -forced * std::sin(m.phase)}};
-    for (int i = 0; i < m.basis->count; ++i) {
-      terms.push_back({m.basis->frequencies(i), weights(i) * m.a(i), weights(i) * m.b(i)});
+  // w . x(s) + forcing_weight cos(omega s + phase) along a motion, x the state.
+  ExponentialSum Along(const Motion& m, const Vector& w, double forcing_weight) const {
+    const Basis& b = *m.basis;
+    double constant = 0.0, slope = 0.0, forced_re = forcing_weight, forced_im = 0.0;
+    std::vector<ExponentialTerm> terms;
+    for (int i = 0; i < b.size; ++i) {
+      const double wi = w(b.component[i]);
+      constant += wi * m.alpha(i);
+      slope += wi * m.beta(i);
+      forced_re += wi * m.forced_re(i);
+      forced_im += wi * m.forced_im(i);
     }
-    return SinusoidSum((weights * m.constant)(0) + held * m.held_position, (weights * m.slope)(0) + held * m.held_velocity,
-                       std::move(terms));
+    if (m.holds) {
+      constant += w(kContact) * m.held_position + w(N + kContact) * m.held_velocity;
+      slope += w(kContact) * m.held_velocity;
+    }
+    // Re(Z e^{i(omega s + phase)}) = (Zr cos phase - Zi sin phase) cos omega s - (Zr sin phase + Zi cos phase) sin omega s.
+    const double c = std::cos(m.phase), sn = std::sin(m.phase);
+    terms.push_back({0, 0.0, {0.0, constant, 0.0}});
+    terms.push_back({1, 0.0, {0.0, slope, 0.0}});
+    terms.push_back({0, 0.0, {m.omega, forced_re * c - forced_im * sn, -(forced_re * sn + forced_im * c)}});
+    for (int k = 0; k < b.size; ++k) {
+      if (b.weight[k] == 0) continue;
+      std::complex<double> shape = 0.0;
+      for (int i = 0; i < b.size; ++i) shape += w(b.component[i]) * b.shapes(i, k);
+      const std::complex<double> g = shape * std::complex<double>(m.d_re(k), m.d_im(k)) * double(b.weight[k]);
+      const std::complex<double> lambda = b.eigenvalues(k);
+      terms.push_back({0, lambda.real(), {lambda.imag(), g.real(), -g.imag()}});
+    }
+    return ExponentialSum(std::move(terms));
   }
 
   ModelDescription description_;
-  Square mass_, stiffness_, compliance_;
-  Vector forcing_;
-  Eigen::LLT<Square> mass_factor_;
+  Eigen::Matrix<double, N, N> mass_, damping_, stiffness_;
+  Eigen::Matrix<double, N, N> compliance_;  // M^-1
+  Eigen::Matrix<double, N, 1> forcing_;
+  Eigen::LLT<Eigen::Matrix<double, N, N>> mass_factor_;
   Basis slip_, stick_;
-  Row holding_stiffness_;
+  Eigen::Matrix<double, 1, 2 * N> holding_;
   double holding_forcing_ = 0.0;
 };
 

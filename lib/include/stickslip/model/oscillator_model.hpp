@@ -28,8 +28,9 @@
 //     level) can occur;
 //   - along a motion, the contact velocity, the stick force and each coordinate (positions, in
 //     the order of the description's coordinates) as functions of the elapsed time in a form the
-//     root finder can search without missing a root (numerics/sinusoid_sum.hpp), and which
-//     coordinates a stick holds fixed;
+//     root finder can search without missing a root (EventFunction: a SinusoidSum for undamped
+//     closed forms, numerics/sinusoid_sum.hpp, or an ExponentialSum, exponential_sum.hpp), and
+//     which coordinates a stick holds fixed;
 //   - the forcing frequency (the forcing is cos(omega t + phi));
 //   - the monodromy's factors: each mode's transition matrix (the flow's Jacobian with respect to
 //     its start) and the saltation matrix at each kind of segment end.
@@ -61,9 +62,14 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/model_description.hpp"
 #include "stickslip/model/mode.hpp"
+#include "stickslip/numerics/exponential_sum.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 
 namespace stickslip {
+
+// The functions of time the root finder searches without missing a root.
+template <typename F>
+concept EventFunction = std::same_as<F, SinusoidSum> || std::same_as<F, ExponentialSum>;
 
 template <typename M>
 concept OscillatorModel =
@@ -104,10 +110,11 @@ concept OscillatorModel =
       { model.AbnormalStopsPossible(p) } -> std::same_as<bool>;
       { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;
       // Along a motion, for the root finder.
-      { model.ContactVelocityAlong(motion) } -> std::same_as<SinusoidSum>;
-      { model.CoordinateAlong(motion, 0) } -> std::same_as<SinusoidSum>;
+      requires EventFunction<typename M::EventFunction>;
+      { model.ContactVelocityAlong(motion) } -> std::same_as<typename M::EventFunction>;
+      { model.CoordinateAlong(motion, 0) } -> std::same_as<typename M::EventFunction>;
       { model.HeldInStick(0) } -> std::same_as<bool>;
-      { model.StickForceAlong(motion, phase, p) } -> std::same_as<SinusoidSum>;
+      { model.StickForceAlong(motion, phase, p) } -> std::same_as<typename M::EventFunction>;
     };
 
 }  // namespace stickslip

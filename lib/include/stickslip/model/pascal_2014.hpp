@@ -36,6 +36,7 @@ struct Pascal2014 {
   using MotionT = ModeMotion<T>;
   using Motion = ModeMotion<double>;
   using FlowDerivatives = stickslip::FlowDerivatives;
+  using EventFunction = SinusoidSum;  // undamped: every function along a mode is a sum of sinusoids
 
   // chi, eta, omega, u_s, u_r (ParameterId order); x1, x2, x1', x2'.
   const ModelDescription& Description() const;

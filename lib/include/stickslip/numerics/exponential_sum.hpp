@@ -57,6 +57,9 @@ class ExponentialSum {
   std::vector<ExponentialTerm> terms_;
 };
 
+// The size of f's terms at t, against which "zero" is judged there.
+inline double SizeAt(const ExponentialSum& f, double t) { return f.DerivativeBound(0, t, t); }
+
 // The zeros of f in (a, b], in increasing order, at most max_count of them, with the conventions
 // of the Zeros of sinusoid_sum.hpp: a zero at a itself is skipped (one heading for zero at once is
 // reported), every zero of odd multiplicity is found, one of even multiplicity as a touch when

@@ -46,6 +46,10 @@ class SinusoidSum {
   std::vector<Sinusoid> terms_;
 };
 
+// The size against which "zero" is judged at t: Scale(), the same at every t (as SizeAt of an
+// ExponentialSum, for code written for both).
+inline double SizeAt(const SinusoidSum& f, double) { return f.Scale(); }
+
 // The zeros of f in (a, b], in increasing order, at most max_count of them. A zero at a itself
 // (f(a) = 0 to the touch level, as for x2' at the start of a slip, and f moving away from zero)
 // is not reported; the neighbourhood where the Taylor bound proves f has no other zero is

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "stickslip/model/pascal_2014/events.hpp"
+#include "stickslip/numerics/exponential_sum.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
@@ -102,6 +103,7 @@ T ExitSlope(const Model& model, SegmentEndKind end, const typename Model::templa
 // search for them could not be completed (a NaN in the orbit, or a segment too long for the
 // search's bound): a margin that is not defined there, never a wrong one.
 Extremum InteriorMinimum(const SinusoidSum& f, double d);
+Extremum InteriorMinimum(const ExponentialSum& f, double d);
 
 // The margins of one listed segment, visited by the walk (segment_walk.hpp), appended to `margins`.
 template <typename Model>
@@ -114,7 +116,7 @@ void AddSegmentMargins(const Model& model, const SegmentVisit<double, Model>& s,
   auto add = [&](const char* name, MarginKind kind, double value, double t) { margins.push_back({name, kind, i, value, t}); };
   add("duration", MarginKind::kDuration, d, s.t0);
   if (mode != Mode::kStick) {
-    const SinusoidSum velocity = model.ContactVelocityAlong(s.motion).Affine(SlipDirection(mode), 0.0);
+    const typename Model::EventFunction velocity = model.ContactVelocityAlong(s.motion).Affine(SlipDirection(mode), 0.0);
     const Extremum low = InteriorMinimum(velocity, d);
     add("velocity", MarginKind::kSlipVelocity, low.value, s.t0 + low.t);
     switch (s.spec.end) {
@@ -133,10 +135,11 @@ void AddSegmentMargins(const Model& model, const SegmentVisit<double, Model>& s,
     return;
   }
   const double threshold = model.StaticThreshold(p);
-  const SinusoidSum force = model.StickForceAlong(s.motion, s.phase, p);
+  using F = typename Model::EventFunction;
+  const F force = model.StickForceAlong(s.motion, s.phase, p);
   const bool exit_negative = s.spec.end == SegmentEndKind::kExitToNegative;
   // The constraint that ends the stick is zero at the exit by its end condition.
-  auto constraint_margin = [&](const char* name, const SinusoidSum& c, bool ends_stick) {
+  auto constraint_margin = [&](const char* name, const F& c, bool ends_stick) {
     Extremum low = ends_stick ? InteriorMinimum(c, d) : Minimum(c, 0.0, d);
     if (ends_stick && c(0.0) < low.value) low = {0.0, c(0.0)};
     add(name, MarginKind::kStickConstraint, low.value, s.t0 + low.t);
