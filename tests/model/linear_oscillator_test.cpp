@@ -105,8 +105,8 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, PascalInPhysicalUnits, testing::Values("paper-4.1", "paper-5.1", "paper-6"),
-                         [](const testing::TestParamInfo<const char*>& info) {
-                           std::string name = std::string(info.param).substr(6);
+                         [](const testing::TestParamInfo<const char*>& case_info) {
+                           std::string name = std::string(case_info.param).substr(6);
                            for (char& c : name) c = c == '.' ? '_' : c;
                            return "Section" + name;
                          });
@@ -165,7 +165,7 @@ TEST_P(RandomThreeMassModels, ExactFlowsAgreeWithOdeint) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Damping, RandomThreeMassModels, testing::Bool(),
-                         [](const testing::TestParamInfo<bool>& info) { return info.param ? "Damped" : "Undamped"; });
+                         [](const testing::TestParamInfo<bool>& case_info) { return case_info.param ? "Damped" : "Undamped"; });
 
 // Every derivative of a flow against central differences of the flow, in each mode, on a random
 // three-mass model, away from rest so that no term vanishes by symmetry; and the transition
