@@ -43,7 +43,7 @@ class SmallestMarginMonitor : public Monitor {
   void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd*) const override {
     const Eigen::VectorXd v = system_.Variables(u);
     const BasicOrbit<DenHartogOscillator> orbit{
-        system_.equations().signature(), {v(3), v(4), v(5)}, {v(0), 0.0}, v(1), {v(2)}};
+        system_.equations().signature(), {v(3), v(4), v(5), v(6)}, {v(0), 0.0}, v(1), {v(2)}};
     *tests = Eigen::VectorXd::Constant(1, SmallestMargin(AdmissibilityMargins(model_, orbit)).value);
   }
 
@@ -148,7 +148,7 @@ BasicOrbit<LinearOscillator<1>> DampedOrbit(const LinearOscillator<1>& model, do
   const DampedEquations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
   const DenHartogOrbit undamped(r, beta);
   Eigen::VectorXd guess(equations.VariableCount());
-  guess << undamped.amplitude, undamped.phi, std::numbers::pi / r, r, beta, beta;
+  guess << undamped.amplitude, undamped.phi, std::numbers::pi / r, r, beta, beta, 0.0;
   const BasicOrbitSystem<LinearOscillator<1>> system(equations, guess, {0, 1, 2}, true);
   const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
   EXPECT_TRUE(solved.summary.Converged()) << solved.summary.message;

@@ -60,7 +60,7 @@ Eigen::VectorXd VariablesOf(const BasicOrbit<LinearOscillator<2>>& o, const Basi
   v.head<3>() = o.start.head<3>();
   v(Equations::kPhi) = o.phi;
   for (std::size_t i = 0; i < o.durations.size(); ++i) v(Equations::Duration(static_cast<int>(i))) = o.durations[i];
-  v.segment<3>(e.Parameter(0)) << o.parameters.omega, o.parameters.F_k, o.parameters.F_s;
+  v.segment<4>(e.Parameter(0)) << o.parameters.omega, o.parameters.F_k, o.parameters.F_s, o.parameters.v_b;
   return v;
 }
 
@@ -191,7 +191,7 @@ TEST(LinearOscillator, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
     EXPECT_LT((time - d.d_elapsed).norm(), 1e-7);
     const LinearOscillator<3>::State along_phase = (model.Flow(mode, x, phase + h, s, p) - model.Flow(mode, x, phase - h, s, p)) / (2 * h);
     EXPECT_LT((along_phase - d.d_phase).norm(), 1e-7);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 4; ++k) {
       auto up = p, down = p;
       LinearOscillator<3>::ParameterAt(up, k) += h;
       LinearOscillator<3>::ParameterAt(down, k) -= h;

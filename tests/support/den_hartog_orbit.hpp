@@ -89,7 +89,7 @@ inline Eigen::VectorXd DenHartogVariables(const DenHartogOrbit& orbit,
   v(0) = orbit.amplitude;
   v(Equations::kPhi) = orbit.phi;
   for (int i = 0; i < equations.signature().size(); ++i) v(Equations::Duration(i)) = half;
-  v.segment<3>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta;
+  v.segment<4>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta, 0.0;  // a fixed ground: v_b = 0
   if (equations.VariableCount() > equations.FullCount()) v.tail<2>() << -orbit.amplitude, 0.0;
   return v;
 }

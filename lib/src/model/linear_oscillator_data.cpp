@@ -18,6 +18,7 @@ namespace {
 
 constexpr int kMaxCoordinates = 50;
 constexpr double kMaxForce = 1e15;
+constexpr double kMaxSpeed = 1e6;
 
 // "<field> <predicate>": the library's one-line form for input that is not one value.
 InvalidInput Invalid(const std::string& field, const std::string& predicate) {
@@ -146,7 +147,9 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
       {"F_k", "kinetic friction force", "N", std::numeric_limits<double>::min(), kMaxForce,
        fmt::format("0 < F_k <= {:g}", kMaxForce)},
       {"F_s", "static friction force", "N", std::numeric_limits<double>::min(), kMaxForce,
-       fmt::format("F_k <= F_s <= {:g}", kMaxForce)}};
+       fmt::format("F_k <= F_s <= {:g}", kMaxForce)},
+      {"v_b", "the surface's (belt's) speed", "m/s", -kMaxSpeed, kMaxSpeed,
+       fmt::format("-{0:g} <= v_b <= {0:g}", kMaxSpeed)}};
   d.coordinates = data.coordinates;
   for (Eigen::Index j = static_cast<Eigen::Index>(d.coordinates.size()); j < n; ++j) d.coordinates.push_back(fmt::format("x{}", j + 1));
   for (const std::string& q : d.coordinates) d.state_components.push_back(q);

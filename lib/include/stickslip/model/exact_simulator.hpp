@@ -43,7 +43,7 @@ SegmentSearch SlipEnd(const M& model, Mode mode, const typename M::Motion& motio
   if (!found.Complete()) return {std::nullopt, found.status};
   if (found.zeros.empty()) return {};
   const Zero& z = found.zeros.front();
-  const typename M::State at = model.AtRest(motion.StateAt(z.t));
+  const typename M::State at = model.AtRest(motion.StateAt(z.t), p);
   Mode next;
   if (z.kind == ZeroKind::kTouch) {
     next = model.AbnormalStopsPossible(p) ? mode : Mode::kStick;
@@ -157,8 +157,8 @@ class Sampler {
 // zero to rounding (the model's NearRest).
 template <OscillatorModel M>
 Mode InitialMode(const M& model, const typename M::State& x0, double phi, const typename M::Parameters& p) {
-  if (model.NearRest(x0)) return model.ModeFromRest(model.AtRest(x0), phi, p);
-  return model.ContactVelocity(x0) < 0.0 ? Mode::kSlipNegative : Mode::kSlipPositive;
+  if (model.NearRest(x0, p)) return model.ModeFromRest(model.AtRest(x0, p), phi, p);
+  return model.ContactVelocity(x0, p) < 0.0 ? Mode::kSlipNegative : Mode::kSlipPositive;
 }
 
 // Preconditions: model.Validate(p) passed, x0 finite, duration > 0.
@@ -172,7 +172,7 @@ BasicSimulationResult<M> SimulateExact(const M& model, const typename M::Paramet
   result.phi = phi;
   const double omega = model.ForcingFrequency(p);
   double t = 0.0;
-  typename M::State x = model.NearRest(x0) ? model.AtRest(x0) : x0;
+  typename M::State x = model.NearRest(x0, p) ? model.AtRest(x0, p) : x0;
   Mode mode = InitialMode(model, x0, phi, p);
   Sampler<M> sampler(model, p, phi, options);
   while (true) {
@@ -196,7 +196,7 @@ BasicSimulationResult<M> SimulateExact(const M& model, const typename M::Paramet
     }
     const SegmentEndpoint& end = *search.end;
     segment.t_end = t + end.elapsed;
-    segment.end = model.AtRest(motion.StateAt(end.elapsed));  // both events happen at rest exactly
+    segment.end = model.AtRest(motion.StateAt(end.elapsed), p);  // both events happen at rest exactly
     segment.end_reason = end.reason;
     result.segments.push_back(segment);
     sampler.Take(segment, result);

@@ -1,8 +1,11 @@
 // A linear oscillator with one Coulomb contact as an OscillatorModel (oscillator_model.hpp),
 // at a fixed number N of coordinates (linear_oscillator_data.hpp gives the equations):
 //   M q'' + C q' + K q = g cos(omega t + phi) + e_N F,
-// slip (q_N' != 0): F = -F_k sign(q_N'); stick (q_N' = 0 held): F is what keeps q_N'' = 0,
-// admissible while |F| <= F_s. The state is (q, q'); the contact's velocity is q_N'.
+// the contact against a surface moving at the speed v_b (a belt; 0 for a fixed surface), its
+// relative velocity s = q_N' - v_b; slip (s != 0): F = -F_k sign(s); stick (s = 0 held): F is
+// what keeps q_N'' = 0, admissible while |F| <= F_s. The state is (q, q'). Without forcing
+// (g = 0) the model is autonomous: its orbits (self-excited stick-slip on a belt) have a period
+// that is an unknown.
 //
 // In each mode the components y of the state that move obey y' = A y + e + f s + b cos(psi),
 // psi = omega s + phase (e: the friction force in a slip, the held q_N in a stick; f: the held
@@ -13,8 +16,8 @@
 // once per model, so the parameters (omega, F_k, F_s) enter linearly or through
 // 1/(i omega - lambda_k): forward-mode AD runs through MotionInMode for every derivative the orbit
 // layer asks for, and every function along a mode is an ExponentialSum for the root finder.
-// The parameters are omega, F_k and F_s; the matrices are the model's data. A singular K, a belt,
-// autonomous orbits and continuation in the matrices' entries come next.
+// The parameters are omega, F_k, F_s and v_b; the matrices are the model's data. A singular K, a
+// belt speed varying in time and continuation in the matrices' entries come next.
 #pragma once
 
 #include <algorithm>
@@ -42,10 +45,11 @@ template <int N>
 class LinearOscillator {
  public:
   static constexpr int kStateSize = 2 * N;
-  static constexpr int kParameterCount = 3;
+  static constexpr int kParameterCount = 4;
   static constexpr int kForcingFrequencyParameter = 0;
   static constexpr int kKineticLevelParameter = 1;
   static constexpr int kStaticLevelParameter = 2;
+  static constexpr int kRestVelocityParameter = 3;
   static constexpr int kContact = N - 1;  // the coordinate the contact is on
   template <typename T>
   using StateT = Eigen::Matrix<T, 2 * N, 1>;
@@ -54,15 +58,18 @@ class LinearOscillator {
     T omega{};  // forcing frequency, rad/s
     T F_k{};    // kinetic friction force
     T F_s{};    // static friction force, >= F_k
+    T v_b{};    // the surface's (belt's) speed
   };
   using State = StateT<double>;
   using Parameters = ParametersT<double>;
-  using FlowDerivatives = BasicFlowDerivatives<2 * N, 3>;
+  using FlowDerivatives = BasicFlowDerivatives<2 * N, 4>;
   using EventFunction = ExponentialSum;
   template <typename T>
-  static T& ParameterAt(ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.F_k : p.F_s; }
+  static T& ParameterAt(ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.F_k : k == 2 ? p.F_s : p.v_b; }
   template <typename T>
-  static const T& ParameterAt(const ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.F_k : p.F_s; }
+  static const T& ParameterAt(const ParametersT<T>& p, int k) {
+    return k == 0 ? p.omega : k == 1 ? p.F_k : k == 2 ? p.F_s : p.v_b;
+  }
 
   using Real = Eigen::Matrix<double, 2 * N, 2 * N>;
   using Complex = Eigen::Matrix<std::complex<double>, 2 * N, 2 * N>;
@@ -86,7 +93,7 @@ class LinearOscillator {
   struct MotionT {
     const Basis* basis = nullptr;
     bool holds = false;  // a stick: q_N = held_position + held_velocity s
-    T omega{}, phase{}, held_position{}, held_velocity{};
+    T omega{}, phase{}, held_position{}, held_velocity{}, rest_velocity{};
     StateT<T> alpha, beta, forced_re, forced_im, d_re, d_im;  // on the basis's components, as in the header
 
     StateT<T> StateAt(const T& s) const {
@@ -139,10 +146,12 @@ class LinearOscillator {
   }
 
   const ModelDescription& Description() const { return description_; }
+  bool Autonomous() const { return forcing_.isZero(); }
 
   // The closed forms need a forcing frequency away from every undamped natural frequency of a
   // slip and of a stick (1/(i omega - lambda_k) in Z).
   std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) const {
+    if (Autonomous()) return std::nullopt;  // no forcing: omega plays no part
     const ParameterDescription& d = description_.parameters[0];
     if (!(p.omega >= d.minimum && p.omega <= d.maximum)) return InvalidInput("omega", p.omega, d.range);
     for (const Basis* basis : {&slip_, &stick_}) {
@@ -164,6 +173,8 @@ class LinearOscillator {
     if (!(p.F_s >= p.F_k && p.F_s <= k.maximum)) {
       return InvalidInput("F_s", p.F_s, fmt::format("F_k = {} <= F_s <= {:g}", p.F_k, k.maximum));
     }
+    const ParameterDescription& v = description_.parameters[3];
+    if (!(p.v_b >= v.minimum && p.v_b <= v.maximum)) return InvalidInput("v_b", p.v_b, v.range);
     return std::nullopt;
   }
 
@@ -176,12 +187,12 @@ class LinearOscillator {
     return MotionInMode(mode, start, phase, p).StateAt(s);
   }
   FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s, const Parameters& p) const {
-    constexpr int kDirections = 2 * N + 2 + 3;  // start, phase, elapsed time, parameters
+    constexpr int kDirections = 2 * N + 2 + 4;  // start, phase, elapsed time, parameters
     using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kDirections, 1>>;
     StateT<Dual> x;
     for (int j = 0; j < 2 * N; ++j) x(j) = Dual(start(j), kDirections, j);
     ParametersT<Dual> p_dual;
-    for (int k = 0; k < 3; ++k) ParameterAt(p_dual, k) = Dual(ParameterAt(p, k), kDirections, 2 * N + 2 + k);
+    for (int k = 0; k < 4; ++k) ParameterAt(p_dual, k) = Dual(ParameterAt(p, k), kDirections, 2 * N + 2 + k);
     const StateT<Dual> end = Flow(mode, x, Dual(phase, kDirections, 2 * N), Dual(s, kDirections, 2 * N + 1), p_dual);
     FlowDerivatives d;
     for (int i = 0; i < 2 * N; ++i) {
@@ -189,7 +200,7 @@ class LinearOscillator {
       d.d_start.row(i) = end(i).derivatives().template head<2 * N>().transpose();
       d.d_phase(i) = end(i).derivatives()(2 * N);
       d.d_elapsed(i) = end(i).derivatives()(2 * N + 1);
-      d.d_parameters.row(i) = end(i).derivatives().template tail<3>().transpose();
+      d.d_parameters.row(i) = end(i).derivatives().template tail<4>().transpose();
     }
     return d;
   }
@@ -205,7 +216,7 @@ class LinearOscillator {
     return m;
   }
   // S = I + (f+ - f-) grad(h)^T / (grad(h) . f- + dh/dt) (Leine & Nijmeijer 2004): the fields
-  // differ in the accelerations only; h = q_N' at a stop, h = F(q, q', t) -+ F_s at a stick's end.
+  // differ in the accelerations only; h = s at a stop, h = F(q, q', t) -+ F_s at a stick's end.
   template <typename T>
   Eigen::Matrix<T, 2 * N, 2 * N> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase,
                                                  const ParametersT<T>& p) const {
@@ -218,7 +229,7 @@ class LinearOscillator {
       for (int i = 0; i < N; ++i) m(N + i, N + kContact) += jump(i) / slope;
     } else {
       StateT<T> at_rest = x;
-      at_rest(N + kContact) = ZeroLike(p);
+      at_rest(N + kContact) = p.v_b;
       const T rate = StickForceRate(at_rest, phase, p);
       for (int i = 0; i < N; ++i) {
         for (int j = 0; j < 2 * N; ++j) m(N + i, j) += jump(i) * holding_(j) / rate;
@@ -230,7 +241,7 @@ class LinearOscillator {
   T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
 
   template <typename T>
-  T ContactVelocity(const StateT<T>& x) const { return x(N + kContact); }
+  T ContactVelocity(const StateT<T>& x, const ParametersT<T>& p) const { return x(N + kContact) - p.v_b; }
   // q'' in a mode: M^-1 (g cos psi - K q - C q' + e_N F), with F = -F_k sign(q_N') in a slip and
   // the holding force in a stick (then q_N'' = 0 exactly).
   template <typename T>
@@ -255,13 +266,14 @@ class LinearOscillator {
   T ContactAcceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     return Acceleration(mode, x, phase, p)(kContact);
   }
-  State AtRest(const State& x) const {
+  State AtRest(const State& x, const Parameters& p) const {
     State y = x;
-    y(N + kContact) = 0.0;
+    y(N + kContact) = p.v_b;
     return y;
   }
-  bool NearRest(const State& x) const {
-    return std::abs(x(N + kContact)) <= 1e-12 * (1.0 + x.template head<N>().cwiseAbs().maxCoeff());
+  bool NearRest(const State& x, const Parameters& p) const {
+    return std::abs(x(N + kContact) - p.v_b) <=
+           1e-12 * (1.0 + std::abs(p.v_b) + x.template head<N>().cwiseAbs().maxCoeff());
   }
 
   // The friction force a stick needs; F > F_s drives the contact towards negative q_N.
@@ -291,7 +303,9 @@ class LinearOscillator {
     return Mode::kStick;
   }
 
-  ExponentialSum ContactVelocityAlong(const Motion& motion) const { return Along(motion, Vector::Unit(N + kContact), 0.0); }
+  ExponentialSum ContactVelocityAlong(const Motion& motion) const {
+    return Along(motion, Vector::Unit(N + kContact), 0.0).Affine(1.0, -motion.rest_velocity);
+  }
   ExponentialSum CoordinateAlong(const Motion& motion, int j) const { return Along(motion, Vector::Unit(j), 0.0); }
   bool HeldInStick(int j) const { return j == kContact; }
   ExponentialSum StickForceAlong(const Motion& motion, double, const Parameters&) const {
@@ -376,6 +390,7 @@ class LinearOscillator {
     m.phase = phase;
     m.held_position = stick ? start(kContact) : zero;
     m.held_velocity = stick ? start(N + kContact) : zero;
+    m.rest_velocity = p.v_b;
     const Basis& b = *m.basis;
     const int d = b.size;
     const T friction = stick || !loaded ? zero : T(-double(SlipDirection(mode)) * p.F_k);
@@ -392,8 +407,9 @@ class LinearOscillator {
     for (int i = 0; i < d; ++i) {
       for (int j = 0; j < d; ++j) m.alpha(i) += b.inverse(i, j) * (m.beta(j) - e(j));
     }
-    // Z = sum_k V_k (W b)_k / (i omega - lambda_k), 1/(i omega - lambda) = (-sigma - i(omega - nu)) / |.|^2.
-    if (loaded) {
+    // Z = sum_k V_k (W b)_k / (i omega - lambda_k), 1/(i omega - lambda) = (-sigma - i(omega - nu)) / |.|^2;
+    // none without forcing (where omega, playing no part, may sit on a natural frequency).
+    if (loaded && !Autonomous()) {
       for (int k = 0; k < d; ++k) {
         const std::complex<double> lambda = b.eigenvalues(k);
         const T detune = p.omega - lambda.imag();

@@ -61,7 +61,7 @@ struct LinearOscillatorModes {
 // eigenvalues, as at critical damping), or the names are not n distinct non-empty names.
 LinearOscillatorModes ModesOf(const LinearOscillatorData& data);
 
-// The parameters (omega in rad/s, F_k and F_s in N, SI by default) with their ranges, the
+// The parameters (omega in rad/s, F_k and F_s in N, v_b in m/s: SI by default) with their ranges, the
 // coordinates and the initial-state names x1_0 ... xn_0, v1_0 ... vn_0.
 ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, const LinearOscillatorModes& modes);
 

@@ -91,7 +91,7 @@ Mode ModeAtRest(const M& model, const typename M::State& x, double phase, const 
 // The first mode: the sign of the contact velocity, or Coulomb's law where it is exactly zero.
 template <IntegrableOscillatorModel M>
 Mode StartingMode(const M& model, const typename M::State& x0, double phi, const typename M::Parameters& p) {
-  const double velocity = model.ContactVelocity(x0);
+  const double velocity = model.ContactVelocity(x0, p);
   if (velocity < 0.0) return Mode::kSlipNegative;
   if (velocity > 0.0) return Mode::kSlipPositive;
   return ModeAtRest(model, x0, phi, p);
@@ -107,7 +107,7 @@ struct Constraints {
 
 template <IntegrableOscillatorModel M>
 Constraints ConstraintsOf(const ModeField<M>& field, const typename M::State& x, double tau) {
-  if (field.mode != Mode::kStick) return {{SlipDirection(field.mode) * field.model.ContactVelocity(x), 0.0}, 1};
+  if (field.mode != Mode::kStick) return {{SlipDirection(field.mode) * field.model.ContactVelocity(x, field.p), 0.0}, 1};
   const double s = field.model.HoldingForce(x, field.PhaseAt(tau), field.p);
   const double threshold = field.model.StaticThreshold(field.p);
   return {{threshold - s, threshold + s}, 2};
@@ -284,7 +284,7 @@ ModeOutcome<M> Outcome(const ModeIntegrator<M>& integrator, double t, const type
     return {{field.mode, t, duration, x, integrator.Integrated(end.tau), SegmentEnd::kHorizon}, std::nullopt};
   }
   BasicEvent<typename M::State> event{t + end.tau, EventKind::kStop, field.mode, field.mode,
-                                      field.model.AtRest(integrator.Integrated(end.tau))};
+                                      field.model.AtRest(integrator.Integrated(end.tau), field.p)};
   if (field.mode == Mode::kStick) {
     event.kind = EventKind::kStickExit;
     event.mode_after = end.constraint == 0 ? Mode::kSlipNegative : Mode::kSlipPositive;
@@ -300,7 +300,7 @@ template <IntegrableOscillatorModel M>
 std::string StuckMessage(const ModeIntegrator<M>& integrator, double t, const ModeEnd& end) {
   const ModeField<M>& field = integrator.field();
   return fmt::format("at t = {} a {} from rest does not move in its direction (contact velocity {} after {})", t,
-                     ToString(field.mode), field.model.ContactVelocity(integrator.Interpolated(end.tau)), end.tau);
+                     ToString(field.mode), field.model.ContactVelocity(integrator.Interpolated(end.tau), field.p), end.tau);
 }
 
 // Throws InvalidInput naming the first input that is not valid.

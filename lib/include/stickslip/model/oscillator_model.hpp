@@ -44,11 +44,11 @@
 //   - viscous damping: the motion in a mode has complex eigenvalues, so the functions along a
 //     motion become sums of exponentially weighted sinusoids (the generalised root finder); the
 //     interface is unchanged.
-//   - a moving belt: s = w'q' - v_b(t); "at rest" means s = 0, not a zero component, which is why
-//     the interface names the contact velocity instead of a component index. The orbit's origin
-//     is then the stick-entry event (s = 0), not "x2' = 0".
-//   - no forcing: ForcingFrequency is 0 and the period becomes an unknown of the orbit, its phase
-//     fixed by an event; the simulators then report progress in time, not in forcing periods.
+//   - a moving belt (linear_oscillator.hpp): s = q_N' - v_b; "at rest" means s = 0, so the
+//     contact velocity, AtRest and NearRest take the parameters, and the orbit's origin has
+//     q_N' = v_b (kRestVelocityParameter), not 0.
+//   - no forcing (Autonomous): the period is the durations' sum, an unknown of the orbit; the
+//     periodicity equations pin the meaningless phase instead of the period.
 //   - several contacts: Mode becomes a tuple of contact states and ModeFromRest a small linear
 //     complementarity problem (Glocker & Studer 2005); the contact-velocity and stick-force
 //     members take the contact's index.
@@ -81,6 +81,9 @@ concept OscillatorModel =
       { M::kForcingFrequencyParameter } -> std::convertible_to<int>;
       { M::kKineticLevelParameter } -> std::convertible_to<int>;
       { M::kStaticLevelParameter } -> std::convertible_to<int>;
+      // The parameter that is the contact's velocity at rest (a belt's speed), or -1 for a fixed
+      // surface: at the orbit's origin the contact's velocity is this parameter, not a variable.
+      { M::kRestVelocityParameter } -> std::convertible_to<int>;
       requires std::same_as<typename M::State, typename M::template StateT<double>>;
       requires std::same_as<typename M::Parameters, typename M::template ParametersT<double>>;
       requires std::same_as<typename M::Motion, typename M::template MotionT<double>>;
@@ -95,15 +98,17 @@ concept OscillatorModel =
       { model.Flow(mode, x, phase, phase, p) } -> std::same_as<typename M::State>;
       { model.FlowWithDerivatives(mode, x, phase, phase, p) } -> std::same_as<typename M::FlowDerivatives>;
       { model.ForcingFrequency(p) } -> std::same_as<double>;
+      // No forcing at all: the orbit's period is its durations' sum, its phase meaningless.
+      { model.Autonomous() } -> std::same_as<bool>;
       // The monodromy's factors: the flow's Jacobian with respect to the start state over a
       // segment's duration, and the saltation matrix at its end from one mode into the next.
       { model.TransitionMatrix(mode, phase, p) } -> std::convertible_to<Eigen::Matrix<double, M::kStateSize, M::kStateSize>>;
       { model.SaltationMatrix(mode, mode, x, phase, p) } -> std::convertible_to<Eigen::Matrix<double, M::kStateSize, M::kStateSize>>;
       // The contact.
-      { model.ContactVelocity(x) } -> std::same_as<double>;
+      { model.ContactVelocity(x, p) } -> std::same_as<double>;
       { model.ContactAcceleration(mode, x, phase, p) } -> std::same_as<double>;
-      { model.AtRest(x) } -> std::same_as<typename M::State>;
-      { model.NearRest(x) } -> std::same_as<bool>;
+      { model.AtRest(x, p) } -> std::same_as<typename M::State>;
+      { model.NearRest(x, p) } -> std::same_as<bool>;
       { model.StickForce(x, phase, p) } -> std::same_as<double>;
       { model.StickForceRate(x, phase, p) } -> std::same_as<double>;
       { model.StaticThreshold(p) } -> std::same_as<double>;
@@ -116,5 +121,15 @@ concept OscillatorModel =
       { model.HeldInStick(0) } -> std::same_as<bool>;
       { model.StickForceAlong(motion, phase, p) } -> std::same_as<typename M::EventFunction>;
     };
+
+// The contact's velocity at rest: the belt's speed, or 0 against a fixed surface.
+template <typename M, typename T>
+T RestVelocity(const typename M::template ParametersT<T>& p, const T& zero) {
+  if constexpr (M::kRestVelocityParameter < 0) {
+    return zero;
+  } else {
+    return M::ParameterAt(p, M::kRestVelocityParameter);
+  }
+}
 
 }  // namespace stickslip

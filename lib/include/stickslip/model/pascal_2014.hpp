@@ -76,17 +76,19 @@ struct Pascal2014 {
     return {omega1, omega2};
   }
 
+  static constexpr int kRestVelocityParameter = -1;  // a fixed ground
+  bool Autonomous() const { return false; }
   template <typename T>
-  T ContactVelocity(const StateT<T>& x) const { return x(3); }
+  T ContactVelocity(const StateT<T>& x, const ParametersT<T>&) const { return x(3); }
   // x2'' in a mode (eq. 2, 9).
   template <typename T>
   T ContactAcceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     return Acceleration(mode, x, phase, p)(1);
   }
-  State AtRest(const State& x) const { return stickslip::AtRest(x); }
+  State AtRest(const State& x, const Parameters&) const { return stickslip::AtRest(x); }
   // x2' within rounding of zero: a sampled state at a stop carries ~1e-15, and a slip started
   // from it would miss the stop that is due at once.
-  bool NearRest(const State& x) const {
+  bool NearRest(const State& x, const Parameters&) const {
     return std::abs(x(3)) <= 1e-12 * (1.0 + x.head<3>().lpNorm<Eigen::Infinity>());
   }
 

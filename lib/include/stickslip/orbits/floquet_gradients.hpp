@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/stability.hpp"
 
@@ -54,14 +55,15 @@ BasicMonodromyGradient<Model::kStateSize> Gradients(const Model& model, const Ba
   const int n = orbit.signature.size();
   const int variables = S + n + P;
   auto seed = [&](double value, int direction) { return Dual(value, variables, direction); };
-  // The contact's velocity (the last component) is zero at the origin, a stop: not a variable.
+  // The contact's velocity (the last component) is at rest at the origin, a stop: not a
+  // variable, but the rest velocity where the model has one (a belt's speed).
   typename Model::template StateT<Dual> x0;
   for (int k = 0; k + 1 < S; ++k) x0(k) = seed(orbit.start(k), k);
-  x0(S - 1) = Dual(orbit.start(S - 1), Dual::DerType::Zero(variables));
   std::vector<Dual> durations;
   for (int i = 0; i < n; ++i) durations.push_back(seed(orbit.durations[i], S + i));
   typename Model::template ParametersT<Dual> p;
   for (int k = 0; k < P; ++k) Model::ParameterAt(p, k) = seed(Model::ParameterAt(orbit.parameters, k), S + n + k);
+  x0(S - 1) = RestVelocity<Model>(p, Dual(orbit.start(S - 1), Dual::DerType::Zero(variables)));
   const MonodromyT<Dual, Model> m =
       Monodromy<Dual>(model, orbit.signature, x0, seed(orbit.phi, S - 1), std::span<const Dual>(durations), p);
   BasicMonodromyGradient<S> result;

@@ -24,6 +24,7 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
@@ -120,7 +121,7 @@ FunctionAlong MarginFunction(const Model& model, const Margin& m, const SegmentV
   const Dual phase = s.phase + model.ForcingFrequency(p) * tau;
   if (m.kind == MarginKind::kSlipVelocity) {
     const double sigma = SlipDirection(s.spec.mode);
-    return {sigma * model.ContactVelocity(x), sigma * model.ContactAcceleration(s.spec.mode, x, phase, p)};
+    return {sigma * model.ContactVelocity(x, p), sigma * model.ContactAcceleration(s.spec.mode, x, phase, p)};
   }
   const double side = std::string_view(m.base) == "G" ? 1.0 : -1.0;
   return {side * model.StickForce(x, phase, p) + model.StaticThreshold(p), side * model.StickForceRate(x, phase, p)};
@@ -178,13 +179,13 @@ typename Model::template ParametersT<Dual> WalkSeeded(const Model& model, const 
   const int n = orbit.signature.size();
   typename Model::template StateT<Dual> x0;
   for (int j = 0; j + 1 < S; ++j) x0(j) = b.Seed(orbit.start(j), j);
-  x0(S - 1) = b.Constant(0.0);
   std::vector<Dual> durations;
   for (int i = 0; i < n; ++i) durations.push_back(b.Seed(orbit.durations[i], S + i));
   typename Model::template ParametersT<Dual> p;
   for (int k = 0; k < Model::kParameterCount; ++k) {
     Model::ParameterAt(p, k) = b.Seed(Model::ParameterAt(orbit.parameters, k), S + n + k);
   }
+  x0(S - 1) = RestVelocity<Model>(p, b.Constant(0.0));  // the contact at rest at the origin
   const std::vector<SegmentSpec> plan = SegmentPlan(orbit.signature, Extent::kListed);
   WalkSegments<Dual>(model, plan, x0, b.Seed(orbit.phi, S - 1), std::span<const Dual>(durations), p,
                      PhaseRule::kFromOrigin, [&](const SegmentVisit<Dual, Model>& s) { visit(s, p); });

@@ -132,6 +132,7 @@ class BasicPeriodicityEquations {
     Variational<Model> w{StartState(v), Eigen::MatrixXd::Zero(kStateSize, VariableCount()), v(kPhi),
                          Eigen::RowVectorXd::Zero(VariableCount()), jacobian != nullptr};
     for (int j = 0; j < kStateSize - 1; ++j) w.dx(j, j) = 1.0;
+    if constexpr (Model::kRestVelocityParameter >= 0) w.dx(kStateSize - 1, Parameter(Model::kRestVelocityParameter)) = 1.0;
     w.dphase(kPhi) = 1.0;
     for (const SegmentSpec& spec : plan_) {
       const int i = spec.listed;
@@ -148,11 +149,12 @@ class BasicPeriodicityEquations {
     CloseOrbit(v, p, w, rows);
   }
 
-  // The state at the origin: the first S - 1 components from the variables, the contact at rest.
-  static State StartState(const Eigen::VectorXd& v) {
+  // The state at the origin: the first S - 1 components from the variables, the contact at rest
+  // (its velocity the rest velocity: 0, or a belt's speed).
+  State StartState(const Eigen::VectorXd& v) const {
     State x0;
     x0.template head<kStateSize - 1>() = v.head<kStateSize - 1>();
-    x0(kStateSize - 1) = 0.0;
+    x0(kStateSize - 1) = RestVelocity<Model>(ParametersOf(v), 0.0);
     return x0;
   }
   Parameters ParametersOf(const Eigen::VectorXd& v) const {
@@ -179,7 +181,7 @@ class BasicPeriodicityEquations {
       }
     }
     for (int j = 0; j < kStateSize - 1; ++j) names.push_back(fmt::format("periodicity:{}", components[j]));
-    names.push_back("period");
+    names.push_back(model_.Autonomous() ? "phase" : "period");
     return names;
   }
 
@@ -237,6 +239,12 @@ class BasicPeriodicityEquations {
         (*rows.jacobian)(rows.row, j) -= sign;
       }
       ++rows.row;
+    }
+    if (model_.Autonomous()) {
+      // No forcing: the period is the durations' sum, free; the phase means nothing and is pinned.
+      residual(rows.row) = v(kPhi);
+      if (rows.jacobian) (*rows.jacobian)(rows.row, kPhi) = 1.0;
+      return;
     }
     const double covered_periods = signature_.period_multiple() * signature_.CoveredFraction();
     const double omega = model_.ForcingFrequency(p);

@@ -46,7 +46,7 @@ T EndConditionValue(const Model& model, EndCondition condition, Mode mode,
                     const typename Model::template StateT<T>& x, const T& phase,
                     const typename Model::template ParametersT<T>& p) {
   switch (condition) {
-    case EndCondition::kStop: return model.ContactVelocity(x);
+    case EndCondition::kStop: return model.ContactVelocity(x, p);
     case EndCondition::kSlipAccelerationZero: return model.ContactAcceleration(mode, x, phase, p);
     case EndCondition::kExitIntoSlipNegative: return model.StickForce(x, phase, p) - model.StaticThreshold(p);
     case EndCondition::kExitIntoSlipPositive: break;

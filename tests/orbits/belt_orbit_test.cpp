@@ -1,0 +1,146 @@
+// Self-excited stick-slip of a mass on a moving belt (../shared/FRICTION-LITERATURE.md): the
+// general linear oscillator with no forcing (autonomous: the period is an unknown, the phase
+// pinned) and the contact against a surface at speed v_b, against the closed form of the
+// undamped cycle (derived below), the Odeint integration of the equation of motion, and the
+// damped cycle's end in a fold as the belt speeds up.
+//
+// m x'' + k x = F, s = x' - v_b. In a stick the mass moves with the belt until k x reaches F_s;
+// then it slips (s < 0, F = +F_k) harmonically about F_k/k from x = F_s/k, x' = v_b, with radius
+// A = sqrt(d^2 + (v_b/w)^2), d = (F_s - F_k)/k, w = sqrt(k/m): x - F_k/k = A cos(w t - theta),
+// tan theta = v_b/(w d). It sticks again where x' = v_b next, at w t = pi + 2 theta, x = F_k/k - d
+// = (2 F_k - F_s)/k. So T_slip = (pi + 2 atan(v_b/(w d)))/w, T_stick = 2 d / v_b, and the slip
+// reaches F_k/k +- A.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "stickslip/continuation/continuation.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/model/odeint_simulation.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_system.hpp"
+
+namespace stickslip {
+namespace {
+
+using Belt = LinearOscillator<1>;
+using Equations = BasicPeriodicityEquations<Belt>;
+
+Belt MassOnABelt(double m, double k, double c) {
+  LinearOscillatorData data;
+  data.mass = Eigen::MatrixXd::Constant(1, 1, m);
+  data.stiffness = Eigen::MatrixXd::Constant(1, 1, k);
+  data.damping = Eigen::MatrixXd::Constant(1, 1, c);
+  data.forcing = Eigen::VectorXd::Zero(1);
+  return Belt(data);
+}
+
+struct BeltCase {
+  double m, k, F_s, F_k, v_b;
+  double w() const { return std::sqrt(k / m); }
+  double d() const { return (F_s - F_k) / k; }
+  double Stick() const { return 2.0 * d() / v_b; }
+  double Slip() const { return (std::numbers::pi + 2.0 * std::atan(v_b / (w() * d()))) / w(); }
+  double Restick() const { return (2.0 * F_k - F_s) / k; }
+  double Radius() const { return std::hypot(d(), v_b / w()); }
+};
+
+// x0, phi, the stick's and the slip's durations, then omega (no part), F_k, F_s, v_b.
+Eigen::VectorXd Variables(const BeltCase& b, double x0, double stick, double slip) {
+  Eigen::VectorXd v(8);
+  v << x0, 0.0, stick, slip, 1.0, b.F_k, b.F_s, b.v_b;
+  return v;
+}
+
+BasicOrbit<Belt> OrbitOf(const Eigen::VectorXd& v) {
+  return {Signature::Parse("stick slip-"), {v(4), v(5), v(6), v(7)}, {v(0), v(7)}, v(1), {v(2), v(3)}};
+}
+
+constexpr BeltCase kCases[] = {{1.0, 1.0, 1.5, 1.0, 0.3}, {2.0, 5.0, 0.8, 0.5, 0.3}, {0.5, 3.0, 2.0, 0.4, 0.05}};
+
+TEST(BeltStickSlip, IsTheClosedFormCycleWithItsPeriodAnUnknown) {
+  for (const BeltCase& b : kCases) {
+    SCOPED_TRACE(testing::Message() << "m = " << b.m << ", k = " << b.k << ", v_b = " << b.v_b);
+    const Belt model = MassOnABelt(b.m, b.k, 0.0);
+    ASSERT_TRUE(model.Autonomous());
+    const Equations equations(model, Signature::Parse("stick slip-"), Shooting::kSingle);
+    const Eigen::VectorXd exact = Variables(b, b.Restick(), b.Stick(), b.Slip());
+    Eigen::VectorXd residual;
+    equations.Evaluate(exact, &residual, nullptr);
+    EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12);
+    EXPECT_EQ(equations.EquationNames().back(), "phase");
+
+    const BasicOrbitSystem<Belt> system(equations, exact, {0, 1, 2, 3}, false);
+    const Eigen::VectorXd guess = Variables(b, b.Restick() + 0.02 * b.d(), 0.98 * b.Stick(), 1.02 * b.Slip());
+    const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
+    ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
+    const Eigen::VectorXd v = system.Variables(solved.solution);
+    EXPECT_NEAR(v(0), b.Restick(), 1e-10);
+    EXPECT_NEAR(v(2), b.Stick(), 1e-10);
+    EXPECT_NEAR(v(3), b.Slip(), 1e-10);
+
+    const BasicOrbit<Belt> orbit = OrbitOf(v);
+    EXPECT_GT(SmallestMargin(AdmissibilityMargins(model, orbit)).value, 0.0);
+    const Belt::State stick_end = model.Flow(Mode::kStick, orbit.start, 0.0, v(2), orbit.parameters);
+    const Extrema slip = MinimumAndMaximum(
+        model.CoordinateAlong(model.MotionInMode(Mode::kSlipNegative, stick_end, 0.0, orbit.parameters), 0), 0.0, v(3));
+    EXPECT_NEAR(slip.maximum.value, b.F_k / b.k + b.Radius(), 1e-10);
+    EXPECT_NEAR(slip.minimum.value, b.F_k / b.k - b.Radius(), 1e-10);
+  }
+}
+
+// Odeint integrates m x'' + c x' + k x = F itself (the stick held at the belt's speed) and meets
+// the exact simulator at every stick and stop over three cycles, undamped and damped.
+TEST(BeltStickSlip, ExactAndOdeintSimulatorsAgreeOnEveryEvent) {
+  for (double c : {0.0, 0.2}) {
+    const BeltCase b = kCases[0];
+    const Belt model = MassOnABelt(b.m, b.k, c);
+    const Belt::Parameters p{1.0, b.F_k, b.F_s, b.v_b};
+    BasicSimulationOptions<Belt::State> options;
+    options.duration = 3.0 * (b.Stick() + b.Slip());
+    const Belt::State start(b.Restick(), b.v_b);
+    const auto exact = SimulateExact(model, p, start, 0.0, options);
+    const auto odeint = SimulateOdeint(model, p, start, 0.0, options);
+    ASSERT_TRUE(exact.Completed()) << exact.message;
+    ASSERT_TRUE(odeint.Completed()) << odeint.message;
+    ASSERT_EQ(exact.events.size(), odeint.events.size()) << "c = " << c;
+    ASSERT_GE(exact.events.size(), 5u);
+    for (std::size_t i = 0; i < exact.events.size(); ++i) {
+      EXPECT_EQ(exact.events[i].mode_after, odeint.events[i].mode_after) << "event " << i;
+      EXPECT_NEAR(exact.events[i].t, odeint.events[i].t, 1e-8) << "event " << i;
+      EXPECT_LT((exact.events[i].state - odeint.events[i].state).lpNorm<Eigen::Infinity>(), 1e-8) << "event " << i;
+    }
+  }
+}
+
+// With viscous damping and F_s > F_k the cycle does not lose its stick as the belt speeds up: its
+// family turns back in a fold, with the stick still finite (m = k = 1, c = 0.1, F_s = 1.5, F_k = 1:
+// near v_b = 0.549, stick 0.91).
+TEST(BeltStickSlip, DampedCycleEndsInAFoldWithItsStickFinite) {
+  const BeltCase b{1.0, 1.0, 1.5, 1.0, 0.2};
+  const Belt model = MassOnABelt(1.0, 1.0, 0.1);
+  const Equations equations(model, Signature::Parse("stick slip-"), Shooting::kSingle);
+  const Eigen::VectorXd guess = Variables(b, b.Restick(), b.Stick(), b.Slip());
+  const BasicOrbitSystem<Belt> system(equations, guess, {0, 1, 2, 3, 7}, false);  // and v_b
+  ContinuationOptions options;
+  options.parameter_index = 4;
+  options.lambda_max = 2.0;
+  options.max_points = 400;
+  const Branch branch = Continuation(system, nullptr, options, system.Unknowns(guess)).Run();
+  const auto fold = std::find_if(branch.special_points.begin(), branch.special_points.end(),
+                                 [](const SpecialPoint& s) { return s.type == "LP"; });
+  ASSERT_NE(fold, branch.special_points.end()) << ToString(branch.end) << ": " << branch.end_message;
+  const Eigen::VectorXd& u = branch.points[fold->point].u;
+  RecordProperty("fold_belt_speed", fmt::format("{:.10g}", u(4)));
+  RecordProperty("fold_stick", fmt::format("{:.10g}", u(2)));
+  EXPECT_NEAR(u(4), 0.549, 0.005);
+  EXPECT_NEAR(u(2), 0.91, 0.01);
+}
+
+}  // namespace
+}  // namespace stickslip
