@@ -120,6 +120,23 @@ void ReadArray(const Reader& reader, const Header& header, const std::vector<Lin
   }
 }
 
+// The non-blank lines from `first` on: exactly `expected` of them, no comments among them.
+std::vector<Line> DataLines(const Reader& reader, const std::vector<Line>& lines, std::size_t first, long long expected) {
+  std::vector<Line> data;
+  for (std::size_t k = first; k < lines.size(); ++k) {
+    if (lines[k].tokens.empty()) continue;
+    if (lines[k].tokens[0].starts_with("%")) reader.Refuse(lines[k].number, "a comment after the size line", "comments before it");
+    if (static_cast<long long>(data.size()) == expected) {
+      reader.Refuse(lines[k].number, "more entries than the header's " + std::to_string(expected), "exactly that many");
+    }
+    data.push_back(lines[k]);
+  }
+  if (static_cast<long long>(data.size()) < expected) {
+    reader.Refuse(0, fmt::format("truncated: {} of the header's {} entries", data.size(), expected), "all of them");
+  }
+  return data;
+}
+
 }  // namespace
 
 Eigen::MatrixXd ParseMatrixMarket(std::string_view text, const std::string& field, const std::string& source,
@@ -150,18 +167,7 @@ Eigen::MatrixXd ParseMatrixMarket(std::string_view text, const std::string& fiel
   if (header.symmetric && rows != cols) reader.Refuse(size.number, fmt::format("{}x{}", rows, cols), "a square matrix in a symmetric file");
   const long long stored = header.symmetric ? rows * (rows + 1) / 2 : rows * cols;
   const long long expected = header.coordinate ? reader.Integer(size, size.tokens[2], 0, stored, "the entry count") : stored;
-  std::vector<Line> data;
-  for (++k; k < lines.size(); ++k) {
-    if (lines[k].tokens.empty()) continue;
-    if (lines[k].tokens[0].starts_with("%")) reader.Refuse(lines[k].number, "a comment after the size line", "comments before it");
-    if (static_cast<long long>(data.size()) == expected) {
-      reader.Refuse(lines[k].number, "more entries than the header's " + std::to_string(expected), "exactly that many");
-    }
-    data.push_back(lines[k]);
-  }
-  if (static_cast<long long>(data.size()) < expected) {
-    reader.Refuse(0, fmt::format("truncated: {} of the header's {} entries", data.size(), expected), "all of them");
-  }
+  const std::vector<Line> data = DataLines(reader, lines, k + 1, expected);
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(rows, cols);
   if (header.coordinate) {
     ReadCoordinates(reader, header, data, m);

@@ -379,8 +379,6 @@ class LinearOscillator {
   // `loaded`: with the forcing and the friction force (the flow), or without (its linear part).
   template <typename T>
   MotionT<T> MotionFrom(Mode mode, const StateT<T>& start, const T& phase, const ParametersT<T>& p, bool loaded) const {
-    using std::cos;
-    using std::sin;
     const bool stick = mode == Mode::kStick;
     const T zero = ZeroLike(p);
     MotionT<T> m;
@@ -391,47 +389,60 @@ class LinearOscillator {
     m.held_position = stick ? start(kContact) : zero;
     m.held_velocity = stick ? start(N + kContact) : zero;
     m.rest_velocity = p.v_b;
-    const Basis& b = *m.basis;
-    const int d = b.size;
+    m.alpha = m.beta = m.forced_re = m.forced_im = m.d_re = m.d_im = StateT<T>::Constant(zero);
     const T friction = stick || !loaded ? zero : T(-double(SlipDirection(mode)) * p.F_k);
-    // The constant and linear inputs e + f s, then alpha + beta s that answers them.
-    StateT<T> e = StateT<T>::Constant(zero), f = e;
-    for (int i = 0; i < d; ++i) {
+    AddStaticResponse(friction, m);
+    // None without forcing (where omega, playing no part, may sit on a natural frequency).
+    if (loaded && !Autonomous()) AddForcedResponse(p.omega, m);
+    AddFreeMotion(start, m);
+    return m;
+  }
+  // alpha + beta s answering the constant and linear inputs e + f s: beta = -A^-1 f, alpha = A^-1 (beta - e).
+  template <typename T>
+  void AddStaticResponse(const T& friction, MotionT<T>& m) const {
+    const Basis& b = *m.basis;
+    StateT<T> e = m.alpha, f = m.alpha;
+    for (int i = 0; i < b.size; ++i) {
       e(i) = b.friction(i) * friction + b.held_position(i) * m.held_position + b.held_velocity(i) * m.held_velocity;
       f(i) = b.held_position(i) * m.held_velocity;
     }
-    m.alpha = m.beta = m.forced_re = m.forced_im = m.d_re = m.d_im = StateT<T>::Constant(zero);
-    for (int i = 0; i < d; ++i) {
-      for (int j = 0; j < d; ++j) m.beta(i) -= b.inverse(i, j) * f(j);
+    for (int i = 0; i < b.size; ++i) {
+      for (int j = 0; j < b.size; ++j) m.beta(i) -= b.inverse(i, j) * f(j);
     }
-    for (int i = 0; i < d; ++i) {
-      for (int j = 0; j < d; ++j) m.alpha(i) += b.inverse(i, j) * (m.beta(j) - e(j));
+    for (int i = 0; i < b.size; ++i) {
+      for (int j = 0; j < b.size; ++j) m.alpha(i) += b.inverse(i, j) * (m.beta(j) - e(j));
     }
-    // Z = sum_k V_k (W b)_k / (i omega - lambda_k), 1/(i omega - lambda) = (-sigma - i(omega - nu)) / |.|^2;
-    // none without forcing (where omega, playing no part, may sit on a natural frequency).
-    if (loaded && !Autonomous()) {
-      for (int k = 0; k < d; ++k) {
-        const std::complex<double> lambda = b.eigenvalues(k);
-        const T detune = p.omega - lambda.imag();
-        const T norm = lambda.real() * lambda.real() + detune * detune;
-        const T r_re = -lambda.real() / norm, r_im = -detune / norm;
-        for (int i = 0; i < d; ++i) {
-          const std::complex<double> u = b.forced_shapes(i, k);
-          m.forced_re(i) += u.real() * r_re - u.imag() * r_im;
-          m.forced_im(i) += u.real() * r_im + u.imag() * r_re;
-        }
+  }
+  // Z = sum_k V_k (W b)_k / (i omega - lambda_k), 1/(i omega - lambda) = (-sigma - i(omega - nu)) / |.|^2.
+  template <typename T>
+  void AddForcedResponse(const T& omega, MotionT<T>& m) const {
+    const Basis& b = *m.basis;
+    for (int k = 0; k < b.size; ++k) {
+      const std::complex<double> lambda = b.eigenvalues(k);
+      const T detune = omega - lambda.imag();
+      const T norm = lambda.real() * lambda.real() + detune * detune;
+      const T r_re = -lambda.real() / norm, r_im = -detune / norm;
+      for (int i = 0; i < b.size; ++i) {
+        const std::complex<double> u = b.forced_shapes(i, k);
+        m.forced_re(i) += u.real() * r_re - u.imag() * r_im;
+        m.forced_im(i) += u.real() * r_im + u.imag() * r_re;
       }
     }
-    // d = W (y(0) - alpha - Re(Z e^{i phase})).
-    const T c = cos(phase), sn = sin(phase);
-    for (int j = 0; j < d; ++j) {
+  }
+  // d = W (y(0) - alpha - Re(Z e^{i phase})): the free motion that meets the start.
+  template <typename T>
+  void AddFreeMotion(const StateT<T>& start, MotionT<T>& m) const {
+    using std::cos;
+    using std::sin;
+    const Basis& b = *m.basis;
+    const T c = cos(m.phase), sn = sin(m.phase);
+    for (int j = 0; j < b.size; ++j) {
       const T free = start(b.component[j]) - m.alpha(j) - (m.forced_re(j) * c - m.forced_im(j) * sn);
-      for (int k = 0; k < d; ++k) {
+      for (int k = 0; k < b.size; ++k) {
         m.d_re(k) += b.projector(k, j).real() * free;
         m.d_im(k) += b.projector(k, j).imag() * free;
       }
     }
-    return m;
   }
   Eigen::Matrix<double, N, 1> Load(const State& x, double phase) const {
     return forcing_ * std::cos(phase) - stiffness_ * x.template head<N>() - damping_ * x.template tail<N>();
