@@ -19,6 +19,7 @@
 
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_system.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
@@ -185,6 +186,8 @@ TEST(DampedDenHartogOrbit, BalancesTheForcingsWorkWithViscousAndFrictionLosses) 
     EXPECT_NEAR(lower(0), -orbit.start(0), 1e-10) << "antisymmetry, r = " << r;
     EXPECT_NEAR(travel, 2.0 * orbit.start(0), 1e-10) << "r = " << r;
     EXPECT_NEAR(work, viscous + beta * travel, 1e-10 * work) << "r = " << r;
+    // The measure of friction's work, from the segments' ends, is the balance's remainder.
+    EXPECT_NEAR(Measure(model, orbit).friction_work, 2.0 * (work - viscous), 1e-10 * work) << "r = " << r;
   }
 }
 

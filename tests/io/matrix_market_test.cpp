@@ -68,10 +68,15 @@ TEST(MatrixMarket, RefusesEveryFileThatIsNotExactlyAMatrixNamingTheLine) {
   ExpectRefused("%%MatrixMarket matrix coordinate complex general\n1 1 1\n1 1 1 0\n", "the field complex");
   ExpectRefused("%%MatrixMarket matrix coordinate pattern general\n1 1 1\n1 1\n", "the field pattern");
   ExpectRefused("%%MatrixMarket matrix coordinate real hermitian\n1 1 1\n1 1 1\n", "the symmetry hermitian");
-  ExpectRefused("%%MatrixMarket vector coordinate real general\n1 1 1\n1 1 1\n", "banner");
-  ExpectRefused("1 1 1\n1 1 1\n", "line 1: no '%%MatrixMarket matrix' banner");
+  ExpectRefused("%%MatrixMarket vector coordinate real general\n1 1 1\n1 1 1\n", "line 1: the object vector");
+  ExpectRefused("%%MatrixMarket matrix coordinate real\n1 1 1\n1 1 1\n", "line 1: a banner of 4 words");
+  ExpectRefused("1 1 1\n1 1 1\n", "line 1: no '%%MatrixMarket' banner");
   ExpectRefused("", "banner");
-  ExpectRefused("%%MatrixMarket matrix array integer general\n1 1\n1.5\n", "a finite integer");
+  ExpectRefused("%%MatrixMarket matrix array integer general\n1 1\n1.5\n", "the value '1.5'");
+  ExpectRefused("%%MatrixMarket matrix array integer general\n1 1\n1e3\n", "the value '1e3'");
+  ExpectRefused("%%MatrixMarket matrix array real general\n1 1\n" + std::string(1000, '7') + "\n",
+                "the value '" + std::string(40, '7') + "...'");
+  ExpectRefused(coordinate + "10000 10000 0\n", "10000x10000: valid at most 10000000 entries", {100000, 16u << 20});
   ExpectRefused("%%MatrixMarket matrix array real general\n2 2\n1\n2\n3\n", "truncated: 3 of the header's 4");
   ExpectRefused(coordinate + "1001 1 0\n", "the row count '1001'");
   MatrixMarketLimits small;

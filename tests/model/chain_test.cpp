@@ -76,6 +76,18 @@ TEST(Chain, RejectsWhatIsNoChainNamingTheField) {
   bad = good;
   bad.springs = {{0, 1, 1.0}};  // not held to the ground: a rigid-body mode
   ExpectRejected(bad, "stiffness");
+  bad = good;
+  bad.names = {"m1", "m1"};
+  ExpectRejected(bad, "names");
+  bad = good;
+  bad.names = {"m1", "m2'"};  // its velocity would be named m2'' and could meet another's
+  ExpectRejected(bad, "names");
+  bad = good;
+  bad.springs = {{0, kGround, 1e308}, {0, kGround, 1e308}};
+  ExpectRejected(bad, "springs");
+  bad = good;
+  bad.contact = 2147483647;  // the largest int: the message's 1-based number must not overflow
+  ExpectRejected(bad, "contact = 2147483648");
 }
 
 }  // namespace

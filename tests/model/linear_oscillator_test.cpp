@@ -259,6 +259,16 @@ TEST(LinearOscillator, RejectsDataThatIsNotAnOscillatorNamingTheField) {
   bad.coordinates = {"x", "x"};
   ExpectRejected(bad, "coordinates");
   bad = TwoMasses();
+  bad.coordinates = {"a", "a'"};  // a' would name the first coordinate's velocity too
+  ExpectRejected(bad, "coordinates");
+  bad = TwoMasses();
+  bad.damping = 2.0 * std::sqrt(2.0) * Eigen::Matrix2d::Identity();  // the stick (k = 2, m = 1) critically damped: a defective mode
+  ExpectRejected(bad, "damping");
+  bad = TwoMasses();
+  bad.mass *= 1e-300;
+  bad.stiffness *= 1e300;  // M^-1 K overflows
+  ExpectRejected(bad, "stiffness");
+  bad = TwoMasses();
   bad.mass = Eigen::Matrix3d::Identity();
   ExpectRejected(bad, "mass");  // three coordinates for a model of two
 }
@@ -266,13 +276,22 @@ TEST(LinearOscillator, RejectsDataThatIsNotAnOscillatorNamingTheField) {
 TEST(LinearOscillator, RefusesAForcingFrequencyOnANaturalFrequencyOfASlipOrAStick) {
   const LinearOscillator<2> model(TwoMasses());
   const double slip = std::sqrt((3.0 - std::sqrt(5.0)) / 2.0), stick = std::sqrt(2.0);  // eigenvalues of K; K_11
-  for (double omega : {slip, stick}) {
+  // On it, and within the relative gap where the forced and free motions' cancellation costs accuracy.
+  for (double omega : {slip, stick, slip * (1.0 + 5e-7), stick * (1.0 - 5e-7)}) {
     const auto invalid = model.Validate({omega, 0.1, 0.1});
     ASSERT_TRUE(invalid);
     EXPECT_EQ(std::string(invalid->what()).rfind("omega", 0), 0u) << invalid->what();
   }
   EXPECT_FALSE(model.Validate({1.0, 0.1, 0.2}));
   EXPECT_TRUE(model.Validate({1.0, 0.2, 0.1}));  // static below kinetic
+  EXPECT_FALSE(model.Validate({slip * (1.0 + 2e-6), 0.1, 0.2}));
+  LinearOscillatorData autonomous = TwoMasses();
+  autonomous.forcing.setZero();
+  const LinearOscillator<2> free(autonomous);
+  EXPECT_FALSE(free.Validate({slip, 0.1, 0.2}));  // without forcing omega plays no part
+  for (double omega : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -1.0}) {
+    EXPECT_TRUE(free.Validate({omega, 0.1, 0.2})) << "omega = " << omega;  // but must be a number
+  }
   EXPECT_EQ(model.Description().initial_state, (std::vector<std::string>{"x1_0", "x2_0", "v1_0", "v2_0"}));
 }
 

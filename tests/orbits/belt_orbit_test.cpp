@@ -23,6 +23,7 @@
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_system.hpp"
 
 namespace stickslip {
@@ -91,6 +92,11 @@ TEST(BeltStickSlip, IsTheClosedFormCycleWithItsPeriodAnUnknown) {
         model.CoordinateAlong(model.MotionInMode(Mode::kSlipNegative, stick_end, 0.0, orbit.parameters), 0), 0.0, v(3));
     EXPECT_NEAR(slip.maximum.value, b.F_k / b.k + b.Radius(), 1e-10);
     EXPECT_NEAR(slip.minimum.value, b.F_k / b.k - b.Radius(), 1e-10);
+    // In the slip the belt runs v_b T_slip while the mass comes back 2d: friction's work per
+    // cycle is F_k (v_b T_slip + 2d); the stick's share of the cycle is T_stick / (T_stick + T_slip).
+    const BasicOrbitMeasures m = Measure(model, orbit);
+    EXPECT_NEAR(m.friction_work, b.F_k * (b.v_b * b.Slip() + 2.0 * b.d()), 1e-10);
+    EXPECT_NEAR(m.stick_fraction, b.Stick() / (b.Stick() + b.Slip()), 1e-10);
   }
 }
 

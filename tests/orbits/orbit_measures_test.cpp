@@ -187,6 +187,10 @@ TEST(OrbitMeasures, OfTheTestModelAreDenHartogsAmplitude) {
       EXPECT_EQ(m.stops, 2);
       EXPECT_EQ(m.sticks, 0);
       EXPECT_EQ(m.stick_fraction, 0.0);
+      // Friction slides the mass 2X each way: W = 4 beta X, the equivalent viscous damping of the
+      // one-term balance 4 beta / (pi r X).
+      EXPECT_NEAR(m.friction_work, 4.0 * beta * o.amplitude, 1e-12 * o.amplitude);
+      EXPECT_NEAR(m.equivalent_damping, 4.0 * beta / (std::numbers::pi * r * o.amplitude), 1e-12);
     }
   }
 }

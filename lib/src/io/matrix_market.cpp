@@ -5,8 +5,8 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
-#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -16,6 +16,10 @@
 
 namespace stickslip {
 namespace {
+
+constexpr long long kLargestExactInteger = 1LL << 53;  // every integer up to it is a double
+constexpr Eigen::Index kMostDimension = 100000;         // what any limits may allow
+constexpr long long kMostEntries = 10000000;            // of the dense matrix: 80 MB
 
 struct Line {
   int number = 0;  // 1-based
@@ -34,6 +38,11 @@ std::vector<std::string_view> Tokens(std::string_view line) {
   return tokens;
 }
 
+// A token as messages show it: at most 40 characters of it.
+std::string Shown(std::string_view token) {
+  return token.size() <= 40 ? std::string(token) : std::string(token.substr(0, 40)) + "...";
+}
+
 class Reader {
  public:
   Reader(const std::string& field, const std::string& source) : field_(field), source_(source) {}
@@ -47,16 +56,16 @@ class Reader {
     long long value = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size() || value < lo || value > hi) {
-      Refuse(line.number, fmt::format("{} '{}'", what, token), fmt::format("an integer {} ... {}", lo, hi));
+      Refuse(line.number, fmt::format("{} '{}'", what, Shown(token)), fmt::format("an integer {} ... {}", lo, hi));
     }
     return value;
   }
   double Value(const Line& line, std::string_view token, bool integer) const {
+    if (integer) return static_cast<double>(Integer(line, token, -kLargestExactInteger, kLargestExactInteger, "the value"));
     double value = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(value) ||
-        (integer && value != std::trunc(value))) {
-      Refuse(line.number, fmt::format("the value '{}'", token), integer ? "a finite integer" : "a finite number");
+    if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(value)) {
+      Refuse(line.number, fmt::format("the value '{}'", Shown(token)), "a finite number");
     }
     return value;
   }
@@ -78,15 +87,17 @@ struct Header {
 
 Header ParseBanner(const Reader& reader, std::string_view first) {
   const std::vector<std::string_view> t = Tokens(first);
-  if (t.size() != 5 || Lower(t[0]) != "%%matrixmarket" || Lower(t[1]) != "matrix") {
-    reader.Refuse(1, "no '%%MatrixMarket matrix' banner", "a Matrix Market file");
+  if (t.empty() || Lower(t[0]) != "%%matrixmarket") reader.Refuse(1, "no '%%MatrixMarket' banner", "a Matrix Market file");
+  if (t.size() != 5) {
+    reader.Refuse(1, fmt::format("a banner of {} words", t.size()), "%%MatrixMarket matrix <format> <field> <symmetry>");
   }
+  if (Lower(t[1]) != "matrix") reader.Refuse(1, "the object " + Shown(t[1]), "matrix");
   const std::string format = Lower(t[2]), field = Lower(t[3]), symmetry = Lower(t[4]);
-  if (format != "coordinate" && format != "array") reader.Refuse(1, "the format " + format, "coordinate or array");
+  if (format != "coordinate" && format != "array") reader.Refuse(1, "the format " + Shown(format), "coordinate or array");
   if (field != "real" && field != "double" && field != "integer") {
-    reader.Refuse(1, "the field " + field, "real, double or integer");
+    reader.Refuse(1, "the field " + Shown(field), "real, double or integer");
   }
-  if (symmetry != "general" && symmetry != "symmetric") reader.Refuse(1, "the symmetry " + symmetry, "general or symmetric");
+  if (symmetry != "general" && symmetry != "symmetric") reader.Refuse(1, "the symmetry " + Shown(symmetry), "general or symmetric");
   return {format == "coordinate", symmetry == "symmetric", field == "integer"};
 }
 
@@ -120,16 +131,35 @@ void ReadArray(const Reader& reader, const Header& header, const std::vector<Lin
   }
 }
 
-// The non-blank lines from `first` on: exactly `expected` of them, no comments among them.
-std::vector<Line> DataLines(const Reader& reader, const std::vector<Line>& lines, std::size_t first, long long expected) {
-  std::vector<Line> data;
-  for (std::size_t k = first; k < lines.size(); ++k) {
-    if (lines[k].tokens.empty()) continue;
-    if (lines[k].tokens[0].starts_with("%")) reader.Refuse(lines[k].number, "a comment after the size line", "comments before it");
-    if (static_cast<long long>(data.size()) == expected) {
-      reader.Refuse(lines[k].number, "more entries than the header's " + std::to_string(expected), "exactly that many");
+// The text's lines one by one, blank ones skipped; memory stays that of the lines kept.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+  std::optional<Line> Next() {
+    while (start_ <= text_.size()) {
+      const std::size_t end = std::min(text_.find('\n', start_), text_.size());
+      Line line{++number_, Tokens(text_.substr(start_, end - start_))};
+      start_ = end + 1;
+      if (!line.tokens.empty()) return line;
     }
-    data.push_back(lines[k]);
+    return std::nullopt;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t start_ = 0;
+  int number_ = 0;
+};
+
+// The lines after the size line: exactly `expected` of them, no comments among them.
+std::vector<Line> DataLines(const Reader& reader, LineCursor& cursor, long long expected) {
+  std::vector<Line> data;
+  while (std::optional<Line> line = cursor.Next()) {
+    if (line->tokens[0].starts_with("%")) reader.Refuse(line->number, "a comment after the size line", "comments before it");
+    if (static_cast<long long>(data.size()) == expected) {
+      reader.Refuse(line->number, "more entries than the header's " + std::to_string(expected), "exactly that many");
+    }
+    data.push_back(*line);
   }
   if (static_cast<long long>(data.size()) < expected) {
     reader.Refuse(0, fmt::format("truncated: {} of the header's {} entries", data.size(), expected), "all of them");
@@ -145,29 +175,30 @@ Eigen::MatrixXd ParseMatrixMarket(std::string_view text, const std::string& fiel
   if (text.size() > limits.max_bytes) {
     reader.Refuse(0, fmt::format("{} bytes", text.size()), fmt::format("at most {} bytes", limits.max_bytes));
   }
-  std::vector<Line> lines;
-  for (std::size_t start = 0, number = 1; start <= text.size(); ++number) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    lines.push_back({static_cast<int>(number), Tokens(text.substr(start, end - start))});
-    start = end + 1;
+  if (limits.max_dimension < 1 || limits.max_dimension > kMostDimension) {
+    throw InvalidInput("max_dimension", static_cast<double>(limits.max_dimension), fmt::format("1 ... {}", kMostDimension));
   }
+  LineCursor cursor(text);
   const std::size_t first_end = std::min(text.find('\n'), text.size());
   const Header header = ParseBanner(reader, text.substr(0, first_end));
-  // Comments and blank lines before the size line; blank lines only after it.
-  std::size_t k = 1;
-  while (k < lines.size() && (lines[k].tokens.empty() || lines[k].tokens[0].starts_with("%"))) ++k;
-  if (k == lines.size()) reader.Refuse(0, "no size line", "a line with the rows, columns (and entries)");
-  const Line& size = lines[k];
-  if (size.tokens.size() != (header.coordinate ? 3u : 2u)) {
-    reader.Refuse(size.number, fmt::format("{} fields on the size line", size.tokens.size()),
+  cursor.Next();  // the banner
+  // Comments before the size line.
+  std::optional<Line> size = cursor.Next();
+  while (size && size->tokens[0].starts_with("%")) size = cursor.Next();
+  if (!size) reader.Refuse(0, "no size line", "a line with the rows, columns (and entries)");
+  if (size->tokens.size() != (header.coordinate ? 3u : 2u)) {
+    reader.Refuse(size->number, fmt::format("{} fields on the size line", size->tokens.size()),
                   header.coordinate ? "3: rows columns entries" : "2: rows columns");
   }
-  const Eigen::Index rows = reader.Integer(size, size.tokens[0], 1, limits.max_dimension, "the row count");
-  const Eigen::Index cols = reader.Integer(size, size.tokens[1], 1, limits.max_dimension, "the column count");
-  if (header.symmetric && rows != cols) reader.Refuse(size.number, fmt::format("{}x{}", rows, cols), "a square matrix in a symmetric file");
+  const Eigen::Index rows = reader.Integer(*size, size->tokens[0], 1, limits.max_dimension, "the row count");
+  const Eigen::Index cols = reader.Integer(*size, size->tokens[1], 1, limits.max_dimension, "the column count");
+  if (header.symmetric && rows != cols) reader.Refuse(size->number, fmt::format("{}x{}", rows, cols), "a square matrix in a symmetric file");
+  if (static_cast<long long>(rows) * cols > kMostEntries) {
+    reader.Refuse(size->number, fmt::format("{}x{}", rows, cols), fmt::format("at most {} entries", kMostEntries));
+  }
   const long long stored = header.symmetric ? rows * (rows + 1) / 2 : rows * cols;
-  const long long expected = header.coordinate ? reader.Integer(size, size.tokens[2], 0, stored, "the entry count") : stored;
-  const std::vector<Line> data = DataLines(reader, lines, k + 1, expected);
+  const long long expected = header.coordinate ? reader.Integer(*size, size->tokens[2], 0, stored, "the entry count") : stored;
+  const std::vector<Line> data = DataLines(reader, cursor, expected);
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(rows, cols);
   if (header.coordinate) {
     ReadCoordinates(reader, header, data, m);
@@ -184,11 +215,13 @@ Eigen::MatrixXd ReadMatrixMarket(const std::filesystem::path& file, const std::s
   const std::uintmax_t bytes = std::filesystem::file_size(file, error);
   if (error) reader.Refuse(0, fmt::format("cannot be read ({})", error.message()), "a readable file");
   if (bytes > limits.max_bytes) reader.Refuse(0, fmt::format("{} bytes", bytes), fmt::format("at most {} bytes", limits.max_bytes));
+  // At most one byte past the limit, should the file grow after its size was taken.
   std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) reader.Refuse(0, "cannot be read", "a readable file");
-  return ParseMatrixMarket(text.str(), field, source, limits);
+  std::string text(static_cast<std::size_t>(bytes) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) reader.Refuse(0, "cannot be read", "a readable file");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return ParseMatrixMarket(text, field, source, limits);
 }
 
 }  // namespace stickslip

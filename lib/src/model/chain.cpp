@@ -1,6 +1,7 @@
 #include "stickslip/model/chain.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -15,7 +16,7 @@ void CheckLinks(const char* field, const std::vector<ChainLink>& links, int n) {
     const std::string name = fmt::format("{}[{}]", field, k);
     const auto valid_end = [n](int i) { return i == kGround || (i >= 0 && i < n); };
     if (!valid_end(link.from) || !valid_end(link.to) || link.from == link.to) {
-      throw InvalidInput(name, fmt::format("{} to {}", link.from + 1, link.to + 1),
+      throw InvalidInput(name, fmt::format("{} to {}", static_cast<long long>(link.from) + 1, static_cast<long long>(link.to) + 1),
                          fmt::format("two different masses 1 ... {} or a mass and the ground (0)", n));
     }
     if (!(link.value >= 0.0 && std::isfinite(link.value))) throw InvalidInput(name, link.value, "a finite value >= 0");
@@ -47,16 +48,14 @@ LinearOscillatorData ChainData(const Chain& chain) {
     }
   }
   if (chain.contact < 0 || chain.contact >= n) {
-    throw InvalidInput("contact", fmt::format("{}", chain.contact + 1), fmt::format("a mass 1 ... {}", n));
+    throw InvalidInput("contact", fmt::format("{}", static_cast<long long>(chain.contact) + 1), fmt::format("a mass 1 ... {}", n));
   }
   CheckLinks("springs", chain.springs, n);
   CheckLinks("dampers", chain.dampers, n);
   if (!chain.forcing.empty() && static_cast<int>(chain.forcing.size()) != n) {
     throw InvalidInput("forcing", fmt::format("{} values", chain.forcing.size()), fmt::format("one per mass, {}", n));
   }
-  if (!chain.names.empty() && static_cast<int>(chain.names.size()) != n) {
-    throw InvalidInput("names", fmt::format("{} names", chain.names.size()), fmt::format("one per mass, {}", n));
-  }
+  CheckCoordinateNames(chain.names, n, "names");
   // The contact's mass last, the others in their order.
   std::vector<int> position(n);
   for (int i = 0, next = 0; i < n; ++i) position[i] = i == chain.contact ? n - 1 : next++;
@@ -73,6 +72,9 @@ LinearOscillatorData ChainData(const Chain& chain) {
   }
   Assemble(data.stiffness, chain.springs, position);
   Assemble(data.damping, chain.dampers, position);
+  for (const auto& [field, matrix] : {std::pair{"springs", &data.stiffness}, std::pair{"dampers", &data.damping}}) {
+    if (!matrix->allFinite()) throw InvalidInput(field, "coefficients summing past 1.8e308", "sums within double range");
+  }
   return data;
 }
 

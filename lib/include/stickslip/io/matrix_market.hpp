@@ -20,7 +20,7 @@
 namespace stickslip {
 
 struct MatrixMarketLimits {
-  Eigen::Index max_dimension = 1000;       // rows and columns
+  Eigen::Index max_dimension = 1000;       // rows and columns, 1 ... 100000
   std::uintmax_t max_bytes = 16u << 20;   // of the file
 };
 

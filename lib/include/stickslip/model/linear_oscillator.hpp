@@ -148,18 +148,25 @@ class LinearOscillator {
   const ModelDescription& Description() const { return description_; }
   bool Autonomous() const { return forcing_.isZero(); }
 
-  // The closed forms need a forcing frequency away from every undamped natural frequency of a
-  // slip and of a stick (1/(i omega - lambda_k) in Z).
+  // The closed forms need a forcing frequency away from every lightly damped natural frequency of
+  // a slip and of a stick: Z has 1/(i omega - lambda_k), and within kResonanceGap (relative) the
+  // cancellation between the forced and the free motion would cost more than 1e-10 of the motion.
+  static constexpr double kResonanceGap = 1e-6;
   std::optional<InvalidInput> ValidateClosedForm(const Parameters& p) const {
-    if (Autonomous()) return std::nullopt;  // no forcing: omega plays no part
+    if (Autonomous()) {  // no forcing: omega plays no part, but is a number
+      if (std::isfinite(p.omega) && p.omega > 0.0) return std::nullopt;
+      return InvalidInput("omega", p.omega, "a finite value > 0 (without forcing it plays no part)");
+    }
     const ParameterDescription& d = description_.parameters[0];
     if (!(p.omega >= d.minimum && p.omega <= d.maximum)) return InvalidInput("omega", p.omega, d.range);
     for (const Basis* basis : {&slip_, &stick_}) {
       for (int k = 0; k < basis->size; ++k) {
         const std::complex<double> lambda = basis->eigenvalues(k);
-        if (std::abs(std::complex<double>(0.0, p.omega) - lambda) <= 1e-9 * std::abs(lambda)) {
+        if (std::abs(std::complex<double>(0.0, p.omega) - lambda) <= kResonanceGap * std::abs(lambda)) {
           return InvalidInput("omega", p.omega,
-                              fmt::format("{} away from the natural frequency {:.10g} of a {}", d.range, lambda.imag(),
+                              fmt::format("{:.6g} <= omega <= {:.6g}, at least {:g} (relative) away from the natural "
+                                          "frequency {:.10g} of a {}",
+                                          d.minimum, d.maximum, kResonanceGap, std::abs(lambda),
                                           basis == &slip_ ? "slip" : "stick"));
         }
       }
@@ -295,6 +302,7 @@ class LinearOscillator {
   }
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.F_s; }
+  double KineticForce(const Parameters& p) const { return p.F_k; }
   bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.F_s - p.F_k) <= 1e-12 * p.F_s; }
   Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {
     const double f = StickForce(x, phase, p);

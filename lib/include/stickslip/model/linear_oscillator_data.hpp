@@ -55,10 +55,15 @@ struct LinearOscillatorModes {
   double holding_forcing = 0.0;
 };
 
+// Throws InvalidInput naming `field` unless there are no names or n distinct ones, each a letter
+// followed by letters, digits or '_' (so that x1, x1' and the file columns stay distinct).
+void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n, const std::string& field);
+
 // Throws InvalidInput naming the field (mass, damping, stiffness, forcing, coordinates) when M or K
 // is not square, symmetric and positive definite with finite entries, C is not n x n and finite,
-// the sizes disagree, n is not 1 ... 50, a mode's eigenvectors are (nearly) dependent (repeated
-// eigenvalues, as at critical damping), or the names are not n distinct non-empty names.
+// the sizes disagree, n is not 1 ... 50, a mode's system is not finite (scales too far apart) or
+// its eigenvectors reproduce the matrix exponential worse than 1e-9 (nearly dependent ones, as
+// near critical damping), or the names are not as CheckCoordinateNames asks.
 LinearOscillatorModes ModesOf(const LinearOscillatorData& data);
 
 // The parameters (omega in rad/s, F_k and F_s in N, v_b in m/s: SI by default) with their ranges, the

@@ -112,6 +112,8 @@ concept OscillatorModel =
       { model.StickForce(x, phase, p) } -> std::same_as<double>;
       { model.StickForceRate(x, phase, p) } -> std::same_as<double>;
       { model.StaticThreshold(p) } -> std::same_as<double>;
+      // The kinetic friction force in a slip, in the units of the stick force.
+      { model.KineticForce(p) } -> std::same_as<double>;
       { model.AbnormalStopsPossible(p) } -> std::same_as<bool>;
       { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;
       // Along a motion, for the root finder.

@@ -1,6 +1,8 @@
 // What users plot of a periodic orbit: the amplitude and peak-to-peak of each coordinate (for the
 // paper's model the amplitudes of x1 and x2 and the peak-to-peak of x2), the fraction of the
-// period spent sticking and the number of stops and sticks per period.
+// period spent sticking, the number of stops and sticks per period, and the energy friction
+// dissipates per period with the viscous damping that would dissipate as much (the design
+// quantities of friction dampers and joints).
 //
 // Exact, from the closed-form motion of each segment visited by the one walk over the orbit's
 // segments (segment_walk.hpp): a coordinate's extrema over a segment are at its ends or at the
@@ -20,6 +22,7 @@
 #include <numbers>
 #include <vector>
 
+#include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
@@ -53,15 +56,34 @@ struct BasicOrbitMeasures {
   double stick_fraction = 0.0;
   int stops = 0;
   int sticks = 0;
+  // Per period: F_k times the distance the contact slides relative to its surface (in each slip
+  // s keeps its sign, so that distance is |the contact coordinate's change - v_b d|), in the
+  // model's units of force times length.
+  double friction_work = 0.0;
+  // The viscous coefficient c that dissipates as much on the contact's coordinate moving as
+  // X cos(w t) (X half its peak-to-peak, w = 2 pi / period): c = W / (pi w X^2).
+  double equivalent_damping = 0.0;
 };
+
+// The coordinate the contact holds in a stick (its displacement).
+template <typename Model>
+int ContactCoordinate(const Model& model) {
+  int k = 0;
+  while (!model.HeldInStick(k)) ++k;  // every model has one: the interface's contact
+  return k;
+}
 
 template <typename Model>
 BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   BasicOrbitMeasures m;
   m.coordinates.resize(model.Description().coordinates.size());
-  double stick_time = 0.0;
+  const int contact = ContactCoordinate(model);
+  const double rest_velocity = RestVelocity<Model>(orbit.parameters, 0.0);
+  double stick_time = 0.0, listed_time = 0.0, slid = 0.0;
   WalkSegments(model, orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double, Model>& s) {
     const bool stick = s.spec.mode == Mode::kStick;
+    listed_time += s.duration;
+    if (!stick) slid += std::abs(s.end(contact) - s.start(contact) - rest_velocity * s.duration);
     for (std::size_t i = 0; i < m.coordinates.size(); ++i) {
       const int k = static_cast<int>(i);
       if (stick && model.HeldInStick(k)) {
@@ -76,10 +98,16 @@ BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   if (orbit.signature.antisymmetric()) {
     for (CoordinateRange& c : m.coordinates) c.Mirror();
   }
-  const double period =
-      orbit.signature.period_multiple() * 2.0 * std::numbers::pi / model.ForcingFrequency(orbit.parameters);
-  m.stick_fraction = stick_time / (period * orbit.signature.CoveredFraction());
+  // The time the listed segments cover: the forcing's periods, or (autonomous) their durations.
+  const double covered = model.Autonomous() ? listed_time
+                                            : orbit.signature.period_multiple() * 2.0 * std::numbers::pi /
+                                                  model.ForcingFrequency(orbit.parameters) * orbit.signature.CoveredFraction();
+  m.stick_fraction = stick_time / covered;
   for (Mode mode : orbit.signature.FullPeriod()) ++(mode == Mode::kStick ? m.sticks : m.stops);
+  const double period = covered / orbit.signature.CoveredFraction();
+  m.friction_work = model.KineticForce(orbit.parameters) * slid / orbit.signature.CoveredFraction();
+  const double amplitude = 0.5 * m.coordinates[contact].PeakToPeak();
+  m.equivalent_damping = m.friction_work / (std::numbers::pi * (2.0 * std::numbers::pi / period) * amplitude * amplitude);
   return m;
 }
 
