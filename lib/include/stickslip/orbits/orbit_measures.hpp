@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "stickslip/model/oscillator_model.hpp"
@@ -65,12 +66,14 @@ struct BasicOrbitMeasures {
   double equivalent_damping = 0.0;
 };
 
-// The coordinate the contact holds in a stick (its displacement).
+// The coordinate the contact holds in a stick (its displacement); every model has one.
 template <typename Model>
 int ContactCoordinate(const Model& model) {
-  int k = 0;
-  while (!model.HeldInStick(k)) ++k;  // every model has one: the interface's contact
-  return k;
+  const int n = static_cast<int>(model.Description().coordinates.size());
+  for (int k = 0; k < n; ++k) {
+    if (model.HeldInStick(k)) return k;
+  }
+  throw std::logic_error("the model holds no coordinate in a stick");
 }
 
 template <typename Model>
