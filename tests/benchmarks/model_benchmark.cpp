@@ -20,6 +20,7 @@
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "stickslip/orbits/stability.hpp"
+#include "support/pascal_in_physical_units.hpp"
 
 namespace stickslip {
 namespace {
@@ -31,32 +32,7 @@ Orbit Section41() {
 }
 
 // m2 = 1, k1 + k2 = 1, F0 = 1: m1 = eta, lengths scale by eta, time by sqrt(eta).
-LinearOscillatorData TwoMasses(const Parameters& p) {
-  LinearOscillatorData data;
-  data.mass = Eigen::Vector2d(p.eta, 1.0).asDiagonal();
-  data.stiffness = (Eigen::Matrix2d() << 1.0, -p.chi, -p.chi, p.chi).finished();
-  data.forcing = Eigen::Vector2d(0.0, 1.0);
-  return data;
-}
-BasicOrbit<LinearOscillator<2>> Converted(const Orbit& o) {
-  const Parameters& p = o.parameters;
-  const double omega = 1.0 / std::sqrt(p.eta);
-  BasicOrbit<LinearOscillator<2>> c{o.signature, {p.omega * omega, p.u_s * p.eta, p.u_r * p.eta}, p.eta * o.InitialState(), o.phi, {}};
-  c.start.tail<2>() *= omega;
-  for (double d : o.durations) c.durations.push_back(d / omega);
-  return c;
-}
-
-template <typename Model>
-Eigen::VectorXd VariablesOf(const BasicOrbit<Model>& o, const BasicPeriodicityEquations<Model>& e) {
-  constexpr int S = Model::kStateSize;
-  Eigen::VectorXd v(e.VariableCount());
-  v.head(S - 1) = o.start.head(S - 1);
-  v(S - 1) = o.phi;
-  for (std::size_t i = 0; i < o.durations.size(); ++i) v(S + static_cast<int>(i)) = o.durations[i];
-  for (int k = 0; k < Model::kParameterCount; ++k) v(e.Parameter(k)) = Model::ParameterAt(o.parameters, k);
-  return v;
-}
+constexpr PhysicalTwoMasses kUnitTwoMasses{1.0, 1.0, 1.0};
 
 template <typename Model>
 void Periodicity(benchmark::State& state, const Model& model, const BasicOrbit<Model>& orbit) {
@@ -81,17 +57,17 @@ void Multipliers(benchmark::State& state, const Model& model, const BasicOrbit<M
 void PeriodicityPascal(benchmark::State& state) { Periodicity(state, Pascal2014{}, Section41().OnModel()); }
 void PeriodicityGeneral(benchmark::State& state) {
   const Orbit o = Section41();
-  Periodicity(state, LinearOscillator<2>(TwoMasses(o.parameters)), Converted(o));
+  Periodicity(state, LinearOscillator<2>(kUnitTwoMasses.Data(o.parameters)), InPhysicalUnits(o, kUnitTwoMasses));
 }
 void MarginsPascal(benchmark::State& state) { Margins(state, Pascal2014{}, Section41().OnModel()); }
 void MarginsGeneral(benchmark::State& state) {
   const Orbit o = Section41();
-  Margins(state, LinearOscillator<2>(TwoMasses(o.parameters)), Converted(o));
+  Margins(state, LinearOscillator<2>(kUnitTwoMasses.Data(o.parameters)), InPhysicalUnits(o, kUnitTwoMasses));
 }
 void MultipliersPascal(benchmark::State& state) { Multipliers(state, Pascal2014{}, Section41().OnModel()); }
 void MultipliersGeneral(benchmark::State& state) {
   const Orbit o = Section41();
-  Multipliers(state, LinearOscillator<2>(TwoMasses(o.parameters)), Converted(o));
+  Multipliers(state, LinearOscillator<2>(kUnitTwoMasses.Data(o.parameters)), InPhysicalUnits(o, kUnitTwoMasses));
 }
 BENCHMARK(PeriodicityPascal)->Unit(benchmark::kMicrosecond);
 BENCHMARK(PeriodicityGeneral)->Unit(benchmark::kMicrosecond);

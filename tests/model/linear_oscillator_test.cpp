@@ -17,6 +17,7 @@
 #include "stickslip/orbits/orbit_system.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "stickslip/orbits/stability.hpp"
+#include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -24,45 +25,6 @@ namespace {
 
 static_assert(IntegrableOscillatorModel<LinearOscillator<2>>);
 static_assert(IntegrableOscillatorModel<LinearOscillator<3>>);
-
-// Pascal's two masses in physical units: m1 = eta m2, k1 + k2 = S, k2 = chi S, forcing F0 cos on
-// mass 2 and the contact on mass 2 with mu_k N = u_s eta F0, mu_s N = u_r eta F0. The paper's
-// scaling: t = t~ / Omega with Omega = sqrt(S/m1), omega~ = omega Omega, y = eta F0 x / S.
-struct PhysicalTwoMasses {
-  double m2 = 2.0, stiffness_sum = 5.0, f0 = 3.0;
-  LinearOscillatorData Data(const Parameters& p) const {
-    LinearOscillatorData data;
-    data.mass = Eigen::Vector2d(p.eta * m2, m2).asDiagonal();
-    const double k2 = p.chi * stiffness_sum;
-    data.stiffness = (Eigen::Matrix2d() << stiffness_sum, -k2, -k2, k2).finished();
-    data.forcing = Eigen::Vector2d(0.0, f0);
-    return data;
-  }
-  double Omega(const Parameters& p) const { return std::sqrt(stiffness_sum / (p.eta * m2)); }
-  double Length(const Parameters& p) const { return p.eta * f0 / stiffness_sum; }
-  LinearOscillator<2>::Parameters Of(const Parameters& p) const {
-    return {p.omega * Omega(p), p.u_s * p.eta * f0, p.u_r * p.eta * f0};
-  }
-};
-
-BasicOrbit<LinearOscillator<2>> InPhysicalUnits(const Orbit& o, const PhysicalTwoMasses& physical) {
-  const Parameters& p = o.parameters;
-  const double length = physical.Length(p), omega = physical.Omega(p);
-  BasicOrbit<LinearOscillator<2>> converted{o.signature, physical.Of(p), length * o.InitialState(), o.phi, {}};
-  converted.start.tail<2>() *= omega;
-  for (double d : o.durations) converted.durations.push_back(d / omega);
-  return converted;
-}
-
-Eigen::VectorXd VariablesOf(const BasicOrbit<LinearOscillator<2>>& o, const BasicPeriodicityEquations<LinearOscillator<2>>& e) {
-  using Equations = BasicPeriodicityEquations<LinearOscillator<2>>;
-  Eigen::VectorXd v(e.VariableCount());
-  v.head<3>() = o.start.head<3>();
-  v(Equations::kPhi) = o.phi;
-  for (std::size_t i = 0; i < o.durations.size(); ++i) v(Equations::Duration(static_cast<int>(i))) = o.durations[i];
-  v.segment<4>(e.Parameter(0)) << o.parameters.omega, o.parameters.F_k, o.parameters.F_s, o.parameters.v_b;
-  return v;
-}
 
 class PascalInPhysicalUnits : public testing::TestWithParam<const char*> {};
 

@@ -139,6 +139,7 @@ class LinearOscillator {
     forcing_ = data.forcing;
     mass_factor_ = mass_.llt();
     compliance_ = mass_factor_.solve(Eigen::Matrix<double, N, N>::Identity());
+    if constexpr (N > 1) held_mass_factor_ = mass_.template topLeftCorner<N - 1, N - 1>().llt();
     slip_ = BasisOf(modes.slip);
     stick_ = BasisOf(modes.stick);
     holding_ = modes.holding;
@@ -346,7 +347,7 @@ class LinearOscillator {
         -forcing_ * p.omega * std::sin(phase) - stiffness_ * x.template tail<N>() - damping_ * q2;
     Eigen::Matrix<double, N, 1> q3 = Eigen::Matrix<double, N, 1>::Zero();
     if constexpr (N > 1) {
-      q3.template head<N - 1>() = mass_.template topLeftCorner<N - 1, N - 1>().llt().solve(load_rate.template head<N - 1>());
+      q3.template head<N - 1>() = held_mass_factor_.solve(load_rate.template head<N - 1>());
     }
     return mass_.row(kContact).dot(q3) - load_rate(kContact);
   }
@@ -459,7 +460,7 @@ class LinearOscillator {
   Eigen::Matrix<double, N, 1> HeldAcceleration(const State& x, double phase) const {
     Eigen::Matrix<double, N, 1> q2 = Eigen::Matrix<double, N, 1>::Zero();
     if constexpr (N > 1) {
-      q2.template head<N - 1>() = mass_.template topLeftCorner<N - 1, N - 1>().llt().solve(Load(x, phase).template head<N - 1>());
+      q2.template head<N - 1>() = held_mass_factor_.solve(Load(x, phase).template head<N - 1>());
     }
     return q2;
   }
@@ -500,6 +501,10 @@ class LinearOscillator {
   Eigen::Matrix<double, N, N> compliance_;  // M^-1
   Eigen::Matrix<double, N, 1> forcing_;
   Eigen::LLT<Eigen::Matrix<double, N, N>> mass_factor_;
+  // M's block of the coordinates a stick leaves free (unused for N = 1), factored once: the
+  // integrator asks for the stick's accelerations at every step.
+  static constexpr int kFree = N > 1 ? N - 1 : 1;
+  Eigen::LLT<Eigen::Matrix<double, kFree, kFree>> held_mass_factor_;
   Basis slip_, stick_;
   Eigen::Matrix<double, 1, 2 * N> holding_;
   double holding_forcing_ = 0.0;
