@@ -139,7 +139,12 @@ class LinearOscillator {
     forcing_ = data.forcing;
     mass_factor_ = mass_.llt();
     compliance_ = mass_factor_.solve(Eigen::Matrix<double, N, N>::Identity());
-    if constexpr (N > 1) held_mass_factor_ = mass_.template topLeftCorner<N - 1, N - 1>().llt();
+    // Always computed: copying an uncomputed Eigen::LLT reads its uninitialised status.
+    if constexpr (N > 1) {
+      held_mass_factor_ = mass_.template topLeftCorner<N - 1, N - 1>().llt();
+    } else {
+      held_mass_factor_ = Eigen::Matrix<double, 1, 1>::Identity().llt();
+    }
     slip_ = BasisOf(modes.slip);
     stick_ = BasisOf(modes.stick);
     holding_ = modes.holding;
