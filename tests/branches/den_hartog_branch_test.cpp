@@ -59,7 +59,7 @@ class DenHartogBranchInFriction : public testing::TestWithParam<double> {};
 // is Den Hartog's X(r, beta), and the branch ends where the turning points start to stick, at beta*.
 TEST_P(DenHartogBranchInFriction, FollowsTheClosedFormAmplitudeAndEndsWhereTheTurningPointsStick) {
   const double r = GetParam();
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const Equations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
   const Eigen::VectorXd start = DenHartogVariables(DenHartogOrbit(r, 0.05), equations);
   const System system(equations, start, {0, 1, 2, 4}, true);  // x0, phi, the half period, F_k (= F_s)
@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(FrequencyRatios, DenHartogBranchInFriction, testing::Va
 // equivalent viscous damping) converges to Den Hartog's X; the balance's error is within 0.7 beta^2
 // relative for beta up to beta*/2 on r in [0.6, 3] (nearer beta* it grows: 1.2 beta^2 at 0.99 beta*).
 TEST(DenHartogOrbit, OneTermHarmonicBalanceIsWithinItsBoundAndNewtonCorrectsIt) {
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const Equations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
   for (double r : {0.6, 0.8, 1.2, 1.5, 2.0, 2.5, 3.0}) {
     for (double fraction : {0.1, 0.5}) {
@@ -115,7 +115,7 @@ TEST(DenHartogOrbit, OneTermHarmonicBalanceIsWithinItsBoundAndNewtonCorrectsIt) 
 // Smallest over largest singular value of the periodicity equations' Jacobian in the start, the
 // phase and the durations, at Den Hartog's orbit.
 double Conditioning(const char* signature, double r, double beta) {
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const Equations equations(model, Signature::Parse(signature), Shooting::kSingle);
   const Eigen::VectorXd v = DenHartogVariables(DenHartogOrbit(r, beta), equations);
   std::vector<int> free(equations.Parameter(0));

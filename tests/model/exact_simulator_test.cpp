@@ -30,7 +30,7 @@ TEST(ExactSimulator, StartsAStickWhereDenHartogsConditionFails) {
   // At r = 0.8 the turning point holds when beta > r^2 X (FRICTION-LITERATURE.md): started at
   // rest on the non-sticking orbit's turning point with a larger static level, the mass sticks.
   const DenHartogOrbit orbit(0.8, 0.2);
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const double holding = 1.01 * 0.64 * orbit.amplitude;
   BasicSimulationOptions<DenHartogOscillator::State> options;
   options.duration = 1.0;

@@ -38,7 +38,7 @@ INSTANTIATE_TEST_SUITE_P(FrequencyRatios, DenHartogNonStickingOrbitUnderOdeint, 
 // periods.
 TEST(OdeintSimulator, AgreesWithTheExactSimulatorOnDenHartogsStickSlip) {
   const DenHartogOrbit orbit(0.8, 0.2);
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const DenHartogOscillator::Parameters p{0.8, 0.2, 1.01 * 0.64 * orbit.amplitude};
   const DenHartogState start(orbit.amplitude, 0.0);
   BasicSimulationOptions<DenHartogState> options;

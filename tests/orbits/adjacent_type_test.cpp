@@ -150,7 +150,7 @@ TEST(AdjacentStart, AStopOfTheTestModelGetsAZeroLengthStickAndKeepsItsMotion) {
   EXPECT_EQ(start.durations, (std::vector<double>{orbit.durations[0], 0.0, orbit.durations[1]}));
   auto end_of_period = [](const TestOrbit& o) {
     DenHartogOscillator::State end;
-    WalkSegments(DenHartogOscillator{}, o, Extent::kListed, PhaseRule::kAccumulated,
+    WalkSegments(DenHartogModel(), o, Extent::kListed, PhaseRule::kAccumulated,
                  [&](const SegmentVisit<double, DenHartogOscillator>& s) { end = s.end; });
     return end;
   };

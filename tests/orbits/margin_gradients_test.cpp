@@ -110,7 +110,7 @@ BasicOrbit<DenHartogOscillator> Perturbed(BasicOrbit<DenHartogOscillator> o, int
 }
 
 std::set<std::string> ExpectModelGradientsMatchDifferences(const BasicOrbit<DenHartogOscillator>& orbit) {
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const std::vector<Margin> margins = AdmissibilityMargins(model, orbit);
   const std::vector<MarginGradient> gradients = MarginGradients(model, orbit);
   EXPECT_EQ(gradients.size(), margins.size());

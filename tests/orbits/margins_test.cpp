@@ -183,7 +183,7 @@ TEST(ModelMargins, AreDenHartogsClosedFormsAtItsTurningPoints) {
     for (const char* signature : {"slip- / antisymmetric", "slip- slip+"}) {
       SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta << ", " << signature);
       const std::vector<Margin> margins =
-          AdmissibilityMargins(DenHartogOscillator{}, DenHartogOnSignature(o, signature, 1.5 * beta));
+          AdmissibilityMargins(DenHartogModel(), DenHartogOnSignature(o, signature, 1.5 * beta));
       const double stick_force = r * r * o.amplitude;
       const int last = Signature::Parse(signature).size();
       const std::string end = ":" + std::to_string(last);
@@ -211,8 +211,8 @@ TEST(ModelMargins, AreDenHartogsClosedFormsAtItsTurningPoints) {
 TEST(ModelMargins, NameTheReversalWhereStaticFrictionHoldsDenHartogsTurningPoint) {
   const DenHartogOrbit o(1.5, 0.25);
   const double holding = 1.5 * 1.5 * o.amplitude;  // Shaw: the orbit survives while r^2 X > beta_static
-  const Margin below = SmallestMargin(AdmissibilityMargins(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- slip+", 0.99 * holding)));
-  const Margin above = SmallestMargin(AdmissibilityMargins(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- slip+", 1.01 * holding)));
+  const Margin below = SmallestMargin(AdmissibilityMargins(DenHartogModel(), DenHartogOnSignature(o, "slip- slip+", 0.99 * holding)));
+  const Margin above = SmallestMargin(AdmissibilityMargins(DenHartogModel(), DenHartogOnSignature(o, "slip- slip+", 1.01 * holding)));
   EXPECT_GT(below.value, 0.0);
   EXPECT_LT(above.value, 0.0);
   EXPECT_EQ(std::string(above.base), "reversal");

@@ -36,7 +36,7 @@ TEST(OrbitLayout, NamesThePaperModelsVariablesInTheEquationsOrder) {
 }
 
 TEST(OrbitLayout, NamesTheTestModelsVariablesFromItsDescription) {
-  const DenHartogOscillator model;  // the layout refers to its description
+  const DenHartogOscillator model = DenHartogModel();  // the layout refers to its description
   ExpectLayoutOfTheEquations(model, "slip- slip+");
   const OrbitLayout layout(model.Description(), 2);
   EXPECT_EQ(layout.Name(0), "x1_0");  // the start without the contact's velocity

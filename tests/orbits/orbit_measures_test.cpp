@@ -180,7 +180,7 @@ TEST(OrbitMeasures, OfTheTestModelAreDenHartogsAmplitude) {
     const DenHartogOrbit o(r, beta);
     for (const char* signature : {"slip- / antisymmetric", "slip- slip+"}) {
       SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta << ", " << signature);
-      const BasicOrbitMeasures m = Measure(DenHartogOscillator{}, DenHartogOnSignature(o, signature, beta));
+      const BasicOrbitMeasures m = Measure(DenHartogModel(), DenHartogOnSignature(o, signature, beta));
       ASSERT_EQ(m.coordinates.size(), 1u);
       EXPECT_NEAR(m.coordinates[0].Amplitude(), o.amplitude, 1e-12 * o.amplitude);
       EXPECT_NEAR(m.coordinates[0].PeakToPeak(), 2.0 * o.amplitude, 1e-12 * o.amplitude);
@@ -199,7 +199,7 @@ TEST(OrbitMeasures, OfTheTestModelAreDenHartogsAmplitude) {
 TEST(OrbitMeasures, OfTheTestModelCountItsSticksAndTheirShareOfThePeriod) {
   const BasicOrbit<DenHartogOscillator> o{
       Signature::Parse("slip- stick slip+ stick"), {0.7, 0.2, 0.3}, {1.0, 0.0}, 0.3, {2.0, 0.5, 2.5, 0.7}};
-  const BasicOrbitMeasures m = Measure(DenHartogOscillator{}, o);
+  const BasicOrbitMeasures m = Measure(DenHartogModel(), o);
   EXPECT_EQ(m.stops, 2);
   EXPECT_EQ(m.sticks, 2);
   EXPECT_DOUBLE_EQ(m.stick_fraction, (0.5 + 0.7) / (2.0 * std::numbers::pi / 0.7));

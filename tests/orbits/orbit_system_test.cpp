@@ -18,7 +18,7 @@ using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
 
 TEST(OrbitSystem, ContinuesDenHartogsOrbitInTheFrictionRatioAlongHisClosedForm) {
   for (const double r : {0.6, 1.5}) {
-    const Equations equations(DenHartogOscillator{}, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
+    const Equations equations(DenHartogModel(), Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
     // x0, phi, d1 and beta, the static level tied to it.
     const std::vector<int> free = {0, Equations::kPhi, Equations::Duration(0), equations.Parameter(1)};
     const BasicOrbitSystem<DenHartogOscillator> system(equations, DenHartogVariables(DenHartogOrbit(r, 0.02), equations),

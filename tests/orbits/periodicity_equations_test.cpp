@@ -26,7 +26,7 @@ struct Case {
 class DenHartogPeriodicity : public testing::TestWithParam<Case> {};
 
 TEST_P(DenHartogPeriodicity, VanishOnDenHartogsOrbit) {
-  const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  const Equations equations(DenHartogModel(), Signature::Parse(GetParam().signature), GetParam().shooting);
   for (const auto& [r, beta] : {std::pair{0.6, 0.1}, std::pair{1.5, 0.25}, std::pair{2.5, 0.25}}) {
     Eigen::VectorXd residual;
     equations.Evaluate(DenHartogVariables(DenHartogOrbit(r, beta), equations), &residual, nullptr);
@@ -35,7 +35,7 @@ TEST_P(DenHartogPeriodicity, VanishOnDenHartogsOrbit) {
 }
 
 TEST_P(DenHartogPeriodicity, JacobianIsTheCentralDifferenceOfTheResidual) {
-  const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  const Equations equations(DenHartogModel(), Signature::Parse(GetParam().signature), GetParam().shooting);
   Eigen::VectorXd v = DenHartogVariables(DenHartogOrbit(0.8, 0.2), equations);
   v(0) += 0.03;  // off the orbit, where no column vanishes by symmetry
   v(Equations::kPhi) -= 0.02;
@@ -49,7 +49,7 @@ TEST_P(DenHartogPeriodicity, JacobianIsTheCentralDifferenceOfTheResidual) {
 }
 
 TEST_P(DenHartogPeriodicity, NewtonConvergesToDenHartogsOrbitFromAPerturbedGuess) {
-  const Equations equations(DenHartogOscillator{}, Signature::Parse(GetParam().signature), GetParam().shooting);
+  const Equations equations(DenHartogModel(), Signature::Parse(GetParam().signature), GetParam().shooting);
   std::vector<int> free(equations.Parameter(0));  // start, phase and durations; parameters held
   std::iota(free.begin(), free.end(), 0);
   for (const auto& [r, beta] : {std::pair{0.6, 0.1}, std::pair{1.5, 0.25}}) {
@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Formulations, DenHartogPeriodicity,
                          });
 
 TEST(DenHartogPeriodicity, NamesItsEquationsInTheModelsWords) {
-  const Equations equations(DenHartogOscillator{}, Signature::Parse("slip- slip+"), Shooting::kMultiple);
+  const Equations equations(DenHartogModel(), Signature::Parse("slip- slip+"), Shooting::kMultiple);
   const std::vector<std::string> expected = {"end:1", "continuity:2:x", "continuity:2:x'", "end:2", "periodicity:x",
                                              "period"};
   EXPECT_EQ(equations.EquationNames(), expected);

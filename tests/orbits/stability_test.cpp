@@ -126,11 +126,11 @@ TEST(ModelStability, DenHartogsMultipliersMultiplyToTheStopsAccelerationRatiosAn
     SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta);
     const DenHartogOrbit o(r, beta);
     const BasicOrbit<DenHartogOscillator> orbit = DenHartogOnSignature(o, "slip- slip+", beta);
-    const BasicStability<2> s = StabilityOf(DenHartogOscillator{}, orbit);
+    const BasicStability<2> s = StabilityOf(DenHartogModel(), orbit);
     const double ratio = (r * r * o.amplitude - beta) / (r * r * o.amplitude + beta);
     EXPECT_NEAR(s.monodromy.determinant(), ratio * ratio, 1e-12);
     EXPECT_NEAR(std::abs(s.multipliers[0] * s.multipliers[1]), ratio * ratio, 1e-12);
-    const Eigen::EigenSolver<Eigen::Matrix2d> fd(PeriodMapJacobian(DenHartogOscillator{}, orbit), false);
+    const Eigen::EigenSolver<Eigen::Matrix2d> fd(PeriodMapJacobian(DenHartogModel(), orbit), false);
     for (int k = 0; k < 2; ++k) {
       const double nearest = std::min(std::abs(fd.eigenvalues()(0) - s.multipliers[k]),
                                       std::abs(fd.eigenvalues()(1) - s.multipliers[k]));
@@ -138,7 +138,7 @@ TEST(ModelStability, DenHartogsMultipliersMultiplyToTheStopsAccelerationRatiosAn
     }
     EXPECT_EQ(s.stable, std::abs(s.multipliers[0]) < 1.0);
     // The half-period formulation gives the same period map.
-    const BasicStability<2> half = StabilityOf(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- / antisymmetric", beta));
+    const BasicStability<2> half = StabilityOf(DenHartogModel(), DenHartogOnSignature(o, "slip- / antisymmetric", beta));
     EXPECT_LT((half.monodromy - s.monodromy).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + s.monodromy.cwiseAbs().maxCoeff()));
   }
 }

@@ -50,12 +50,12 @@ TEST(VerifyOrbit, PassesDenHartogsOrbitOfTheTestModelAndFailsItWhereStaticFricti
     SCOPED_TRACE(testing::Message() << "r = " << r << ", beta = " << beta);
     const DenHartogOrbit o(r, beta);
     for (const char* signature : {"slip- / antisymmetric", "slip- slip+"}) {
-      const Verification v = VerifyOrbit(DenHartogOscillator{}, DenHartogOnSignature(o, signature, beta), exact, integrated);
+      const Verification v = VerifyOrbit(DenHartogModel(), DenHartogOnSignature(o, signature, beta), exact, integrated);
       EXPECT_TRUE(v.Passed()) << signature << "\n" << v.Report();
     }
     const double holding = r * r * o.amplitude;
     const Verification held =
-        VerifyOrbit(DenHartogOscillator{}, DenHartogOnSignature(o, "slip- slip+", 1.05 * holding), exact, integrated);
+        VerifyOrbit(DenHartogModel(), DenHartogOnSignature(o, "slip- slip+", 1.05 * holding), exact, integrated);
     EXPECT_FALSE(held.exact.sequence_matches) << held.Report();
     EXPECT_FALSE(held.odeint.sequence_matches) << held.Report();
     EXPECT_FALSE(held.Passed());

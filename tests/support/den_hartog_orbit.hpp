@@ -53,7 +53,7 @@ void ExpectDenHartogsOrbit(Simulate simulate, std::pair<double, double> r_beta, 
   const auto [r, beta] = r_beta;
   const DenHartogOrbit orbit(r, beta);
   ASSERT_GT(r * r * orbit.amplitude, beta) << "the orbit must not stick at its turning points";
-  const DenHartogOscillator model;
+  const DenHartogOscillator model = DenHartogModel();
   const DenHartogOscillator::Parameters p{r, beta, beta};
   ASSERT_FALSE(model.Validate(p));
   const double period = orbit.Period();

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/orbits/one_mass_orbits.hpp"
 
 namespace stickslip {
 
@@ -22,8 +23,9 @@ inline LinearOscillatorData DenHartogData() {
   return data;
 }
 
-struct DenHartogOscillator : LinearOscillator<1> {
-  DenHartogOscillator() : LinearOscillator<1>(DenHartogData()) {}
-};
+// The library's one-mass oscillator itself (not a type of its own), so that the tests use the orbit
+// layer the library compiles once for it (orbits/one_mass_orbits.hpp).
+using DenHartogOscillator = LinearOscillator<1>;
+inline DenHartogOscillator DenHartogModel() { return DenHartogOscillator(DenHartogData()); }
 
 }  // namespace stickslip

@@ -123,31 +123,7 @@ class BasicPeriodicityEquations {
   int Parameter(int k) const { return kStateSize + signature_.size() + k; }
 
   // Residual and exact Jacobian (EquationCount x VariableCount) from the flow derivatives.
-  void Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* residual, Eigen::MatrixXd* jacobian) const {
-    using namespace periodicity;
-    const Parameters p = ParametersOf(v);
-    residual->setZero(EquationCount());
-    if (jacobian) jacobian->setZero(EquationCount(), VariableCount());
-    EquationRows rows{residual, jacobian};
-    Variational<Model> w{StartState(v), Eigen::MatrixXd::Zero(kStateSize, VariableCount()), v(kPhi),
-                         Eigen::RowVectorXd::Zero(VariableCount()), jacobian != nullptr};
-    for (int j = 0; j < kStateSize - 1; ++j) w.dx(j, j) = 1.0;
-    if constexpr (Model::kRestVelocityParameter >= 0) w.dx(kStateSize - 1, Parameter(Model::kRestVelocityParameter)) = 1.0;
-    w.dphase(kPhi) = 1.0;
-    for (const SegmentSpec& spec : plan_) {
-      const int i = spec.listed;
-      if (shooting_ == Shooting::kMultiple && i > 0) RestartAt(v, FullCount() + kStateSize * (i - 1), w, rows);
-      Advance(spec.mode, v(Duration(i)), Duration(i), p, w);
-      for (EndCondition condition : EndConditionsOf(spec.end)) {
-        if (jacobian) {
-          rows.Add(Linearize(model_, condition, spec.mode, w.x, w.phase, p), w, Parameter(0));
-        } else {
-          (*residual)(rows.row++) = EndConditionValue(model_, condition, spec.mode, w.x, w.phase, p);
-        }
-      }
-    }
-    CloseOrbit(v, p, w, rows);
-  }
+  void Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* residual, Eigen::MatrixXd* jacobian) const;
 
   // The state at the origin: the first S - 1 components from the variables, the contact at rest
   // (its velocity the rest velocity: 0, or a belt's speed).
@@ -167,23 +143,7 @@ class BasicPeriodicityEquations {
   const Signature& signature() const { return signature_; }
   Shooting shooting() const { return shooting_; }
   // Names of the equations, for messages: "end:1", "periodicity:x1", "period", "continuity:2:x1".
-  std::vector<std::string> EquationNames() const {
-    const std::vector<std::string>& components = model_.Description().state_components;
-    std::vector<std::string> names;
-    for (const SegmentSpec& spec : plan_) {
-      const int i = spec.listed;
-      if (shooting_ == Shooting::kMultiple && i > 0) {
-        for (const std::string& c : components) names.push_back(fmt::format("continuity:{}:{}", i + 1, c));
-      }
-      for (EndCondition condition : EndConditionsOf(spec.end)) {
-        const bool abnormal = condition == EndCondition::kSlipAccelerationZero;
-        names.push_back(abnormal ? fmt::format("abnormal-{}':{}", components.back(), i + 1) : fmt::format("end:{}", i + 1));
-      }
-    }
-    for (int j = 0; j < kStateSize - 1; ++j) names.push_back(fmt::format("periodicity:{}", components[j]));
-    names.push_back(model_.Autonomous() ? "phase" : "period");
-    return names;
-  }
+  std::vector<std::string> EquationNames() const;
 
  private:
   int ShootingStates() const { return shooting_ == Shooting::kMultiple ? kStateSize * (signature_.size() - 1) : 0; }
@@ -265,5 +225,52 @@ class BasicPeriodicityEquations {
   Shooting shooting_;
   BasicFlowEvaluator<Model> flow_;
 };
+
+template <OscillatorModel Model>
+void BasicPeriodicityEquations<Model>::Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* residual,
+                                                Eigen::MatrixXd* jacobian) const {
+  using namespace periodicity;
+  const Parameters p = ParametersOf(v);
+  residual->setZero(EquationCount());
+  if (jacobian) jacobian->setZero(EquationCount(), VariableCount());
+  EquationRows rows{residual, jacobian};
+  Variational<Model> w{StartState(v), Eigen::MatrixXd::Zero(kStateSize, VariableCount()), v(kPhi),
+                       Eigen::RowVectorXd::Zero(VariableCount()), jacobian != nullptr};
+  for (int j = 0; j < kStateSize - 1; ++j) w.dx(j, j) = 1.0;
+  if constexpr (Model::kRestVelocityParameter >= 0) w.dx(kStateSize - 1, Parameter(Model::kRestVelocityParameter)) = 1.0;
+  w.dphase(kPhi) = 1.0;
+  for (const SegmentSpec& spec : plan_) {
+    const int i = spec.listed;
+    if (shooting_ == Shooting::kMultiple && i > 0) RestartAt(v, FullCount() + kStateSize * (i - 1), w, rows);
+    Advance(spec.mode, v(Duration(i)), Duration(i), p, w);
+    for (EndCondition condition : EndConditionsOf(spec.end)) {
+      if (jacobian) {
+        rows.Add(Linearize(model_, condition, spec.mode, w.x, w.phase, p), w, Parameter(0));
+      } else {
+        (*residual)(rows.row++) = EndConditionValue(model_, condition, spec.mode, w.x, w.phase, p);
+      }
+    }
+  }
+  CloseOrbit(v, p, w, rows);
+}
+
+template <OscillatorModel Model>
+std::vector<std::string> BasicPeriodicityEquations<Model>::EquationNames() const {
+  const std::vector<std::string>& components = model_.Description().state_components;
+  std::vector<std::string> names;
+  for (const SegmentSpec& spec : plan_) {
+    const int i = spec.listed;
+    if (shooting_ == Shooting::kMultiple && i > 0) {
+      for (const std::string& c : components) names.push_back(fmt::format("continuity:{}:{}", i + 1, c));
+    }
+    for (EndCondition condition : EndConditionsOf(spec.end)) {
+      const bool abnormal = condition == EndCondition::kSlipAccelerationZero;
+      names.push_back(abnormal ? fmt::format("abnormal-{}':{}", components.back(), i + 1) : fmt::format("end:{}", i + 1));
+    }
+  }
+  for (int j = 0; j < kStateSize - 1; ++j) names.push_back(fmt::format("periodicity:{}", components[j]));
+  names.push_back(model_.Autonomous() ? "phase" : "period");
+  return names;
+}
 
 }  // namespace stickslip
