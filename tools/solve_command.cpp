@@ -108,7 +108,7 @@ Command AddSolveCommand(CLI::App& app) {
   cmd->add_flag("--json", args->json,
                 "print one JSON object: signature, parameters, phi, x10, x20, v10, segments, unknowns (the "
                 "solved variables by name), tie_u_r, converged, residual_norm, margins, admissible, multipliers, "
-                "stable, measures (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks), "
+                "stable, measures (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks, friction-work, equivalent-damping), "
                 "verification");
   cmd->add_flag("--compare-paper", args->compare_paper,
                 "with --preset: print a Markdown table of the paper's printed values beside "

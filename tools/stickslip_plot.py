@@ -438,7 +438,9 @@ def quantity_label(name):
     words = {"omega": r"forcing frequency $\omega$", "chi": r"mass ratio $\chi$", "eta": r"stiffness ratio $\eta$",
              "u_s": r"sliding friction level $u_s$", "u_r": r"static friction level $u_r$", "phi": r"forcing phase $\varphi$",
              "x10": r"$x_1(0)$", "x20": r"$x_2(0)$", "v10": r"$\dot x_1(0)$", "stick-fraction": "fraction of the period stuck",
-             "stops": "stops per period", "sticks": "sticks per period", "stops_per_period": "stops per period",
+             "stops": "stops per period", "sticks": "sticks per period",
+             "friction-work": "energy dissipated by friction per period",
+             "equivalent-damping": "equivalent viscous damping", "stops_per_period": "stops per period",
              "sticks_per_period": "sticks per period", "period": "period (forcing periods)",
              "x1": r"$x_1$ on the section", "x2": r"$x_2$ on the section", "v1": r"$\dot x_1$ on the section",
              "v2": r"$\dot x_2$ on the section"}

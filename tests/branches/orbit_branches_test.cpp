@@ -2,9 +2,11 @@
 // special point is verified independently (the margin that changed sign is zero there, and the
 // exact simulator started from the located orbit shows the degeneracy), and the located
 // parameter values do not depend on the step size.
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +16,7 @@
 #include "stickslip/model/pascal_2014/events.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/stability.hpp"
 
@@ -202,6 +205,65 @@ TEST(ResonanceEnd, EndsTheBranchAtItsFirstPointPastMaxAmplitude) {
       ADD_FAILURE() << "max_amplitude = " << bad << " accepted";
     } catch (const InvalidInput& e) {
       EXPECT_EQ(e.field(), "max_amplitude");
+    }
+  }
+}
+
+// The non-sticking antisymmetric orbit of section 4.1's data (chi 0.3, eta 4, u_s 0.1, u_r 0.2996)
+// below omega1 (started at 0.6) or above it (at 0.71), continued in omega towards `direction`.
+OrbitContinuationSetup NonStickingOrbitOfSection41(bool above, int direction) {
+  const double omega = above ? 0.71 : 0.6;
+  // Guesses (x2's amplitude about 28 and 3.3: x10, x20, v10, phi), corrected at their omega.
+  OrbitContinuationSetup setup{.start = Orbit{Signature::Parse("slip- / antisymmetric"),
+                                              {0.3, 4.0, omega, 0.1, 0.2996},
+                                              above ? 17.22 : 1.560,
+                                              above ? 28.46 : 3.329,
+                                              above ? 0.134 : 0.152,
+                                              above ? 2.597 : 0.392,
+                                              {std::numbers::pi / omega}}};
+  setup.unknowns = UnknownsAtFixedParameters(setup.start.signature);
+  setup.options.direction = direction;
+  setup.options.lambda_min = 0.5;
+  setup.options.lambda_max = 0.9;
+  return setup;
+}
+
+// Undamped, an orbit that never sticks has no bounded amplitude at omega1 (eq. 56: the root of
+// s^4 - (1 + chi eta) s^2 + chi eta (1 - chi) = 0, here by the quadratic formula): the branch
+// approaching it ends within 1 % of it (resonance_approach) as a resonance, the last point the
+// first inside; a branch leaving it goes on; resonance_approach = 0 never ends one.
+TEST(ResonanceEnd, EndsANonStickingBranchThatApproachesAnUndampedSlipFrequency) {
+  const double chi = 0.3, eta = 4.0;
+  const double b = 1.0 + chi * eta, c = chi * eta * (1.0 - chi);
+  const double omega1 = std::sqrt(0.5 * (b - std::sqrt(b * b - 4.0 * c)));
+  ASSERT_NEAR(omega1, 0.70123, 1e-5);
+  for (const auto& [above, direction] : {std::pair{true, -1}, std::pair{false, 1}}) {
+    SCOPED_TRACE(above ? "from above" : "from below");
+    const OrbitBranch branch = ContinueOrbit(NonStickingOrbitOfSection41(above, direction));
+    ASSERT_EQ(branch.branch.end, BranchEnd::kStopped) << branch.branch.end_message;
+    EXPECT_TRUE(branch.branch.end_message.starts_with("resonance: at omega_1 = 0.70123")) << branch.branch.end_message;
+    const std::size_t n = branch.orbits.size();
+    ASSERT_GE(n, 2u);
+    auto distance = [&](std::size_t k) { return std::abs(branch.orbits[k].parameters.omega - omega1) / omega1; };
+    EXPECT_LE(distance(n - 1), 1e-2);
+    for (std::size_t k = 0; k + 1 < n; ++k) EXPECT_GT(distance(k), 1e-2) << k;
+    EXPECT_EQ(branch.branch.special_points.back().type, "EP");
+  }
+  // Leaving omega1 (from 0.71 upwards), the branch goes on past 0.72.
+  const OrbitBranch leaving = ContinueOrbit(NonStickingOrbitOfSection41(true, 1));
+  EXPECT_NE(leaving.branch.end, BranchEnd::kStopped) << leaving.branch.end_message;
+  EXPECT_GT(leaving.orbits.back().parameters.omega, 0.72);
+  OrbitContinuationSetup never = NonStickingOrbitOfSection41(true, -1);
+  never.resonance_approach = 0.0;
+  never.options.max_points = 40;
+  EXPECT_EQ(ContinueOrbit(never).branch.end, BranchEnd::kMaxPoints);
+  for (double bad : {-0.1, 1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    never.resonance_approach = bad;
+    try {
+      ContinueOrbit(never);
+      ADD_FAILURE() << "resonance_approach = " << bad << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), "resonance_approach");
     }
   }
 }

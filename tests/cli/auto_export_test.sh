@@ -32,8 +32,9 @@ for k, row in enumerate(labelled, 1):
     assert point["TY name"] == codes.get(kind, "UZ"), (k, point["TY name"], kind)
     assert abs(point[parameter] - float(row[parameter])) <= 1e-9 * abs(float(row[parameter]))
     assert (point["PT"] < 0) == (row["stable"] == "1"), (k, point["PT"], row["stable"])
-measures = ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks"]
-assert b.coordnames[:7] == [parameter] + measures, b.coordnames
+measures = ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks",
+            "friction-work", "equivalent-damping"]
+assert b.coordnames[:9] == [parameter] + measures, b.coordnames
 for n, row in enumerate(rows):
     for name in measures:
         expected = float(row[name])

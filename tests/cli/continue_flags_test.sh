@@ -100,19 +100,28 @@ expect_rejected "set" "${base[@]}" --set u_r=0.5 --set u_r=0.6 --output bad
 expect_rejected "guess" "${base[@]}" --guess d1=3 --guess d1=3.1 --output bad
 for bad in 0 -1 nan inf 1e309; do expect_rejected "max-amplitude" "${base[@]}" --max-amplitude "$bad" --output bad; done
 
-# A resonance: the §4.1 orbit continued up in omega towards omega1 = 0.7012302 ends where its
-# amplitude passes --max-amplitude (termination 'stopped'; every point before within it). Started
-# above the bound, it ends at its start and says so.
+# A resonance: the §4.1 orbit (never sticking) continued up in omega towards omega1 = 0.7012302
+# ends where its amplitude passes --max-amplitude (termination 'stopped'; every point before within
+# it), or else where it has come within 1 % of omega1. Started above the bound, it ends at its start
+# and says so.
 p41=(continue --preset paper-4.1 --parameter omega --range 0.3,0.8 --ds 0.01 --ds-max 1 --results "$work")
-"$bin" "${p41[@]}" --max-amplitude 200 --output res > "$work/res.txt"
-grep -q "stopped: resonance: the amplitude max(|x1|, |x2|) = .* passed max_amplitude = 200 at omega = 0.69" "$work/res.txt" ||
+"$bin" "${p41[@]}" --max-amplitude 20 --output res > "$work/res.txt"
+grep -q "stopped: resonance: the amplitude max(|x1|, |x2|) = .* passed max_amplitude = 20 at omega = 0.6" "$work/res.txt" ||
   { cat "$work/res.txt"; exit 1; }
 /usr/bin/python3 - "$work/res/branch.csv" <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 amplitude = [max(float(r["amplitude:x1"]), float(r["amplitude:x2"])) for r in rows]
-assert amplitude[-1] > 200 and max(amplitude[:-1]) <= 200, amplitude[-3:]
-assert 0.69 < float(rows[-1]["omega"]) < 0.7012302, rows[-1]["omega"]
+assert amplitude[-1] > 20 and max(amplitude[:-1]) <= 20, amplitude[-3:]
+assert 0.65 < float(rows[-1]["omega"]) < 0.99 * 0.7012302, rows[-1]["omega"]
+PY
+"$bin" "${p41[@]}" --output res-near > "$work/res-near.txt"
+grep -q "stopped: resonance: at omega_1 = 0.7012301669, a natural frequency of the undamped slip" "$work/res-near.txt" ||
+  { cat "$work/res-near.txt"; exit 1; }
+/usr/bin/python3 - "$work/res-near/branch.csv" <<'PY'
+import csv, sys
+omega = [float(r["omega"]) for r in csv.DictReader(open(sys.argv[1]))]
+assert 0.99 * 0.7012302 <= omega[-1] < 0.7012302 and max(omega[:-1]) < 0.99 * 0.7012302, omega[-3:]
 PY
 "$bin" "${p41[@]}" --max-amplitude 3 --output res-start > "$work/res-start.txt"
 grep -q "^res-start: 1 points in .*; stopped: resonance: the amplitude .* of the start is above max_amplitude = 3" "$work/res-start.txt" ||

@@ -43,8 +43,8 @@ sed "s|^output = .*|output = \"restart-check\"|" "$root/continuation-scripts/pap
 
 # A row one field short (the last one cut off).
 damage branch.csv 'lines[5] = lines[5].rsplit(",", 1)[0]'
-expect_rejected "results/$run/branch.csv:6: the row has 53 fields, the header 54" export --auto "results/$run"
-expect_rejected "results/$run/branch.csv:6: the row has 53 fields" check --results results "$root/continuation-scripts/$run.toml"
+expect_rejected "results/$run/branch.csv:6: the row has 55 fields, the header 56" export --auto "results/$run"
+expect_rejected "results/$run/branch.csv:6: the row has 55 fields" check --results results "$root/continuation-scripts/$run.toml"
 
 # A column missing from special-points.csv (from the header and every row).
 damage special-points.csv 'k = lines[0].split(",").index("x10"); lines[:] = [",".join(f for i, f in enumerate(l.split(",")) if i != k) for l in lines]'

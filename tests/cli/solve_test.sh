@@ -25,7 +25,8 @@ assert o["verification"]["passed"] is True
 # The orbit's measures by the branch columns' names; the counts of section 5.1 per period: three
 # slips ending at stops, one stick.
 m = o["measures"]
-assert list(m) == ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks"], m
+assert list(m) == ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks",
+                   "friction-work", "equivalent-damping"], m
 assert m["stops"] == 3 and m["sticks"] == 1 and isinstance(m["stops"], int)
 assert abs(m["stick-fraction"] - o["segments"][2]["duration"] * o["parameters"]["omega"] / (2 * 3.141592653589793)) < 1e-15
 assert 0 < m["peak-to-peak:x2"] <= 2 * m["amplitude:x2"]

@@ -65,5 +65,18 @@ TEST(CompareWithStored, ReportsAMeasureBeyondTheSolutionToleranceAndACountThatDi
   EXPECT_EQ(found, (std::vector<std::string>{"LP4 amplitude:x2", "LP4 sticks"}));
 }
 
+// A run stored before the friction measures existed has them nan: they are not compared, the
+// other measures still are.
+TEST(CompareWithStored, LeavesOutTheMeasuresTheStoredFilesLack) {
+  StoredRun stored = ReadRunFiles(kRun);
+  const StoredRun fresh = stored;
+  stored.absent_measures = {"friction-work", "equivalent-damping"};
+  for (StoredSpecialPoint& s : stored.special_points) s.point.measures.friction_work = std::nan("");
+  for (StoredPoint& p : stored.branch) p.measures.equivalent_damping = std::nan("");
+  EXPECT_TRUE(CompareWithStored(fresh, stored).empty());
+  stored.absent_measures.clear();
+  EXPECT_FALSE(CompareWithStored(fresh, stored).empty());
+}
+
 }  // namespace
 }  // namespace stickslip

@@ -75,6 +75,8 @@ TEST(ResultFiles, EveryStoredRowCarriesTheMeasuresOfItsOwnOrbit) {
       EXPECT_EQ(p->measures.stick_fraction, m.stick_fraction) << p->pt;
       EXPECT_EQ(p->measures.stops, m.stops) << p->pt;
       EXPECT_EQ(p->measures.sticks, m.sticks) << p->pt;
+      EXPECT_EQ(p->measures.friction_work, m.friction_work) << p->pt;
+      EXPECT_EQ(p->measures.equivalent_damping, m.equivalent_damping) << p->pt;
     }
   }
 }
@@ -224,7 +226,7 @@ std::string Join(const std::vector<std::string>& fields) {
 TEST(ResultFiles, RowShorterThanItsHeaderNamesFileAndLine) {
   RunFiles files = StoredTexts(kRun);
   files.branch_csv = EditLine(files.branch_csv, 3, [](std::string l) { return l.substr(0, l.rfind(',')); });
-  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 53 fields, the header 54: valid one field per column");
+  EXPECT_EQ(ParseError(files), "stored/branch.csv:3: the row has 55 fields, the header 56: valid one field per column");
 }
 
 TEST(ResultFiles, MissingColumnNamesFileAndColumn) {
@@ -253,6 +255,32 @@ TEST(ResultFiles, FileWithoutTheMeasureColumnsNamesTheFirstMissing) {
   };
   for (int line = 1; line <= 107; ++line) files.branch_csv = EditLine(files.branch_csv, line, drop);
   EXPECT_EQ(ParseError(files), "stored/branch.csv:1: column 'amplitude:x1' is missing");
+}
+
+// A run stored before friction-work and equivalent-damping existed reads, with them nan, and says
+// which it lacks (`check` leaves them out).
+TEST(ResultFiles, FileWithoutTheFrictionMeasuresReadsThemAsNaN) {
+  RunFiles files = StoredTexts(kRun);
+  const std::vector<std::string> header = Fields(files.branch_csv.substr(0, files.branch_csv.find('\n')));
+  const auto first = std::find(header.begin(), header.end(), "friction-work") - header.begin();
+  ASSERT_EQ(header[first + 1], "equivalent-damping");
+  auto drop = [&](const std::string& l) {
+    std::vector<std::string> fields = Fields(l);
+    fields.erase(fields.begin() + first, fields.begin() + first + 2);
+    return Join(fields);
+  };
+  const StoredRun whole = ParseRunFiles(files, "stored");
+  for (int line = 1; line <= 107; ++line) files.branch_csv = EditLine(files.branch_csv, line, drop);
+  for (int line = 1; line <= 8; ++line) files.special_points_csv = EditLine(files.special_points_csv, line, drop);
+  const StoredRun old = ParseRunFiles(files, "stored");
+  EXPECT_EQ(old.absent_measures, (std::vector<std::string>{"friction-work", "equivalent-damping"}));
+  ASSERT_EQ(old.branch.size(), whole.branch.size());
+  for (std::size_t i = 0; i < old.branch.size(); ++i) {
+    EXPECT_TRUE(std::isnan(old.branch[i].measures.friction_work));
+    EXPECT_TRUE(std::isnan(old.branch[i].measures.equivalent_damping));
+    EXPECT_EQ(old.branch[i].measures.amplitude_x2, whole.branch[i].measures.amplitude_x2);
+  }
+  EXPECT_TRUE(std::isnan(old.special_points.back().point.measures.friction_work));
 }
 
 TEST(ResultFiles, CountThatIsNotAWholeNumberNamesLineAndColumn) {

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <random>
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include "stickslip/model/exact_simulator.hpp"
@@ -132,6 +133,22 @@ INSTANTIATE_TEST_SUITE_P(Damping, RandomThreeMassModels, testing::Bool(),
 // Every derivative of a flow against central differences of the flow, in each mode, on a random
 // three-mass model, away from rest so that no term vanishes by symmetry; and the transition
 // matrix (the flow without forcing or friction) against the flow's derivative in its start.
+// Undamped, a slip's natural frequencies are sqrt of the generalised eigenvalues of K x = w^2 M x
+// (Eigen's self-adjoint solver: independent of the model's first-order bases); damped, none (an
+// orbit's amplitude stays bounded there).
+TEST(LinearOscillator, UndampedSlipFrequenciesAreTheGeneralisedEigenvaluesOfStiffnessAndMass) {
+  std::mt19937 random(17);
+  for (int trial = 0; trial < 5; ++trial) {
+    const LinearOscillatorData data = RandomThreeMasses(random);
+    const LinearOscillator<3> model(data);
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(data.stiffness, data.mass);
+    const std::vector<double> omega = model.UndampedSlipFrequencies({});
+    ASSERT_EQ(omega.size(), 3u);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(omega[k], std::sqrt(modes.eigenvalues()(k)), 1e-12 * omega[k]) << k;
+    EXPECT_TRUE(LinearOscillator<3>(RandomThreeMasses(random, true)).UndampedSlipFrequencies({}).empty());
+  }
+}
+
 TEST(LinearOscillator, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
   std::mt19937 random(7);
   const LinearOscillator<3> model(RandomThreeMasses(random, true));

@@ -21,7 +21,6 @@
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
-#include "stickslip/orbits/one_mass_orbits.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"

@@ -104,6 +104,39 @@ TEST_P(PaperOrbitMeasures, StickFractionIsTheSimulatedTimeAtRestOverThePeriod) {
   EXPECT_NEAR(Measure(o).stick_fraction, at_rest / o.Period(), 1e-10);
 }
 
+// Over a period of an undamped orbit the forcing's work on mass 2 is what friction dissipates:
+// int cos(omega t + phi) x2' dt = friction-work (both forces act on x2, in the same scaling). The
+// integral by the trapezoidal rule on the densely simulated period (x2' is continuous, its kinks
+// at the stops cost O(h^2)). The equivalent damping c dissipates as much on X cos(w t):
+// int c (X w sin(w t))^2 dt over the period = W.
+TEST_P(PaperOrbitMeasures, FrictionWorkIsTheForcingsWorkOverTheSimulatedPeriod) {
+  const Orbit o = PaperOrbit();
+  const OrbitMeasures m = Measure(o);
+  const double period = o.Period();
+  constexpr std::size_t kSamples = 200000;
+  const SimulationResult r = SimulateOnePeriod(o, kSamples);
+  ASSERT_TRUE(r.Completed()) << r.message;
+  ASSERT_GT(r.samples.size(), kSamples);
+  double work = 0.0, t = 0.0, power = std::cos(o.phi) * r.samples.front().state(3);
+  for (std::size_t i = 1; i <= kSamples; ++i) {
+    const double next = std::cos(o.parameters.omega * r.samples[i].t + o.phi) * r.samples[i].state(3);
+    work += 0.5 * (power + next) * (r.samples[i].t - t);
+    t = r.samples[i].t;
+    power = next;
+  }
+  ASSERT_NEAR(t, period, 1e-9 * period);
+  EXPECT_GT(m.friction_work, 0.0);
+  EXPECT_NEAR(m.friction_work, work, 1e-7 * m.friction_work);
+  const double x = 0.5 * m.peak_to_peak_x2, w = 2.0 * kPi / period;
+  constexpr int kIntervals = 2000;
+  double viscous = 0.0;
+  for (int i = 0; i < kIntervals; ++i) {
+    const double v = x * w * std::sin(w * period * (i + 0.5) / kIntervals);
+    viscous += m.equivalent_damping * v * v * period / kIntervals;
+  }
+  EXPECT_NEAR(viscous, m.friction_work, 1e-10 * m.friction_work);
+}
+
 INSTANTIATE_TEST_SUITE_P(FivePaperOrbits, PaperOrbitMeasures,
                          ::testing::Values(std::pair{"paper-4.1", false}, std::pair{"paper-4.2", false},
                                            std::pair{"paper-5.1", false}, std::pair{"paper-5.2", true},

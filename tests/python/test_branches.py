@@ -59,9 +59,10 @@ def test_columns_are_the_files_numbers_and_special_points_are_labelled():
     assert abs(branch["x10"][-1] - x[0, 0]) < 1e-14
     # The orbit's measures, after `admissible`: the counts as integers, the amplitudes bounding the
     # sampled orbit of each row.
-    measures = ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks"]
+    measures = ["amplitude:x1", "amplitude:x2", "peak-to-peak:x2", "stick-fraction", "stops", "sticks",
+                "friction-work", "equivalent-damping"]
     at = branch.columns.index("admissible")
-    assert branch.columns[at + 1:at + 7] == measures
+    assert branch.columns[at + 1:at + 9] == measures
     assert branch["stops"].dtype.kind == "i" and set(branch["stops"]) == {3} and set(branch["sticks"]) == {1}
     for i in (0, len(branch) // 2, len(branch) - 1):
         _, x = branch.sample(i, 2000)
@@ -105,16 +106,20 @@ def test_a_stepped_continuation_gives_the_branch_of_one_run():
 def test_a_resonance_ends_the_branch_called_whole_or_stepped_as_the_command_line(tmp_path):
     # The §4.1 orbit continued up towards omega1 = 0.7012302: it ends at its first point whose
     # amplitude passes max_amplitude, in one call, stepped by hand, and as `stickslip continue`.
-    keywords = dict(preset="paper-4.1", ds=0.01, ds_max=1.0, max_amplitude=200.0, output="res")
+    keywords = dict(preset="paper-4.1", ds=0.01, ds_max=1.0, max_amplitude=20.0, output="res")
     whole = stickslip.continue_orbit("omega", (0.3, 0.8), **keywords)
-    assert whole.termination == "stopped" and whole.summary["message"].startswith("resonance:")
+    assert whole.termination == "stopped" and whole.summary["message"].startswith("resonance: the amplitude")
     amplitude = np.maximum(whole["amplitude:x1"], whole["amplitude:x2"])
-    assert amplitude[-1] > 200.0 and amplitude[:-1].max() <= 200.0
+    assert amplitude[-1] > 20.0 and amplitude[:-1].max() <= 20.0
+    # Without the bound, it ends within 1 % of omega1, which it approaches never sticking.
+    near = stickslip.continue_orbit("omega", (0.3, 0.8), preset="paper-4.1", ds=0.01, ds_max=1.0)
+    assert near.summary["message"].startswith("resonance: at omega_1 = 0.7012301669")
+    assert 0.99 * 0.7012302 <= near["omega"][-1] < 0.7012302
     cont = stickslip.Continuation("omega", (0.3, 0.8), **keywords)
     assert len(list(cont)) == len(whole) and cont.end == "stopped"
     assert cont.branch().files() == whole.files()
     done = cli("continue", "--preset", "paper-4.1", "--parameter", "omega", "--range", "0.3,0.8", "--ds", "0.01",
-               "--ds-max", "1", "--max-amplitude", "200", "--output", "res", "--results", tmp_path)
+               "--ds-max", "1", "--max-amplitude", "20", "--output", "res", "--results", tmp_path)
     assert done.returncode == 0, done.stderr
     assert {k: v.encode() for k, v in whole.files().items()} == read_files(tmp_path / "res")
     for bad in (0.0, -1.0, float("nan"), float("inf")):

@@ -9,7 +9,6 @@
 #include <Eigen/Core>
 
 #include "stickslip/model/linear_oscillator.hpp"
-#include "stickslip/orbits/one_mass_orbits.hpp"
 
 namespace stickslip {
 
@@ -23,8 +22,7 @@ inline LinearOscillatorData DenHartogData() {
   return data;
 }
 
-// The library's one-mass oscillator itself (not a type of its own), so that the tests use the orbit
-// layer the library compiles once for it (orbits/one_mass_orbits.hpp).
+// The library's one-mass oscillator itself, not a type of its own.
 using DenHartogOscillator = LinearOscillator<1>;
 inline DenHartogOscillator DenHartogModel() { return DenHartogOscillator(DenHartogData()); }
 

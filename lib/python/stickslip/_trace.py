@@ -73,8 +73,9 @@ class Trace(_Table):
     def to_pandas(self):
         """Every point of every branch as a pandas DataFrame, one row per point: the branch's name
         (branch), its orbit type (signature) and every column of its branch.csv, measures included
-        (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks, margins,
-        multipliers; a column that a branch lacks, such as a duration it has not, is NaN there).
+        (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks, friction-work,
+        equivalent-damping), margins, multipliers; a column that a branch lacks, such as a duration
+        it has not, is NaN there).
         Needs pandas (python3-pandas)."""
         try:
             import pandas

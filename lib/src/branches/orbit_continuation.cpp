@@ -11,6 +11,7 @@
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/pascal_2014.hpp"
+#include "stickslip/orbits/slip_resonance.hpp"
 
 
 namespace stickslip {
@@ -68,6 +69,9 @@ const NonlinearSystem& OrbitContinuationProblem::Continued() const {
 
 OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
   if (!(setup.max_amplitude > 0.0)) throw InvalidInput("max_amplitude", setup.max_amplitude, "max_amplitude > 0");
+  if (!(setup.resonance_approach >= 0.0 && setup.resonance_approach < 1.0)) {
+    throw InvalidInput("resonance_approach", setup.resonance_approach, "0 <= resonance_approach < 1");
+  }
   const Signature& signature = setup.start.signature;
   const int n = signature.size();
   const std::vector<int> free = FreeIndices(signature, setup.unknowns);
@@ -129,6 +133,7 @@ OrbitContinuation::OrbitContinuation(const OrbitContinuationSetup& setup)
       continuation_(std::make_unique<Continuation>(problem_.Continued(), problem_.monitor.get(), problem_.options,
                                                    problem_.start)),
       max_amplitude_(setup.max_amplitude),
+      resonance_approach_(setup.resonance_approach),
       parameter_(setup.parameter) {
   auto recorded = [&](const char* name) {
     for (const PointColumn& c : problem_.monitor->Columns()) {
@@ -144,18 +149,43 @@ std::optional<BranchStop> OrbitContinuation::Resonance() {
   const Branch& branch = continuation_->branch();
   for (; checked_ < branch.points.size(); ++checked_) {
     const BranchPoint& point = branch.points[checked_];
-    // max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan (no bound) stops too.
-    const double x1 = point.recorded(amplitude_x1_), x2 = point.recorded(amplitude_x2_);
-    const double amplitude = std::isnan(x1) || std::isnan(x2) ? std::numeric_limits<double>::quiet_NaN() : std::max(x1, x2);
-    if (amplitude <= max_amplitude_) continue;
     const bool start = checked_ == 0;
-    return BranchStop{static_cast<int>(checked_++), BranchEnd::kStopped,
-                      fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} {} max_amplitude = {:g} at "
-                                  "{} = {:.10g}{}",
-                                  amplitude, start ? "of the start is above" : "passed", max_amplitude_, parameter_,
-                                  point.lambda, start ? " (a larger max_amplitude continues it)" : "")};
+    std::optional<BranchStop> stop = AmplitudeBound(point, start);
+    if (!stop) stop = SlipResonanceApproached(point, start);
+    if (stop) {
+      stop->point = static_cast<int>(checked_++);
+      return stop;
+    }
   }
   return std::nullopt;
+}
+
+std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& point, bool start) const {
+  // max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan (no bound) stops too.
+  const double x1 = point.recorded(amplitude_x1_), x2 = point.recorded(amplitude_x2_);
+  const double amplitude = std::isnan(x1) || std::isnan(x2) ? std::numeric_limits<double>::quiet_NaN() : std::max(x1, x2);
+  if (amplitude <= max_amplitude_) return std::nullopt;
+  return BranchStop{0, BranchEnd::kStopped,
+                    fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} {} max_amplitude = {:g} at "
+                                "{} = {:.10g}{}",
+                                amplitude, start ? "of the start is above" : "passed", max_amplitude_, parameter_,
+                                point.lambda, start ? " (a larger max_amplitude continues it)" : "")};
+}
+
+// Approaching: nearer than at the point before (the start only sets the distance, so that a
+// branch starting near a resonance may leave it).
+std::optional<BranchStop> OrbitContinuation::SlipResonanceApproached(const BranchPoint& point, bool start) {
+  const std::optional<SlipResonance> near =
+      NearestSlipResonance(problem_.system->ToOrbit(point.u.head(problem_.system->UnknownCount())));
+  const std::optional<double> before = start ? std::nullopt : last_distance_;
+  last_distance_ = near ? std::optional<double>(near->distance) : std::nullopt;
+  if (!near || !before || !(near->distance < *before && near->distance <= resonance_approach_)) return std::nullopt;
+  return BranchStop{0, BranchEnd::kStopped,
+                    fmt::format("resonance: at omega_{} = {:.10g}, a natural frequency of the undamped slip, which the "
+                                "orbit, never sticking, approached to {:.3g} (relative; resonance_approach = {:g}) at "
+                                "{} = {:.10g}, its amplitude growing without bound",
+                                near->index, near->frequency, near->distance, resonance_approach_, parameter_,
+                                point.lambda)};
 }
 
 bool OrbitContinuation::Step() {

@@ -54,8 +54,10 @@ std::string Text(int count) { return std::to_string(count); }
 std::string Text(bool flag) { return flag ? "1" : "0"; }
 
 // Appends the differences of one point, `where` naming it (its label, or "row N").
+// `absent`: the measures the stored files lack (StoredRun::absent_measures), not compared.
 void ComparePoints(const std::string& file, const std::string& where, const StoredPoint& r, const StoredPoint& s,
-                   const std::string& parameter, const CheckTolerances& tol, std::vector<Difference>* out) {
+                   const std::string& parameter, const CheckTolerances& tol, const std::vector<std::string>& absent,
+                   std::vector<Difference>* out) {
   const std::vector<std::complex<double>> fresh_mu = Matched(r.multipliers, s.multipliers);
   for (std::size_t k = 0; k < fresh_mu.size(); ++k) {
     const std::complex<double> mu = r.multipliers[k];
@@ -79,6 +81,7 @@ void ComparePoints(const std::string& file, const std::string& where, const Stor
   orbit_columns::ForEachMeasure(s.measures, [&](const char* column, const auto& y) { fresh_measures.emplace_back(column, y); });
   orbit_columns::ForEachMeasure(r.measures, [&, k = 0](const char* column, const auto& x) mutable {
     const double y = fresh_measures[k++].second;
+    if (std::find(absent.begin(), absent.end(), column) != absent.end()) return;
     if (!(Distance(x, y) <= tol.solution * std::max(1.0, std::abs(static_cast<double>(x))))) {
       out->push_back({file, where, column, Text(x), Text(y)});
     }
@@ -126,7 +129,7 @@ std::vector<Difference> CompareWithStored(const StoredRun& fresh, const StoredRu
     const StoredSpecialPoint& r = stored.special_points[i];
     const StoredSpecialPoint& s = fresh.special_points[i];
     const std::string where = r.point.label.empty() ? fmt::format("row {}", i + 1) : r.point.label;
-    ComparePoints(special_file, where, r.point, s.point, parameter, tolerances, &out);
+    ComparePoints(special_file, where, r.point, s.point, parameter, tolerances, stored.absent_measures, &out);
     if (r.type != s.type) out.push_back({special_file, where, "type", r.type, s.type});
     if (r.test_function != s.test_function) {
       out.push_back({special_file, where, "test_function", r.test_function, s.test_function});
@@ -137,7 +140,7 @@ std::vector<Difference> CompareWithStored(const StoredRun& fresh, const StoredRu
   const std::vector<const StoredPoint*> a = Labelled(stored.branch);
   const std::vector<const StoredPoint*> b = Labelled(fresh.branch);
   for (std::size_t i = 0; i < count(branch_file, a.size(), b.size()); ++i) {
-    ComparePoints(branch_file, a[i]->label, *a[i], *b[i], parameter, tolerances, &out);
+    ComparePoints(branch_file, a[i]->label, *a[i], *b[i], parameter, tolerances, stored.absent_measures, &out);
   }
   return out;
 }

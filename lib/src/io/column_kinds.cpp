@@ -59,6 +59,13 @@ ValidValues Fraction(bool admissible) {
 
 ValidValues NonNegative() { return Range(0.0, std::numeric_limits<double>::infinity(), "a finite number >= 0"); }
 
+ValidValues EquivalentDamping() {
+  ValidValues valid = Finite();
+  valid.nan = true;
+  valid.text = "a finite number or nan (no motion)";
+  return valid;
+}
+
 ValidValues Margin() {
   return {.inf = true, .nan = true, .text = "a finite number, inf (a margin that does not apply) or nan (not computed)"};
 }

@@ -159,6 +159,9 @@ Summary ParseSummary(const std::string& text, const fs::path& file) {
   return summary;
 }
 
+// The column of a measure a file written before it existed lacks (orbit_columns::AddedLater).
+constexpr int kAbsent = -1;
+
 // Where each field of a StoredPoint is in a table.
 struct ColumnIndices {
   int pt = 0;
@@ -168,7 +171,7 @@ struct ColumnIndices {
   std::vector<std::pair<int, int>> multipliers;  // (real part, imaginary part)
   std::array<int, kStabilityColumns.size()> stability{};
   int admissible = 0;
-  std::vector<int> measures;  // in ForEachMeasure's order
+  std::vector<int> measures;  // in ForEachMeasure's order; kAbsent for a measure added later
   std::array<int, kStepColumns.size()> step{};
   std::array<int, kSpecialColumns.size()> special{};  // special-points.csv only
 };
@@ -194,7 +197,9 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   for (std::size_t k = 0; k < kStabilityColumns.size(); ++k) c.stability[k] = column(kStabilityColumns[k]);
   c.admissible = column(orbit_columns::kAdmissible);
   const OrbitMeasures measures{};
-  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) { c.measures.push_back(column(name)); });
+  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) {
+    c.measures.push_back(orbit_columns::AddedLater(name) && table.Find(name) < 0 ? kAbsent : column(name));
+  });
   for (std::size_t k = 0; k < kStepColumns.size(); ++k) c.step[k] = column(kStepColumns[k]);
   for (std::size_t k = 0; special_points && k < kSpecialColumns.size(); ++k) c.special[k] = column(kSpecialColumns[k]);
   for (std::size_t k = 0; k < used.size(); ++k) {
@@ -204,13 +209,22 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
 }
 
 // A measure from its column (column_kinds.hpp): a count as a whole number >= 0, the stick
-// fraction 0 to 1 where admissible, any other as a number >= 0.
+// fraction 0 to 1 where admissible, the friction work a finite number and the equivalent damping
+// one or nan (both have the kinetic level's sign), any other a number >= 0; nan from a column the
+// file lacks (a measure added later).
 void ReadField(const CsvTable& t, int row, int column, bool, int* count) {
   *count = t.Integer(row, column, 0, std::numeric_limits<int>::max());
 }
 void ReadField(const CsvTable& t, int row, int column, bool admissible, double* value) {
-  const bool fraction = t.header()[column] == orbit_columns::kStickFraction;
-  *value = t.Value(row, column, fraction ? detail::Fraction(admissible) : detail::NonNegative());
+  if (column == kAbsent) {
+    *value = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  const std::string& name = t.header()[column];
+  *value = t.Value(row, column, name == orbit_columns::kStickFraction       ? detail::Fraction(admissible)
+                                : name == orbit_columns::kFrictionWork      ? detail::Finite()
+                                : name == orbit_columns::kEquivalentDamping ? detail::EquivalentDamping()
+                                                                            : detail::NonNegative());
 }
 
 // The row's orbit, each variable by its kind: the parameters in their ranges on a branch, the
@@ -346,6 +360,9 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   const CsvTable branch(files.branch_csv, directory / kBranchFile);
   const ColumnIndices branch_columns = FindColumns(branch, signature, false);
   for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, signature));
+  orbit_columns::ForEachMeasure(run.branch.front().measures, [&, k = 0](const char* name, const auto&) mutable {
+    if (branch_columns.measures[k++] == kAbsent) run.absent_measures.emplace_back(name);
+  });
   if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
 
   const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);

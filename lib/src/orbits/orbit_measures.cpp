@@ -11,6 +11,8 @@ OrbitMeasures Measure(const Orbit& orbit) {
   m.stick_fraction = basic.stick_fraction;
   m.stops = basic.stops;
   m.sticks = basic.sticks;
+  m.friction_work = basic.friction_work;
+  m.equivalent_damping = basic.equivalent_damping;
   return m;
 }
 

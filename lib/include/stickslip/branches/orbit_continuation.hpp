@@ -22,6 +22,10 @@ namespace stickslip {
 // past which a branch ends at a resonance of the forcing: as omega nears a natural frequency (eq.
 // 56) the forced response grows without bound, and no parameter range ends the branch first.
 inline constexpr double kDefaultMaxAmplitude = 1e3;
+// How near (relative) a branch of orbits that never stick may come to a natural frequency of an
+// undamped slip (orbits/slip_resonance.hpp) while approaching it: there its amplitude already
+// grows as 1/|omega - omega_k|, and the continuation, its step bounded, would creep on towards it.
+inline constexpr double kDefaultResonanceApproach = 1e-2;
 
 struct OrbitContinuationSetup {
   Orbit start;                 // the start orbit, or a guess of it (corrected at its parameter)
@@ -41,6 +45,10 @@ struct OrbitContinuationSetup {
   // A resonance ends the branch at its first point whose amplitude passes this (> 0; infinity:
   // never): BranchEnd::kStopped, the message beginning "resonance:".
   double max_amplitude = kDefaultMaxAmplitude;
+  // A resonance ends the branch too at its first point that, never sticking, approached an undamped
+  // slip's natural frequency to within this (relative, 0 to 1; 0: never): the message beginning
+  // "resonance: at omega_k".
+  double resonance_approach = kDefaultResonanceApproach;
 };
 
 struct OrbitBranch {
@@ -50,9 +58,10 @@ struct OrbitBranch {
   std::vector<PointColumn> columns;  // the monitor's, in the order of the result files
 };
 
-// Throws InvalidInput naming "free", "fix", "unknowns", "parameter" or "max_amplitude" if the
-// choice of unknowns is not square, the parameter is not a held variable or max_amplitude is not
-// > 0. A branch ends as the engine ends it, or at a resonance (max_amplitude). `observer`, if
+// Throws InvalidInput naming "free", "fix", "unknowns", "parameter", "max_amplitude" or
+// "resonance_approach" if the choice of unknowns is not square, the parameter is not a held
+// variable, max_amplitude is not > 0 or resonance_approach not in [0, 1). A branch ends as the
+// engine ends it, or at a resonance (max_amplitude, resonance_approach). `observer`, if
 // given, sees the branch after every step (a progress display, say).
 OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
                           const std::function<void(const Branch&)>& observer = {});
@@ -85,7 +94,9 @@ Branch EndedAt(Branch branch, const BranchStop& stop);
 
 // A branch of periodic orbits stepped by hand, ending as ContinueOrbit's does: as the engine ends
 // it, or at a resonance (BranchEnd::kStopped at the first point whose amplitude passed
-// setup.max_amplitude, or is nan: the extrema's search was cut short, no bound).
+// setup.max_amplitude, or is nan: the extrema's search was cut short, no bound; or that, never
+// sticking, came nearer an undamped slip's natural frequency than the point before it and to
+// within setup.resonance_approach).
 //   OrbitContinuation c(setup);
 //   while (c.Step()) show(c.branch());
 //   OrbitBranch b = c.Result();
@@ -98,12 +109,16 @@ class OrbitContinuation {
   OrbitBranch Result() const { return ToOrbitBranch(problem_, branch()); }
 
  private:
-  // The first point added since the last call whose amplitude is past the bound, as a stop.
+  // The first point added since the last call at a resonance, as a stop.
   std::optional<BranchStop> Resonance();
+  std::optional<BranchStop> AmplitudeBound(const BranchPoint& point, bool start) const;
+  std::optional<BranchStop> SlipResonanceApproached(const BranchPoint& point, bool start);
 
   OrbitContinuationProblem problem_;
   std::unique_ptr<Continuation> continuation_;
   double max_amplitude_ = 0.0;
+  double resonance_approach_ = 0.0;
+  std::optional<double> last_distance_;  // to the nearest undamped slip resonance, at the last point seen
   std::string parameter_;
   int amplitude_x1_ = 0;  // the measures' indices in BranchPoint::recorded
   int amplitude_x2_ = 0;

@@ -56,6 +56,8 @@ inline constexpr const char* kPeakToPeakX2 = "peak-to-peak:x2";
 inline constexpr const char* kStickFraction = "stick-fraction";
 inline constexpr const char* kStops = "stops";
 inline constexpr const char* kSticks = "sticks";
+inline constexpr const char* kFrictionWork = "friction-work";
+inline constexpr const char* kEquivalentDamping = "equivalent-damping";
 // Calls visit(name, field) for each measure in column order, with `measures` an OrbitMeasures,
 // const or not: the field is a double&, or an int& for the counts (stops, sticks). The one list of
 // which column holds which measure, for the monitor, the result files and the front ends.
@@ -67,7 +69,12 @@ void ForEachMeasure(Measures& measures, Visit&& visit) {
   visit(kStickFraction, measures.stick_fraction);
   visit(kStops, measures.stops);
   visit(kSticks, measures.sticks);
+  visit(kFrictionWork, measures.friction_work);
+  visit(kEquivalentDamping, measures.equivalent_damping);
 }
+// The measures added after the first result files: a file written before them lacks their
+// columns, and its readers take them as nan.
+inline bool AddedLater(std::string_view measure) { return measure == kFrictionWork || measure == kEquivalentDamping; }
 }  // namespace orbit_columns
 
 // The special-point code of a margin's sign change.

@@ -2,7 +2,8 @@
 // files, so that AUTO's own tools (its Python parsers, @pp, PyPLAUT) read stickslip's branches.
 //
 // b.: one line per branch point, "BR PT TY LAB" and then the continuation parameter, the measures
-// (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks: branch.csv's names),
+// (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks, friction-work,
+// equivalent-damping: branch.csv's names),
 // x10, x20, v10, phi, d1..dn; AUTO's default axes (columns 0 and 1) thus draw max |x1| against
 // the parameter. PT is negative where the orbit is stable, as AUTO marks it. TY uses AUTO's
 // codes: LP 2, BP 1, UZ -4, EP 9, PD 7, TR 8. stickslip's orbit-type changes (GR, T0, S0, NS, SK)

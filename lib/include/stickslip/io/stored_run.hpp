@@ -22,8 +22,8 @@ struct OrbitBranch;
 // One branch point, one CSV row. The columns are, in this order: pt, label, the orbit's
 // variables (SolutionColumns), margin:<name> per margin, floquet:mu<k>_re and _im per multiplier,
 // stable, floquet:det(M-I), floquet:det(M+I), floquet:torus, floquet:det(H+I), admissible, the measures
-// (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks: orbit_columns::
-// ForEachMeasure), newton_iterations, step_size.
+// (amplitude:x1, amplitude:x2, peak-to-peak:x2, stick-fraction, stops, sticks, friction-work,
+// equivalent-damping: orbit_columns::ForEachMeasure), newton_iterations, step_size.
 struct StoredPoint {
   int pt = 0;                  // 1-based position on the branch
   std::string label;           // AUTO-style type and running number ("LP2"); empty if regular
@@ -66,6 +66,9 @@ struct StoredRun {
   StoredSummary summary;
   std::vector<StoredPoint> branch;
   std::vector<StoredSpecialPoint> special_points;
+  // The measure columns the files lack, written before those measures existed
+  // (orbit_columns::AddedLater): read as nan, and not compared by `check`.
+  std::vector<std::string> absent_measures;
 };
 
 // The orbit's variables as the files name and order them: chi, eta, omega, u_s, u_r, phi, x10,

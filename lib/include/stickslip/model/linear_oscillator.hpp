@@ -153,6 +153,16 @@ class LinearOscillator {
 
   const ModelDescription& Description() const { return description_; }
   bool Autonomous() const { return forcing_.isZero(); }
+  // Without damping a slip's eigenvalues are +-i omega_k: the omega_k, each once.
+  std::vector<double> UndampedSlipFrequencies(const Parameters&) const {
+    std::vector<double> omega;
+    if (!damping_.isZero()) return omega;
+    for (int k = 0; k < slip_.size; ++k) {
+      if (slip_.weight[k] == 2) omega.push_back(std::abs(slip_.eigenvalues(k).imag()));
+    }
+    std::sort(omega.begin(), omega.end());
+    return omega;
+  }
 
   // The closed forms need a forcing frequency away from every lightly damped natural frequency of
   // a slip and of a stick: Z has 1/(i omega - lambda_k), and within kResonanceGap (relative) the

@@ -56,6 +56,7 @@
 
 #include <concepts>
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -100,6 +101,9 @@ concept OscillatorModel =
       { model.ForcingFrequency(p) } -> std::same_as<double>;
       // No forcing at all: the orbit's period is its durations' sum, its phase meaningless.
       { model.Autonomous() } -> std::same_as<bool>;
+      // The natural frequencies of a slip that bound nothing: those of an undamped slip, at which
+      // a forced orbit that never sticks has no bounded amplitude; none where a slip is damped.
+      { model.UndampedSlipFrequencies(p) } -> std::same_as<std::vector<double>>;
       // The monodromy's factors: the flow's Jacobian with respect to the start state over a
       // segment's duration, and the saltation matrix at its end from one mode into the next.
       { model.TransitionMatrix(mode, phase, p) } -> std::convertible_to<Eigen::Matrix<double, M::kStateSize, M::kStateSize>>;

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/pascal_2014/events.hpp"
@@ -74,6 +75,11 @@ struct Pascal2014 {
   std::array<double, 2> NaturalFrequencies(const Parameters& p) const {
     const auto [omega1, omega2] = stickslip::NaturalFrequencies(p.chi, p.eta);
     return {omega1, omega2};
+  }
+  // Undamped: both.
+  std::vector<double> UndampedSlipFrequencies(const Parameters& p) const {
+    const std::array<double, 2> omega = NaturalFrequencies(p);
+    return {omega[0], omega[1]};
   }
 
   static constexpr int kRestVelocityParameter = -1;  // a fixed ground

@@ -110,7 +110,8 @@ BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   const double period = covered / orbit.signature.CoveredFraction();
   m.friction_work = model.KineticForce(orbit.parameters) * slid / orbit.signature.CoveredFraction();
   const double amplitude = 0.5 * m.coordinates[contact].PeakToPeak();
-  m.equivalent_damping = m.friction_work / (std::numbers::pi * (2.0 * std::numbers::pi / period) * amplitude * amplitude);
+  m.equivalent_damping = amplitude > 0.0 ? m.friction_work / (std::numbers::pi * (2.0 * std::numbers::pi / period) * amplitude * amplitude)
+                                         : std::numeric_limits<double>::quiet_NaN();
   return m;
 }
 
@@ -124,6 +125,11 @@ struct OrbitMeasures {
   // segment of zero duration (where a branch changes type) included.
   int stops = 0;
   int sticks = 0;
+  // The energy friction dissipates per period (u_s times the distance x2 slides), and the viscous
+  // coefficient that dissipates as much on x2 moving as X cos(w t) (X half x2's peak-to-peak, w the
+  // orbit's angular frequency 2 pi / period): nan where x2 does not move.
+  double friction_work = 0.0;
+  double equivalent_damping = 0.0;
 };
 
 // The measures of `orbit`, which need not be admissible: the extrema are those of its own
