@@ -24,6 +24,9 @@ void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
   AddNumberOption(cmd, "--ds-min", &args->run.ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)");
   AddNumberOption(cmd, "--ds-max", &args->run.ds_max, "0 < ds-min <= ds <= ds-max", "largest step");
   AddCountOption(cmd, "--max-points", &args->run.max_points, 1, kMaxRunPoints, "accepted points (1 to 1e6)");
+  AddNumberOption(cmd, "--resonance-approach", &args->run.resonance_approach, "0 <= resonance-approach < 1",
+                  "a branch of orbits that never stick ends as a resonance at its first point within this "
+                  "(relative) of a natural frequency of the undamped slip that it approaches (0: never)");
   cmd.add_option("--user-value", args->user_values,
                  "report a UZ point where the variable NAME (the parameter or another unknown) passes VALUE; "
                  "repeatable (the run file's user_values and user_values_of)")

@@ -66,6 +66,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.ds_min = o["ds_min"].cast<double>();
   run.ds_max = o["ds_max"].cast<double>();
   run.max_amplitude = o["max_amplitude"].cast<double>();
+  run.resonance_approach = o["resonance_approach"].cast<double>();
   run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
@@ -432,6 +433,7 @@ void BindBranches(py::module_& m) {
     d["detect_branch_points"] = run.detect_branch_points;
     d["continue_past_type_changes"] = run.continue_past_type_changes;
     d["max_amplitude"] = run.max_amplitude;
+    d["resonance_approach"] = run.resonance_approach;
     return d;
   });
   m.def("_sweep_defaults", [] {

@@ -116,6 +116,11 @@ assert amplitude[-1] > 20 and max(amplitude[:-1]) <= 20, amplitude[-3:]
 assert 0.65 < float(rows[-1]["omega"]) < 0.99 * 0.7012302, rows[-1]["omega"]
 PY
 "$bin" "${p41[@]}" --output res-near > "$work/res-near.txt"
+# --resonance-approach 0 turns the approach off: the amplitude's bound ends the branch instead.
+"$bin" "${p41[@]}" --resonance-approach 0 --max-amplitude 200 --output res-far > "$work/res-far.txt"
+grep -q "stopped: resonance: the amplitude max(|x1|, |x2|) = .* passed max_amplitude = 200 at omega = 0.69" "$work/res-far.txt" ||
+  { cat "$work/res-far.txt"; exit 1; }
+for bad in -0.1 1 nan; do expect_rejected "resonance-approach" "${base[@]}" --resonance-approach "$bad" --output bad; done
 grep -q "stopped: resonance: at omega_1 = 0.7012301669, a natural frequency of the undamped slip" "$work/res-near.txt" ||
   { cat "$work/res-near.txt"; exit 1; }
 /usr/bin/python3 - "$work/res-near/branch.csv" <<'PY'

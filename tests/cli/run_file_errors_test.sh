@@ -63,6 +63,10 @@ for bad in nan inf; do
   expect 2 "r.toml:8:17: key 'continuation.max_amplitude' must be finite" "$good
 max_amplitude = $bad"
 done
+for bad in -0.1 1 2; do
+  expect 2 "r.toml:8:22: key 'continuation.resonance_approach' = $bad is invalid: valid 0 <= resonance_approach < 1 (0: never)" "$good
+resonance_approach = $bad"
+done
 expect 2 "key 'continuation.max_amplitude' is invalid with a \[trace\] table" "${good/direction = \"up\"/}
 max_amplitude = 1e4
 [trace]"

@@ -115,6 +115,12 @@ def test_a_resonance_ends_the_branch_called_whole_or_stepped_as_the_command_line
     near = stickslip.continue_orbit("omega", (0.3, 0.8), preset="paper-4.1", ds=0.01, ds_max=1.0)
     assert near.summary["message"].startswith("resonance: at omega_1 = 0.7012301669")
     assert 0.99 * 0.7012302 <= near["omega"][-1] < 0.7012302
+    # resonance_approach=0 turns that off: the amplitude's bound ends it.
+    far = stickslip.continue_orbit("omega", (0.3, 0.8), preset="paper-4.1", ds=0.01, ds_max=1.0,
+                                   resonance_approach=0.0, max_amplitude=200.0)
+    assert far.summary["message"].startswith("resonance: the amplitude") and far["omega"][-1] > 0.6942
+    with pytest.raises(ValueError, match="resonance-approach"):
+        stickslip.continue_orbit("omega", (0.3, 0.8), preset="paper-4.1", resonance_approach=1.0)
     cont = stickslip.Continuation("omega", (0.3, 0.8), **keywords)
     assert len(list(cont)) == len(whole) and cont.end == "stopped"
     assert cont.branch().files() == whole.files()

@@ -240,6 +240,9 @@ def continue_orbit(parameter, range, **keywords):
                 run files
     max_amplitude   a resonance ends the branch at its first point where max |x1|, |x2| over the
                 orbit (scaled displacement) passes this (finite, > 0; default 1e3)
+    resonance_approach  and a branch of orbits that never stick at its first point within this
+                (relative, 0 to 1; default 0.01; 0: never) of a natural frequency of the undamped
+                slip that it approaches
     user_values     values of the parameter at which to record a UZ point
     user_values_of  {variable: [values]}: UZ points of other unknowns
     switch_branch   with point="RUN:LABEL" at a PD or an SB: the branch that leaves the point (the

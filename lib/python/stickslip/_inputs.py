@@ -162,16 +162,16 @@ def _one_off_run(parameter, range, *, direction="up", output="python", start=Non
                  preset=None, point=None, switch_branch=False, boundary=None, results="results", set=None, guess=None,
                  free=None, fix=None, tie_u_r=False, ds=None,
                  ds_min=None, ds_max=None, max_points=None, shooting=None, linear_solver=None, detect_folds=None,
-                 detect_branch_points=None, continue_past_type_changes=None, max_amplitude=None, user_values=(),
-                 user_values_of=None):
+                 detect_branch_points=None, continue_past_type_changes=None, max_amplitude=None,
+                 resonance_approach=None, user_values=(), user_values_of=None):
     """The run `stickslip continue` makes of its options (checked by the library, as there)."""
     given = {"ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points, "shooting": shooting,
              "linear_solver": linear_solver, "detect_folds": detect_folds,
              "detect_branch_points": detect_branch_points, "continue_past_type_changes": continue_past_type_changes,
-             "max_amplitude": max_amplitude}
+             "max_amplitude": max_amplitude, "resonance_approach": resonance_approach}
     kinds = {"ds": "number", "ds_min": "number", "ds_max": "number", "max_points": "count", "shooting": "text",
              "linear_solver": "text", "detect_folds": "flag", "detect_branch_points": "flag",
-             "continue_past_type_changes": "flag", "max_amplitude": "number"}
+             "continue_past_type_changes": "flag", "max_amplitude": "number", "resonance_approach": "number"}
     options = {key: (_DEFAULTS[key] if value is None else _checked(value, key, kinds[key]))
                for key, value in given.items()}
     options.update({

@@ -111,6 +111,9 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
   if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
     throw InvalidInput("max-amplitude", run.max_amplitude, "a finite max-amplitude > 0");
   }
+  if (!(run.resonance_approach >= 0.0 && run.resonance_approach < 1.0)) {
+    throw InvalidInput("resonance-approach", run.resonance_approach, "0 <= resonance-approach < 1 (0: never)");
+  }
   if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
 }
 

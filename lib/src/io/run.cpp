@@ -50,6 +50,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   setup.shooting = *ShootingChoiceFromString(run.shooting);  // checked by the run-file reader
   setup.sparse_solver = *LinearSolverFromString(run.linear_solver);
   setup.max_amplitude = run.max_amplitude;
+  setup.resonance_approach = run.resonance_approach;
   ContinuationOptions& o = setup.options;
   SetContinuationOptions(run, &o);
   if (run.restart_switch_branch && !run.restart_boundary.empty()) {

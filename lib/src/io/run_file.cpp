@@ -359,6 +359,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   c.Boolean("detect_branch_points", &run.detect_branch_points);
   c.Boolean("continue_past_type_changes", &run.continue_past_type_changes);
   c.Number("max_amplitude", &run.max_amplitude);
+  c.Number("resonance_approach", &run.resonance_approach);
   std::vector<double> user_values;
   c.Numbers("user_values", &user_values);
   for (double v : user_values) run.user_values.emplace_back(run.parameter, v);
@@ -376,6 +377,10 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   if (c.Get("max_amplitude") && !(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
     c.Fail(*c.Get("max_amplitude"), "max_amplitude",
            fmt::format("= {} is invalid: valid a finite max_amplitude > 0", run.max_amplitude));
+  }
+  if (c.Get("resonance_approach") && !(run.resonance_approach >= 0.0 && run.resonance_approach < 1.0)) {
+    c.Fail(*c.Get("resonance_approach"), "resonance_approach",
+           fmt::format("= {} is invalid: valid 0 <= resonance_approach < 1 (0: never)", run.resonance_approach));
   }
   if (trace != nullptr && c.Get("max_amplitude")) {
     c.Fail(*c.Get("max_amplitude"), "max_amplitude",

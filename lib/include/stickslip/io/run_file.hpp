@@ -21,7 +21,8 @@
 //   ds = 0.01                          # optional: ds_min, ds_max, max_points, shooting,
 //   user_values = [0.6]                # linear_solver, detect_folds, detect_branch_points,
 //                                      # continue_past_type_changes, user_values_of,
-//                                      # max_amplitude (not in a trace's file: trace.max_amplitude)
+//                                      # max_amplitude (not in a trace's file: trace.max_amplitude),
+//                                      # resonance_approach (0 <= . < 1; 0: never)
 //   [trace]                            # optional: a trace (branches/trace.hpp) instead of one
 //   max_branches = 50                  # branch; then direction is "both" or left out, and
 //   max_amplitude = 1e3                # continue_past_type_changes is refused. Keys left out
@@ -95,6 +96,7 @@ struct RunFile {
   bool detect_branch_points = ContinuationOptions{}.detect_branch_points;
   bool continue_past_type_changes = ContinuationOptions{}.continue_past_terminal;
   double max_amplitude = kDefaultMaxAmplitude;  // a resonance ends the branch (OrbitContinuationSetup)
+  double resonance_approach = kDefaultResonanceApproach;  // so does one approached (OrbitContinuationSetup)
   NamedValues user_values;  // (variable, value); the continuation parameter's from user_values
   // [trace]: present for a trace, with its keys (the rest of TraceOptions at its defaults).
   std::optional<TraceOptions> trace;
