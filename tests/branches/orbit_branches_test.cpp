@@ -249,6 +249,17 @@ TEST(ResonanceEnd, EndsANonStickingBranchThatApproachesAnUndampedSlipFrequency) 
     for (std::size_t k = 0; k + 1 < n; ++k) EXPECT_GT(distance(k), 1e-2) << k;
     EXPECT_EQ(branch.branch.special_points.back().type, "EP");
   }
+  // With u_s = u_r = 0.198 the branch from 0.6 folds back in amplitude before omega1, bounded: it
+  // goes on within 1 % of omega1 to the stick it meets at omega 0.69685.
+  OrbitContinuationSetup bounded = NonStickingOrbitOfSection41(false, 1);
+  bounded.start.parameters.u_s = bounded.start.parameters.u_r = 0.198;
+  bounded.start.x10 = 1.1034;
+  bounded.start.x20 = 2.3539;
+  bounded.start.v10 = 0.3018;
+  bounded.start.phi = 0.8590;
+  const OrbitBranch folded = ContinueOrbit(bounded);
+  EXPECT_EQ(folded.branch.end, BranchEnd::kTerminalEvent) << folded.branch.end_message;
+  EXPECT_GT(folded.orbits.back().parameters.omega, 0.99 * omega1);
   // Leaving omega1 (from 0.71 upwards), the branch goes on past 0.72.
   const OrbitBranch leaving = ContinueOrbit(NonStickingOrbitOfSection41(true, 1));
   EXPECT_NE(leaving.branch.end, BranchEnd::kStopped) << leaving.branch.end_message;

@@ -66,3 +66,37 @@ for solution, row in zip(s, labelled):
 print(f"{run}: AUTO reads {len(b)} points, {len(s)} labelled solutions, {len(d)} diagnostics")
 PY
 done
+# A run stored before the friction measures existed: read with them nan, exported with every value
+# its own right-aligned field (NaN too), which AUTO's parser reads, the measures read back as NaN.
+old=paper-5.1-omega-old
+mkdir "$work/$old"
+cp "$root/results/paper-5.1-omega-up/summary.json" "$work/$old/"
+for f in branch.csv special-points.csv; do
+  /usr/bin/python3 - "$root/results/paper-5.1-omega-up/$f" "$work/$old/$f" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+header = lines[0].split(",")
+drop = {header.index("friction-work"), header.index("equivalent-damping")}
+with open(sys.argv[2], "w") as out:
+    for line in lines:
+        out.write(",".join(x for i, x in enumerate(line.split(",")) if i not in drop) + "\n")
+PY
+done
+"$bin" export --auto "$work/$old"
+/usr/bin/python3 - "$work/$old" <<'PY'
+import math, os, sys
+sys.path.insert(0, "/usr/lib/auto-07p/python")
+import numpy
+numpy.bool = bool
+import io, contextlib
+with contextlib.redirect_stdout(io.StringIO()):
+    from auto import parseB
+directory = sys.argv[1]
+b = parseB.parseB(os.path.join(directory, "b.paper-5.1-omega-old"))
+assert "friction-work" in b.coordnames and "equivalent-damping" in b.coordnames, b.coordnames
+assert all(math.isnan(v) for v in b["friction-work"]) and all(math.isnan(v) for v in b["equivalent-damping"])
+assert all(v > 0 for v in b["amplitude:x1"])
+lines = [l for l in open(os.path.join(directory, "b.paper-5.1-omega-old")) if not l.startswith("   0")]
+assert len({len(l.split()) for l in lines}) == 1, {len(l.split()) for l in lines}
+print("old-format run: AUTO reads the friction measures as NaN, every line its fields")
+PY

@@ -281,6 +281,23 @@ TEST(ResultFiles, FileWithoutTheFrictionMeasuresReadsThemAsNaN) {
     EXPECT_EQ(old.branch[i].measures.amplitude_x2, whole.branch[i].measures.amplitude_x2);
   }
   EXPECT_TRUE(std::isnan(old.special_points.back().point.measures.friction_work));
+  // Written again (a re-save), the nan columns read back.
+  const RunFiles again = FormatRunFiles(old);
+  EXPECT_NE(again.branch_csv.find(",nan,nan,"), std::string::npos);
+  EXPECT_TRUE(std::isnan(ParseRunFiles(again, "stored").branch.front().measures.friction_work));
+  // Both columns or neither, and the same in both tables.
+  RunFiles one = StoredTexts(kRun);
+  auto drop_one = [&](const std::string& l) {
+    std::vector<std::string> fields = Fields(l);
+    fields.erase(fields.begin() + first + 1);
+    return Join(fields);
+  };
+  for (int line = 1; line <= 107; ++line) one.branch_csv = EditLine(one.branch_csv, line, drop_one);
+  EXPECT_EQ(ParseError(one), "stored/branch.csv:1: column 'equivalent-damping' is missing");
+  RunFiles mixed = StoredTexts(kRun);
+  for (int line = 1; line <= 107; ++line) mixed.branch_csv = EditLine(mixed.branch_csv, line, drop);
+  EXPECT_EQ(ParseError(mixed), "stored/special-points.csv:1: the point columns differ from branch.csv's: valid the same, "
+                               "then type, test_function, located");
 }
 
 TEST(ResultFiles, CountThatIsNotAWholeNumberNamesLineAndColumn) {

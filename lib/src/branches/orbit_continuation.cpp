@@ -160,10 +160,15 @@ std::optional<BranchStop> OrbitContinuation::Resonance() {
   return std::nullopt;
 }
 
-std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& point, bool start) const {
-  // max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan (no bound) stops too.
+// max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan where undefined.
+double OrbitContinuation::Amplitude(const BranchPoint& point) const {
   const double x1 = point.recorded(amplitude_x1_), x2 = point.recorded(amplitude_x2_);
-  const double amplitude = std::isnan(x1) || std::isnan(x2) ? std::numeric_limits<double>::quiet_NaN() : std::max(x1, x2);
+  return std::isnan(x1) || std::isnan(x2) ? std::numeric_limits<double>::quiet_NaN() : std::max(x1, x2);
+}
+
+std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& point, bool start) const {
+  // nan (no bound) stops too.
+  const double amplitude = Amplitude(point);
   if (amplitude <= max_amplitude_) return std::nullopt;
   return BranchStop{0, BranchEnd::kStopped,
                     fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} {} max_amplitude = {:g} at "
@@ -172,18 +177,22 @@ std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& p
                                 point.lambda, start ? " (a larger max_amplitude continues it)" : "")};
 }
 
-// Approaching: nearer than at the point before (the start only sets the distance, so that a
-// branch starting near a resonance may leave it).
+// Approaching: nearer than at the point before, the amplitude larger (the start only sets both,
+// so that a branch starting near a resonance may leave it). A branch whose amplitude falls as it
+// nears omega_k is bounded there (a large enough u_s folds it back): it goes on.
 std::optional<BranchStop> OrbitContinuation::SlipResonanceApproached(const BranchPoint& point, bool start) {
   const std::optional<SlipResonance> near =
       NearestSlipResonance(problem_.system->ToOrbit(point.u.head(problem_.system->UnknownCount())));
-  const std::optional<double> before = start ? std::nullopt : last_distance_;
-  last_distance_ = near ? std::optional<double>(near->distance) : std::nullopt;
-  if (!near || !before || !(near->distance < *before && near->distance <= resonance_approach_)) return std::nullopt;
+  const std::optional<ResonanceDistance> before = start ? std::nullopt : last_;
+  last_ = near ? std::optional<ResonanceDistance>({near->distance, Amplitude(point)}) : std::nullopt;
+  if (!near || !before || !(near->distance < before->distance && near->distance <= resonance_approach_ &&
+                            last_->amplitude > before->amplitude)) {
+    return std::nullopt;
+  }
   return BranchStop{0, BranchEnd::kStopped,
                     fmt::format("resonance: at omega_{} = {:.10g}, a natural frequency of the undamped slip, which the "
-                                "orbit, never sticking, approached to {:.3g} (relative; resonance_approach = {:g}) at "
-                                "{} = {:.10g}, its amplitude growing without bound",
+                                "orbit, never sticking, approached to {:.4g} (relative; resonance_approach = {:g}) at "
+                                "{} = {:.10g}, its amplitude growing",
                                 near->index, near->frequency, near->distance, resonance_approach_, parameter_,
                                 point.lambda)};
 }

@@ -76,7 +76,7 @@ std::string BranchHeader(const StoredRun& run, const BranchColumns& columns) {
     low = std::min(low, value);
     high = std::max(high, value);
   }
-  std::string header = fmt::format("   0 {:19.10E}{:19.10E}{:19.10E}{:19.10E}\n", low, high, 0.0, 0.0);
+  std::string header = fmt::format("   0 {:>19.10E}{:>19.10E}{:>19.10E}{:>19.10E}\n", low, high, 0.0, 0.0);
   header += "   0    PT  TY  LAB ";
   for (const std::string& n : columns.names) header += fmt::format("{:<19}", n);
   return header + "\n";
@@ -97,11 +97,11 @@ std::string SolutionEntry(const StoredPoint& p, int ty, int lab, int samples) {
                               p.stable ? -p.pt : p.pt, ty, lab, 1, 1, samples, 5, lines, samples - 1, 1, kParameters);
   for (int k = 0; k < samples; ++k) {
     const State& x = states[k];
-    s += fmt::format("    {:19.10E}{:19.10E}{:19.10E}{:19.10E}{:19.10E}\n", static_cast<double>(k) / (samples - 1), x(0),
+    s += fmt::format("    {:>19.10E}{:>19.10E}{:>19.10E}{:>19.10E}{:>19.10E}\n", static_cast<double>(k) / (samples - 1), x(0),
                      x(1), x(2), x(3));
   }
   for (int k = 0; k < kParameters; ++k) {
-    s += fmt::format("{}{:19.10E}", k % 7 == 0 ? "    " : "", par[k]);
+    s += fmt::format("{}{:>19.10E}", k % 7 == 0 ? "    " : "", par[k]);
     if (k % 7 == 6 || k + 1 == kParameters) s += "\n";
   }
   return s;
@@ -113,15 +113,15 @@ std::string SolutionEntry(const StoredPoint& p, int ty, int lab, int samples) {
 // Newton iteration; stickslip stores their count (IT) and the step that reached the point.
 std::string DiagnosticsEntry(const StoredPoint& p, const std::string& parameter, double value, int lab) {
   std::string d = fmt::format("  BR    PT  IT  {:<19}{:<19}\n", parameter, "step_size");
-  d += fmt::format("{:4d}{:6d}{:4d}  {:19.10E}{:19.10E}\n", 1, p.pt, p.newton_iterations, value, p.step_size);
+  d += fmt::format("{:4d}{:6d}{:4d}  {:>19.10E}{:>19.10E}\n", 1, p.pt, p.newton_iterations, value, p.step_size);
   for (std::size_t k = 0; k < p.multipliers.size(); ++k) {
     const std::complex<double> mu = p.multipliers[k];
-    d += fmt::format(" Multiplier {:3d} {:19.10E}{:19.10E}  Abs. Val. {:19.10E}\n", k + 1, mu.real(), mu.imag(),
+    d += fmt::format(" Multiplier {:3d} {:>19.10E}{:>19.10E}  Abs. Val. {:>19.10E}\n", k + 1, mu.real(), mu.imag(),
                      std::abs(mu));
   }
   d += fmt::format(" Stability: {}\n", p.stable ? "stable (every |multiplier| < 1)" : "unstable (a |multiplier| >= 1)");
   if (!p.label.empty()) {
-    d += fmt::format("  BR    PT  TY  LAB  {}\n{:4d}{:6d}  {:<4}{:4d}  {:19.10E}\n", parameter, 1, p.pt,
+    d += fmt::format("  BR    PT  TY  LAB  {}\n{:4d}{:6d}  {:<4}{:4d}  {:>19.10E}\n", parameter, 1, p.pt,
                      p.label.substr(0, p.label.find_first_of("0123456789")), lab, value);
   }
   return d;
@@ -141,7 +141,7 @@ AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
     const auto [ty, lab] = p.label.empty() ? std::pair(0, 0) : AutoLabel(p.label, run_directory / "branch.csv", p.pt);
     const std::vector<double> values = columns.Values(p);
     files.b += fmt::format("{:4d}{:6d}{:4d}{:5d}", 1, p.stable ? -p.pt : p.pt, ty, lab);
-    for (double v : values) files.b += fmt::format("{:19.10E}", v);
+    for (double v : values) files.b += fmt::format("{:>19.10E}", v);
     files.b += "\n";
     if (!files.d.empty()) files.d += kDiagnosticsDivider;
     files.d += DiagnosticsEntry(p, run.summary.parameter, values.front(), lab);

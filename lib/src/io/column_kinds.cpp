@@ -59,10 +59,10 @@ ValidValues Fraction(bool admissible) {
 
 ValidValues NonNegative() { return Range(0.0, std::numeric_limits<double>::infinity(), "a finite number >= 0"); }
 
-ValidValues EquivalentDamping() {
+ValidValues FrictionMeasure() {
   ValidValues valid = Finite();
   valid.nan = true;
-  valid.text = "a finite number or nan (no motion)";
+  valid.text = "a finite number or nan (not computed)";
   return valid;
 }
 

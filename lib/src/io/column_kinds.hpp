@@ -44,10 +44,11 @@ ValidValues Duration(std::string_view name, double period, bool admissible);
 ValidValues Fraction(bool admissible);
 // A finite number >= 0: an amplitude, a peak-to-peak, a step size, stops or sticks per period.
 ValidValues NonNegative();
-// The equivalent viscous damping of the friction work: a finite number (of the kinetic level's
-// sign: below 0 only where a released u_s ends its family, located to either side of 0), or nan
-// where the contact's coordinate does not move.
-ValidValues EquivalentDamping();
+// The friction work per period and its equivalent viscous damping: a finite number (of the kinetic
+// level's sign: below 0 only where a released u_s ends its family, located to either side of 0),
+// or nan (the damping where the contact's coordinate does not move; either where a file written
+// before the column was read and written again).
+ValidValues FrictionMeasure();
 // An admissibility margin: a finite number, inf where the margin does not apply, nan where it
 // could not be computed (margins.hpp SmallestMargin: undefined).
 ValidValues Margin();

@@ -176,6 +176,16 @@ struct ColumnIndices {
   std::array<int, kSpecialColumns.size()> special{};  // special-points.csv only
 };
 
+// The names of the measures whose columns the table lacks.
+std::vector<std::string> AbsentMeasures(const ColumnIndices& c) {
+  std::vector<std::string> absent;
+  const OrbitMeasures measures{};
+  orbit_columns::ForEachMeasure(measures, [&, k = 0](const char* name, const auto&) mutable {
+    if (c.measures[k++] == kAbsent) absent.emplace_back(name);
+  });
+  return absent;
+}
+
 // Throws InvalidInput if a column is missing, unknown or repeated.
 ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, bool special_points) {
   std::vector<bool> used(table.header().size(), false);
@@ -200,6 +210,13 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) {
     c.measures.push_back(orbit_columns::AddedLater(name) && table.Find(name) < 0 ? kAbsent : column(name));
   });
+  // The measures added later come together: a file has all of them or none.
+  const std::vector<std::string> absent = AbsentMeasures(c);
+  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) {
+    if (orbit_columns::AddedLater(name) && !absent.empty() && table.Find(name) >= 0) {
+      throw table.HeaderError(fmt::format("column '{}' is missing", absent.front()));
+    }
+  });
   for (std::size_t k = 0; k < kStepColumns.size(); ++k) c.step[k] = column(kStepColumns[k]);
   for (std::size_t k = 0; special_points && k < kSpecialColumns.size(); ++k) c.special[k] = column(kSpecialColumns[k]);
   for (std::size_t k = 0; k < used.size(); ++k) {
@@ -209,9 +226,8 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
 }
 
 // A measure from its column (column_kinds.hpp): a count as a whole number >= 0, the stick
-// fraction 0 to 1 where admissible, the friction work a finite number and the equivalent damping
-// one or nan (both have the kinetic level's sign), any other a number >= 0; nan from a column the
-// file lacks (a measure added later).
+// fraction 0 to 1 where admissible, the friction work and the equivalent damping a finite number
+// or nan, any other a number >= 0; nan from a column the file lacks (a measure added later).
 void ReadField(const CsvTable& t, int row, int column, bool, int* count) {
   *count = t.Integer(row, column, 0, std::numeric_limits<int>::max());
 }
@@ -222,8 +238,7 @@ void ReadField(const CsvTable& t, int row, int column, bool admissible, double* 
   }
   const std::string& name = t.header()[column];
   *value = t.Value(row, column, name == orbit_columns::kStickFraction       ? detail::Fraction(admissible)
-                                : name == orbit_columns::kFrictionWork      ? detail::Finite()
-                                : name == orbit_columns::kEquivalentDamping ? detail::EquivalentDamping()
+                                : orbit_columns::AddedLater(name)           ? detail::FrictionMeasure()
                                                                             : detail::NonNegative());
 }
 
@@ -360,13 +375,15 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   const CsvTable branch(files.branch_csv, directory / kBranchFile);
   const ColumnIndices branch_columns = FindColumns(branch, signature, false);
   for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, signature));
-  orbit_columns::ForEachMeasure(run.branch.front().measures, [&, k = 0](const char* name, const auto&) mutable {
-    if (branch_columns.measures[k++] == kAbsent) run.absent_measures.emplace_back(name);
-  });
+  run.absent_measures = AbsentMeasures(branch_columns);
   if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
 
   const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);
   const ColumnIndices special_columns = FindColumns(special, signature, true);
+  if (AbsentMeasures(special_columns) != run.absent_measures) {
+    throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
+                              "test_function, located");
+  }
   const std::vector<std::string> header = ColumnNames(run.branch.front());
   for (int row = 0; row < special.rows(); ++row) {
     StoredPoint point = ParsePoint(special, row, special_columns, signature);

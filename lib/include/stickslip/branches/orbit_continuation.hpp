@@ -46,8 +46,8 @@ struct OrbitContinuationSetup {
   // never): BranchEnd::kStopped, the message beginning "resonance:".
   double max_amplitude = kDefaultMaxAmplitude;
   // A resonance ends the branch too at its first point that, never sticking, approached an undamped
-  // slip's natural frequency to within this (relative, 0 to 1; 0: never): the message beginning
-  // "resonance: at omega_k".
+  // slip's natural frequency to within this (relative, 0 to 1; 0: never), its amplitude growing:
+  // the message beginning "resonance: at omega_k".
   double resonance_approach = kDefaultResonanceApproach;
 };
 
@@ -95,8 +95,8 @@ Branch EndedAt(Branch branch, const BranchStop& stop);
 // A branch of periodic orbits stepped by hand, ending as ContinueOrbit's does: as the engine ends
 // it, or at a resonance (BranchEnd::kStopped at the first point whose amplitude passed
 // setup.max_amplitude, or is nan: the extrema's search was cut short, no bound; or that, never
-// sticking, came nearer an undamped slip's natural frequency than the point before it and to
-// within setup.resonance_approach).
+// sticking, came nearer an undamped slip's natural frequency than the point before it, with a
+// larger amplitude, and to within setup.resonance_approach).
 //   OrbitContinuation c(setup);
 //   while (c.Step()) show(c.branch());
 //   OrbitBranch b = c.Result();
@@ -111,6 +111,7 @@ class OrbitContinuation {
  private:
   // The first point added since the last call at a resonance, as a stop.
   std::optional<BranchStop> Resonance();
+  double Amplitude(const BranchPoint& point) const;
   std::optional<BranchStop> AmplitudeBound(const BranchPoint& point, bool start) const;
   std::optional<BranchStop> SlipResonanceApproached(const BranchPoint& point, bool start);
 
@@ -118,7 +119,11 @@ class OrbitContinuation {
   std::unique_ptr<Continuation> continuation_;
   double max_amplitude_ = 0.0;
   double resonance_approach_ = 0.0;
-  std::optional<double> last_distance_;  // to the nearest undamped slip resonance, at the last point seen
+  struct ResonanceDistance {
+    double distance = 0.0;   // to the nearest undamped slip frequency (relative)
+    double amplitude = 0.0;  // Amplitude()
+  };
+  std::optional<ResonanceDistance> last_;  // at the last point seen, if it never sticks
   std::string parameter_;
   int amplitude_x1_ = 0;  // the measures' indices in BranchPoint::recorded
   int amplitude_x2_ = 0;

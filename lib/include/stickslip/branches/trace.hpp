@@ -15,7 +15,8 @@
 //   resonance            the amplitude, max |x1| and |x2| over the orbit (exact: the measures of
 //                        orbits/orbit_measures.hpp), passed max_amplitude; or the orbit, never
 //                        sticking, approached a natural frequency of the undamped slip to within
-//                        OrbitContinuationSetup::resonance_approach (orbits/slip_resonance.hpp)
+//                        OrbitContinuationSetup::resonance_approach, its amplitude growing
+//                        (orbits/slip_resonance.hpp)
 //   not-confirmed        no adjacent type confirmed by simulation (SwitchAt's reasons, per margin)
 //   no-adjacent-type     the margin has none (a tangential end)
 //   family-end           u_s reached 0 (sliding-friction), the end of the physical family
