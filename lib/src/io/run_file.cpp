@@ -270,110 +270,110 @@ bool IsRunName(std::string_view name) {
          name.find("..") == std::string_view::npos && name.find(':') == std::string_view::npos && IsUtf8(name);
 }
 
-RunFile ParseRunFile(std::string_view content, std::string_view path) {
+namespace {
+
+toml::table ParseToml(std::string_view content, std::string_view path) {
   Screen(content, path);
-  toml::table root;
   try {
-    root = toml::parse(content, path);
+    return toml::parse(content, path);
   } catch (const toml::parse_error& e) {
     const auto& p = e.source().begin;
     throw RunFileError(fmt::format("{}:{}:{}: {}", path, p.line, p.column, e.description()));
   }
-  RunFile run;
-  run.path = std::string(path);
-  TableReader top(root, "", path, &run);
-  top.String("output", &run.output, true);
-  if (!IsRunName(run.output)) {
-    top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));
-  }
+}
 
-  const toml::table* start = top.Table("start", true);
-  TableReader s(*start, "start.", path, &run);
-  s.String("preset", &run.preset);
-  s.String("signature", &run.signature);
-  s.Values("set", &run.set);
-  s.Values("guess", &run.guess);
-  if (const toml::table* restart = s.Table("restart", false)) {
-    TableReader r(*restart, "start.restart.", path, &run);
-    r.String("run", &run.restart_run, true);
-    if (!IsRunName(run.restart_run)) {
-      r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid {}", run.restart_run, kRunNameRule));
-    }
-    r.String("label", &run.restart_label, true);
-    r.Boolean("switch_branch", &run.restart_switch_branch);
-    r.String("boundary", &run.restart_boundary);
-    // The branch that leaves a bifurcation leaves it on the side `direction` names; a trace has
-    // none (both ways from its start would go out along one side and back along the other).
-    if (run.restart_switch_branch && root.contains("trace")) {
-      r.Fail(*r.Get("switch_branch"), "switch_branch",
-             "= true is invalid with a [trace] table: valid false (the branch that leaves a bifurcation leaves it on "
-             "one side, continuation.direction; a trace can start from a point of that run)");
-    }
-    r.RejectUnknown();
+void ReadRestart(const toml::table& restart, const toml::table& root, std::string_view path, RunFile* run) {
+  TableReader r(restart, "start.restart.", path, run);
+  r.String("run", &run->restart_run, true);
+  if (!IsRunName(run->restart_run)) {
+    r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid {}", run->restart_run, kRunNameRule));
   }
-  if (run.preset.empty() == run.signature.empty() && run.restart_run.empty()) {
+  r.String("label", &run->restart_label, true);
+  r.Boolean("switch_branch", &run->restart_switch_branch);
+  r.String("boundary", &run->restart_boundary);
+  // The branch that leaves a bifurcation leaves it on the side `direction` names; a trace has
+  // none (both ways from its start would go out along one side and back along the other).
+  if (run->restart_switch_branch && root.contains("trace")) {
+    r.Fail(*r.Get("switch_branch"), "switch_branch",
+           "= true is invalid with a [trace] table: valid false (the branch that leaves a bifurcation leaves it on "
+           "one side, continuation.direction; a trace can start from a point of that run)");
+  }
+  r.RejectUnknown();
+}
+
+void ReadStart(const toml::table& start, const toml::table& root, std::string_view path, RunFile* run) {
+  TableReader s(start, "start.", path, run);
+  s.String("preset", &run->preset);
+  s.String("signature", &run->signature);
+  s.Values("set", &run->set);
+  s.Values("guess", &run->guess);
+  if (const toml::table* restart = s.Table("restart", false)) ReadRestart(*restart, root, path, run);
+  if (run->preset.empty() == run->signature.empty() && run->restart_run.empty()) {
     throw RunFileError(fmt::format("{}: key 'start.preset' or 'start.signature': give exactly one of them",
-                                   Where(path, *start)));
+                                   Where(path, start)));
   }
   s.RejectUnknown();
+}
 
-  if (const toml::table* unknowns = top.Table("unknowns", false)) {
-    TableReader u(*unknowns, "unknowns.", path, &run);
-    u.Strings("free", &run.free);
-    u.Strings("fix", &run.fix);
-    u.Boolean("tie_u_r", &run.tie_u_r);
-    u.RejectUnknown();
-  }
+void ReadUnknowns(const toml::table& unknowns, std::string_view path, RunFile* run) {
+  TableReader u(unknowns, "unknowns.", path, run);
+  u.Strings("free", &run->free);
+  u.Strings("fix", &run->fix);
+  u.Boolean("tie_u_r", &run->tie_u_r);
+  u.RejectUnknown();
+}
 
-  const toml::table* continuation = top.Table("continuation", true);
-  TableReader c(*continuation, "continuation.", path, &run);
-  c.String("parameter", &run.parameter, true);
-  // A trace goes both ways from its start: its direction is "both" or left out.
-  const toml::table* trace = top.Table("trace", false);
+// The continued parameter, its direction (a trace goes both ways from its start: "both" or left
+// out) and its range.
+void ReadParameterAndRange(TableReader& c, bool trace, RunFile* run) {
+  c.String("parameter", &run->parameter, true);
   std::string direction;
-  c.String("direction", &direction, trace == nullptr);
-  if (trace != nullptr && c.Get("direction") && direction != "both") {
+  c.String("direction", &direction, !trace);
+  if (trace && c.Get("direction") && direction != "both") {
     c.Fail(*c.Get("direction"), "direction",
            fmt::format("= '{}' is invalid with a [trace] table: valid \"both\" or left out (a trace goes both ways)",
                        direction));
   }
-  if (trace == nullptr && direction != "up" && direction != "down") {
+  if (!trace && direction != "up" && direction != "down") {
     c.Fail(*c.Get("direction"), "direction", fmt::format("= '{}' is invalid: valid \"up\" or \"down\"", direction));
   }
-  run.direction = direction == "down" ? -1 : 1;
+  run->direction = direction == "down" ? -1 : 1;
   std::vector<double> range;
   c.Numbers("range", &range);
   if (!c.Get("range")) c.Missing("range", "give [min, max]");
   if (range.size() != 2 || !(range[0] < range[1])) {
     c.Fail(*c.Get("range"), "range", "must be [min, max] with min < max");
   }
-  run.range_min = range[0];
-  run.range_max = range[1];
-  c.Number("ds", &run.ds);
-  c.Number("ds_min", &run.ds_min);
-  c.Number("ds_max", &run.ds_max);
-  c.Integer("max_points", &run.max_points);
-  c.String("shooting", &run.shooting);
-  c.String("linear_solver", &run.linear_solver);
-  c.Boolean("detect_folds", &run.detect_folds);
-  c.Boolean("detect_branch_points", &run.detect_branch_points);
-  c.Boolean("continue_past_type_changes", &run.continue_past_type_changes);
-  c.Number("max_amplitude", &run.max_amplitude);
-  c.Number("resonance_approach", &run.resonance_approach);
+  run->range_min = range[0];
+  run->range_max = range[1];
+}
+
+void ReadContinuationKeys(TableReader& c, std::string_view path, RunFile* run) {
+  c.Number("ds", &run->ds);
+  c.Number("ds_min", &run->ds_min);
+  c.Number("ds_max", &run->ds_max);
+  c.Integer("max_points", &run->max_points);
+  c.String("shooting", &run->shooting);
+  c.String("linear_solver", &run->linear_solver);
+  c.Boolean("detect_folds", &run->detect_folds);
+  c.Boolean("detect_branch_points", &run->detect_branch_points);
+  c.Boolean("continue_past_type_changes", &run->continue_past_type_changes);
+  c.Number("max_amplitude", &run->max_amplitude);
+  c.Number("resonance_approach", &run->resonance_approach);
   std::vector<double> user_values;
   c.Numbers("user_values", &user_values);
-  for (double v : user_values) run.user_values.emplace_back(run.parameter, v);
+  for (double v : user_values) run->user_values.emplace_back(run->parameter, v);
   if (const toml::table* others = c.Table("user_values_of", false)) {
-    TableReader o(*others, "continuation.user_values_of.", path, &run);
+    TableReader o(*others, "continuation.user_values_of.", path, run);
     for (const auto& [name, value] : *others) {
       std::vector<double> values;
       o.Numbers(name.str(), &values);
-      for (double v : values) run.user_values.emplace_back(std::string(name.str()), v);
+      for (double v : values) run->user_values.emplace_back(std::string(name.str()), v);
     }
   }
-  auto check_positive = [&](std::string_view key, double v) {
-    if (!(v > 0.0)) c.Fail(*c.Get(key), key, fmt::format("= {} is invalid: valid range > 0", v));
-  };
+}
+
+void CheckBounds(TableReader& c, bool trace, const RunFile& run) {
   if (c.Get("max_amplitude") && !(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
     c.Fail(*c.Get("max_amplitude"), "max_amplitude",
            fmt::format("= {} is invalid: valid a finite max_amplitude > 0", run.max_amplitude));
@@ -382,17 +382,26 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
     c.Fail(*c.Get("resonance_approach"), "resonance_approach",
            fmt::format("= {} is invalid: valid 0 <= resonance_approach < 1 (0: never)", run.resonance_approach));
   }
-  if (trace != nullptr && c.Get("max_amplitude")) {
+  if (trace && c.Get("max_amplitude")) {
     c.Fail(*c.Get("max_amplitude"), "max_amplitude",
            "is invalid with a [trace] table: valid left out (a trace's bound is trace.max_amplitude)");
   }
+}
+
+void CheckSteps(TableReader& c, const toml::table& continuation, std::string_view path, const RunFile& run) {
+  auto check_positive = [&](std::string_view key, double v) {
+    if (!(v > 0.0)) c.Fail(*c.Get(key), key, fmt::format("= {} is invalid: valid range > 0", v));
+  };
   if (c.Get("ds")) check_positive("ds", run.ds);
   if (c.Get("ds_min")) check_positive("ds_min", run.ds_min);
   if (c.Get("ds_max")) check_positive("ds_max", run.ds_max);
   if (!(run.ds_min <= run.ds && run.ds <= run.ds_max)) {
     throw RunFileError(fmt::format("{}: keys 'continuation.ds_min' <= 'continuation.ds' <= 'continuation.ds_max' "
-                                   "must hold: got {} <= {} <= {}", Where(path, *continuation), run.ds_min, run.ds, run.ds_max));
+                                   "must hold: got {} <= {} <= {}", Where(path, continuation), run.ds_min, run.ds, run.ds_max));
   }
+}
+
+void CheckSolverChoices(TableReader& c, bool trace, const RunFile& run) {
   auto check_member = [&](std::string_view key, const std::string& value, std::vector<std::string> allowed) {
     if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
       c.Fail(*c.Get(key), key, fmt::format("= '{}' is invalid: valid {}", value, fmt::join(allowed, ", ")));
@@ -405,41 +414,69 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
            fmt::format("= '{}' is invalid with shooting = \"single\": valid only with shooting \"multiple\" or \"auto\"",
                        run.linear_solver));
   }
-  if (trace != nullptr && run.continue_past_type_changes) {
+  if (trace && run.continue_past_type_changes) {
     c.Fail(*c.Get("continue_past_type_changes"), "continue_past_type_changes",
            "= true is invalid with a [trace] table: valid false (a trace switches at every change of type; "
            "trace.follow_past_unswitched follows a type past one)");
   }
+}
+
+void ReadContinuation(const toml::table& continuation, bool trace, std::string_view path, RunFile* run) {
+  TableReader c(continuation, "continuation.", path, run);
+  ReadParameterAndRange(c, trace, run);
+  ReadContinuationKeys(c, path, run);
+  CheckBounds(c, trace, *run);
+  CheckSteps(c, continuation, path, *run);
+  CheckSolverChoices(c, trace, *run);
   c.RejectUnknown();
-  if (trace != nullptr) {
-    TableReader t(*trace, "trace.", path, &run);
-    TraceOptions options;
-    if (const toml::node* n = t.Get("max_branches")) {
-      if (!n->is_integer() || n->as_integer()->get() < 1 || n->as_integer()->get() > kMaxTraceBranches) {
-        t.Fail(*n, "max_branches", fmt::format("is invalid: valid {}", WholeNumberRange("max_branches", 1, kMaxTraceBranches)));
-      }
-      options.max_branches = static_cast<int>(n->as_integer()->get());
+}
+
+// A whole-number key of [trace] from `low` to kMaxTraceBranches.
+void ReadTraceCount(TableReader& t, const char* key, int low, int* value) {
+  if (const toml::node* n = t.Get(key)) {
+    if (!n->is_integer() || n->as_integer()->get() < low || n->as_integer()->get() > kMaxTraceBranches) {
+      t.Fail(*n, key, fmt::format("is invalid: valid {}", WholeNumberRange(key, low, kMaxTraceBranches)));
     }
-    if (const toml::node* n = t.Get("follow_bifurcations")) {
-      if (!n->is_integer() || n->as_integer()->get() < 0 || n->as_integer()->get() > kMaxTraceBranches) {
-        t.Fail(*n, "follow_bifurcations",
-               fmt::format("is invalid: valid {}", WholeNumberRange("follow_bifurcations", 0, kMaxTraceBranches)));
-      }
-      options.follow_bifurcations = static_cast<int>(n->as_integer()->get());
-    }
-    t.Number("max_amplitude", &options.max_amplitude);
-    t.Number("loop_tolerance", &options.loop_tolerance);
-    t.Boolean("follow_past_unswitched", &options.follow_past_unswitched);
-    t.Boolean("allow_inadmissible", &options.allow_inadmissible);
-    try {
-      options.ValidateOwnFields();
-    } catch (const InvalidInput& e) {
-      if (const toml::node* n = t.Get(e.field())) t.Fail(*n, e.field(), e.Predicate());
-      throw;
-    }
-    t.RejectUnknown();
-    run.trace = options;
+    *value = static_cast<int>(n->as_integer()->get());
   }
+}
+
+TraceOptions ReadTrace(const toml::table& trace, std::string_view path, RunFile* run) {
+  TableReader t(trace, "trace.", path, run);
+  TraceOptions options;
+  ReadTraceCount(t, "max_branches", 1, &options.max_branches);
+  ReadTraceCount(t, "follow_bifurcations", 0, &options.follow_bifurcations);
+  t.Number("max_amplitude", &options.max_amplitude);
+  t.Number("loop_tolerance", &options.loop_tolerance);
+  t.Boolean("follow_past_unswitched", &options.follow_past_unswitched);
+  t.Boolean("allow_inadmissible", &options.allow_inadmissible);
+  try {
+    options.ValidateOwnFields();
+  } catch (const InvalidInput& e) {
+    if (const toml::node* n = t.Get(e.field())) t.Fail(*n, e.field(), e.Predicate());
+    throw;
+  }
+  t.RejectUnknown();
+  return options;
+}
+
+}  // namespace
+
+RunFile ParseRunFile(std::string_view content, std::string_view path) {
+  const toml::table root = ParseToml(content, path);
+  RunFile run;
+  run.path = std::string(path);
+  TableReader top(root, "", path, &run);
+  top.String("output", &run.output, true);
+  if (!IsRunName(run.output)) {
+    top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));
+  }
+  ReadStart(*top.Table("start", true), root, path, &run);
+  if (const toml::table* unknowns = top.Table("unknowns", false)) ReadUnknowns(*unknowns, path, &run);
+  const toml::table* continuation = top.Table("continuation", true);
+  const toml::table* trace = top.Table("trace", false);
+  ReadContinuation(*continuation, trace != nullptr, path, &run);
+  if (trace != nullptr) run.trace = ReadTrace(*trace, path, &run);
   top.RejectUnknown();
   return run;
 }
