@@ -88,6 +88,7 @@ LinearOscillatorData RandomThreeMasses(std::mt19937& random, bool damped = false
   if (damped) {
     const Eigen::Matrix3d c = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
     data.damping = 0.1 * (c * c.transpose() + Eigen::Matrix3d::Identity()) + 0.05 * (c - c.transpose());
+    data.friction_slope = 0.2 * entry(random);  // friction rising or falling with the slip speed
   }
   return data;
 }
@@ -146,6 +147,51 @@ TEST(LinearOscillator, UndampedSlipFrequenciesAreTheGeneralisedEigenvaluesOfStif
     ASSERT_EQ(omega.size(), 3u);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(omega[k], std::sqrt(modes.eigenvalues()(k)), 1e-12 * omega[k]) << k;
     EXPECT_TRUE(LinearOscillator<3>(RandomThreeMasses(random, true)).UndampedSlipFrequencies({}).empty());
+  }
+}
+
+// A mass on a belt whose kinetic friction falls with the slip speed, F_k + alpha |s| (alpha < 0).
+// Slipping backwards (s = x' - v_b < 0) it obeys m x'' + (c + alpha) x' + k x = F_k + alpha v_b:
+// the damped oscillator about steady sliding x* = (F_k + alpha v_b)/k, rate zeta = (c + alpha)/2m,
+// x(t) = x* + e^{-zeta t} (A cos w_d t + B sin w_d t) (closed form, independent of the modal
+// bases). With c + alpha < 0 steady sliding is unstable: the motion about it grows.
+TEST(LinearOscillator, FrictionFallingWithSlipSpeedIsNegativeDampingOfTheSlip) {
+  const double m = 2.0, k = 3.0, c = 0.1, v_b = 1.5;
+  for (const double alpha : {0.3, -0.4}) {
+    LinearOscillatorData data;
+    data.mass = Eigen::MatrixXd::Constant(1, 1, m);
+    data.stiffness = Eigen::MatrixXd::Constant(1, 1, k);
+    data.damping = Eigen::MatrixXd::Constant(1, 1, c);
+    data.forcing = Eigen::VectorXd::Zero(1);
+    data.friction_slope = alpha;
+    const LinearOscillator<1> model(data);
+    const LinearOscillator<1>::Parameters p{1.0, 0.5, 0.8, v_b};
+    const double steady = (p.F_k + alpha * v_b) / k, zeta = (c + alpha) / (2.0 * m);
+    const double w_d = std::sqrt(k / m - zeta * zeta);
+    const Eigen::Vector2d start(steady + 0.05, 0.2);  // x' < v_b: slipping backwards
+    const double a = start(0) - steady, b = (start(1) + zeta * a) / w_d;
+    for (const double t : {0.3, 1.1, 2.5}) {
+      const double x = steady + std::exp(-zeta * t) * (a * std::cos(w_d * t) + b * std::sin(w_d * t));
+      const double v = std::exp(-zeta * t) * ((b * w_d - zeta * a) * std::cos(w_d * t) - (a * w_d + zeta * b) * std::sin(w_d * t));
+      const Eigen::Vector2d flow = model.Flow(Mode::kSlipNegative, start, 0.0, t, p);
+      EXPECT_NEAR(flow(0), x, 1e-12) << "alpha = " << alpha << ", t = " << t;
+      EXPECT_NEAR(flow(1), v, 1e-12) << "alpha = " << alpha << ", t = " << t;
+    }
+    const Eigen::Vector2d later = model.Flow(Mode::kSlipNegative, start, 0.0, 2.0 * std::numbers::pi / w_d, p);
+    EXPECT_EQ(std::abs(later(0) - steady) > std::abs(start(0) - steady), c + alpha < 0.0) << "alpha = " << alpha;
+    // The slip is damped (by alpha): no undamped slip frequency; the friction work is not computed.
+    EXPECT_TRUE(model.UndampedSlipFrequencies(p).empty());
+    EXPECT_TRUE(std::isnan(model.KineticForce(p)));
+  }
+  LinearOscillatorData bad;
+  bad.mass = bad.stiffness = Eigen::MatrixXd::Ones(1, 1);
+  bad.forcing = Eigen::VectorXd::Zero(1);
+  bad.friction_slope = std::numeric_limits<double>::quiet_NaN();
+  try {
+    LinearOscillator<1> refused(bad);
+    ADD_FAILURE() << "friction_slope = nan accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "friction_slope");
   }
 }
 

@@ -145,8 +145,14 @@ LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {
     throw Invalid("forcing", fmt::format("has {} entries: valid one per coordinate, {}", data.forcing.size(), n));
   }
   if (!data.forcing.allFinite()) throw Invalid("forcing", "has an entry that is not finite: valid finite entries");
+  if (!std::isfinite(data.friction_slope)) {
+    throw InvalidInput("friction_slope", data.friction_slope, "a finite number (force per unit slip speed)");
+  }
   CheckCoordinateNames(data.coordinates, n, "coordinates");
-  LinearOscillatorModes modes{BasisOf(data, damping, n), BasisOf(data, damping, n - 1), {}, 0.0};
+  // In a slip F = -F_k sign(s) - alpha s: alpha damps the contact's coordinate; a stick holds it.
+  Eigen::MatrixXd slip_damping = damping;
+  slip_damping(n - 1, n - 1) += data.friction_slope;
+  LinearOscillatorModes modes{BasisOf(data, slip_damping, n), BasisOf(data, damping, n - 1), {}, 0.0};
   const Eigen::MatrixXd mass_inverse = data.mass.llt().solve(Eigen::MatrixXd::Identity(n, n));
   const double contact_compliance = mass_inverse(n - 1, n - 1);
   modes.holding.resize(2 * n);

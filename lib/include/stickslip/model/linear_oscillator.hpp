@@ -2,8 +2,9 @@
 // at a fixed number N of coordinates (linear_oscillator_data.hpp gives the equations):
 //   M q'' + C q' + K q = g cos(omega t + phi) + e_N F,
 // the contact against a surface moving at the speed v_b (a belt; 0 for a fixed surface), its
-// relative velocity s = q_N' - v_b; slip (s != 0): F = -F_k sign(s); stick (s = 0 held): F is
-// what keeps q_N'' = 0, admissible while |F| <= F_s. The state is (q, q'). Without forcing
+// relative velocity s = q_N' - v_b; slip (s != 0): F = -(F_k + alpha |s|) sign(s), alpha the
+// data's friction slope (0: Coulomb's constant level); stick (s = 0 held): F is what keeps
+// q_N'' = 0, admissible while |F| <= F_s. The state is (q, q'). Without forcing
 // (g = 0) the model is autonomous: its orbits (self-excited stick-slip on a belt) have a period
 // that is an unknown.
 //
@@ -24,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -137,6 +139,7 @@ class LinearOscillator {
     stiffness_ = data.stiffness;
     damping_ = data.damping.size() == 0 ? Eigen::Matrix<double, N, N>::Zero() : Eigen::Matrix<double, N, N>(data.damping);
     forcing_ = data.forcing;
+    friction_slope_ = data.friction_slope;
     mass_factor_ = mass_.llt();
     compliance_ = mass_factor_.solve(Eigen::Matrix<double, N, N>::Identity());
     // Always computed: copying an uncomputed Eigen::LLT reads its uninitialised status.
@@ -153,10 +156,11 @@ class LinearOscillator {
 
   const ModelDescription& Description() const { return description_; }
   bool Autonomous() const { return forcing_.isZero(); }
-  // Without damping a slip's eigenvalues are +-i omega_k: the omega_k, each once.
+  // Without damping (nor a friction slope, which damps a slip) a slip's eigenvalues are +-i omega_k:
+  // the omega_k, each once.
   std::vector<double> UndampedSlipFrequencies(const Parameters&) const {
     std::vector<double> omega;
-    if (!damping_.isZero()) return omega;
+    if (!damping_.isZero() || friction_slope_ != 0.0) return omega;
     for (int k = 0; k < slip_.size; ++k) {
       if (slip_.weight[k] == 2) omega.push_back(std::abs(slip_.eigenvalues(k).imag()));
     }
@@ -265,13 +269,18 @@ class LinearOscillator {
 
   template <typename T>
   T ContactVelocity(const StateT<T>& x, const ParametersT<T>& p) const { return x(N + kContact) - p.v_b; }
-  // q'' in a mode: M^-1 (g cos psi - K q - C q' + e_N F), with F = -F_k sign(q_N') in a slip and
-  // the holding force in a stick (then q_N'' = 0 exactly).
+  // The friction force in a slip: -(F_k + alpha |s|) sign(s) = -F_k sign(s) - alpha s.
+  template <typename T>
+  T SlipForce(Mode mode, const StateT<T>& x, const ParametersT<T>& p) const {
+    return T(-double(SlipDirection(mode)) * p.F_k - friction_slope_ * (x(N + kContact) - p.v_b));
+  }
+  // q'' in a mode: M^-1 (g cos psi - K q - C q' + e_N F), with F = SlipForce in a slip and the
+  // holding force in a stick (then q_N'' = 0 exactly).
   template <typename T>
   Eigen::Matrix<T, N, 1> Acceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     using std::cos;
     // (Each branch made a T: a conditional between AD expression types would keep a dangling one.)
-    const T friction = mode == Mode::kStick ? StickForce(x, phase, p) : T(-double(SlipDirection(mode)) * p.F_k);
+    const T friction = mode == Mode::kStick ? StickForce(x, phase, p) : SlipForce(mode, x, p);
     Eigen::Matrix<T, N, 1> load = Eigen::Matrix<T, N, 1>::Constant(ZeroLike(p));
     for (int i = 0; i < N; ++i) {
       load(i) += forcing_(i) * cos(phase);
@@ -318,7 +327,11 @@ class LinearOscillator {
   }
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.F_s; }
-  double KineticForce(const Parameters& p) const { return p.F_k; }
+  // The kinetic level; with a friction slope it varies along a slip, and the friction work (which
+  // would need int alpha s^2 dt) is not computed: nan.
+  double KineticForce(const Parameters& p) const {
+    return friction_slope_ == 0.0 ? p.F_k : std::numeric_limits<double>::quiet_NaN();
+  }
   bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.F_s - p.F_k) <= 1e-12 * p.F_s; }
   Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {
     const double f = StickForce(x, phase, p);
@@ -345,7 +358,7 @@ class LinearOscillator {
       dx.template tail<N>() = HeldAcceleration(x, phase);
     } else {
       Eigen::Matrix<double, N, 1> load = Load(x, phase);
-      load(kContact) -= SlipDirection(mode) * p.F_k;
+      load(kContact) += SlipForce(mode, x, p);
       dx.template tail<N>() = mass_factor_.solve(load);
     }
     return dx;
@@ -414,7 +427,8 @@ class LinearOscillator {
     m.held_velocity = stick ? start(N + kContact) : zero;
     m.rest_velocity = p.v_b;
     m.alpha = m.beta = m.forced_re = m.forced_im = m.d_re = m.d_im = StateT<T>::Constant(zero);
-    const T friction = stick || !loaded ? zero : T(-double(SlipDirection(mode)) * p.F_k);
+    // The slip's constant force: -F_k sign(s) + alpha v_b (its -alpha q_N' is in the slip's basis).
+    const T friction = stick || !loaded ? zero : T(-double(SlipDirection(mode)) * p.F_k + friction_slope_ * p.v_b);
     AddStaticResponse(friction, m);
     // None without forcing (where omega, playing no part, may sit on a natural frequency).
     if (loaded && !Autonomous()) AddForcedResponse(p.omega, m);
@@ -515,6 +529,7 @@ class LinearOscillator {
   Eigen::Matrix<double, N, N> mass_, damping_, stiffness_;
   Eigen::Matrix<double, N, N> compliance_;  // M^-1
   Eigen::Matrix<double, N, 1> forcing_;
+  double friction_slope_ = 0.0;  // alpha
   Eigen::LLT<Eigen::Matrix<double, N, N>> mass_factor_;
   // M's block of the coordinates a stick leaves free (unused for N = 1), factored once: the
   // integrator asks for the stick's accelerations at every step.

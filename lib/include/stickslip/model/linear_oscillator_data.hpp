@@ -25,6 +25,11 @@ struct LinearOscillatorData {
   Eigen::MatrixXd damping;    // C, any; empty: none
   Eigen::MatrixXd stiffness;  // K, symmetric positive definite
   Eigen::VectorXd forcing;    // g: the force amplitude on each coordinate
+  // alpha: in a slip the kinetic level is F_k + alpha |s|, s the contact's relative velocity (force
+  // per unit speed; alpha < 0, friction falling with the slip speed, destabilises steady sliding on
+  // a belt). F = -(F_k + alpha |s|) sign(s) = -F_k sign(s) - alpha s keeps every mode linear: alpha
+  // adds to the contact's damping in a slip.
+  double friction_slope = 0.0;
   std::vector<std::string> coordinates;  // their names; empty: x1 ... xn
   std::string name = "linear-oscillator";
 };
@@ -59,7 +64,8 @@ struct LinearOscillatorModes {
 // followed by letters, digits or '_' (so that x1, x1' and the file columns stay distinct).
 void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n, const std::string& field);
 
-// Throws InvalidInput naming the field (mass, damping, stiffness, forcing, coordinates) when M or K
+// Throws InvalidInput naming the field (mass, damping, stiffness, forcing, friction_slope,
+// coordinates) when alpha is not finite, M or K
 // is not square, symmetric and positive definite with finite entries, C is not n x n and finite,
 // the sizes disagree, n is not 1 ... 50, a mode's system is not finite (scales too far apart) or
 // its eigenvectors reproduce the matrix exponential worse than 1e-9 (nearly dependent ones, as
