@@ -243,17 +243,26 @@ TEST(ResultFiles, MissingColumnNamesFileAndColumn) {
 }
 
 // A run stored before the measure columns existed is refused by name (run it again to regenerate).
+// `table` without `count` columns from the one named `first` (the header's), on its `lines` lines.
+std::string WithoutColumns(const std::string& table, int lines, const std::string& first, int count) {
+  const std::vector<std::string> header = Fields(table.substr(0, table.find('\n')));
+  const auto at = std::find(header.begin(), header.end(), first) - header.begin();
+  auto drop = [&](const std::string& l) {
+    std::vector<std::string> fields = Fields(l);
+    fields.erase(fields.begin() + at, fields.begin() + at + count);
+    return Join(fields);
+  };
+  std::string edited = table;
+  for (int line = 1; line <= lines; ++line) edited = EditLine(edited, line, drop);
+  return edited;
+}
+
 TEST(ResultFiles, FileWithoutTheMeasureColumnsNamesTheFirstMissing) {
   RunFiles files = StoredTexts(kRun);
   const std::vector<std::string> header = Fields(files.branch_csv.substr(0, files.branch_csv.find('\n')));
   const auto first = std::find(header.begin(), header.end(), "amplitude:x1") - header.begin();
   ASSERT_EQ(header[first + 5], "sticks");
-  auto drop = [&](const std::string& l) {
-    std::vector<std::string> fields = Fields(l);
-    fields.erase(fields.begin() + first, fields.begin() + first + 6);
-    return Join(fields);
-  };
-  for (int line = 1; line <= 107; ++line) files.branch_csv = EditLine(files.branch_csv, line, drop);
+  files.branch_csv = WithoutColumns(files.branch_csv, 107, "amplitude:x1", 6);
   EXPECT_EQ(ParseError(files), "stored/branch.csv:1: column 'amplitude:x1' is missing");
 }
 
@@ -264,14 +273,9 @@ TEST(ResultFiles, FileWithoutTheFrictionMeasuresReadsThemAsNaN) {
   const std::vector<std::string> header = Fields(files.branch_csv.substr(0, files.branch_csv.find('\n')));
   const auto first = std::find(header.begin(), header.end(), "friction-work") - header.begin();
   ASSERT_EQ(header[first + 1], "equivalent-damping");
-  auto drop = [&](const std::string& l) {
-    std::vector<std::string> fields = Fields(l);
-    fields.erase(fields.begin() + first, fields.begin() + first + 2);
-    return Join(fields);
-  };
   const StoredRun whole = ParseRunFiles(files, "stored");
-  for (int line = 1; line <= 107; ++line) files.branch_csv = EditLine(files.branch_csv, line, drop);
-  for (int line = 1; line <= 8; ++line) files.special_points_csv = EditLine(files.special_points_csv, line, drop);
+  files.branch_csv = WithoutColumns(files.branch_csv, 107, "friction-work", 2);
+  files.special_points_csv = WithoutColumns(files.special_points_csv, 8, "friction-work", 2);
   const StoredRun old = ParseRunFiles(files, "stored");
   EXPECT_EQ(old.absent_measures, (std::vector<std::string>{"friction-work", "equivalent-damping"}));
   ASSERT_EQ(old.branch.size(), whole.branch.size());
@@ -287,15 +291,10 @@ TEST(ResultFiles, FileWithoutTheFrictionMeasuresReadsThemAsNaN) {
   EXPECT_TRUE(std::isnan(ParseRunFiles(again, "stored").branch.front().measures.friction_work));
   // Both columns or neither, and the same in both tables.
   RunFiles one = StoredTexts(kRun);
-  auto drop_one = [&](const std::string& l) {
-    std::vector<std::string> fields = Fields(l);
-    fields.erase(fields.begin() + first + 1);
-    return Join(fields);
-  };
-  for (int line = 1; line <= 107; ++line) one.branch_csv = EditLine(one.branch_csv, line, drop_one);
+  one.branch_csv = WithoutColumns(one.branch_csv, 107, "equivalent-damping", 1);
   EXPECT_EQ(ParseError(one), "stored/branch.csv:1: column 'equivalent-damping' is missing");
   RunFiles mixed = StoredTexts(kRun);
-  for (int line = 1; line <= 107; ++line) mixed.branch_csv = EditLine(mixed.branch_csv, line, drop);
+  mixed.branch_csv = WithoutColumns(mixed.branch_csv, 107, "friction-work", 2);
   EXPECT_EQ(ParseError(mixed), "stored/special-points.csv:1: the point columns differ from branch.csv's: valid the same, "
                                "then type, test_function, located");
 }
