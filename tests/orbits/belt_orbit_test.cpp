@@ -148,5 +148,51 @@ TEST(BeltStickSlip, DampedCycleEndsInAFoldWithItsStickFinite) {
   EXPECT_NEAR(u(2), 0.91, 0.01);
 }
 
+// Kinetic friction falling with the slip speed, F_k + alpha |s| with c + alpha < 0, makes steady
+// sliding (x* = (F_k + alpha v_b)/k) unstable: Odeint, started next to it, grows into a stick-slip
+// cycle. Its last cycle, from the simulated events, is the autonomous orbit 'stick slip-' the
+// periodicity equations solve from it (Newton), to the simulator's event tolerance.
+TEST(BeltStickSlip, FrictionFallingWithSpeedGrowsSteadySlidingIntoTheSolvedCycle) {
+  LinearOscillatorData data;
+  data.mass = data.stiffness = Eigen::MatrixXd::Ones(1, 1);
+  data.damping = Eigen::MatrixXd::Constant(1, 1, 0.05);
+  data.forcing = Eigen::VectorXd::Zero(1);
+  data.friction_slope = -0.3;
+  const Belt model(data);
+  const Belt::Parameters p{1.0, 1.0, 1.5, 0.3};
+  const double steady = (p.F_k + data.friction_slope * p.v_b) / 1.0;
+  BasicSimulationOptions<Belt::State> options;
+  options.duration = 200.0;
+  const auto odeint = SimulateOdeint(model, p, Belt::State(steady + 1e-3, 0.0), 0.0, options);
+  ASSERT_TRUE(odeint.Completed()) << odeint.message;
+  std::vector<std::size_t> entries;  // events into a stick
+  for (std::size_t i = 0; i < odeint.events.size(); ++i) {
+    if (odeint.events[i].mode_after == Mode::kStick) entries.push_back(i);
+  }
+  ASSERT_GE(entries.size(), 3u) << "steady sliding did not grow into stick-slip";
+  // The last whole cycle: a stick entry, the stick's exit, the next entry.
+  const auto& entry = odeint.events[entries[entries.size() - 2]];
+  const auto& exit = odeint.events[entries[entries.size() - 2] + 1];
+  const auto& next = odeint.events[entries.back()];
+  ASSERT_EQ(exit.mode_after, Mode::kSlipNegative);
+  ASSERT_EQ(entries.back(), entries[entries.size() - 2] + 2) << "one slip per cycle";
+  const double stick = exit.t - entry.t, slip = next.t - exit.t;
+
+  const Equations equations(model, Signature::Parse("stick slip-"), Shooting::kSingle);
+  Eigen::VectorXd guess(8);
+  guess << entry.state(0), 0.0, stick, slip, p.omega, p.F_k, p.F_s, p.v_b;
+  const BasicOrbitSystem<Belt> system(equations, guess, {0, 1, 2, 3}, false);
+  const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
+  ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
+  const Eigen::VectorXd v = system.Variables(solved.solution);
+  EXPECT_NEAR(v(0), entry.state(0), 1e-7);
+  EXPECT_NEAR(v(0), next.state(0), 1e-7);
+  EXPECT_NEAR(v(2), stick, 1e-7);
+  EXPECT_NEAR(v(3), slip, 1e-7);
+  EXPECT_GT(SmallestMargin(AdmissibilityMargins(model, OrbitOf(v))).value, 0.0);
+  RecordProperty("cycle_stick_slip", fmt::format("{:.10g} {:.10g}", v(2), v(3)));
+  RecordProperty("odeint_difference", fmt::format("{:.2g}", std::max(std::abs(v(2) - stick), std::abs(v(3) - slip))));
+}
+
 }  // namespace
 }  // namespace stickslip
