@@ -4,6 +4,8 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "stickslip/invalid_input.hpp"
 #include "zero_finder.hpp"
@@ -68,6 +70,28 @@ class IntervalBounds {
  private:
   const ExponentialSum& f_;
 };
+
+// Undamped (every rate 0), with no polynomial factor but a drift: the sum is a SinusoidSum, whose
+// bounds hold on the whole interval at once (no exponential per sub-interval and per term), and
+// its search has the same guarantee and conventions. The undamped oscillators' events take it.
+std::optional<SinusoidSum> AsSinusoidSum(const ExponentialSum& f) {
+  double constant = 0.0, slope = 0.0;
+  std::vector<Sinusoid> sinusoids;
+  for (const ExponentialTerm& e : f.terms()) {
+    if (Vanishes(e.sinusoid)) continue;
+    if (e.rate != 0.0) return std::nullopt;
+    if (e.sinusoid.frequency == 0.0 && e.power <= 1) {
+      (e.power == 0 ? constant : slope) += e.sinusoid.cos_coefficient;
+    } else if (e.power == 0) {
+      sinusoids.push_back(e.sinusoid);
+    } else {
+      return std::nullopt;
+    }
+  }
+  // f = 0 (every time a zero) stays with the search that reports it as not bounded.
+  if (constant == 0.0 && slope == 0.0 && sinusoids.empty()) return std::nullopt;
+  return SinusoidSum(constant, slope, std::move(sinusoids));
+}
 
 }  // namespace
 
@@ -158,13 +182,15 @@ bool ExponentialSum::IsFinite() const {
 
 // The entry points of the shared search (zero_finder.hpp) with bounds per sub-interval.
 ZeroSearch Zeros(const ExponentialSum& f, double a, double b, int max_count, const ZeroSearchOptions& options) {
+  if (const std::optional<SinusoidSum> undamped = AsSinusoidSum(f)) return Zeros(*undamped, a, b, max_count, options);
   return detail::FindZeros<IntervalBounds>(f, a, b, max_count, options);
 }
 Extrema MinimumAndMaximum(const ExponentialSum& f, double a, double b, const ZeroSearchOptions& options) {
+  if (const std::optional<SinusoidSum> undamped = AsSinusoidSum(f)) return MinimumAndMaximum(*undamped, a, b, options);
   return detail::FindExtrema<IntervalBounds>(f, a, b, options);
 }
 Extremum Minimum(const ExponentialSum& f, double a, double b, const ZeroSearchOptions& options) {
-  return detail::FindExtrema<IntervalBounds>(f, a, b, options).minimum;
+  return MinimumAndMaximum(f, a, b, options).minimum;
 }
 
 }  // namespace stickslip

@@ -150,6 +150,12 @@ class LinearOscillator {
     }
     slip_ = BasisOf(modes.slip);
     stick_ = BasisOf(modes.stick);
+    // Undamped, a mode's eigenvalues are +-i omega_k exactly: their rounding-level real parts are
+    // dropped, so that its functions are pure sinusoid sums (exponential_sum.hpp's faster search).
+    if (damping_.isZero()) {
+      stick_.eigenvalues.real().setZero();
+      if (friction_slope_ == 0.0) slip_.eigenvalues.real().setZero();
+    }
     holding_ = modes.holding;
     holding_forcing_ = modes.holding_forcing;
   }
