@@ -152,10 +152,8 @@ class LinearOscillator {
     stick_ = BasisOf(modes.stick);
     // Undamped, a mode's eigenvalues are +-i omega_k exactly: their rounding-level real parts are
     // dropped, so that its functions are pure sinusoid sums (exponential_sum.hpp's faster search).
-    if (damping_.isZero()) {
-      stick_.eigenvalues.real().setZero();
-      if (friction_slope_ == 0.0) slip_.eigenvalues.real().setZero();
-    }
+    if (damping_.isZero()) stick_.eigenvalues.real().setZero();
+    if (UndampedSlip()) slip_.eigenvalues.real().setZero();
     holding_ = modes.holding;
     holding_forcing_ = modes.holding_forcing;
   }
@@ -164,9 +162,10 @@ class LinearOscillator {
   bool Autonomous() const { return forcing_.isZero(); }
   // Without damping (nor a friction slope, which damps a slip) a slip's eigenvalues are +-i omega_k:
   // the omega_k, each once.
+  bool UndampedSlip() const { return damping_.isZero() && friction_slope_ == 0.0; }
   std::vector<double> UndampedSlipFrequencies(const Parameters&) const {
     std::vector<double> omega;
-    if (!damping_.isZero() || friction_slope_ != 0.0) return omega;
+    if (!UndampedSlip()) return omega;
     for (int k = 0; k < slip_.size; ++k) {
       if (slip_.weight[k] == 2) omega.push_back(std::abs(slip_.eigenvalues(k).imag()));
     }
