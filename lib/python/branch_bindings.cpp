@@ -264,7 +264,7 @@ class Stepper {
     d["label"] = PointLabels(branch)[i];
     d["lambda"] = p.lambda;
     const OrbitContinuationProblem& problem = continuation_->problem();
-    for (const auto& [name, value] : SolutionColumns(problem.system->ToOrbit(p.u.head(problem.system->UnknownCount())))) {
+    for (const auto& [name, value] : SolutionColumns(ToOrbit(*problem.system, p.u))) {
       d[py::str(name)] = value;
     }
     const std::vector<PointColumn>& columns = problem.monitor->Columns();

@@ -15,8 +15,10 @@
 
 #include <Eigen/SVD>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
+#include "stickslip/branches/model_orbit_continuation.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
@@ -35,59 +37,76 @@ double StickingLevel(double r) {
   return std::abs(o.v) / std::sqrt(o.u * o.u + 1.0 / std::pow(r, 4));
 }
 
-// The smallest admissibility margin of the orbit at the unknowns u: zero where it stops being
-// the non-sticking orbit (the library's margins; the closed form is what they are checked against).
-class SmallestMarginMonitor : public Monitor {
- public:
-  SmallestMarginMonitor(const DenHartogOscillator& model, const System& system) : model_(model), system_(system) {}
-  std::vector<TestFunctionInfo> TestFunctions() const override { return {{"margin", "ST", true}}; }
-  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd*) const override {
-    const Eigen::VectorXd v = system_.Variables(u);
-    const BasicOrbit<DenHartogOscillator> orbit{
-        system_.equations().signature(), {v(3), v(4), v(5), v(6)}, {v(0), 0.0}, v(1), {v(2)}};
-    *tests = Eigen::VectorXd::Constant(1, SmallestMargin(AdmissibilityMargins(model_, orbit)).value);
-  }
+// Den Hartog's non-sticking orbit as a start of the library's branches.
+BasicOrbit<DenHartogOscillator> DenHartogStart(double r, double beta) {
+  const DenHartogOrbit o(r, beta);
+  return {Signature::Parse("slip- / antisymmetric"), {r, beta, beta, 0.0}, {o.amplitude, 0.0}, o.phi, {o.Period() / 2}};
+}
 
- private:
-  const DenHartogOscillator& model_;
-  const System& system_;
-};
+// A branch from it in `parameter`, with the library's defaults.
+BasicOrbitContinuationSetup<DenHartogOscillator> DenHartogSetup(double r, double beta, const char* parameter) {
+  return {DenHartogStart(r, beta), {}, parameter, ShootingChoice::kAuto, LinearSolverType::kKlu, {}, {}, {}, {},
+          kDefaultMaxAmplitude, kDefaultResonanceApproach, DenHartogModel()};
+}
 
+// The branch of the general model through the same path as the paper's (ContinueOrbit: the erased
+// orbit problem, the orbit monitor, the resonance ends), which proves the seam is the model
+// interface: every point's amplitude is Den Hartog's X(r, beta), and the branch ends at the stop
+// margin's sign change (SK), where the turning points start to stick, at beta*.
 class DenHartogBranchInFriction : public testing::TestWithParam<double> {};
 
-// From beta = 0.05 upwards with the static level tied to the kinetic one: every point's amplitude
-// is Den Hartog's X(r, beta), and the branch ends where the turning points start to stick, at beta*.
 TEST_P(DenHartogBranchInFriction, FollowsTheClosedFormAmplitudeAndEndsWhereTheTurningPointsStick) {
   const double r = GetParam();
-  const DenHartogOscillator model = DenHartogModel();
-  const Equations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
-  const Eigen::VectorXd start = DenHartogVariables(DenHartogOrbit(r, 0.05), equations);
-  const System system(equations, start, {0, 1, 2, 4}, true);  // x0, phi, the half period, F_k (= F_s)
-  const SmallestMarginMonitor monitor(model, system);
-  ContinuationOptions options;
-  options.parameter_index = 3;
-  options.lambda_max = 2.0;
-  options.max_points = 500;
-  const Branch branch = Continuation(system, &monitor, options, system.Unknowns(start)).Run();
+  BasicOrbitContinuationSetup<DenHartogOscillator> setup = DenHartogSetup(r, 0.05, "F_k");
+  setup.unknowns.tie_static_friction = true;
+  setup.options.lambda_max = 2.0;
+  setup.options.max_points = 500;
+  const BasicOrbitBranch<DenHartogOscillator> result = ContinueOrbit(setup);
+  const Branch& branch = result.branch;
   ASSERT_GT(branch.points.size(), 5u);
+  ASSERT_EQ(result.orbits.size(), branch.points.size());
   double worst = 0.0;
-  for (const BranchPoint& point : branch.points) {
-    const double beta = point.u(3);
-    EXPECT_NEAR(point.u(0), DenHartogOrbit(r, beta).amplitude, 1e-9) << "beta = " << beta;
-    EXPECT_NEAR(point.u(2), std::numbers::pi / r, 1e-9) << "beta = " << beta;
-    worst = std::max(worst, std::abs(point.u(0) - DenHartogOrbit(r, beta).amplitude));
+  for (const BasicOrbit<DenHartogOscillator>& orbit : result.orbits) {
+    const double beta = orbit.parameters.F_k;
+    EXPECT_EQ(orbit.parameters.F_s, beta) << "tied";
+    EXPECT_NEAR(orbit.start(0), DenHartogOrbit(r, beta).amplitude, 1e-9) << "beta = " << beta;
+    EXPECT_NEAR(orbit.durations[0], std::numbers::pi / r, 1e-9) << "beta = " << beta;
+    worst = std::max(worst, std::abs(orbit.start(0) - DenHartogOrbit(r, beta).amplitude));
   }
   RecordProperty("points", static_cast<int>(branch.points.size()));
   RecordProperty("worst_amplitude_difference", fmt::format("{:.3g}", worst));
   const auto stick = std::find_if(branch.special_points.begin(), branch.special_points.end(),
-                                  [](const SpecialPoint& p) { return p.type == "ST"; });
+                                  [](const SpecialPoint& p) { return p.type == "SK"; });
   ASSERT_NE(stick, branch.special_points.end()) << ToString(branch.end) << ": " << branch.end_message;
   EXPECT_TRUE(stick->located);
-  EXPECT_NEAR(branch.points[stick->point].u(3), StickingLevel(r), 1e-8) << "r = " << r;
-  RecordProperty("sticking_level_difference", fmt::format("{:.3g}", branch.points[stick->point].u(3) - StickingLevel(r)));
+  EXPECT_NEAR(stick->lambda, StickingLevel(r), 1e-8) << "r = " << r;
+  RecordProperty("sticking_level_difference", fmt::format("{:.3g}", stick->lambda - StickingLevel(r)));
 }
 
 INSTANTIATE_TEST_SUITE_P(FrequencyRatios, DenHartogBranchInFriction, testing::Values(0.8, 1.5, 2.5));
+
+// The columns are the model's: its one coordinate's (x) amplitude and peak-to-peak, two multipliers.
+// Den Hartog's orbit, undamped and never sticking, has no bounded amplitude at r = 1 (X grows as
+// 1/(1 - r^2)): a branch in the forcing frequency ends there as a resonance, at omega_1 = 1.
+TEST(DenHartogBranchInFrequency, EndsAtTheResonanceOfTheUndampedSlip) {
+  BasicOrbitContinuationSetup<DenHartogOscillator> setup = DenHartogSetup(0.6, 0.1, "omega");
+  setup.options.lambda_max = 2.0;
+  setup.options.max_points = 2000;
+  const BasicOrbitBranch<DenHartogOscillator> result = ContinueOrbit(setup);
+  std::vector<std::string> names;
+  for (const PointColumn& c : result.columns) names.push_back(c.name);
+  for (const char* name : {"amplitude:x", "peak-to-peak:x", "floquet:mu2_re", "friction-work"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name << " not in " << fmt::format("{}", fmt::join(names, " "));
+  }
+  EXPECT_EQ(std::find(names.begin(), names.end(), "floquet:mu3_re"), names.end());
+  EXPECT_EQ(result.branch.end, BranchEnd::kStopped) << result.branch.end_message;
+  EXPECT_TRUE(result.branch.end_message.starts_with("resonance: at omega_1 = 1,")) << result.branch.end_message;
+  for (const BasicOrbit<DenHartogOscillator>& orbit : result.orbits) {
+    const double r = orbit.parameters.omega;
+    EXPECT_NEAR(orbit.start(0), DenHartogOrbit(r, 0.1).amplitude, 1e-9 * DenHartogOrbit(r, 0.1).amplitude) << "r = " << r;
+  }
+  EXPECT_GT(result.orbits.back().parameters.omega, 0.99);
+}
 
 // Newton from the one-term harmonic balance's amplitude sqrt(1 - (4 beta/pi)^2) / |1 - r^2| (the
 // equivalent viscous damping) converges to Den Hartog's X; the balance's error is within 0.7 beta^2

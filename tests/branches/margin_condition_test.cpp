@@ -187,7 +187,7 @@ double RelativeSmallestSingularValue(const char* trace, const char* branch, cons
   const MarginGradient g = MarginGradientAt(orbit, m, m.t - t0);
   Eigen::VectorXd f;
   JacobianMatrix j;
-  problem.system->Evaluate(problem.system->Unknowns(orbit), &f, &j);
+  problem.system->Evaluate(problem.start, &f, &j);
   const Eigen::MatrixXd& periodicity = std::get<Eigen::MatrixXd>(j);
   Eigen::MatrixXd rows(2, g.d_value.size());
   rows << g.d_value, g.d_slope;

@@ -41,7 +41,7 @@ BifurcationBranchStart BranchFromBifurcation(const SpecialPoint& special, const 
   }
   if (side != 1 && side != -1) throw InvalidInput("side", side, "+1 or -1");
   const OrbitContinuationProblem original = MakeOrbitContinuation(setup);
-  const Orbit at = original.system->ToOrbit(special.u);
+  const Orbit at = ToOrbit(*original.system, special.u);
   OrbitContinuationSetup next = setup;
   if (special.type == "BP") {
     next.start = at;

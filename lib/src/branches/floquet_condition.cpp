@@ -73,10 +73,11 @@ TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
 
 // p'(mu) at mu = +-1 for p(mu) = det(mu I - M): the trace of the adjugate of mu I - M, the sum of
 // its principal minors of order size - 1.
-template <int S>
-double Slope(const BasicStability<S>& s, double mu) {
-  using Matrix = typename BasicStability<S>::Matrix;
-  const Matrix a = mu * Matrix::Identity() - s.monodromy;
+// The paper's model's monodromy (4 x 4: the conditions are of its orbits).
+double Slope(const OrbitStability& s, double mu) {
+  constexpr int S = Pascal2014::kStateSize;
+  using Matrix = Eigen::Matrix<double, S, S>;
+  const Matrix a = mu * Matrix::Identity() - Matrix(s.monodromy);
   double sum = 0.0;
   for (int k = 0; k < S; ++k) {
     Eigen::Matrix<double, S - 1, S - 1> minor;
@@ -128,9 +129,9 @@ class Floquet final : public OrbitCondition {
   std::vector<WatchedColumn> CodimensionTwoTests() const override {
     switch (kind_) {
       case Kind::kFold:
-        return {{orbit_columns::kFlipTest, "LPPD", {}}, {"floquet:p'(1)", "R1", [](const Stability& s) { return Slope(s, 1.0); }}};
+        return {{orbit_columns::kFlipTest, "LPPD", {}}, {"floquet:p'(1)", "R1", [](const OrbitStability& s) { return Slope(s, 1.0); }}};
       case Kind::kFlip:
-        return {{orbit_columns::kFoldTest, "LPPD", {}}, {"floquet:p'(-1)", "R2", [](const Stability& s) { return Slope(s, -1.0); }}};
+        return {{orbit_columns::kFoldTest, "LPPD", {}}, {"floquet:p'(-1)", "R2", [](const OrbitStability& s) { return Slope(s, -1.0); }}};
       case Kind::kSymmetry:
       case Kind::kTorus: break;
     }

@@ -8,9 +8,11 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/pascal_2014.hpp"
+#include "stickslip/branches/model_orbit_continuation.hpp"
 #include "stickslip/orbits/slip_resonance.hpp"
 
 
@@ -18,45 +20,44 @@ namespace stickslip {
 
 namespace {
 
-namespace ov = orbit_variables;
-
-// The continued parameter's range stops at its valid range (model/pascal_2014/parameters.hpp), and u_r >= u_s
-// (eq. 4) bounds a continuation in either while the other is held: bounds located exactly (EP).
-// A released u_s reaching zero ends the family by the sliding-friction margin, a domain boundary.
-void KeepInPhysicalRanges(const OrbitContinuationSetup& setup, const std::vector<int>& free, int parameter,
-                          ContinuationOptions* options) {
-  const int n = setup.start.signature.size();
-  const std::vector<ParameterDescription>& ranges = Pascal2014{}.Description().parameters;
-  for (int k = 0; k < kParameterCount; ++k) {
-    if (parameter != ov::Parameter(n, kAllParameters[k])) continue;
+// The continued parameter's range stops at its valid range (the model's description), and the
+// static friction level at or above the kinetic one (eq. 4 for the paper's model) bounds a
+// continuation in either while the other is held: bounds located exactly (EP). A released
+// kinetic level reaching zero ends the family by the sliding-friction margin, a domain boundary.
+void KeepInPhysicalRanges(const OrbitContinuationParts& parts, ContinuationOptions* options) {
+  const OrbitLayout& layout = parts.variables.layout;
+  const std::vector<ParameterDescription>& ranges = parts.system->description().parameters;
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    if (parts.parameter != layout.Parameter(static_cast<int>(k))) continue;
     options->lambda_min = std::max(options->lambda_min, ranges[k].minimum);
     options->lambda_max = std::min(options->lambda_max, ranges[k].maximum);
   }
-  const int kinetic = ov::KineticLevel(n), static_level = ov::StaticLevel(n);
-  const bool held_kinetic = std::find(free.begin(), free.end(), kinetic) == free.end();
+  const int kinetic = parts.variables.kinetic_level, static_level = parts.variables.static_level;
+  const bool held_kinetic = std::find(parts.free.begin(), parts.free.end(), kinetic) == parts.free.end();
   const bool held_static =
-      std::find(free.begin(), free.end(), static_level) == free.end() && !setup.unknowns.tie_static_friction;
-  const Eigen::VectorXd start = ov::Pack(setup.start);
-  if (parameter == static_level && held_kinetic) options->lambda_min = std::max(options->lambda_min, start(kinetic));
-  if (parameter == kinetic && held_static) options->lambda_max = std::min(options->lambda_max, start(static_level));
+      std::find(parts.free.begin(), parts.free.end(), static_level) == parts.free.end() && !parts.tie_static_friction;
+  if (parts.parameter == static_level && held_kinetic) {
+    options->lambda_min = std::max(options->lambda_min, parts.start(kinetic));
+  }
+  if (parts.parameter == kinetic && held_static) options->lambda_max = std::min(options->lambda_max, parts.start(static_level));
 }
 
-// The condition's equations in the unknowns of the periodicity equations.
+// The condition's equations in the unknowns of the paper's model's periodicity equations.
 class ConditionEquations final : public ExtraEquations {
  public:
-  ConditionEquations(const OrbitSystem& system, std::shared_ptr<const OrbitCondition> condition)
+  ConditionEquations(const OrbitProblem& system, std::shared_ptr<const OrbitCondition> condition)
       : system_(system), condition_(std::move(condition)) {}
   int UnknownCount() const override { return condition_->ExtraUnknownCount(); }
   int EquationCount() const override { return condition_->EquationCount(); }
   void Evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& e, Eigen::VectorXd* residual, Eigen::MatrixXd* d_u,
                 Eigen::MatrixXd* d_e) const override {
     Eigen::MatrixXd d_variables;
-    condition_->Evaluate(system_.ToOrbit(u), e, residual, d_u ? &d_variables : nullptr, d_e);
+    condition_->Evaluate(ToOrbit(system_, u), e, residual, d_u ? &d_variables : nullptr, d_e);
     if (d_u) *d_u = system_.ToUnknowns(d_variables);
   }
 
  private:
-  const OrbitSystem& system_;
+  const OrbitProblem& system_;
   std::shared_ptr<const OrbitCondition> condition_;
 };
 
@@ -67,54 +68,43 @@ const NonlinearSystem& OrbitContinuationProblem::Continued() const {
   return *system;
 }
 
-OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup) {
-  if (!(setup.max_amplitude > 0.0)) throw InvalidInput("max_amplitude", setup.max_amplitude, "max_amplitude > 0");
-  if (!(setup.resonance_approach >= 0.0 && setup.resonance_approach < 1.0)) {
-    throw InvalidInput("resonance_approach", setup.resonance_approach, "0 <= resonance_approach < 1");
+void CheckResonanceLimits(double max_amplitude, double resonance_approach) {
+  if (!(max_amplitude > 0.0)) throw InvalidInput("max_amplitude", max_amplitude, "max_amplitude > 0");
+  if (!(resonance_approach >= 0.0 && resonance_approach < 1.0)) {
+    throw InvalidInput("resonance_approach", resonance_approach, "0 <= resonance_approach < 1");
   }
-  const Signature& signature = setup.start.signature;
-  const int n = signature.size();
-  const std::vector<int> free = FreeIndices(signature, setup.unknowns);
-  std::vector<int> unknowns = free;
-  unknowns.push_back(ContinuedVariable(signature, free, setup.unknowns.tie_static_friction, setup.parameter));
-  const Shooting shooting = ResolveShooting(setup.shooting, n);
+}
+
+OrbitContinuationProblem AssembleOrbitContinuation(OrbitContinuationParts parts) {
   OrbitContinuationProblem problem;
-  problem.system = std::make_unique<OrbitSystem>(setup.start, unknowns, setup.unknowns.tie_static_friction,
-                                                 shooting, setup.flow);
-  std::vector<std::string> unwatched = setup.unwatched;
+  std::vector<std::string> unwatched = parts.unwatched;
   std::vector<WatchedColumn> watched;
-  if (setup.condition) {
-    watched = setup.condition->CodimensionTwoTests();
-    problem.extra = std::make_unique<ConditionEquations>(*problem.system, setup.condition);
-    problem.augmented = std::make_unique<AugmentedSystem>(*problem.system, *problem.extra);
-    for (std::string& name : setup.condition->Defining()) unwatched.push_back(std::move(name));
+  if (parts.condition) {
+    watched = parts.condition->CodimensionTwoTests();
+    problem.extra = std::make_unique<ConditionEquations>(*parts.system, parts.condition);
+    problem.augmented = std::make_unique<AugmentedSystem>(*parts.system, *problem.extra);
+    for (std::string& name : parts.condition->Defining()) unwatched.push_back(std::move(name));
   }
-  problem.monitor = std::make_unique<OrbitMonitor>(*problem.system, setup.start, std::move(unwatched), std::move(watched));
-  problem.options = setup.options;
-  problem.options.parameter_index = static_cast<int>(free.size());
-  problem.options.parameter_name = setup.parameter;
-  KeepInPhysicalRanges(setup, free, unknowns.back(), &problem.options);
-  if (shooting == Shooting::kMultiple && problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
-    problem.options.corrector.linear_solver = setup.sparse_solver;
+  problem.start = parts.system->Unknowns(parts.start);
+  problem.monitor = std::make_unique<OrbitMonitor>(*parts.system, problem.start, std::move(unwatched), std::move(watched));
+  problem.options = parts.options;
+  problem.options.parameter_index = static_cast<int>(parts.free.size());
+  problem.options.parameter_name = parts.parameter_name;
+  KeepInPhysicalRanges(parts, &problem.options);
+  if (parts.system->shooting() == Shooting::kMultiple &&
+      problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
+    problem.options.corrector.linear_solver = parts.sparse_solver;
   }
-  problem.start = problem.system->Unknowns(setup.start);
-  if (setup.condition) {
-    const Eigen::VectorXd extra = setup.condition->ExtraUnknowns(setup.start);
-    problem.start.conservativeResize(problem.start.size() + extra.size());
-    problem.start.tail(extra.size()) = extra;
+  if (parts.condition) {
+    problem.start.conservativeResize(problem.start.size() + parts.condition_start.size());
+    problem.start.tail(parts.condition_start.size()) = parts.condition_start;
   }
+  problem.system = std::move(parts.system);
   return problem;
 }
 
-OrbitBranch ToOrbitBranch(const OrbitContinuationProblem& problem, Branch branch) {
-  OrbitBranch result;
-  result.shooting = problem.system->equations().shooting();
-  result.columns = problem.monitor->Columns();
-  result.branch = std::move(branch);
-  const int unknowns = problem.system->UnknownCount();
-  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(problem.system->ToOrbit(p.u.head(unknowns)));
-  return result;
-}
+template OrbitContinuationProblem MakeOrbitContinuation(const OrbitContinuationSetup& setup);
+template OrbitBranch ToOrbitBranch<Pascal2014>(const OrbitContinuationProblem& problem, Branch branch);
 
 Branch EndedAt(Branch branch, const BranchStop& stop) {
   branch.points.resize(stop.point + 1);
@@ -128,21 +118,22 @@ Branch EndedAt(Branch branch, const BranchStop& stop) {
   return branch;
 }
 
-OrbitContinuation::OrbitContinuation(const OrbitContinuationSetup& setup)
-    : problem_(MakeOrbitContinuation(setup)),
+OrbitContinuation::OrbitContinuation(OrbitContinuationProblem problem, double max_amplitude, double resonance_approach)
+    : problem_(std::move(problem)),
       continuation_(std::make_unique<Continuation>(problem_.Continued(), problem_.monitor.get(), problem_.options,
                                                    problem_.start)),
-      max_amplitude_(setup.max_amplitude),
-      resonance_approach_(setup.resonance_approach),
-      parameter_(setup.parameter) {
-  auto recorded = [&](const char* name) {
-    for (const PointColumn& c : problem_.monitor->Columns()) {
-      if (c.name == name && !c.monitored) return c.index;
-    }
-    throw std::logic_error(std::string("the orbit monitor records no ") + name);
-  };
-  amplitude_x1_ = recorded(orbit_columns::kAmplitudeX1);
-  amplitude_x2_ = recorded(orbit_columns::kAmplitudeX2);
+      max_amplitude_(max_amplitude),
+      resonance_approach_(resonance_approach) {
+  const std::vector<std::string>& coordinates = problem_.system->description().coordinates;
+  for (const std::string& coordinate : coordinates) {
+    const std::string name = "amplitude:" + coordinate;
+    const std::vector<PointColumn>& columns = problem_.monitor->Columns();
+    const auto column = std::find_if(columns.begin(), columns.end(),
+                                     [&](const PointColumn& c) { return c.name == name && !c.monitored; });
+    if (column == columns.end()) throw std::logic_error("the orbit monitor records no " + name);
+    amplitudes_.push_back(column->index);
+  }
+  amplitude_name_ = fmt::format("max(|{}|)", fmt::join(coordinates, "|, |"));
 }
 
 std::optional<BranchStop> OrbitContinuation::Resonance() {
@@ -160,10 +151,15 @@ std::optional<BranchStop> OrbitContinuation::Resonance() {
   return std::nullopt;
 }
 
-// max |x1|, |x2| over the orbit as the monitor recorded it, exact; nan where undefined.
+// The largest coordinate amplitude over the orbit as the monitor recorded it, exact; nan where undefined.
 double OrbitContinuation::Amplitude(const BranchPoint& point) const {
-  const double x1 = point.recorded(amplitude_x1_), x2 = point.recorded(amplitude_x2_);
-  return std::isnan(x1) || std::isnan(x2) ? std::numeric_limits<double>::quiet_NaN() : std::max(x1, x2);
+  double amplitude = 0.0;
+  for (int index : amplitudes_) {
+    const double x = point.recorded(index);
+    if (std::isnan(x)) return x;
+    amplitude = std::max(amplitude, x);
+  }
+  return amplitude;
 }
 
 std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& point, bool start) const {
@@ -171,9 +167,9 @@ std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& p
   const double amplitude = Amplitude(point);
   if (amplitude <= max_amplitude_) return std::nullopt;
   return BranchStop{0, BranchEnd::kStopped,
-                    fmt::format("resonance: the amplitude max(|x1|, |x2|) = {:.6g} {} max_amplitude = {:g} at "
+                    fmt::format("resonance: the amplitude {} = {:.6g} {} max_amplitude = {:g} at "
                                 "{} = {:.10g}{}",
-                                amplitude, start ? "of the start is above" : "passed", max_amplitude_, parameter_,
+                                amplitude_name_, amplitude, start ? "of the start is above" : "passed", max_amplitude_, problem_.options.parameter_name,
                                 point.lambda, start ? " (a larger max_amplitude continues it)" : "")};
 }
 
@@ -181,8 +177,7 @@ std::optional<BranchStop> OrbitContinuation::AmplitudeBound(const BranchPoint& p
 // so that a branch starting near a resonance may leave it). A branch whose amplitude falls as it
 // nears omega_k is bounded there (a large enough u_s folds it back): it goes on.
 std::optional<BranchStop> OrbitContinuation::SlipResonanceApproached(const BranchPoint& point, bool start) {
-  const std::optional<SlipResonance> near =
-      NearestSlipResonance(problem_.system->ToOrbit(point.u.head(problem_.system->UnknownCount())));
+  const std::optional<SlipResonance> near = problem_.system->NearestSlipResonance(point.u);
   const std::optional<ResonanceDistance> before = start ? std::nullopt : last_;
   last_ = near ? std::optional<ResonanceDistance>({near->distance, Amplitude(point)}) : std::nullopt;
   if (!near || !before || !(near->distance < before->distance && near->distance <= resonance_approach_ &&
@@ -193,7 +188,7 @@ std::optional<BranchStop> OrbitContinuation::SlipResonanceApproached(const Branc
                     fmt::format("resonance: at omega_{} = {:.10g}, a natural frequency of the undamped slip, which the "
                                 "orbit, never sticking, approached to {:.4g} (relative; resonance_approach = {:g}) at "
                                 "{} = {:.10g}, its amplitude growing",
-                                near->index, near->frequency, near->distance, resonance_approach_, parameter_,
+                                near->index, near->frequency, near->distance, resonance_approach_, problem_.options.parameter_name,
                                 point.lambda)};
 }
 
@@ -207,13 +202,8 @@ bool OrbitContinuation::Step() {
   return more;
 }
 
-OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup,
-                          const std::function<void(const Branch&)>& observer) {
-  OrbitContinuation continuation(setup);
-  while (continuation.Step()) {
-    if (observer) observer(continuation.branch());
-  }
-  return continuation.Result();
+OrbitBranch ContinueOrbit(const OrbitContinuationSetup& setup, const std::function<void(const Branch&)>& observer) {
+  return ContinueOrbit<Pascal2014>(setup, observer);
 }
 
 }  // namespace stickslip

@@ -35,20 +35,28 @@ std::vector<double> ColumnValues(const std::vector<PointColumn>& columns, const 
 
 struct OrbitMonitor::Evaluated {
   std::vector<Margin> margins;
-  Stability stability;
+  OrbitStability stability;
   std::vector<double> measures;  // in column order, only where the recorded values are asked for
 };
 
-namespace {
-
-std::vector<double> MeasureValues(const Orbit& orbit) {
-  const OrbitMeasures measures = Measure(orbit);
-  std::vector<double> values;
-  orbit_columns::ForEachMeasure(measures, [&](const char*, const auto& value) { values.push_back(value); });
-  return values;
+std::vector<std::string> orbit_columns::MeasureNames(const ModelDescription& model, int contact) {
+  std::vector<std::string> names;
+  for (const std::string& coordinate : model.coordinates) names.push_back("amplitude:" + coordinate);
+  names.push_back("peak-to-peak:" + model.coordinates[contact]);
+  for (const char* name : {kStickFraction, kStops, kSticks, kFrictionWork, kEquivalentDamping}) names.push_back(name);
+  return names;
 }
 
-}  // namespace
+std::vector<double> orbit_columns::MeasureValues(const BasicOrbitMeasures& measures, int contact) {
+  std::vector<double> values;
+  for (const CoordinateRange& range : measures.coordinates) values.push_back(range.Amplitude());
+  values.push_back(measures.coordinates[contact].PeakToPeak());
+  for (double value : {measures.stick_fraction, static_cast<double>(measures.stops),
+                       static_cast<double>(measures.sticks), measures.friction_work, measures.equivalent_damping}) {
+    values.push_back(value);
+  }
+  return values;
+}
 
 void OrbitMonitor::AddTestFunction(TestFunctionInfo info, Value value) {
   if (Unwatched(info.name)) {
@@ -80,17 +88,18 @@ const WatchedColumn* OrbitMonitor::Watched(const std::string& column) const {
   return w == watched_.end() ? nullptr : &*w;
 }
 
-OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched,
-                           std::vector<WatchedColumn> watched)
-    : system_(system), unwatched_(std::move(unwatched)), watched_(std::move(watched)) {
-  const std::vector<Margin> margins = AdmissibilityMargins(start);
+OrbitMonitor::OrbitMonitor(const OrbitProblem& problem, const Eigen::VectorXd& start,
+                           std::vector<std::string> unwatched, std::vector<WatchedColumn> watched)
+    : problem_(problem), unwatched_(std::move(unwatched)), watched_(std::move(watched)) {
+  const std::vector<Margin> margins = problem.Margins(start);
+  const Signature& signature = problem.signature();
   // The margins a curve's condition holds at zero (the unwatched ones) say nothing of whether its
   // orbits are motions: they are on the boundary by definition, at +-rounding.
   std::vector<bool> counted;
   for (const Margin& m : margins) counted.push_back(!Unwatched(std::string(orbit_columns::kMarginPrefix) + m.Name()));
   for (int k = 0; k < static_cast<int>(margins.size()); ++k) {
     const Margin& m = margins[k];
-    const Mode mode = m.segment < 0 ? Mode::kStick : start.signature.segments()[m.segment];
+    const Mode mode = m.segment < 0 ? Mode::kStick : signature.segments()[m.segment];
     // u_s reaching zero ends the physical family (eq. 4), past type changes too.
     AddTestFunction({.name = std::string(orbit_columns::kMarginPrefix) + m.Name(),
                      .type = OrbitTypeChangeCode(m, mode),
@@ -100,7 +109,7 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
                      .positive_side = "admissible"},
                     [k](const Evaluated& e) { return e.margins[k].value; });
   }
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < problem.description().StateSize(); ++k) {
     AddRecorded(orbit_columns::Multiplier(k + 1, "re"),
                 [k](const Evaluated& e) { return e.stability.multipliers[k].real(); });
     AddRecorded(orbit_columns::Multiplier(k + 1, "im"),
@@ -113,7 +122,7 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
   AddTestFunction({.name = orbit_columns::kTorusTest, .type = "TR", .may_have_poles = true},
                   [](const Evaluated& e) { return e.stability.torus_test; });
   auto symmetry_test = [](const Evaluated& e) { return e.stability.symmetry_test; };
-  if (start.signature.antisymmetric()) {
+  if (signature.antisymmetric()) {
     AddTestFunction({.name = orbit_columns::kSymmetryTest, .type = "SB", .may_have_poles = true}, symmetry_test);
   } else {
     AddRecorded(orbit_columns::kSymmetryTest, symmetry_test);
@@ -125,11 +134,10 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
     }
     return 1.0;
   });
-  const OrbitMeasures measures{};
-  orbit_columns::ForEachMeasure(measures, [&, k = 0](const char* name, const auto&) mutable {
-    AddRecorded(name, [k](const Evaluated& e) { return e.measures[k]; });
-    ++k;
-  });
+  const std::vector<std::string> measures = orbit_columns::MeasureNames(problem.description(), problem.ContactCoordinate());
+  for (std::size_t k = 0; k < measures.size(); ++k) {
+    AddRecorded(measures[k], [k](const Evaluated& e) { return e.measures[k]; });
+  }
   for (const WatchedColumn& w : watched_) {
     if (!w.value) continue;
     AddTestFunction({.name = w.column, .type = w.type, .may_have_poles = true},
@@ -138,9 +146,9 @@ OrbitMonitor::OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::v
 }
 
 void OrbitMonitor::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const {
-  const Orbit orbit = system_.ToOrbit(u.head(system_.UnknownCount()));  // a curve's own unknowns follow
-  const Evaluated evaluated{AdmissibilityMargins(orbit), StabilityOf(orbit),
-                            recorded ? MeasureValues(orbit) : std::vector<double>{}};
+  const Evaluated evaluated{
+      problem_.Margins(u), problem_.Stability(u),
+      recorded ? orbit_columns::MeasureValues(problem_.Measures(u), problem_.ContactCoordinate()) : std::vector<double>{}};
   tests->resize(static_cast<int>(info_.size()));
   if (recorded) recorded->resize(static_cast<int>(recorded_.size()));
   for (std::size_t c = 0; c < columns_.size(); ++c) {

@@ -70,7 +70,7 @@ class BranchRunner {
                                       setup.parameter, s.lambda)};
         break;
       }
-      if (stop) return ToOrbitBranch(continuation.problem(), EndedAt(b, *stop));
+      if (stop) return ToOrbitBranch<Pascal2014>(continuation.problem(), EndedAt(b, *stop));
     }
     return continuation.Result();
   }

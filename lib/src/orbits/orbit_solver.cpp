@@ -19,12 +19,18 @@ const char* ToString(ShootingChoice s) {
   return "multiple";
 }
 
-int VariableIndex(int n, std::string_view field, std::string_view name) {
-  if (const std::optional<int> index = ov::IndexOf(n, name)) return *index;
+OrbitVariableSet VariableSetOf(const Signature& signature) { return VariableSetOf(Pascal2014{}, signature); }
+
+int VariableIndex(const OrbitLayout& layout, std::string_view field, std::string_view name) {
+  if (const std::optional<int> index = layout.IndexOf(name)) return *index;
   std::vector<std::string> names;
-  for (int i = 0; i < ov::Count(n); ++i) names.push_back(ov::Name(n, i));
+  for (int i = 0; i < layout.Count(); ++i) names.push_back(layout.Name(i));
   throw InvalidInput::WithMessage(std::string(field), fmt::format("{} = '{}' is not a variable: valid {}", field,
                                                                   name, fmt::join(names, ", ")));
+}
+
+int VariableIndex(int n, std::string_view field, std::string_view name) {
+  return VariableIndex(OrbitLayout(Pascal2014{}.Description(), n), field, name);
 }
 
 UnknownChoice UnknownsAtFixedParameters(const Signature& signature) {
@@ -37,48 +43,62 @@ UnknownChoice UnknownsAtFixedParameters(const Signature& signature) {
   return {};
 }
 
-std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice) {
-  const int n = signature.size();
-  std::vector<int> free = {ov::kX10, ov::kX20, ov::kV10, ov::kPhi};
-  for (int i = 0; i < n; ++i) free.push_back(ov::Duration(i));
+std::vector<int> FreeIndices(const OrbitVariableSet& variables, const UnknownChoice& choice) {
+  const OrbitLayout& layout = variables.layout;
+  const std::string kinetic = layout.Name(variables.kinetic_level), static_level = layout.Name(variables.static_level);
+  std::vector<int> free;
+  for (int index = 0; index < layout.Parameter(0); ++index) free.push_back(index);
   for (const std::string& name : choice.release) {
-    const int index = VariableIndex(n, "free", name);
-    if (choice.tie_static_friction && index == ov::StaticLevel(n)) {
-      throw InvalidInput::WithMessage("free", "free = 'u_r' is tied to u_s (u_r = u_s): release u_s instead");
+    const int index = VariableIndex(variables.layout, "free", name);
+    if (choice.tie_static_friction && index == variables.static_level) {
+      throw InvalidInput::WithMessage("free", fmt::format("free = '{0}' is tied to {1} ({0} = {1}): release {1} instead",
+                                                          static_level, kinetic));
     }
-    if (index < ov::FirstParameter(n)) {
-      throw InvalidInput::WithMessage("free", fmt::format("free = '{}' is an unknown already: x10, x20, v10, phi and "
-                                                          "the durations always are (free releases a parameter)", name));
+    if (index < layout.Parameter(0)) {
+      std::vector<std::string> always;
+      for (int k = 0; k <= layout.Phi(); ++k) always.push_back(layout.Name(k));
+      throw InvalidInput::WithMessage("free", fmt::format("free = '{}' is an unknown already: {} and the durations "
+                                                          "always are (free releases a parameter)",
+                                                          name, fmt::join(always, ", ")));
     }
     if (std::find(free.begin(), free.end(), index) == free.end()) free.push_back(index);
   }
-  for (const std::string& name : choice.fix) std::erase(free, VariableIndex(n, "fix", name));
-  const PeriodicityEquations equations(signature, Shooting::kSingle);
-  const int equation_count = equations.EquationCount() + choice.condition_equations;
+  for (const std::string& name : choice.fix) std::erase(free, VariableIndex(variables.layout, "fix", name));
+  const int equation_count = variables.equations + choice.condition_equations;
   if (static_cast<int>(free.size()) != equation_count) {
     std::string unknowns;
-    for (int index : free) unknowns += (unknowns.empty() ? "" : ", ") + ov::Name(n, index);
+    for (int index : free) unknowns += (unknowns.empty() ? "" : ", ") + layout.Name(index);
     throw InvalidInput::WithMessage(
         "unknowns", fmt::format("the system is not square: signature '{}' has {} equations but there "
                                 "are {} unknowns ({}); release or fix {} variable(s)",
-                                signature.ToString(), equation_count, free.size(), unknowns,
+                                variables.signature.ToString(), equation_count, free.size(), unknowns,
                                 std::abs(static_cast<int>(free.size()) - equation_count)));
   }
   return free;
 }
 
-int ContinuedVariable(const Signature& signature, const std::vector<int>& free, bool tie_static_friction,
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice) {
+  return FreeIndices(VariableSetOf(signature), choice);
+}
+
+int ContinuedVariable(const OrbitVariableSet& variables, const std::vector<int>& free, bool tie_static_friction,
                       std::string_view parameter) {
-  const int n = signature.size();
-  const int index = VariableIndex(n, "parameter", parameter);
-  if (tie_static_friction && index == ov::StaticLevel(n)) {
-    throw InvalidInput::WithMessage("parameter", "parameter = 'u_r' is tied to u_s (tie_u_r): continue in u_s");
+  const int index = VariableIndex(variables.layout, "parameter", parameter);
+  if (tie_static_friction && index == variables.static_level) {
+    throw InvalidInput::WithMessage("parameter", fmt::format("parameter = '{0}' is tied to {1} (tie_{0}): continue in {1}",
+                                                             variables.layout.Name(variables.static_level),
+                                                             variables.layout.Name(variables.kinetic_level)));
   }
   if (std::find(free.begin(), free.end(), index) != free.end()) {
     throw InvalidInput::WithMessage(
         "parameter", fmt::format("parameter = '{}' is an unknown already: continue in a held variable", parameter));
   }
   return index;
+}
+
+int ContinuedVariable(const Signature& signature, const std::vector<int>& free, bool tie_static_friction,
+                      std::string_view parameter) {
+  return ContinuedVariable(VariableSetOf(signature), free, tie_static_friction, parameter);
 }
 
 std::optional<ShootingChoice> ShootingChoiceFromString(std::string_view text) {

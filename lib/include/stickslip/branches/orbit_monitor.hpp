@@ -30,7 +30,7 @@
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
-#include "stickslip/orbits/periodicity.hpp"
+#include "stickslip/orbits/orbit_problem.hpp"
 #include "stickslip/orbits/stability.hpp"
 
 namespace stickslip {
@@ -72,6 +72,11 @@ void ForEachMeasure(Measures& measures, Visit&& visit) {
   visit(kFrictionWork, measures.friction_work);
   visit(kEquivalentDamping, measures.equivalent_damping);
 }
+// The measure columns of a model's orbits: the amplitude of each coordinate, the peak-to-peak of
+// the one the contact holds (`contact`), then the stick fraction, stops, sticks, friction work and
+// equivalent damping; for the paper's model ForEachMeasure's names, and their values.
+std::vector<std::string> MeasureNames(const ModelDescription& model, int contact);
+std::vector<double> MeasureValues(const BasicOrbitMeasures& measures, int contact);
 // The measures added after the first result files: a file written before them lacks their
 // columns, and its readers take them as nan.
 inline bool AddedLater(std::string_view measure) { return measure == kFrictionWork || measure == kEquivalentDamping; }
@@ -95,16 +100,17 @@ struct WatchedColumn {
   std::string column;  // "floquet:det(M-I)", ...: watched even where it is otherwise recorded only
   std::string type;    // the special-point code of its sign change
   // A column of its own, after the others, where given (the monitor has no such column).
-  std::function<double(const Stability&)> value;
+  std::function<double(const OrbitStability&)> value;
 };
 
 class OrbitMonitor final : public Monitor {
  public:
-  // `start` is any orbit of the system's signature (the names depend on the signature only). The
-  // test functions named in `unwatched` (column names: "margin:G:2", "floquet:torus") are
-  // recorded, not watched (those that sit on zero or mean nothing along a type boundary:
-  // branches/margin_condition.hpp). Those in `watched` are test functions of the type given there.
-  OrbitMonitor(const OrbitSystem& system, const Orbit& start, std::vector<std::string> unwatched = {},
+  // An orbit problem of any model (orbits/orbit_problem.hpp); `start` any unknowns of it (the
+  // names depend on the signature only). The test functions named in `unwatched` (column names:
+  // "margin:G:2", "floquet:torus") are recorded, not watched (those that sit on zero or mean
+  // nothing along a type boundary: branches/margin_condition.hpp). Those in `watched` are test
+  // functions of the type given there.
+  OrbitMonitor(const OrbitProblem& problem, const Eigen::VectorXd& start, std::vector<std::string> unwatched = {},
                std::vector<WatchedColumn> watched = {});
   std::vector<TestFunctionInfo> TestFunctions() const override { return info_; }
   std::vector<std::string> RecordedNames() const override { return recorded_; }
@@ -122,7 +128,7 @@ class OrbitMonitor final : public Monitor {
   bool Unwatched(const std::string& column) const;
   const WatchedColumn* Watched(const std::string& column) const;  // null if not watched with a type of its own
 
-  const OrbitSystem& system_;
+  const OrbitProblem& problem_;
   std::vector<std::string> unwatched_;
   std::vector<WatchedColumn> watched_;
   std::vector<TestFunctionInfo> info_;

@@ -17,7 +17,9 @@
 
 namespace stickslip {
 
-struct OrbitBranch;
+template <OscillatorModel Model>
+struct BasicOrbitBranch;
+using OrbitBranch = BasicOrbitBranch<Pascal2014>;
 
 // One branch point, one CSV row. The columns are, in this order: pt, label, the orbit's
 // variables (SolutionColumns), margin:<name> per margin, floquet:mu<k>_re and _im per multiplier,

@@ -9,6 +9,7 @@
 
 #include "stickslip/numerics/newton.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/orbit_layout.hpp"
 #include "stickslip/orbits/periodicity.hpp"
 
 namespace stickslip {
@@ -24,9 +25,28 @@ struct UnknownChoice {
   int condition_equations = 0;
 };
 
-// The index of the variable `name` of an n-segment orbit (orbit.hpp). Throws InvalidInput
+// The variables of an orbit of any model, by name (orbit_layout.hpp), with its friction levels'
+// places and its periodicity equations' count: what a choice of unknowns is checked against.
+struct OrbitVariableSet {
+  Signature signature;
+  OrbitLayout layout;
+  int kinetic_level = 0;  // indices in the full variable vector
+  int static_level = 0;
+  int equations = 0;  // the periodicity equations' count in single shooting
+};
+template <OscillatorModel Model>
+OrbitVariableSet VariableSetOf(const Model& model, const Signature& signature) {
+  const OrbitLayout layout(model.Description(), signature.size());
+  return {signature, layout, layout.Parameter(Model::kKineticLevelParameter),
+          layout.Parameter(Model::kStaticLevelParameter),
+          BasicPeriodicityEquations<Model>(model, signature, Shooting::kSingle).EquationCount()};
+}
+OrbitVariableSet VariableSetOf(const Signature& signature);  // the paper's model
+
+// The index of the variable `name` of an orbit. Throws InvalidInput
 // "<field> = '<name>' is not a variable: valid x10, x20, ..." naming the caller's field.
-int VariableIndex(int n, std::string_view field, std::string_view name);
+int VariableIndex(const OrbitLayout& layout, std::string_view field, std::string_view name);
+int VariableIndex(int n, std::string_view field, std::string_view name);  // the paper's model, n segments
 
 // The unknowns an orbit's equations are square in at fixed parameters: the start state, the phase
 // and the durations; with an abnormal stop the kinetic level released and the static level tied to
@@ -36,12 +56,15 @@ UnknownChoice UnknownsAtFixedParameters(const Signature& signature);
 // The free variable indices of a choice for a signature. Throws InvalidInput naming "free" or
 // "fix" for a name that is not a variable (or u_r released while tied to u_s), and "unknowns",
 // with both counts, when the system would not be square.
-std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);
+std::vector<int> FreeIndices(const OrbitVariableSet& variables, const UnknownChoice& choice);
+std::vector<int> FreeIndices(const Signature& signature, const UnknownChoice& choice);  // the paper's model
 
 // The index of the continued variable `parameter` (a variable name): one that is held, not in
 // `free`, and not u_r while it is tied to u_s. Throws InvalidInput naming "parameter".
-int ContinuedVariable(const Signature& signature, const std::vector<int>& free, bool tie_static_friction,
+int ContinuedVariable(const OrbitVariableSet& variables, const std::vector<int>& free, bool tie_static_friction,
                       std::string_view parameter);
+int ContinuedVariable(const Signature& signature, const std::vector<int>& free, bool tie_static_friction,
+                      std::string_view parameter);  // the paper's model
 
 enum class ShootingChoice { kAuto, kSingle, kMultiple };
 const char* ToString(ShootingChoice s);  // "auto", "single", "multiple"

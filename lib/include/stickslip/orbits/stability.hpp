@@ -42,6 +42,24 @@ struct BasicStability {
 };
 using Stability = BasicStability<4>;  // the paper's model
 
+// The same of any model, its size known at run time: what the layers above the orbits
+// (branches/orbit_monitor.hpp) see through the erased orbit problem (orbits/orbit_problem.hpp).
+struct OrbitStability {
+  Eigen::MatrixXd monodromy;
+  std::vector<std::complex<double>> multipliers;  // by decreasing modulus
+  bool stable = false;
+  double fold_test = 0.0;
+  double flip_test = 0.0;
+  double torus_test = 0.0;
+  double symmetry_test = std::numeric_limits<double>::quiet_NaN();
+  bool one_sided = false;
+};
+template <int kStateSize>
+OrbitStability ToOrbitStability(const BasicStability<kStateSize>& s) {
+  return {s.monodromy, {s.multipliers.begin(), s.multipliers.end()}, s.stable, s.fold_test, s.flip_test,
+          s.torus_test, s.symmetry_test, s.one_sided};
+}
+
 // The monodromy matrix of an orbit from its walk: the products of the segments' transition
 // matrices and the saltation matrices at their ends. Templated on the scalar: forward-mode AD
 // through it gives its exact derivatives (orbits/floquet_gradients.hpp).

@@ -1,0 +1,95 @@
+// The orbit problem of one model (model/oscillator_model.hpp), compiled for it and erased to
+// OrbitProblem (orbit_problem.hpp): its periodicity equations in chosen unknowns
+// (orbit_system.hpp), and the orbit at the unknowns for the margins, the stability, the measures
+// and the slip resonance, each computed by the orbit layer's templates on the model.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "stickslip/orbits/orbit_problem.hpp"
+#include "stickslip/orbits/orbit_system.hpp"
+
+namespace stickslip {
+
+// The variables of the periodicity equations (the full vector, then for multiple shooting the
+// start states of the listed segments after the first, by the closed-form flows) at `orbit`.
+template <OscillatorModel Model>
+Eigen::VectorXd VariablesOf(const BasicPeriodicityEquations<Model>& equations, const BasicOrbit<Model>& orbit) {
+  using Equations = BasicPeriodicityEquations<Model>;
+  constexpr int kStateSize = Model::kStateSize;
+  Eigen::VectorXd v(equations.VariableCount());
+  v.template head<kStateSize - 1>() = orbit.start.template head<kStateSize - 1>();
+  v(Equations::kPhi) = orbit.phi;
+  for (int i = 0; i < orbit.signature.size(); ++i) v(Equations::Duration(i)) = orbit.durations[i];
+  for (int k = 0; k < Model::kParameterCount; ++k) v(equations.Parameter(k)) = Model::ParameterAt(orbit.parameters, k);
+  if (equations.shooting() == Shooting::kMultiple) {
+    const int full = equations.FullCount();
+    WalkSegments(equations.model(), orbit, Extent::kListed, PhaseRule::kAccumulated,
+                 [&](const SegmentVisit<double, Model>& s) {
+                   if (!s.last) v.template segment<kStateSize>(full + kStateSize * s.index) = s.end;
+                 });
+  }
+  return v;
+}
+
+// The orbit of the periodicity equations' variables v (the full vector; shooting states ignored).
+template <OscillatorModel Model>
+BasicOrbit<Model> OrbitOf(const BasicPeriodicityEquations<Model>& equations, const Eigen::VectorXd& v) {
+  using Equations = BasicPeriodicityEquations<Model>;
+  std::vector<double> durations;
+  for (int i = 0; i < equations.signature().size(); ++i) durations.push_back(v(Equations::Duration(i)));
+  return {equations.signature(), equations.ParametersOf(v), equations.StartState(v), v(Equations::kPhi),
+          std::move(durations)};
+}
+
+template <OscillatorModel Model>
+class ModelOrbitProblem final : public OrbitProblem {
+ public:
+  using System = BasicOrbitSystem<Model>;
+  explicit ModelOrbitProblem(System system) : system_(std::move(system)) {}
+
+  int EquationCount() const override { return system_.EquationCount(); }
+  int UnknownCount() const override { return system_.UnknownCount(); }
+  void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual, JacobianMatrix* jacobian) const override {
+    system_.Evaluate(u, residual, jacobian);
+  }
+  std::optional<std::string> DomainError(const Eigen::VectorXd& u) const override { return system_.DomainError(u); }
+
+  const ModelDescription& description() const override { return model().Description(); }
+  const Signature& signature() const override { return system_.equations().signature(); }
+  Shooting shooting() const override { return system_.equations().shooting(); }
+  const std::vector<int>& free() const override { return system_.free(); }
+  int FullCount() const override { return system_.equations().FullCount(); }
+  Eigen::VectorXd Variables(const Eigen::VectorXd& u) const override { return system_.Variables(u); }
+  Eigen::VectorXd Unknowns(const Eigen::VectorXd& variables) const override { return system_.Unknowns(variables); }
+  Eigen::MatrixXd ToUnknowns(const Eigen::MatrixXd& d_variables) const override {
+    return system_.ToUnknowns(d_variables);
+  }
+
+  std::vector<Margin> Margins(const Eigen::VectorXd& u) const override {
+    return AdmissibilityMargins(model(), OrbitAt(u));
+  }
+  OrbitStability Stability(const Eigen::VectorXd& u) const override {
+    return ToOrbitStability(StabilityOf(model(), OrbitAt(u)));
+  }
+  BasicOrbitMeasures Measures(const Eigen::VectorXd& u) const override { return Measure(model(), OrbitAt(u)); }
+  std::optional<SlipResonance> NearestSlipResonance(const Eigen::VectorXd& u) const override {
+    return stickslip::NearestSlipResonance(model(), OrbitAt(u));
+  }
+  int ContactCoordinate() const override { return stickslip::ContactCoordinate(model()); }
+
+  // The orbit at the unknowns u (a curve's own unknowns may follow them).
+  BasicOrbit<Model> OrbitAt(const Eigen::VectorXd& u) const {
+    return OrbitOf(system_.equations(), system_.Variables(u.head(system_.UnknownCount())));
+  }
+  const System& system() const { return system_; }
+  const Model& model() const { return system_.equations().model(); }
+
+ private:
+  System system_;
+};
+
+}  // namespace stickslip
