@@ -16,6 +16,7 @@
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/model_orbit_problem.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
@@ -37,7 +38,7 @@ constexpr PhysicalTwoMasses kUnitTwoMasses{1.0, 1.0, 1.0};
 template <typename Model>
 void Periodicity(benchmark::State& state, const Model& model, const BasicOrbit<Model>& orbit) {
   const BasicPeriodicityEquations<Model> equations(model, orbit.signature, Shooting::kSingle);
-  const Eigen::VectorXd v = VariablesOf(orbit, equations);
+  const Eigen::VectorXd v = VariablesOf(equations, orbit);
   Eigen::VectorXd residual;
   Eigen::MatrixXd jacobian;
   for (auto _ : state) {

@@ -18,8 +18,10 @@
 #include "stickslip/orbits/orbit_system.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "stickslip/orbits/stability.hpp"
+#include "stickslip/orbits/model_orbit_problem.hpp"
 #include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"
+#include "support/test_names.hpp"
 
 namespace stickslip {
 namespace {
@@ -41,13 +43,13 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
   using Equations = BasicPeriodicityEquations<LinearOscillator<2>>;
   const Equations equations(model, orbit.signature, Shooting::kSingle);
   Eigen::VectorXd residual;
-  equations.Evaluate(VariablesOf(orbit, equations), &residual, nullptr);
+  equations.Evaluate(VariablesOf(equations, orbit), &residual, nullptr);
   EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-10 * physical.Length(paper.parameters));
 
   std::vector<int> free(equations.Parameter(0));
   std::iota(free.begin(), free.end(), 0);
-  const BasicOrbitSystem<LinearOscillator<2>> system(equations, VariablesOf(orbit, equations), free, false);
-  Eigen::VectorXd guess = system.Unknowns(VariablesOf(orbit, equations));
+  const BasicOrbitSystem<LinearOscillator<2>> system(equations, VariablesOf(equations, orbit), free, false);
+  Eigen::VectorXd guess = system.Unknowns(VariablesOf(equations, orbit));
   guess(0) *= 1.001;
   guess(Equations::kPhi) += 1e-3;
   const NewtonResult solved = SolveNewton(system, guess);
@@ -68,11 +70,7 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, PascalInPhysicalUnits, testing::Values("paper-4.1", "paper-5.1", "paper-6"),
-                         [](const testing::TestParamInfo<const char*>& case_info) {
-                           std::string name = std::string(case_info.param).substr(6);
-                           for (char& c : name) c = c == '.' ? '_' : c;
-                           return "Section" + name;
-                         });
+                         PresetTestName);
 
 // A random model of three coordinates: M = A A^T + I, K = B B^T + I (both positive definite),
 // forcing on every coordinate; with `damped`, a random damping matrix, not symmetric (as friction

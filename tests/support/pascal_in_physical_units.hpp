@@ -2,7 +2,7 @@
 // (model/linear_oscillator.hpp): m1 = eta m2, k1 + k2 = S, k2 = chi S, forcing F0 cos on mass 2
 // and the contact on mass 2 with mu_k N = u_s eta F0, mu_s N = u_r eta F0. The paper's scaling
 // (../shared/FRICTION-LITERATURE.md): t = t~ / Omega with Omega = sqrt(S/m1), omega~ = omega Omega,
-// y = eta F0 x / S. And any model's orbit as the variables of its periodicity equations.
+// y = eta F0 x / S.
 #pragma once
 
 #include <cmath>
@@ -11,7 +11,6 @@
 
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/orbits/orbit.hpp"
-#include "stickslip/orbits/periodicity_equations.hpp"
 
 namespace stickslip {
 
@@ -41,21 +40,6 @@ inline BasicOrbit<LinearOscillator<2>> InPhysicalUnits(const Orbit& o, const Phy
   converted.start.tail<2>() *= omega;
   for (double d : o.durations) converted.durations.push_back(d / omega);
   return converted;
-}
-
-// The orbit as the full variable vector of `equations` (single shooting): the start but the
-// contact's velocity, phi, the durations, the parameters.
-template <typename Model>
-Eigen::VectorXd VariablesOf(const BasicOrbit<Model>& o, const BasicPeriodicityEquations<Model>& equations) {
-  constexpr int S = Model::kStateSize;
-  Eigen::VectorXd v(equations.VariableCount());
-  v.head(S - 1) = o.start.head(S - 1);
-  v(BasicPeriodicityEquations<Model>::kPhi) = o.phi;
-  for (std::size_t i = 0; i < o.durations.size(); ++i) {
-    v(BasicPeriodicityEquations<Model>::Duration(static_cast<int>(i))) = o.durations[i];
-  }
-  for (int k = 0; k < Model::kParameterCount; ++k) v(equations.Parameter(k)) = Model::ParameterAt(o.parameters, k);
-  return v;
 }
 
 }  // namespace stickslip

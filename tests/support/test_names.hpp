@@ -1,4 +1,4 @@
-// Names for value-parameterised tests over the modes of motion.
+// Names for value-parameterised tests over the modes of motion and the paper's presets.
 #pragma once
 
 #include <string>
@@ -16,6 +16,13 @@ inline std::string ModeTestName(const ::testing::TestParamInfo<Mode>& mode) {
     case Mode::kStick: break;
   }
   return "Stick";
+}
+
+// Over the paper's presets: "paper-4.1" is "Section4_1".
+inline std::string PresetTestName(const ::testing::TestParamInfo<const char*>& preset) {
+  std::string name = std::string(preset.param).substr(6);
+  for (char& c : name) c = c == '.' ? '_' : c;
+  return "Section" + name;
 }
 
 }  // namespace stickslip

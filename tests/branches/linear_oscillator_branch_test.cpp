@@ -1,0 +1,79 @@
+// The paper's branches in omega continued twice by the same ContinueOrbit: through the paper's
+// model and through the general linear oscillator in physical units
+// (support/pascal_in_physical_units.hpp). The two closed forms are independent (the paper's eqs.
+// 2-11 in its scaled variables; the general model's first-order modal basis of M, K and the
+// forcing in SI units), so the same special points at the same scaled frequency, with the same
+// amplitudes, check both and the model-free branch layer between them.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "stickslip/branches/model_orbit_continuation.hpp"
+#include "support/pascal_in_physical_units.hpp"
+#include "support/solved_presets.hpp"
+#include "support/test_names.hpp"
+
+namespace stickslip {
+namespace {
+
+// A branch in omega from `start`, down or up, to 0.2 or 0.68 (short of omega1 = 0.70 of section
+// 4.1, where a branch creeps on towards the resonance); `scale` the model's unit of frequency.
+template <OscillatorModel Model>
+BasicOrbitContinuationSetup<Model> OmegaBranch(OrbitOfModel<Model> start, Model model, int direction, double scale) {
+  BasicOrbitContinuationSetup<Model> setup{std::move(start), {}, "omega", ShootingChoice::kAuto, LinearSolverType::kKlu,
+                                           {}, {}, {}, {}, kDefaultMaxAmplitude, kDefaultResonanceApproach,
+                                           std::move(model)};
+  setup.options.direction = direction;
+  setup.options.lambda_min = 0.2 * scale;
+  setup.options.lambda_max = 0.68 * scale;
+  setup.options.max_points = 1000;
+  return setup;
+}
+
+class PaperBranchThroughTheGeneralModel : public testing::TestWithParam<const char*> {};
+
+TEST_P(PaperBranchThroughTheGeneralModel, HasTheSameSpecialPointsAtTheSameScaledFrequencies) {
+  const Orbit paper = SolvedPreset(GetParam());
+  const PhysicalTwoMasses physical;
+  const double omega_scale = physical.Omega(paper.parameters), length = physical.Length(paper.parameters);
+  double worst = 0.0;
+  std::size_t compared = 0;
+  for (int direction : {-1, 1}) {
+    const OrbitContinuationSetup scaled = OmegaBranch<Pascal2014>(paper, {}, direction, 1.0);
+    const BasicOrbitContinuationSetup<LinearOscillator<2>> general = OmegaBranch<LinearOscillator<2>>(
+        InPhysicalUnits(paper, physical), LinearOscillator<2>(physical.Data(paper.parameters)), direction, omega_scale);
+    const OrbitBranch a = ContinueOrbit(scaled);
+    const BasicOrbitBranch<LinearOscillator<2>> b = ContinueOrbit(general);
+    ASSERT_EQ(a.branch.end, b.branch.end) << a.branch.end_message << " | " << b.branch.end_message;
+    ASSERT_EQ(a.branch.special_points.size(), b.branch.special_points.size()) << "direction " << direction;
+    ASSERT_GE(a.branch.special_points.size(), 1u);
+    for (std::size_t k = 0; k < a.branch.special_points.size(); ++k) {
+      const SpecialPoint& p = a.branch.special_points[k];
+      const SpecialPoint& q = b.branch.special_points[k];
+      EXPECT_EQ(p.type, q.type) << "special point " << k;
+      EXPECT_EQ(p.test_function, q.test_function) << "special point " << k;
+      EXPECT_NEAR(q.lambda / omega_scale, p.lambda, 1e-8 * p.lambda) << p.type << ", direction " << direction;
+      worst = std::max(worst, std::abs(q.lambda / omega_scale - p.lambda) / p.lambda);
+      ++compared;
+      const Orbit& o = a.orbits[p.point];
+      const BasicOrbit<LinearOscillator<2>>& g = b.orbits[q.point];
+      EXPECT_NEAR(g.start(0) / length, o.x10, 1e-7) << p.type;
+      EXPECT_NEAR(g.start(1) / length, o.x20, 1e-7) << p.type;
+      EXPECT_NEAR(g.durations.front() * omega_scale, o.durations.front(), 1e-7) << p.type;
+    }
+    RecordProperty(direction < 0 ? "down" : "up",
+                   a.branch.special_points.back().type + " at " + std::to_string(a.branch.special_points.back().lambda));
+  }
+  RecordProperty("special_points", static_cast<int>(compared));
+  RecordProperty("worst_relative_omega_difference", fmt::format("{:.3g}", worst));
+}
+
+INSTANTIATE_TEST_SUITE_P(PaperPresets, PaperBranchThroughTheGeneralModel,
+                         testing::Values("paper-4.1", "paper-5.1", "paper-6"), PresetTestName);
+
+}  // namespace
+}  // namespace stickslip
