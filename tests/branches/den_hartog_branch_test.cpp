@@ -21,6 +21,7 @@
 #include "stickslip/branches/model_orbit_continuation.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/model_orbit_solver.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_system.hpp"
 #include "support/den_hartog_orbit.hpp"
@@ -164,16 +165,9 @@ TEST(DenHartogOrbit, DegenerateFrequencyMakesTheFullPeriodEquationsSingularNotTh
 // Coulomb damping), x'' + c x' + x = cos(omega t + phi) + F, solved by Newton from the undamped
 // orbit: the non-sticking orbit with two stops per period, on "slip- / antisymmetric".
 BasicOrbit<LinearOscillator<1>> DampedOrbit(const LinearOscillator<1>& model, double r, double beta) {
-  using DampedEquations = BasicPeriodicityEquations<LinearOscillator<1>>;
-  const DampedEquations equations(model, Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
-  const DenHartogOrbit undamped(r, beta);
-  Eigen::VectorXd guess(equations.VariableCount());
-  guess << undamped.amplitude, undamped.phi, std::numbers::pi / r, r, beta, beta, 0.0;
-  const BasicOrbitSystem<LinearOscillator<1>> system(equations, guess, {0, 1, 2}, true);
-  const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
+  const BasicOrbitSolution<LinearOscillator<1>> solved = SolveOrbit(model, DenHartogStart(r, beta), {0, 1, 2}, false);
   EXPECT_TRUE(solved.summary.Converged()) << solved.summary.message;
-  const Eigen::VectorXd v = system.Variables(solved.solution);
-  return {equations.signature(), {r, beta, beta}, {v(0), 0.0}, v(1), {v(2)}};
+  return solved.orbit;
 }
 
 LinearOscillator<1> DampedDenHartog(double c) {

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "stickslip/orbits/model_orbit_solver.hpp"
+
 namespace stickslip {
 
 namespace ov = orbit_variables;
@@ -116,19 +118,7 @@ Shooting ResolveShooting(ShootingChoice choice, int listed_segments, int max_sin
 
 OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
                          bool tie_static_friction, const OrbitSolverOptions& options) {
-  const Shooting shooting =
-      ResolveShooting(options.shooting, guess.signature.size(), options.max_single_shooting_segments);
-  const OrbitSystem system(guess, free, tie_static_friction, shooting);
-  if (system.EquationCount() != system.UnknownCount()) {
-    throw InvalidInput("free", fmt::format("{} unknowns", system.UnknownCount()),
-                       fmt::format("{} unknowns, as many as the equations", system.EquationCount()));
-  }
-  NewtonOptions newton = options.newton;
-  if (shooting == Shooting::kMultiple && newton.linear_solver == LinearSolverType::kDenseLu) {
-    newton.linear_solver = options.sparse_solver;
-  }
-  NewtonResult result = SolveNewton(system, system.Unknowns(guess), newton);
-  return {system.ToOrbit(result.solution), std::move(result.summary), shooting};
+  return SolveOrbit<Pascal2014>(Pascal2014{}, guess, free, tie_static_friction, options);
 }
 
 }  // namespace stickslip

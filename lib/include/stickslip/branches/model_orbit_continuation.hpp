@@ -50,15 +50,9 @@ BasicOrbitBranch<Model> ToOrbitBranch(const OrbitContinuationProblem& problem, B
   result.shooting = problem.system->shooting();
   result.columns = problem.monitor->Columns();
   result.branch = std::move(branch);
-  for (const BranchPoint& p : result.branch.points) {
-    if constexpr (std::is_same_v<Model, Pascal2014>) {
-      result.orbits.push_back(ToOrbit(*problem.system, p.u));
-    } else {
-      const auto* system = dynamic_cast<const ModelOrbitProblem<Model>*>(problem.system.get());
-      if (!system) throw std::logic_error("ToOrbitBranch: the problem is of another model");
-      result.orbits.push_back(system->OrbitAt(p.u));
-    }
-  }
+  const auto* system = dynamic_cast<const ModelOrbitProblem<Model>*>(problem.system.get());
+  if (!system) throw std::logic_error("ToOrbitBranch: the problem is of another model");
+  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(system->OrbitOfModelAt(p.u));
   return result;
 }
 

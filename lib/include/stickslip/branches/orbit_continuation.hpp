@@ -7,7 +7,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -29,11 +28,6 @@ inline constexpr double kDefaultMaxAmplitude = 1e3;
 // undamped slip (orbits/slip_resonance.hpp) while approaching it: there its amplitude already
 // grows as 1/|omega - omega_k|, and the continuation, its step bounded, would creep on towards it.
 inline constexpr double kDefaultResonanceApproach = 1e-2;
-
-// The start orbit of a model's branches: the paper's model's Orbit (orbits/orbit.hpp), any
-// other model's BasicOrbit.
-template <OscillatorModel Model>
-using OrbitOfModel = std::conditional_t<std::is_same_v<Model, Pascal2014>, Orbit, BasicOrbit<Model>>;
 
 template <OscillatorModel Model>
 struct BasicOrbitContinuationSetup {

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -81,9 +82,17 @@ class ModelOrbitProblem final : public OrbitProblem {
   }
   int ContactCoordinate() const override { return stickslip::ContactCoordinate(model()); }
 
-  // The orbit at the unknowns u (a curve's own unknowns may follow them).
+  // The orbit at the unknowns u (a curve's own unknowns may follow them), and as the layers above
+  // take it (for the paper's model its Orbit).
   BasicOrbit<Model> OrbitAt(const Eigen::VectorXd& u) const {
     return OrbitOf(system_.equations(), system_.Variables(u.head(system_.UnknownCount())));
+  }
+  OrbitOfModel<Model> OrbitOfModelAt(const Eigen::VectorXd& u) const {
+    if constexpr (std::is_same_v<Model, Pascal2014>) {
+      return ToOrbit(*this, u);
+    } else {
+      return OrbitAt(u);
+    }
   }
   const System& system() const { return system_; }
   const Model& model() const { return system_.equations().model(); }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,6 +55,10 @@ struct Orbit {
   // orbit's own segments: it follows the orbit even where it is not a motion of the system.
   std::vector<State> Sample(int count) const;
 };
+
+// The orbit the layers above take of a model: the paper's model's Orbit, any other model's BasicOrbit.
+template <typename Model>
+using OrbitOfModel = std::conditional_t<std::is_same_v<Model, Pascal2014>, Orbit, BasicOrbit<Model>>;
 
 // A forcing phase reduced to [0, 2 pi).
 double PhaseInCycle(double phase);

@@ -83,13 +83,16 @@ struct OrbitSolverOptions {
   NewtonOptions newton;
 };
 
-struct OrbitSolution {
-  Orbit orbit;  // the last Newton iterate: the orbit when summary.Converged()
+template <typename Model>
+struct BasicOrbitSolution {
+  OrbitOfModel<Model> orbit;  // the last Newton iterate: the orbit when summary.Converged()
   NewtonSummary summary;
   Shooting shooting = Shooting::kSingle;
 };
+using OrbitSolution = BasicOrbitSolution<Pascal2014>;
 
-// Throws InvalidInput naming "free" if `free` does not make the system square.
+// Throws InvalidInput naming "free" if `free` does not make the system square. The paper's model;
+// any model's in model_orbit_solver.hpp.
 OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
                          bool tie_static_friction, const OrbitSolverOptions& options = {});
 
