@@ -379,7 +379,7 @@ def csv_result(name, text, shown=None):
             raise BadInput("input", f"'{shown}'", "a sweep file with at least one point")
         return Sweep(name, rows, header)
     raise BadInput("input", f"'{shown}'", "a run, trace or orbit-type map directory or a sweep or map-sweep CSV (its "
-                   "header: chain,pass,step,... or i,j,ni,nj,...)")
+                   "header: chain,direction,step,... or i,j,ni,nj,...)")
 
 
 def load(path):

@@ -108,7 +108,7 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "seed of the scattered starts (0 to 1e9)")->type_name("INT")->capture_default_str();
   cmd->add_option("--threads", args->threads, "threads (0: every core; 0 to 1024)")->type_name("INT")->capture_default_str();
   cmd->add_option("--output", args->output,
-                  "CSV file: chain,pass,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2")
+                  "CSV file: chain,direction,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2")
       ->required();
   cmd->add_flag("--force", args->force, kForceHelp);
   return {cmd, [args] { return RunSweep(*args); }};

@@ -16,8 +16,10 @@ namespace stickslip {
 
 namespace {
 
-// The header's columns around the parameter's name.
-constexpr const char* kSweepColumnsBefore = "chain,pass,step,";
+// The header's columns around the parameter's name. The second column, each row's way over the
+// range (up, down or fixed), was "pass" until 0.1 (a Python keyword, awkward in pandas).
+constexpr const char* kSweepColumnsBefore = "chain,direction,step,";
+constexpr const char* kOlderSweepColumnsBefore = "chain,pass,step,";
 constexpr const char* kSweepColumnsAfter =
     "section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2";
 
@@ -162,7 +164,8 @@ std::vector<State> ScatteredStarts(const State& centre, double half_width, int c
 }
 
 bool IsSweepCsvHeader(std::string_view line) {
-  const std::string_view before = kSweepColumnsBefore, after = kSweepColumnsAfter;
+  const std::string_view before = line.starts_with(kOlderSweepColumnsBefore) ? kOlderSweepColumnsBefore : kSweepColumnsBefore;
+  const std::string_view after = kSweepColumnsAfter;
   if (line.size() < before.size() + after.size() + 1 || !line.starts_with(before) || !line.ends_with(after)) return false;
   const std::string_view parameter = line.substr(before.size(), line.size() - before.size() - after.size() - 1);
   return line[line.size() - after.size() - 1] == ',' && ParameterFromString(parameter).has_value();

@@ -84,8 +84,8 @@ std::vector<State> ScatteredStarts(const State& centre, double half_width, int c
 // each of its rows). Deterministic: shortest round-trip
 // numbers.
 std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section);
-// Whether `line` is the header SweepCsv writes (for any parameter): the mark of a file that sweep
-// may replace.
+// Whether `line` is the header SweepCsv writes (for any parameter), or wrote before its second
+// column was renamed "direction" from "pass": the mark of a file that sweep may replace.
 bool IsSweepCsvHeader(std::string_view line);
 
 }  // namespace stickslip
