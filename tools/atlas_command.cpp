@@ -32,6 +32,7 @@ struct AtlasArgs {
   int max_multiple = static_cast<int>(kDefaults.max_multiple);
   double max_amplitude = kDefaults.max_amplitude;
   int max_points = static_cast<int>(kDefaults.max_points);
+  double resonance_approach = kDefaults.resonance_approach;
   std::string output;  // required
 };
 
@@ -53,6 +54,7 @@ AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
   c.max_multiple = args.max_multiple;
   c.max_amplitude = args.max_amplitude;
   c.max_points = args.max_points;
+  c.resonance_approach = args.resonance_approach;
   return AtlasOptionsOf(c, origin);
 }
 
@@ -131,6 +133,9 @@ Command AddAtlasCommand(CLI::App& app) {
   AddCountOption(*cmd, "--max-points", &args->max_points, 1, kMaxRunPoints,
                  "points per branch of every trace (1 to 1e6): near a natural frequency a branch may creep, and this "
                  "ends it (max-points) before its amplitude reaches --max-amplitude");
+  AddNumberOption(*cmd, "--resonance-approach", &args->resonance_approach, "0 <= resonance-approach < 1",
+                  "a trace's branch of orbits that never stick ends as a resonance at its first point within this "
+                  "(relative) of a natural frequency of the undamped slip that it approaches (0: never)");
   return {cmd, [args, cmd] {
             if (cmd->count("--range") == 0) throw InvalidInput("range", "(not given)", "--range LO,HI is required");
             return RunAtlas(*args);

@@ -34,6 +34,7 @@ constexpr std::pair<const char*, double AtlasCommand::*> kAtlasNumbers[] = {
     {"max_multiple", &AtlasCommand::max_multiple},
     {"max_amplitude", &AtlasCommand::max_amplitude},
     {"max_points", &AtlasCommand::max_points},
+    {"resonance_approach", &AtlasCommand::resonance_approach},
 };
 
 // The atlas of `start` with the keywords `o`; the GIL is released while it runs, taken after

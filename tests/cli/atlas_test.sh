@@ -85,6 +85,23 @@ expect 2 "output" "$bin" atlas --preset paper-4.1 --range 0.58,0.62 --results "$
 # omega1 = 0.70121... of the section 4.1 data (eq. 56) as a grid value.
 omega1=$(/usr/bin/python3 -c "import math; c, e = 0.3, 4.0; b = 1 + c * e; print(repr(math.sqrt((b - math.sqrt(b * b - 4 * c * e * (1 - c))) / 2)))")
 expect 2 "away from the natural frequencies" "$bin" atlas --preset paper-4.1 --range "0.6,$omega1" --steps 1 --results "$r" --output b
+expect 2 "resonance-approach = 1 is invalid" "$bin" atlas "${small[@]}" --output b --resonance-approach 1
+# The traces' branches that never stick end where they approach omega1 to within --resonance-approach
+# (default 1 %), below it; with 0, never so.
+near=(--preset paper-4.1 --range 0.66,0.7 --steps 1 --starts 1 --transients 300 --results "$r")
+"$bin" atlas "${near[@]}" --output near > /dev/null && "$bin" atlas "${near[@]}" --output never --resonance-approach 0 > /dev/null &&
+/usr/bin/python3 - "$r" "$omega1" <<'PY' && pass || fail "atlas --resonance-approach"
+import glob, re, sys
+r, omega1 = sys.argv[1], float(sys.argv[2])
+def ends(name):
+    text = "".join(open(f).read() for f in glob.glob(f"{r}/{name}/trace-*/trace.json"))
+    return [(float(a), float(b)) for a, b in re.findall(r"resonance: at omega_1 = ([0-9.]+)[^\"]*at omega = ([0-9.]+)", text)]
+near = ends("near")
+assert near, "no branch ended at the resonance"
+for at, omega in near:
+    assert abs(at - omega1) < 1e-9 and 0.99 * omega1 <= omega < omega1, (at, omega)
+assert not ends("never"), ends("never")
+PY
 # An existing directory that is not an atlas is the user's, a run's included; a link to an atlas is
 # refused (its target's entries would move); the output is one name.
 mkdir -p "$r/mine" && echo data > "$r/mine/data.txt"

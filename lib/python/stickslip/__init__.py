@@ -409,7 +409,8 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
           transients=_ATLAS_DEFAULTS["transients"], periods=_ATLAS_DEFAULTS["periods"], starts=_ATLAS_DEFAULTS["starts"],
           scatter=_ATLAS_DEFAULTS["scatter"], seed=_ATLAS_DEFAULTS["seed"], tolerance=_ATLAS_DEFAULTS["tolerance"],
           max_multiple=_ATLAS_DEFAULTS["max_multiple"], max_amplitude=_ATLAS_DEFAULTS["max_amplitude"],
-          max_points=_ATLAS_DEFAULTS["max_points"], threads=_ATLAS_DEFAULTS["threads"], output="atlas", preset=None, point=None, results="results", set=None):
+          max_points=_ATLAS_DEFAULTS["max_points"], resonance_approach=_ATLAS_DEFAULTS["resonance_approach"],
+          threads=_ATLAS_DEFAULTS["threads"], output="atlas", preset=None, point=None, results="results", set=None):
     """Every periodic motion over `range` = (min, max) of `parameter` (chi, eta, omega, u_s, u_r), as
     `stickslip atlas`: a brute force on steps + 1 grid values (rest, the neighbouring value's
     attractor and `starts` scattered states around the given state at each; transients, periods,
@@ -417,7 +418,8 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
     max_multiple (1 to 100; find, whose transient doubles until the motion has settled), and a trace
     over the whole range from each exact orbit on no branch yet, from its mirror image, and from every
     confirmed adjacent type a trace did not take (max_amplitude ends a trace at a resonance, max_points
-    (1 to 1e6) bounds each of its branches).
+    (1 to 1e6) bounds each of its branches, resonance_approach (0 <= . < 1, 0: never) ends a branch of
+    orbits that never stick that near a natural frequency of the undamped slip it approaches).
     parameters, state, phi, preset, point, set: as simulate; output: the name atlas.json records.
     Returns an Atlas whatever it found (every attractor on a branch or listed with the reason); bad
     input raises ValueError. The GIL is released while it runs; the result does not depend on threads.
@@ -426,7 +428,8 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
     low, high = _pair(range, "range")
     numbers = {"steps": steps, "transients": transients, "periods": periods, "starts": starts, "scatter": scatter,
                "seed": seed, "tolerance": tolerance, "threads": threads, "max_multiple": max_multiple,
-               "max_amplitude": max_amplitude, "max_points": max_points}
+               "max_amplitude": max_amplitude, "max_points": max_points,
+               "resonance_approach": resonance_approach}
     options = {"parameter": _checked(parameter, "parameter", "text"), "from": low, "to": high,
                **{name: _checked(value, name, "number") for name, value in numbers.items()}}
     return Atlas(_core._atlas(origin, options, _checked(output, "output", "text")))

@@ -130,6 +130,7 @@ OrbitContinuationSetup TraceStart(const Orbit& start, const UnknownChoice& unkno
   setup.options.lambda_min = options.brute_force.first.from;
   setup.options.lambda_max = options.brute_force.first.to;
   setup.max_amplitude = options.trace.max_amplitude;
+  setup.resonance_approach = options.resonance_approach;
   return setup;
 }
 
@@ -166,6 +167,7 @@ void AtlasOptions::Validate(const Parameters& base) const {
   OneRow(base, *this).Validate(base);
   FindOf(*this).Validate();
   trace.Validate();
+  CheckResonanceLimits(trace.max_amplitude, resonance_approach);
   membership.Validate();
   ContinuationOptions c = continuation;
   c.parameter_index = 0;  // ContinueOrbit sets it for the trace's parameter

@@ -306,6 +306,10 @@ AtlasOptions AtlasOptionsOf(const AtlasCommand& c, const ModelStart& origin) {
   }
   options.trace.max_amplitude = c.max_amplitude;
   options.continuation.max_points = WholeNumber("max-points", c.max_points, 1, kMaxRunPoints);
+  if (!(c.resonance_approach >= 0.0 && c.resonance_approach < 1.0)) {
+    throw InvalidInput("resonance-approach", c.resonance_approach, "0 <= resonance-approach < 1");
+  }
+  options.resonance_approach = c.resonance_approach;
   options.Validate(origin.parameters);
   return options;
 }

@@ -56,6 +56,9 @@ struct AtlasOptions {
   // Every trace: its range is the grid's; resonances, loops and switching as a trace's.
   ContinuationOptions continuation;
   TraceOptions trace;
+  // Every trace's branches end as a resonance where, never sticking, they approach an undamped
+  // slip's natural frequency to within this (OrbitContinuationSetup; 0 to 1, 0: never).
+  double resonance_approach = kDefaultResonanceApproach;
   BranchMembershipOptions membership;  // its parameter is the atlas's
   // At most this many traces (1 to kMaxTraces); starts beyond it are not traced (an attractor then
   // says so: off-branch).
@@ -67,7 +70,8 @@ struct AtlasOptions {
   static constexpr int kMaxMultiple = 100;
   static constexpr int kMaxTraces = 100000;
   // Throws InvalidInput naming the field ("grid" for a grid value where the parameters fail
-  // Validate, "max_multiple", the brute force's, find's, trace's and continuation's own fields).
+  // Validate, "max_multiple", "resonance_approach", the brute force's, find's, trace's and
+  // continuation's own fields).
   void Validate(const Parameters& base) const;
 };
 

@@ -136,7 +136,7 @@ BruteForceMapOptions MapOptionsOf(const MapSweepCommand& command, const ModelSta
 // to be whole or in range), the defaults the library's (AtlasOptions; the grid's steps 40).
 // AtlasOptionsOf checks them as the command line names them ("parameter", "range", "steps",
 // "transients", "periods", "starts", "seed", "tolerance", "threads", "max-multiple",
-// "max-amplitude", "max-points"; the range's ends, each a value of the parameter, as "range"; the
+// "max-amplitude", "max-points", "resonance-approach"; the range's ends, each a value of the parameter, as "range"; the
 // grid values' parameters as "grid"), the brute force's scattered starts around the origin's state.
 struct AtlasCommand {
   std::string parameter = ToString(AtlasOptions{}.brute_force.first.parameter);
@@ -153,6 +153,7 @@ struct AtlasCommand {
   double max_multiple = AtlasOptions{}.max_multiple;
   double max_amplitude = AtlasOptions{}.trace.max_amplitude;
   double max_points = AtlasOptions{}.continuation.max_points;  // per branch of every trace
+  double resonance_approach = AtlasOptions{}.resonance_approach;
 };
 AtlasOptions AtlasOptionsOf(const AtlasCommand& command, const ModelStart& origin);
 
