@@ -1,11 +1,14 @@
-// The paper's branches in omega continued twice by the same ContinueOrbit: through the paper's
-// model and through the general linear oscillator in physical units
-// (support/pascal_in_physical_units.hpp). The two closed forms are independent (the paper's eqs.
-// 2-11 in its scaled variables; the general model's first-order modal basis of M, K and the
-// forcing in SI units), so the same special points at the same scaled frequency, with the same
-// amplitudes, check both and the model-free branch layer between them.
+// Branches of the general linear oscillator through ContinueOrbit, the paper's model's path.
+// The paper's branches in omega are continued twice: through the paper's model and through the
+// general linear oscillator in physical units (support/pascal_in_physical_units.hpp). The two closed
+// forms are independent (the paper's eqs. 2-11 in its scaled variables; the general model's
+// first-order modal basis of M, K and the forcing in SI units), so the same special points at the
+// same scaled frequency, with the same orbits there, check both and the model-free branch layer
+// between them. A damped mass on a belt (autonomous) is continued in the belt's speed to the fold
+// where its slip grazes the belt.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -75,5 +78,45 @@ TEST_P(PaperBranchThroughTheGeneralModel, HasTheSameSpecialPointsAtTheSameScaled
 INSTANTIATE_TEST_SUITE_P(PaperPresets, PaperBranchThroughTheGeneralModel,
                          testing::Values("paper-4.1", "paper-5.1", "paper-6"), PresetTestName);
 
+// A mass on a belt with viscous damping (m = k = 1, c = 0.1, no forcing: autonomous, the period
+// the durations' sum) and F_s = 1.5 > F_k = 1: its stick-slip cycle, continued in the belt's speed
+// from the undamped closed form's guess at v_b = 0.2 (tests/orbits/belt_orbit_test.cpp), does not
+// lose its stick as the belt speeds up. Its slip arc becomes tangent to s = 0 at the re-stick (the
+// stop's slope margin, NS) exactly where the family folds (LP, the engine's tangent test): near
+// v_b = 0.549 with the stick still 0.91 long (../shared/FRICTION-LITERATURE.md, issue 23).
+TEST(BeltStickSlipBranch, DampedFamilyEndsWhereItsSlipGrazesTheBeltInAFold) {
+  LinearOscillatorData data;
+  data.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  data.stiffness = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  data.damping = Eigen::MatrixXd::Constant(1, 1, 0.1);
+  data.forcing = Eigen::VectorXd::Zero(1);
+  const double v_b = 0.2, d = 0.5;  // d = (F_s - F_k)/k
+  const BasicOrbit<LinearOscillator<1>> start{Signature::Parse("stick slip-"), {1.0, 1.0, 1.5, v_b}, {0.5, v_b}, 0.0,
+                                              {2.0 * d / v_b, std::numbers::pi + 2.0 * std::atan(v_b / d)}};
+  BasicOrbitContinuationSetup<LinearOscillator<1>> setup =
+      OmegaBranch<LinearOscillator<1>>(start, LinearOscillator<1>(data), 1, 1.0);
+  setup.parameter = "v_b";
+  setup.options.lambda_min = 0.01;
+  setup.options.lambda_max = 2.0;
+  const BasicOrbitBranch<LinearOscillator<1>> result = ContinueOrbit(setup);
+  const Branch& branch = result.branch;
+  ASSERT_EQ(branch.end, BranchEnd::kTerminalEvent) << branch.end_message;
+  auto find = [&](const char* type) {
+    const auto s = std::find_if(branch.special_points.begin(), branch.special_points.end(),
+                                [&](const SpecialPoint& p) { return p.type == type; });
+    EXPECT_NE(s, branch.special_points.end()) << type;
+    return s == branch.special_points.end() ? SpecialPoint{} : *s;
+  };
+  const SpecialPoint graze = find("NS"), fold = find("LP");
+  EXPECT_EQ(graze.test_function, "margin:stop-slope:2");
+  EXPECT_NEAR(graze.lambda, 0.549, 0.005);
+  EXPECT_NEAR(result.orbits[graze.point].durations[0], 0.91, 0.01);
+  EXPECT_NEAR(fold.lambda, graze.lambda, 1e-8);
+  RecordProperty("grazing_belt_speed", fmt::format("{:.10g}", graze.lambda));
+  RecordProperty("fold_belt_speed", fmt::format("{:.10g}", fold.lambda));
+  RecordProperty("stick", fmt::format("{:.10g}", result.orbits[graze.point].durations[0]));
+}
+
 }  // namespace
 }  // namespace stickslip
+

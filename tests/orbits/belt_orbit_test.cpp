@@ -1,8 +1,8 @@
 // Self-excited stick-slip of a mass on a moving belt (../shared/FRICTION-LITERATURE.md): the
 // general linear oscillator with no forcing (autonomous: the period is an unknown, the phase
 // pinned) and the contact against a surface at speed v_b, against the closed form of the
-// undamped cycle (derived below), the Odeint integration of the equation of motion, and the
-// damped cycle's end in a fold as the belt speeds up.
+// undamped cycle (derived below) and the Odeint integration of the equation of motion (the damped
+// cycle's end in a fold as the belt speeds up: tests/branches/linear_oscillator_branch_test.cpp).
 //
 // m x'' + k x = F, s = x' - v_b. In a stick the mass moves with the belt until k x reaches F_s;
 // then it slips (s < 0, F = +F_k) harmonically about F_k/k from x = F_s/k, x' = v_b, with radius
@@ -18,10 +18,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
+#include "stickslip/numerics/newton.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_system.hpp"
@@ -122,30 +122,6 @@ TEST(BeltStickSlip, ExactAndOdeintSimulatorsAgreeOnEveryEvent) {
       EXPECT_LT((exact.events[i].state - odeint.events[i].state).lpNorm<Eigen::Infinity>(), 1e-8) << "event " << i;
     }
   }
-}
-
-// With viscous damping and F_s > F_k the cycle does not lose its stick as the belt speeds up: its
-// family turns back in a fold, with the stick still finite (m = k = 1, c = 0.1, F_s = 1.5, F_k = 1:
-// near v_b = 0.549, stick 0.91).
-TEST(BeltStickSlip, DampedCycleEndsInAFoldWithItsStickFinite) {
-  const BeltCase b{1.0, 1.0, 1.5, 1.0, 0.2};
-  const Belt model = MassOnABelt(1.0, 1.0, 0.1);
-  const Equations equations(model, Signature::Parse("stick slip-"), Shooting::kSingle);
-  const Eigen::VectorXd guess = Variables(b, b.Restick(), b.Stick(), b.Slip());
-  const BasicOrbitSystem<Belt> system(equations, guess, {0, 1, 2, 3, 7}, false);  // and v_b
-  ContinuationOptions options;
-  options.parameter_index = 4;
-  options.lambda_max = 2.0;
-  options.max_points = 400;
-  const Branch branch = Continuation(system, nullptr, options, system.Unknowns(guess)).Run();
-  const auto fold = std::find_if(branch.special_points.begin(), branch.special_points.end(),
-                                 [](const SpecialPoint& s) { return s.type == "LP"; });
-  ASSERT_NE(fold, branch.special_points.end()) << ToString(branch.end) << ": " << branch.end_message;
-  const Eigen::VectorXd& u = branch.points[fold->point].u;
-  RecordProperty("fold_belt_speed", fmt::format("{:.10g}", u(4)));
-  RecordProperty("fold_stick", fmt::format("{:.10g}", u(2)));
-  EXPECT_NEAR(u(4), 0.549, 0.005);
-  EXPECT_NEAR(u(2), 0.91, 0.01);
 }
 
 // Kinetic friction falling with the slip speed, F_k + alpha |s| with c + alpha < 0, makes steady
