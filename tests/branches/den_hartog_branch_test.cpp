@@ -20,6 +20,7 @@
 
 #include "stickslip/branches/model_orbit_continuation.hpp"
 #include "stickslip/continuation/continuation.hpp"
+#include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/model_orbit_solver.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
@@ -159,6 +160,45 @@ TEST(DenHartogOrbit, DegenerateFrequencyMakesTheFullPeriodEquationsSingularNotTh
     EXPECT_GT(Conditioning("slip- / antisymmetric", r, 0.05), 1e-3) << "r = " << r;
   }
   EXPECT_GT(Conditioning("slip- slip+", 0.8, 0.05), 1e-3);  // away from 1/(2n): regular both ways
+}
+
+// There the full-period equations have a continuum of solutions (the free oscillation adds to any
+// of them), and SolveOrbit says so instead of failing on the singular Jacobian: from two guesses
+// of different amplitude (0.5 % below and above Den Hartog's X, the phase off by 0.01) it finds
+// two different orbits at the same parameters, each one of a one-dimensional family, admissible
+// and a periodic motion of the exact simulator (event-driven: no periodicity equations). (Farther
+// along the family the static level holds a turning point: members that are not motions.) Away
+// from 1/(2n) the same guesses give Den Hartog's isolated orbit.
+TEST(DenHartogOrbit, DegenerateFrequencyGivesAFamilyOfOrbitsNotANewtonFailure) {
+  const DenHartogOscillator model = DenHartogModel();
+  for (double r : {0.5, 0.25, 0.8}) {
+    const DenHartogOrbit exact(r, 0.05);
+    const bool degenerate = r != 0.8;
+    std::vector<double> amplitudes;
+    for (double scale : {0.995, 1.005}) {
+      BasicOrbit<DenHartogOscillator> guess = DenHartogOnSignature(exact, "slip- slip+", 0.05);
+      guess.start(0) *= scale;
+      guess.phi += 0.01;
+      const BasicOrbitSolution<DenHartogOscillator> solved = SolveOrbit(model, guess, {0, 1, 2, 3}, false);
+      ASSERT_TRUE(solved.summary.Converged()) << "r = " << r << ": " << solved.summary.message;
+      EXPECT_EQ(solved.family_dimension, degenerate ? 1 : 0) << "r = " << r;
+      EXPECT_EQ(solved.summary.message.starts_with("not isolated: one of a 1-dimensional family"), degenerate);
+      const BasicOrbit<DenHartogOscillator>& o = solved.orbit;
+      BasicSimulationOptions<DenHartogOscillator::State> options;
+      options.duration = o.durations[0] + o.durations[1];
+      const BasicSimulationResult<DenHartogOscillator> motion = SimulateExact(model, o.parameters, o.start, o.phi, options);
+      ASSERT_TRUE(motion.Completed()) << motion.message;
+      ASSERT_GT(SmallestMargin(AdmissibilityMargins(model, o)).value, 0.0) << "r = " << r << ": a motion";
+      EXPECT_LT((motion.segments.back().end - o.start).lpNorm<Eigen::Infinity>(), 1e-9) << "r = " << r;
+      amplitudes.push_back(o.start(0));
+    }
+    if (degenerate) {
+      EXPECT_GT(amplitudes[1] - amplitudes[0], 0.005 * exact.amplitude) << "r = " << r << ": two members of the family";
+    } else {
+      EXPECT_NEAR(amplitudes[0], exact.amplitude, 1e-10);
+      EXPECT_NEAR(amplitudes[1], exact.amplitude, 1e-10);
+    }
+  }
 }
 
 // Den Hartog's oscillator with viscous damping c (Phil. Mag. 9 (1930) 801: combined viscous and

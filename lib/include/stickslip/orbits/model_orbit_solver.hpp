@@ -3,18 +3,37 @@
 // (orbit_solver.cpp); a program or test solving another model's orbits includes this header.
 #pragma once
 
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/numerics/minimum_norm_newton.hpp"
 #include "stickslip/orbits/model_orbit_problem.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 
 namespace stickslip {
 
-// Throws InvalidInput naming "free" if `free` does not make the system square.
+// Where Newton met a singular Jacobian: the orbit nearest `guess` on a family of orbits at the
+// guess's parameters, if minimum-norm steps converge to one whose Jacobian is rank-deficient.
+template <OscillatorModel Model>
+std::optional<BasicOrbitSolution<Model>> OnAFamily(const ModelOrbitProblem<Model>& problem, const Eigen::VectorXd& guess,
+                                                   Shooting shooting) {
+  MinimumNormNewtonResult family = SolveMinimumNorm(problem, guess);
+  if (!family.newton.summary.Converged() || family.nullity == 0) return std::nullopt;
+  family.newton.summary.message = fmt::format(
+      "not isolated: one of a {}-dimensional family of orbits at these parameters (the periodicity equations' "
+      "Jacobian has nullity {} along it), the one nearest the guess",
+      family.nullity, family.nullity);
+  return BasicOrbitSolution<Model>{problem.OrbitOfModelAt(family.newton.solution), std::move(family.newton.summary),
+                                   shooting, family.nullity};
+}
+
+// Throws InvalidInput naming "free" if `free` does not make the system square. Where Newton meets a
+// singular Jacobian and the guess is near a family of orbits (not isolated), the family's member
+// nearest it, with family_dimension set.
 template <OscillatorModel Model>
 BasicOrbitSolution<Model> SolveOrbit(const Model& model, const OrbitOfModel<Model>& guess, const std::vector<int>& free,
                                      bool tie_static_friction, const OrbitSolverOptions& options = {}) {
@@ -32,6 +51,11 @@ BasicOrbitSolution<Model> SolveOrbit(const Model& model, const OrbitOfModel<Mode
     newton.linear_solver = options.sparse_solver;
   }
   NewtonResult result = SolveNewton(problem, problem.Unknowns(start), newton);
+  if (result.summary.termination == NewtonTermination::kSingularJacobian) {
+    if (std::optional<BasicOrbitSolution<Model>> family = OnAFamily(problem, problem.Unknowns(start), shooting)) {
+      return *std::move(family);
+    }
+  }
   return {problem.OrbitOfModelAt(result.solution), std::move(result.summary), shooting};
 }
 

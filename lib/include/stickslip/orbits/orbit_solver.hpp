@@ -88,6 +88,11 @@ struct BasicOrbitSolution {
   OrbitOfModel<Model> orbit;  // the last Newton iterate: the orbit when summary.Converged()
   NewtonSummary summary;
   Shooting shooting = Shooting::kSingle;
+  // > 0 where the orbit is not isolated: one of a family of orbits of this dimension at its
+  // parameters (the periodicity equations' Jacobian that rank-deficient along it), found where
+  // Newton met a singular Jacobian by minimum-norm steps (numerics/minimum_norm_newton.hpp): the
+  // family's member nearest the guess. The summary's message says so.
+  int family_dimension = 0;
 };
 using OrbitSolution = BasicOrbitSolution<Pascal2014>;
 
