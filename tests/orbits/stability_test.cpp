@@ -19,7 +19,7 @@ namespace stickslip {
 namespace {
 
 std::vector<std::complex<double>> Sorted(const Eigen::Matrix4d& m) {
-  const Eigen::EigenSolver<Eigen::Matrix4d> eigen(m, false);
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(Eigen::MatrixXd(m), false);
   std::vector<std::complex<double>> mu(eigen.eigenvalues().data(), eigen.eigenvalues().data() + 4);
   std::sort(mu.begin(), mu.end(), [](const auto& a, const auto& b) {
     return std::abs(a) != std::abs(b) ? std::abs(a) > std::abs(b) : a.imag() > b.imag();
@@ -130,7 +130,7 @@ TEST(ModelStability, DenHartogsMultipliersMultiplyToTheStopsAccelerationRatiosAn
     const double ratio = (r * r * o.amplitude - beta) / (r * r * o.amplitude + beta);
     EXPECT_NEAR(s.monodromy.determinant(), ratio * ratio, 1e-12);
     EXPECT_NEAR(std::abs(s.multipliers[0] * s.multipliers[1]), ratio * ratio, 1e-12);
-    const Eigen::EigenSolver<Eigen::Matrix2d> fd(PeriodMapJacobian(DenHartogModel(), orbit), false);
+    const Eigen::EigenSolver<Eigen::MatrixXd> fd(Eigen::MatrixXd(PeriodMapJacobian(DenHartogModel(), orbit)), false);
     for (int k = 0; k < 2; ++k) {
       const double nearest = std::min(std::abs(fd.eigenvalues()(0) - s.multipliers[k]),
                                       std::abs(fd.eigenvalues()(1) - s.multipliers[k]));
