@@ -66,6 +66,7 @@ Json OrbitJson(const OrbitSolution& s, const std::vector<int>& free, bool tie_st
                   {"iterations", s.summary.iterations},
                   {"residual_norm", Number(s.summary.residual_norms.back())},
                   {"condition_number", Number(s.summary.condition_number)},
+                  {"family_dimension", s.family_dimension},
                   {"shooting", ToString(s.shooting)}});
   out["margins"] = Json::object();
   for (const Margin& m : margins) out["margins"][m.Name()] = Number(m.value);

@@ -13,11 +13,11 @@ fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 import json, sys
 o = json.load(open(sys.argv[1]))
 for key in ("signature", "parameters", "phi", "x10", "x20", "v10", "segments", "converged",
-            "residual_norm", "margins", "verification"):
+            "residual_norm", "family_dimension", "margins", "verification"):
     assert key in o, key
 assert o["signature"] == "slip- slip+ stick slip+"
 assert set(o["parameters"]) == {"chi", "eta", "omega", "u_s", "u_r"}
-assert o["converged"] is True and o["residual_norm"] < 1e-11
+assert o["converged"] is True and o["residual_norm"] < 1e-11 and o["family_dimension"] == 0
 assert [s["mode"] for s in o["segments"]] == ["slip-", "slip+", "stick", "slip+"]
 assert abs(o["segments"][1]["duration"] - 2) < 2e-4 and abs(o["segments"][3]["duration"] - 3) < 2e-4
 assert min(v for v in o["margins"].values() if v is not None) > 0
@@ -105,6 +105,13 @@ expect_error 2 "free = 'mu'" --preset paper-5.1 --free mu --fix phi
 expect_error 2 "misses d1" --signature "slip- slip+" --set chi=0.3 --set eta=4 --set omega=0.6 --set u_s=0.1 --set u_r=0.3 --set x10=1
 expect_error 2 "exactly one" --preset paper-5.1 --signature "slip-"
 expect_error 3 "did not converge" --preset paper-5.1 --guess d1=0.01 --guess x10=40 --guess phi=5
+# A choice of unknowns one equation short (d1 = pi/omega fixed): the released parameter could take
+# any value, a family through the parameters, not of orbits at fixed parameters; Newton's singular
+# Jacobian stands (not 'not isolated', never an arbitrary parameter value with exit 0). Releasing
+# u_r, which a slip-only orbit's equations do not hold, is the same.
+expect_error 3 "singular" --preset paper-4.1 --free u_s --fix d1
+expect_error 3 "singular" --preset paper-4.1 --free chi --fix d1
+expect_error 3 "singular" --preset paper-4.1 --free u_r --fix d1
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

@@ -32,16 +32,19 @@ MinimumNormNewtonResult SolveMinimumNorm(const NonlinearSystem& system, const Ei
     const double norm = residual.allFinite() ? residual.lpNorm<Eigen::Infinity>() : INFINITY;
     summary.residual_norms.push_back(norm);
     summary.iterations = iteration;
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Dense(jacobian), Eigen::ComputeThinU | Eigen::ComputeThinV);
-    svd.setThreshold(options.rank_tolerance);
-    result.nullity = static_cast<int>(svd.cols() - svd.rank());
-    const Eigen::VectorXd& s = svd.singularValues();
-    summary.condition_number = s.size() > 0 && s(s.size() - 1) > 0.0 ? s(0) / s(s.size() - 1) : INFINITY;
-    if (!std::isfinite(norm)) {
+    const Eigen::MatrixXd j = Dense(jacobian);
+    if (!std::isfinite(norm) || !j.allFinite()) {
       summary.termination = NewtonTermination::kDiverged;
-      summary.message = "a non-finite residual";
+      summary.message = std::isfinite(norm) ? "a non-finite Jacobian" : "a non-finite residual";
       return result;
     }
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeFullV | Eigen::ComputeFullU);
+    svd.setThreshold(options.rank_tolerance);
+    const int rank = static_cast<int>(svd.rank());
+    result.nullity = static_cast<int>(svd.cols()) - rank;
+    result.null_space = svd.matrixV().rightCols(result.nullity);
+    const Eigen::VectorXd& s = svd.singularValues();
+    summary.condition_number = s.size() > 0 && s(s.size() - 1) > 0.0 ? s(0) / s(s.size() - 1) : INFINITY;
     if (norm <= options.residual_tolerance) {
       summary.termination = NewtonTermination::kConverged;
       return result;

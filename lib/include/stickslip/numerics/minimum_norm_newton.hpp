@@ -22,9 +22,11 @@ struct MinimumNormNewtonOptions {
 struct MinimumNormNewtonResult {
   NewtonResult newton;  // its summary's termination: converged, max-iterations, diverged or left-domain
   int nullity = 0;      // of the Jacobian at the last iterate: the family's dimension where converged
+  Eigen::MatrixXd null_space;  // its orthonormal basis (UnknownCount x nullity)
 };
 
-// Dense Jacobians (a sparse one is made dense: the systems it serves are small).
+// Dense Jacobians (a sparse one is made dense: the systems it serves are small). A Jacobian that is
+// not finite ends it as diverged.
 MinimumNormNewtonResult SolveMinimumNorm(const NonlinearSystem& system, const Eigen::VectorXd& guess,
                                          const MinimumNormNewtonOptions& options = {});
 

@@ -16,13 +16,39 @@
 
 namespace stickslip {
 
+// Whether the converged `found` lies on a family of orbits at fixed parameters: no direction of
+// its null space moves a released parameter (the family would run through the parameters: the
+// choice of unknowns is short of an equation), and a step along the null space, corrected by
+// minimum-norm steps, converges to another orbit there (at an isolated singular orbit, a fold,
+// the correction cannot come back along the null space and fails).
+template <OscillatorModel Model>
+bool FamilyAtFixedParameters(const ModelOrbitProblem<Model>& problem, const MinimumNormNewtonResult& found,
+                             const MinimumNormNewtonOptions& options) {
+  const int first_parameter = problem.FullCount() - problem.description().ParameterCount();
+  const std::vector<int>& free = problem.free();
+  for (std::size_t k = 0; k < free.size(); ++k) {
+    if (free[k] >= first_parameter && found.null_space.row(static_cast<int>(k)).lpNorm<Eigen::Infinity>() > 1e-8) {
+      return false;
+    }
+  }
+  const Eigen::VectorXd& u = found.newton.solution;
+  const double step = 1e-4 * (1.0 + u.lpNorm<Eigen::Infinity>());
+  const MinimumNormNewtonResult other = SolveMinimumNorm(problem, u + step * found.null_space.col(0), options);
+  return other.newton.summary.Converged() && (other.newton.solution - u).norm() > 0.5 * step;
+}
+
 // Where Newton met a singular Jacobian: the orbit nearest `guess` on a family of orbits at the
-// guess's parameters, if minimum-norm steps converge to one whose Jacobian is rank-deficient.
+// guess's parameters, if minimum-norm steps converge to one (FamilyAtFixedParameters).
 template <OscillatorModel Model>
 std::optional<BasicOrbitSolution<Model>> OnAFamily(const ModelOrbitProblem<Model>& problem, const Eigen::VectorXd& guess,
-                                                   Shooting shooting) {
-  MinimumNormNewtonResult family = SolveMinimumNorm(problem, guess);
-  if (!family.newton.summary.Converged() || family.nullity == 0) return std::nullopt;
+                                                   Shooting shooting, const NewtonOptions& newton) {
+  MinimumNormNewtonOptions options;
+  options.max_iterations = newton.max_iterations;
+  options.residual_tolerance = newton.residual_tolerance;
+  MinimumNormNewtonResult family = SolveMinimumNorm(problem, guess, options);
+  if (!family.newton.summary.Converged() || family.nullity == 0 || !FamilyAtFixedParameters(problem, family, options)) {
+    return std::nullopt;
+  }
   family.newton.summary.message = fmt::format(
       "not isolated: one of a {}-dimensional family of orbits at these parameters (the periodicity equations' "
       "Jacobian has nullity {} along it), the one nearest the guess",
@@ -52,7 +78,7 @@ BasicOrbitSolution<Model> SolveOrbit(const Model& model, const OrbitOfModel<Mode
   }
   NewtonResult result = SolveNewton(problem, problem.Unknowns(start), newton);
   if (result.summary.termination == NewtonTermination::kSingularJacobian) {
-    if (std::optional<BasicOrbitSolution<Model>> family = OnAFamily(problem, problem.Unknowns(start), shooting)) {
+    if (std::optional<BasicOrbitSolution<Model>> family = OnAFamily(problem, problem.Unknowns(start), shooting, newton)) {
       return *std::move(family);
     }
   }

@@ -16,7 +16,8 @@ namespace stickslip {
 
 class OrbitLayout {
  public:
-  // `model` must outlive the layout (a model's description is static).
+  // `model` must outlive the layout (the paper's model's description is static; a LinearOscillator's is
+  // the model's member: keep the model).
   OrbitLayout(const ModelDescription& model, int segments) : model_(&model), segments_(segments) {}
 
   int StartVariables() const { return model_->StateSize() - 1; }

@@ -91,7 +91,9 @@ struct BasicOrbitSolution {
   // > 0 where the orbit is not isolated: one of a family of orbits of this dimension at its
   // parameters (the periodicity equations' Jacobian that rank-deficient along it), found where
   // Newton met a singular Jacobian by minimum-norm steps (numerics/minimum_norm_newton.hpp): the
-  // family's member nearest the guess. The summary's message says so.
+  // family's member nearest the guess. Only a family at fixed parameters (its null space moves no
+  // released parameter, and a step along it is corrected to another orbit); otherwise Newton's
+  // failure stands. The summary's message says so; solve's report and --json show it.
   int family_dimension = 0;
 };
 using OrbitSolution = BasicOrbitSolution<Pascal2014>;
