@@ -163,6 +163,7 @@ struct SolvedOrbit {
   std::vector<Margin> margins;
   Stability stability;
   Verification verification;
+  int family_dimension = 0;  // OrbitSolution's
 };
 
 SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std::string& linear_solver) {
@@ -189,7 +190,7 @@ SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std:
       Verification verification = VerifyOrbit(solution.orbit);
       solved = SolvedOrbit{std::move(solution.orbit), std::move(solution.summary), solution.shooting,
                            std::move(unknowns), problem.unknowns.tie_static_friction, std::move(margins),
-                           std::move(stability), std::move(verification)};
+                           std::move(stability), std::move(verification), solution.family_dimension};
     } else {
       failed = std::move(solution.summary);
     }
@@ -215,7 +216,7 @@ py::dict Find(const py::dict& start, const FindCommand& command) {
       for (int index : found.problem->free) unknowns.push_back(ov::Name(found.solution->orbit.signature.size(), index));
       solved = SolvedOrbit{found.solution->orbit, found.solution->summary, found.solution->shooting,
                            std::move(unknowns), found.problem->unknowns.tie_static_friction, found.margins,
-                           StabilityOf(found.solution->orbit), *found.verification};
+                           StabilityOf(found.solution->orbit), *found.verification, found.solution->family_dimension};
     }
   }
   py::dict out;
@@ -300,6 +301,9 @@ void BindSolvedOrbit(py::module_& m) {
       .def_property_readonly("tie_u_r", [](const SolvedOrbit& s) { return s.tie_u_r; })
       .def_property_readonly("newton", [](const SolvedOrbit& s) { return SummaryDict(s.summary); },
                              "the Newton summary: termination, iterations, residual norms, condition number")
+      .def_property_readonly("family_dimension", [](const SolvedOrbit& s) { return s.family_dimension; },
+                             "0 for an isolated orbit; k > 0 where it is one of a k-dimensional family of orbits "
+                             "at its parameters (not isolated: newton['message'] says so)")
       .def_property_readonly("shooting", [](const SolvedOrbit& s) { return std::string(ToString(s.shooting)); })
       .def_property_readonly(
           "margins",

@@ -34,6 +34,7 @@ def test_paper_orbits_equal_the_command_line_bit_for_bit(name):
     assert orbit.newton["termination"] == expected["termination"]
     assert orbit.newton["residual_norms"][-1] == expected["residual_norm"]
     assert orbit.shooting == expected["shooting"]
+    assert orbit.family_dimension == expected["family_dimension"] == 0
     assert list(orbit.margins) == list(expected["margins"])
     for key, value in expected["margins"].items():
         assert orbit.margins[key] == value or (value is None and not math.isfinite(orbit.margins[key])), key
@@ -91,6 +92,15 @@ def test_solve_from_parameters_and_a_signature_equals_the_preset():
     orbit = stickslip.solve(preset.parameters, preset.signature, guess=guess)
     reference = stickslip.solve(preset="paper-5.1")
     assert orbit.variables == reference.variables
+
+
+def test_unknowns_one_equation_short_stay_a_newton_failure_not_a_family():
+    # d1 = pi/omega fixed and u_s released: u_s could take any value (a "family" through the
+    # parameters), so Newton's singular Jacobian stands, as on the command line (exit 3).
+    with pytest.raises(stickslip.ConvergenceError) as error:
+        stickslip.solve(preset="paper-4.1", free=["u_s"], fix=["d1"])
+    assert error.value.summary["termination"] == "singular-jacobian"
+    assert cli("solve", "--preset", "paper-4.1", "--free", "u_s", "--fix", "d1").returncode == 3
 
 
 def test_no_convergence_raises_convergence_error_with_the_newton_summary():
