@@ -126,7 +126,7 @@ OrbitContinuation::OrbitContinuation(OrbitContinuationProblem problem, double ma
       resonance_approach_(resonance_approach) {
   const std::vector<std::string>& coordinates = problem_.system->description().coordinates;
   for (const std::string& coordinate : coordinates) {
-    const std::string name = "amplitude:" + coordinate;
+    const std::string name = orbit_columns::AmplitudeOf(coordinate);
     const std::vector<PointColumn>& columns = problem_.monitor->Columns();
     const auto column = std::find_if(columns.begin(), columns.end(),
                                      [&](const PointColumn& c) { return c.name == name && !c.monitored; });

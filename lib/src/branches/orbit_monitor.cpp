@@ -41,7 +41,7 @@ struct OrbitMonitor::Evaluated {
 
 std::vector<std::string> orbit_columns::MeasureNames(const ModelDescription& model, int contact) {
   std::vector<std::string> names;
-  for (const std::string& coordinate : model.coordinates) names.push_back("amplitude:" + coordinate);
+  for (const std::string& coordinate : model.coordinates) names.push_back(AmplitudeOf(coordinate));
   names.push_back("peak-to-peak:" + model.coordinates[contact]);
   for (const char* name : {kStickFraction, kStops, kSticks, kFrictionWork, kEquivalentDamping}) names.push_back(name);
   return names;

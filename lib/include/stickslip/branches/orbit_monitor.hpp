@@ -72,6 +72,8 @@ void ForEachMeasure(Measures& measures, Visit&& visit) {
   visit(kFrictionWork, measures.friction_work);
   visit(kEquivalentDamping, measures.equivalent_damping);
 }
+// The amplitude column of a model's coordinate: "amplitude:x1".
+inline std::string AmplitudeOf(std::string_view coordinate) { return "amplitude:" + std::string(coordinate); }
 // The measure columns of a model's orbits: the amplitude of each coordinate, the peak-to-peak of
 // the one the contact holds (`contact`), then the stick fraction, stops, sticks, friction work and
 // equivalent damping; for the paper's model ForEachMeasure's names, and their values.
