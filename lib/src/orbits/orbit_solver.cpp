@@ -10,8 +10,6 @@
 
 namespace stickslip {
 
-namespace ov = orbit_variables;
-
 const char* ToString(ShootingChoice s) {
   switch (s) {
     case ShootingChoice::kAuto: return "auto";
@@ -35,14 +33,18 @@ int VariableIndex(int n, std::string_view field, std::string_view name) {
   return VariableIndex(OrbitLayout(Pascal2014{}.Description(), n), field, name);
 }
 
-UnknownChoice UnknownsAtFixedParameters(const Signature& signature) {
+UnknownChoice UnknownsAtFixedParameters(const OrbitVariableSet& variables) {
+  const Signature& signature = variables.signature;
   for (int i = 0; i < signature.size(); ++i) {
     if (signature.EndKind(i) == SegmentEndKind::kAbnormalStop) {
-      const int n = signature.size();
-      return {{ov::Name(n, ov::KineticLevel(n))}, {}, true};
+      return {{variables.layout.Name(variables.kinetic_level)}, {}, true};
     }
   }
   return {};
+}
+
+UnknownChoice UnknownsAtFixedParameters(const Signature& signature) {
+  return UnknownsAtFixedParameters(VariableSetOf(signature));
 }
 
 std::vector<int> FreeIndices(const OrbitVariableSet& variables, const UnknownChoice& choice) {
@@ -115,6 +117,10 @@ Shooting ResolveShooting(ShootingChoice choice, int listed_segments, int max_sin
                         (choice == ShootingChoice::kAuto && listed_segments > max_single_shooting_segments);
   return multiple ? Shooting::kMultiple : Shooting::kSingle;
 }
+
+template OrbitSolution SolveOrbit<Pascal2014>(const Pascal2014& model, const Orbit& guess,
+                                              const std::vector<int>& free, bool tie_static_friction,
+                                              const OrbitSolverOptions& options);
 
 OrbitSolution SolveOrbit(const Orbit& guess, const std::vector<int>& free,
                          bool tie_static_friction, const OrbitSolverOptions& options) {

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <memory>
-#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -50,9 +49,8 @@ BasicOrbitBranch<Model> ToOrbitBranch(const OrbitContinuationProblem& problem, B
   result.shooting = problem.system->shooting();
   result.columns = problem.monitor->Columns();
   result.branch = std::move(branch);
-  const auto* system = dynamic_cast<const ModelOrbitProblem<Model>*>(problem.system.get());
-  if (!system) throw std::logic_error("ToOrbitBranch: the problem is of another model");
-  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(system->OrbitOfModelAt(p.u));
+  const ModelOrbitProblem<Model>& system = ModelProblemOf<Model>(*problem.system);
+  for (const BranchPoint& p : result.branch.points) result.orbits.push_back(system.OrbitOfModelAt(p.u));
   return result;
 }
 

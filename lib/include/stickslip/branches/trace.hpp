@@ -35,6 +35,8 @@
 //   OrbitContinuationSetup setup = MakeSetup(ReadRunFile("continuation-scripts/paper-4.1-omega-down.toml"), "results");
 //   const TraceResult trace = TraceOrbits(setup, {});
 //   for (const TraceLink& link : trace.down.links) use(link.branch, link.signature);
+// For any model (model/oscillator_model.hpp): the paper's model is compiled once (trace.cpp); a
+// program or test tracing another model's orbits includes branches/model_trace.hpp.
 #pragma once
 
 #include <optional>
@@ -114,50 +116,63 @@ const char* ToString(LinkStart start);
 // its start is computed and recorded; the first TraceOptions::follow_bifurcations of them are
 // followed, the others not (a run file that restarts from the stored label with switch_branch
 // follows one).
-struct BifurcationMet {
+template <OscillatorModel Model>
+struct BasicBifurcationMet {
   int point = 0;           // the special point's point on the link's branch (SpecialPoint::point)
   std::string type;        // "BP", "PD" or "SB"
   double lambda = 0.0;
   std::string signature;   // the type of the branch that leaves it; "" where its start failed
   double singularity = 0.0;  // BifurcationBranchStart::singularity
   std::string message;     // why the start failed, if it did
-  std::optional<OrbitBranch> followed;  // the branch that leaves it, where TraceOptions asked for it
+  std::optional<BasicOrbitBranch<Model>> followed;  // the branch that leaves it, where TraceOptions asked for it
 };
+using BifurcationMet = BasicBifurcationMet<Pascal2014>;
 
-struct TraceLink {
-  OrbitBranch branch;
+template <OscillatorModel Model>
+struct BasicTraceLink {
+  BasicOrbitBranch<Model> branch;
   std::string signature;  // Signature::ToString of the branch's orbits
   int direction = 1;      // the parameter's way at the branch's start: +1 up, -1 down
   LinkStart start = LinkStart::kTraceStart;
   std::string margin;     // the previous branch's margin that the switch (or the following) was at
   // kSwitch: the confirmed switch (margin, adjacent kind, persists or a nonsmooth fold, start and
   // past orbits); kFollowedPast: the one that confirmed nothing.
-  std::optional<TypeSwitch> type_switch;
+  std::optional<BasicTypeSwitch<Model>> type_switch;
   TraceEnd end = TraceEnd::kContinuationFailed;  // how the branch ended, in the trace's terms
   std::string message;
-  std::vector<BifurcationMet> bifurcations;  // at its located BP, PD and SB, in branch order
+  std::vector<BasicBifurcationMet<Model>> bifurcations;  // at its located BP, PD and SB, in branch order
   // With TraceOptions::record_other_switches: the confirmed switches at its end the chain did not take.
-  std::vector<TypeSwitch> other_switches;
+  std::vector<BasicTypeSwitch<Model>> other_switches;
 };
+using TraceLink = BasicTraceLink<Pascal2014>;
 
-struct TraceDirection {
-  int direction = 1;               // -1 down, +1 up
-  std::vector<TraceLink> links;    // in chain order; empty only if the first start failed
+template <OscillatorModel Model>
+struct BasicTraceDirection {
+  int direction = 1;                          // -1 down, +1 up
+  std::vector<BasicTraceLink<Model>> links;   // in chain order; empty only if the first start failed
   TraceEnd end = TraceEnd::kContinuationFailed;
   std::string message;
 };
+using TraceDirection = BasicTraceDirection<Pascal2014>;
 
-struct TraceResult {
+// Both directions ended at a bound, the family's end, a loop, a resonance, max-points or max-branches.
+bool TraceCompleted(TraceEnd down, TraceEnd up);
+
+template <OscillatorModel Model>
+struct BasicTraceResult {
   std::string parameter;
-  TraceDirection down{-1, {}, TraceEnd::kContinuationFailed, {}};
-  TraceDirection up{1, {}, TraceEnd::kContinuationFailed, {}};
+  BasicTraceDirection<Model> down{-1, {}, TraceEnd::kContinuationFailed, {}};
+  BasicTraceDirection<Model> up{1, {}, TraceEnd::kContinuationFailed, {}};
   // Both directions ended at a bound, the family's end, a loop, a resonance, max-points or max-branches.
-  bool Completed() const;
+  bool Completed() const { return TraceCompleted(down.end, up.end); }
   // Some branch failed to converge (continuation-failed).
-  bool Failed() const;
+  bool Failed() const {
+    return down.end == TraceEnd::kContinuationFailed || up.end == TraceEnd::kContinuationFailed;
+  }
   // The start is not a motion and the trace was refused (TraceEnd::kNotAMotion): no branches.
-  bool NotAMotion() const;
+  bool NotAMotion() const { return down.end == TraceEnd::kNotAMotion; }
 };
+using TraceResult = BasicTraceResult<Pascal2014>;
 
 // The trace from `start` (its orbit, unknowns, parameter and shooting, and the options of every
 // branch: setup.options, whose lambda_min and lambda_max bound the whole trace and whose direction
@@ -165,7 +180,8 @@ struct TraceResult {
 // signature only, whose unknowns they address). Throws InvalidInput for invalid options (also
 // continue_past_terminal set: the trace decides at every change of type), as ContinueOrbit does for
 // an invalid setup.
-TraceResult TraceOrbits(const OrbitContinuationSetup& start, const TraceOptions& options = {});
+template <OscillatorModel Model>
+BasicTraceResult<Model> TraceOrbits(const BasicOrbitContinuationSetup<Model>& start, const TraceOptions& options = {});
 
 // `setup` with its start at its least period: a start whose signature repeats a shorter one and
 // whose orbit is that shorter one written several times (a period-1 orbit listed over three periods,
@@ -173,6 +189,10 @@ TraceResult TraceOrbits(const OrbitContinuationSetup& start, const TraceOptions&
 // one, with the unknowns at fixed parameters (UnknownsAtFixedParameters): one motion, one branch
 // type. Any other start as it is. A trace's switches go through it, and so does the atlas's start
 // from a switch a trace did not take.
-OrbitContinuationSetup AtLeastPeriod(OrbitContinuationSetup setup);
+template <OscillatorModel Model>
+BasicOrbitContinuationSetup<Model> AtLeastPeriod(BasicOrbitContinuationSetup<Model> setup);
+
+extern template TraceResult TraceOrbits(const OrbitContinuationSetup& start, const TraceOptions& options);
+extern template OrbitContinuationSetup AtLeastPeriod(OrbitContinuationSetup setup);
 
 }  // namespace stickslip

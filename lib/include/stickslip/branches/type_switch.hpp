@@ -13,6 +13,8 @@
 //     from it, goes through the new signature over one period (events where the orbit says, state
 //     back to the start).
 // The first confirmed candidate is the switch; where none is, the result says why, per candidate.
+// For any model (model/oscillator_model.hpp): the paper's model is compiled once (type_switch.cpp);
+// a program or test switching another model's types includes branches/model_type_switch.hpp.
 #pragma once
 
 #include <optional>
@@ -21,25 +23,30 @@
 
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/orbits/adjacent_type.hpp"
+#include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 
 namespace stickslip {
 
 // A located change of orbit type on a branch.
-struct LocatedTypeChange {
-  Orbit orbit;             // the orbit at the located point
+template <OscillatorModel Model>
+struct BasicLocatedTypeChange {
+  OrbitOfModel<Model> orbit;  // the orbit at the located point
   std::string margin;      // the margin through zero, as Margin::Name() gives it: "reversal:1"
   std::string parameter;   // the continued parameter, e.g. "omega"
   int past = 1;            // +1 or -1: the way the parameter goes past the boundary, to the side
                            // where the located type is not admissible
   UnknownChoice unknowns;  // the branch's unknowns (the parameter held)
+  Model model{};           // last, so that the paper's model's need not name it
 };
+using LocatedTypeChange = BasicLocatedTypeChange<Pascal2014>;
 
 // The type change of a branch's special point `special` (a margin's sign change: test function
 // "margin:<name>"), the side past it from its tangent and the margin's sign before it. Throws InvalidInput naming
 // "special point" when the point is not a margin's sign change.
-LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& special,
-                               const OrbitContinuationSetup& setup);
+template <OscillatorModel Model>
+BasicLocatedTypeChange<Model> TypeChangeAt(const BasicOrbitBranch<Model>& branch, const SpecialPoint& special,
+                                           const BasicOrbitContinuationSetup<Model>& setup);
 
 struct TypeSwitchOptions {
   double nudge = 1e-6;  // the parameter step past the boundary, relative to 1 + |lambda|
@@ -68,7 +75,8 @@ enum class TypeSwitchStatus {
 };
 const char* ToString(TypeSwitchStatus status);
 
-struct TypeSwitch {
+template <OscillatorModel Model>
+struct BasicTypeSwitch {
   TypeSwitchStatus status = TypeSwitchStatus::kNotConfirmed;
   std::string reason;  // per candidate tried, why it was or was not confirmed
   // Set when confirmed:
@@ -76,23 +84,25 @@ struct TypeSwitch {
   // On the adjacent type at the located parameter, corrected. Where the new segment's length grows
   // as a root of the parameter step (a grazing), the new type's Jacobian is singular here: a
   // branch of the new type then starts from `past`.
-  std::optional<Orbit> start;
-  std::optional<Orbit> past;  // on the adjacent type at the nudged parameter, confirmed by simulation
+  std::optional<OrbitOfModel<Model>> start;
+  std::optional<OrbitOfModel<Model>> past;  // on the adjacent type at the nudged parameter, confirmed by simulation
   int direction = 0;          // +1 or -1: the parameter's direction on the new branch
   bool persists = false;      // direction == LocatedTypeChange::past; else a nonsmooth fold
   // The new segment's length grows as a root of the parameter step (the switch was found with that
   // length given): the new type's Jacobian is singular at `start`, so its branch starts from `past`.
   bool singular_start = false;
-  const Orbit& BranchStart() const { return singular_start ? *past : *start; }  // where confirmed
+  const OrbitOfModel<Model>& BranchStart() const { return singular_start ? *past : *start; }  // where confirmed
   UnknownChoice unknowns;     // the located unknowns renamed for the adjacent signature
 };
-
-// The largest difference in the start state, the phase and the period: 0 for the same motion from
-// the same origin, whatever the signatures.
-double OrbitDistance(const Orbit& a, const Orbit& b);
+using TypeSwitch = BasicTypeSwitch<Pascal2014>;
 
 // Throws InvalidInput for invalid options, a margin the located orbit does not have, or a parameter
 // that is no parameter.
-TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& options = {});
+template <OscillatorModel Model>
+BasicTypeSwitch<Model> SwitchAt(const BasicLocatedTypeChange<Model>& located, const TypeSwitchOptions& options = {});
+
+extern template LocatedTypeChange TypeChangeAt(const OrbitBranch& branch, const SpecialPoint& special,
+                                               const OrbitContinuationSetup& setup);
+extern template TypeSwitch SwitchAt(const LocatedTypeChange& located, const TypeSwitchOptions& options);
 
 }  // namespace stickslip

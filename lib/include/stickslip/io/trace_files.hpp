@@ -23,11 +23,10 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/branches/trace.hpp"
 #include "stickslip/io/stored_run.hpp"
 
 namespace stickslip {
-
-struct TraceResult;
 
 // How a branch of a stored trace began at a confirmed switch (or, followed past, at one that
 // confirmed nothing: bifurcation empty).

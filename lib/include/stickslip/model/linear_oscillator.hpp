@@ -35,6 +35,7 @@
 #include <fmt/format.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/model/coulomb_at_rest.hpp"
 #include "stickslip/model/flow_derivatives.hpp"
 #include "stickslip/model/linear_oscillator_data.hpp"
 #include "stickslip/model/mode.hpp"
@@ -339,10 +340,7 @@ class LinearOscillator {
   }
   bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.F_s - p.F_k) <= 1e-12 * p.F_s; }
   Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {
-    const double f = StickForce(x, phase, p);
-    if (f > p.F_s) return Mode::kSlipNegative;
-    if (f < -p.F_s) return Mode::kSlipPositive;
-    return Mode::kStick;
+    return CoulombModeAtRest(StickForce(x, phase, p), p.F_s, [&] { return StickForceRate(x, phase, p); });
   }
 
   ExponentialSum ContactVelocityAlong(const Motion& motion) const {

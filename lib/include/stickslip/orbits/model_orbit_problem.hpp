@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -100,5 +101,14 @@ class ModelOrbitProblem final : public OrbitProblem {
  private:
   System system_;
 };
+
+// The model's problem behind an erased one. Throws std::logic_error for a problem of another
+// model (a programming error, not input).
+template <OscillatorModel Model>
+const ModelOrbitProblem<Model>& ModelProblemOf(const OrbitProblem& problem) {
+  const auto* system = dynamic_cast<const ModelOrbitProblem<Model>*>(&problem);
+  if (!system) throw std::logic_error("ModelProblemOf: the orbit problem is of another model");
+  return *system;
+}
 
 }  // namespace stickslip

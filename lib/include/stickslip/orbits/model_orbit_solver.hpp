@@ -85,4 +85,9 @@ BasicOrbitSolution<Model> SolveOrbit(const Model& model, const OrbitOfModel<Mode
   return {problem.OrbitOfModelAt(result.solution), std::move(result.summary), shooting};
 }
 
+// The paper's model's, compiled once (orbit_solver.cpp).
+extern template OrbitSolution SolveOrbit<Pascal2014>(const Pascal2014& model, const Orbit& guess,
+                                                     const std::vector<int>& free, bool tie_static_friction,
+                                                     const OrbitSolverOptions& options);
+
 }  // namespace stickslip

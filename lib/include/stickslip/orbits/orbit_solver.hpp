@@ -51,7 +51,8 @@ int VariableIndex(int n, std::string_view field, std::string_view name);  // the
 // The unknowns an orbit's equations are square in at fixed parameters: the start state, the phase
 // and the durations; with an abnormal stop the kinetic level released and the static level tied to
 // it (u_s free, u_r = u_s: eq. 25).
-UnknownChoice UnknownsAtFixedParameters(const Signature& signature);
+UnknownChoice UnknownsAtFixedParameters(const OrbitVariableSet& variables);
+UnknownChoice UnknownsAtFixedParameters(const Signature& signature);  // the paper's model
 
 // The free variable indices of a choice for a signature. Throws InvalidInput naming "free" or
 // "fix" for a name that is not a variable (or u_r released while tied to u_s), and "unknowns",

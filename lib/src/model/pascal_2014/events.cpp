@@ -2,22 +2,13 @@
 
 #include <cmath>
 
+#include "stickslip/model/coulomb_at_rest.hpp"
+
 namespace stickslip {
 
 Mode ModeFromRest(const State& x, double phase, const Parameters& p) {
-  const double s = StickForce(x, phase, p);
-  const double threshold = p.eta * p.u_r;
-  if (s > threshold) return Mode::kSlipNegative;
-  if (s < -threshold) return Mode::kSlipPositive;
-  // On the threshold (to rounding) the sign of ds/dt during a stick decides, as the continuous
-  // extension of the strict inequality.
-  const double level = 1e-12 * (std::abs(s) + threshold + 1.0);
-  if (threshold - std::abs(s) <= level) {
-    const double ds_dt = StickForceRate(AtRest(x), phase, p);
-    if (s > 0.0 && ds_dt > 0.0) return Mode::kSlipNegative;
-    if (s < 0.0 && ds_dt < 0.0) return Mode::kSlipPositive;
-  }
-  return Mode::kStick;
+  return CoulombModeAtRest(StickForce(x, phase, p), p.eta * p.u_r,
+                           [&] { return StickForceRate(AtRest(x), phase, p); });
 }
 
 SinusoidSum CoordinateAlong(const ModeMotion<double>& motion, int i) {

@@ -1,0 +1,150 @@
+// Traces of models other than the paper's through TraceOrbits (branches/model_trace.hpp), the
+// paper's model's path: its type switches (each confirmed by the model's exact simulator), least
+// periods and bifurcation branches, with nothing of the paper's model in between.
+//   - Den Hartog's one mass (support/den_hartog_oscillator.hpp), traced in the friction level from
+//     his non-sticking orbit: the first branch ends where the turning points start to stick, at his
+//     closed-form level beta* (FRICTION-LITERATURE.md), and the chain goes on as a sticking orbit
+//     that both simulators, the exact and the Odeint one, follow over a period.
+//   - The paper's two masses in physical units as the general linear oscillator
+//     (support/pascal_in_physical_units.hpp), traced over the forcing frequency from section 4.1's
+//     orbit: the same chain as the paper's model's (signatures, how each branch began and ended, the
+//     margin switched at) with its ends at the same scaled frequencies. The two closed forms are
+//     independent (the paper's eqs. 2-11 in scaled variables; a first-order modal basis in SI units).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "stickslip/branches/model_trace.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/odeint_simulation.hpp"
+#include "stickslip/orbits/verification.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartog_oscillator.hpp"
+#include "support/pascal_in_physical_units.hpp"
+#include "support/solved_presets.hpp"
+
+namespace stickslip {
+namespace {
+
+template <OscillatorModel Model>
+std::string Describe(const BasicTraceResult<Model>& trace) {
+  std::string text;
+  for (const BasicTraceDirection<Model>* chain : {&trace.down, &trace.up}) {
+    text += fmt::format("{}: {} ({})\n", chain->direction > 0 ? "up" : "down", ToString(chain->end), chain->message);
+    for (const BasicTraceLink<Model>& link : chain->links) {
+      text += fmt::format("  '{}' from {} at '{}': {} points, {:.10g} to {:.10g}: {} ({})\n", link.signature,
+                          ToString(link.start), link.margin, link.branch.orbits.size(),
+                          link.branch.branch.points.front().lambda, link.branch.branch.points.back().lambda,
+                          ToString(link.end), link.message);
+    }
+  }
+  return text;
+}
+
+template <OscillatorModel Model>
+Verification VerifyByBothSimulators(const Model& model, const BasicOrbit<Model>& orbit) {
+  using State = typename Model::State;
+  auto exact = [](const Model& m, const typename Model::Parameters& p, const State& x0, double phi,
+                  const BasicSimulationOptions<State>& options) { return SimulateExact(m, p, x0, phi, options); };
+  auto integrated = [](const Model& m, const typename Model::Parameters& p, const State& x0, double phi,
+                       const BasicSimulationOptions<State>& options) { return SimulateOdeint(m, p, x0, phi, options); };
+  return VerifyOrbit(model, orbit, exact, integrated);
+}
+
+// Den Hartog's level beta* = |V| / sqrt(U^2 + 1/r^4), where r^2 X = beta: the turning points of his
+// non-sticking orbit start to stick.
+double StickingLevel(double r) {
+  const DenHartogOrbit o(r, 0.0);
+  return std::abs(o.v) / std::sqrt(o.u * o.u + 1.0 / std::pow(r, 4));
+}
+
+TEST(TraceOfDenHartogsOscillator, SwitchesToASimulatedStickingOrbitAtTheClosedFormStickingLevel) {
+  const double r = 1.5, beta = 0.05;
+  const DenHartogOrbit o(r, beta);
+  BasicOrbitContinuationSetup<DenHartogOscillator> setup{
+      {Signature::Parse("slip- / antisymmetric"), {r, beta, beta, 0.0}, {o.amplitude, 0.0}, o.phi, {o.Period() / 2}},
+      {}, "F_k", ShootingChoice::kAuto, LinearSolverType::kKlu, {}, {}, {}, {}, kDefaultMaxAmplitude,
+      kDefaultResonanceApproach, DenHartogModel()};
+  setup.unknowns.tie_static_friction = true;
+  setup.options.lambda_min = 0.01;
+  setup.options.lambda_max = 0.9;
+  setup.options.max_points = 400;
+  TraceOptions options;
+  options.max_branches = 4;
+  const BasicTraceResult<DenHartogOscillator> trace = TraceOrbits(setup, options);
+  SCOPED_TRACE(Describe(trace));
+  EXPECT_EQ(trace.down.end, TraceEnd::kParameterBound);
+  ASSERT_GE(trace.up.links.size(), 2u);
+  const BasicTraceLink<DenHartogOscillator>& slipping = trace.up.links[0];
+  const BasicTraceLink<DenHartogOscillator>& sticking = trace.up.links[1];
+  EXPECT_EQ(slipping.end, TraceEnd::kSwitched);
+  EXPECT_NEAR(slipping.branch.orbits.back().parameters.F_k, StickingLevel(r), 1e-8);
+  EXPECT_EQ(sticking.start, LinkStart::kSwitch);
+  ASSERT_TRUE(sticking.type_switch.has_value());
+  EXPECT_EQ(sticking.type_switch->status, TypeSwitchStatus::kConfirmed);
+  EXPECT_NE(sticking.signature.find("stick"), std::string::npos) << sticking.signature;
+  EXPECT_EQ(sticking.direction, 1) << "friction growing, the stick grows";
+  RecordProperty("sticking_level_difference",
+                 fmt::format("{:.3g}", slipping.branch.orbits.back().parameters.F_k - StickingLevel(r)));
+  // Every few points of the sticking branch, as both simulators follow it.
+  const auto& orbits = sticking.branch.orbits;
+  ASSERT_GE(orbits.size(), 3u);
+  for (std::size_t k = 1; k < orbits.size(); k += std::max<std::size_t>(1, orbits.size() / 5)) {
+    const Verification v = VerifyByBothSimulators(DenHartogModel(), orbits[k]);
+    EXPECT_TRUE(v.Passed()) << "point " << k << " at F_k = " << orbits[k].parameters.F_k << "\n" << v.Report();
+  }
+}
+
+template <OscillatorModel Model>
+BasicOrbitContinuationSetup<Model> OmegaTrace(OrbitOfModel<Model> start, Model model, double scale) {
+  BasicOrbitContinuationSetup<Model> setup{std::move(start), {}, "omega", ShootingChoice::kAuto, LinearSolverType::kKlu,
+                                           {}, {}, {}, {}, kDefaultMaxAmplitude, kDefaultResonanceApproach,
+                                           std::move(model)};
+  setup.options.lambda_min = 0.3 * scale;
+  setup.options.lambda_max = 0.69 * scale;
+  setup.options.max_points = 3000;
+  return setup;
+}
+
+TEST(TraceOfTheGeneralModel, FollowsThePaperModelsSection41ChainAtTheSameScaledFrequencies) {
+  const Orbit paper = SolvedPreset("paper-4.1");
+  const PhysicalTwoMasses physical;
+  const double scale = physical.Omega(paper.parameters);
+  TraceOptions options;
+  options.max_branches = 6;
+  const TraceResult scaled = TraceOrbits(OmegaTrace<Pascal2014>(paper, {}, 1.0), options);
+  const BasicTraceResult<LinearOscillator<2>> general = TraceOrbits(
+      OmegaTrace<LinearOscillator<2>>(InPhysicalUnits(paper, physical),
+                                      LinearOscillator<2>(physical.Data(paper.parameters)), scale),
+      options);
+  SCOPED_TRACE("the paper's model:\n" + Describe(scaled) + "the general model:\n" + Describe(general));
+  double worst = 0.0;
+  int links = 0;
+  for (const auto& [a, b] : {std::pair{&scaled.down, &general.down}, std::pair{&scaled.up, &general.up}}) {
+    EXPECT_EQ(a->end, b->end);
+    ASSERT_EQ(a->links.size(), b->links.size());
+    for (std::size_t k = 0; k < a->links.size(); ++k) {
+      const TraceLink& p = a->links[k];
+      const BasicTraceLink<LinearOscillator<2>>& q = b->links[k];
+      EXPECT_EQ(p.signature, q.signature) << "link " << k;
+      EXPECT_EQ(p.start, q.start) << "link " << k;
+      EXPECT_EQ(p.margin, q.margin) << "link " << k;
+      EXPECT_EQ(p.end, q.end) << "link " << k;
+      const double end = p.branch.branch.points.back().lambda;
+      const double general_end = q.branch.branch.points.back().lambda / scale;
+      EXPECT_NEAR(general_end, end, 1e-8 * end) << "link " << k;
+      worst = std::max(worst, std::abs(general_end - end) / end);
+      ++links;
+    }
+  }
+  EXPECT_GE(links, 3);
+  RecordProperty("links", links);
+  RecordProperty("worst_relative_end_difference", fmt::format("{:.3g}", worst));
+}
+
+}  // namespace
+}  // namespace stickslip
