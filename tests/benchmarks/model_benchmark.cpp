@@ -3,7 +3,8 @@
 // description as tests/model/linear_oscillator_test.cpp does), and its cost against the number of
 // coordinates on chains of n = 1, 2, 5, 10 masses. Per evaluation of what a continuation point
 // asks: the periodicity equations with their Jacobian, the admissibility margins (root finding
-// included), the monodromy and its multipliers.
+// included), the monodromy and its multipliers; and per accepted point of a branch and of a trace
+// through the one path every model takes (ContinueOrbit, TraceOrbits).
 //
 //   build/release/tests/model_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
@@ -13,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "stickslip/branches/model_trace.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/margins.hpp"
@@ -21,6 +23,7 @@
 #include "stickslip/orbits/paper_presets.hpp"
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "stickslip/orbits/stability.hpp"
+#include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
 
 namespace stickslip {
@@ -76,6 +79,62 @@ BENCHMARK(MarginsPascal)->Unit(benchmark::kMicrosecond);
 BENCHMARK(MarginsGeneral)->Unit(benchmark::kMicrosecond);
 BENCHMARK(MultipliersPascal)->Unit(benchmark::kMicrosecond);
 BENCHMARK(MultipliersGeneral)->Unit(benchmark::kMicrosecond);
+
+// Section 4.1's omega family from its orbit upwards, scaled range [0.3, 0.69], through the
+// paper's model or the general one in physical units (the same special points and trace chain:
+// tests/branches/linear_oscillator_branch_test.cpp, model_trace_test.cpp).
+template <OscillatorModel Model>
+BasicOrbitContinuationSetup<Model> Section41Family(int max_points);
+template <>
+OrbitContinuationSetup Section41Family<Pascal2014>(int max_points) {
+  return OmegaSetup<Pascal2014>(Section41(), {}, 0.3, 0.69, 1.0, max_points);
+}
+template <>
+BasicOrbitContinuationSetup<LinearOscillator<2>> Section41Family<LinearOscillator<2>>(int max_points) {
+  const Orbit o = Section41();
+  return OmegaSetup<LinearOscillator<2>>(InPhysicalUnits(o, kUnitTwoMasses),
+                                         LinearOscillator<2>(kUnitTwoMasses.Data(o.parameters)), 0.3, 0.69,
+                                         kUnitTwoMasses.Omega(o.parameters), max_points);
+}
+
+// Elapsed time per 1e-6 accepted points: microseconds per point.
+benchmark::Counter MicrosecondsPerPoint(double points) {
+  return benchmark::Counter(points * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// The branch's first 20 points (ContinueOrbit).
+template <OscillatorModel Model>
+void BranchPerPoint(benchmark::State& state) {
+  const BasicOrbitContinuationSetup<Model> setup = Section41Family<Model>(20);
+  double points = 0.0;
+  for (auto _ : state) {
+    const BasicOrbitBranch<Model> branch = ContinueOrbit(setup);
+    points += static_cast<double>(branch.branch.points.size());
+  }
+  state.counters["us_per_point"] = MicrosecondsPerPoint(points);
+}
+
+// The whole trace (TraceOrbits: both ways, the switch at omega = 0.5999775 confirmed by the
+// exact simulator).
+template <OscillatorModel Model>
+void TracePerPoint(benchmark::State& state) {
+  const BasicOrbitContinuationSetup<Model> setup = Section41Family<Model>(3000);
+  double points = 0.0, per_trace = 0.0;
+  for (auto _ : state) {
+    const BasicTraceResult<Model> trace = TraceOrbits(setup);
+    per_trace = 0.0;
+    for (const BasicTraceDirection<Model>* chain : {&trace.down, &trace.up}) {
+      for (const BasicTraceLink<Model>& link : chain->links) per_trace += static_cast<double>(link.branch.orbits.size());
+    }
+    points += per_trace;
+  }
+  state.counters["points"] = per_trace;
+  state.counters["us_per_point"] = MicrosecondsPerPoint(points);
+}
+BENCHMARK(BranchPerPoint<Pascal2014>)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BranchPerPoint<LinearOscillator<2>>)->Unit(benchmark::kMicrosecond);
+BENCHMARK(TracePerPoint<Pascal2014>)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(TracePerPoint<LinearOscillator<2>>)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // n unit masses in a chain, unit springs between neighbours and from the first to the ground,
 // forced on the first, the contact on the last; an orbit-like point of "slip- stick / antisymmetric"

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/model_orbit_continuation.hpp"
+#include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"
 #include "support/test_names.hpp"
@@ -27,13 +28,8 @@ namespace {
 // 4.1, where a branch creeps on towards the resonance); `scale` the model's unit of frequency.
 template <OscillatorModel Model>
 BasicOrbitContinuationSetup<Model> OmegaBranch(OrbitOfModel<Model> start, Model model, int direction, double scale) {
-  BasicOrbitContinuationSetup<Model> setup{std::move(start), {}, "omega", ShootingChoice::kAuto, LinearSolverType::kKlu,
-                                           {}, {}, {}, {}, kDefaultMaxAmplitude, kDefaultResonanceApproach,
-                                           std::move(model)};
+  BasicOrbitContinuationSetup<Model> setup = OmegaSetup<Model>(std::move(start), std::move(model), 0.2, 0.68, scale, 1000);
   setup.options.direction = direction;
-  setup.options.lambda_min = 0.2 * scale;
-  setup.options.lambda_max = 0.68 * scale;
-  setup.options.max_points = 1000;
   return setup;
 }
 

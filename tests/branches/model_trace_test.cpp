@@ -24,6 +24,7 @@
 #include "stickslip/orbits/verification.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
+#include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"
 
@@ -99,28 +100,18 @@ TEST(TraceOfDenHartogsOscillator, SwitchesToASimulatedStickingOrbitAtTheClosedFo
   }
 }
 
-template <OscillatorModel Model>
-BasicOrbitContinuationSetup<Model> OmegaTrace(OrbitOfModel<Model> start, Model model, double scale) {
-  BasicOrbitContinuationSetup<Model> setup{std::move(start), {}, "omega", ShootingChoice::kAuto, LinearSolverType::kKlu,
-                                           {}, {}, {}, {}, kDefaultMaxAmplitude, kDefaultResonanceApproach,
-                                           std::move(model)};
-  setup.options.lambda_min = 0.3 * scale;
-  setup.options.lambda_max = 0.69 * scale;
-  setup.options.max_points = 3000;
-  return setup;
-}
-
 TEST(TraceOfTheGeneralModel, FollowsThePaperModelsSection41ChainAtTheSameScaledFrequencies) {
   const Orbit paper = SolvedPreset("paper-4.1");
   const PhysicalTwoMasses physical;
   const double scale = physical.Omega(paper.parameters);
   TraceOptions options;
   options.max_branches = 6;
-  const TraceResult scaled = TraceOrbits(OmegaTrace<Pascal2014>(paper, {}, 1.0), options);
-  const BasicTraceResult<LinearOscillator<2>> general = TraceOrbits(
-      OmegaTrace<LinearOscillator<2>>(InPhysicalUnits(paper, physical),
-                                      LinearOscillator<2>(physical.Data(paper.parameters)), scale),
-      options);
+  const TraceResult scaled = TraceOrbits(OmegaSetup<Pascal2014>(paper, {}, 0.3, 0.69, 1.0, 3000), options);
+  const BasicTraceResult<LinearOscillator<2>> general =
+      TraceOrbits(OmegaSetup<LinearOscillator<2>>(InPhysicalUnits(paper, physical),
+                                                  LinearOscillator<2>(physical.Data(paper.parameters)), 0.3, 0.69, scale,
+                                                  3000),
+                  options);
   SCOPED_TRACE("the paper's model:\n" + Describe(scaled) + "the general model:\n" + Describe(general));
   double worst = 0.0;
   int links = 0;
