@@ -5,6 +5,9 @@
 //     his non-sticking orbit: the first branch ends where the turning points start to stick, at his
 //     closed-form level beta* (FRICTION-LITERATURE.md), and the chain goes on as a sticking orbit
 //     that both simulators, the exact and the Odeint one, follow over a period.
+//   - One mass on a moving belt, no forcing (autonomous), traced in the belt's speed: undamped,
+//     every orbit is the closed-form stick-slip cycle; damped, the trace ends at the fold where the
+//     slip grazes the belt, with the stick still finite.
 //   - The paper's two masses in physical units as the general linear oscillator
 //     (support/pascal_in_physical_units.hpp), traced over the forcing frequency from section 4.1's
 //     orbit: the same chain as the paper's model's (signatures, how each branch began and ended, the
@@ -12,6 +15,7 @@
 //     independent (the paper's eqs. 2-11 in scaled variables; a first-order modal basis in SI units).
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -135,6 +139,85 @@ TEST(TraceOfTheGeneralModel, FollowsThePaperModelsSection41ChainAtTheSameScaledF
   EXPECT_GE(links, 3);
   RecordProperty("links", links);
   RecordProperty("worst_relative_end_difference", fmt::format("{:.3g}", worst));
+}
+
+// One mass on a belt, no forcing (autonomous: the period is the durations' sum): m = k = 1,
+// F_s = 1.5, F_k = 1, from its stick-slip orbit at v_b = 0.2, traced in the belt's speed.
+BasicOrbitContinuationSetup<LinearOscillator<1>> BeltTrace(double damping, double low, double high) {
+  LinearOscillatorData data;
+  data.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  data.stiffness = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  data.damping = Eigen::MatrixXd::Constant(1, 1, damping);
+  data.forcing = Eigen::VectorXd::Zero(1);
+  const double v_b = 0.2, d = 0.5;  // d = (F_s - F_k)/k
+  const BasicOrbit<LinearOscillator<1>> start{Signature::Parse("stick slip-"), {1.0, 1.0, 1.5, v_b}, {0.5, v_b}, 0.0,
+                                              {2.0 * d / v_b, std::numbers::pi + 2.0 * std::atan(v_b / d)}};
+  BasicOrbitContinuationSetup<LinearOscillator<1>> setup =
+      OmegaSetup<LinearOscillator<1>>(start, LinearOscillator<1>(data), low, high, 1.0, 1000);
+  setup.parameter = "v_b";
+  return setup;
+}
+
+// Undamped, every orbit of the trace is the closed form (FRICTION-LITERATURE.md: T_stick =
+// 2 (F_s - F_k)/(k v_b), T_slip = (pi + 2 atan(v_b/(omega_n d)))/omega_n), and the trace ends at the
+// range's bounds both ways, one branch each.
+TEST(TraceOfAMassOnABelt, UndampedFollowsTheClosedFormStickSlipCycleToTheBounds) {
+  const BasicTraceResult<LinearOscillator<1>> trace = TraceOrbits(BeltTrace(0.0, 0.1, 1.0));
+  SCOPED_TRACE(Describe(trace));
+  EXPECT_EQ(trace.down.end, TraceEnd::kParameterBound);
+  EXPECT_EQ(trace.up.end, TraceEnd::kParameterBound);
+  double worst = 0.0;
+  int orbits = 0;
+  for (const BasicTraceDirection<LinearOscillator<1>>* chain : {&trace.down, &trace.up}) {
+    ASSERT_EQ(chain->links.size(), 1u);
+    for (const BasicOrbit<LinearOscillator<1>>& o : chain->links[0].branch.orbits) {
+      const double v_b = o.parameters.v_b, d = 0.5;
+      worst = std::max({worst, std::abs(o.durations[0] - 2.0 * d / v_b),
+                        std::abs(o.durations[1] - (std::numbers::pi + 2.0 * std::atan(v_b / d)))});
+      ++orbits;
+    }
+  }
+  EXPECT_LE(worst, 1e-9);
+  EXPECT_GT(orbits, 10);
+  RecordProperty("worst_duration_difference", fmt::format("{:.3g}", worst));
+}
+
+// Damped (c = 0.1), the stick does not vanish as the belt speeds up: the slip grazes the belt
+// (the stop becomes tangential) and the family folds there with its stick still finite, near
+// v_b = 0.549 with a stick of 0.91 (the general-oscillator issue's figures): the trace ends there,
+// no type past it; every orbit on the way is a motion both simulators follow.
+TEST(TraceOfAMassOnABelt, DampedEndsAtTheFoldWhereTheSlipGrazesTheBelt) {
+  const BasicTraceResult<LinearOscillator<1>> trace = TraceOrbits(BeltTrace(0.1, 0.1, 2.0));
+  SCOPED_TRACE(Describe(trace));
+  ASSERT_EQ(trace.up.links.size(), 1u);
+  const BasicTraceLink<LinearOscillator<1>>& up = trace.up.links[0];
+  EXPECT_EQ(trace.up.end, TraceEnd::kNoAdjacentType);
+  EXPECT_TRUE(up.message.starts_with("stop-slope:2")) << up.message;
+  const BasicOrbit<LinearOscillator<1>>& fold = up.branch.orbits.back();
+  EXPECT_NEAR(fold.parameters.v_b, 0.549, 0.005);
+  EXPECT_NEAR(fold.durations[0], 0.91, 0.01);
+  const LinearOscillator<1> model = BeltTrace(0.1, 0.1, 2.0).model;
+  for (std::size_t k = 0; k + 1 < up.branch.orbits.size(); k += 10) {
+    const Verification v = VerifyByBothSimulators(model, up.branch.orbits[k]);
+    EXPECT_TRUE(v.Passed()) << "v_b = " << up.branch.orbits[k].parameters.v_b << "\n" << v.Report();
+  }
+  RecordProperty("fold_belt_speed", fmt::format("{:.10g}", fold.parameters.v_b));
+}
+
+// A trace switches types by nudging the continued variable as a parameter of the model: a held
+// start variable or duration is refused by name before anything is traced (it used to be refused
+// at the first change of type, every branch traced so far lost).
+TEST(TraceOfAMassOnABelt, RefusesAContinuedVariableThatIsNoParameter) {
+  BasicOrbitContinuationSetup<LinearOscillator<1>> setup = BeltTrace(0.0, 0.1, 1.0);
+  setup.parameter = "x10";
+  setup.unknowns.fix = {"x10"};
+  setup.unknowns.release = {"v_b"};
+  try {
+    TraceOrbits(setup);
+    ADD_FAILURE() << "traced in x10";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "parameter") << e.what();
+  }
 }
 
 }  // namespace

@@ -195,8 +195,8 @@ class Tracer {
   void SameTypeOn(int d, const OrbitBranch& branch, const Setup& setup, LinkStart how,
                   std::string margin, std::optional<TypeSwitch> type_switch) {
     const BranchPoint& end = branch.branch.points.back();
-    const int lambda_index = static_cast<int>(end.u.size()) - 1;  // the parameter is the last unknown
-    const double along = end.tangent.size() > lambda_index ? end.tangent(lambda_index) : 0.0;
+    const int lambda = type_switch_detail::ParameterUnknown(setup, branch.orbits.back().signature);
+    const double along = end.tangent.size() > lambda ? end.tangent(lambda) : 0.0;
     Next<Model>& next = next_[d];
     next.setup = setup;
     next.setup.start = branch.orbits.back();
@@ -430,6 +430,9 @@ BasicOrbitContinuationSetup<Model> AtLeastPeriod(BasicOrbitContinuationSetup<Mod
 template <OscillatorModel Model>
 BasicTraceResult<Model> TraceOrbits(const BasicOrbitContinuationSetup<Model>& start, const TraceOptions& options) {
   options.Validate();
+  // The switches nudge the continued variable as a parameter of the model (a duration or a start
+  // variable held is none).
+  type_switch_detail::ParameterIndexOf(start.model.Description(), start.parameter);
   if (start.options.continue_past_terminal) {
     throw InvalidInput("continue_past_terminal", "true",
                        "false: a trace decides at every change of type (follow_past_unswitched follows a type past one)");

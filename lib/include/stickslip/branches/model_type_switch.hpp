@@ -235,6 +235,13 @@ class CandidateTrial {
   std::vector<std::string> reasons_;
 };
 
+// Where the continued parameter sits among a branch's unknowns: after the orbit's free variables
+// (multiple shooting's interior states follow it).
+template <OscillatorModel Model>
+int ParameterUnknown(const BasicOrbitContinuationSetup<Model>& setup, const Signature& signature) {
+  return static_cast<int>(FreeIndices(VariableSetOf(setup.model, signature), setup.unknowns).size());
+}
+
 // Whether the branch came to `special` from the inadmissible side of its margin (a start beyond
 // the boundary, as section 5.2's): the margin at the last regular point before it (not another
 // special point located at the same place, nor a start on the boundary).
@@ -278,8 +285,8 @@ BasicLocatedTypeChange<Model> TypeChangeAt(const BasicOrbitBranch<Model>& branch
                        "a located sign change of a margin on this branch");
   }
   const OrbitOfModel<Model>& orbit = branch.orbits[special.point];
-  const std::size_t lambda = FreeIndices(VariableSetOf(setup.model, orbit.signature), setup.unknowns).size();
-  const double along = lambda < static_cast<std::size_t>(special.tangent.size()) ? special.tangent(lambda) : 0.0;
+  const int lambda = type_switch_detail::ParameterUnknown(setup, orbit.signature);
+  const double along = lambda < special.tangent.size() ? special.tangent(lambda) : 0.0;
   const int way = along > 0.0 ? 1 : along < 0.0 ? -1 : setup.options.direction;
   // A branch that comes from the inadmissible side has the far side behind it.
   const bool from_inadmissible =

@@ -3,6 +3,8 @@
 // where |s| exceeds the threshold, a stick inside it. On the threshold, to rounding, the sign of
 // ds/dt during a stick decides, as the continuous extension of the strict inequality: a stick that
 // starts where the force is leaving the band ends at once (an orbit's origin at a stick exit).
+// Only inside the band: a force a rounding outside it slips whatever its rate (the Odeint
+// simulator's event logic sticks there when the force is coming back; neither is wrong to rounding).
 #pragma once
 
 #include <cmath>

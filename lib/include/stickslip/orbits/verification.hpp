@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +15,7 @@
 
 #include "stickslip/model/mode.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
 
@@ -101,8 +101,7 @@ Verification VerifyOrbit(const Model& model, const BasicOrbit<Model>& orbit, Exa
     v.not_simulated = fmt::format("the orbit is not a motion of the system: {}", invalid->what());
     return v;
   }
-  const double period =
-      orbit.signature.period_multiple() * 2.0 * std::numbers::pi / model.ForcingFrequency(orbit.parameters);
+  const double period = PeriodOf(model, orbit);  // an autonomous orbit's: its durations
   BasicSimulationOptions<typename Model::State> options;
   options.duration = period;
   const BasicSimulationResult<Model> by_exact = exact(model, orbit.parameters, orbit.start, orbit.phi, options);
