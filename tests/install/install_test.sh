@@ -47,6 +47,8 @@ out=$("$work/consumer/consumer" 2>&1)
 [ "$out" = "stickslip $version
 slip- slip+ stick slip+
 admissible" ] || fail "consumer output: $out"
+out=$("$work/consumer/own_oscillator" 2>&1)
+[ "$out" = "'stick slip-' up to v_b = 0.549: no-adjacent-type" ] || fail "own_oscillator output: $out"
 
 # The Python package, from the prefix only: no PYTHONPATH but the prefix's, no user site, run
 # outside both trees; it is the installed copy and its version is the command's.
