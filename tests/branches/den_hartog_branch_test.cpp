@@ -27,6 +27,7 @@
 #include "stickslip/orbits/orbit_system.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
+#include "support/general_models.hpp"
 
 namespace stickslip {
 namespace {

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/model_orbit_continuation.hpp"
+#include "support/general_models.hpp"
 #include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"

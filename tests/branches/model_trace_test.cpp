@@ -28,6 +28,7 @@
 #include "stickslip/orbits/verification.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
+#include "support/general_models.hpp"
 #include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"

@@ -19,6 +19,7 @@
 #include "stickslip/orbits/periodicity_equations.hpp"
 #include "stickslip/orbits/stability.hpp"
 #include "stickslip/orbits/model_orbit_problem.hpp"
+#include "support/general_models.hpp"
 #include "support/pascal_in_physical_units.hpp"
 #include "support/solved_presets.hpp"
 #include "support/test_names.hpp"

@@ -25,6 +25,7 @@
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/orbit_system.hpp"
+#include "support/general_models.hpp"
 
 namespace stickslip {
 namespace {
