@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "support/solved_presets.hpp"
 
@@ -139,6 +140,28 @@ TEST(ReduceToLeastPeriod, RefusesDurationsThatDoNotMatchTheSignature) {
   orbit.durations.pop_back();
   EXPECT_THROW(ReduceToLeastPeriod(orbit), InvalidInput);
   EXPECT_THROW(ReduceToLeastPeriod(SolvedPreset("paper-5.1"), {0.0}), InvalidInput);
+}
+
+// One undamped mass on a belt, no forcing (autonomous), its stick-slip cycle in closed form
+// (FRICTION-LITERATURE.md: m = k = 1, F_k = 1, F_s = 1.5, the stick from x = (2 F_k - F_s)/k at the
+// belt's speed for 2 (F_s - F_k)/(k v_b), the slip for pi + 2 atan(v_b/d)) written twice within
+// "one period": with no forcing there is no period to divide, so it is one cycle twice and reduces
+// to it (a forced orbit's sequence repeated within one forcing period does not: the test above).
+TEST(ReduceToLeastPeriod, ReducesAnAutonomousCycleWrittenTwice) {
+  LinearOscillatorData data;
+  data.mass = data.stiffness = Eigen::MatrixXd::Ones(1, 1);
+  data.forcing = Eigen::VectorXd::Zero(1);
+  const LinearOscillator<1> model(data);
+  const double v_b = 0.3, d = 0.5, stick = 2.0 * d / v_b, slip = std::numbers::pi + 2.0 * std::atan(v_b / d);
+  BasicOrbit<LinearOscillator<1>> twice{Signature::Parse("stick slip- stick slip-"), {1.0, 1.0, 1.5, v_b},
+                                        {0.5, v_b}, 0.0, {stick, slip, stick, slip}};
+  const BasicLeastPeriodOrbit<LinearOscillator<1>> reduced = ReduceToLeastPeriod<LinearOscillator<1>>(model, twice);
+  EXPECT_EQ(reduced.status, LeastPeriodStatus::kReduced) << reduced.message;
+  EXPECT_EQ(reduced.orbit.signature, Signature::Parse("stick slip-"));
+  EXPECT_EQ(reduced.repeats, 2);
+  EXPECT_LE(reduced.state_mismatch, 1e-12);
+  twice.durations[2] += 0.1;  // the second stick longer: two different cycles, no reduction
+  EXPECT_EQ((ReduceToLeastPeriod<LinearOscillator<1>>(model, twice).status), LeastPeriodStatus::kNotRepeating);
 }
 
 }  // namespace

@@ -45,24 +45,25 @@ bool IsRepeatOf(const std::vector<Mode>& segments, int length, bool antisymmetri
 
 namespace least_period_detail {
 
-bool IsCopies(const Signature& signature, int times) {
-  return signature.size() % times == 0 && signature.period_multiple() % times == 0 &&
+bool IsCopies(const Signature& signature, int times, bool autonomous) {
+  return signature.size() % times == 0 && (autonomous || signature.period_multiple() % times == 0) &&
          (!signature.antisymmetric() || times % 2 == 1) &&
          IsRepeatOf(signature.segments(), signature.size() / times, signature.antisymmetric());
 }
 
-Signature FirstCopy(const Signature& signature, int times) {
+Signature FirstCopy(const Signature& signature, int times, bool autonomous) {
   const auto begin = signature.segments().begin();
   return Signature(std::vector<Mode>(begin, begin + signature.size() / times), signature.antisymmetric(),
-                   signature.period_multiple() / times);
+                   autonomous ? signature.period_multiple() : signature.period_multiple() / times);
 }
 
 }  // namespace least_period_detail
 
-SignatureRepeat LeastPeriodSignature(const Signature& signature) {
+SignatureRepeat LeastPeriodSignature(const Signature& signature, bool autonomous) {
+  namespace detail = least_period_detail;
   // The most copies give the least period.
   for (int times = signature.size(); times > 1; --times) {
-    if (least_period_detail::IsCopies(signature, times)) return {least_period_detail::FirstCopy(signature, times), times};
+    if (detail::IsCopies(signature, times, autonomous)) return {detail::FirstCopy(signature, times, autonomous), times};
   }
   return {signature, 1};
 }

@@ -44,7 +44,9 @@ struct SignatureRepeat {
 };
 
 // The least-period signature of `signature` (the rules above).
-SignatureRepeat LeastPeriodSignature(const Signature& signature);
+// An autonomous orbit (no forcing) has no forcing period to divide: any repeat of its sequence
+// may be its least period, and the period multiple is kept.
+SignatureRepeat LeastPeriodSignature(const Signature& signature, bool autonomous = false);
 
 struct LeastPeriodOptions {
   // The durations repeat when |d(i + j m) - d(i)| <= tolerance 2 pi/omega for every copy j (m
@@ -81,12 +83,13 @@ using LeastPeriodOrbit = BasicLeastPeriodOrbit<Pascal2014>;
 namespace least_period_detail {
 
 // Whether `signature` is `times` copies of a shorter one that has a whole number of forcing periods
-// (odd for an antisymmetric one, whose half must end where the forcing has changed sign).
-bool IsCopies(const Signature& signature, int times);
-Signature FirstCopy(const Signature& signature, int times);
+// (odd for an antisymmetric one, whose half must end where the forcing has changed sign); an
+// autonomous orbit's copies need no forcing period.
+bool IsCopies(const Signature& signature, int times, bool autonomous);
+Signature FirstCopy(const Signature& signature, int times, bool autonomous);
 
 struct CopyMismatch {
-  double durations = 0.0;  // forcing periods
+  double durations = 0.0;  // forcing periods (an autonomous orbit's: its periods)
   double state = 0.0;      // relative
   bool Within(double tolerance) const { return durations <= tolerance && state <= tolerance; }
 };
@@ -138,7 +141,8 @@ BasicLeastPeriodOrbit<Model> ReduceToLeastPeriod(const Model& model, const Orbit
                                                              orbit.durations.size(), orbit.signature.size(),
                                                              orbit.signature.ToString()));
   }
-  const SignatureRepeat repeat = LeastPeriodSignature(orbit.signature);
+  const bool autonomous = model.Autonomous();
+  const SignatureRepeat repeat = LeastPeriodSignature(orbit.signature, autonomous);
   BasicLeastPeriodOrbit<Model> result{LeastPeriodStatus::kLeast, orbit, 1, 0.0, 0.0,
                                       "the signature repeats no shorter one"};
   if (repeat.repeats == 1) return result;
@@ -148,10 +152,10 @@ BasicLeastPeriodOrbit<Model> ReduceToLeastPeriod(const Model& model, const Orbit
   result.state_mismatch = full.state;
   // The copies of a coarser repeat are copies of the finer one: its counts divide the signature's.
   for (int times = repeat.repeats; times > 1; --times) {
-    if (repeat.repeats % times != 0 || !detail::IsCopies(orbit.signature, times)) continue;
+    if (repeat.repeats % times != 0 || !detail::IsCopies(orbit.signature, times, autonomous)) continue;
     if (!detail::MismatchOfCopies(model, basic, times).Within(options.tolerance)) continue;
     result.status = LeastPeriodStatus::kReduced;
-    result.orbit.signature = detail::FirstCopy(orbit.signature, times);
+    result.orbit.signature = detail::FirstCopy(orbit.signature, times, autonomous);
     result.orbit.durations.resize(result.orbit.signature.size());
     result.repeats = times;
     result.message = fmt::format("'{}' is {} copies of '{}'", orbit.signature.ToString(), times,
