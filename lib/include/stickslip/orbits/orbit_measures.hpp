@@ -25,6 +25,7 @@
 
 #include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
+#include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
 
@@ -82,10 +83,9 @@ BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   m.coordinates.resize(model.Description().coordinates.size());
   const int contact = ContactCoordinate(model);
   const double rest_velocity = RestVelocity<Model>(orbit.parameters, 0.0);
-  double stick_time = 0.0, listed_time = 0.0, slid = 0.0;
+  double stick_time = 0.0, slid = 0.0;
   WalkSegments(model, orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double, Model>& s) {
     const bool stick = s.spec.mode == Mode::kStick;
-    listed_time += s.duration;
     if (!stick) slid += std::abs(s.end(contact) - s.start(contact) - rest_velocity * s.duration);
     for (std::size_t i = 0; i < m.coordinates.size(); ++i) {
       const int k = static_cast<int>(i);
@@ -101,13 +101,12 @@ BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   if (orbit.signature.antisymmetric()) {
     for (CoordinateRange& c : m.coordinates) c.Mirror();
   }
-  // The time the listed segments cover: the forcing's periods, or (autonomous) their durations.
-  const double covered = model.Autonomous() ? listed_time
-                                            : orbit.signature.period_multiple() * 2.0 * std::numbers::pi /
-                                                  model.ForcingFrequency(orbit.parameters) * orbit.signature.CoveredFraction();
+  // The period (the forcing's periods, or an autonomous orbit's durations) and the time the listed
+  // segments cover of it.
+  const double period = PeriodOf(model, orbit);
+  const double covered = period * orbit.signature.CoveredFraction();
   m.stick_fraction = stick_time / covered;
   for (Mode mode : orbit.signature.FullPeriod()) ++(mode == Mode::kStick ? m.sticks : m.stops);
-  const double period = covered / orbit.signature.CoveredFraction();
   m.friction_work = model.KineticForce(orbit.parameters) * slid / orbit.signature.CoveredFraction();
   const double amplitude = 0.5 * m.coordinates[contact].PeakToPeak();
   m.equivalent_damping = amplitude > 0.0 ? m.friction_work / (std::numbers::pi * (2.0 * std::numbers::pi / period) * amplitude * amplitude)
