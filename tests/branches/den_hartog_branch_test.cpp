@@ -125,7 +125,7 @@ TEST(DenHartogOrbit, OneTermHarmonicBalanceIsWithinItsBoundAndNewtonCorrectsIt) 
       EXPECT_LE(std::abs(balance - exact.amplitude) / exact.amplitude, 0.7 * beta * beta) << "r = " << r;
       Eigen::VectorXd guess = DenHartogVariables(exact, equations);
       guess(0) = balance;
-      guess(Equations::kPhi) += 0.05;
+      guess(equations.Phi()) += 0.05;
       const System system(equations, guess, {0, 1, 2}, true);
       const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
       ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;

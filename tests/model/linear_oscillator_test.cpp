@@ -11,6 +11,7 @@
 #include <random>
 
 #include <Eigen/Eigenvalues>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "stickslip/model/exact_simulator.hpp"
@@ -52,7 +53,7 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
   const BasicOrbitSystem<LinearOscillator<2>> system(equations, VariablesOf(equations, orbit), free, false);
   Eigen::VectorXd guess = system.Unknowns(VariablesOf(equations, orbit));
   guess(0) *= 1.001;
-  guess(Equations::kPhi) += 1e-3;
+  guess(equations.Phi()) += 1e-3;
   const NewtonResult solved = SolveNewton(system, guess);
   ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
   const Eigen::VectorXd v = system.Variables(solved.solution);
@@ -60,9 +61,9 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
   EXPECT_NEAR(v(0) / length, paper.x10, 1e-10);
   EXPECT_NEAR(v(1) / length, paper.x20, 1e-10);
   EXPECT_NEAR(v(2) / (length * omega), paper.v10, 1e-10);
-  EXPECT_NEAR(std::remainder(v(Equations::kPhi) - paper.phi, 2 * std::numbers::pi), 0.0, 1e-10);
+  EXPECT_NEAR(std::remainder(v(equations.Phi()) - paper.phi, 2 * std::numbers::pi), 0.0, 1e-10);
   for (std::size_t i = 0; i < paper.durations.size(); ++i) {
-    EXPECT_NEAR(v(Equations::Duration(static_cast<int>(i))) * omega, paper.durations[i], 1e-10) << "segment " << i;
+    EXPECT_NEAR(v(equations.Duration(static_cast<int>(i))) * omega, paper.durations[i], 1e-10) << "segment " << i;
   }
 
   const auto general = StabilityOf(model, orbit).multipliers;
@@ -73,58 +74,95 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, PascalInPhysicalUnits, testing::Values("paper-4.1", "paper-5.1", "paper-6"),
                          PresetTestName);
 
-// A random model of three coordinates: M = A A^T + I, K = B B^T + I (both positive definite),
+// A random model of n coordinates: M = A A^T + I, K = B B^T + I (both positive definite),
 // forcing on every coordinate; with `damped`, a random damping matrix, not symmetric (as friction
 // coupling makes it in brake models), with a positive definite symmetric part.
-LinearOscillatorData RandomThreeMasses(std::mt19937& random, bool damped = false) {
+LinearOscillatorData RandomMasses(std::mt19937& random, int n, bool damped = false) {
   std::uniform_real_distribution<double> entry(-1.0, 1.0);
-  const Eigen::Matrix3d a = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
-  const Eigen::Matrix3d b = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
+  auto draw = [&] { return entry(random); };
+  const Eigen::MatrixXd a = Eigen::MatrixXd::NullaryExpr(n, n, draw), b = Eigen::MatrixXd::NullaryExpr(n, n, draw);
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
   LinearOscillatorData data;
-  data.mass = a * a.transpose() + Eigen::Matrix3d::Identity();
-  data.stiffness = 2.0 * (b * b.transpose() + Eigen::Matrix3d::Identity());
-  data.forcing = Eigen::Vector3d::NullaryExpr([&] { return entry(random); });
+  data.mass = a * a.transpose() + identity;
+  data.stiffness = 2.0 * (b * b.transpose() + identity);
+  data.forcing = Eigen::VectorXd::NullaryExpr(n, draw);
   if (damped) {
-    const Eigen::Matrix3d c = Eigen::Matrix3d::NullaryExpr([&] { return entry(random); });
-    data.damping = 0.1 * (c * c.transpose() + Eigen::Matrix3d::Identity()) + 0.05 * (c - c.transpose());
+    const Eigen::MatrixXd c = Eigen::MatrixXd::NullaryExpr(n, n, draw);
+    data.damping = 0.1 * (c * c.transpose() + identity) + 0.05 * (c - c.transpose());
     data.friction_slope = 0.2 * entry(random);  // friction rising or falling with the slip speed
   }
   return data;
 }
+LinearOscillatorData RandomThreeMasses(std::mt19937& random, bool damped = false) { return RandomMasses(random, 3, damped); }
 
 // The exact simulator (the closed forms in the modal bases) and Odeint (the equations of motion
 // solved with M at every step, sharing no flow or event code) agree on every stop, stick and stick
-// exit over five forcing periods, from rest, on random three-mass models, undamped and damped.
-class RandomThreeMassModels : public testing::TestWithParam<bool> {};
-
-TEST_P(RandomThreeMassModels, ExactFlowsAgreeWithOdeint) {
-  std::mt19937 random(GetParam() ? 77 : 20261128);
+// exit over five forcing periods, from near rest, on random models of n coordinates (six trials):
+// undamped or damped; forced, or (`autonomous`) unforced on a belt at a random speed, the contact
+// starting with the belt's speed (self-excited stick-slip).
+template <typename Model>
+int ExpectExactFlowsAgreeWithOdeint(std::uint32_t seed, int n, bool damped, bool autonomous = false) {
+  std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int events = 0;
   for (int trial = 0; trial < 6; ++trial) {
-    const LinearOscillator<3> model(RandomThreeMasses(random, GetParam()));
-    const LinearOscillator<3>::Parameters p{0.3 + 2.0 * unit(random), 0.05 + 0.3 * unit(random), 0.0};
-    LinearOscillator<3>::Parameters q = p;
+    LinearOscillatorData data = RandomMasses(random, n, damped);
+    if (autonomous) data.forcing.setZero();
+    // Damped on a belt, friction falling with the slip speed: steady sliding unstable, so the
+    // motion keeps sticking (with c + alpha > 0 it may settle into sliding without a stop).
+    if (autonomous && damped) data.friction_slope = -0.4 - 0.4 * unit(random);
+    const Model model(data);
+    const typename Model::Parameters p{0.3 + 2.0 * unit(random), 0.05 + 0.3 * unit(random), 0.0,
+                                       autonomous ? 0.2 + unit(random) : 0.0};
+    typename Model::Parameters q = p;
     q.F_s = p.F_k * (1.0 + unit(random));
     if (model.Validate(q)) continue;
-    BasicSimulationOptions<LinearOscillator<3>::State> options;
-    options.duration = 5.0 * 2.0 * std::numbers::pi / q.omega;
-    LinearOscillator<3>::State start = LinearOscillator<3>::State::Zero();
-    start.head<3>() = Eigen::Vector3d::NullaryExpr([&] { return unit(random) - 0.5; });
+    BasicSimulationOptions<typename Model::State> options;
+    // Without forcing omega means nothing: 20 time units (a few stick-slip cycles; the unstable
+    // sliding between grows the integrator's error with them).
+    options.duration = autonomous ? 20.0 : 5.0 * 2.0 * std::numbers::pi / q.omega;
+    typename Model::State start = FilledState(model, 0.0);
+    start.head(n) = Eigen::VectorXd::NullaryExpr(n, [&] { return unit(random) - 0.5; });
+    // On a belt, the contact starts carried by it: the spring forces grow until the stick ends.
+    if (autonomous) start(2 * n - 1) = q.v_b;
     const double phi = 2.0 * std::numbers::pi * unit(random);
     const auto a = SimulateExact(model, q, start, phi, options);
     const auto b = SimulateOdeint(model, q, start, phi, options);
-    ASSERT_TRUE(a.Completed()) << a.message;
-    ASSERT_TRUE(b.Completed()) << b.message;
-    ASSERT_EQ(a.events.size(), b.events.size()) << "trial " << trial;
+    EXPECT_TRUE(a.Completed()) << a.message;
+    EXPECT_TRUE(b.Completed()) << b.message;
+    EXPECT_EQ(a.events.size(), b.events.size()) << "trial " << trial;
+    if (!a.Completed() || !b.Completed() || a.events.size() != b.events.size()) return 0;
     for (std::size_t i = 0; i < a.events.size(); ++i) {
       EXPECT_EQ(a.events[i].mode_after, b.events[i].mode_after) << "trial " << trial << ", event " << i;
       EXPECT_NEAR(a.events[i].t, b.events[i].t, 1e-7) << "trial " << trial << ", event " << i;
-      EXPECT_LT((a.events[i].state - b.events[i].state).lpNorm<Eigen::Infinity>(), 1e-7) << "trial " << trial;
+      EXPECT_LT((a.events[i].state - b.events[i].state).template lpNorm<Eigen::Infinity>(), 1e-7) << "trial " << trial;
     }
     events += static_cast<int>(a.events.size());
   }
-  EXPECT_GT(events, 20) << "the random models must stop and stick";
+  return events;
+}
+
+class RandomThreeMassModels : public testing::TestWithParam<bool> {};
+
+TEST_P(RandomThreeMassModels, ExactFlowsAgreeWithOdeint) {
+  const std::uint32_t seed = GetParam() ? 77 : 20261128;
+  EXPECT_GT(ExpectExactFlowsAgreeWithOdeint<LinearOscillator<3>>(seed, 3, GetParam()), 20) << "the models must stop";
+  EXPECT_GT(ExpectExactFlowsAgreeWithOdeint<DynamicLinearOscillator>(seed, 3, GetParam()), 20) << "sized at run time";
+}
+
+// The same on models sized at run time (DynamicLinearOscillator) of one to six coordinates,
+// undamped and damped, forced, and unforced on a belt (self-excited stick-slip).
+TEST(DynamicLinearOscillator, ExactFlowsAgreeWithOdeintOnRandomModelsOfOneToSixCoordinates) {
+  for (int n = 1; n <= 6; ++n) {
+    for (const bool damped : {false, true}) {
+      for (const bool autonomous : {false, true}) {
+        SCOPED_TRACE(fmt::format("n = {}, {}, {}", n, damped ? "damped" : "undamped", autonomous ? "on a belt" : "forced"));
+        const int events = ExpectExactFlowsAgreeWithOdeint<DynamicLinearOscillator>(
+            static_cast<std::uint32_t>(1000 + 4 * n + 2 * damped + autonomous), n, damped, autonomous);
+        EXPECT_GT(events, 6) << "the models must stop and stick";
+      }
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Damping, RandomThreeMassModels, testing::Bool(),
@@ -194,32 +232,39 @@ TEST(LinearOscillator, FrictionFallingWithSlipSpeedIsNegativeDampingOfTheSlip) {
   }
 }
 
-TEST(LinearOscillator, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
+// At both sizes: fixed at compile time, and read with the data (DynamicLinearOscillator).
+template <typename Model>
+class LinearOscillatorOfEitherSize : public testing::Test {};
+using ThreeMassSizes = testing::Types<LinearOscillator<3>, DynamicLinearOscillator>;
+TYPED_TEST_SUITE(LinearOscillatorOfEitherSize, ThreeMassSizes, ModelSizeName);
+
+TYPED_TEST(LinearOscillatorOfEitherSize, FlowDerivativesAreTheCentralDifferencesOfItsFlows) {
+  using State = typename TypeParam::State;
   std::mt19937 random(7);
-  const LinearOscillator<3> model(RandomThreeMasses(random, true));
-  const LinearOscillator<3>::Parameters p{0.77, 0.2, 0.3};
-  LinearOscillator<3>::State x;
+  const TypeParam model(RandomThreeMasses(random, true));
+  const typename TypeParam::Parameters p{0.77, 0.2, 0.3};
+  State x(6);
   x << 0.3, -0.2, 0.1, 0.4, 0.25, -0.15;
   const double phase = 0.9, s = 1.7, h = 1e-6;
   for (Mode mode : {Mode::kSlipNegative, Mode::kSlipPositive, Mode::kStick}) {
     const auto d = model.FlowWithDerivatives(mode, x, phase, s, p);
     EXPECT_LT((d.state - model.Flow(mode, x, phase, s, p)).norm(), 1e-14);
     for (int j = 0; j < 6; ++j) {
-      LinearOscillator<3>::State e = LinearOscillator<3>::State::Unit(j) * h;
-      const LinearOscillator<3>::State difference = (model.Flow(mode, LinearOscillator<3>::State(x + e), phase, s, p) -
-                               model.Flow(mode, LinearOscillator<3>::State(x - e), phase, s, p)) / (2 * h);
+      const State e = State::Unit(6, j) * h;
+      const State difference =
+          (model.Flow(mode, State(x + e), phase, s, p) - model.Flow(mode, State(x - e), phase, s, p)) / (2 * h);
       EXPECT_LT((difference - d.d_start.col(j)).norm(), 1e-7) << "start " << j;
     }
     EXPECT_LT((model.TransitionMatrix(mode, s, p) - d.d_start).norm(), 1e-12);
-    const LinearOscillator<3>::State time = (model.Flow(mode, x, phase, s + h, p) - model.Flow(mode, x, phase, s - h, p)) / (2 * h);
+    const State time = (model.Flow(mode, x, phase, s + h, p) - model.Flow(mode, x, phase, s - h, p)) / (2 * h);
     EXPECT_LT((time - d.d_elapsed).norm(), 1e-7);
-    const LinearOscillator<3>::State along_phase = (model.Flow(mode, x, phase + h, s, p) - model.Flow(mode, x, phase - h, s, p)) / (2 * h);
+    const State along_phase = (model.Flow(mode, x, phase + h, s, p) - model.Flow(mode, x, phase - h, s, p)) / (2 * h);
     EXPECT_LT((along_phase - d.d_phase).norm(), 1e-7);
     for (int k = 0; k < 4; ++k) {
       auto up = p, down = p;
-      LinearOscillator<3>::ParameterAt(up, k) += h;
-      LinearOscillator<3>::ParameterAt(down, k) -= h;
-      const LinearOscillator<3>::State difference = (model.Flow(mode, x, phase, s, up) - model.Flow(mode, x, phase, s, down)) / (2 * h);
+      TypeParam::ParameterAt(up, k) += h;
+      TypeParam::ParameterAt(down, k) -= h;
+      const State difference = (model.Flow(mode, x, phase, s, up) - model.Flow(mode, x, phase, s, down)) / (2 * h);
       EXPECT_LT((difference - d.d_parameters.col(k)).norm(), 1e-7) << "parameter " << k;
     }
   }

@@ -17,8 +17,8 @@ void ExpectLayoutOfTheEquations(const Model& model, const char* signature) {
   const int n = equations.signature().size();
   const OrbitLayout layout(model.Description(), n);
   EXPECT_EQ(layout.Count(), equations.FullCount());
-  EXPECT_EQ(layout.Phi(), BasicPeriodicityEquations<Model>::kPhi);
-  for (int i = 0; i < n; ++i) EXPECT_EQ(layout.Duration(i), BasicPeriodicityEquations<Model>::Duration(i));
+  EXPECT_EQ(layout.Phi(), equations.Phi());
+  for (int i = 0; i < n; ++i) EXPECT_EQ(layout.Duration(i), equations.Duration(i));
   for (int k = 0; k < Model::kParameterCount; ++k) {
     EXPECT_EQ(layout.Parameter(k), equations.Parameter(k));
     EXPECT_EQ(layout.Name(layout.Parameter(k)), model.Description().parameters[k].name);

@@ -20,7 +20,7 @@ TEST(OrbitSystem, ContinuesDenHartogsOrbitInTheFrictionRatioAlongHisClosedForm) 
   for (const double r : {0.6, 1.5}) {
     const Equations equations(DenHartogModel(), Signature::Parse("slip- / antisymmetric"), Shooting::kSingle);
     // x0, phi, d1 and beta, the static level tied to it.
-    const std::vector<int> free = {0, Equations::kPhi, Equations::Duration(0), equations.Parameter(1)};
+    const std::vector<int> free = {0, equations.Phi(), equations.Duration(0), equations.Parameter(1)};
     const BasicOrbitSystem<DenHartogOscillator> system(equations, DenHartogVariables(DenHartogOrbit(r, 0.02), equations),
                                                        free, true);
     ContinuationOptions options;
@@ -35,8 +35,8 @@ TEST(OrbitSystem, ContinuesDenHartogsOrbitInTheFrictionRatioAlongHisClosedForm) 
       const Eigen::VectorXd v = system.Variables(point.u);
       const DenHartogOrbit orbit(r, v(equations.Parameter(1)));
       EXPECT_NEAR(v(0), orbit.amplitude, 1e-9) << "r = " << r << ", beta = " << orbit.beta;
-      EXPECT_NEAR(std::remainder(v(Equations::kPhi) - orbit.phi, 2 * std::numbers::pi), 0.0, 1e-9);
-      EXPECT_NEAR(v(Equations::Duration(0)), std::numbers::pi / r, 1e-9);
+      EXPECT_NEAR(std::remainder(v(equations.Phi()) - orbit.phi, 2 * std::numbers::pi), 0.0, 1e-9);
+      EXPECT_NEAR(v(equations.Duration(0)), std::numbers::pi / r, 1e-9);
       EXPECT_EQ(v(equations.Parameter(2)), v(equations.Parameter(1)));  // the static level tied
     }
   }

@@ -38,7 +38,7 @@ TEST_P(DenHartogPeriodicity, JacobianIsTheCentralDifferenceOfTheResidual) {
   const Equations equations(DenHartogModel(), Signature::Parse(GetParam().signature), GetParam().shooting);
   Eigen::VectorXd v = DenHartogVariables(DenHartogOrbit(0.8, 0.2), equations);
   v(0) += 0.03;  // off the orbit, where no column vanishes by symmetry
-  v(Equations::kPhi) -= 0.02;
+  v(equations.Phi()) -= 0.02;
   Eigen::VectorXd residual;
   Eigen::MatrixXd jacobian;
   equations.Evaluate(v, &residual, &jacobian);
@@ -57,15 +57,15 @@ TEST_P(DenHartogPeriodicity, NewtonConvergesToDenHartogsOrbitFromAPerturbedGuess
     const BasicOrbitSystem<DenHartogOscillator> system(equations, DenHartogVariables(orbit, equations), free, false);
     Eigen::VectorXd guess = system.Unknowns(DenHartogVariables(orbit, equations));
     guess(0) *= 1.1;
-    guess(Equations::kPhi) += 0.1;
-    guess(Equations::Duration(0)) *= 1.05;
+    guess(equations.Phi()) += 0.1;
+    guess(equations.Duration(0)) *= 1.05;
     const NewtonResult solved = SolveNewton(system, guess);
     ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
     const Eigen::VectorXd v = system.Variables(solved.solution);
     EXPECT_NEAR(v(0), orbit.amplitude, 1e-10) << "r = " << r;
-    EXPECT_NEAR(std::remainder(v(Equations::kPhi) - orbit.phi, 2 * std::numbers::pi), 0.0, 1e-10);
+    EXPECT_NEAR(std::remainder(v(equations.Phi()) - orbit.phi, 2 * std::numbers::pi), 0.0, 1e-10);
     for (int i = 0; i < equations.signature().size(); ++i) {
-      EXPECT_NEAR(v(Equations::Duration(i)), std::numbers::pi / r, 1e-10);
+      EXPECT_NEAR(v(equations.Duration(i)), std::numbers::pi / r, 1e-10);
     }
   }
 }

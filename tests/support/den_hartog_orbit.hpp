@@ -83,12 +83,11 @@ void ExpectDenHartogsOrbit(Simulate simulate, std::pair<double, double> r_beta, 
 // point as the second segment's start.
 inline Eigen::VectorXd DenHartogVariables(const DenHartogOrbit& orbit,
                                           const BasicPeriodicityEquations<DenHartogOscillator>& equations) {
-  using Equations = BasicPeriodicityEquations<DenHartogOscillator>;
   const double half = 0.5 * orbit.Period();
   Eigen::VectorXd v(equations.VariableCount());
   v(0) = orbit.amplitude;
-  v(Equations::kPhi) = orbit.phi;
-  for (int i = 0; i < equations.signature().size(); ++i) v(Equations::Duration(i)) = half;
+  v(equations.Phi()) = orbit.phi;
+  for (int i = 0; i < equations.signature().size(); ++i) v(equations.Duration(i)) = half;
   v.segment<4>(equations.Parameter(0)) << orbit.r, orbit.beta, orbit.beta, 0.0;  // a fixed ground: v_b = 0
   if (equations.VariableCount() > equations.FullCount()) v.tail<2>() << -orbit.amplitude, 0.0;
   return v;

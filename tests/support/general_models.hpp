@@ -11,9 +11,12 @@ namespace stickslip {
 
 extern template class BasicPeriodicityEquations<LinearOscillator<1>>;
 extern template class BasicPeriodicityEquations<LinearOscillator<2>>;
+extern template class BasicPeriodicityEquations<DynamicLinearOscillator>;
 extern template class BasicOrbitSystem<LinearOscillator<1>>;
 extern template class BasicOrbitSystem<LinearOscillator<2>>;
+extern template class BasicOrbitSystem<DynamicLinearOscillator>;
 extern template class ModelOrbitProblem<LinearOscillator<1>>;
 extern template class ModelOrbitProblem<LinearOscillator<2>>;
+extern template class ModelOrbitProblem<DynamicLinearOscillator>;
 
 }  // namespace stickslip

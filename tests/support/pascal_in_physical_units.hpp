@@ -27,17 +27,21 @@ struct PhysicalTwoMasses {
   }
   double Omega(const Parameters& p) const { return std::sqrt(stiffness_sum / (p.eta * m2)); }
   double Length(const Parameters& p) const { return p.eta * f0 / stiffness_sum; }
-  LinearOscillator<2>::Parameters Of(const Parameters& p) const {
+  template <typename Model = LinearOscillator<2>>
+  typename Model::Parameters Of(const Parameters& p) const {
     return {p.omega * Omega(p), p.u_s * p.eta * f0, p.u_r * p.eta * f0};
   }
 };
 
-// The paper's orbit in the physical units of `physical`.
-inline BasicOrbit<LinearOscillator<2>> InPhysicalUnits(const Orbit& o, const PhysicalTwoMasses& physical) {
+// The paper's orbit in the physical units of `physical`, as an orbit of the model at a fixed size
+// or at a size read with its data (DynamicLinearOscillator).
+template <typename Model = LinearOscillator<2>>
+BasicOrbit<Model> InPhysicalUnits(const Orbit& o, const PhysicalTwoMasses& physical) {
   const Parameters& p = o.parameters;
   const double length = physical.Length(p), omega = physical.Omega(p);
-  BasicOrbit<LinearOscillator<2>> converted{o.signature, physical.Of(p), length * o.InitialState(), o.phi, {}};
-  converted.start.tail<2>() *= omega;
+  BasicOrbit<Model> converted{o.signature, physical.Of<Model>(p), typename Model::State(length * o.InitialState()),
+                              o.phi, {}};
+  converted.start.tail(2) *= omega;
   for (double d : o.durations) converted.durations.push_back(d / omega);
   return converted;
 }

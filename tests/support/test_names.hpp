@@ -1,4 +1,5 @@
-// Names for value-parameterised tests over the modes of motion and the paper's presets.
+// Names for value-parameterised tests over the modes of motion and the paper's presets, and for
+// typed tests over a model at a fixed size and sized at run time.
 #pragma once
 
 #include <string>
@@ -24,5 +25,14 @@ inline std::string PresetTestName(const ::testing::TestParamInfo<const char*>& p
   for (char& c : name) c = c == '.' ? '_' : c;
   return "Section" + name;
 }
+
+// Over models of either size: "SizedAtCompileTime" or "SizedAtRunTime" (Eigen::Dynamic).
+class ModelSizeName {
+ public:
+  template <typename Model>
+  static std::string GetName(int) {
+    return Model::kStateSize == Eigen::Dynamic ? "SizedAtRunTime" : "SizedAtCompileTime";
+  }
+};
 
 }  // namespace stickslip

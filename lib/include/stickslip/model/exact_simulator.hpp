@@ -187,7 +187,7 @@ BasicSimulationResult<M> SimulateExact(const M& model, const typename M::Paramet
                                    ToString(mode), t, ToString(search.status), options.zeros.max_intervals);
       break;
     }
-    BasicSegment<typename M::State> segment{mode, t, options.duration, x, M::State::Zero(), SegmentEnd::kHorizon};
+    BasicSegment<typename M::State> segment{mode, t, options.duration, x, FilledState(model, 0.0), SegmentEnd::kHorizon};
     if (!search.end) {
       segment.end = motion.StateAt(horizon);
       result.segments.push_back(segment);

@@ -15,8 +15,8 @@
 //   - its rate of change while the contact is at rest, which decides on the threshold itself
 //     (the stick is left only if s moves outwards);
 //   - the size of the terms the holding force sums, against which its rounding is judged.
-// The state has a fixed size: the integrator keeps it in a std::array (a model whose size comes
-// from a file will need a dynamic integrator state).
+// The integrator keeps the state in a std::array, or a std::vector for a model whose size comes
+// from a file.
 #pragma once
 
 #include <concepts>
@@ -30,7 +30,7 @@ namespace stickslip {
 
 template <typename M>
 concept IntegrableOscillatorModel =
-    OscillatorModel<M> && (M::State::SizeAtCompileTime != Eigen::Dynamic) &&
+    OscillatorModel<M> &&
     requires(const M& model, Mode mode, const typename M::State& x, const typename M::Parameters& p, double phase) {
       { model.VectorField(mode, x, phase, p) } -> std::same_as<typename M::State>;
       { model.HoldingForce(x, phase, p) } -> std::same_as<double>;

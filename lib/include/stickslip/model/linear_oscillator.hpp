@@ -1,5 +1,7 @@
 // A linear oscillator with one Coulomb contact as an OscillatorModel (oscillator_model.hpp),
-// at a fixed number N of coordinates (linear_oscillator_data.hpp gives the equations):
+// at N coordinates (linear_oscillator_data.hpp gives the equations): fixed at compile time, or
+// Eigen::Dynamic for a model whose size comes from a file (DynamicLinearOscillator), which pays
+// for its heap-allocated states what a fixed size does not:
 //   M q'' + C q' + K q = g cos(omega t + phi) + e_N F,
 // the contact against a surface moving at the speed v_b (a belt; 0 for a fixed surface), its
 // relative velocity s = q_N' - v_b; slip (s != 0): F = -(F_k + alpha |s|) sign(s), alpha the
@@ -47,15 +49,16 @@ namespace stickslip {
 template <int N>
 class LinearOscillator {
  public:
-  static constexpr int kStateSize = 2 * N;
+  static constexpr int kStateSize = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N;
   static constexpr int kParameterCount = 4;
   static constexpr int kForcingFrequencyParameter = 0;
   static constexpr int kKineticLevelParameter = 1;
   static constexpr int kStaticLevelParameter = 2;
   static constexpr int kRestVelocityParameter = 3;
-  static constexpr int kContact = N - 1;  // the coordinate the contact is on
   template <typename T>
-  using StateT = Eigen::Matrix<T, 2 * N, 1>;
+  using StateT = Eigen::Matrix<T, kStateSize, 1>;
+  template <typename T>
+  using CoordinatesT = Eigen::Matrix<T, N, 1>;  // q, q' or q''
   template <typename T>
   struct ParametersT {
     T omega{};  // forcing frequency, rad/s
@@ -65,7 +68,7 @@ class LinearOscillator {
   };
   using State = StateT<double>;
   using Parameters = ParametersT<double>;
-  using FlowDerivatives = BasicFlowDerivatives<2 * N, 4>;
+  using FlowDerivatives = BasicFlowDerivatives<kStateSize, 4>;
   using EventFunction = ExponentialSum;
   template <typename T>
   static T& ParameterAt(ParametersT<T>& p, int k) { return k == 0 ? p.omega : k == 1 ? p.F_k : k == 2 ? p.F_s : p.v_b; }
@@ -74,21 +77,25 @@ class LinearOscillator {
     return k == 0 ? p.omega : k == 1 ? p.F_k : k == 2 ? p.F_s : p.v_b;
   }
 
-  using Real = Eigen::Matrix<double, 2 * N, 2 * N>;
-  using Complex = Eigen::Matrix<std::complex<double>, 2 * N, 2 * N>;
-  using Vector = Eigen::Matrix<double, 2 * N, 1>;
-  // A mode's first-order basis at fixed size, on its first `size` entries (FirstOrderBasis).
+  using Real = Eigen::Matrix<double, kStateSize, kStateSize>;
+  using Complex = Eigen::Matrix<std::complex<double>, kStateSize, kStateSize>;
+  using Vector = Eigen::Matrix<double, kStateSize, 1>;
+  using Indices = Eigen::Matrix<int, kStateSize, 1>;
+  // A mode's first-order basis at the state's size, on its first `size` entries (FirstOrderBasis).
   struct Basis {
     int size = 0;
-    std::array<int, 2 * N> component{};
-    Real inverse = Real::Zero();
-    Complex shapes = Complex::Zero(), projector = Complex::Zero();
-    Eigen::Matrix<std::complex<double>, 2 * N, 1> eigenvalues = Eigen::Matrix<std::complex<double>, 2 * N, 1>::Zero();
-    Complex forced_shapes = Complex::Zero();  // column k: V_k (W b)_k
-    Vector forcing = Vector::Zero(), friction = Vector::Zero(), held_position = Vector::Zero(), held_velocity = Vector::Zero();
+    int state_size = 0;        // 2n
+    int contact = 0;           // the state's index of q_n, the coordinate the contact is on
+    int contact_velocity = 0;  // of q_n'
+    Indices component;
+    Real inverse;
+    Complex shapes, projector;
+    Eigen::Matrix<std::complex<double>, kStateSize, 1> eigenvalues;
+    Complex forced_shapes;  // column k: V_k (W b)_k
+    Vector forcing, friction, held_position, held_velocity;
     // 2 for the first of a complex-conjugate pair (its real part counts twice), 1 for a real
     // eigenvalue, 0 for the second of a pair.
-    std::array<int, 2 * N> weight{};
+    Indices weight;
   };
 
   // A motion points at its model's basis: the model must outlive the motions it makes.
@@ -105,23 +112,23 @@ class LinearOscillator {
       using std::sin;
       const T psi = omega * s + phase;
       const T c = cos(psi), sn = sin(psi);
-      StateT<T> x = StateT<T>::Constant(omega * 0.0);
+      StateT<T> x = StateT<T>::Constant(basis->state_size, omega * 0.0);
       for (int i = 0; i < basis->size; ++i) {
-        x(basis->component[i]) = alpha(i) + beta(i) * s + forced_re(i) * c - forced_im(i) * sn;
+        x(basis->component(i)) = alpha(i) + beta(i) * s + forced_re(i) * c - forced_im(i) * sn;
       }
       for (int k = 0; k < basis->size; ++k) {
-        if (basis->weight[k] == 0) continue;
+        if (basis->weight(k) == 0) continue;
         const std::complex<double> lambda = basis->eigenvalues(k);
-        const T growth = exp(lambda.real() * s) * double(basis->weight[k]);
+        const T growth = exp(lambda.real() * s) * double(basis->weight(k));
         const T p = growth * (d_re(k) * cos(lambda.imag() * s) - d_im(k) * sin(lambda.imag() * s));
         const T q = growth * (d_re(k) * sin(lambda.imag() * s) + d_im(k) * cos(lambda.imag() * s));
         for (int i = 0; i < basis->size; ++i) {
-          x(basis->component[i]) += basis->shapes(i, k).real() * p - basis->shapes(i, k).imag() * q;
+          x(basis->component(i)) += basis->shapes(i, k).real() * p - basis->shapes(i, k).imag() * q;
         }
       }
       if (holds) {
-        x(kContact) += held_position + held_velocity * s;
-        x(N + kContact) += held_velocity;
+        x(basis->contact) += held_position + held_velocity * s;
+        x(basis->contact_velocity) += held_velocity;
       }
       return x;
     }
@@ -130,24 +137,25 @@ class LinearOscillator {
 
   // Throws InvalidInput when the data is not a valid model of N coordinates (ModesOf).
   explicit LinearOscillator(const LinearOscillatorData& data) {
-    if (data.mass.rows() != N) {
+    if (N != Eigen::Dynamic && data.mass.rows() != N) {
       throw InvalidInput("mass", fmt::format("a {}x{} matrix", data.mass.rows(), data.mass.cols()),
                          fmt::format("{0}x{0} for this model", N));
     }
     const LinearOscillatorModes modes = ModesOf(data);
+    n_ = static_cast<int>(data.mass.rows());
     description_ = DescribeLinearOscillator(data, modes);
     mass_ = data.mass;
     stiffness_ = data.stiffness;
-    damping_ = data.damping.size() == 0 ? Eigen::Matrix<double, N, N>::Zero() : Eigen::Matrix<double, N, N>(data.damping);
+    damping_ = data.damping.size() == 0 ? Square::Zero(n_, n_) : Square(data.damping);
     forcing_ = data.forcing;
     friction_slope_ = data.friction_slope;
     mass_factor_ = mass_.llt();
-    compliance_ = mass_factor_.solve(Eigen::Matrix<double, N, N>::Identity());
+    compliance_ = mass_factor_.solve(Square::Identity(n_, n_));
     // Always computed: copying an uncomputed Eigen::LLT reads its uninitialised status.
-    if constexpr (N > 1) {
-      held_mass_factor_ = mass_.template topLeftCorner<N - 1, N - 1>().llt();
+    if (n_ > 1) {
+      held_mass_factor_.compute(mass_.topLeftCorner(n_ - 1, n_ - 1));
     } else {
-      held_mass_factor_ = Eigen::Matrix<double, 1, 1>::Identity().llt();
+      held_mass_factor_.compute(FreeSquare::Identity(1, 1));
     }
     slip_ = BasisOf(modes.slip);
     stick_ = BasisOf(modes.stick);
@@ -160,6 +168,18 @@ class LinearOscillator {
   }
 
   const ModelDescription& Description() const { return description_; }
+  // The number n of coordinates and the state's size 2n (compile-time constants at a fixed size).
+  int Coordinates() const {
+    if constexpr (N == Eigen::Dynamic) {
+      return n_;
+    } else {
+      return N;
+    }
+  }
+  int StateSize() const { return 2 * Coordinates(); }
+  // The coordinate the contact is on (the last), and its velocity's index in the state.
+  int Contact() const { return Coordinates() - 1; }
+  int ContactVelocityIndex() const { return 2 * Coordinates() - 1; }
   bool Autonomous() const { return forcing_.isZero(); }
   // Without damping (nor a friction slope, which damps a slip) a slip's eigenvalues are +-i omega_k:
   // the omega_k, each once.
@@ -168,7 +188,7 @@ class LinearOscillator {
     std::vector<double> omega;
     if (!UndampedSlip()) return omega;
     for (int k = 0; k < slip_.size; ++k) {
-      if (slip_.weight[k] == 2) omega.push_back(std::abs(slip_.eigenvalues(k).imag()));
+      if (slip_.weight(k) == 2) omega.push_back(std::abs(slip_.eigenvalues(k).imag()));
     }
     std::sort(omega.begin(), omega.end());
     return omega;
@@ -220,29 +240,32 @@ class LinearOscillator {
     return MotionInMode(mode, start, phase, p).StateAt(s);
   }
   FlowDerivatives FlowWithDerivatives(Mode mode, const State& start, double phase, double s, const Parameters& p) const {
-    constexpr int kDirections = 2 * N + 2 + 4;  // start, phase, elapsed time, parameters
+    // Directions: the start, the phase, the elapsed time, the parameters.
+    constexpr int kDirections = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 2 + 4;
     using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kDirections, 1>>;
-    StateT<Dual> x;
-    for (int j = 0; j < 2 * N; ++j) x(j) = Dual(start(j), kDirections, j);
+    const int S = StateSize(), directions = S + 2 + 4;
+    StateT<Dual> x(S);
+    for (int j = 0; j < S; ++j) x(j) = Dual(start(j), directions, j);
     ParametersT<Dual> p_dual;
-    for (int k = 0; k < 4; ++k) ParameterAt(p_dual, k) = Dual(ParameterAt(p, k), kDirections, 2 * N + 2 + k);
-    const StateT<Dual> end = Flow(mode, x, Dual(phase, kDirections, 2 * N), Dual(s, kDirections, 2 * N + 1), p_dual);
-    FlowDerivatives d;
-    for (int i = 0; i < 2 * N; ++i) {
+    for (int k = 0; k < 4; ++k) ParameterAt(p_dual, k) = Dual(ParameterAt(p, k), directions, S + 2 + k);
+    const StateT<Dual> end = Flow(mode, x, Dual(phase, directions, S), Dual(s, directions, S + 1), p_dual);
+    FlowDerivatives d{State(S), Real(S, S), State(S), State(S), typename FlowDerivatives::ParameterMatrix(S, 4)};
+    for (int i = 0; i < S; ++i) {
       d.state(i) = end(i).value();
-      d.d_start.row(i) = end(i).derivatives().template head<2 * N>().transpose();
-      d.d_phase(i) = end(i).derivatives()(2 * N);
-      d.d_elapsed(i) = end(i).derivatives()(2 * N + 1);
-      d.d_parameters.row(i) = end(i).derivatives().template tail<4>().transpose();
+      d.d_start.row(i) = end(i).derivatives().head(S).transpose();
+      d.d_phase(i) = end(i).derivatives()(S);
+      d.d_elapsed(i) = end(i).derivatives()(S + 1);
+      d.d_parameters.row(i) = end(i).derivatives().tail(4).transpose();
     }
     return d;
   }
   // The flow is affine in the start; its linear part is the motion without forcing or friction.
   template <typename T>
-  Eigen::Matrix<T, 2 * N, 2 * N> TransitionMatrix(Mode mode, const T& s, const ParametersT<T>& p) const {
-    Eigen::Matrix<T, 2 * N, 2 * N> m;
-    for (int j = 0; j < 2 * N; ++j) {
-      StateT<T> unit = StateT<T>::Constant(ZeroLike(p));
+  Eigen::Matrix<T, kStateSize, kStateSize> TransitionMatrix(Mode mode, const T& s, const ParametersT<T>& p) const {
+    const int S = StateSize();
+    Eigen::Matrix<T, kStateSize, kStateSize> m(S, S);
+    for (int j = 0; j < S; ++j) {
+      StateT<T> unit = StateT<T>::Constant(S, ZeroLike(p));
       unit(j) += 1.0;
       m.col(j) = MotionFrom(mode, unit, ZeroLike(p), p, false).StateAt(s);
     }
@@ -251,21 +274,22 @@ class LinearOscillator {
   // S = I + (f+ - f-) grad(h)^T / (grad(h) . f- + dh/dt) (Leine & Nijmeijer 2004): the fields
   // differ in the accelerations only; h = s at a stop, h = F(q, q', t) -+ F_s at a stick's end.
   template <typename T>
-  Eigen::Matrix<T, 2 * N, 2 * N> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase,
-                                                 const ParametersT<T>& p) const {
-    Eigen::Matrix<T, 2 * N, 2 * N> m = Eigen::Matrix<T, 2 * N, 2 * N>::Constant(ZeroLike(p));
-    for (int j = 0; j < 2 * N; ++j) m(j, j) += 1.0;
+  Eigen::Matrix<T, kStateSize, kStateSize> SaltationMatrix(Mode before, Mode after, const StateT<T>& x, const T& phase,
+                                                           const ParametersT<T>& p) const {
+    const int n = Coordinates(), S = StateSize();
+    Eigen::Matrix<T, kStateSize, kStateSize> m = Eigen::Matrix<T, kStateSize, kStateSize>::Constant(S, S, ZeroLike(p));
+    for (int j = 0; j < S; ++j) m(j, j) += 1.0;
     if (before == after) return m;  // an abnormal stop
-    const Eigen::Matrix<T, N, 1> jump = Acceleration(after, x, phase, p) - Acceleration(before, x, phase, p);
+    const CoordinatesT<T> jump = Acceleration(after, x, phase, p) - Acceleration(before, x, phase, p);
     if (before != Mode::kStick) {
       const T slope = ContactAcceleration(before, x, phase, p);
-      for (int i = 0; i < N; ++i) m(N + i, N + kContact) += jump(i) / slope;
+      for (int i = 0; i < n; ++i) m(n + i, ContactVelocityIndex()) += jump(i) / slope;
     } else {
       StateT<T> at_rest = x;
-      at_rest(N + kContact) = p.v_b;
+      at_rest(ContactVelocityIndex()) = p.v_b;
       const T rate = StickForceRate(at_rest, phase, p);
-      for (int i = 0; i < N; ++i) {
-        for (int j = 0; j < 2 * N; ++j) m(N + i, j) += jump(i) * holding_(j) / rate;
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < S; ++j) m(n + i, j) += jump(i) * holding_(j) / rate;
       }
     }
     return m;
@@ -274,44 +298,45 @@ class LinearOscillator {
   T ForcingFrequency(const ParametersT<T>& p) const { return p.omega; }
 
   template <typename T>
-  T ContactVelocity(const StateT<T>& x, const ParametersT<T>& p) const { return x(N + kContact) - p.v_b; }
+  T ContactVelocity(const StateT<T>& x, const ParametersT<T>& p) const { return x(ContactVelocityIndex()) - p.v_b; }
   // The friction force in a slip: -(F_k + alpha |s|) sign(s) = -F_k sign(s) - alpha s.
   template <typename T>
   T SlipForce(Mode mode, const StateT<T>& x, const ParametersT<T>& p) const {
-    return T(-double(SlipDirection(mode)) * p.F_k - friction_slope_ * (x(N + kContact) - p.v_b));
+    return T(-double(SlipDirection(mode)) * p.F_k - friction_slope_ * (x(ContactVelocityIndex()) - p.v_b));
   }
   // q'' in a mode: M^-1 (g cos psi - K q - C q' + e_N F), with F = SlipForce in a slip and the
   // holding force in a stick (then q_N'' = 0 exactly).
   template <typename T>
-  Eigen::Matrix<T, N, 1> Acceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
+  CoordinatesT<T> Acceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     using std::cos;
+    const int n = Coordinates();
     // (Each branch made a T: a conditional between AD expression types would keep a dangling one.)
     const T friction = mode == Mode::kStick ? StickForce(x, phase, p) : SlipForce(mode, x, p);
-    Eigen::Matrix<T, N, 1> load = Eigen::Matrix<T, N, 1>::Constant(ZeroLike(p));
-    for (int i = 0; i < N; ++i) {
+    CoordinatesT<T> load = CoordinatesT<T>::Constant(n, ZeroLike(p));
+    for (int i = 0; i < n; ++i) {
       load(i) += forcing_(i) * cos(phase);
-      for (int j = 0; j < N; ++j) load(i) -= stiffness_(i, j) * x(j) + damping_(i, j) * x(N + j);
+      for (int j = 0; j < n; ++j) load(i) -= stiffness_(i, j) * x(j) + damping_(i, j) * x(n + j);
     }
-    load(kContact) += friction;
-    Eigen::Matrix<T, N, 1> q2 = Eigen::Matrix<T, N, 1>::Constant(ZeroLike(p));
-    for (int i = 0; i < N; ++i) {
-      for (int j = 0; j < N; ++j) q2(i) += compliance_(i, j) * load(j);
+    load(Contact()) += friction;
+    CoordinatesT<T> q2 = CoordinatesT<T>::Constant(n, ZeroLike(p));
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) q2(i) += compliance_(i, j) * load(j);
     }
-    if (mode == Mode::kStick) q2(kContact) = ZeroLike(p);
+    if (mode == Mode::kStick) q2(Contact()) = ZeroLike(p);
     return q2;
   }
   template <typename T>
   T ContactAcceleration(Mode mode, const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
-    return Acceleration(mode, x, phase, p)(kContact);
+    return Acceleration(mode, x, phase, p)(Contact());
   }
   State AtRest(const State& x, const Parameters& p) const {
     State y = x;
-    y(N + kContact) = p.v_b;
+    y(ContactVelocityIndex()) = p.v_b;
     return y;
   }
   bool NearRest(const State& x, const Parameters& p) const {
-    return std::abs(x(N + kContact) - p.v_b) <=
-           1e-12 * (1.0 + std::abs(p.v_b) + x.template head<N>().cwiseAbs().maxCoeff());
+    return std::abs(x(ContactVelocityIndex()) - p.v_b) <=
+           1e-12 * (1.0 + std::abs(p.v_b) + x.head(Coordinates()).cwiseAbs().maxCoeff());
   }
 
   // The friction force a stick needs; F > F_s drives the contact towards negative q_N.
@@ -319,16 +344,17 @@ class LinearOscillator {
   T StickForce(const StateT<T>& x, const T& phase, const ParametersT<T>&) const {
     using std::cos;
     T force = holding_(0) * x(0);
-    for (int j = 1; j < 2 * N; ++j) force += holding_(j) * x(j);
+    for (int j = 1; j < StateSize(); ++j) force += holding_(j) * x(j);
     return force - holding_forcing_ * cos(phase);
   }
   // dF/dt along a stick: the holding weights on (q', q''), q'' the stick's accelerations.
   template <typename T>
   T StickForceRate(const StateT<T>& x, const T& phase, const ParametersT<T>& p) const {
     using std::sin;
-    const Eigen::Matrix<T, N, 1> q2 = Acceleration(Mode::kStick, x, phase, p);
+    const CoordinatesT<T> q2 = Acceleration(Mode::kStick, x, phase, p);
+    const int n = Coordinates();
     T rate = holding_forcing_ * p.omega * sin(phase);
-    for (int j = 0; j < N; ++j) rate += holding_(j) * x(N + j) + holding_(N + j) * q2(j);
+    for (int j = 0; j < n; ++j) rate += holding_(j) * x(n + j) + holding_(n + j) * q2(j);
     return rate;
   }
   template <typename T>
@@ -344,10 +370,12 @@ class LinearOscillator {
   }
 
   ExponentialSum ContactVelocityAlong(const Motion& motion) const {
-    return Along(motion, Vector::Unit(N + kContact), 0.0).Affine(1.0, -motion.rest_velocity);
+    return Along(motion, Vector::Unit(StateSize(), ContactVelocityIndex()), 0.0).Affine(1.0, -motion.rest_velocity);
   }
-  ExponentialSum CoordinateAlong(const Motion& motion, int j) const { return Along(motion, Vector::Unit(j), 0.0); }
-  bool HeldInStick(int j) const { return j == kContact; }
+  ExponentialSum CoordinateAlong(const Motion& motion, int j) const {
+    return Along(motion, Vector::Unit(StateSize(), j), 0.0);
+  }
+  bool HeldInStick(int j) const { return j == Contact(); }
   ExponentialSum StickForceAlong(const Motion& motion, double, const Parameters&) const {
     return Along(motion, holding_.transpose(), -holding_forcing_);
   }
@@ -355,45 +383,54 @@ class LinearOscillator {
   // For an integrator (integrable_oscillator_model.hpp), from the equations of motion alone: the
   // accelerations by solving with M (in a stick with M's free block, q_N'' = 0), not the modes.
   State VectorField(Mode mode, const State& x, double phase, const Parameters& p) const {
-    State dx;
-    dx.template head<N>() = x.template tail<N>();
+    const int n = Coordinates();
+    State dx(StateSize());
+    dx.head(n) = x.tail(n);
     if (mode == Mode::kStick) {
-      dx.template tail<N>() = HeldAcceleration(x, phase);
+      dx.tail(n) = HeldAcceleration(x, phase);
     } else {
-      Eigen::Matrix<double, N, 1> load = Load(x, phase);
-      load(kContact) += SlipForce(mode, x, p);
-      dx.template tail<N>() = mass_factor_.solve(load);
+      CoordinatesT<double> load = Load(x, phase);
+      load(Contact()) += SlipForce(mode, x, p);
+      dx.tail(n) = mass_factor_.solve(load);
     }
     return dx;
   }
   // The contact's row of M q'' + C q' + K q = g cos psi + F with the held accelerations.
   double HoldingForce(const State& x, double phase, const Parameters&) const {
-    return mass_.row(kContact).dot(HeldAcceleration(x, phase)) - Load(x, phase)(kContact);
+    return mass_.row(Contact()).dot(HeldAcceleration(x, phase)) - Load(x, phase)(Contact());
   }
   // Its time derivative at rest: the same row differentiated, q''' of the free coordinates from
   // the time derivative of their equations.
   double HoldingForceRate(const State& x, double phase, const Parameters& p) const {
-    const Eigen::Matrix<double, N, 1> q2 = HeldAcceleration(x, phase);
-    const Eigen::Matrix<double, N, 1> load_rate =
-        -forcing_ * p.omega * std::sin(phase) - stiffness_ * x.template tail<N>() - damping_ * q2;
-    Eigen::Matrix<double, N, 1> q3 = Eigen::Matrix<double, N, 1>::Zero();
-    if constexpr (N > 1) {
-      q3.template head<N - 1>() = held_mass_factor_.solve(load_rate.template head<N - 1>());
-    }
-    return mass_.row(kContact).dot(q3) - load_rate(kContact);
+    const int n = Coordinates();
+    const CoordinatesT<double> q2 = HeldAcceleration(x, phase);
+    const CoordinatesT<double> load_rate = -forcing_ * p.omega * std::sin(phase) - stiffness_ * x.tail(n) - damping_ * q2;
+    CoordinatesT<double> q3 = CoordinatesT<double>::Zero(n);
+    if (n > 1) q3.head(n - 1) = held_mass_factor_.solve(load_rate.head(n - 1));
+    return mass_.row(Contact()).dot(q3) - load_rate(Contact());
   }
   double HoldingForceScale(const State& x, const Parameters& p) const {
-    return std::max(stiffness_.row(kContact).cwiseAbs().dot(x.template head<N>().cwiseAbs()) +
-                        damping_.row(kContact).cwiseAbs().dot(x.template tail<N>().cwiseAbs()) + std::abs(forcing_(kContact)),
+    const int n = Coordinates();
+    return std::max(stiffness_.row(Contact()).cwiseAbs().dot(x.head(n).cwiseAbs()) +
+                        damping_.row(Contact()).cwiseAbs().dot(x.tail(n).cwiseAbs()) + std::abs(forcing_(Contact())),
                     p.F_s);
   }
 
  private:
   Basis BasisOf(const FirstOrderBasis& b) const {
+    const int S = StateSize();
     Basis basis;
     basis.size = static_cast<int>(b.components.size());
+    basis.state_size = S;
+    basis.contact = Contact();
+    basis.contact_velocity = ContactVelocityIndex();
+    basis.component = basis.weight = Indices::Zero(S);
+    basis.inverse = Real::Zero(S, S);
+    basis.shapes = basis.projector = basis.forced_shapes = Complex::Zero(S, S);
+    basis.eigenvalues = Eigen::Matrix<std::complex<double>, kStateSize, 1>::Zero(S);
+    basis.forcing = basis.friction = basis.held_position = basis.held_velocity = Vector::Zero(S);
     const int d = basis.size;
-    std::copy(b.components.begin(), b.components.end(), basis.component.begin());
+    for (int i = 0; i < d; ++i) basis.component(i) = b.components[static_cast<std::size_t>(i)];
     basis.inverse.topLeftCorner(d, d) = b.system_inverse;
     basis.shapes.topLeftCorner(d, d) = b.shapes;
     basis.projector.topLeftCorner(d, d) = b.projector;
@@ -406,7 +443,7 @@ class LinearOscillator {
     for (int k = 0; k < d; ++k) {
       basis.forced_shapes.col(k).head(d) = b.shapes.col(k) * modal_forcing(k);
       const double nu = b.eigenvalues(k).imag();
-      basis.weight[k] = nu > 0.0 ? 2 : nu == 0.0 ? 1 : 0;  // exact conjugates from the real Schur form
+      basis.weight(k) = nu > 0.0 ? 2 : nu == 0.0 ? 1 : 0;  // exact conjugates from the real Schur form
     }
     return basis;
   }
@@ -426,10 +463,10 @@ class LinearOscillator {
     m.holds = stick;
     m.omega = p.omega;
     m.phase = phase;
-    m.held_position = stick ? start(kContact) : zero;
-    m.held_velocity = stick ? start(N + kContact) : zero;
+    m.held_position = stick ? start(Contact()) : zero;
+    m.held_velocity = stick ? start(ContactVelocityIndex()) : zero;
     m.rest_velocity = p.v_b;
-    m.alpha = m.beta = m.forced_re = m.forced_im = m.d_re = m.d_im = StateT<T>::Constant(zero);
+    m.alpha = m.beta = m.forced_re = m.forced_im = m.d_re = m.d_im = StateT<T>::Constant(StateSize(), zero);
     // The slip's constant force: -F_k sign(s) + alpha v_b (its -alpha q_N' is in the slip's basis).
     const T friction = stick || !loaded ? zero : T(-double(SlipDirection(mode)) * p.F_k + friction_slope_ * p.v_b);
     AddStaticResponse(friction, m);
@@ -478,22 +515,22 @@ class LinearOscillator {
     const Basis& b = *m.basis;
     const T c = cos(m.phase), sn = sin(m.phase);
     for (int j = 0; j < b.size; ++j) {
-      const T free = start(b.component[j]) - m.alpha(j) - (m.forced_re(j) * c - m.forced_im(j) * sn);
+      const T free = start(b.component(j)) - m.alpha(j) - (m.forced_re(j) * c - m.forced_im(j) * sn);
       for (int k = 0; k < b.size; ++k) {
         m.d_re(k) += b.projector(k, j).real() * free;
         m.d_im(k) += b.projector(k, j).imag() * free;
       }
     }
   }
-  Eigen::Matrix<double, N, 1> Load(const State& x, double phase) const {
-    return forcing_ * std::cos(phase) - stiffness_ * x.template head<N>() - damping_ * x.template tail<N>();
+  CoordinatesT<double> Load(const State& x, double phase) const {
+    const int n = Coordinates();
+    return forcing_ * std::cos(phase) - stiffness_ * x.head(n) - damping_ * x.tail(n);
   }
   // q'' in a stick from the equations: q_N'' = 0 and M_rr q_r'' = (g cos psi - K q - C q')_r.
-  Eigen::Matrix<double, N, 1> HeldAcceleration(const State& x, double phase) const {
-    Eigen::Matrix<double, N, 1> q2 = Eigen::Matrix<double, N, 1>::Zero();
-    if constexpr (N > 1) {
-      q2.template head<N - 1>() = held_mass_factor_.solve(Load(x, phase).template head<N - 1>());
-    }
+  CoordinatesT<double> HeldAcceleration(const State& x, double phase) const {
+    const int n = Coordinates();
+    CoordinatesT<double> q2 = CoordinatesT<double>::Zero(n);
+    if (n > 1) q2.head(n - 1) = held_mass_factor_.solve(Load(x, phase).head(n - 1));
     return q2;
   }
   // w . x(s) + forcing_weight cos(omega s + phase) along a motion, x the state.
@@ -502,15 +539,15 @@ class LinearOscillator {
     double constant = 0.0, slope = 0.0, forced_re = forcing_weight, forced_im = 0.0;
     std::vector<ExponentialTerm> terms;
     for (int i = 0; i < b.size; ++i) {
-      const double wi = w(b.component[i]);
+      const double wi = w(b.component(i));
       constant += wi * m.alpha(i);
       slope += wi * m.beta(i);
       forced_re += wi * m.forced_re(i);
       forced_im += wi * m.forced_im(i);
     }
     if (m.holds) {
-      constant += w(kContact) * m.held_position + w(N + kContact) * m.held_velocity;
-      slope += w(kContact) * m.held_velocity;
+      constant += w(b.contact) * m.held_position + w(b.contact_velocity) * m.held_velocity;
+      slope += w(b.contact) * m.held_velocity;
     }
     // Re(Z e^{i(omega s + phase)}) = (Zr cos phase - Zi sin phase) cos omega s - (Zr sin phase + Zi cos phase) sin omega s.
     const double c = std::cos(m.phase), sn = std::sin(m.phase);
@@ -518,29 +555,36 @@ class LinearOscillator {
     terms.push_back({1, 0.0, {0.0, slope, 0.0}});
     terms.push_back({0, 0.0, {m.omega, forced_re * c - forced_im * sn, -(forced_re * sn + forced_im * c)}});
     for (int k = 0; k < b.size; ++k) {
-      if (b.weight[k] == 0) continue;
+      if (b.weight(k) == 0) continue;
       std::complex<double> shape = 0.0;
-      for (int i = 0; i < b.size; ++i) shape += w(b.component[i]) * b.shapes(i, k);
-      const std::complex<double> g = shape * std::complex<double>(m.d_re(k), m.d_im(k)) * double(b.weight[k]);
+      for (int i = 0; i < b.size; ++i) shape += w(b.component(i)) * b.shapes(i, k);
+      const std::complex<double> g = shape * std::complex<double>(m.d_re(k), m.d_im(k)) * double(b.weight(k));
       const std::complex<double> lambda = b.eigenvalues(k);
       terms.push_back({0, lambda.real(), {lambda.imag(), g.real(), -g.imag()}});
     }
     return ExponentialSum(std::move(terms));
   }
 
+  using Square = Eigen::Matrix<double, N, N>;
+  // M's block of the coordinates a stick leaves free (unused for n = 1).
+  static constexpr int kFree = N == Eigen::Dynamic ? Eigen::Dynamic : N > 1 ? N - 1 : 1;
+  using FreeSquare = Eigen::Matrix<double, kFree, kFree>;
+
+  int n_ = 0;  // the number of coordinates (N at a fixed size)
   ModelDescription description_;
-  Eigen::Matrix<double, N, N> mass_, damping_, stiffness_;
-  Eigen::Matrix<double, N, N> compliance_;  // M^-1
-  Eigen::Matrix<double, N, 1> forcing_;
+  Square mass_, damping_, stiffness_;
+  Square compliance_;  // M^-1
+  CoordinatesT<double> forcing_;
   double friction_slope_ = 0.0;  // alpha
-  Eigen::LLT<Eigen::Matrix<double, N, N>> mass_factor_;
-  // M's block of the coordinates a stick leaves free (unused for N = 1), factored once: the
-  // integrator asks for the stick's accelerations at every step.
-  static constexpr int kFree = N > 1 ? N - 1 : 1;
-  Eigen::LLT<Eigen::Matrix<double, kFree, kFree>> held_mass_factor_;
+  Eigen::LLT<Square> mass_factor_;
+  // Factored once: the integrator asks for the stick's accelerations at every step.
+  Eigen::LLT<FreeSquare> held_mass_factor_;
   Basis slip_, stick_;
-  Eigen::Matrix<double, 1, 2 * N> holding_;
+  Eigen::Matrix<double, 1, kStateSize> holding_;
   double holding_forcing_ = 0.0;
 };
+
+// Its size read with its data (a file's model): states are Eigen::VectorXd.
+using DynamicLinearOscillator = LinearOscillator<Eigen::Dynamic>;
 
 }  // namespace stickslip

@@ -5,9 +5,10 @@
 // mode (never across a switch). Coulomb's law at rest is decided here from the model's holding
 // force, not by its ModeFromRest (the closed forms' decision).
 //
-// Events are found from sign changes of the event functions between accepted steps, so a zero
-// touched tangentially (a grazing, or an abnormal stop) is seen only if rounding happens to make
-// it a crossing.
+// Events are found from sign changes of the event functions between accepted steps, and from a
+// minimum at or below zero inside a step (a short excursion whose two crossings one step straddles:
+// ZeroWithinStep); a zero touched tangentially (a grazing, or an abnormal stop) is seen only if
+// rounding puts it at or below zero.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -32,10 +34,12 @@ namespace odeint_simulation {
 
 namespace ode = boost::numeric::odeint;
 
-// Odeint's range algebra on a std::array: the model's state is copied in and out at the field,
-// so the stepper's arithmetic does not depend on the model's state type.
+// Odeint's range algebra on a std::array (a std::vector for a model whose size comes from a file):
+// the model's state is copied in and out at the field, so the stepper's arithmetic does not depend
+// on the model's state type.
 template <IntegrableOscillatorModel M>
-using OdeState = std::array<double, M::State::SizeAtCompileTime>;
+using OdeState = std::conditional_t<M::kStateSize == Eigen::Dynamic, std::vector<double>,
+                                    std::array<double, std::max(M::kStateSize, 0)>>;
 template <IntegrableOscillatorModel M>
 using Dopri5 = ode::runge_kutta_dopri5<OdeState<M>>;
 
@@ -46,14 +50,15 @@ constexpr int kFirstStepScan = 32;
 
 template <IntegrableOscillatorModel M>
 OdeState<M> ToOde(const typename M::State& x) {
-  OdeState<M> y;
-  for (std::size_t i = 0; i < y.size(); ++i) y[i] = x(i);
+  OdeState<M> y{};
+  if constexpr (M::kStateSize == Eigen::Dynamic) y.resize(static_cast<std::size_t>(x.size()));
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = x(static_cast<Eigen::Index>(i));
   return y;
 }
 template <IntegrableOscillatorModel M>
 typename M::State FromOde(const OdeState<M>& y) {
-  typename M::State x;
-  for (std::size_t i = 0; i < y.size(); ++i) x(i) = y[i];
+  typename M::State x(static_cast<Eigen::Index>(y.size()));
+  for (std::size_t i = 0; i < y.size(); ++i) x(static_cast<Eigen::Index>(i)) = y[i];
   return x;
 }
 
@@ -113,6 +118,21 @@ Constraints ConstraintsOf(const ModeField<M>& field, const typename M::State& x,
   return {{threshold - s, threshold + s}, 2};
 }
 
+// The constraints' time derivatives along the mode's motion, from the equations of motion: in a
+// slip the direction times the contact's acceleration (s is the contact's velocity component less
+// a constant), in a stick -+ the holding force's rate.
+template <IntegrableOscillatorModel M>
+Constraints RatesOf(const ModeField<M>& field, const typename M::State& x, double tau) {
+  if (field.mode != Mode::kStick) {
+    const typename M::State dx = field.model.VectorField(field.mode, x, field.PhaseAt(tau), field.p);
+    const typename M::State zero = M::State::Zero(dx.size());
+    const double acceleration = field.model.ContactVelocity(dx, field.p) - field.model.ContactVelocity(zero, field.p);
+    return {{SlipDirection(field.mode) * acceleration, 0.0}, 1};
+  }
+  const double rate = field.model.HoldingForceRate(x, field.PhaseAt(tau), field.p);
+  return {{-rate, rate}, 2};
+}
+
 // The controlled dense-output dopri5 on one mode, from elapsed time 0.
 template <IntegrableOscillatorModel M>
 class ModeIntegrator {
@@ -131,11 +151,12 @@ class ModeIntegrator {
 
   // The interpolated state, for tau in the last step [previous_time, current_time].
   State Interpolated(double tau) const {
-    OdeState<M> x;
+    OdeState<M> x = stepper_.current_state();  // (sized: a std::vector is not resized)
     stepper_.calc_state(tau, x);
     return FromOde<M>(x);
   }
   Constraints ConstraintsAt(double tau) const { return ConstraintsOf(field_, Interpolated(tau), tau); }
+  Constraints RatesAt(double tau) const { return RatesOf(field_, Interpolated(tau), tau); }
 
   // The state at tau in the last step, integrated from the last step's start instead of
   // interpolated: dopri5's dense output is one order lower than its steps.
@@ -189,6 +210,30 @@ std::optional<ModeEnd> FirstZero(const ModeIntegrator<M>& integrator, const Cons
   for (int k = 0; k < at_hi.count; ++k) {
     if (at_hi.value[k] > 0.0) continue;
     const double tau = LocateZero(integrator, k, from, hi, tolerance);
+    if (!end || tau < end->tau) end = ModeEnd{ModeEnd::Kind::kEvent, tau, k};
+  }
+  return end;
+}
+
+// A constraint positive at both ends of the last step that dipped to zero in between: a short
+// excursion (as a brief re-stick, when the levels are close) whose two crossings one step
+// straddles. Where a constraint's rate goes from negative at `from` to positive at hi, its minimum
+// between is located by bisection on the rate, and if it is <= 0, the first zero before it. (Two
+// minima in one step are not looked for.)
+template <IntegrableOscillatorModel M>
+std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, double from, double hi, double tolerance) {
+  const Constraints rate_from = integrator.RatesAt(from), rate_hi = integrator.RatesAt(hi);
+  std::optional<ModeEnd> end;
+  for (int k = 0; k < rate_from.count; ++k) {
+    if (!(rate_from.value[k] < 0.0 && rate_hi.value[k] > 0.0)) continue;
+    double lo = from, minimum = hi;
+    while (minimum - lo > tolerance) {
+      const double mid = 0.5 * (lo + minimum);
+      if (mid <= lo || mid >= minimum) break;  // no double between them
+      (integrator.RatesAt(mid).value[k] < 0.0 ? lo : minimum) = mid;
+    }
+    if (integrator.ConstraintsAt(minimum).value[k] > 0.0) continue;
+    const double tau = LocateZero(integrator, k, from, minimum, tolerance);
     if (!end || tau < end->tau) end = ModeEnd{ModeEnd::Kind::kEvent, tau, k};
   }
   return end;
@@ -260,6 +305,7 @@ ModeEnd RunMode(ModeIntegrator<M>& integrator, const typename M::State& start, d
     }
     std::optional<ModeEnd> end;
     if (search_from) end = FirstZero(integrator, at_hi, *search_from, hi, tolerance);
+    if (search_from && !end) end = ZeroWithinStep(integrator, *search_from, hi, tolerance);
     if (!end && hi >= horizon) end = ModeEnd{ModeEnd::Kind::kHorizon, horizon};
     sampler.Take(integrator, t, lo, end ? end->tau : hi);
     if (end) return *end;

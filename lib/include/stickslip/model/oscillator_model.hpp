@@ -38,9 +38,13 @@
 // its equations of motion and what Coulomb's law needs written from them
 // (IntegrableOscillatorModel, integrable_oscillator_model.hpp).
 //
+// The state's size is fixed at compile time (kStateSize: the paper's model, 4) or, for a model
+// whose size comes from a file, known at run time: kStateSize is then Eigen::Dynamic and the
+// states are Eigen::VectorXd. StateSize() is the size either way; the layers above make states
+// and matrices of that size (FilledState, StateMatrixT, IdentityOfState, FixedSizeDefault) and
+// never assume one.
+//
 // How what comes next fits (the general-oscillator issue):
-//   - n degrees of freedom: State becomes Eigen::Matrix<T, 2n, 1> for a model of fixed size, or
-//     Eigen::VectorXd for one whose size comes from a file; nothing above indexes the state.
 //   - viscous damping: the motion in a mode has complex eigenvalues, so the functions along a
 //     motion become sums of exponentially weighted sinusoids (the generalised root finder); the
 //     interface is unchanged.
@@ -77,7 +81,8 @@ concept OscillatorModel =
     requires(const M& model, Mode mode, const typename M::State& x, const typename M::Parameters& p,
              const typename M::Motion& motion, double phase) {
       // Sizes and the scalar templates that forward-mode AD runs through.
-      { M::kStateSize } -> std::convertible_to<int>;
+      { M::kStateSize } -> std::convertible_to<int>;  // or Eigen::Dynamic
+      { model.StateSize() } -> std::convertible_to<int>;
       { M::kParameterCount } -> std::convertible_to<int>;
       { M::kForcingFrequencyParameter } -> std::convertible_to<int>;
       { M::kKineticLevelParameter } -> std::convertible_to<int>;
@@ -127,6 +132,30 @@ concept OscillatorModel =
       { model.HeldInStick(0) } -> std::same_as<bool>;
       { model.StickForceAlong(motion, phase, p) } -> std::same_as<typename M::EventFunction>;
     };
+
+// A state of the model's size with every component `value`, and the model's square matrices.
+template <typename M, typename T>
+typename M::template StateT<T> FilledState(const M& model, const T& value) {
+  return M::template StateT<T>::Constant(model.StateSize(), value);
+}
+template <typename M, typename T = double>
+using StateMatrixT = Eigen::Matrix<T, M::kStateSize, M::kStateSize>;
+template <typename M>
+StateMatrixT<M> IdentityOfState(const M& model) {
+  return StateMatrixT<M>::Identity(model.StateSize(), model.StateSize());
+}
+// A member's default: zero (the identity where `identity`) at a fixed size, empty at a run-time
+// size (sized where the model is known).
+template <typename Matrix, bool identity = false>
+Matrix FixedSizeDefault() {
+  if constexpr (Matrix::SizeAtCompileTime == Eigen::Dynamic) {
+    return Matrix();
+  } else if constexpr (identity) {
+    return Matrix::Identity();
+  } else {
+    return Matrix::Zero();
+  }
+}
 
 // The contact's velocity at rest: the belt's speed, or 0 against a fixed surface.
 template <typename M, typename T>

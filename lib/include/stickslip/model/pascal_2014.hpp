@@ -23,6 +23,7 @@ namespace stickslip {
 
 struct Pascal2014 {
   static constexpr int kStateSize = 4;
+  static constexpr int StateSize() { return kStateSize; }
   static constexpr int kParameterCount = stickslip::kParameterCount;
   static constexpr int kForcingFrequencyParameter = static_cast<int>(ParameterId::kOmega);
   static constexpr int kKineticLevelParameter = static_cast<int>(ParameterId::kSlidingFriction);

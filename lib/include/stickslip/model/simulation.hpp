@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/pascal_2014.hpp"
@@ -32,8 +33,8 @@ struct BasicSegment {
   Mode mode = Mode::kStick;
   double t_start = 0.0;
   double t_end = 0.0;
-  StateType start = StateType::Zero();
-  StateType end = StateType::Zero();
+  StateType start = FixedSizeDefault<StateType>();
+  StateType end = FixedSizeDefault<StateType>();
   SegmentEnd end_reason = SegmentEnd::kHorizon;
 };
 
@@ -46,14 +47,14 @@ struct BasicEvent {
   EventKind kind = EventKind::kStop;
   Mode mode_before = Mode::kStick;
   Mode mode_after = Mode::kStick;
-  StateType state = StateType::Zero();
+  StateType state = FixedSizeDefault<StateType>();
   bool IsAbnormalStop() const { return kind == EventKind::kStop && mode_before == mode_after; }
 };
 
 template <typename StateType>
 struct BasicTimeSample {
   double t = 0.0;
-  StateType state = StateType::Zero();
+  StateType state = FixedSizeDefault<StateType>();
 };
 
 template <typename StateType>

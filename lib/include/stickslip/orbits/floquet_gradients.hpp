@@ -39,9 +39,11 @@ inline constexpr int kStackDirections = 24;
 template <typename Dual, int S>
 void Split(const Eigen::Matrix<Dual, S, S>& m, int variables, Eigen::Matrix<double, S, S>* value,
            std::vector<Eigen::Matrix<double, S, S>>* derivatives) {
-  derivatives->assign(static_cast<std::size_t>(variables), Eigen::Matrix<double, S, S>::Zero());
-  for (int i = 0; i < S; ++i) {
-    for (int j = 0; j < S; ++j) {
+  const Eigen::Index size = m.rows();
+  value->resize(size, size);
+  derivatives->assign(static_cast<std::size_t>(variables), Eigen::Matrix<double, S, S>::Zero(size, size));
+  for (Eigen::Index i = 0; i < size; ++i) {
+    for (Eigen::Index j = 0; j < size; ++j) {
       (*value)(i, j) = m(i, j).value();
       const auto& d = m(i, j).derivatives();
       for (int k = 0; k < d.size(); ++k) (*derivatives)[static_cast<std::size_t>(k)](i, j) = d(k);
@@ -51,13 +53,13 @@ void Split(const Eigen::Matrix<Dual, S, S>& m, int variables, Eigen::Matrix<doub
 
 template <typename Dual, typename Model>
 BasicMonodromyGradient<Model::kStateSize> Gradients(const Model& model, const BasicOrbit<Model>& orbit) {
-  constexpr int S = Model::kStateSize, P = Model::kParameterCount;
-  const int n = orbit.signature.size();
+  constexpr int P = Model::kParameterCount;
+  const int S = model.StateSize(), n = orbit.signature.size();
   const int variables = S + n + P;
   auto seed = [&](double value, int direction) { return Dual(value, variables, direction); };
   // The contact's velocity (the last component) is at rest at the origin, a stop: not a
   // variable, but the rest velocity where the model has one (a belt's speed).
-  typename Model::template StateT<Dual> x0;
+  typename Model::template StateT<Dual> x0(S);
   for (int k = 0; k + 1 < S; ++k) x0(k) = seed(orbit.start(k), k);
   std::vector<Dual> durations;
   for (int i = 0; i < n; ++i) durations.push_back(seed(orbit.durations[i], S + i));
@@ -66,7 +68,7 @@ BasicMonodromyGradient<Model::kStateSize> Gradients(const Model& model, const Ba
   x0(S - 1) = RestVelocity<Model>(p, Dual(orbit.start(S - 1), Dual::DerType::Zero(variables)));
   const MonodromyT<Dual, Model> m =
       Monodromy<Dual>(model, orbit.signature, x0, seed(orbit.phi, S - 1), std::span<const Dual>(durations), p);
-  BasicMonodromyGradient<S> result;
+  BasicMonodromyGradient<Model::kStateSize> result;
   Split(m.period, variables, &result.period, &result.d_period);
   Split(m.listed, variables, &result.listed, &result.d_listed);
   return result;
@@ -77,7 +79,7 @@ BasicMonodromyGradient<Model::kStateSize> Gradients(const Model& model, const Ba
 template <typename Model>
 BasicMonodromyGradient<Model::kStateSize> MonodromyGradients(const Model& model, const BasicOrbit<Model>& orbit) {
   using namespace floquet_gradients;
-  const int variables = Model::kStateSize + orbit.signature.size() + Model::kParameterCount;
+  const int variables = model.StateSize() + orbit.signature.size() + Model::kParameterCount;
   if (variables <= kStackDirections) {
     return Gradients<Eigen::AutoDiffScalar<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kStackDirections, 1>>>(model, orbit);
   }

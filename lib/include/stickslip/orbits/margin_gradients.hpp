@@ -167,7 +167,7 @@ MarginGradient SegmentMarginGradient(const Model& model, const Margin& m, const 
 // (the contact's velocity, zero at the origin), phi, the durations, the parameters.
 template <typename Model>
 int VariableCount(const BasicOrbit<Model>& orbit) {
-  return Model::kStateSize + orbit.signature.size() + Model::kParameterCount;
+  return static_cast<int>(orbit.start.size()) + orbit.signature.size() + Model::kParameterCount;
 }
 
 // The walk over `orbit`'s listed segments with every variable seeded in its direction of b:
@@ -175,9 +175,8 @@ int VariableCount(const BasicOrbit<Model>& orbit) {
 template <typename Model, typename Visit>
 typename Model::template ParametersT<Dual> WalkSeeded(const Model& model, const BasicOrbit<Model>& orbit,
                                                       const GradientBuilder& b, Visit&& visit) {
-  constexpr int S = Model::kStateSize;
-  const int n = orbit.signature.size();
-  typename Model::template StateT<Dual> x0;
+  const int S = model.StateSize(), n = orbit.signature.size();
+  typename Model::template StateT<Dual> x0(S);
   for (int j = 0; j + 1 < S; ++j) x0(j) = b.Seed(orbit.start(j), j);
   std::vector<Dual> durations;
   for (int i = 0; i < n; ++i) durations.push_back(b.Seed(orbit.durations[i], S + i));

@@ -20,18 +20,17 @@ namespace stickslip {
 // start states of the listed segments after the first, by the closed-form flows) at `orbit`.
 template <OscillatorModel Model>
 Eigen::VectorXd VariablesOf(const BasicPeriodicityEquations<Model>& equations, const BasicOrbit<Model>& orbit) {
-  using Equations = BasicPeriodicityEquations<Model>;
-  constexpr int kStateSize = Model::kStateSize;
+  const int S = equations.StateSize();
   Eigen::VectorXd v(equations.VariableCount());
-  v.template head<kStateSize - 1>() = orbit.start.template head<kStateSize - 1>();
-  v(Equations::kPhi) = orbit.phi;
-  for (int i = 0; i < orbit.signature.size(); ++i) v(Equations::Duration(i)) = orbit.durations[i];
+  v.head(S - 1) = orbit.start.head(S - 1);
+  v(equations.Phi()) = orbit.phi;
+  for (int i = 0; i < orbit.signature.size(); ++i) v(equations.Duration(i)) = orbit.durations[i];
   for (int k = 0; k < Model::kParameterCount; ++k) v(equations.Parameter(k)) = Model::ParameterAt(orbit.parameters, k);
   if (equations.shooting() == Shooting::kMultiple) {
     const int full = equations.FullCount();
     WalkSegments(equations.model(), orbit, Extent::kListed, PhaseRule::kAccumulated,
                  [&](const SegmentVisit<double, Model>& s) {
-                   if (!s.last) v.template segment<kStateSize>(full + kStateSize * s.index) = s.end;
+                   if (!s.last) v.segment(full + S * s.index, S) = s.end;
                  });
   }
   return v;
@@ -40,10 +39,9 @@ Eigen::VectorXd VariablesOf(const BasicPeriodicityEquations<Model>& equations, c
 // The orbit of the periodicity equations' variables v (the full vector; shooting states ignored).
 template <OscillatorModel Model>
 BasicOrbit<Model> OrbitOf(const BasicPeriodicityEquations<Model>& equations, const Eigen::VectorXd& v) {
-  using Equations = BasicPeriodicityEquations<Model>;
   std::vector<double> durations;
-  for (int i = 0; i < equations.signature().size(); ++i) durations.push_back(v(Equations::Duration(i)));
-  return {equations.signature(), equations.ParametersOf(v), equations.StartState(v), v(Equations::kPhi),
+  for (int i = 0; i < equations.signature().size(); ++i) durations.push_back(v(equations.Duration(i)));
+  return {equations.signature(), equations.ParametersOf(v), equations.StartState(v), v(equations.Phi()),
           std::move(durations)};
 }
 

@@ -58,15 +58,16 @@ struct LocalGradient {
 template <typename Model>
 LocalGradient<Model> Linearize(const Model& model, EndCondition condition, Mode mode, const typename Model::State& x,
                                double phase, const typename Model::Parameters& p) {
-  constexpr int S = Model::kStateSize, P = Model::kParameterCount, kDirections = S + 1 + P;
+  constexpr int P = Model::kParameterCount;
+  constexpr int kDirections = Model::kStateSize == Eigen::Dynamic ? Eigen::Dynamic : Model::kStateSize + 1 + P;
   using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kDirections, 1>>;
-  typename Model::template StateT<Dual> x_dual;
-  for (int k = 0; k < S; ++k) x_dual(k) = Dual(x(k), kDirections, k);
+  const int S = model.StateSize(), directions = S + 1 + P;
+  typename Model::template StateT<Dual> x_dual(S);
+  for (int k = 0; k < S; ++k) x_dual(k) = Dual(x(k), directions, k);
   typename Model::template ParametersT<Dual> p_dual;
-  for (int k = 0; k < P; ++k) Model::ParameterAt(p_dual, k) = Dual(Model::ParameterAt(p, k), kDirections, S + 1 + k);
-  const Dual g = EndConditionValue(model, condition, mode, x_dual, Dual(phase, kDirections, S), p_dual);
-  return {g.value(), g.derivatives().template head<S>(), g.derivatives()(S),
-          g.derivatives().template tail<P>().transpose()};
+  for (int k = 0; k < P; ++k) Model::ParameterAt(p_dual, k) = Dual(Model::ParameterAt(p, k), directions, S + 1 + k);
+  const Dual g = EndConditionValue(model, condition, mode, x_dual, Dual(phase, directions, S), p_dual);
+  return {g.value(), g.derivatives().head(S), g.derivatives()(S), g.derivatives().template tail<P>().transpose()};
 }
 
 // The state and forcing phase along the orbit with their derivatives with respect to every
@@ -102,7 +103,6 @@ struct EquationRows {
 template <OscillatorModel Model>
 class BasicPeriodicityEquations {
  public:
-  static constexpr int kStateSize = Model::kStateSize;
   static constexpr int kParameterCount = Model::kParameterCount;
   using State = typename Model::State;
   using Parameters = typename Model::Parameters;
@@ -113,14 +113,15 @@ class BasicPeriodicityEquations {
     for (const SegmentSpec& spec : plan_) end_conditions_ += static_cast<int>(EndConditionsOf(spec.end).size());
   }
 
-  int EquationCount() const { return end_conditions_ + kStateSize + ShootingStates(); }
+  int StateSize() const { return model_.StateSize(); }
+  int EquationCount() const { return end_conditions_ + StateSize() + ShootingStates(); }
   // The full variable vector followed, for multiple shooting, by the start state of segments 2..n.
   int VariableCount() const { return FullCount() + ShootingStates(); }
-  int FullCount() const { return kStateSize + signature_.size() + kParameterCount; }
+  int FullCount() const { return StateSize() + signature_.size() + kParameterCount; }
   // Positions in the full variable vector.
-  static constexpr int kPhi = kStateSize - 1;
-  static int Duration(int i) { return kStateSize + i; }
-  int Parameter(int k) const { return kStateSize + signature_.size() + k; }
+  int Phi() const { return StateSize() - 1; }
+  int Duration(int i) const { return StateSize() + i; }
+  int Parameter(int k) const { return StateSize() + signature_.size() + k; }
 
   // Residual and exact Jacobian (EquationCount x VariableCount) from the flow derivatives.
   void Evaluate(const Eigen::VectorXd& v, Eigen::VectorXd* residual, Eigen::MatrixXd* jacobian) const;
@@ -128,9 +129,10 @@ class BasicPeriodicityEquations {
   // The state at the origin: the first S - 1 components from the variables, the contact at rest
   // (its velocity the rest velocity: 0, or a belt's speed).
   State StartState(const Eigen::VectorXd& v) const {
-    State x0;
-    x0.template head<kStateSize - 1>() = v.head<kStateSize - 1>();
-    x0(kStateSize - 1) = RestVelocity<Model>(ParametersOf(v), 0.0);
+    const int S = StateSize();
+    State x0(S);
+    x0.head(S - 1) = v.head(S - 1);
+    x0(S - 1) = RestVelocity<Model>(ParametersOf(v), 0.0);
     return x0;
   }
   Parameters ParametersOf(const Eigen::VectorXd& v) const {
@@ -146,22 +148,22 @@ class BasicPeriodicityEquations {
   std::vector<std::string> EquationNames() const;
 
  private:
-  int ShootingStates() const { return shooting_ == Shooting::kMultiple ? kStateSize * (signature_.size() - 1) : 0; }
+  int ShootingStates() const { return shooting_ == Shooting::kMultiple ? StateSize() * (signature_.size() - 1) : 0; }
 
   // Multiple shooting: the segment starts at its own unknown state, continuous with the last end.
-  static void RestartAt(const Eigen::VectorXd& v, int state_column, periodicity::Variational<Model>& w,
-                        periodicity::EquationRows& rows) {
-    const State start = v.segment<kStateSize>(state_column);
-    rows.residual->template segment<kStateSize>(rows.row) = start - w.x;
+  void RestartAt(const Eigen::VectorXd& v, int state_column, periodicity::Variational<Model>& w,
+                 periodicity::EquationRows& rows) const {
+    const int S = StateSize();
+    const State start = v.segment(state_column, S);
+    rows.residual->segment(rows.row, S) = start - w.x;
     if (rows.jacobian) {
-      rows.jacobian->block(rows.row, 0, kStateSize, rows.jacobian->cols()) = -w.dx;
-      rows.jacobian->template block<kStateSize, kStateSize>(rows.row, state_column) +=
-          Eigen::Matrix<double, kStateSize, kStateSize>::Identity();
+      rows.jacobian->block(rows.row, 0, S, rows.jacobian->cols()) = -w.dx;
+      rows.jacobian->block(rows.row, state_column, S, S) += IdentityOfState(model_);
     }
-    rows.row += kStateSize;
+    rows.row += S;
     w.x = start;
     w.dx.setZero();
-    w.dx.template block<kStateSize, kStateSize>(0, state_column) = Eigen::Matrix<double, kStateSize, kStateSize>::Identity();
+    w.dx.block(0, state_column, S, S) = IdentityOfState(model_);
   }
 
   // The flow of one segment of duration d (variable `duration_column`), derivatives carried along.
@@ -170,7 +172,7 @@ class BasicPeriodicityEquations {
     if (w.with_derivatives) {
       const typename Model::FlowDerivatives f = flow_.derivatives ? flow_.derivatives(mode, w.x, w.phase, d, p)
                                                                   : model_.FlowWithDerivatives(mode, w.x, w.phase, d, p);
-      Eigen::Matrix<double, kStateSize, Eigen::Dynamic> next = f.d_start * w.dx + f.d_phase * w.dphase;
+      Eigen::Matrix<double, Model::kStateSize, Eigen::Dynamic> next = f.d_start * w.dx + f.d_phase * w.dphase;
       next.col(duration_column) += f.d_elapsed;
       next.middleCols(Parameter(0), kParameterCount) += f.d_parameters;
       w.dx = next;
@@ -192,7 +194,7 @@ class BasicPeriodicityEquations {
     Eigen::VectorXd& residual = *rows.residual;
     const double sign = signature_.antisymmetric() ? -1.0 : 1.0;
     const State x0 = StartState(v);
-    for (int j = 0; j < kStateSize - 1; ++j) {
+    for (int j = 0; j < StateSize() - 1; ++j) {
       residual(rows.row) = w.x(j) - sign * x0(j);
       if (rows.jacobian) {
         rows.jacobian->row(rows.row) = w.dx.row(j);
@@ -202,8 +204,8 @@ class BasicPeriodicityEquations {
     }
     if (model_.Autonomous()) {
       // No forcing: the period is the durations' sum, free; the phase means nothing and is pinned.
-      residual(rows.row) = v(kPhi);
-      if (rows.jacobian) (*rows.jacobian)(rows.row, kPhi) = 1.0;
+      residual(rows.row) = v(Phi());
+      if (rows.jacobian) (*rows.jacobian)(rows.row, Phi()) = 1.0;
       return;
     }
     const double covered_periods = signature_.period_multiple() * signature_.CoveredFraction();
@@ -234,14 +236,15 @@ void BasicPeriodicityEquations<Model>::Evaluate(const Eigen::VectorXd& v, Eigen:
   residual->setZero(EquationCount());
   if (jacobian) jacobian->setZero(EquationCount(), VariableCount());
   EquationRows rows{residual, jacobian};
-  Variational<Model> w{StartState(v), Eigen::MatrixXd::Zero(kStateSize, VariableCount()), v(kPhi),
+  const int S = StateSize();
+  Variational<Model> w{StartState(v), Eigen::MatrixXd::Zero(S, VariableCount()), v(Phi()),
                        Eigen::RowVectorXd::Zero(VariableCount()), jacobian != nullptr};
-  for (int j = 0; j < kStateSize - 1; ++j) w.dx(j, j) = 1.0;
-  if constexpr (Model::kRestVelocityParameter >= 0) w.dx(kStateSize - 1, Parameter(Model::kRestVelocityParameter)) = 1.0;
-  w.dphase(kPhi) = 1.0;
+  for (int j = 0; j < S - 1; ++j) w.dx(j, j) = 1.0;
+  if constexpr (Model::kRestVelocityParameter >= 0) w.dx(S - 1, Parameter(Model::kRestVelocityParameter)) = 1.0;
+  w.dphase(Phi()) = 1.0;
   for (const SegmentSpec& spec : plan_) {
     const int i = spec.listed;
-    if (shooting_ == Shooting::kMultiple && i > 0) RestartAt(v, FullCount() + kStateSize * (i - 1), w, rows);
+    if (shooting_ == Shooting::kMultiple && i > 0) RestartAt(v, FullCount() + S * (i - 1), w, rows);
     Advance(spec.mode, v(Duration(i)), Duration(i), p, w);
     for (EndCondition condition : EndConditionsOf(spec.end)) {
       if (jacobian) {
@@ -268,7 +271,7 @@ std::vector<std::string> BasicPeriodicityEquations<Model>::EquationNames() const
       names.push_back(abnormal ? fmt::format("abnormal-{}':{}", components.back(), i + 1) : fmt::format("end:{}", i + 1));
     }
   }
-  for (int j = 0; j < kStateSize - 1; ++j) names.push_back(fmt::format("periodicity:{}", components[j]));
+  for (int j = 0; j < StateSize() - 1; ++j) names.push_back(fmt::format("periodicity:{}", components[j]));
   names.push_back(model_.Autonomous() ? "phase" : "period");
   return names;
 }

@@ -5,14 +5,17 @@
 // model/pascal_2014/saltation.hpp), and its Floquet multipliers.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <complex>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/segment_walk.hpp"
@@ -22,8 +25,10 @@ namespace stickslip {
 template <int kStateSize>
 struct BasicStability {
   using Matrix = Eigen::Matrix<double, kStateSize, kStateSize>;
-  Matrix monodromy = Matrix::Identity();                         // from t = 0 to the period
-  std::array<std::complex<double>, kStateSize> multipliers{};  // by decreasing modulus
+  using Multipliers = std::conditional_t<kStateSize == Eigen::Dynamic, std::vector<std::complex<double>>,
+                                         std::array<std::complex<double>, std::max(kStateSize, 0)>>;
+  Matrix monodromy = FixedSizeDefault<Matrix, true>();  // from t = 0 to the period
+  Multipliers multipliers{};                         // by decreasing modulus
   bool stable = false;                                      // every |multiplier| < 1
   // Test functions of the smooth bifurcations, continuous along a branch:
   double fold_test = 0.0;   // det(M - I): a multiplier through +1 (LP)
@@ -66,9 +71,9 @@ OrbitStability ToOrbitStability(const BasicStability<kStateSize>& s) {
 template <typename T, typename Model = Pascal2014>
 struct MonodromyT {
   using Matrix = Eigen::Matrix<T, Model::kStateSize, Model::kStateSize>;
-  Matrix period = Matrix::Identity();  // over the whole period
+  Matrix period = FixedSizeDefault<Matrix, true>();  // over the whole period
   // Over the listed segments: the half-period map of an antisymmetric orbit (the period's for the others).
-  Matrix listed = Matrix::Identity();
+  Matrix listed = FixedSizeDefault<Matrix, true>();
   bool one_sided = false;  // an abnormal stop on the way (Stability::one_sided)
 };
 template <typename T, typename Model>
@@ -76,6 +81,7 @@ MonodromyT<T, Model> Monodromy(const Model& model, const Signature& signature,
                                const typename Model::template StateT<T>& x0, const T& phi, std::span<const T> durations,
                                const typename Model::template ParametersT<T>& p) {
   MonodromyT<T, Model> result;
+  result.period = result.listed = MonodromyT<T, Model>::Matrix::Identity(x0.size(), x0.size());
   // The whole period: the listed segments, then their mirror images for an antisymmetric orbit,
   // flowed from the actual states (the symmetry is not assumed).
   const std::vector<SegmentSpec> plan = SegmentPlan(signature, Extent::kFullPeriod);
