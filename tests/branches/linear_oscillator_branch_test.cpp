@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/model_orbit_continuation.hpp"
+#include "support/belt_cycle.hpp"
 #include "support/general_models.hpp"
 #include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
@@ -82,16 +83,9 @@ INSTANTIATE_TEST_SUITE_P(PaperPresets, PaperBranchThroughTheGeneralModel,
 // stop's slope margin, NS) exactly where the family folds (LP, the engine's tangent test): near
 // v_b = 0.549 with the stick still 0.91 long (../shared/FRICTION-LITERATURE.md, issue 23).
 TEST(BeltStickSlipBranch, DampedFamilyEndsWhereItsSlipGrazesTheBeltInAFold) {
-  LinearOscillatorData data;
-  data.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
-  data.stiffness = Eigen::MatrixXd::Constant(1, 1, 1.0);
-  data.damping = Eigen::MatrixXd::Constant(1, 1, 0.1);
-  data.forcing = Eigen::VectorXd::Zero(1);
-  const double v_b = 0.2, d = 0.5;  // d = (F_s - F_k)/k
-  const BasicOrbit<LinearOscillator<1>> start{Signature::Parse("stick slip-"), {1.0, 1.0, 1.5, v_b}, {0.5, v_b}, 0.0,
-                                              {2.0 * d / v_b, std::numbers::pi + 2.0 * std::atan(v_b / d)}};
+  const BeltCycle belt;  // m = k = 1, F_s = 1.5, F_k = 1, v_b = 0.2
   BasicOrbitContinuationSetup<LinearOscillator<1>> setup =
-      OmegaBranch<LinearOscillator<1>>(start, LinearOscillator<1>(data), 1, 1.0);
+      OmegaBranch<LinearOscillator<1>>(belt.Orbit(), LinearOscillator<1>(belt.Data(0.1)), 1, 1.0);
   setup.parameter = "v_b";
   setup.options.lambda_min = 0.01;
   setup.options.lambda_max = 2.0;

@@ -30,6 +30,7 @@
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
 #include "stickslip/orbits/verification.hpp"
+#include "support/belt_cycle.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
 #include "support/five_mass_chain.hpp"
@@ -158,16 +159,9 @@ TYPED_TEST(TraceOfTheGeneralModel, FollowsThePaperModelsSection41ChainAtTheSameS
 // One mass on a belt, no forcing (autonomous: the period is the durations' sum): m = k = 1,
 // F_s = 1.5, F_k = 1, from its stick-slip orbit at v_b = 0.2, traced in the belt's speed.
 BasicOrbitContinuationSetup<LinearOscillator<1>> BeltTrace(double damping, double low, double high) {
-  LinearOscillatorData data;
-  data.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
-  data.stiffness = Eigen::MatrixXd::Constant(1, 1, 1.0);
-  data.damping = Eigen::MatrixXd::Constant(1, 1, damping);
-  data.forcing = Eigen::VectorXd::Zero(1);
-  const double v_b = 0.2, d = 0.5;  // d = (F_s - F_k)/k
-  const BasicOrbit<LinearOscillator<1>> start{Signature::Parse("stick slip-"), {1.0, 1.0, 1.5, v_b}, {0.5, v_b}, 0.0,
-                                              {2.0 * d / v_b, std::numbers::pi + 2.0 * std::atan(v_b / d)}};
+  const BeltCycle belt;
   BasicOrbitContinuationSetup<LinearOscillator<1>> setup =
-      OmegaSetup<LinearOscillator<1>>(start, LinearOscillator<1>(data), low, high, 1.0, 1000);
+      OmegaSetup<LinearOscillator<1>>(belt.Orbit(), LinearOscillator<1>(belt.Data(damping)), low, high, 1.0, 1000);
   setup.parameter = "v_b";
   return setup;
 }
@@ -185,9 +179,9 @@ TEST(TraceOfAMassOnABelt, UndampedFollowsTheClosedFormStickSlipCycleToTheBounds)
   for (const BasicTraceDirection<LinearOscillator<1>>* chain : {&trace.down, &trace.up}) {
     ASSERT_EQ(chain->links.size(), 1u);
     for (const BasicOrbit<LinearOscillator<1>>& o : chain->links[0].branch.orbits) {
-      const double v_b = o.parameters.v_b, d = 0.5;
-      worst = std::max({worst, std::abs(o.durations[0] - 2.0 * d / v_b),
-                        std::abs(o.durations[1] - (std::numbers::pi + 2.0 * std::atan(v_b / d)))});
+      BeltCycle belt;
+      belt.v_b = o.parameters.v_b;
+      worst = std::max({worst, std::abs(o.durations[0] - belt.Stick()), std::abs(o.durations[1] - belt.Slip())});
       ++orbits;
     }
   }
@@ -238,7 +232,8 @@ TEST(TraceOfAMassOnABelt, RefusesAContinuedVariableThatIsNoParameter) {
 // at omega = 0.6: orbits along every link are motions that both simulators follow over a period
 // (the Odeint one integrates M q'' + C q' + K q = g cos + F, sharing no flow or event code with the
 // closed forms; a link's ends, where a segment vanishes or a stop grazes, are left out: there the
-// sequence a simulator sees is decided by rounding), and the trace leaves its start both ways.
+// sequence a simulator sees is decided by rounding); the trace leaves its start both ways and,
+// damped, crosses the chain's natural frequency 0.83 with a bounded amplitude to the range's top.
 TEST(TraceOfAFiveMassChain, FollowsOrbitsBothSimulatorsConfirmAcrossTypeChanges) {
   const DynamicLinearOscillator model = FiveMassChain();
   ASSERT_EQ(model.StateSize(), 10);
@@ -254,6 +249,7 @@ TEST(TraceOfAFiveMassChain, FollowsOrbitsBothSimulatorsConfirmAcrossTypeChanges)
     EXPECT_GT(chain->links.front().branch.orbits.size(), 2u);
     for (const BasicTraceLink<DynamicLinearOscillator>& link : chain->links) {
       const std::vector<BasicOrbit<DynamicLinearOscillator>>& orbits = link.branch.orbits;
+      EXPECT_GE(orbits.size(), 3u) << "'" << link.signature << "': too short to check inside";
       const std::size_t step = std::max<std::size_t>(1, orbits.size() / 6);
       for (std::size_t k = 1; k + 1 < orbits.size(); k += step) {
         const Verification v = VerifyByBothSimulators(model, orbits[k]);
@@ -264,6 +260,8 @@ TEST(TraceOfAFiveMassChain, FollowsOrbitsBothSimulatorsConfirmAcrossTypeChanges)
     }
   }
   EXPECT_GE(trace.up.links.size(), 2u) << "no change of type";
+  EXPECT_EQ(trace.up.end, TraceEnd::kParameterBound);
+  EXPECT_GE(verified, 12);
   RecordProperty("verified_orbits", verified);
 }
 

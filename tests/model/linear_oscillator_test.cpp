@@ -35,22 +35,24 @@ class PascalInPhysicalUnits : public testing::TestWithParam<const char*> {};
 
 // The paper's orbit, converted, solves the general model's periodicity equations; Newton from a
 // perturbed guess comes back to it within 1e-10 after conversion; and the Floquet multipliers
-// (invariant under the scaling, a similarity of the monodromy) agree with the paper model's.
-TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
-  const Orbit paper = SolvedPreset(GetParam());
+// (invariant under the scaling, a similarity of the monodromy) agree with the paper model's; at a
+// fixed size and sized at run time.
+template <typename Model>
+void ExpectThePaperOrbitAfterItsScaling(const char* preset) {
+  const Orbit paper = SolvedPreset(preset);
   const PhysicalTwoMasses physical;
-  const LinearOscillator<2> model(physical.Data(paper.parameters));
-  const BasicOrbit<LinearOscillator<2>> orbit = InPhysicalUnits(paper, physical);
+  const Model model(physical.Data(paper.parameters));
+  const BasicOrbit<Model> orbit = InPhysicalUnits<Model>(paper, physical);
   ASSERT_FALSE(model.Validate(orbit.parameters));
-  using Equations = BasicPeriodicityEquations<LinearOscillator<2>>;
+  using Equations = BasicPeriodicityEquations<Model>;
   const Equations equations(model, orbit.signature, Shooting::kSingle);
   Eigen::VectorXd residual;
   equations.Evaluate(VariablesOf(equations, orbit), &residual, nullptr);
-  EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-10 * physical.Length(paper.parameters));
+  EXPECT_LT(residual.template lpNorm<Eigen::Infinity>(), 1e-10 * physical.Length(paper.parameters));
 
   std::vector<int> free(equations.Parameter(0));
   std::iota(free.begin(), free.end(), 0);
-  const BasicOrbitSystem<LinearOscillator<2>> system(equations, VariablesOf(equations, orbit), free, false);
+  const BasicOrbitSystem<Model> system(equations, VariablesOf(equations, orbit), free, false);
   Eigen::VectorXd guess = system.Unknowns(VariablesOf(equations, orbit));
   guess(0) *= 1.001;
   guess(equations.Phi()) += 1e-3;
@@ -69,6 +71,11 @@ TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
   const auto general = StabilityOf(model, orbit).multipliers;
   const auto scaled = StabilityOf(paper).multipliers;
   for (std::size_t i = 0; i < scaled.size(); ++i) EXPECT_LT(std::abs(general[i] - scaled[i]), 1e-9) << "multiplier " << i;
+}
+
+TEST_P(PascalInPhysicalUnits, IsTheSameOrbitAsThePaperModelsAfterItsScaling) {
+  ExpectThePaperOrbitAfterItsScaling<LinearOscillator<2>>(GetParam());
+  ExpectThePaperOrbitAfterItsScaling<DynamicLinearOscillator>(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, PascalInPhysicalUnits, testing::Values("paper-4.1", "paper-5.1", "paper-6"),

@@ -15,6 +15,7 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
+#include "support/belt_cycle.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -148,13 +149,12 @@ TEST(ReduceToLeastPeriod, RefusesDurationsThatDoNotMatchTheSignature) {
 // "one period": with no forcing there is no period to divide, so it is one cycle twice and reduces
 // to it (a forced orbit's sequence repeated within one forcing period does not: the test above).
 TEST(ReduceToLeastPeriod, ReducesAnAutonomousCycleWrittenTwice) {
-  LinearOscillatorData data;
-  data.mass = data.stiffness = Eigen::MatrixXd::Ones(1, 1);
-  data.forcing = Eigen::VectorXd::Zero(1);
-  const LinearOscillator<1> model(data);
-  const double v_b = 0.3, d = 0.5, stick = 2.0 * d / v_b, slip = std::numbers::pi + 2.0 * std::atan(v_b / d);
-  BasicOrbit<LinearOscillator<1>> twice{Signature::Parse("stick slip- stick slip-"), {1.0, 1.0, 1.5, v_b},
-                                        {0.5, v_b}, 0.0, {stick, slip, stick, slip}};
+  BeltCycle belt;
+  belt.v_b = 0.3;
+  const LinearOscillator<1> model(belt.Data());
+  BasicOrbit<LinearOscillator<1>> twice = belt.Orbit();
+  twice.signature = Signature::Parse("stick slip- stick slip-");
+  twice.durations = {belt.Stick(), belt.Slip(), belt.Stick(), belt.Slip()};
   const BasicLeastPeriodOrbit<LinearOscillator<1>> reduced = ReduceToLeastPeriod<LinearOscillator<1>>(model, twice);
   EXPECT_EQ(reduced.status, LeastPeriodStatus::kReduced) << reduced.message;
   EXPECT_EQ(reduced.orbit.signature, Signature::Parse("stick slip-"));

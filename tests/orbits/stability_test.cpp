@@ -10,17 +10,21 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/model_orbit_solver.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
+#include "support/five_mass_chain.hpp"
+#include "support/general_models.hpp"
 #include "support/period_map.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
 namespace {
 
-std::vector<std::complex<double>> Sorted(const Eigen::Matrix4d& m) {
-  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(Eigen::MatrixXd(m), false);
-  std::vector<std::complex<double>> mu(eigen.eigenvalues().data(), eigen.eigenvalues().data() + 4);
+std::vector<std::complex<double>> Sorted(const Eigen::MatrixXd& m) {
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(m, false);
+  std::vector<std::complex<double>> mu(eigen.eigenvalues().data(), eigen.eigenvalues().data() + m.rows());
   std::sort(mu.begin(), mu.end(), [](const auto& a, const auto& b) {
     return std::abs(a) != std::abs(b) ? std::abs(a) > std::abs(b) : a.imag() > b.imag();
   });
@@ -141,6 +145,28 @@ TEST(ModelStability, DenHartogsMultipliersMultiplyToTheStopsAccelerationRatiosAn
     const BasicStability<2> half = StabilityOf(DenHartogModel(), DenHartogOnSignature(o, "slip- / antisymmetric", beta));
     EXPECT_LT((half.monodromy - s.monodromy).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + s.monodromy.cwiseAbs().maxCoeff()));
   }
+}
+
+// A model sized at run time, the five-mass chain (support/five_mass_chain.hpp), on the stick-slip
+// orbit its motion settles on at omega = 0.6 (solved from the simulation): its ten multipliers from
+// the transition and saltation matrices are those of the simulated period map's Jacobian (central
+// differences of the exact simulator's map).
+TEST(ModelStability, AtARunTimeSizeAreThoseOfTheFiniteDifferencePeriodMap) {
+  const DynamicLinearOscillator model = FiveMassChain();
+  const BasicOrbit<DynamicLinearOscillator> guess = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  const BasicOrbitSolution<DynamicLinearOscillator> solved =
+      SolveOrbit(model, guess, FreeIndices(VariableSetOf(model, guess.signature),
+                                           UnknownsAtFixedParameters(VariableSetOf(model, guess.signature))),
+                 false);
+  ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
+  const BasicStability<Eigen::Dynamic> s = StabilityOf(model, solved.orbit);
+  const std::vector<std::complex<double>> fd = Sorted(PeriodMapJacobian(model, solved.orbit));
+  ASSERT_EQ(s.multipliers.size(), 10u);
+  ASSERT_EQ(fd.size(), 10u);
+  for (std::size_t k = 0; k < fd.size(); ++k) {
+    EXPECT_LT(std::abs(s.multipliers[k] - fd[k]), 1e-6) << "multiplier " << k << ": " << s.multipliers[k] << " vs " << fd[k];
+  }
+  EXPECT_TRUE(s.stable) << "the motion settles on it";
 }
 
 }  // namespace

@@ -28,8 +28,8 @@ Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> PeriodMapJacobian(co
   BasicSimulationOptions<State> options;
   options.duration = fraction * o.signature.period_multiple() * 2.0 * std::numbers::pi / omega;
   auto map = [&](const State& start) { return SimulateExact(model, p, start, phase, options).segments.back().end; };
-  Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> j;
-  for (int k = 0; k < Model::kStateSize; ++k) {
+  Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> j(model.StateSize(), model.StateSize());
+  for (int k = 0; k < model.StateSize(); ++k) {
     const double h = 1e-6;
     State plus = x, minus = x;
     plus(k) += h;

@@ -6,9 +6,9 @@
 // force, not by its ModeFromRest (the closed forms' decision).
 //
 // Events are found from sign changes of the event functions between accepted steps, and from a
-// minimum at or below zero inside a step (a short excursion whose two crossings one step straddles:
-// ZeroWithinStep); a zero touched tangentially (a grazing, or an abnormal stop) is seen only if
-// rounding puts it at or below zero.
+// minimum clearly below zero inside a step (a short excursion whose two crossings one step
+// straddles: ZeroWithinStep); a zero touched tangentially (a grazing, or an abnormal stop) is seen
+// only if rounding makes it a crossing at a step's end.
 #pragma once
 
 #include <algorithm>
@@ -145,6 +145,7 @@ class ModeIntegrator {
   }
 
   const ModeField<M>& field() const { return field_; }
+  const OdeintOptions& options() const { return options_; }
   void Step() { stepper_.do_step(field_); }
   double previous_time() const { return stepper_.previous_time(); }
   double current_time() const { return stepper_.current_time(); }
@@ -215,14 +216,18 @@ std::optional<ModeEnd> FirstZero(const ModeIntegrator<M>& integrator, const Cons
   return end;
 }
 
-// A constraint positive at both ends of the last step that dipped to zero in between: a short
+// A constraint positive at both ends of the last step that dipped below zero in between: a short
 // excursion (as a brief re-stick, when the levels are close) whose two crossings one step
 // straddles. Where a constraint's rate goes from negative at `from` to positive at hi, its minimum
-// between is located by bisection on the rate, and if it is <= 0, the first zero before it. (Two
-// minima in one step are not looked for.)
+// between is located by bisection on the rate, and if it lies below -depth, the first zero before
+// it. depth is 1e4 times the integrator's error tolerance at the constraint's scale there: a
+// shallower dip may be the integrator's error at a tangency (an abnormal stop, a stick force
+// touching its threshold), which stays unseen as before. (Two minima in one step are not looked
+// for.)
 template <IntegrableOscillatorModel M>
 std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, double from, double hi, double tolerance) {
   const Constraints rate_from = integrator.RatesAt(from), rate_hi = integrator.RatesAt(hi);
+  const Constraints at_from = integrator.ConstraintsAt(from), at_hi = integrator.ConstraintsAt(hi);
   std::optional<ModeEnd> end;
   for (int k = 0; k < rate_from.count; ++k) {
     if (!(rate_from.value[k] < 0.0 && rate_hi.value[k] > 0.0)) continue;
@@ -232,7 +237,9 @@ std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, doubl
       if (mid <= lo || mid >= minimum) break;  // no double between them
       (integrator.RatesAt(mid).value[k] < 0.0 ? lo : minimum) = mid;
     }
-    if (integrator.ConstraintsAt(minimum).value[k] > 0.0) continue;
+    const double scale = std::max(std::abs(at_from.value[k]), std::abs(at_hi.value[k]));
+    const double depth = 1e4 * (integrator.options().absolute_tolerance + integrator.options().relative_tolerance * scale);
+    if (integrator.ConstraintsAt(minimum).value[k] >= -depth) continue;
     const double tau = LocateZero(integrator, k, from, minimum, tolerance);
     if (!end || tau < end->tau) end = ModeEnd{ModeEnd::Kind::kEvent, tau, k};
   }
