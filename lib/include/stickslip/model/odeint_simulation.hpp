@@ -224,10 +224,22 @@ std::optional<ModeEnd> FirstZero(const ModeIntegrator<M>& integrator, const Cons
 // shallower dip may be the integrator's error at a tangency (an abnormal stop, a stick force
 // touching its threshold), which stays unseen as before. (Two minima in one step are not looked
 // for.)
+// The constraints and their rates at one time.
+struct ConstraintsAndRates {
+  Constraints value;
+  Constraints rate;
+};
+
 template <IntegrableOscillatorModel M>
-std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, double from, double hi, double tolerance) {
-  const Constraints rate_from = integrator.RatesAt(from), rate_hi = integrator.RatesAt(hi);
-  const Constraints at_from = integrator.ConstraintsAt(from), at_hi = integrator.ConstraintsAt(hi);
+ConstraintsAndRates ConstraintsAndRatesAt(const ModeIntegrator<M>& integrator, double tau) {
+  return {integrator.ConstraintsAt(tau), integrator.RatesAt(tau)};
+}
+
+template <IntegrableOscillatorModel M>
+std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, double from, const ConstraintsAndRates& at_from,
+                                      double hi, const ConstraintsAndRates& at_hi, double tolerance) {
+  const Constraints& rate_from = at_from.rate;
+  const Constraints& rate_hi = at_hi.rate;
   std::optional<ModeEnd> end;
   for (int k = 0; k < rate_from.count; ++k) {
     if (!(rate_from.value[k] < 0.0 && rate_hi.value[k] > 0.0)) continue;
@@ -237,7 +249,7 @@ std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, doubl
       if (mid <= lo || mid >= minimum) break;  // no double between them
       (integrator.RatesAt(mid).value[k] < 0.0 ? lo : minimum) = mid;
     }
-    const double scale = std::max(std::abs(at_from.value[k]), std::abs(at_hi.value[k]));
+    const double scale = std::max(std::abs(at_from.value.value[k]), std::abs(at_hi.value.value[k]));
     const double depth = 1e4 * (integrator.options().absolute_tolerance + integrator.options().relative_tolerance * scale);
     if (integrator.ConstraintsAt(minimum).value[k] >= -depth) continue;
     const double tau = LocateZero(integrator, k, from, minimum, tolerance);
@@ -290,16 +302,19 @@ class Sampler {
 
 // Steps one mode, started at time t from `start`, to its first event or the horizon, sampling
 // on the way. A slip from rest starts at its constraint's zero, which is not a stop: the
-// constraint is armed only once the contact has moved in the slip's direction.
+// constraint is armed only once the contact has moved in the slip's direction. The constraints and
+// rates at a step's end are those at the next one's start.
 template <IntegrableOscillatorModel M>
 ModeEnd RunMode(ModeIntegrator<M>& integrator, const typename M::State& start, double t, double horizon,
                 double tolerance, Sampler<M>& sampler) {
   bool armed = integrator.field().mode == Mode::kStick || ConstraintsOf(integrator.field(), start, 0.0).value[0] > 0.0;
+  std::optional<ConstraintsAndRates> at_lo;
   while (true) {
     integrator.Step();
     const double lo = integrator.previous_time();
     const double hi = std::min(integrator.current_time(), horizon);
-    const Constraints at_hi = integrator.ConstraintsAt(hi);
+    const ConstraintsAndRates at_end = ConstraintsAndRatesAt(integrator, hi);
+    const Constraints& at_hi = at_end.value;
     std::optional<double> search_from = lo;
     if (!armed) {
       armed = true;
@@ -312,7 +327,12 @@ ModeEnd RunMode(ModeIntegrator<M>& integrator, const typename M::State& start, d
     }
     std::optional<ModeEnd> end;
     if (search_from) end = FirstZero(integrator, at_hi, *search_from, hi, tolerance);
-    if (search_from && !end) end = ZeroWithinStep(integrator, *search_from, hi, tolerance);
+    if (search_from && !end) {
+      const ConstraintsAndRates at_from =
+          at_lo && *search_from == lo ? *at_lo : ConstraintsAndRatesAt(integrator, *search_from);
+      end = ZeroWithinStep(integrator, *search_from, at_from, hi, at_end, tolerance);
+    }
+    at_lo = at_end;
     if (!end && hi >= horizon) end = ModeEnd{ModeEnd::Kind::kHorizon, horizon};
     sampler.Take(integrator, t, lo, end ? end->tau : hi);
     if (end) return *end;
