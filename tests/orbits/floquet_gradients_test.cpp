@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/orbits/stability.hpp"
+#include "support/five_mass_chain.hpp"
+#include "support/perturbed_orbit.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -51,6 +53,26 @@ TEST_P(MonodromyGradients, AreCentralDifferencesOfTheMonodromy) {
 // §4.1 without sticks (antisymmetric), §5.1 and §6 with (§6 antisymmetric).
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, MonodromyGradients, ::testing::Values("paper-4.1", "paper-5.1", "paper-6"),
                          [](const auto& info) { return std::string(info.param).substr(6, 1) + "_" + std::to_string(info.index); });
+
+// A model sized at run time: the damped five-mass chain's stick-slip orbit (its motion settled at
+// omega = 0.6), every variable but the belt's speed; the value is StabilityOf's monodromy.
+TEST(MonodromyGradientsAtARunTimeSize, AreCentralDifferencesOfTheMonodromy) {
+  const DynamicLinearOscillator model = FiveMassChain();
+  const BasicOrbit<DynamicLinearOscillator> o = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  const BasicMonodromyGradient<Eigen::Dynamic> g = stickslip::MonodromyGradients(model, o);
+  const Eigen::MatrixXd m = StabilityOf(model, o).monodromy;
+  const double scale = 1.0 + m.cwiseAbs().maxCoeff();
+  EXPECT_LE((g.period - m).cwiseAbs().maxCoeff(), 1e-13 * scale);
+  const int count = model.StateSize() + o.signature.size() + DynamicLinearOscillator::kParameterCount - 1;
+  ASSERT_EQ(static_cast<int>(g.d_period.size()), count + 1);
+  for (int k = 0; k < count; ++k) {
+    const double h = 1e-6;
+    const Eigen::MatrixXd period = (StabilityOf(model, PerturbedOrbit(model, o, k, h)).monodromy -
+                                    StabilityOf(model, PerturbedOrbit(model, o, k, -h)).monodromy) /
+                                   (2 * h);
+    EXPECT_LE((g.d_period[static_cast<std::size_t>(k)] - period).cwiseAbs().maxCoeff(), 1e-6 * scale) << "variable " << k;
+  }
+}
 
 }  // namespace
 }  // namespace stickslip

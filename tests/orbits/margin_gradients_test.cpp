@@ -12,6 +12,8 @@
 
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartog_oscillator.hpp"
+#include "support/five_mass_chain.hpp"
+#include "support/perturbed_orbit.hpp"
 #include "support/random_orbits.hpp"
 #include "support/solved_presets.hpp"
 
@@ -97,29 +99,18 @@ TEST(MarginGradients, MatchCentralDifferencesOnRandomOrbitsOfEveryEndKind) {
   }
 }
 
-// The test model through the interface (den_hartog_oscillator.hpp): its variables are x0, phi,
-// the durations, then omega, beta, beta_static.
-BasicOrbit<DenHartogOscillator> Perturbed(BasicOrbit<DenHartogOscillator> o, int index, double h) {
-  const int n = o.signature.size();
-  double& v = index == 0 ? o.start(0)
-              : index == 1 ? o.phi
-              : index < 2 + n ? o.durations[index - 2]
-                              : DenHartogOscillator::ParameterAt(o.parameters, index - 2 - n);
-  v += h;
-  return o;
-}
-
-std::set<std::string> ExpectModelGradientsMatchDifferences(const BasicOrbit<DenHartogOscillator>& orbit) {
-  const DenHartogOscillator model = DenHartogModel();
+template <typename Model>
+std::set<std::string> ExpectModelGradientsMatchDifferences(const Model& model, const BasicOrbit<Model>& orbit) {
   const std::vector<Margin> margins = AdmissibilityMargins(model, orbit);
   const std::vector<MarginGradient> gradients = MarginGradients(model, orbit);
   EXPECT_EQ(gradients.size(), margins.size());
   std::set<std::string> checked;
-  const int count = 2 + orbit.signature.size() + 3;
+  // The belt's speed (the rest velocity) is left out: the contact's start velocity follows it.
+  const int count = model.StateSize() + orbit.signature.size() + Model::kParameterCount - 1;
   for (int index = 0; index < count; ++index) {
     const double h = 1e-6;
-    const std::vector<Margin> up = AdmissibilityMargins(model, Perturbed(orbit, index, h));
-    const std::vector<Margin> down = AdmissibilityMargins(model, Perturbed(orbit, index, -h));
+    const std::vector<Margin> up = AdmissibilityMargins(model, PerturbedOrbit(model, orbit, index, h));
+    const std::vector<Margin> down = AdmissibilityMargins(model, PerturbedOrbit(model, orbit, index, -h));
     for (std::size_t k = 0; k < margins.size(); ++k) {
       if (!std::isfinite(margins[k].value)) continue;
       const double fd = (up[k].value - down[k].value) / (2 * h);
@@ -139,13 +130,28 @@ std::set<std::string> ExpectModelGradientsMatchDifferences(const BasicOrbit<DenH
 TEST(MarginGradients, MatchCentralDifferencesForTheTestModel) {
   std::set<std::string> kinds;
   for (const auto& [r, beta] : {std::pair{0.3, 0.05}, std::pair{0.38, 0.1}}) {
-    kinds.merge(ExpectModelGradientsMatchDifferences(DenHartogOnSignature(DenHartogOrbit(r, beta), "slip- slip+", beta)));
+    kinds.merge(ExpectModelGradientsMatchDifferences(
+        DenHartogModel(), DenHartogOnSignature(DenHartogOrbit(r, beta), "slip- slip+", beta)));
   }
   const BasicOrbit<DenHartogOscillator> sticking{
       Signature::Parse("slip- stick slip+ stick"), {0.7, 0.2, 0.3}, {1.0, 0.0}, 0.3, {2.0, 0.5, 2.5, 0.7}};
-  kinds.merge(ExpectModelGradientsMatchDifferences(sticking));
+  kinds.merge(ExpectModelGradientsMatchDifferences(DenHartogModel(), sticking));
   for (const char* kind : {"duration", "slip-velocity (interior)", "stop-slope", "stop-force", "stick-constraint",
                            "exit-slope", "friction-level"}) {
+    EXPECT_TRUE(kinds.count(kind)) << kind;
+  }
+}
+
+// A model sized at run time: the damped five-mass chain (support/five_mass_chain.hpp) on the
+// stick-slip orbit its motion settles on at omega = 0.6, and the same orbit's point (not
+// periodic, its margins defined all the same) with the stick twice as long.
+TEST(MarginGradients, MatchCentralDifferencesAtARunTimeSize) {
+  const DynamicLinearOscillator model = FiveMassChain();
+  BasicOrbit<DynamicLinearOscillator> orbit = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  std::set<std::string> kinds = ExpectModelGradientsMatchDifferences(model, orbit);
+  orbit.durations[0] *= 2.0;
+  kinds.merge(ExpectModelGradientsMatchDifferences(model, orbit));
+  for (const char* kind : {"duration", "stop-slope", "stick-constraint", "exit-slope"}) {
     EXPECT_TRUE(kinds.count(kind)) << kind;
   }
 }
