@@ -2,6 +2,9 @@
 // differences of StabilityOf's monodromy, on paper orbits with and without sticks.
 #include "stickslip/orbits/floquet_gradients.hpp"
 
+#include <algorithm>
+#include <span>
+
 #include <gtest/gtest.h>
 
 #include "stickslip/orbits/stability.hpp"
@@ -18,6 +21,10 @@ class MonodromyGradients : public ::testing::TestWithParam<const char*> {};
 
 Eigen::Matrix4d ListedMonodromy(const Orbit& o) {
   return Monodromy<double>(o.signature, o.InitialState(), o.phi, o.durations, o.parameters).listed;
+}
+template <typename Model>
+Eigen::MatrixXd ListedMonodromy(const Model& model, const BasicOrbit<Model>& o) {
+  return Monodromy<double>(model, o.signature, o.start, o.phi, std::span<const double>(o.durations), o.parameters).listed;
 }
 
 TEST_P(MonodromyGradients, ValueIsTheStabilityMonodromy) {
@@ -55,7 +62,8 @@ INSTANTIATE_TEST_SUITE_P(PaperOrbits, MonodromyGradients, ::testing::Values("pap
                          [](const auto& info) { return std::string(info.param).substr(6, 1) + "_" + std::to_string(info.index); });
 
 // A model sized at run time: the damped five-mass chain's stick-slip orbit (its motion settled at
-// omega = 0.6), every variable but the belt's speed; the value is StabilityOf's monodromy.
+// omega = 0.6), every variable but the belt's speed, over the period and over the listed half
+// (the orbit is antisymmetric); the value is StabilityOf's monodromy.
 TEST(MonodromyGradientsAtARunTimeSize, AreCentralDifferencesOfTheMonodromy) {
   const DynamicLinearOscillator model = FiveMassChain();
   const BasicOrbit<DynamicLinearOscillator> o = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
@@ -63,15 +71,21 @@ TEST(MonodromyGradientsAtARunTimeSize, AreCentralDifferencesOfTheMonodromy) {
   const Eigen::MatrixXd m = StabilityOf(model, o).monodromy;
   const double scale = 1.0 + m.cwiseAbs().maxCoeff();
   EXPECT_LE((g.period - m).cwiseAbs().maxCoeff(), 1e-13 * scale);
+  EXPECT_LE((g.listed - ListedMonodromy(model, o)).cwiseAbs().maxCoeff(), 1e-13 * scale);
   const int count = model.StateSize() + o.signature.size() + DynamicLinearOscillator::kParameterCount - 1;
+  double largest = 0.0;
   ASSERT_EQ(static_cast<int>(g.d_period.size()), count + 1);
   for (int k = 0; k < count; ++k) {
     const double h = 1e-6;
-    const Eigen::MatrixXd period = (StabilityOf(model, PerturbedOrbit(model, o, k, h)).monodromy -
-                                    StabilityOf(model, PerturbedOrbit(model, o, k, -h)).monodromy) /
-                                   (2 * h);
-    EXPECT_LE((g.d_period[static_cast<std::size_t>(k)] - period).cwiseAbs().maxCoeff(), 1e-6 * scale) << "variable " << k;
+    const BasicOrbit<DynamicLinearOscillator> plus = PerturbedOrbit(model, o, k, h), minus = PerturbedOrbit(model, o, k, -h);
+    const Eigen::MatrixXd period = (StabilityOf(model, plus).monodromy - StabilityOf(model, minus).monodromy) / (2 * h);
+    const Eigen::MatrixXd listed = (ListedMonodromy(model, plus) - ListedMonodromy(model, minus)) / (2 * h);
+    const std::size_t j = static_cast<std::size_t>(k);
+    EXPECT_LE((g.d_period[j] - period).cwiseAbs().maxCoeff(), 1e-6 * scale) << "variable " << k;
+    EXPECT_LE((g.d_listed[j] - listed).cwiseAbs().maxCoeff(), 1e-6 * scale) << "variable " << k;
+    largest = std::max(largest, g.d_period[j].cwiseAbs().maxCoeff());
   }
+  EXPECT_GT(largest, 1e-3 * scale) << "the monodromy depends on the orbit's variables";
 }
 
 }  // namespace

@@ -216,25 +216,36 @@ std::optional<ModeEnd> FirstZero(const ModeIntegrator<M>& integrator, const Cons
   return end;
 }
 
-// A constraint positive at both ends of the last step that dipped below zero in between: a short
-// excursion (as a brief re-stick, when the levels are close) whose two crossings one step
-// straddles. Where a constraint's rate goes from negative at `from` to positive at hi, its minimum
-// between is located by bisection on the rate, and if it lies below -depth, the first zero before
-// it. depth is 1e4 times the integrator's error tolerance at the constraint's scale there: a
-// shallower dip may be the integrator's error at a tangency (an abnormal stop, a stick force
-// touching its threshold), which stays unseen as before. (Two minima in one step are not looked
-// for.)
-// The constraints and their rates at one time.
+// The constraints and their rates at one time, and the size of what a constraint is computed
+// from there (its rounding and the integrator's error scale with it): in a slip the contact's
+// velocity component (not s = that - the rest velocity, which is small near a stop), in a stick
+// the holding force's terms (HoldingForceScale, at least the static threshold).
 struct ConstraintsAndRates {
   Constraints value;
   Constraints rate;
+  double scale = 0.0;
 };
 
 template <IntegrableOscillatorModel M>
 ConstraintsAndRates ConstraintsAndRatesAt(const ModeIntegrator<M>& integrator, double tau) {
-  return {integrator.ConstraintsAt(tau), integrator.RatesAt(tau)};
+  const ModeField<M>& field = integrator.field();
+  const typename M::State x = integrator.Interpolated(tau);
+  const typename M::State zero = M::State::Zero(x.size());
+  const double scale = field.mode == Mode::kStick
+                           ? field.model.HoldingForceScale(x, field.p)
+                           : std::abs(field.model.ContactVelocity(x, field.p) - field.model.ContactVelocity(zero, field.p));
+  return {ConstraintsOf(field, x, tau), RatesOf(field, x, tau), scale};
 }
 
+// A constraint positive at both ends of the last step that dipped below zero in between: a short
+// excursion (as a brief re-stick, when the levels are close) whose two crossings one step
+// straddles. Where a constraint's rate goes from negative at `from` to positive at hi, its minimum
+// between is located by bisection on the rate, and if it lies below -depth, the first zero before
+// it. depth is 1e4 times the integrator's error tolerance at the constraint's scale: a shallower
+// dip may be the integrator's error at a tangency (an abnormal stop, a stick force touching its
+// threshold), which stays unseen as every tangency is. The search is made for the default
+// tolerances (1e-12: a dip of 1e-8 of the scale is seen); at looser ones only deeper dips are.
+// (Two minima in one step are not looked for.)
 template <IntegrableOscillatorModel M>
 std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, double from, const ConstraintsAndRates& at_from,
                                       double hi, const ConstraintsAndRates& at_hi, double tolerance) {
@@ -249,7 +260,7 @@ std::optional<ModeEnd> ZeroWithinStep(const ModeIntegrator<M>& integrator, doubl
       if (mid <= lo || mid >= minimum) break;  // no double between them
       (integrator.RatesAt(mid).value[k] < 0.0 ? lo : minimum) = mid;
     }
-    const double scale = std::max(std::abs(at_from.value.value[k]), std::abs(at_hi.value.value[k]));
+    const double scale = std::max({at_from.scale, at_hi.scale, std::abs(at_from.value.value[k]), std::abs(at_hi.value.value[k])});
     const double depth = 1e4 * (integrator.options().absolute_tolerance + integrator.options().relative_tolerance * scale);
     if (integrator.ConstraintsAt(minimum).value[k] >= -depth) continue;
     const double tau = LocateZero(integrator, k, from, minimum, tolerance);
