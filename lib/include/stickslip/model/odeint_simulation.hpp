@@ -118,16 +118,21 @@ Constraints ConstraintsOf(const ModeField<M>& field, const typename M::State& x,
   return {{threshold - s, threshold + s}, 2};
 }
 
+// The contact's velocity component of a state (s is that less the rest velocity, a constant): of
+// the state's derivative, the contact's acceleration.
+template <IntegrableOscillatorModel M>
+double ContactVelocityComponent(const ModeField<M>& field, const typename M::State& x) {
+  const typename M::State zero = M::State::Zero(x.size());
+  return field.model.ContactVelocity(x, field.p) - field.model.ContactVelocity(zero, field.p);
+}
+
 // The constraints' time derivatives along the mode's motion, from the equations of motion: in a
-// slip the direction times the contact's acceleration (s is the contact's velocity component less
-// a constant), in a stick -+ the holding force's rate.
+// slip the direction times the contact's acceleration, in a stick -+ the holding force's rate.
 template <IntegrableOscillatorModel M>
 Constraints RatesOf(const ModeField<M>& field, const typename M::State& x, double tau) {
   if (field.mode != Mode::kStick) {
     const typename M::State dx = field.model.VectorField(field.mode, x, field.PhaseAt(tau), field.p);
-    const typename M::State zero = M::State::Zero(dx.size());
-    const double acceleration = field.model.ContactVelocity(dx, field.p) - field.model.ContactVelocity(zero, field.p);
-    return {{SlipDirection(field.mode) * acceleration, 0.0}, 1};
+    return {{SlipDirection(field.mode) * ContactVelocityComponent(field, dx), 0.0}, 1};
   }
   const double rate = field.model.HoldingForceRate(x, field.PhaseAt(tau), field.p);
   return {{-rate, rate}, 2};
@@ -230,10 +235,8 @@ template <IntegrableOscillatorModel M>
 ConstraintsAndRates ConstraintsAndRatesAt(const ModeIntegrator<M>& integrator, double tau) {
   const ModeField<M>& field = integrator.field();
   const typename M::State x = integrator.Interpolated(tau);
-  const typename M::State zero = M::State::Zero(x.size());
-  const double scale = field.mode == Mode::kStick
-                           ? field.model.HoldingForceScale(x, field.p)
-                           : std::abs(field.model.ContactVelocity(x, field.p) - field.model.ContactVelocity(zero, field.p));
+  const double scale = field.mode == Mode::kStick ? field.model.HoldingForceScale(x, field.p)
+                                                  : std::abs(ContactVelocityComponent(field, x));
   return {ConstraintsOf(field, x, tau), RatesOf(field, x, tau), scale};
 }
 

@@ -71,9 +71,9 @@ OrbitStability ToOrbitStability(const BasicStability<kStateSize>& s) {
 template <typename T, typename Model = Pascal2014>
 struct MonodromyT {
   using Matrix = Eigen::Matrix<T, Model::kStateSize, Model::kStateSize>;
-  Matrix period = FixedSizeDefault<Matrix, true>();  // over the whole period
+  Matrix period;  // over the whole period (Monodromy starts both at the identity of the state's size)
   // Over the listed segments: the half-period map of an antisymmetric orbit (the period's for the others).
-  Matrix listed = FixedSizeDefault<Matrix, true>();
+  Matrix listed;
   bool one_sided = false;  // an abnormal stop on the way (Stability::one_sided)
 };
 template <typename T, typename Model>
