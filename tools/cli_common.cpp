@@ -79,4 +79,16 @@ std::string DescribeParameters(const Parameters& p) {
   return text;
 }
 
+int FindExitCode(FindOrbitStatus status) {
+  switch (status) {
+    case FindOrbitStatus::kFound: return kExitOk;
+    case FindOrbitStatus::kNotPeriodic:
+    case FindOrbitStatus::kNoOrbitType: return kExitNotPeriodic;
+    case FindOrbitStatus::kSimulationIncomplete: return kExitFailure;
+    case FindOrbitStatus::kSolveFailed: return kExitNoConvergence;
+    case FindOrbitStatus::kNotAMotion: break;
+  }
+  return kExitNotAMotion;
+}
+
 }  // namespace stickslip::cli

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "number_text.hpp"
+#include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/verification.hpp"
@@ -29,6 +30,10 @@ inline constexpr int kExitNotAMotion = 4;
 inline constexpr int kExitNotPeriodic = 5;
 // (6 was a trace's end at a change of type that switched nowhere, until issue 25: a trace that ran to
 // its ends exits 0 whatever they were; they are written and printed.)
+
+// find's exit code for its outcome (the paper's model's and --model's): kExitOk found and verified,
+// kExitNotPeriodic, kExitFailure (the simulation stopped early), kExitNoConvergence, kExitNotAMotion.
+int FindExitCode(FindOrbitStatus status);
 
 // solve's exit code for a converged orbit with this smallest margin and verification:
 // kExitNotAMotion, with the reason in *reason, if the margin is not positive or the verification

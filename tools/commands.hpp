@@ -27,6 +27,7 @@ Command AddPlotCommand(CLI::App& app);
 Command AddTraceCommand(CLI::App& app);
 Command AddAtlasCommand(CLI::App& app);
 Command AddMapCommand(CLI::App& app);
+Command AddDescribeCommand(CLI::App& app);
 // map_sweep_command.hpp: Command AddMapSweepCommand(CLI::App& app, ...).
 
 }  // namespace stickslip::cli

@@ -17,6 +17,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "found_run.hpp"
+#include "model_find.hpp"
 #include "orbit_json.hpp"
 #include "orbit_report.hpp"
 #include "progress_line.hpp"
@@ -47,6 +48,7 @@ struct FindArgs {
   std::string output;                 // --output: the trace's directory under --results
   bool json = false;
   bool force = false;
+  std::string model;  // --model FILE: a user's oscillator (model_find.hpp)
 };
 
 // The solve command line of a start (StartInputOf): signature, set, guess, free, tie.
@@ -57,18 +59,6 @@ std::string SolveCommandLine(const StartInput& start) {
   for (const std::string& name : start.free) line += " --free " + name;
   if (start.tie_u_r) line += " --tie-u_r";
   return line;
-}
-
-int ExitCode(FindOrbitStatus status) {
-  switch (status) {
-    case FindOrbitStatus::kFound: return kExitOk;
-    case FindOrbitStatus::kNotPeriodic:
-    case FindOrbitStatus::kNoOrbitType: return kExitNotPeriodic;
-    case FindOrbitStatus::kSimulationIncomplete: return kExitFailure;
-    case FindOrbitStatus::kSolveFailed: return kExitNoConvergence;
-    case FindOrbitStatus::kNotAMotion: break;
-  }
-  return kExitNotAMotion;
 }
 
 // Whether `path` lies inside `directory` (both as they resolve, links followed): a run file there
@@ -209,12 +199,23 @@ int RunFind(const FindArgs& args) {
     PrintFound(found, options);
   }
   // Only a verified orbit is a start to continue or trace from: otherwise nothing is written.
-  if (const int code = ExitCode(found.status); code != kExitOk) {
+  if (const int code = FindExitCode(found.status); code != kExitOk) {
     fmt::print(stderr, "error: {}\n", found.message);
     return code;
   }
   const Orbit& orbit = found.solution->orbit;
   return WriteAndTrace(args, outputs, StartInputOf(orbit), orbit.parameters.omega);
+}
+
+// find --model: the options of the paper's model's start and of what find writes are refused.
+int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"--preset", "--point", "--results", "--max-multiple", "--tolerance", "--confirmations",
+                             "--trace", "--output", "--write-run", "--as", "--range", "--force"}) {
+    if (cmd.count(option) == 0) continue;
+    throw InvalidInput::WithMessage(
+        option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients and --json", option));
+  }
+  return RunModelFind({args.model, args.start.set, args.transients, args.json});
 }
 
 }  // namespace
@@ -281,7 +282,14 @@ Command AddFindCommand(CLI::App& app) {
                 "closest_multiple, antisymmetric, signature (read off the motion) and orbit (as solve --json prints "
                 "it, with unknowns and admissible; null unless Newton converged); not with --trace");
   cmd->add_flag("--force", args->force, kForceHelp);
-  return {cmd, [args] { return RunFind(*args); }};
+  cmd->add_option("--model", args->model,
+                  "find the orbit of the oscillator in this run file's [model] (see describe) instead of the paper's: "
+                  "simulated from rest for --transients periods (forcing periods; without forcing, periods of its "
+                  "slowest free oscillation), its last period read from a stop (without forcing: between its last two "
+                  "sticks), solved and verified; takes --set NAME=VALUE over the file's parameters, --transients and "
+                  "--json only")
+      ->type_name("FILE");
+  return {cmd, [args, cmd] { return cmd->count("--model") == 0 ? RunFind(*args) : RunModelFindOf(*args, *cmd); }};
 }
 
 }  // namespace stickslip::cli

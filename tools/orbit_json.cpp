@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "stickslip/branches/orbit_monitor.hpp"
+#include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/stability.hpp"
 
@@ -17,26 +18,8 @@ using Json = nlohmann::ordered_json;
 
 Json Number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
-Json Modes(const std::vector<Mode>& sequence) {
-  Json list = Json::array();
-  for (Mode m : sequence) list.push_back(ToString(m));
-  return list;
-}
-
-Json VerificationJson(const Verification& v) {
-  const bool simulated = v.not_simulated.empty();
-  auto check = [&](const SimulatorCheck& c) {
-    return Json{{"events", Modes(c.modes)},
-                {"sequence_matches", c.sequence_matches},
-                {"max_mismatch", simulated ? Number(c.periodicity_mismatch) : Json(nullptr)},
-                {"max_event_time_difference", simulated ? Number(c.max_event_time_difference) : Json(nullptr)}};
-  };
-  return {{"passed", v.Passed()},
-          {"not_simulated", simulated ? Json(nullptr) : Json(v.not_simulated)},
-          {"expected", Modes(v.expected)},
-          {"exact", check(v.exact)},
-          {"odeint", check(v.odeint)}};
-}
+// The library's, one writer for every model.
+Json VerificationOf(const Verification& verification) { return Json::parse(VerificationJson(verification)); }
 
 // The orbit itself: signature, parameters, phi, x10, x20, v10, the segments; then its unknowns.
 Json OrbitVariablesJson(const Orbit& o, const std::vector<int>& free, bool tie_static_friction) {
@@ -80,7 +63,7 @@ Json OrbitJson(const OrbitSolution& s, const std::vector<int>& free, bool tie_st
   orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto& value) {
     out["measures"][name] = std::isfinite(static_cast<double>(value)) ? Json(value) : Json(nullptr);  // counts stay integers
   });
-  out["verification"] = VerificationJson(verification);
+  out["verification"] = VerificationOf(verification);
   return out;
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, runs every
 # run file of continuation-scripts/ into results/, the brute-force sweeps into results/sweeps/,
-# the orbit-type maps into results/maps/, the atlases into results/atlases/, and regenerates the
+# the orbit-type maps into results/maps/, the atlases into results/atlases/, the example models of
+# continuation-scripts/models/ into results/models/, and regenerates the
 # tables (results/paper-table.md, results/atlases/atlases.md,
 # results/runs.md, results/trace-intervals.md, results/maps/maps.md) and figures, and writes
 # results/README.md from its text in tools/results_readme.md with those tables spliced in (each table's
@@ -62,6 +63,12 @@ mkdir -p results/atlases
 "$bin" atlas --preset paper-6 --range 0.4,0.75 --steps 35 --results results/atlases --output paper-6-omega
 for a in paper-4.1-omega paper-5.1-omega paper-6-omega; do
   "$bin" plot results/atlases/$a --yscale log --output results/figures/$a-atlas.png
+done
+# Oscillators of your own (continuation-scripts/models/: a chain, matrices in Matrix Market files, a
+# belt): each described, and the periodic orbit its motion from rest settles on found and verified.
+mkdir -p results/models
+for f in continuation-scripts/models/*.toml; do
+  { "$bin" describe "$f"; echo; "$bin" find --model "$f"; } > "results/models/$(basename "$f" .toml).txt"
 done
 /usr/bin/python3 tools/atlas_summary.py results
 /usr/bin/python3 tools/map_summary.py results

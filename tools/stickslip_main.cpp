@@ -18,8 +18,9 @@
 int main(int argc, char** argv) {
   using namespace stickslip::cli;
   CLI::App app(
-      "stickslip: periodic orbits of the two-degree-of-freedom dry-friction oscillator of "
-      "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276.\n"
+      "stickslip: periodic orbits of dry-friction oscillators: the two-degree-of-freedom oscillator of "
+      "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276, and a linear oscillator of your own with a Coulomb contact "
+      "(a run file's [model]: describe, find --model).\n"
       "Exit codes: 0 success (a trace that ran to its ends, whatever they were), 1 failure, 2 bad input (nothing "
       "written), 3 no convergence, 4 solve, find: the solution is not a motion of the system (a margin <= 0) or "
       "failed its verification; trace: its start is not a motion (nothing written), 5 find: the motion is not "
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
   app.option_defaults()->disable_flag_override();
   const std::vector<Command> commands = {AddRunCommand(app), AddContinueCommand(app), AddTraceCommand(app), AddAtlasCommand(app), AddCheckCommand(app),
                                          AddSolveCommand(app), AddSimulateCommand(app), AddSweepCommand(app), AddMapSweepCommand(app), AddMapCommand(app),
-                                         AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app)};
+                                         AddExportCommand(app), AddFindCommand(app), AddPlotCommand(app), AddDescribeCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (message == "A subcommand is required" && argc > 1) {
-      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, map-sweep, map, export, find, plot", argv[1]);
+      message = fmt::format("command '{}' is unknown: valid commands run, continue, trace, check, solve, simulate, sweep, map-sweep, map, export, find, plot, describe", argv[1]);
     }
     // "allow-inadmissible was given a disallowed flag override": the option, its value, the rule.
     constexpr std::string_view kOverride = " was given a disallowed flag override";

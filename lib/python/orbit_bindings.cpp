@@ -14,6 +14,9 @@
 
 #include "bindings.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
+#include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_orbit_json.hpp"
+#include "stickslip/io/model_summary.hpp"
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/version.hpp"
@@ -566,6 +569,22 @@ void BindOrbits(py::module_& m) {
         return Find(start, FindCommand{transients, max_multiple, tolerance, confirmations});
       },
       py::arg("start"), py::arg("transients"), py::arg("max_multiple"), py::arg("tolerance"), py::arg("confirmations"));
+  // A run file's [model]: what describe --json and find --model --json print (io/model_summary.hpp,
+  // io/model_orbit_json.hpp), as JSON text for the package to load.
+  m.def("_describe_model", [](const std::string& path) { return ModelSummaryJson(SummarizeModel(path)); },
+        py::arg("path"));
+  m.def(
+      "_find_model",
+      [](const std::string& path, const NamedValues& set, double transients) {
+        if (!(transients >= kMinModelTransients && transients <= kMaxModelTransients && transients == std::floor(transients))) {
+          throw InvalidInput("transients", transients,
+                             fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
+        }
+        py::gil_scoped_release release;
+        const ModelFindRun run = FindModelFileOrbit(path, set, static_cast<int>(transients));
+        return ModelFindJson(run.model, run.found);
+      },
+      py::arg("path"), py::arg("set"), py::arg("transients"));
   // The model's state at t = 0 by name (x10, x20, v10, v20), and the variables of an n-segment
   // orbit before its parameters (x10, x20, v10, phi, d1..dn), unknowns unless fixed (FreeIndices).
   m.def("_initial_state", [] { return Model().initial_state; });

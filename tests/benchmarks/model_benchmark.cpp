@@ -142,7 +142,7 @@ BENCHMARK(TracePerPoint<DynamicLinearOscillator>)->UseRealTime()->Unit(benchmark
 // issue's goal: under a second on one core).
 void FiveMassTrace(benchmark::State& state) {
   const DynamicLinearOscillator model = FiveMassChain();
-  const BasicOrbit<DynamicLinearOscillator> start = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  const BasicOrbit<DynamicLinearOscillator> start = SettledOrbit(model, {0.6, 0.3, 0.4, 0.0}, 300);
   const BasicOrbitContinuationSetup<DynamicLinearOscillator> setup =
       OmegaSetup<DynamicLinearOscillator>(start, model, 0.15, 1.5, 1.0, 3000);
   double points = 0.0;

@@ -26,6 +26,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
@@ -56,16 +57,6 @@ std::string Describe(const BasicTraceResult<Model>& trace) {
     }
   }
   return text;
-}
-
-template <OscillatorModel Model>
-Verification VerifyByBothSimulators(const Model& model, const BasicOrbit<Model>& orbit) {
-  using State = typename Model::State;
-  auto exact = [](const Model& m, const typename Model::Parameters& p, const State& x0, double phi,
-                  const BasicSimulationOptions<State>& options) { return SimulateExact(m, p, x0, phi, options); };
-  auto integrated = [](const Model& m, const typename Model::Parameters& p, const State& x0, double phi,
-                       const BasicSimulationOptions<State>& options) { return SimulateOdeint(m, p, x0, phi, options); };
-  return VerifyOrbit(model, orbit, exact, integrated);
 }
 
 // Den Hartog's level beta* = |V| / sqrt(U^2 + 1/r^4), where r^2 X = beta: the turning points of his
@@ -237,7 +228,7 @@ TEST(TraceOfAMassOnABelt, RefusesAContinuedVariableThatIsNoParameter) {
 TEST(TraceOfAFiveMassChain, FollowsOrbitsBothSimulatorsConfirmAcrossTypeChanges) {
   const DynamicLinearOscillator model = FiveMassChain();
   ASSERT_EQ(model.StateSize(), 10);
-  const BasicOrbit<DynamicLinearOscillator> guess = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  const BasicOrbit<DynamicLinearOscillator> guess = SettledOrbit(model, {0.6, 0.3, 0.4, 0.0}, 300);
   TraceOptions options;
   options.max_branches = 4;
   const BasicTraceResult<DynamicLinearOscillator> trace =

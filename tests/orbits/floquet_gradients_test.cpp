@@ -66,7 +66,7 @@ INSTANTIATE_TEST_SUITE_P(PaperOrbits, MonodromyGradients, ::testing::Values("pap
 // (the orbit is antisymmetric); the value is StabilityOf's monodromy.
 TEST(MonodromyGradientsAtARunTimeSize, AreCentralDifferencesOfTheMonodromy) {
   const DynamicLinearOscillator model = FiveMassChain();
-  const BasicOrbit<DynamicLinearOscillator> o = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  const BasicOrbit<DynamicLinearOscillator> o = SettledOrbit(model, {0.6, 0.3, 0.4, 0.0}, 300);
   const BasicMonodromyGradient<Eigen::Dynamic> g = stickslip::MonodromyGradients(model, o);
   const Eigen::MatrixXd m = StabilityOf(model, o).monodromy;
   const double scale = 1.0 + m.cwiseAbs().maxCoeff();

@@ -147,7 +147,7 @@ TEST(MarginGradients, MatchCentralDifferencesForTheTestModel) {
 // periodic, its margins defined all the same) with the stick twice as long.
 TEST(MarginGradients, MatchCentralDifferencesAtARunTimeSize) {
   const DynamicLinearOscillator model = FiveMassChain();
-  BasicOrbit<DynamicLinearOscillator> orbit = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  BasicOrbit<DynamicLinearOscillator> orbit = SettledOrbit(model, {0.6, 0.3, 0.4, 0.0}, 300);
   std::set<std::string> kinds = ExpectModelGradientsMatchDifferences(model, orbit);
   orbit.durations[0] *= 2.0;
   kinds.merge(ExpectModelGradientsMatchDifferences(model, orbit));

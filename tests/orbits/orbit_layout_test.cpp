@@ -39,7 +39,7 @@ TEST(OrbitLayout, NamesTheTestModelsVariablesFromItsDescription) {
   const DenHartogOscillator model = DenHartogModel();  // the layout refers to its description
   ExpectLayoutOfTheEquations(model, "slip- slip+");
   const OrbitLayout layout(model.Description(), 2);
-  EXPECT_EQ(layout.Name(0), "x1_0");  // the start without the contact's velocity
+  EXPECT_EQ(layout.Name(0), "x_0");  // its coordinate x at t = 0: the start without the contact's velocity
   EXPECT_EQ(layout.Name(1), "phi");
   EXPECT_EQ(layout.Name(layout.Parameter(1)), "F_k");
 }

@@ -153,7 +153,7 @@ TEST(ModelStability, DenHartogsMultipliersMultiplyToTheStopsAccelerationRatiosAn
 // differences of the exact simulator's map).
 TEST(ModelStability, AtARunTimeSizeAreThoseOfTheFiniteDifferencePeriodMap) {
   const DynamicLinearOscillator model = FiveMassChain();
-  const BasicOrbit<DynamicLinearOscillator> guess = SettledOrbitGuess(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  const BasicOrbit<DynamicLinearOscillator> guess = SettledOrbit(model, {0.6, 0.3, 0.4, 0.0}, 300);
   const BasicOrbitSolution<DynamicLinearOscillator> solved =
       SolveOrbit(model, guess, FreeIndices(VariableSetOf(model, guess.signature),
                                            UnknownsAtFixedParameters(VariableSetOf(model, guess.signature))),

@@ -20,6 +20,8 @@ The same computations as the command line, with the same keys and the same check
     fig = trace.plot(); fig = sweep.plot(); fig = m.plot()
     stickslip.plot(branch, trace, sweep, output="overlay.pdf")   # several results; paths too
     trace.to_pandas()                                      # every point, measure columns included
+    stickslip.describe("belt.toml")                        # an oscillator of your own: a run file's [model]
+    stickslip.find(model="belt.toml", set={"v_b": 0.4})    # -> ModelFound: the orbit it settles on
 
 Time is the paper's scaled time t; every quantity is dimensionless (eq. 3). Bad input raises
 ValueError with the command line's one-line message ("<field> = <value> is invalid: <valid
@@ -30,6 +32,7 @@ on every core.
 """
 
 import inspect as _inspect
+import json as _json
 from dataclasses import dataclass as _dataclass
 
 import numpy as _np
@@ -46,7 +49,7 @@ from . import plotting
 
 __all__ = [
     "Atlas", "atlas", "Branch", "Continuation", "ConvergenceError", "InvalidArgument", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
-    "Found", "Simulation", "SweepResult", "Trace", "continue_orbit", "find", "map_sweep", "natural_frequencies",
+    "Found", "ModelFound", "Simulation", "SweepResult", "Trace", "continue_orbit", "describe", "find", "map_sweep", "natural_frequencies",
     "plot", "plotting", "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
 
@@ -209,9 +212,49 @@ class Found:
         return self.status == "found"
 
 
+@_dataclass(frozen=True)
+class ModelFound:
+    """What stickslip.find(model=...) found for an oscillator of your own: `status` and `message` as
+    Found's, the orbit type read off the motion (`signature`, a str, or None), and the solved `orbit`
+    when Newton converged: a dict with the keys of `stickslip find --model --json` (signature,
+    parameters, period, phi, start by the model's names x1_0 ... vn_0, durations, margins,
+    admissible, multipliers, stable, measures per coordinate, verification)."""
+    status: str
+    message: str
+    signature: object
+    orbit: object
+
+    @property
+    def found(self):
+        return self.status == "found"
+
+
+def describe(path):
+    """The oscillator of a run file's [model] table, as `stickslip describe --json`: a dict with its
+    model, kind, coordinates, contact, forcing, friction_slope, parameters (name, meaning, unit,
+    minimum, maximum, range, value), autonomous, free_oscillations (slip, stick) and start_state."""
+    return _json.loads(_core._describe_model(_checked(path, "path", "path")))
+
+
+def _find_model(model, set, transients):
+    given = {} if set is None else set
+    if not isinstance(given, dict):
+        raise InvalidArgument(f"set = {set!r} is invalid: valid range a dict of name: number")
+    values = [(_checked(name, "set", "text"), _checked(value, name, "number")) for name, value in given.items()]
+    found = _json.loads(_core._find_model(_checked(model, "model", "path"), values,
+                                          _checked(transients, "transients", "number")))
+    return ModelFound(**found)
+
+
 def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple=8, tolerance=1e-6,
-         confirmations=3, preset=None, point=None, results="results", set=None):
+         confirmations=3, preset=None, point=None, results="results", set=None, model=None):
     """From a simulated motion to its exact periodic orbit, as `stickslip find`.
+
+    model: a run file with a [model] table (an oscillator of your own, as `stickslip find --model`):
+    its motion from rest simulated for `transients` periods (2 to 1e5: forcing periods; without
+    forcing, periods of its slowest free oscillation), its last period read from a stop, solved and
+    verified; `set` a dict of its parameters over the file's; returns a ModelFound. With `model`, the
+    other arguments must stay at their defaults.
 
     Simulates `transients` forcing periods (0 to 1e6; more while the motion has not settled), finds
     the smallest k <= max_multiple (1 to 999) after which the stroboscopic section repeats to
@@ -221,6 +264,15 @@ def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple
     Returns a Found; every numerical outcome is its status (the command line's exit codes 0, 1, 3,
     4, 5). Bad input raises ValueError.
     """
+    if model is not None:
+        arguments = {"parameters": parameters, "state": state, "phi": phi, "preset": preset, "point": point}
+        given = [name for name, value in arguments.items() if value is not None]
+        given += [name for name, value, default in (("max_multiple", max_multiple, 8), ("tolerance", tolerance, 1e-6),
+                                                    ("confirmations", confirmations, 3)) if value != default]
+        if given:
+            raise ValueError(f"{given[0]} is invalid with model=: valid left out (the model's run file gives the "
+                             "oscillator, its parameters and a start from rest)")
+        return _find_model(model, set, transients)
     start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     numbers = [_checked(value, name, "number") for name, value in (("transients", transients), ("max_multiple", max_multiple),
                                                                   ("tolerance", tolerance), ("confirmations", confirmations))]

@@ -1,13 +1,5 @@
-// The only translation unit that includes toml++, compiled header-only here (not Debian's shared
-// library). Debian's toml++ 3.3.0 aborts on some malformed input through its internal asserts,
-// and with NDEBUG turns them into optimiser assumptions (undefined behaviour); here they are
-// no-ops, and the input is screened before parsing.
-#ifdef NDEBUG
-#undef NDEBUG
-#endif
-#define TOML_HEADER_ONLY 1
-#define TOML_ASSERT(expr) static_cast<void>(0)
-#include <toml++/toml.h>
+// toml++ through toml_table.hpp, first: it undefines NDEBUG before anything includes <cassert>.
+#include "toml_table.hpp"
 
 #include "stickslip/io/run_file.hpp"
 
@@ -22,217 +14,12 @@
 
 namespace stickslip {
 
+using toml_reading::NumberValue;
+using toml_reading::ParseToml;
+using toml_reading::TableReader;
+using toml_reading::Where;
+
 namespace {
-
-// Rejects what toml++ 3.3.0 mishandles: C0 control characters (but tab, newline, carriage
-// return), DEL, non-ASCII bytes outside comments (its whitespace test reaches
-// __builtin_unreachable on some, U+FEBF for one), and arrays nested deeper than two levels; and
-// multi-line strings, so that the screen knows exactly where comments are.
-void Screen(std::string_view content, std::string_view path) {
-  if (content.size() > kMaxRunFileBytes) {
-    throw RunFileError(fmt::format("{}: run file size = more than {} bytes is invalid: valid size <= {} bytes", path,
-                                   kMaxRunFileBytes, kMaxRunFileBytes));
-  }
-  int line = 1, column = 0, depth = 0;
-  bool comment = false, escaped = false;
-  char quote = 0;
-  for (std::size_t i = 0; i < content.size(); ++i) {
-    const auto c = static_cast<unsigned char>(content[i]);
-    ++column;
-    if (c == '\n') {
-      ++line;
-      column = 0;
-      comment = false;
-      escaped = false;
-      if (quote == '"' || quote == '\'') quote = 0;  // single-line strings end (toml++ reports)
-      continue;
-    }
-    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
-      throw RunFileError(fmt::format("{}:{}:{}: control character 0x{:02x} is not allowed", path, line, column, c));
-    }
-    if (c >= 0x80 && !comment) {
-      throw RunFileError(fmt::format("{}:{}:{}: non-ASCII byte 0x{:02x} outside a comment: valid only in comments",
-                                     path, line, column, c));
-    }
-    if (comment) continue;
-    if (quote != 0) {
-      // The byte after a backslash is escaped but was checked above like any other.
-      if (escaped) escaped = false;
-      else if (c == '\\' && quote == '"') escaped = true;
-      else if (c == static_cast<unsigned char>(quote)) quote = 0;
-      continue;
-    }
-    if (c == '#') comment = true;
-    else if (c == '"' || c == '\'') {
-      // Multi-line strings would need the screen to follow toml++'s rules for runs of quotes;
-      // a run file has no use for them, so they are refused.
-      if (content.substr(i, 3) == std::string(3, static_cast<char>(c))) {
-        throw RunFileError(fmt::format("{}:{}:{}: multi-line strings ({}) are not allowed: valid single-line strings",
-                                       path, line, column, content.substr(i, 3)));
-      }
-      quote = static_cast<char>(c);
-    }
-    else if (c == '[') {
-      // "[[" at the start of a line is an array-of-tables header, not nesting.
-      if (++depth > 2 && !(column == 1 || (column == 2 && content[i - 1] == '['))) {
-        throw RunFileError(fmt::format("{}:{}:{}: arrays nest at most two levels deep", path, line, column));
-      }
-    } else if (c == ']') {
-      depth = std::max(0, depth - 1);
-    }
-  }
-}
-
-// A number node's value. toml++'s value<double>() is empty for an integer that a double cannot
-// hold exactly (beyond 2^53), so integers are converted here, to the nearest double.
-double NumberValue(const toml::node& node) {
-  if (const auto* integer = node.as_integer()) return static_cast<double>(integer->get());
-  return node.as_floating_point()->get();
-}
-
-std::string Where(std::string_view path, const toml::node& node) {
-  const toml::source_position p = node.source().begin;
-  return fmt::format("{}:{}:{}", path, p.line, p.column);
-}
-
-// Reads the keys of one table, checking each is known and of the right type.
-class TableReader {
- public:
-  TableReader(const toml::table& table, std::string prefix, std::string_view path, RunFile* run)
-      : table_(table), prefix_(std::move(prefix)), path_(path), run_(run) {}
-
-  const toml::node* Get(std::string_view key) {
-    known_.insert(std::string(key));
-    const toml::node* node = table_.get(key);
-    if (node) run_->locations[prefix_ + std::string(key)] = Where(path_, *node);
-    return node;
-  }
-  [[noreturn]] void Fail(const toml::node& node, std::string_view key, std::string_view what) const {
-    throw RunFileError(fmt::format("{}: key '{}{}' {}", Where(path_, node), prefix_, key, what), prefix_ + std::string(key));
-  }
-  [[noreturn]] void Missing(std::string_view key, std::string_view what) const {
-    throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}", Where(path_, table_), prefix_, key, what),
-                       prefix_ + std::string(key));
-  }
-
-  void String(std::string_view key, std::string* out, bool required = false) {
-    const toml::node* n = Get(key);
-    if (!n) {
-      if (required) Missing(key, "give a string");
-      return;
-    }
-    if (!n->is_string()) Fail(*n, key, fmt::format("must be a string, got {}", toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
-    *out = n->as_string()->get();
-  }
-  void Number(std::string_view key, double* out, bool required = false) {
-    const toml::node* n = Get(key);
-    if (!n) {
-      if (required) Missing(key, "give a number");
-      return;
-    }
-    if (!n->is_number()) Fail(*n, key, fmt::format("must be a number, got {}", toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
-    *out = NumberValue(*n);
-    if (!std::isfinite(*out)) Fail(*n, key, "must be finite");
-  }
-  void Integer(std::string_view key, int* out) {
-    const toml::node* n = Get(key);
-    if (!n) return;
-    if (!n->is_integer()) Fail(*n, key, "must be an integer");
-    const std::int64_t v = n->as_integer()->get();
-    if (v < 1 || v > kMaxRunPoints) Fail(*n, key, fmt::format("= {} is invalid: valid range 1 to {}", v, kMaxRunPoints));
-    *out = static_cast<int>(v);
-  }
-  void Boolean(std::string_view key, bool* out) {
-    const toml::node* n = Get(key);
-    if (!n) return;
-    if (!n->is_boolean()) {
-      // The value as written (a string, 1e300, an array): short ones shown, every one's type named.
-      std::ostringstream shown;
-      n->visit([&shown](const auto& v) { shown << v; });
-      std::string value = shown.str();
-      if (value.size() > 40) value = value.substr(0, 40) + "...";
-      Fail(*n, key, fmt::format("= {} is invalid: valid true or false (a boolean; its type is {})", value,
-                                toml::impl::node_type_friendly_names[static_cast<int>(n->type())]));
-    }
-    *out = n->as_boolean()->get();
-  }
-  void Strings(std::string_view key, std::vector<std::string>* out) {
-    const toml::node* n = Get(key);
-    if (!n) return;
-    if (!n->is_array()) Fail(*n, key, "must be an array of strings");
-    for (const toml::node& e : *n->as_array()) {
-      if (!e.is_string()) Fail(e, key, "must be an array of strings");
-      out->push_back(e.as_string()->get());
-    }
-  }
-  void Numbers(std::string_view key, std::vector<double>* out) {
-    const toml::node* n = Get(key);
-    if (!n) return;
-    if (!n->is_array()) Fail(*n, key, "must be an array of numbers");
-    for (const toml::node& e : *n->as_array()) {
-      if (!e.is_number()) Fail(e, key, "must be an array of numbers");
-      out->push_back(NumberValue(e));
-      if (!std::isfinite(out->back())) Fail(e, key, "must hold finite numbers");
-    }
-  }
-  // A table of name = number.
-  void Values(std::string_view key, NamedValues* out) {
-    const toml::node* n = Get(key);
-    if (!n) return;
-    if (!n->is_table()) Fail(*n, key, "must be a table of name = number");
-    for (const auto& [name, value] : *n->as_table()) {
-      if (!value.is_number()) Fail(value, fmt::format("{}.{}", key, name.str()), "must be a number");
-      out->emplace_back(std::string(name.str()), NumberValue(value));
-      if (!std::isfinite(out->back().second)) Fail(value, fmt::format("{}.{}", key, name.str()), "must be finite");
-    }
-  }
-  const toml::table* Table(std::string_view key, bool required) {
-    const toml::node* n = Get(key);
-    if (!n) {
-      if (required) Missing(key, "give a table");
-      return nullptr;
-    }
-    if (!n->is_table()) Fail(*n, key, "must be a table");
-    return n->as_table();
-  }
-  // Unknown keys, with the nearest known one suggested.
-  void RejectUnknown() const {
-    for (const auto& [key, value] : table_) {
-      const std::string name(key.str());
-      if (known_.count(name)) continue;
-      std::string suggestion;
-      std::size_t best = 3;
-      for (const std::string& k : known_) {
-        const std::size_t d = Distance(name, k);
-        if (d < best) best = d, suggestion = k;
-      }
-      Fail(value, name, suggestion.empty() ? std::string("is unknown")
-                                           : fmt::format("is unknown: did you mean '{}{}'?", prefix_, suggestion));
-    }
-  }
-
- private:
-  static std::size_t Distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= b.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-        diagonal = up;
-      }
-    }
-    return row[b.size()];
-  }
-
-  const toml::table& table_;
-  std::string prefix_;
-  std::string_view path_;
-  RunFile* run_;
-  std::set<std::string> known_;
-};
 
 // Whether `text` is valid UTF-8: no stray continuation byte, no truncated sequence, no overlong
 // form, no surrogate, nothing above U+10FFFF.
@@ -272,18 +59,8 @@ bool IsRunName(std::string_view name) {
 
 namespace {
 
-toml::table ParseToml(std::string_view content, std::string_view path) {
-  Screen(content, path);
-  try {
-    return toml::parse(content, path);
-  } catch (const toml::parse_error& e) {
-    const auto& p = e.source().begin;
-    throw RunFileError(fmt::format("{}:{}:{}: {}", path, p.line, p.column, e.description()));
-  }
-}
-
 void ReadRestart(const toml::table& restart, const toml::table& root, std::string_view path, RunFile* run) {
-  TableReader r(restart, "start.restart.", path, run);
+  TableReader r(restart, "start.restart.", path, &run->locations);
   r.String("run", &run->restart_run, true);
   if (!IsRunName(run->restart_run)) {
     r.Fail(*r.Get("run"), "run", fmt::format("= '{}' is invalid: valid {}", run->restart_run, kRunNameRule));
@@ -302,7 +79,7 @@ void ReadRestart(const toml::table& restart, const toml::table& root, std::strin
 }
 
 void ReadStart(const toml::table& start, const toml::table& root, std::string_view path, RunFile* run) {
-  TableReader s(start, "start.", path, run);
+  TableReader s(start, "start.", path, &run->locations);
   s.String("preset", &run->preset);
   s.String("signature", &run->signature);
   s.Values("set", &run->set);
@@ -316,7 +93,7 @@ void ReadStart(const toml::table& start, const toml::table& root, std::string_vi
 }
 
 void ReadUnknowns(const toml::table& unknowns, std::string_view path, RunFile* run) {
-  TableReader u(unknowns, "unknowns.", path, run);
+  TableReader u(unknowns, "unknowns.", path, &run->locations);
   u.Strings("free", &run->free);
   u.Strings("fix", &run->fix);
   u.Boolean("tie_u_r", &run->tie_u_r);
@@ -364,7 +141,7 @@ void ReadContinuationKeys(TableReader& c, std::string_view path, RunFile* run) {
   c.Numbers("user_values", &user_values);
   for (double v : user_values) run->user_values.emplace_back(run->parameter, v);
   if (const toml::table* others = c.Table("user_values_of", false)) {
-    TableReader o(*others, "continuation.user_values_of.", path, run);
+    TableReader o(*others, "continuation.user_values_of.", path, &run->locations);
     for (const auto& [name, value] : *others) {
       std::vector<double> values;
       o.Numbers(name.str(), &values);
@@ -422,7 +199,7 @@ void CheckSolverChoices(TableReader& c, bool trace, const RunFile& run) {
 }
 
 void ReadContinuation(const toml::table& continuation, bool trace, std::string_view path, RunFile* run) {
-  TableReader c(continuation, "continuation.", path, run);
+  TableReader c(continuation, "continuation.", path, &run->locations);
   ReadParameterAndRange(c, trace, run);
   ReadContinuationKeys(c, path, run);
   CheckBounds(c, trace, *run);
@@ -442,7 +219,7 @@ void ReadTraceCount(TableReader& t, const char* key, int low, int* value) {
 }
 
 TraceOptions ReadTrace(const toml::table& trace, std::string_view path, RunFile* run) {
-  TableReader t(trace, "trace.", path, run);
+  TableReader t(trace, "trace.", path, &run->locations);
   TraceOptions options;
   ReadTraceCount(t, "max_branches", 1, &options.max_branches);
   ReadTraceCount(t, "follow_bifurcations", 0, &options.follow_bifurcations);
@@ -466,7 +243,13 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   const toml::table root = ParseToml(content, path);
   RunFile run;
   run.path = std::string(path);
-  TableReader top(root, "", path, &run);
+  TableReader top(root, "", path, &run.locations);
+  // A user's own oscillator (model_table.hpp): read by the commands that take one.
+  if (const toml::node* model = top.Get("model")) {
+    top.Fail(*model, "model",
+             "is not run by `stickslip run` or `continue` in this version, which continue the paper's model; "
+             "`stickslip describe` and `stickslip find --model` take a [model]");
+  }
   top.String("output", &run.output, true);
   if (!IsRunName(run.output)) {
     top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));

@@ -19,7 +19,7 @@
 namespace stickslip {
 namespace {
 
-constexpr int kMaxCoordinates = 50;
+constexpr int kMaxCoordinates = kMaxLinearOscillatorCoordinates;
 constexpr double kMaxForce = 1e15;
 constexpr double kMaxSpeed = 1e6;
 
@@ -57,7 +57,9 @@ void CheckModalAccuracy(const FirstOrderBasis& basis, bool solved, const char* f
     const Eigen::MatrixXd exact = (basis.system * t).exp();
     const Eigen::VectorXcd growth = (basis.eigenvalues * t).array().exp();
     const Eigen::MatrixXd modal = (basis.shapes * growth.asDiagonal() * basis.projector).real();
-    worst = std::max(worst, (modal - exact).norm() / exact.norm());
+    // NaN (a scale so extreme that an eigenvalue or the exponential is not finite) is the worst.
+    const double error = (modal - exact).norm() / exact.norm();
+    if (!(error <= worst)) worst = error;
   }
   if (!(worst <= 1e-9)) {
     throw Invalid(field, fmt::format("gives {} modes that reproduce the motion only to {:.2g}: valid matrices with "
@@ -106,6 +108,15 @@ FirstOrderBasis BasisOf(const LinearOscillatorData& data, const Eigen::MatrixXd&
   return basis;
 }
 
+// By the coordinates' names, whatever their order: q_0 for each position; for each velocity the
+// name with its leading x made v (x1: v1_0), or v_ before any other (left: v_left_0).
+std::vector<std::string> StartStateNames(const std::vector<std::string>& coordinates) {
+  std::vector<std::string> names;
+  for (const std::string& q : coordinates) names.push_back(q + "_0");
+  for (const std::string& q : coordinates) names.push_back(q.size() > 1 && q[0] == 'x' ? "v" + q.substr(1) + "_0" : "v_" + q + "_0");
+  return names;
+}
+
 }  // namespace
 
 void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n, const std::string& field) {
@@ -126,6 +137,11 @@ void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n,
   if (std::set<std::string>(names.begin(), names.end()).size() != names.size()) {
     throw Invalid(field, "repeats a name: valid distinct names");
   }
+  const std::vector<std::string> start = StartStateNames(names);
+  if (std::set<std::string>(start.begin(), start.end()).size() != start.size()) {
+    throw Invalid(field, "give a position and a velocity the same start-state name (x1 and v1 both make v1_0): valid "
+                         "names whose start-state names q_0, v<k>_0 for x<k> and v_q_0 differ");
+  }
 }
 
 LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {
@@ -144,9 +160,13 @@ LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {
   if (data.forcing.size() != n) {
     throw Invalid("forcing", fmt::format("has {} entries: valid one per coordinate, {}", data.forcing.size(), n));
   }
-  if (!data.forcing.allFinite()) throw Invalid("forcing", "has an entry that is not finite: valid finite entries");
-  if (!std::isfinite(data.friction_slope)) {
-    throw InvalidInput("friction_slope", data.friction_slope, "a finite number (force per unit slip speed)");
+  if (!(data.forcing.cwiseAbs().maxCoeff() <= kMaxForce)) {
+    throw Invalid("forcing", fmt::format("has an entry of magnitude {:g}: valid finite entries of magnitude <= {:g}",
+                                         data.forcing.cwiseAbs().maxCoeff(), kMaxForce));
+  }
+  if (!(std::abs(data.friction_slope) <= kMaxForce)) {
+    throw InvalidInput("friction_slope", data.friction_slope,
+                       fmt::format("-{0:g} <= friction_slope <= {0:g} (force per unit slip speed)", kMaxForce));
   }
   CheckCoordinateNames(data.coordinates, n, "coordinates");
   // In a slip F = -F_k sign(s) - alpha s: alpha damps the contact's coordinate; a stick holds it.
@@ -188,8 +208,7 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
   for (Eigen::Index j = static_cast<Eigen::Index>(d.coordinates.size()); j < n; ++j) d.coordinates.push_back(fmt::format("x{}", j + 1));
   for (const std::string& q : d.coordinates) d.state_components.push_back(q);
   for (const std::string& q : d.coordinates) d.state_components.push_back(q + "'");
-  for (Eigen::Index j = 0; j < n; ++j) d.initial_state.push_back(fmt::format("x{}_0", j + 1));
-  for (Eigen::Index j = 0; j < n; ++j) d.initial_state.push_back(fmt::format("v{}_0", j + 1));
+  d.initial_state = StartStateNames(d.coordinates);
   return d;
 }
 

@@ -20,6 +20,9 @@
 
 namespace stickslip {
 
+// The most coordinates a linear oscillator may have (ModesOf).
+inline constexpr int kMaxLinearOscillatorCoordinates = 50;
+
 struct LinearOscillatorData {
   Eigen::MatrixXd mass;       // M, symmetric positive definite
   Eigen::MatrixXd damping;    // C, any; empty: none
@@ -61,11 +64,12 @@ struct LinearOscillatorModes {
 };
 
 // Throws InvalidInput naming `field` unless there are no names or n distinct ones, each a letter
-// followed by letters, digits or '_' (so that x1, x1' and the file columns stay distinct).
+// followed by letters, digits or '_' (so that x1, x1' and the file columns stay distinct), whose
+// start-state names (DescribeLinearOscillator) differ too.
 void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n, const std::string& field);
 
 // Throws InvalidInput naming the field (mass, damping, stiffness, forcing, friction_slope,
-// coordinates) when alpha is not finite, M or K
+// coordinates) when alpha or an entry of the forcing is not finite or beyond 1e15 in magnitude, M or K
 // is not square, symmetric and positive definite with finite entries, C is not n x n and finite,
 // the sizes disagree, n is not 1 ... 50, a mode's system is not finite (scales too far apart) or
 // its eigenvectors reproduce the matrix exponential worse than 1e-9 (nearly dependent ones, as
@@ -73,7 +77,8 @@ void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n,
 LinearOscillatorModes ModesOf(const LinearOscillatorData& data);
 
 // The parameters (omega in rad/s, F_k and F_s in N, v_b in m/s: SI by default) with their ranges, the
-// coordinates and the initial-state names x1_0 ... xn_0, v1_0 ... vn_0.
+// coordinates and the initial-state names by the coordinates' names: q_0 for each position; for each
+// velocity the name with its leading x made v (x1: v1_0), or v_ before any other (left: v_left_0).
 ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, const LinearOscillatorModes& modes);
 
 }  // namespace stickslip

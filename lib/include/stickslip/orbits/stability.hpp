@@ -29,7 +29,8 @@ struct BasicStability {
                                          std::array<std::complex<double>, std::max(kStateSize, 0)>>;
   Matrix monodromy = FixedSizeDefault<Matrix, true>();  // from t = 0 to the period
   Multipliers multipliers{};                         // by decreasing modulus
-  bool stable = false;                                      // every |multiplier| < 1
+  // Every |multiplier| < 1; an autonomous orbit's but the one nearest 1 (StabilityOf).
+  bool stable = false;
   // Test functions of the smooth bifurcations, continuous along a branch:
   double fold_test = 0.0;   // det(M - I): a multiplier through +1 (LP)
   double flip_test = 0.0;   // det(M + I): a multiplier through -1 (PD)
@@ -106,11 +107,27 @@ BasicStability<kStateSize> StabilityFromMonodromy(const Eigen::Matrix<double, kS
                                                   const Eigen::Matrix<double, kStateSize, kStateSize>& listed,
                                                   bool antisymmetric, bool one_sided);
 
+// Whether every multiplier but the one nearest 1 lies inside the unit circle: an autonomous orbit's
+// stability, whose multiplier 1 (a shift along the orbit in time) decides nothing, and comes out of
+// the eigensolver as 1 + rounding on either side.
+template <typename Multipliers>
+bool StableButTheTrivialMultiplier(const Multipliers& multipliers) {
+  const auto trivial = std::min_element(multipliers.begin(), multipliers.end(),
+                                        [](const auto& a, const auto& b) { return std::abs(a - 1.0) < std::abs(b - 1.0); });
+  for (auto it = multipliers.begin(); it != multipliers.end(); ++it) {
+    if (it != trivial && !(std::abs(*it) < 1.0)) return false;
+  }
+  return true;
+}
+
 template <typename Model>
 BasicStability<Model::kStateSize> StabilityOf(const Model& model, const BasicOrbit<Model>& orbit) {
   const MonodromyT<double, Model> m = Monodromy<double>(model, orbit.signature, orbit.start, orbit.phi,
                                                         std::span<const double>(orbit.durations), orbit.parameters);
-  return StabilityFromMonodromy<Model::kStateSize>(m.period, m.listed, orbit.signature.antisymmetric(), m.one_sided);
+  BasicStability<Model::kStateSize> s =
+      StabilityFromMonodromy<Model::kStateSize>(m.period, m.listed, orbit.signature.antisymmetric(), m.one_sided);
+  if (model.Autonomous()) s.stable = StableButTheTrivialMultiplier(s.multipliers);
+  return s;
 }
 Stability StabilityOf(const Orbit& orbit);
 

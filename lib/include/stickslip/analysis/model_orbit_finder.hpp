@@ -1,0 +1,128 @@
+// From a simulated motion to its exact periodic orbit, for any model with equations of motion to
+// integrate (model/integrable_oscillator_model.hpp): the orbit the motion settles on
+// (settled_orbit.hpp) solved at fixed parameters, its margins, Floquet multipliers and measures,
+// and its verification by both simulators (the exact one and Odeint's integration of the equations
+// of motion, which shares no flow or event code with the closed forms). The paper's model has its
+// own finder (orbit_finder.hpp: section-based period detection, subharmonics); this one takes the
+// forcing's period (or, without forcing, the stick-slip cycle's) and says so when the motion has
+// not settled onto it.
+//
+//   ModelFindOptions options;
+//   options.duration = 300 * 2 * pi / p.omega;
+//   options.record = 10 * 2 * pi / p.omega;
+//   const ModelFindResult<Model> r = FindModelOrbit(model, p, options);
+//   if (r.status == FindOrbitStatus::kFound) use(r.solution->orbit, *r.stability, *r.measures);
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "stickslip/analysis/orbit_finder.hpp"  // FindOrbitStatus
+#include "stickslip/analysis/settled_orbit.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/model/odeint_simulation.hpp"
+#include "stickslip/orbits/margins.hpp"
+#include "stickslip/orbits/model_orbit_solver.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
+#include "stickslip/orbits/stability.hpp"
+#include "stickslip/orbits/verification.hpp"
+
+namespace stickslip {
+
+struct ModelFindOptions {
+  double duration = 0.0;  // the model's time simulated from x0, > 0
+  double record = 0.0;    // the last part of it the period is read from (settled_orbit.hpp); 0: all
+  double phi0 = 0.0;      // the forcing's phase at t = 0
+  OrbitSolverOptions solver;
+  ProgressCallback progress = {};  // the simulation's (model/simulation.hpp)
+};
+
+template <OscillatorModel Model>
+struct ModelFindResult {
+  FindOrbitStatus status = FindOrbitStatus::kNoOrbitType;
+  std::string message;
+  std::optional<BasicOrbit<Model>> guess;  // read off the simulated motion
+  std::optional<BasicOrbitSolution<Model>> solution;
+  // Where Newton converged:
+  std::vector<Margin> margins;
+  std::optional<BasicStability<Model::kStateSize>> stability;
+  std::optional<BasicOrbitMeasures> measures;
+  std::optional<Verification> verification;
+};
+
+// The orbit's verification by the model's exact simulator and by Odeint's.
+template <IntegrableOscillatorModel Model>
+Verification VerifyByBothSimulators(const Model& model, const BasicOrbit<Model>& orbit) {
+  using ModelState = typename Model::State;
+  auto exact = [](const Model& m, const typename Model::Parameters& p, const ModelState& x0, double phi,
+                  const BasicSimulationOptions<ModelState>& options) { return SimulateExact(m, p, x0, phi, options); };
+  auto integrated = [](const Model& m, const typename Model::Parameters& p, const ModelState& x0, double phi,
+                       const BasicSimulationOptions<ModelState>& options) { return SimulateOdeint(m, p, x0, phi, options); };
+  return VerifyOrbit(model, orbit, exact, integrated);
+}
+
+// Simulates from x0 (options.duration > 0), solves the orbit read off the motion's last period with
+// every start variable, the phase and the durations unknown (the parameters held), and checks it.
+template <IntegrableOscillatorModel Model>
+ModelFindResult<Model> FindModelOrbit(const Model& model, const typename Model::Parameters& p,
+                                      const typename Model::State& x0, const ModelFindOptions& options) {
+  ModelFindResult<Model> r;
+  SettledOrbitGuess<Model> settled = SettledOrbitGuessOf(model, p, x0, options.duration, options.record > 0.0 ? options.record : options.duration,
+                          options.phi0, options.progress);
+  if (!settled.orbit) {
+    r.status = settled.message.starts_with("the simulation") ? FindOrbitStatus::kSimulationIncomplete
+                                                             : FindOrbitStatus::kNoOrbitType;
+    r.message = std::move(settled.message);
+    return r;
+  }
+  r.guess = settled.orbit;
+  // At the given parameters: an abnormal stop (which the periodicity equations pay for with a
+  // released friction level, UnknownsAtFixedParameters) makes the system not square.
+  std::vector<int> free;
+  try {
+    free = FreeIndices(VariableSetOf(model, r.guess->signature), UnknownChoice{});
+  } catch (const InvalidInput&) {
+    r.status = FindOrbitStatus::kNoOrbitType;
+    r.message = fmt::format("the motion's period '{}' has an abnormal stop (a stop without reversal or stick), whose "
+                            "orbit is solved only with a friction level released: not at the given parameters",
+                            r.guess->signature.ToString());
+    return r;
+  }
+  r.solution = SolveOrbit(model, *r.guess, free, false, options.solver);
+  if (!r.solution->summary.Converged()) {
+    r.status = FindOrbitStatus::kSolveFailed;
+    r.message = fmt::format("Newton did not converge from the simulated '{}': {}", r.guess->signature.ToString(),
+                            r.solution->summary.BriefReport());
+    return r;
+  }
+  const BasicOrbit<Model>& orbit = r.solution->orbit;
+  r.margins = AdmissibilityMargins(model, orbit);
+  r.stability = StabilityOf(model, orbit);
+  r.measures = Measure(model, orbit);
+  r.verification = VerifyByBothSimulators(model, orbit);
+  const Margin smallest = SmallestMargin(r.margins);
+  if (!(smallest.value > 0.0) || !r.verification->Passed()) {
+    r.status = FindOrbitStatus::kNotAMotion;
+    r.message = smallest.value > 0.0 ? "the orbit fails its verification by simulation"
+                                     : fmt::format("the orbit is no motion of the system: margin {} = {:.6g}",
+                                                   smallest.Name(), smallest.value);
+    return r;
+  }
+  r.status = FindOrbitStatus::kFound;
+  return r;
+}
+
+// A model whose size comes with its data (a user's [model]): compiled once, in model_orbit_finder.cpp.
+extern template Verification VerifyByBothSimulators(const DynamicLinearOscillator& model,
+                                                    const BasicOrbit<DynamicLinearOscillator>& orbit);
+extern template ModelFindResult<DynamicLinearOscillator> FindModelOrbit(const DynamicLinearOscillator& model,
+                                                                        const DynamicLinearOscillator::Parameters& p,
+                                                                        const DynamicLinearOscillator::State& x0,
+                                                                        const ModelFindOptions& options);
+
+}  // namespace stickslip

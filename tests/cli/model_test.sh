@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# A user's own oscillator on the command line: describe and find --model read every example of
+# continuation-scripts/models/ (exit 0); find --model's orbit of the mass on a belt is the closed-form
+# stick-slip cycle (../shared/FRICTION-LITERATURE.md) and its JSON the text's; a steady slide exits 5;
+# and a table of bad input: exit 2, one line naming the key or option, nothing written.
+source "$(dirname "$0")/expect.sh"
+models="$root/continuation-scripts/models"
+
+for f in "$models"/*.toml; do
+  "$bin" describe "$f" > "$work/describe.txt" 2>&1 && grep -q "^parameters" "$work/describe.txt" && pass ||
+    fail "describe $(basename "$f"): $(cat "$work/describe.txt")"
+  "$bin" find --model "$f" > "$work/find.txt" 2>&1 && grep -q "^verification passed" "$work/find.txt" && pass ||
+    fail "find --model $(basename "$f"): $(cat "$work/find.txt")"
+done
+
+# The belt's cycle at v_b = 0.2 m/s and, by --set, 0.9 m/s against T_stick = 2 (F_s - F_k)/(k v_b),
+# T_slip = (pi + 2 atan(v_b/(omega_n d)))/omega_n, the re-stick at x = (2 F_k - F_s)/k.
+for v in 0.2 0.9; do
+  "$bin" find --model "$models/belt.toml" --set v_b=$v --json > "$work/belt.json" 2> "$work/belt.err" ||
+    fail "find --model belt.toml --set v_b=$v exits $?: $(cat "$work/belt.err")"
+  /usr/bin/python3 - "$work/belt.json" $v <<'PY' && pass || fail "belt at v_b = $v is not the closed-form cycle"
+import json, math, sys
+o = json.load(open(sys.argv[1]))["orbit"]
+v, k, m, fs, fk = float(sys.argv[2]), 1.0, 1.0, 1.5, 1.0
+d, w = (fs - fk) / k, math.sqrt(k / m)
+expected = {"stick": 2 * d / v, "slip": (math.pi + 2 * math.atan(v / (w * d))) / w}
+assert o["signature"] == "stick slip-", o["signature"]
+assert abs(o["durations"][0] - expected["stick"]) <= 1e-10 * expected["stick"], o["durations"]
+assert abs(o["durations"][1] - expected["slip"]) <= 1e-10 * expected["slip"], o["durations"]
+assert abs(o["start"]["m1_0"] - (2 * fk - fs) / k) <= 1e-10, o["start"]
+assert list(o["start"]) == ["m1_0", "v_m1_0"], o["start"]
+assert o["verification"]["passed"] and o["admissible"]
+PY
+done
+# The JSON's orbit is the text's.
+"$bin" find --model "$models/five-mass-chain.toml" > "$work/five.txt"
+"$bin" find --model "$models/five-mass-chain.toml" --json > "$work/five.json"
+/usr/bin/python3 - "$work/five.txt" "$work/five.json" <<'PY' && pass || fail "find --model: the JSON is not the text's orbit"
+import json, sys
+text, o = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))["orbit"]
+assert f"signature  {o['signature']}\n" in text
+for name, value in o["start"].items():
+    assert f"{name}={value:.10g}" in text, name
+PY
+
+# A damped mass on a belt with equal levels slides steadily: no orbit type (exit 5), nothing printed on stdout.
+cat > "$work/slide.toml" <<'TOML'
+[model]
+kind = "chain"
+masses = [1.0]
+springs = [{ between = ["m1", "ground"], k = 1.0 }]
+dampers = [{ between = ["m1", "ground"], c = 0.5 }]
+contact = "m1"
+parameters = { F_k = 1.0, F_s = 1.0, v_b = 0.5 }
+TOML
+expect 5 "steady slip" "$bin" find --model "$work/slide.toml"
+
+# Bad input: the key or option named, exit 2.
+bad() {  # bad <name> <the line of belt.toml to replace> <its replacement>
+  sed "s|$2|$3|" "$models/belt.toml" > "$work/$1.toml"
+}
+bad contact 'contact = "m1"' 'contact = "m2"'
+expect 2 "key 'model.contact' = 'm2' is invalid" "$bin" find --model "$work/contact.toml"
+expect 2 "key 'model.contact' = 'm2' is invalid" "$bin" describe "$work/contact.toml"
+bad levels 'F_s = 1.5' 'F_s = 0.5'
+expect 2 "model.parameters.F_s = 0.5 is invalid" "$bin" find --model "$work/levels.toml"
+bad spring 'k = 1.0' 'k = -1.0'
+expect 2 "key 'model.springs[0].k' = -1 is invalid: valid >= 0" "$bin" describe "$work/spring.toml"
+bad unknown 'contact = "m1"' 'contact = "m1"\nmass = 2'
+expect 2 "key 'model.mass' is unknown: did you mean 'model.masses'?" "$bin" describe "$work/unknown.toml"
+{ printf '[model]\nkind = "chain"\nmasses = ['; for k in $(seq 50); do printf '1.0, '; done
+  printf '1.0]\ncontact = "m1"\n'; } > "$work/51.toml"
+expect 2 "key 'model.masses' holds 51 masses: valid 1 to 50" "$bin" describe "$work/51.toml"
+bad ground 'contact = "m1"' 'contact = "m1"\nnames = ["ground"]'
+expect 2 "key 'model.names' holds 'ground'" "$bin" describe "$work/ground.toml"
+bad loose 'between = \["m1", "ground"\], k = 1.0' 'between = ["m1", "ground"], k = 0.0'
+expect 2 "model.springs" "$bin" describe "$work/loose.toml"
+expect 2 "Omega = 1 is invalid: Omega is no parameter of the model" "$bin" find --model "$models/belt.toml" --set Omega=1
+expect 2 "v_b = 1e+300 is invalid" "$bin" find --model "$models/belt.toml" --set v_b=1e300
+expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1
+expect 2 "results is not taken with --model" "$bin" find --model "$models/belt.toml" --results "$work/out"
+expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1e9
+expect 2 "preset is not taken with --model" "$bin" find --model "$models/belt.toml" --preset paper-5.1
+expect 2 "trace is not taken with --model" "$bin" find --model "$models/belt.toml" --trace 0.1,0.2 --output t
+expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
+expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
+expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \
+  "$bin" run --results "$work/out" "$models/belt.toml"
+finish

@@ -1,0 +1,57 @@
+"""An oscillator of your own from Python, as from the command line: stickslip.describe is `stickslip
+describe --json`, stickslip.find(model=...) is `stickslip find --model --json`; the mass on a belt
+settles on the closed-form stick-slip cycle (../shared/FRICTION-LITERATURE.md); bad input raises
+ValueError with the command line's message."""
+import math
+
+import pytest
+
+import stickslip
+from conftest import SOURCE, cli, cli_error, cli_json
+
+MODELS = SOURCE / "continuation-scripts" / "models"
+
+
+def test_describe_is_the_command_lines_json():
+    described = stickslip.describe(MODELS / "five-mass-chain.toml")
+    assert described == cli_json("describe", MODELS / "five-mass-chain.toml", "--json")
+    assert described["coordinates"] == ["m1", "m2", "m3", "m4", "m5"] and described["contact"] == "m5"
+    units = {p["name"]: p["unit"] for p in described["parameters"]}
+    assert units == {"omega": "rad/s", "F_k": "N", "F_s": "N", "v_b": "m/s"}
+
+
+@pytest.mark.parametrize("v_b", [0.2, 0.9])
+def test_finds_the_belts_closed_form_stick_slip_cycle(v_b):
+    found = stickslip.find(model=MODELS / "belt.toml", set={"v_b": v_b})
+    assert found.found, found.message
+    o = found.orbit
+    d, w = (1.5 - 1.0) / 1.0, 1.0
+    stick, slip = 2 * d / v_b, (math.pi + 2 * math.atan(v_b / (w * d))) / w
+    assert o["signature"] == "stick slip-"
+    assert o["durations"][0] == pytest.approx(stick, rel=1e-10)
+    assert o["durations"][1] == pytest.approx(slip, rel=1e-10)
+    assert o["measures"]["amplitude:m1"] == pytest.approx(1.0 + math.hypot(d, v_b / w), abs=1e-10)
+
+
+def test_find_is_the_command_lines_json():
+    found = stickslip.find(model=MODELS / "three-mass-matrices.toml", transients=300)
+    done = cli("find", "--model", MODELS / "three-mass-matrices.toml", "--transients", 300, "--json")
+    assert done.returncode == 0, done.stderr
+    import json
+    assert found == stickslip.ModelFound(**json.loads(done.stdout))
+
+
+def test_bad_input_raises_the_command_lines_message():
+    with pytest.raises(ValueError) as python:
+        stickslip.find(model=MODELS / "belt.toml", set={"Omega": 1.0})
+    assert str(python.value) == cli_error("find", "--model", MODELS / "belt.toml", "--set", "Omega=1")
+    with pytest.raises(ValueError, match="cannot read the run file"):
+        stickslip.describe(MODELS / "none.toml")
+    with pytest.raises(ValueError, match="transients"):
+        stickslip.find(model=MODELS / "belt.toml", transients=0)
+    with pytest.raises(ValueError, match="preset is invalid with model="):
+        stickslip.find(model=MODELS / "belt.toml", preset="paper-5.1")
+    with pytest.raises(ValueError, match="set"):
+        stickslip.find(model=MODELS / "belt.toml", set=[("v_b", 1.0)])
+    with pytest.raises(ValueError, match="v_b"):
+        stickslip.find(model=MODELS / "belt.toml", set={"v_b": True})

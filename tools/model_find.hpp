@@ -1,0 +1,23 @@
+// find --model: the periodic orbit a user's own oscillator (a run file's [model]) settles on, from
+// rest, at the file's parameters and those of --set (analysis/model_orbit_finder.hpp); printed as
+// text or as one JSON object.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stickslip::cli {
+
+struct ModelFindArgs {
+  std::string file;              // the run file with the [model]
+  std::vector<std::string> set;  // NAME=VALUE: parameters over the file's
+  std::string transients;        // periods simulated before the orbit is read
+  bool json = false;
+};
+
+// The exit code as find's: 0 found and verified, 3 Newton failed, 4 no motion or not verified,
+// 5 no orbit type read off the motion (it never stops, or has not settled), 1 the simulation stopped
+// early. Throws InvalidInput for bad input.
+int RunModelFind(const ModelFindArgs& args);
+
+}  // namespace stickslip::cli
