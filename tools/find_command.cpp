@@ -49,6 +49,7 @@ struct FindArgs {
   bool json = false;
   bool force = false;
   std::string model;  // --model FILE: a user's oscillator (model_find.hpp)
+  std::string trace_parameter;  // --trace-parameter, with --model
 };
 
 // The solve command line of a start (StartInputOf): signature, set, guess, free, tie.
@@ -210,12 +211,14 @@ int RunFind(const FindArgs& args) {
 // find --model: the options of the paper's model's start and of what find writes are refused.
 int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
   for (const char* option : {"--preset", "--point", "--results", "--max-multiple", "--tolerance", "--confirmations",
-                             "--trace", "--output", "--write-run", "--as", "--range", "--force"}) {
+                             "--output", "--write-run", "--as", "--range", "--force"}) {
     if (cmd.count(option) == 0) continue;
     throw InvalidInput::WithMessage(
-        option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients and --json", option));
+        option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients, --trace, "
+                                "--trace-parameter and --json",
+                                option));
   }
-  return RunModelFind({args.model, args.start.set, args.transients, args.json});
+  return RunModelFind({args.model, args.start.set, args.transients, args.json, args.trace, args.trace_parameter});
 }
 
 }  // namespace
@@ -287,8 +290,12 @@ Command AddFindCommand(CLI::App& app) {
                   "simulated from rest for --transients periods (forcing periods; without forcing, periods of its "
                   "slowest free oscillation), its last period read from a stop (without forcing: between its last two "
                   "sticks), solved and verified; takes --set NAME=VALUE over the file's parameters, --transients and "
-                  "--json only")
+                  "--trace, --trace-parameter and --json only")
       ->type_name("FILE");
+  cmd->add_option("--trace-parameter", args->trace_parameter,
+                  "with --model and --trace: the parameter traced (omega, F_k, F_s or v_b; default omega, or v_b "
+                  "without forcing); the trace is printed (the branches, and with --json every point), not written")
+      ->type_name("NAME");
   return {cmd, [args, cmd] { return cmd->count("--model") == 0 ? RunFind(*args) : RunModelFindOf(*args, *cmd); }};
 }
 

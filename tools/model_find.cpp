@@ -4,6 +4,7 @@
 #include <complex>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -13,6 +14,8 @@
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_table.hpp"
+#include "stickslip/io/model_trace.hpp"
 
 namespace stickslip::cli {
 
@@ -53,6 +56,34 @@ std::string Text(const Model& model, const Found& r) {
   return out;
 }
 
+// "LO,HI": two finite numbers, LO < HI (the trace's range; TraceModelFile checks it holds the start).
+std::pair<double, double> ParseRange(const char* field, const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    throw InvalidInput(field, "'" + text + "'", "LO,HI: two numbers");
+  }
+  return {ParseNumber(field, text.substr(0, comma), "LO,HI: two numbers"),
+          ParseNumber(field, text.substr(comma + 1), "LO,HI: two numbers")};
+}
+
+// The chain of branches both ways: each branch's type, its way, how it began, its points and how it
+// ended; then each direction's end.
+std::string TraceText(const BasicTraceResult<DynamicLinearOscillator>& trace) {
+  std::string out = fmt::format("trace in {}\n", trace.parameter);
+  for (const BasicTraceDirection<DynamicLinearOscillator>* chain : {&trace.down, &trace.up}) {
+    for (const BasicTraceLink<DynamicLinearOscillator>& link : chain->links) {
+      const Branch& b = link.branch.branch;
+      out += fmt::format("  '{}' {} from {}{}: {} points, {} = {:.10g} to {:.10g}, {}\n", link.signature,
+                         link.direction > 0 ? "up" : "down", ToString(link.start),
+                         link.margin.empty() ? "" : " at " + link.margin, b.points.size(), trace.parameter,
+                         b.points.front().lambda, b.points.back().lambda, ToString(link.end));
+    }
+    out += fmt::format("  {}: {}: {}\n", chain->direction > 0 ? "up" : "down", ToString(chain->end), chain->message);
+  }
+  out += "(printed, not written: the result files hold the paper's model only in this version; --json gives every point)\n";
+  return out;
+}
+
 }  // namespace
 
 int RunModelFind(const ModelFindArgs& args) {
@@ -64,17 +95,39 @@ int RunModelFind(const ModelFindArgs& args) {
     set.emplace_back(name, ParseNumber(name, text.substr(equals + 1), "a finite number"));
   }
   const int transients = ParseCount("transients", args.transients, kMinModelTransients, kMaxModelTransients);
-  ProgressLine line("find: transient");
-  const ModelFindRun run = FindModelFileOrbit(args.file, set, transients, line.Callback());
-  line.Clear();
-  if (args.json) {
-    fmt::print("{}\n", ModelFindJson(run.model, run.found));
-  } else if (run.found.solution && run.found.solution->summary.Converged()) {
-    fmt::print("{}", Text(run.model, run.found));
+  if (!args.trace_parameter.empty() && args.trace.empty()) {
+    throw InvalidInput("trace-parameter", "'" + args.trace_parameter + "'", "with --trace");
   }
-  const int code = FindExitCode(run.found.status);
-  if (code != kExitOk) fmt::print(stderr, "error: {}: {}\n", args.file, run.found.message);
-  return code;
+  ProgressLine line("find: transient");
+  const ModelTraceRun run = [&] {
+    if (args.trace.empty()) return ModelTraceRun{FindModelFileOrbit(args.file, set, transients, line.Callback()), {}};
+    const auto [low, high] = ParseRange("trace", args.trace);
+    const std::string parameter =
+        !args.trace_parameter.empty() ? args.trace_parameter
+                                      : (ModelOf(ReadModelTable(args.file)).Autonomous() ? "v_b" : "omega");
+    TraceOptions options;
+    options.progress = line.Callback();
+    try {
+      return TraceModelFile(args.file, set, transients, parameter, low, high, options);
+    } catch (const InvalidInput& e) {  // the library's names, as the options name them
+      if (e.field() == "range") throw e.Renamed("trace");
+      if (e.field() == "parameter") throw e.Renamed("trace-parameter");
+      throw;
+    }
+  }();
+  line.Clear();
+  const ModelFindResult<DynamicLinearOscillator>& found = run.find.found;
+  if (args.json) {
+    fmt::print("{}\n", run.trace ? ModelTraceJson(run) : ModelFindJson(run.find.model, found));
+  } else if (found.solution && found.solution->summary.Converged()) {
+    fmt::print("{}", Text(run.find.model, found));
+    if (run.trace) fmt::print("{}", TraceText(*run.trace));
+  }
+  if (const int code = FindExitCode(found.status); code != kExitOk) {
+    fmt::print(stderr, "error: {}: {}\n", args.file, found.message);
+    return code;
+  }
+  return run.trace && run.trace->Failed() ? kExitNoConvergence : kExitOk;
 }
 
 }  // namespace stickslip::cli

@@ -1,6 +1,7 @@
 // find --model: the periodic orbit a user's own oscillator (a run file's [model]) settles on, from
-// rest, at the file's parameters and those of --set (analysis/model_orbit_finder.hpp); printed as
-// text or as one JSON object.
+// rest, at the file's parameters and those of --set (analysis/model_orbit_finder.hpp), and with
+// --trace the chain of its branches in one of its parameters (io/model_trace.hpp); printed as text
+// or as one JSON object.
 #pragma once
 
 #include <string>
@@ -13,11 +14,13 @@ struct ModelFindArgs {
   std::vector<std::string> set;  // NAME=VALUE: parameters over the file's
   std::string transients;        // periods simulated before the orbit is read
   bool json = false;
+  std::string trace;             // "LO,HI": trace from the orbit found; empty: none
+  std::string trace_parameter;   // the traced parameter; empty: omega, or v_b without forcing
 };
 
-// The exit code as find's: 0 found and verified, 3 Newton failed, 4 no motion or not verified,
-// 5 no orbit type read off the motion (it never stops, or has not settled), 1 the simulation stopped
-// early. Throws InvalidInput for bad input.
+// The exit code as find's: 0 found and verified (and the trace ran to its ends), 3 Newton failed (or
+// a branch of the trace), 4 no motion or not verified, 5 no orbit type read off the motion (it never
+// stops, or has not settled), 1 the simulation stopped early. Throws InvalidInput for bad input.
 int RunModelFind(const ModelFindArgs& args);
 
 }  // namespace stickslip::cli

@@ -70,6 +70,11 @@ mkdir -p results/models
 for f in continuation-scripts/models/*.toml; do
   { "$bin" describe "$f"; echo; "$bin" find --model "$f"; } > "results/models/$(basename "$f" .toml).txt"
 done
+# Two of them traced from there through their changes of orbit type: the five-mass chain over a decade
+# of omega, the damped belt in its speed up to the fold where the slip grazes the belt.
+"$bin" find --model continuation-scripts/models/five-mass-chain.toml --trace 0.2,2.0 \
+  > results/models/five-mass-chain-omega-trace.txt
+"$bin" find --model continuation-scripts/models/belt-damped.toml --trace 0.1,1.0 > results/models/belt-damped-v_b-trace.txt
 /usr/bin/python3 tools/atlas_summary.py results
 /usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"

@@ -17,6 +17,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
+#include "stickslip/io/model_trace.hpp"
 #include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
@@ -161,6 +162,26 @@ void BindTrace(py::module_& m) {
         return d;
       });
   m.def("_trace", &Trace, py::arg("run"), py::arg("options"));
+  // A run file's [model] traced from the orbit its motion settles on (io/model_trace.hpp), as the
+  // JSON text of `stickslip find --model --trace --json`, for the package to load.
+  m.def(
+      "_trace_model",
+      [](const std::string& path, const NamedValues& set, double transients, const std::string& parameter, double low,
+         double high, const py::dict& options) {
+        if (!(transients >= kMinModelTransients && transients <= kMaxModelTransients && transients == std::floor(transients))) {
+          throw InvalidInput("transients", transients,
+                             fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
+        }
+        TraceOptions trace = TraceOptionsOf(options);
+        py::gil_scoped_release release;
+        trace.progress = [](const Progress&) {
+          const py::gil_scoped_acquire acquire;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
+        return ModelTraceJson(TraceModelFile(path, set, static_cast<int>(transients), parameter, low, high, trace));
+      },
+      py::arg("path"), py::arg("set"), py::arg("transients"), py::arg("parameter"), py::arg("low"), py::arg("high"),
+      py::arg("options"));
   m.def("_trace_defaults", [] {
     const TraceOptions o;
     py::dict d;

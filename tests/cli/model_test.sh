@@ -43,6 +43,25 @@ for name, value in o["start"].items():
     assert f"{name}={value:.10g}" in text, name
 PY
 
+# The damped belt traced in v_b (the default without forcing) from its cycle at 0.4: up, the slip arc
+# grazes the belt's speed and the family folds with its stick finite (near v_b = 0.549, stick 0.91:
+# the general-oscillator issue's numbers); down, it reaches the range's end. Printed, and as JSON.
+"$bin" find --model "$models/belt-damped.toml" --trace 0.1,1.0 > "$work/trace.txt" 2> "$work/trace.err" ||
+  fail "find --model belt-damped.toml --trace exits $?: $(cat "$work/trace.err")"
+grep -q "^  up: no-adjacent-type: stop-slope:2" "$work/trace.txt" && pass || fail "the damped belt's trace: $(cat "$work/trace.txt")"
+"$bin" find --model "$models/belt-damped.toml" --trace 0.1,1.0 --json > "$work/trace.json" 2>&1 || fail "find --trace --json exits $?"
+/usr/bin/python3 - "$work/trace.json" <<'PY' && pass || fail "the damped belt's fold is not near v_b = 0.549 with a stick of 0.91"
+import json, sys
+t = json.load(open(sys.argv[1]))
+assert t["parameter"] == "v_b" and t["start"]["status"] == "found"
+up, down = t["up"]["branches"][-1], t["down"]["branches"][-1]
+fold = up["points"][-1]
+assert up["end"] == "no-adjacent-type" and abs(fold["v_b"] - 0.549) < 5e-4, fold["v_b"]
+assert abs(fold["durations"][0] - 0.91) < 5e-3, fold["durations"]
+assert t["down"]["end"] == "parameter-bound" and down["points"][-1]["v_b"] == 0.1
+assert all(p["stable"] == 1 for p in up["points"]), "the attracting cycle is stable along the branch"
+PY
+
 # A damped mass on a belt with equal levels slides steadily: no orbit type (exit 5), nothing printed on stdout.
 cat > "$work/slide.toml" <<'TOML'
 [model]
@@ -81,7 +100,10 @@ expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1
 expect 2 "results is not taken with --model" "$bin" find --model "$models/belt.toml" --results "$work/out"
 expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1e9
 expect 2 "preset is not taken with --model" "$bin" find --model "$models/belt.toml" --preset paper-5.1
-expect 2 "trace is not taken with --model" "$bin" find --model "$models/belt.toml" --trace 0.1,0.2 --output t
+expect 2 "output is not taken with --model" "$bin" find --model "$models/belt.toml" --trace 0.1,0.2 --output t
+expect 2 "trace-parameter = 'v_b' is invalid: valid range with --trace" "$bin" find --model "$models/belt.toml" --trace-parameter v_b
+expect 2 "trace-parameter = 'omega' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,1 --trace-parameter omega
+expect 2 "trace = '0.3,1' is invalid: valid range LO < HI with LO <= v_b = 0.2 <= HI" "$bin" find --model "$models/belt.toml" --trace 0.3,1
 expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
 expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \

@@ -55,3 +55,15 @@ def test_bad_input_raises_the_command_lines_message():
         stickslip.find(model=MODELS / "belt.toml", set=[("v_b", 1.0)])
     with pytest.raises(ValueError, match="v_b"):
         stickslip.find(model=MODELS / "belt.toml", set={"v_b": True})
+
+
+def test_trace_is_the_command_lines_json():
+    traced = stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", max_branches=4)
+    done = cli("find", "--model", MODELS / "belt-damped.toml", "--trace", "0.1,1.0", "--trace-parameter", "v_b",
+               "--json")
+    assert done.returncode == 0, done.stderr
+    import json
+    assert traced == json.loads(done.stdout)
+    assert traced["up"]["end"] == "no-adjacent-type"
+    with pytest.raises(TypeError, match="ds"):
+        stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", ds=0.1)

@@ -237,13 +237,26 @@ def describe(path):
 
 
 def _find_model(model, set, transients):
+    found = _json.loads(_core._find_model(_checked(model, "model", "path"), _model_set(set),
+                                          _checked(transients, "transients", "number")))
+    return ModelFound(**found)
+
+
+def _model_set(set):
     given = {} if set is None else set
     if not isinstance(given, dict):
         raise InvalidArgument(f"set = {set!r} is invalid: valid range a dict of name: number")
-    values = [(_checked(name, "set", "text"), _checked(value, name, "number")) for name, value in given.items()]
-    found = _json.loads(_core._find_model(_checked(model, "model", "path"), values,
-                                          _checked(transients, "transients", "number")))
-    return ModelFound(**found)
+    return [(_checked(name, "set", "text"), _checked(value, name, "number")) for name, value in given.items()]
+
+
+def _trace_model(parameter, range, options, *, model, set=None, transients=1000, **others):
+    if others:
+        raise TypeError(f"trace() got an unexpected keyword argument '{next(iter(others))}' with model= (it takes "
+                        "set= and transients=)")
+    low, high = _pair(range, "range")
+    return _json.loads(_core._trace_model(_checked(model, "model", "path"), _model_set(set),
+                                          _checked(transients, "transients", "number"),
+                                          _checked(parameter, "parameter", "text"), low, high, options))
 
 
 def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple=8, tolerance=1e-6,
@@ -361,16 +374,24 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
     Returns a Trace whatever its directions' ends (see trace.ends); raises ConvergenceError when no
     branch started, ValueError for bad input (the command line's message) and for a start that is
     not a motion without allow_inadmissible.
+
+    model=path (with set= a dict over the file's parameters and transients=, as find(model=...)):
+    an oscillator of your own traced in one of its parameters (omega, F_k, F_s, v_b) from the orbit
+    its motion from rest settles on, as `stickslip find --model path --trace LO,HI --trace-parameter
+    NAME --json`; returns that JSON as a dict (start: the orbit found; down, up: their end, message
+    and branches, each with every point's columns by name). No other keyword is taken with it.
     """
-    for key in _NOT_TRACE_KEYWORDS:
-        if key in keywords:
-            raise TypeError(f"trace() got an unexpected keyword argument '{key}' (a trace goes both ways)")
     options = {"max_branches": _checked(max_branches, "max_branches", "count"),
                "max_amplitude": _checked(max_amplitude, "max_amplitude", "number"),
                "loop_tolerance": _checked(loop_tolerance, "loop_tolerance", "number"),
                "follow_past_unswitched": _checked(follow_past_unswitched, "follow_past_unswitched", "flag"),
                "follow_bifurcations": _checked(follow_bifurcations, "follow_bifurcations", "count"),
                "allow_inadmissible": _checked(allow_inadmissible, "allow_inadmissible", "flag")}
+    if "model" in keywords:
+        return _trace_model(parameter, range, options, **keywords)
+    for key in _NOT_TRACE_KEYWORDS:
+        if key in keywords:
+            raise TypeError(f"trace() got an unexpected keyword argument '{key}' (a trace goes both ways)")
     return Trace(_core._trace(_one_off_run(parameter, range, **keywords), options))
 
 

@@ -1,0 +1,35 @@
+// trace for a run file's [model] (model_table.hpp), as every front end runs it: the orbit the motion
+// from rest settles on (model_find.hpp), then the chain of its branches in one of the model's
+// parameters over [low, high] through every change of orbit type, both ways (branches/trace.hpp);
+// and the trace as one JSON object. The result files (io/trace_files.hpp) hold the paper's model
+// only in this version: a model's trace is printed.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "stickslip/branches/trace.hpp"
+#include "stickslip/io/model_find.hpp"
+
+namespace stickslip {
+
+struct ModelTraceRun {
+  ModelFindRun find;
+  std::optional<BasicTraceResult<DynamicLinearOscillator>> trace;  // where the find found an orbit
+};
+
+// Throws RunFileError or InvalidInput (naming "parameter" for a name that is not one of the
+// model's parameters, or omega without forcing; "range" for low >= high or one that does not hold
+// the start's value) before any work, and as FindModelFileOrbit and TraceOrbits do.
+ModelTraceRun TraceModelFile(const std::filesystem::path& run_file, const NamedValues& set, int transients,
+                             const std::string& parameter, double low, double high, TraceOptions options = {});
+
+// parameter, start (find's JSON: model_orbit_json.hpp), completed, and per direction ("down",
+// "up") its end, message and branches: signature, direction, start, margin, end, message and
+// points, each the parameter's value by its name, the orbit's period, the branch's columns by name
+// (margins, floquet multipliers and tests, stable, admissible, the measures: amplitude:<coordinate>,
+// ...) and the durations. Non-finite numbers are null.
+std::string ModelTraceJson(const ModelTraceRun& run);
+
+}  // namespace stickslip

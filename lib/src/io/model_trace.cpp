@@ -1,0 +1,99 @@
+#include "stickslip/io/model_trace.hpp"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "stickslip/branches/model_trace.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/model_orbit_json.hpp"
+#include "stickslip/io/model_table.hpp"
+#include "stickslip/orbits/any_orbit.hpp"
+
+namespace stickslip {
+
+namespace {
+
+using Model = DynamicLinearOscillator;
+using Json = nlohmann::ordered_json;
+
+Json Number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+// The parameter's index among the model's, refused as the continued one where it is no parameter
+// (or omega, which plays no part without forcing).
+int ContinuedParameter(const Model& model, const std::string& parameter) {
+  const ModelDescription& d = model.Description();
+  std::vector<std::string> names;
+  for (const ParameterDescription& p : d.parameters) {
+    if (!(p.name == "omega" && model.Autonomous())) names.push_back(p.name);
+  }
+  const std::optional<int> k = d.ParameterIndex(parameter);
+  if (!k || (*k == Model::kForcingFrequencyParameter && model.Autonomous())) {
+    throw InvalidInput("parameter", "'" + parameter + "'",
+                       fmt::format("one of the model's parameters {}{}", fmt::join(names, ", "),
+                                   model.Autonomous() ? " (omega plays no part without forcing)" : ""));
+  }
+  return *k;
+}
+
+Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std::string& parameter) {
+  Json points = Json::array();
+  const BasicOrbitBranch<Model>& b = link.branch;
+  for (std::size_t i = 0; i < b.branch.points.size(); ++i) {
+    Json point{{parameter, b.branch.points[i].lambda}};
+    point["period"] = PeriodOf(model, AsBasicOrbit(b.orbits[i]));
+    const std::vector<double> values = ColumnValues(b.columns, b.branch.points[i]);
+    for (std::size_t k = 0; k < b.columns.size(); ++k) point[b.columns[k].name] = Number(values[k]);
+    point["durations"] = b.orbits[i].durations;
+    points.push_back(std::move(point));
+  }
+  return {{"signature", link.signature}, {"direction", link.direction > 0 ? "up" : "down"},
+          {"start", ToString(link.start)}, {"margin", link.margin},
+          {"end", ToString(link.end)},     {"message", link.message},
+          {"points", std::move(points)}};
+}
+
+}  // namespace
+
+ModelTraceRun TraceModelFile(const std::filesystem::path& run_file, const NamedValues& set, int transients,
+                             const std::string& parameter, double low, double high, TraceOptions options) {
+  // The parameter and the range before the work: the start's value from the file and `set`.
+  const ModelTable table = ReadModelTable(run_file);
+  const Model model = ModelOf(table);
+  const int k = ContinuedParameter(model, parameter);
+  const double value = Model::ParameterAt(ParametersOf(model, table, set), k);
+  if (!(low < high) || !(low <= value && value <= high)) {
+    throw InvalidInput("range", fmt::format("'{},{}'", low, high),
+                       fmt::format("LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
+  }
+  options.Validate();
+  ModelTraceRun run{FindModelFileOrbit(run_file, set, transients), std::nullopt};
+  if (run.find.found.status != FindOrbitStatus::kFound) return run;
+  BasicOrbitContinuationSetup<Model> setup{run.find.found.solution->orbit, {}, parameter, ShootingChoice::kAuto,
+                                           LinearSolverType::kKlu, {}, {}, {}, {}, kDefaultMaxAmplitude,
+                                           kDefaultResonanceApproach, run.find.model};
+  setup.options.lambda_min = low;
+  setup.options.lambda_max = high;
+  run.trace = TraceOrbits(setup, options);
+  return run;
+}
+
+std::string ModelTraceJson(const ModelTraceRun& run) {
+  Json out{{"parameter", run.trace ? Json(run.trace->parameter) : Json(nullptr)},
+           {"start", Json::parse(ModelFindJson(run.find.model, run.find.found))},
+           {"completed", run.trace && run.trace->Completed()}};
+  if (!run.trace) return out.dump();
+  for (const BasicTraceDirection<Model>* chain : {&run.trace->down, &run.trace->up}) {
+    Json branches = Json::array();
+    for (const BasicTraceLink<Model>& link : chain->links) branches.push_back(BranchJson(link, run.find.model, run.trace->parameter));
+    out[chain->direction > 0 ? "up" : "down"] = {
+        {"end", ToString(chain->end)}, {"message", chain->message}, {"branches", std::move(branches)}};
+  }
+  return out.dump();
+}
+
+}  // namespace stickslip
