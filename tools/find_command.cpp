@@ -18,6 +18,7 @@
 #include "commands.hpp"
 #include "found_run.hpp"
 #include "model_find.hpp"
+#include "stickslip/io/model_find.hpp"
 #include "orbit_json.hpp"
 #include "orbit_report.hpp"
 #include "progress_line.hpp"
@@ -241,9 +242,9 @@ Command AddFindCommand(CLI::App& app) {
   cmd->add_option("--transients", args->transients,
                   fmt::format("forcing periods 2 pi/omega simulated and discarded first (0 to {}, a whole number); "
                               "while the motion does not repeat, the transient goes on, twice as long each time, "
-                              "up to {} more times and {} periods in all",
+                              "up to {} more times and {} periods in all (with --model: {} to {}, not prolonged)",
                               FindOrbitOptions::kMaxTransient, FindOrbitOptions{}.settle_rounds,
-                              FindOrbitOptions::kMaxTransient))
+                              FindOrbitOptions::kMaxTransient, kMinModelTransients, kMaxModelTransients))
       ->type_name("N")
       ->capture_default_str();
   cmd->add_option("--max-multiple", args->max_multiple,
@@ -263,7 +264,8 @@ Command AddFindCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--trace", args->trace,
                   "then trace from the found orbit in omega over LO,HI (which must hold its omega), as stickslip "
-                  "trace does, into <results>/<output>/: the same files, the same report")
+                  "trace does, into <results>/<output>/: the same files, the same report (with --model: in "
+                  "--trace-parameter, printed, not written)")
       ->type_name("LO,HI");
   cmd->add_option("--output", args->output, "the trace's directory under --results (a run name; with --trace), and "
                                             "the output of the run file --write-run writes");
@@ -283,7 +285,10 @@ Command AddFindCommand(CLI::App& app) {
   cmd->add_flag("--json", args->json,
                 "print one JSON object: status, message, transient_periods, period_multiple, mismatch, "
                 "closest_multiple, antisymmetric, signature (read off the motion) and orbit (as solve --json prints "
-                "it, with unknowns and admissible; null unless Newton converged); not with --trace");
+                "it, with unknowns and admissible; null unless Newton converged); not with --trace. With --model: "
+                "status, message, signature and orbit (signature, parameters, period, phi, start, durations, "
+                "margins, multipliers, stable, measures, verification), and with --trace the trace (parameter, "
+                "start, completed, down, up: end, message, branches with every point)");
   cmd->add_flag("--force", args->force, kForceHelp);
   cmd->add_option("--model", args->model,
                   "find the orbit of the oscillator in this run file's [model] (see describe) instead of the paper's: "
@@ -296,7 +301,14 @@ Command AddFindCommand(CLI::App& app) {
                   "with --model and --trace: the parameter traced (omega, F_k, F_s or v_b; default omega, or v_b "
                   "without forcing); the trace is printed (the branches, and with --json every point), not written")
       ->type_name("NAME");
-  return {cmd, [args, cmd] { return cmd->count("--model") == 0 ? RunFind(*args) : RunModelFindOf(*args, *cmd); }};
+  return {cmd, [args, cmd] {
+            if (cmd->count("--model") != 0) return RunModelFindOf(*args, *cmd);
+            if (cmd->count("--trace-parameter") != 0) {
+              throw InvalidInput("trace-parameter", "'" + args->trace_parameter + "'", "with --model (the paper's "
+                                 "model's --trace is in omega)");
+            }
+            return RunFind(*args);
+          }};
 }
 
 }  // namespace stickslip::cli

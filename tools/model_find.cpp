@@ -84,9 +84,8 @@ std::string TraceText(const BasicTraceResult<DynamicLinearOscillator>& trace) {
   return out;
 }
 
-}  // namespace
-
-int RunModelFind(const ModelFindArgs& args) {
+// find, and with --trace the trace, of the model; bad input (the options, the run file) before the work.
+ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
   NamedValues set;
   for (const std::string& text : args.set) {
     const auto equals = text.find('=');
@@ -98,23 +97,27 @@ int RunModelFind(const ModelFindArgs& args) {
   if (!args.trace_parameter.empty() && args.trace.empty()) {
     throw InvalidInput("trace-parameter", "'" + args.trace_parameter + "'", "with --trace");
   }
+  if (args.trace.empty()) return {FindModelFileOrbit(args.file, set, transients, line.Callback()), {}};
+  const auto [low, high] = ParseRange("trace", args.trace);
+  const std::string parameter = !args.trace_parameter.empty()                     ? args.trace_parameter
+                                : ModelOf(ReadModelTable(args.file)).Autonomous() ? "v_b"
+                                                                                  : "omega";
+  TraceOptions options;
+  options.progress = line.Callback();
+  try {
+    return TraceModelFile(args.file, set, transients, parameter, low, high, options);
+  } catch (const InvalidInput& e) {  // the library's names, as the options name them
+    if (e.field() == "range") throw e.Renamed("trace");
+    if (e.field() == "parameter") throw e.Renamed("trace-parameter");
+    throw;
+  }
+}
+
+}  // namespace
+
+int RunModelFind(const ModelFindArgs& args) {
   ProgressLine line("find: transient");
-  const ModelTraceRun run = [&] {
-    if (args.trace.empty()) return ModelTraceRun{FindModelFileOrbit(args.file, set, transients, line.Callback()), {}};
-    const auto [low, high] = ParseRange("trace", args.trace);
-    const std::string parameter =
-        !args.trace_parameter.empty() ? args.trace_parameter
-                                      : (ModelOf(ReadModelTable(args.file)).Autonomous() ? "v_b" : "omega");
-    TraceOptions options;
-    options.progress = line.Callback();
-    try {
-      return TraceModelFile(args.file, set, transients, parameter, low, high, options);
-    } catch (const InvalidInput& e) {  // the library's names, as the options name them
-      if (e.field() == "range") throw e.Renamed("trace");
-      if (e.field() == "parameter") throw e.Renamed("trace-parameter");
-      throw;
-    }
-  }();
+  const ModelTraceRun run = FindAndTrace(args, line);
   line.Clear();
   const ModelFindResult<DynamicLinearOscillator>& found = run.find.found;
   if (args.json) {
@@ -127,7 +130,13 @@ int RunModelFind(const ModelFindArgs& args) {
     fmt::print(stderr, "error: {}: {}\n", args.file, found.message);
     return code;
   }
-  return run.trace && run.trace->Failed() ? kExitNoConvergence : kExitOk;
+  if (!run.trace || !run.trace->Failed()) return kExitOk;
+  for (const BasicTraceDirection<DynamicLinearOscillator>* chain : {&run.trace->down, &run.trace->up}) {
+    if (chain->end != TraceEnd::kContinuationFailed) continue;
+    fmt::print(stderr, "error: {}: the {} chain failed: {}\n", args.file, chain->direction > 0 ? "up" : "down",
+               chain->message);
+  }
+  return kExitNoConvergence;
 }
 
 }  // namespace stickslip::cli

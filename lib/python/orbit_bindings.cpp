@@ -576,12 +576,9 @@ void BindOrbits(py::module_& m) {
   m.def(
       "_find_model",
       [](const std::string& path, const NamedValues& set, double transients) {
-        if (!(transients >= kMinModelTransients && transients <= kMaxModelTransients && transients == std::floor(transients))) {
-          throw InvalidInput("transients", transients,
-                             fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
-        }
+        const int periods = WholeNumber("transients", transients, kMinModelTransients, kMaxModelTransients);
         py::gil_scoped_release release;
-        const ModelFindRun run = FindModelFileOrbit(path, set, static_cast<int>(transients));
+        const ModelFindRun run = FindModelFileOrbit(path, set, periods);
         return ModelFindJson(run.model, run.found);
       },
       py::arg("path"), py::arg("set"), py::arg("transients"));

@@ -168,17 +168,14 @@ void BindTrace(py::module_& m) {
       "_trace_model",
       [](const std::string& path, const NamedValues& set, double transients, const std::string& parameter, double low,
          double high, const py::dict& options) {
-        if (!(transients >= kMinModelTransients && transients <= kMaxModelTransients && transients == std::floor(transients))) {
-          throw InvalidInput("transients", transients,
-                             fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
-        }
+        const int periods = WholeNumber("transients", transients, kMinModelTransients, kMaxModelTransients);
         TraceOptions trace = TraceOptionsOf(options);
         py::gil_scoped_release release;
         trace.progress = [](const Progress&) {
           const py::gil_scoped_acquire acquire;
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         };
-        return ModelTraceJson(TraceModelFile(path, set, static_cast<int>(transients), parameter, low, high, trace));
+        return ModelTraceJson(TraceModelFile(path, set, periods, parameter, low, high, trace));
       },
       py::arg("path"), py::arg("set"), py::arg("transients"), py::arg("parameter"), py::arg("low"), py::arg("high"),
       py::arg("options"));

@@ -25,6 +25,15 @@ ModelFindResult<Model> FromRest(const Model& model, const Model::Parameters& p, 
   return FindModelOrbit(model, p, FilledState(model, 0.0), options);
 }
 
+// Den Hartog's undamped mass: k = m = 1, force amplitude 1 (F_k, F_s and v_b are parameters).
+Model DenHartogsMass() {
+  Chain chain;
+  chain.masses = {1.0};
+  chain.springs = {{0, kGround, 1.0}};
+  chain.forcing = {1.0};
+  return Model(ChainData(chain));
+}
+
 // Two belt speeds, either side of v_b = omega_n d (where the slip's arc is half a circle).
 TEST(ModelOrbitFinder, SettlesAMassOnABeltOnItsClosedFormStickSlipCycle) {
   for (const double v_b : {0.2, 0.9}) {
@@ -53,11 +62,7 @@ TEST(ModelOrbitFinder, SettlesAMassOnABeltOnItsClosedFormStickSlipCycle) {
 // Den Hartog's undamped mass (k = m = 1, force amplitude 1, F_s = F_k = beta) forced at r: friction
 // takes the transient out, and the motion settles on his antisymmetric orbit with two stops.
 TEST(ModelOrbitFinder, SettlesDenHartogsMassOnHisNonStickingOrbit) {
-  Chain chain;
-  chain.masses = {1.0};
-  chain.springs = {{0, kGround, 1.0}};
-  chain.forcing = {1.0};
-  const Model model(ChainData(chain));
+  const Model model = DenHartogsMass();
   for (const auto& [r, beta] : {std::pair{1.5, 0.25}, std::pair{2.5, 0.25}}) {
     const ModelFindResult<Model> found = FromRest(model, {r, beta, beta, 0.0}, 400 * 2.0 * std::numbers::pi / r);
     ASSERT_EQ(found.status, FindOrbitStatus::kFound) << found.message;
@@ -78,15 +83,24 @@ TEST(ModelOrbitFinder, ReportsAPermanentStickAndAMotionNotSettledAsNoOrbit) {
   EXPECT_EQ(stuck.status, FindOrbitStatus::kNoOrbitType);
   EXPECT_NE(stuck.message.find("permanent stick"), std::string::npos) << stuck.message;
   EXPECT_FALSE(stuck.solution.has_value());
-  Chain one;
-  one.masses = {1.0};
-  one.springs = {{0, kGround, 1.0}};
-  one.forcing = {1.0};
   const ModelFindResult<Model> resonant =
-      FromRest(Model(ChainData(one)), {1.001, 0.25, 0.25, 0.0}, 60 * 2.0 * std::numbers::pi / 1.001);
+      FromRest(DenHartogsMass(), {1.001, 0.25, 0.25, 0.0}, 60 * 2.0 * std::numbers::pi / 1.001);
   EXPECT_EQ(resonant.status, FindOrbitStatus::kNoOrbitType);
   EXPECT_NE(resonant.message.find("not settled"), std::string::npos) << resonant.message;
   EXPECT_FALSE(resonant.solution.has_value());
+}
+
+// Den Hartog's mass on a surface moving at v_b: its motion is antisymmetric only where v_b = 0 (the
+// mirror of a slip relative to a moving surface is not one), down to v_b = 1e-7, and the orbit is one
+// both simulators follow.
+TEST(ModelOrbitFinder, ReadsNoHalfPeriodSymmetryOnAMovingSurface) {
+  const Model model = DenHartogsMass();
+  for (const double v_b : {1e-7, 0.5}) {
+    const ModelFindResult<Model> found = FromRest(model, {1.5, 0.25, 0.25, v_b}, 400 * 2.0 * std::numbers::pi / 1.5);
+    ASSERT_EQ(found.status, FindOrbitStatus::kFound) << "v_b = " << v_b << ": " << found.message;
+    EXPECT_FALSE(found.solution->orbit.signature.antisymmetric()) << found.solution->orbit.signature.ToString();
+    EXPECT_TRUE(found.verification->Passed()) << found.verification->Report();
+  }
 }
 
 TEST(ModelOrbitFinder, ReportsASteadySlideAsNoOrbitType) {

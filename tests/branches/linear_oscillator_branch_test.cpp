@@ -15,8 +15,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/branches/model_orbit_continuation.hpp"
+#include "stickslip/orbits/signature_edits.hpp"
 #include "support/belt_cycle.hpp"
+#include "support/five_mass_chain.hpp"
 #include "support/general_models.hpp"
 #include "support/omega_setup.hpp"
 #include "support/pascal_in_physical_units.hpp"
@@ -106,6 +109,35 @@ TEST(BeltStickSlipBranch, DampedFamilyEndsWhereItsSlipGrazesTheBeltInAFold) {
   RecordProperty("grazing_belt_speed", fmt::format("{:.10g}", graze.lambda));
   RecordProperty("fold_belt_speed", fmt::format("{:.10g}", fold.lambda));
   RecordProperty("stick", fmt::format("{:.10g}", result.orbits[graze.point].durations[0]));
+}
+
+// An antisymmetric orbit (its second half the mirror -X of its first) is a motion only on a fixed
+// surface: the five-mass chain's 'stick slip+ / antisymmetric' at v_b = 0 is refused as a start in
+// the belt's speed; written over its whole period it is continued, and at v_b = 0.05 its orbit,
+// no longer symmetric (its two sticks differ), is a motion both simulators follow.
+TEST(BeltSpeedBranch, TakesAnAntisymmetricStartOnlyWrittenOverItsWholePeriod) {
+  using Model = DynamicLinearOscillator;
+  const Model model = FiveMassChain();
+  const BasicOrbit<Model> settled = SettledOrbit(model, {0.6, 0.3, 0.4, 0.0}, 300);
+  ASSERT_TRUE(settled.signature.antisymmetric()) << settled.signature.ToString();
+  BasicOrbitContinuationSetup<Model> setup = OmegaSetup<Model>(settled, model, -1.0, 1.0, 1.0, 200);
+  setup.parameter = "v_b";
+  try {
+    ContinueOrbit(setup);
+    ADD_FAILURE() << "an antisymmetric start was continued in v_b";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "parameter") << e.what();
+  }
+  setup.start = Unfolded(settled, 1);
+  setup.options.lambda_min = 0.0;
+  setup.options.lambda_max = 0.05;
+  const BasicOrbitBranch<Model> branch = ContinueOrbit(setup);
+  ASSERT_EQ(branch.branch.end, BranchEnd::kParameterBound) << branch.branch.end_message;
+  const BasicOrbit<Model>& moving = branch.orbits.back();
+  EXPECT_EQ(moving.signature.ToString(), "stick slip+ stick slip-");
+  EXPECT_GT(std::abs(moving.durations[0] - moving.durations[2]), 0.01) << "the sticks of a moving surface differ";
+  const Verification v = VerifyByBothSimulators(model, moving);
+  EXPECT_TRUE(v.Passed()) << v.Report();
 }
 
 }  // namespace

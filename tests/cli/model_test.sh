@@ -62,6 +62,13 @@ assert t["down"]["end"] == "parameter-bound" and down["points"][-1]["v_b"] == 0.
 assert all(p["stable"] == 1 for p in up["points"]), "the attracting cycle is stable along the branch"
 PY
 
+# The five-mass chain's antisymmetric orbit at v_b = 0 traced in the belt's speed: written over its
+# whole period (the mirror of a stick on a moving belt moves the other way), both ways to the bounds.
+"$bin" find --model "$models/five-mass-chain.toml" --trace -0.3,0.3 --trace-parameter v_b > "$work/vb.txt" 2>&1 ||
+  fail "find --model five-mass-chain.toml --trace in v_b exits $?: $(tail -3 "$work/vb.txt")"
+[ "$(grep -c "^  'stick slip+ stick slip-' .* parameter-bound$" "$work/vb.txt")" -eq 2 ] && pass ||
+  fail "the five-mass chain in v_b is not traced over its whole period: $(grep "^  '" "$work/vb.txt")"
+
 # A damped mass on a belt with equal levels slides steadily: no orbit type (exit 5), nothing printed on stdout.
 cat > "$work/slide.toml" <<'TOML'
 [model]
@@ -101,9 +108,10 @@ expect 2 "results is not taken with --model" "$bin" find --model "$models/belt.t
 expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1e9
 expect 2 "preset is not taken with --model" "$bin" find --model "$models/belt.toml" --preset paper-5.1
 expect 2 "output is not taken with --model" "$bin" find --model "$models/belt.toml" --trace 0.1,0.2 --output t
+expect 2 "trace-parameter = 'F_k' is invalid: valid range with --model" "$bin" find --preset paper-4.1 --trace-parameter F_k
 expect 2 "trace-parameter = 'v_b' is invalid: valid range with --trace" "$bin" find --model "$models/belt.toml" --trace-parameter v_b
 expect 2 "trace-parameter = 'omega' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,1 --trace-parameter omega
-expect 2 "trace = '0.3,1' is invalid: valid range LO < HI with LO <= v_b = 0.2 <= HI" "$bin" find --model "$models/belt.toml" --trace 0.3,1
+expect 2 "trace = '0.3,1' is invalid: valid range finite LO < HI with LO <= v_b = 0.2 <= HI" "$bin" find --model "$models/belt.toml" --trace 0.3,1
 expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
 expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \

@@ -217,7 +217,7 @@ class ModelFound:
     """What stickslip.find(model=...) found for an oscillator of your own: `status` and `message` as
     Found's, the orbit type read off the motion (`signature`, a str, or None), and the solved `orbit`
     when Newton converged: a dict with the keys of `stickslip find --model --json` (signature,
-    parameters, period, phi, start by the model's names x1_0 ... vn_0, durations, margins,
+    parameters, period, phi, start by the model's names (x1_0, v1_0 for x1; m1_0, v_m1_0 for m1), durations, margins,
     admissible, multipliers, stable, measures per coordinate, verification)."""
     status: str
     message: str
@@ -280,6 +280,7 @@ def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple
     if model is not None:
         arguments = {"parameters": parameters, "state": state, "phi": phi, "preset": preset, "point": point}
         given = [name for name, value in arguments.items() if value is not None]
+        given += ["results"] if results != "results" else []
         given += [name for name, value, default in (("max_multiple", max_multiple, 8), ("tolerance", tolerance, 1e-6),
                                                     ("confirmations", confirmations, 3)) if value != default]
         if given:
@@ -379,7 +380,8 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
     an oscillator of your own traced in one of its parameters (omega, F_k, F_s, v_b) from the orbit
     its motion from rest settles on, as `stickslip find --model path --trace LO,HI --trace-parameter
     NAME --json`; returns that JSON as a dict (start: the orbit found; down, up: their end, message
-    and branches, each with every point's columns by name). No other keyword is taken with it.
+    and branches, each with every point's columns by name). Of continue_orbit's keywords none is taken
+    with it.
     """
     options = {"max_branches": _checked(max_branches, "max_branches", "count"),
                "max_amplitude": _checked(max_amplitude, "max_amplitude", "number"),

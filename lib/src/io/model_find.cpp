@@ -38,8 +38,9 @@ ModelFindRun FindModelFileOrbit(const std::filesystem::path& run_file, const Nam
   const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, set);
   ModelFindOptions options;
   options.duration = SettlingTime(model, p, ModesOf(data), transients);
-  // Read from the last ten forcing periods; without forcing, the last quarter (two cycles at least).
-  options.record = model.Autonomous() ? options.duration / 4 : std::min(options.duration, 20.0 * std::numbers::pi / p.omega);
+  // Read from the last ten forcing periods; without forcing, from the last half, which must hold two
+  // stick-slip cycles (a slow belt's are long: its messages ask for more transients).
+  options.record = model.Autonomous() ? options.duration / 2 : std::min(options.duration, 20.0 * std::numbers::pi / p.omega);
   options.progress = std::move(progress);
   ModelFindResult<DynamicLinearOscillator> found = FindModelOrbit(model, p, FilledState(model, 0.0), options);
   return {std::move(model), p, std::move(found)};

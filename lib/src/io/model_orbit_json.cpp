@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_number.hpp"
+
 #include "stickslip/orbits/any_orbit.hpp"
 
 namespace stickslip {
@@ -13,8 +15,6 @@ namespace stickslip {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json Number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 Json Modes(const std::vector<Mode>& sequence) {
   Json list = Json::array();
@@ -27,8 +27,8 @@ Json VerificationObject(const Verification& v) {
   auto check = [&](const SimulatorCheck& c) {
     return Json{{"events", Modes(c.modes)},
                 {"sequence_matches", c.sequence_matches},
-                {"max_mismatch", simulated ? Number(c.periodicity_mismatch) : Json(nullptr)},
-                {"max_event_time_difference", simulated ? Number(c.max_event_time_difference) : Json(nullptr)}};
+                {"max_mismatch", simulated ? detail::JsonNumber(c.periodicity_mismatch) : Json(nullptr)},
+                {"max_event_time_difference", simulated ? detail::JsonNumber(c.max_event_time_difference) : Json(nullptr)}};
   };
   return {{"passed", v.Passed()},
           {"not_simulated", simulated ? Json(nullptr) : Json(v.not_simulated)},
@@ -55,21 +55,21 @@ std::string ModelFindJson(const DynamicLinearOscillator& model, const ModelFindR
   for (int k = 0; k < model.StateSize(); ++k) orbit["start"][d.initial_state[k]] = o.start(k);
   orbit["durations"] = o.durations;
   orbit["iterations"] = r.solution->summary.iterations;
-  orbit["residual_norm"] = Number(r.solution->summary.residual_norms.back());
-  for (const Margin& m : r.margins) orbit["margins"][m.Name()] = Number(m.value);
+  orbit["residual_norm"] = detail::JsonNumber(r.solution->summary.residual_norms.back());
+  for (const Margin& m : r.margins) orbit["margins"][m.Name()] = detail::JsonNumber(m.value);
   orbit["admissible"] = SmallestMargin(r.margins).value > 0;
   orbit["multipliers"] = Json::array();
-  for (const std::complex<double>& mu : r.stability->multipliers) orbit["multipliers"].push_back({Number(mu.real()), Number(mu.imag())});
+  for (const std::complex<double>& mu : r.stability->multipliers) orbit["multipliers"].push_back({detail::JsonNumber(mu.real()), detail::JsonNumber(mu.imag())});
   orbit["stable"] = r.stability->stable;
   for (std::size_t j = 0; j < d.coordinates.size(); ++j) {
-    orbit["measures"]["amplitude:" + d.coordinates[j]] = Number(r.measures->coordinates[j].Amplitude());
-    orbit["measures"]["peak-to-peak:" + d.coordinates[j]] = Number(r.measures->coordinates[j].PeakToPeak());
+    orbit["measures"]["amplitude:" + d.coordinates[j]] = detail::JsonNumber(r.measures->coordinates[j].Amplitude());
+    orbit["measures"]["peak-to-peak:" + d.coordinates[j]] = detail::JsonNumber(r.measures->coordinates[j].PeakToPeak());
   }
-  orbit["measures"]["stick-fraction"] = Number(r.measures->stick_fraction);
+  orbit["measures"]["stick-fraction"] = detail::JsonNumber(r.measures->stick_fraction);
   orbit["measures"]["stops"] = r.measures->stops;
   orbit["measures"]["sticks"] = r.measures->sticks;
-  orbit["measures"]["friction-work"] = Number(r.measures->friction_work);
-  orbit["measures"]["equivalent-damping"] = Number(r.measures->equivalent_damping);
+  orbit["measures"]["friction-work"] = detail::JsonNumber(r.measures->friction_work);
+  orbit["measures"]["equivalent-damping"] = detail::JsonNumber(r.measures->equivalent_damping);
   orbit["verification"] = VerificationObject(*r.verification);
   out["orbit"] = orbit;
   return out.dump();

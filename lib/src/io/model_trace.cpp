@@ -8,11 +8,14 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include "json_number.hpp"
+
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/io/model_table.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
+#include "stickslip/orbits/signature_edits.hpp"
 
 namespace stickslip {
 
@@ -20,8 +23,6 @@ namespace {
 
 using Model = DynamicLinearOscillator;
 using Json = nlohmann::ordered_json;
-
-Json Number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 // The parameter's index among the model's, refused as the continued one where it is no parameter
 // (or omega, which plays no part without forcing).
@@ -47,7 +48,7 @@ Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std
     Json point{{parameter, b.branch.points[i].lambda}};
     point["period"] = PeriodOf(model, AsBasicOrbit(b.orbits[i]));
     const std::vector<double> values = ColumnValues(b.columns, b.branch.points[i]);
-    for (std::size_t k = 0; k < b.columns.size(); ++k) point[b.columns[k].name] = Number(values[k]);
+    for (std::size_t k = 0; k < b.columns.size(); ++k) point[b.columns[k].name] = detail::JsonNumber(values[k]);
     point["durations"] = b.orbits[i].durations;
     points.push_back(std::move(point));
   }
@@ -66,14 +67,17 @@ ModelTraceRun TraceModelFile(const std::filesystem::path& run_file, const NamedV
   const Model model = ModelOf(table);
   const int k = ContinuedParameter(model, parameter);
   const double value = Model::ParameterAt(ParametersOf(model, table, set), k);
-  if (!(low < high) || !(low <= value && value <= high)) {
+  if (!(std::isfinite(low) && std::isfinite(high) && low < high) || !(low <= value && value <= high)) {
     throw InvalidInput("range", fmt::format("'{},{}'", low, high),
-                       fmt::format("LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
+                       fmt::format("finite LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
   }
   options.Validate();
-  ModelTraceRun run{FindModelFileOrbit(run_file, set, transients), std::nullopt};
+  ModelTraceRun run{FindModelFileOrbit(run_file, set, transients, options.progress), std::nullopt};
   if (run.find.found.status != FindOrbitStatus::kFound) return run;
-  BasicOrbitContinuationSetup<Model> setup{run.find.found.solution->orbit, {}, parameter, ShootingChoice::kAuto,
+  // In the belt's speed an antisymmetric orbit is written over its whole period (MakeOrbitContinuation).
+  const BasicOrbit<Model>& found = run.find.found.solution->orbit;
+  const bool unfold = k == Model::kRestVelocityParameter && found.signature.antisymmetric();
+  BasicOrbitContinuationSetup<Model> setup{unfold ? Unfolded(found, 1) : found, {}, parameter, ShootingChoice::kAuto,
                                            LinearSolverType::kKlu, {}, {}, {}, {}, kDefaultMaxAmplitude,
                                            kDefaultResonanceApproach, run.find.model};
   setup.options.lambda_min = low;

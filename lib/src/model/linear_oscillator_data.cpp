@@ -209,6 +209,7 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
   for (const std::string& q : d.coordinates) d.state_components.push_back(q);
   for (const std::string& q : d.coordinates) d.state_components.push_back(q + "'");
   d.initial_state = StartStateNames(d.coordinates);
+  d.contact = {"s", "s'", "s''", "F", "F_k", "F_s", "F_k = 0", "grazing-sliding (F_s = F_k)"};
   return d;
 }
 

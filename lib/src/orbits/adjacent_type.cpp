@@ -41,15 +41,16 @@ AdjacentType Split(const Signature& signature, int i, Mode mode, const char* bif
 
 // Slip i cut in two slips of its mode that meet at an abnormal stop: the first keeps i's start,
 // neither keeps its duration.
-AdjacentType SplitAtAbnormalStop(const Signature& signature, int i) {
+AdjacentType SplitAtAbnormalStop(const Signature& signature, int i, const ContactWords& w) {
   SignatureEdit edit = InsertSegment(signature, i + 1, signature.segments()[i]);
   edit.duration_kept[i] = false;
   return {std::move(edit),
           TypeEdit::kSplitAtAbnormalStop,
           i,
           -1,
-          "grazing-sliding (u_r = u_s)",
-          "x2' touches zero inside the slip with x2'' = 0 and goes on in the same direction: an abnormal stop"};
+          w.abnormal_grazing,
+          fmt::format("{} touches zero inside the slip with {} = 0 and goes on in the same direction: an abnormal stop",
+                      w.velocity, w.acceleration)};
 }
 
 void AddRemovals(const Signature& signature, int i, bool equal_friction, std::vector<AdjacentType>* out) {
@@ -89,21 +90,23 @@ const char* ToString(TypeEdit edit) {
   return "?";
 }
 
-std::string NoAdjacentTypeReason(std::string_view base) {
+std::string NoAdjacentTypeReason(std::string_view base, const ContactWords& w) {
   if (base == "stop-slope") {
-    return "stop-slope: the stop becomes tangential (x2'' = 0 there); two roots of x2' = 0 merge, the branch of "
-           "the same type folds, no segment appears or vanishes";
+    return fmt::format("stop-slope: the stop becomes tangential ({} = 0 there); two roots of {} = 0 merge, the "
+                       "branch of the same type folds, no segment appears or vanishes",
+                       w.acceleration, w.velocity);
   }
   if (base == "exit-slope") {
-    return "exit-slope: s reaches the exit level tangentially; two roots of the exit condition merge, the branch "
-           "of the same type exchanges roots, no segment appears or vanishes";
+    return fmt::format("exit-slope: {} reaches the exit level tangentially; two roots of the exit condition merge, "
+                       "the branch of the same type exchanges roots, no segment appears or vanishes",
+                       w.force);
   }
-  if (base == "sliding-friction") return "sliding-friction: u_s = 0 ends the physical family";
+  if (base == "sliding-friction") return fmt::format("sliding-friction: {} ends the physical family", w.no_friction);
   return "";
 }
 
 std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, const Signature& signature,
-                                        bool equal_friction) {
+                                        bool equal_friction, const ContactWords& w) {
   if (std::find(kMarginBases.begin(), kMarginBases.end(), base) == kMarginBases.end()) {
     throw InvalidInput("margin", std::string(base),
                        "duration, velocity, stop-slope, reversal, stick-entry, "
@@ -124,8 +127,9 @@ std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, cons
   std::vector<AdjacentType> out;
   if (base == "reversal") {
     out.push_back(Inserted(signature, i, Mode::kStick, "crossing-sliding",
-                           "the force at the stop stays inside the static band: the mass sticks there until s "
-                           "reaches the exit level of the next slip"));
+                           fmt::format("the force at the stop stays inside the static band: the mass sticks there "
+                                       "until {} reaches the exit level of the next slip",
+                                       w.force)));
   } else if (base == "stick-entry") {
     out.push_back(Inserted(signature, i, Mirror(mode), "crossing-sliding (at the entry)",
                            "the force at the stop leaves the static band: the mass reverses and slips back before "
@@ -134,18 +138,20 @@ std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, cons
     AddRemovals(signature, (i + 1) % signature.size(), equal_friction, &out);
   } else if (base == "abnormal-stop") {
     out.push_back(Inserted(signature, i, Mode::kStick, "grazing-sliding (at the abnormal stop)",
-                           "x2' reaches zero with x2''' of the wrong sign: the mass stops and sticks for an instant "
-                           "between the two slips"));
+                           fmt::format("{} reaches zero with {} of the wrong sign: the mass stops and sticks for an "
+                                       "instant between the two slips",
+                                       w.velocity, w.jerk)));
   } else if (base == "velocity") {
     out.push_back(Split(signature, i, Mode::kStick, "grazing-sliding",
-                        "x2' touches zero inside the slip where |s| = eta u_s < eta u_r: the mass stops and sticks, "
-                        "then slips on"));
-    if (equal_friction) out.push_back(SplitAtAbnormalStop(signature, i));
+                        fmt::format("{} touches zero inside the slip where |{}| = {} < {}: the mass stops and "
+                                    "sticks, then slips on",
+                                    w.velocity, w.force, w.kinetic_level, w.static_level)));
+    if (equal_friction) out.push_back(SplitAtAbnormalStop(signature, i, w));
   } else if (base == "G" || base == "G1") {
     const bool g = base == "G";
     out.push_back(Split(signature, i, g ? Mode::kSlipPositive : Mode::kSlipNegative, "adding-sliding",
-                        fmt::format("s grazes {} inside the stick: the mass leaves it in a short {} and sticks again",
-                                    g ? "-eta u_r" : "+eta u_r", g ? "slip+" : "slip-")));
+                        fmt::format("{} grazes {}{} inside the stick: the mass leaves it in a short {} and sticks again",
+                                    w.force, g ? "-" : "+", w.static_level, g ? "slip+" : "slip-")));
   } else if (base == "duration") {
     AddRemovals(signature, i, equal_friction, &out);
   }

@@ -4,8 +4,8 @@
 // period is the forcing's, 2 pi/omega (a subharmonic or a motion that has not settled is then no
 // orbit, which the solve that follows reports); an autonomous one's (a mass on a belt, no forcing)
 // is the time between its last two stick entries, its self-excited stick-slip cycle. An orbit
-// whose second half mirrors its first (antisymmetric, to 1e-6 of the period) is written over its
-// half, whose symmetric segments then vanish together as one. The period must be one: a segment
+// whose second half mirrors its first (antisymmetric, to 1e-6 of the period, on a fixed surface) is
+// written over its half, whose symmetric segments then vanish together as one. The period must be one: a segment
 // begins one period after the stop it is read from, in the state that stop had (to 1e-6), within the
 // last two periods of the simulation, with at most 100 segments; else the guess is none, and the
 // message says why (a permanent stick, a steady slip, a motion not settled).
@@ -89,20 +89,30 @@ std::string NotSettled(const Segments& segments, std::size_t first, double perio
   return "";
 }
 
+// The surface's speed (a belt's), 0 for a model whose surface is fixed.
+template <OscillatorModel Model>
+double RestVelocity(const Model&, const typename Model::Parameters& p) {
+  if constexpr (Model::kRestVelocityParameter >= 0) return Model::ParameterAt(p, Model::kRestVelocityParameter);
+  return 0.0;
+}
+
 }  // namespace settled_orbit_detail
 
-// Simulates `duration` (in the model's time, > 0) from x0 at phase phi0, and reads the period off
-// the last `record` of it (0 < record <= duration; it must hold two periods): the time before it in
-// chunks of `record` that keep only their end state, so that memory and any one simulation's events
-// stay bounded by the record's. `progress` reports the whole simulation (simulation.hpp).
+namespace settled_orbit_detail {
+
+// The last `record` of a simulation of `duration` from x0 (times from its start, `phi0` the phase
+// there), the time before it in chunks of `record` that keep only their end state, so that memory
+// and any one simulation's events stay bounded by the record's.
 template <OscillatorModel Model>
-SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename Model::Parameters& p,
-                                             const typename Model::State& x0, double duration, double record,
-                                             double phi0 = 0.0, ProgressCallback progress = {}) {
-  using settled_orbit_detail::LastPeriodStart;
+struct Record {
+  BasicSimulationResult<Model> result;
+  double phi0 = 0.0;
+};
+template <OscillatorModel Model>
+Record<Model> SimulateRecord(const Model& model, const typename Model::Parameters& p, const typename Model::State& x0,
+                             double duration, double record, double phi0, const ProgressCallback& progress) {
   const double omega = model.ForcingFrequency(p);
   const double unit = 2.0 * std::numbers::pi / omega;  // progress counts forcing periods
-  record = std::min(record, duration);
   BasicSimulationOptions<typename Model::State> options;
   typename Model::State x = x0;
   double t = 0.0;
@@ -118,37 +128,24 @@ SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename 
   // Bounded: at most duration / record chunks.
   for (double transient = duration - record; t < transient;) {
     const double length = std::min(record, transient - t);
-    const BasicSimulationResult<Model> chunk = simulate(length);
-    if (!chunk.Completed() || chunk.segments.empty()) return {std::nullopt, "the simulation stopped early: " + chunk.message};
+    BasicSimulationResult<Model> chunk = simulate(length);
+    if (!chunk.Completed() || chunk.segments.empty()) return {std::move(chunk), 0.0};
     x = chunk.segments.back().end;
     t = length >= transient - t ? transient : t + length;
   }
-  const BasicSimulationResult<Model> r = simulate(record);
-  if (!r.Completed()) return {std::nullopt, "the simulation stopped early: " + r.message};
-  duration = record;  // the record's times run from 0
-  phi0 += omega * t;
-  const bool forced = !model.Autonomous();
+  return {simulate(record), phi0 + omega * t};
+}
+
+// The orbit over `period` from segment `first` (a settled period, NotSettled), written over its half
+// where its second half mirrors its first (on a fixed surface only: the mirror of a stick on a moving
+// one moves the other way).
+template <OscillatorModel Model>
+SettledOrbitGuess<Model> OrbitOverPeriod(const Model& model, const typename Model::Parameters& p,
+                                         const BasicSimulationResult<Model>& r, std::size_t first, double period,
+                                         double phi0) {
   const auto& segments = r.segments;
-  if (!segments.empty() && segments.back().mode == Mode::kStick && segments.back().t_start <= duration / 2) {
-    return {std::nullopt, fmt::format("the contact stays stuck over the last {:.6g} of the {:.6g} read: a permanent "
-                                      "stick, no orbit type",
-                                      duration - segments.back().t_start, duration)};
-  }
-  const std::size_t first = LastPeriodStart(segments, duration, forced ? 2.0 * std::numbers::pi / omega : 0.0);
-  if (first == segments.size()) {
-    return {std::nullopt, forced ? "no stop in the last forcing period: the motion never stops (a steady slip) or has "
-                                   "not settled"
-                                 : "fewer than two sticks: the motion does not stick periodically (a steady slip, or "
-                                   "nothing moves)"};
-  }
+  const bool forced = !model.Autonomous();
   const double t0 = segments[first].t_start;
-  double period = forced ? 2.0 * std::numbers::pi / omega : 0.0;
-  for (std::size_t k = first + 1; k < segments.size() && period == 0.0; ++k) {
-    if (segments[k].mode == Mode::kStick && segments[k - 1].end_reason == SegmentEnd::kStop) period = segments[k].t_start - t0;
-  }
-  if (std::string why = settled_orbit_detail::NotSettled(segments, first, period, duration); !why.empty()) {
-    return {std::nullopt, std::move(why)};
-  }
   std::vector<Mode> modes;
   std::vector<double> durations;
   for (std::size_t k = first; k < segments.size() && segments[k].t_start < t0 + (1.0 - 1e-6) * period; ++k) {
@@ -156,7 +153,7 @@ SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename 
     durations.push_back(std::min(segments[k].t_end, t0 + period) - segments[k].t_start);
   }
   const std::size_t half = modes.size() / 2;
-  bool antisymmetric = forced && modes.size() % 2 == 0;
+  bool antisymmetric = forced && modes.size() % 2 == 0 && RestVelocity(model, p) == 0.0;
   for (std::size_t k = 0; antisymmetric && k < half; ++k) {
     antisymmetric = modes[k + half] == Mirror(modes[k]) && std::abs(durations[k + half] - durations[k]) <= 1e-6 * period;
   }
@@ -165,12 +162,49 @@ SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename 
     durations.resize(half);
   }
   try {
-    return {BasicOrbit<Model>{Signature(modes, antisymmetric), p, segments[first].start,
-                              forced ? std::remainder(omega * t0 + phi0, 2.0 * std::numbers::pi) : 0.0, durations},
-            ""};
+    const double phi = forced ? std::remainder(model.ForcingFrequency(p) * t0 + phi0, 2.0 * std::numbers::pi) : 0.0;
+    return {BasicOrbit<Model>{Signature(modes, antisymmetric), p, segments[first].start, phi, durations}, ""};
   } catch (const InvalidInput& e) {  // a sequence no orbit type has (two sticks in a row)
     return {std::nullopt, std::string("the motion's period is no orbit type: ") + e.what()};
   }
+}
+
+}  // namespace settled_orbit_detail
+
+// Simulates `duration` (in the model's time, > 0) from x0 at phase phi0, and reads the period off
+// the last `record` of it (0 < record <= duration; it must hold two periods; SimulateRecord).
+// `progress` reports the whole simulation (simulation.hpp).
+template <OscillatorModel Model>
+SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename Model::Parameters& p,
+                                             const typename Model::State& x0, double duration, double record,
+                                             double phi0 = 0.0, const ProgressCallback& progress = {}) {
+  using namespace settled_orbit_detail;
+  record = std::min(record, duration);
+  const Record<Model> recorded = SimulateRecord(model, p, x0, duration, record, phi0, progress);
+  const BasicSimulationResult<Model>& r = recorded.result;
+  if (!r.Completed() || r.segments.empty()) return {std::nullopt, "the simulation stopped early: " + r.message};
+  const auto& segments = r.segments;
+  if (segments.back().mode == Mode::kStick && segments.back().t_start <= record / 2) {
+    return {std::nullopt, fmt::format("the contact stays stuck over the last {:.6g} of the {:.6g} read: a permanent "
+                                      "stick (no orbit type), or a stick longer than that (simulate longer)",
+                                      record - segments.back().t_start, record)};
+  }
+  const bool forced = !model.Autonomous();
+  const std::size_t first = LastPeriodStart(segments, record, forced ? 2.0 * std::numbers::pi / model.ForcingFrequency(p) : 0.0);
+  if (first == segments.size()) {
+    return {std::nullopt, forced ? "no stop in the last forcing period: the motion never stops (a steady slip) or has "
+                                   "not settled"
+                                 : "fewer than two sticks in the time read: the motion does not stick periodically (a "
+                                   "steady slip, or nothing moves), or its stick-slip cycle is longer (simulate longer)"};
+  }
+  double period = forced ? 2.0 * std::numbers::pi / model.ForcingFrequency(p) : 0.0;
+  for (std::size_t k = first + 1; k < segments.size() && period == 0.0; ++k) {
+    if (segments[k].mode == Mode::kStick && segments[k - 1].end_reason == SegmentEnd::kStop) {
+      period = segments[k].t_start - segments[first].t_start;
+    }
+  }
+  if (std::string why = NotSettled(segments, first, period, record); !why.empty()) return {std::nullopt, std::move(why)};
+  return OrbitOverPeriod(model, p, r, first, period, recorded.phi0);
 }
 
 }  // namespace stickslip

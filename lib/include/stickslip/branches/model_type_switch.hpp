@@ -314,11 +314,11 @@ BasicTypeSwitch<Model> SwitchAt(const BasicLocatedTypeChange<Model>& located, co
   const bool equal_friction = located.unknowns.tie_static_friction ||
                               type_switch_detail::EqualFrictionLevels<Model>(located.orbit.parameters);
   const std::vector<AdjacentType> candidates =
-      AdjacentTypes(base, margin->segment, located.orbit.signature, equal_friction);
+      AdjacentTypes(base, margin->segment, located.orbit.signature, equal_friction, located.model.Description().contact);
   if (!candidates.empty()) return type_switch_detail::TryAdjacentTypes(located, *margin, candidates, options);
   BasicTypeSwitch<Model> result;
   result.status = TypeSwitchStatus::kNoAdjacentType;
-  result.reason = NoAdjacentTypeReason(base);
+  result.reason = NoAdjacentTypeReason(base, located.model.Description().contact);
   if (result.reason.empty()) {
     result.reason = fmt::format(
         "{}: no valid signature without segment {} (the only segment, or neighbours joined across the orbit's "

@@ -21,6 +21,20 @@ struct ParameterDescription {
   std::string range;  // the range as messages and --help print it: "0.01 <= chi <= 0.99"
 };
 
+// How messages name the contact's quantities (the changes of orbit type, orbits/adjacent_type.hpp):
+// by default the paper's, x2 being its contact's coordinate and s the friction force; a model of
+// its own gives its words.
+struct ContactWords {
+  std::string velocity = "x2'";  // the contact's velocity relative to its surface
+  std::string acceleration = "x2''";
+  std::string jerk = "x2'''";
+  std::string force = "s";                // the friction force a stick needs
+  std::string kinetic_level = "eta u_s";  // its level in a slip
+  std::string static_level = "eta u_r";   // the most a stick holds
+  std::string no_friction = "u_s = 0";    // the kinetic level vanishing
+  const char* abnormal_grazing = "grazing-sliding (u_r = u_s)";  // a bifurcation's name
+};
+
 struct ModelDescription {
   std::string name;  // "pascal-2014"
   // In the order of the model's parameter derivatives (the columns of every d/dparameters).
@@ -31,6 +45,7 @@ struct ModelDescription {
   // paper's model). An orbit's start variables are all but the last (the contact's velocity, zero at the
   // orbit's origin, a stop: orbits/orbit_layout.hpp).
   std::vector<std::string> initial_state;
+  ContactWords contact;
 
   int ParameterCount() const { return static_cast<int>(parameters.size()); }
   std::optional<int> ParameterIndex(std::string_view name) const;

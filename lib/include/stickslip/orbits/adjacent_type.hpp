@@ -39,6 +39,7 @@
 #include <string_view>
 #include <vector>
 
+#include "stickslip/model/model_description.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
@@ -71,11 +72,12 @@ struct AdjacentType {
 // (stop-slope, exit-slope, sliding-friction) and for a removal that would be invalid (the only
 // segment; a join across the orbit's origin). Throws InvalidInput naming "margin" for a base
 // that is no margin or does not belong to that segment's mode and end.
+// The motions are described in `words`, the model's (ModelDescription::contact).
 std::vector<AdjacentType> AdjacentTypes(std::string_view base, int segment, const Signature& signature,
-                                        bool equal_friction);
+                                        bool equal_friction, const ContactWords& words = {});
 
 // Why `base` has no adjacent type, in one sentence ("" when it has one).
-std::string NoAdjacentTypeReason(std::string_view base);
+std::string NoAdjacentTypeReason(std::string_view base, const ContactWords& words = {});
 
 // The start orbit on `adjacent` at the located orbit, of any model (Orbit, BasicOrbit<Model>): the
 // same state, phase, parameters and period, the new segment of zero length at the segment end, or
