@@ -168,9 +168,9 @@ ModelTable ReadModelTable(const std::filesystem::path& path) {
 
 namespace {
 
-// The matrices' oscillator, its contact's coordinate put last (the linear oscillator's convention)
-// with every coordinate keeping its name.
-LinearOscillatorData MatrixData(const ModelTable& table) {
+// The matrices in the files' order, each read and sized as the mass matrix is (n x n, the forcing
+// n x 1); no damping or forcing file: zero.
+LinearOscillatorData ReadMatrices(const ModelTable& table) {
   const ModelMatrixFiles& files = table.matrices;
   const std::filesystem::path folder = std::filesystem::path(table.path).parent_path();
   const auto read = [&](const std::string& file, const char* field) {
@@ -188,7 +188,6 @@ LinearOscillatorData MatrixData(const ModelTable& table) {
     throw InvalidInput("model.mass", fmt::format("a {} x {} matrix", n, data.mass.cols()),
                        fmt::format("a square matrix of 1 to {} rows", kMaxLinearOscillatorCoordinates));
   }
-  // Every other matrix n x n (the forcing n x 1), as the mass matrix.
   const auto sized = [&](const std::string& file, const char* field, Eigen::Index columns) {
     Eigen::MatrixXd m = read(file, field);
     if (m.rows() != n || m.cols() != columns) {
@@ -200,14 +199,23 @@ LinearOscillatorData MatrixData(const ModelTable& table) {
   data.stiffness = sized(files.stiffness, "stiffness", n);
   data.damping = files.damping.empty() ? Eigen::MatrixXd::Zero(n, n) : sized(files.damping, "damping", n);
   data.forcing = files.forcing.empty() ? Eigen::VectorXd::Zero(n) : Eigen::VectorXd(sized(files.forcing, "forcing", 1).col(0));
-  std::vector<std::string> names = files.coordinates;
+  return data;
+}
+
+// The matrices' oscillator, its contact's coordinate put last (the linear oscillator's convention)
+// with every coordinate keeping its name.
+LinearOscillatorData MatrixData(const ModelTable& table) {
+  LinearOscillatorData data = ReadMatrices(table);
+  const Eigen::Index n = data.mass.rows();
+  std::vector<std::string> names = table.matrices.coordinates;
   if (names.empty()) {
     for (Eigen::Index j = 0; j < n; ++j) names.push_back(fmt::format("x{}", j + 1));
   }
   CheckCoordinateNames(names, n, "model.coordinates");
-  const auto contact = std::find(names.begin(), names.end(), files.contact);
+  const auto contact = std::find(names.begin(), names.end(), table.matrices.contact);
   if (contact == names.end()) {
-    throw InvalidInput("model.contact", "'" + files.contact + "'", fmt::format("one of the coordinates '{}'", fmt::join(names, "', '")));
+    throw InvalidInput("model.contact", "'" + table.matrices.contact + "'",
+                       fmt::format("one of the coordinates '{}'", fmt::join(names, "', '")));
   }
   // The permutation that moves the contact's coordinate last, the others keeping their order.
   Eigen::VectorXi order(n);

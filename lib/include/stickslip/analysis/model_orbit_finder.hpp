@@ -66,14 +66,35 @@ Verification VerifyByBothSimulators(const Model& model, const BasicOrbit<Model>&
   return VerifyOrbit(model, orbit, exact, integrated);
 }
 
+// `r` with its converged orbit's margins, stability, measures and verification, and its status:
+// found where every margin is positive and both simulators follow it.
+template <IntegrableOscillatorModel Model>
+ModelFindResult<Model> CheckedModelOrbit(const Model& model, ModelFindResult<Model> r) {
+  const BasicOrbit<Model>& orbit = r.solution->orbit;
+  r.margins = AdmissibilityMargins(model, orbit);
+  r.stability = StabilityOf(model, orbit);
+  r.measures = Measure(model, orbit);
+  r.verification = VerifyByBothSimulators(model, orbit);
+  const Margin smallest = SmallestMargin(r.margins);
+  if (!(smallest.value > 0.0) || !r.verification->Passed()) {
+    r.status = FindOrbitStatus::kNotAMotion;
+    r.message = smallest.value > 0.0 ? "the orbit fails its verification by simulation"
+                                     : fmt::format("the orbit is no motion of the system: margin {} = {:.6g}",
+                                                   smallest.Name(), smallest.value);
+    return r;
+  }
+  r.status = FindOrbitStatus::kFound;
+  return r;
+}
+
 // Simulates from x0 (options.duration > 0), solves the orbit read off the motion's last period with
 // every start variable, the phase and the durations unknown (the parameters held), and checks it.
 template <IntegrableOscillatorModel Model>
 ModelFindResult<Model> FindModelOrbit(const Model& model, const typename Model::Parameters& p,
                                       const typename Model::State& x0, const ModelFindOptions& options) {
   ModelFindResult<Model> r;
-  SettledOrbitGuess<Model> settled = SettledOrbitGuessOf(model, p, x0, options.duration, options.record > 0.0 ? options.record : options.duration,
-                          options.phi0, options.progress);
+  const double record = options.record > 0.0 ? options.record : options.duration;
+  SettledOrbitGuess<Model> settled = SettledOrbitGuessOf(model, p, x0, options.duration, record, options.phi0, options.progress);
   if (!settled.orbit) {
     r.status = settled.message.starts_with("the simulation") ? FindOrbitStatus::kSimulationIncomplete
                                                              : FindOrbitStatus::kNoOrbitType;
@@ -100,21 +121,7 @@ ModelFindResult<Model> FindModelOrbit(const Model& model, const typename Model::
                             r.solution->summary.BriefReport());
     return r;
   }
-  const BasicOrbit<Model>& orbit = r.solution->orbit;
-  r.margins = AdmissibilityMargins(model, orbit);
-  r.stability = StabilityOf(model, orbit);
-  r.measures = Measure(model, orbit);
-  r.verification = VerifyByBothSimulators(model, orbit);
-  const Margin smallest = SmallestMargin(r.margins);
-  if (!(smallest.value > 0.0) || !r.verification->Passed()) {
-    r.status = FindOrbitStatus::kNotAMotion;
-    r.message = smallest.value > 0.0 ? "the orbit fails its verification by simulation"
-                                     : fmt::format("the orbit is no motion of the system: margin {} = {:.6g}",
-                                                   smallest.Name(), smallest.value);
-    return r;
-  }
-  r.status = FindOrbitStatus::kFound;
-  return r;
+  return CheckedModelOrbit(model, std::move(r));
 }
 
 // A model whose size comes with its data (a user's [model]): compiled once, in model_orbit_finder.cpp.
