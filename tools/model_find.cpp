@@ -14,7 +14,6 @@
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/io/model_find.hpp"
-#include "stickslip/io/model_table.hpp"
 #include "stickslip/io/model_trace.hpp"
 
 namespace stickslip::cli {
@@ -56,7 +55,7 @@ std::string Text(const Model& model, const Found& r) {
   return out;
 }
 
-// "LO,HI": two finite numbers, LO < HI (the trace's range; TraceModelFile checks it holds the start).
+// "LO,HI": two finite numbers, LO < HI (the trace's range; TraceModel checks it holds the start).
 std::pair<double, double> ParseRange(const char* field, const std::string& text) {
   const auto comma = text.find(',');
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
@@ -97,15 +96,16 @@ ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
   if (!args.trace_parameter.empty() && args.trace.empty()) {
     throw InvalidInput("trace-parameter", "'" + args.trace_parameter + "'", "with --trace");
   }
-  if (args.trace.empty()) return {FindModelFileOrbit(args.file, set, transients, line.Callback()), {}};
+  if (args.trace.empty()) return {FindModelOrbitOf(ReadModelFileStart(args.file, set), transients, line.Callback()), {}};
   const auto [low, high] = ParseRange("trace", args.trace);
-  const std::string parameter = !args.trace_parameter.empty()                     ? args.trace_parameter
-                                : ModelOf(ReadModelTable(args.file)).Autonomous() ? "v_b"
-                                                                                  : "omega";
+  const ModelFileStart start = ReadModelFileStart(args.file, set);
+  const std::string parameter = !args.trace_parameter.empty() ? args.trace_parameter
+                                : start.model.Autonomous()    ? "v_b"
+                                                              : "omega";
   TraceOptions options;
   options.progress = line.Callback();
   try {
-    return TraceModelFile(args.file, set, transients, parameter, low, high, options);
+    return TraceModel(start, transients, parameter, low, high, options);
   } catch (const InvalidInput& e) {  // the library's names, as the options name them
     if (e.field() == "range") throw e.Renamed("trace");
     if (e.field() == "parameter") throw e.Renamed("trace-parameter");

@@ -578,7 +578,7 @@ void BindOrbits(py::module_& m) {
       [](const std::string& path, const NamedValues& set, double transients) {
         const int periods = WholeNumber("transients", transients, kMinModelTransients, kMaxModelTransients);
         py::gil_scoped_release release;
-        const ModelFindRun run = FindModelFileOrbit(path, set, periods);
+        const ModelFindRun run = FindModelOrbitOf(ReadModelFileStart(path, set), periods);
         return ModelFindJson(run.model, run.found);
       },
       py::arg("path"), py::arg("set"), py::arg("transients"));

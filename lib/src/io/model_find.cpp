@@ -1,5 +1,6 @@
 #include "stickslip/io/model_find.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -13,37 +14,30 @@
 
 namespace stickslip {
 
-namespace {
-
-// The time `periods` take: forcing periods, or those of the slowest free oscillation of the slip.
-double SettlingTime(const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& p,
-                    const LinearOscillatorModes& modes, int periods) {
-  if (!model.Autonomous()) return periods * 2.0 * std::numbers::pi / p.omega;
-  double slowest = std::numeric_limits<double>::infinity();
-  for (const std::complex<double>& lambda : modes.slip.eigenvalues) slowest = std::min(slowest, std::abs(lambda));
-  return periods * 2.0 * std::numbers::pi / slowest;
-}
-
-}  // namespace
-
-ModelFindRun FindModelFileOrbit(const std::filesystem::path& run_file, const NamedValues& set, int transients,
-                                ProgressCallback progress) {
-  if (transients < kMinModelTransients || transients > kMaxModelTransients) {
-    throw InvalidInput("transients", transients,
-                       fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
-  }
+ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const NamedValues& set) {
   const ModelTable table = ReadModelTable(run_file);
   const LinearOscillatorData data = ModelDataOf(table);
   DynamicLinearOscillator model(data);
   const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, set);
+  double slowest = std::numeric_limits<double>::infinity();
+  for (const std::complex<double>& lambda : ModesOf(data).slip.eigenvalues) slowest = std::min(slowest, std::abs(lambda));
+  return {std::move(model), p, slowest};
+}
+
+ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, ProgressCallback progress) {
+  if (transients < kMinModelTransients || transients > kMaxModelTransients) {
+    throw InvalidInput("transients", transients,
+                       fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
+  }
+  const DynamicLinearOscillator& model = start.model;
+  const DynamicLinearOscillator::Parameters& p = start.parameters;
   ModelFindOptions options;
-  options.duration = SettlingTime(model, p, ModesOf(data), transients);
+  options.duration = transients * 2.0 * std::numbers::pi / (model.Autonomous() ? start.slowest_frequency : p.omega);
   // Read from the last ten forcing periods; without forcing, from the last half, which must hold two
   // stick-slip cycles (a slow belt's are long: its messages ask for more transients).
   options.record = model.Autonomous() ? options.duration / 2 : std::min(options.duration, 20.0 * std::numbers::pi / p.omega);
   options.progress = std::move(progress);
-  ModelFindResult<DynamicLinearOscillator> found = FindModelOrbit(model, p, FilledState(model, 0.0), options);
-  return {std::move(model), p, std::move(found)};
+  return {model, p, FindModelOrbit(model, p, FilledState(model, 0.0), options)};
 }
 
 }  // namespace stickslip

@@ -13,7 +13,6 @@
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
-#include "stickslip/io/model_table.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
 
@@ -60,19 +59,17 @@ Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std
 
 }  // namespace
 
-ModelTraceRun TraceModelFile(const std::filesystem::path& run_file, const NamedValues& set, int transients,
-                             const std::string& parameter, double low, double high, TraceOptions options) {
-  // The parameter and the range before the work: the start's value from the file and `set`.
-  const ModelTable table = ReadModelTable(run_file);
-  const Model model = ModelOf(table);
-  const int k = ContinuedParameter(model, parameter);
-  const double value = Model::ParameterAt(ParametersOf(model, table, set), k);
+ModelTraceRun TraceModel(const ModelFileStart& start, int transients, const std::string& parameter, double low,
+                         double high, TraceOptions options) {
+  // The parameter and the range before the work.
+  const int k = ContinuedParameter(start.model, parameter);
+  const double value = Model::ParameterAt(start.parameters, k);
   if (!(std::isfinite(low) && std::isfinite(high) && low < high) || !(low <= value && value <= high)) {
     throw InvalidInput("range", fmt::format("'{},{}'", low, high),
                        fmt::format("finite LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
   }
   options.Validate();
-  ModelTraceRun run{FindModelFileOrbit(run_file, set, transients, options.progress), std::nullopt};
+  ModelTraceRun run{FindModelOrbitOf(start, transients, options.progress), std::nullopt};
   if (run.find.found.status != FindOrbitStatus::kFound) return run;
   // In the belt's speed an antisymmetric orbit is written over its whole period (MakeOrbitContinuation).
   const BasicOrbit<Model>& found = run.find.found.solution->orbit;

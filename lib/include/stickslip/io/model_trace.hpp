@@ -19,11 +19,11 @@ struct ModelTraceRun {
   std::optional<BasicTraceResult<DynamicLinearOscillator>> trace;  // where the find found an orbit
 };
 
-// Throws RunFileError or InvalidInput (naming "parameter" for a name that is not one of the
-// model's parameters, or omega without forcing; "range" for low >= high or one that does not hold
-// the start's value) before any work, and as FindModelFileOrbit and TraceOrbits do.
-ModelTraceRun TraceModelFile(const std::filesystem::path& run_file, const NamedValues& set, int transients,
-                             const std::string& parameter, double low, double high, TraceOptions options = {});
+// Throws InvalidInput (naming "parameter" for a name that is not one of the model's parameters, or
+// omega without forcing; "range" for low >= high or one that does not hold the start's value) before
+// any work, and as FindModelOrbitOf and TraceOrbits do.
+ModelTraceRun TraceModel(const ModelFileStart& start, int transients, const std::string& parameter, double low,
+                         double high, TraceOptions options = {});
 
 // parameter, start (find's JSON: model_orbit_json.hpp), completed, and per direction ("down",
 // "up") its end, message and branches: signature, direction, start, margin, end, message and
