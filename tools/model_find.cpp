@@ -85,13 +85,7 @@ std::string TraceText(const BasicTraceResult<DynamicLinearOscillator>& trace) {
 
 // find, and with --trace the trace, of the model; bad input (the options, the run file) before the work.
 ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
-  NamedValues set;
-  for (const std::string& text : args.set) {
-    const auto equals = text.find('=');
-    if (equals == std::string::npos) throw InvalidInput("set", fmt::format("'{}'", text), "NAME=VALUE");
-    const std::string name = text.substr(0, equals);
-    set.emplace_back(name, ParseNumber(name, text.substr(equals + 1), "a finite number"));
-  }
+  const NamedValues set = ModelSetOf(args.set);
   const int transients = ParseCount("transients", args.transients, kMinModelTransients, kMaxModelTransients);
   if (!args.trace_parameter.empty() && args.trace.empty()) {
     throw InvalidInput("trace-parameter", "'" + args.trace_parameter + "'", "with --trace");
@@ -114,6 +108,17 @@ ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
 }
 
 }  // namespace
+
+NamedValues ModelSetOf(const std::vector<std::string>& texts) {
+  NamedValues set;
+  for (const std::string& text : texts) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos) throw InvalidInput("set", fmt::format("'{}'", text), "NAME=VALUE");
+    const std::string name = text.substr(0, equals);
+    set.emplace_back(name, ParseNumber(name, text.substr(equals + 1), "a finite number"));
+  }
+  return set;
+}
 
 int RunModelFind(const ModelFindArgs& args) {
   ProgressLine line("find: transient");

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/named_values.hpp"
+
 namespace stickslip::cli {
 
 struct ModelFindArgs {
@@ -17,6 +19,10 @@ struct ModelFindArgs {
   std::string trace;             // "LO,HI": trace from the orbit found; empty: none
   std::string trace_parameter;   // the traced parameter; empty: omega, or v_b without forcing
 };
+
+// --set NAME=VALUE ... as named values, each a finite number (the model's reader checks the names
+// and ranges). Throws InvalidInput naming "set" or the name.
+NamedValues ModelSetOf(const std::vector<std::string>& set);
 
 // The exit code as find's: 0 found and verified (and the trace ran to its ends), 3 Newton failed (or
 // a branch of the trace), 4 no motion or not verified, 5 no orbit type read off the motion (it never

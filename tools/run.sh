@@ -75,6 +75,11 @@ done
 "$bin" find --model continuation-scripts/models/five-mass-chain.toml --trace 0.2,2.0 \
   > results/models/five-mass-chain-omega-trace.txt
 "$bin" find --model continuation-scripts/models/belt-damped.toml --trace 0.1,1.0 > results/models/belt-damped-v_b-trace.txt
+# The five-mass chain's brute-force diagram over the same decade, from rest and a start scattered around
+# it, up and back down: its resonances, and the permanent sticks below omega = 0.4; and its figure.
+"$bin" sweep --model continuation-scripts/models/five-mass-chain.toml --from 0.2 --to 2.0 --steps 60 --transients 300 \
+  --periods 6 --chains 2 --output results/models/five-mass-chain-omega-sweep.csv
+"$bin" plot results/models/five-mass-chain-omega-sweep.csv --output results/figures/five-mass-chain-omega-sweep.png
 /usr/bin/python3 tools/atlas_summary.py results
 /usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"

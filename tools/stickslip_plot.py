@@ -221,7 +221,8 @@ class Sweep(Result):
 
     def __init__(self, name, rows, header):
         self.name, self.rows, self.header = name, rows, header
-        self.parameter = next((c for c in header if c in PARAMETERS), "")
+        # chain,direction,step,<parameter>,...: the paper's or a model's (sweep --model) parameter
+        self.parameter = header[3] if len(header) > 3 else ""
 
     def columns(self):
         return list(self.header)
@@ -335,10 +336,18 @@ _NON_NEGATIVE = ("stops_per_period", "sticks_per_period", "amplitude:x2", "ampli
 _FINITE = ("section_phase", "x1", "x2", "v1", "v2") + PARAMETERS
 
 
-def _check_csv_columns(rows, header, shown):
+def _sweep_state_columns(header):
+    """A sweep's parameter and state columns (chain,direction,step,<parameter>,section_phase,k,
+    <state...>,stops_per_period,...), whatever the model: finite numbers."""
+    if "k" in header and "stops_per_period" in header and header.index("k") < header.index("stops_per_period"):
+        return header[3:4] + header[header.index("k") + 1:header.index("stops_per_period")]
+    return []
+
+
+def _check_csv_columns(rows, header, shown, finite=()):
     """Every row of a sweep's or map-sweep's CSV has the header's fields, each numeric one of its
     kind (BadInput naming the file, the line and the column): what the figure reads is never a
-    silent nan or a traceback."""
+    silent nan or a traceback. `finite`: more columns that are finite numbers."""
     for line, row in enumerate(rows, 2):
         if None in row or any(v is None for v in row.values()):
             raise BadInput("input", f"'{shown}' line {line}", f"a row of {len(header)} fields, as its header")
@@ -347,14 +356,15 @@ def _check_csv_columns(rows, header, shown):
             if column in _WHOLE:
                 valid = "a whole number >= 0"
                 ok = text.isdigit() and text.isascii() and len(text) <= 18
-            elif column in _NON_NEGATIVE or column in _FINITE:
-                valid = "a finite number >= 0" if column in _NON_NEGATIVE else (
+            elif column in _NON_NEGATIVE or column in _FINITE or column in finite or column.startswith("amplitude:"):
+                non_negative = column in _NON_NEGATIVE or column.startswith("amplitude:")
+                valid = "a finite number >= 0" if non_negative else (
                     "a finite number > 0" if column in ("chi", "eta", "omega") else "a finite number")
                 try:
                     v = float(text)
                 except ValueError:
                     v = math.nan
-                ok = math.isfinite(v) and (v >= 0 if column in _NON_NEGATIVE else True) and (
+                ok = math.isfinite(v) and (v >= 0 if non_negative else True) and (
                     v > 0 if column in ("chi", "eta", "omega") else True)
             else:
                 continue
@@ -374,7 +384,7 @@ def csv_result(name, text, shown=None):
             raise BadInput("input", f"'{shown}'", "a map-sweep file with at least one cell (a row with k = 0)")
         return MapSweep(name, rows, header)
     if {"chain", "step", "k", "period"} <= set(header):
-        _check_csv_columns(rows, header, shown)
+        _check_csv_columns(rows, header, shown, _sweep_state_columns(header))
         if not rows:
             raise BadInput("input", f"'{shown}'", "a sweep file with at least one point")
         return Sweep(name, rows, header)
@@ -435,7 +445,7 @@ def symbol(name):
 
 def quantity_label(name):
     """An axis label for a column, in words."""
-    words = {"omega": r"forcing frequency $\omega$", "chi": r"mass ratio $\chi$", "eta": r"stiffness ratio $\eta$",
+    words = {"omega": r"forcing frequency $\omega$", "chi": r"stiffness ratio $\chi$", "eta": r"mass ratio $\eta$",
              "u_s": r"sliding friction level $u_s$", "u_r": r"static friction level $u_r$", "phi": r"forcing phase $\varphi$",
              "x10": r"$x_1(0)$", "x20": r"$x_2(0)$", "v10": r"$\dot x_1(0)$", "stick-fraction": "fraction of the period stuck",
              "stops": "stops per period", "sticks": "sticks per period",
@@ -1003,6 +1013,8 @@ def _response_figure(results, options, plt):
         y = options.y
     elif all(r.kind == "curve" for r in results):
         y = results[0].second
+    elif results[0].kind == "sweep" and "amplitude:x2" not in results[0].header:
+        y = next(c for c in results[0].header if c.startswith("amplitude:"))  # a model's contact coordinate
     else:
         y = "amplitude:x2"
     _check_quantity(options, "x", x, results)

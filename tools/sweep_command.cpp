@@ -8,10 +8,12 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "model_find.hpp"
 #include "progress_line.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_sweep.hpp"
 #include "stickslip/io/output_marker.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
@@ -35,20 +37,19 @@ struct SweepArgs {
   std::string seed = Text(SweepCommand{}.seed);
   std::string threads = Text(SweepCommand{}.threads);
   std::string output;
+  std::string model;  // --model FILE: a user's oscillator (io/model_sweep.hpp)
   bool force = false;
 };
 
-int RunSweep(const SweepArgs& args) {
-  CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
-  const ModelStart input = BuildModelStart(ToStartInput(args.origin));
+// The options as the library's command; their numbers checked by PlanSweep, as Python's are.
+SweepCommand CommandOf(const SweepArgs& args, std::string_view from_to_range) {
   SweepCommand command;
   command.parameter = args.parameter;
-  // The texts become numbers here; PlanSweep checks them, as it does for Python's sweep.
   auto number = [](const char* field, const std::string& text) {
     return ParseNumber(field, text, SweepOptionRange(field));
   };
-  command.from = ParseNumber("from", args.from, SetKeyRange(args.parameter));
-  command.to = ParseNumber("to", args.to, SetKeyRange(args.parameter));
+  command.from = ParseNumber("from", args.from, from_to_range);
+  command.to = ParseNumber("to", args.to, from_to_range);
   command.steps = number("steps", args.steps);
   command.transients = number("transients", args.transients);
   command.periods = number("periods", args.periods);
@@ -57,20 +58,50 @@ int RunSweep(const SweepArgs& args) {
   command.scatter = number("scatter", args.scatter);
   command.seed = number("seed", args.seed);
   command.threads = number("threads", args.threads);
-  const SweepPlan plan = PlanSweep(command, input);
-  SweepOptions options = plan.options;
-  const int chains = static_cast<int>(plan.starts.size());
-  ProgressLine line("sweep");
-  options.progress = line.Callback();
-  const std::vector<SweepPoint> points = Sweep(input.parameters, plan.starts, input.phi, options);
-  line.Clear();
-  WriteFileAtomically(args.output, SweepCsv(points, options.parameter, input.phi));
+  return command;
+}
+
+void PrintSwept(const SweepArgs& args, const SweepOptions& options, int chains, int threads,
+                const std::vector<SweepPoint>& points) {
   int periodic = 0;
   for (const SweepPoint& p : points) periodic += p.period > 0;
-  const int items = options.start == SweepStart::kChained ? chains : chains * (options.steps + 1);
   fmt::print("sweep {} from {} to {}{} ({}), {} chain(s) on {} thread(s): {} points, {} periodic; written to {}\n",
              args.parameter, options.from, options.to, options.start == SweepStart::kChained ? " and back" : "",
-             args.start, chains, WorkerCount(options.threads, items), points.size(), periodic, args.output);
+             args.start, chains, threads, points.size(), periodic, args.output);
+}
+
+// sweep --model: from rest and states scattered around it; the paper's model's start options refused.
+int RunModelSweep(const SweepArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"--preset", "--point", "--results"}) {
+    if (cmd.count(option) == 0) continue;
+    throw InvalidInput::WithMessage(
+        option + 2, fmt::format("{} is not taken with --model: the sweep starts from rest (and --chains - 1 states "
+                                "scattered around it); --set sets the model's parameters",
+                                option));
+  }
+  CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
+  const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.origin.set));
+  ProgressLine line("sweep");
+  const ModelSweepRun run = SweepModel(start, CommandOf(args, "a finite number in the parameter's range"), line.Callback());
+  line.Clear();
+  WriteFileAtomically(args.output, ModelSweepCsv(run));
+  PrintSwept(args, run.options, run.chains, run.threads, run.points);
+  return kExitOk;
+}
+
+int RunSweep(const SweepArgs& args) {
+  CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
+  const ModelStart input = BuildModelStart(ToStartInput(args.origin));
+  const SweepPlan plan = PlanSweep(CommandOf(args, SetKeyRange(args.parameter)), Pascal2014{}.Description());
+  SweepOptions options = plan.options;
+  ProgressLine line("sweep");
+  options.progress = line.Callback();
+  const std::vector<SweepPoint> points = Sweep(
+      input.parameters, ScatteredStarts(input.initial_state, plan.scatter, plan.chains, plan.seed), input.phi, options);
+  line.Clear();
+  WriteFileAtomically(args.output, SweepCsv(Pascal2014{}, points, options.parameter, input.phi));
+  const int items = options.start == SweepStart::kChained ? plan.chains : plan.chains * (options.steps + 1);
+  PrintSwept(args, options, plan.chains, WorkerCount(options.threads, items), points);
   return kExitOk;
 }
 
@@ -89,7 +120,7 @@ Command AddSweepCommand(CLI::App& app) {
       "states scattered around it, and run in parallel; the output does not depend on --threads.");
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
-  cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r")->capture_default_str();
+  cmd->add_option("--parameter", args->parameter, "chi, eta, omega, u_s or u_r (with --model: one of the model's)")->capture_default_str();
   cmd->add_option("--from", args->from, "first value (the parameter's valid range)")->type_name("FLOAT")->required();
   cmd->add_option("--to", args->to, "last value of the up pass (of the only pass with --start fixed)")->type_name("FLOAT")->required();
   cmd->add_option("--steps", args->steps, "intervals between --from and --to (1 to 1e5)")->type_name("INT")->capture_default_str();
@@ -111,7 +142,14 @@ Command AddSweepCommand(CLI::App& app) {
                   "CSV file: chain,direction,step,<parameter>,section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2")
       ->required();
   cmd->add_flag("--force", args->force, kForceHelp);
-  return {cmd, [args] { return RunSweep(*args); }};
+  cmd->add_option("--model", args->model,
+                  "sweep the oscillator in this run file's [model] (see describe) instead of the paper's: from rest "
+                  "and --chains - 1 states scattered around it, the section at forcing phase 0, --parameter one of "
+                  "the model's (omega, F_k, F_s, v_b; SI units), --set its parameters; the CSV's state columns are "
+                  "the model's coordinates and velocities (v<k> for x<k>, v_q for any other q), the amplitude the "
+                  "contact's coordinate's. A model without forcing is refused (no forcing phase)")
+      ->type_name("FILE");
+  return {cmd, [args, cmd] { return args->model.empty() ? RunSweep(*args) : RunModelSweep(*args, *cmd); }};
 }
 
 }  // namespace stickslip::cli

@@ -21,6 +21,7 @@
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_sweep.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/io/run_file.hpp"
@@ -290,16 +291,24 @@ class Stepper {
 
 // ---- sweep
 
+// The paper's model's sweep, or (with `model`) a run file's [model]'s.
 struct SweepResult {
   std::vector<SweepPoint> points;
-  ParameterId parameter = ParameterId::kOmega;
+  int parameter = 0;  // its index among the model's parameters
   double phi_section = 0.0;
   int threads = 1;  // the threads the sweep ran on
   int chains = 1;
+  std::optional<DynamicLinearOscillator> model;
+
+  std::string ParameterName() const {
+    return (model ? model->Description() : Pascal2014{}.Description()).parameters[parameter].name;
+  }
+  std::string Csv() const {
+    return model ? SweepCsv(*model, points, parameter, phi_section) : SweepCsv(Pascal2014{}, points, parameter, phi_section);
+  }
 };
 
-SweepResult RunSweep(const py::dict& start, const py::dict& o) {
-  const ModelStart origin = BuildModelStart(ToStartInput(start));
+SweepCommand SweepCommandOf(const py::dict& o) {
   SweepCommand command;
   command.parameter = o["parameter"].cast<std::string>();
   command.from = o["from"].cast<double>();
@@ -312,19 +321,37 @@ SweepResult RunSweep(const py::dict& start, const py::dict& o) {
   command.scatter = o["scatter"].cast<double>();
   command.seed = o["seed"].cast<double>();
   command.threads = o["threads"].cast<double>();
-  const SweepPlan plan = PlanSweep(command, origin);
+  return command;
+}
+
+SweepResult RunSweep(const py::dict& start, const py::dict& o) {
+  const ModelStart origin = BuildModelStart(ToStartInput(start));
+  const SweepPlan plan = PlanSweep(SweepCommandOf(o), Pascal2014{}.Description());
   SweepResult result;
   result.parameter = plan.options.parameter;
   result.phi_section = origin.phi;
-  result.chains = static_cast<int>(plan.starts.size());
+  result.chains = plan.chains;
   const int items = plan.options.start == SweepStart::kChained ? result.chains
                                                                 : result.chains * (plan.options.steps + 1);
   result.threads = WorkerCount(plan.options.threads, items);
   {
     py::gil_scoped_release release;
-    result.points = Sweep(origin.parameters, plan.starts, origin.phi, plan.options);
+    result.points = Sweep(origin.parameters, ScatteredStarts(origin.initial_state, plan.scatter, plan.chains, plan.seed),
+                          origin.phi, plan.options);
   }
   return result;
+}
+
+// A run file's [model] swept from rest (io/model_sweep.hpp), as `stickslip sweep --model`.
+SweepResult RunModelSweep(const std::string& path, const NamedValues& set, const py::dict& o) {
+  const ModelFileStart start = ReadModelFileStart(path, set);
+  const SweepCommand command = SweepCommandOf(o);
+  std::optional<ModelSweepRun> run;
+  {
+    py::gil_scoped_release release;
+    run.emplace(SweepModel(start, command));
+  }
+  return {std::move(run->points), run->options.parameter, 0.0, run->threads, run->chains, std::move(run->model)};
 }
 
 template <typename T, typename Get>
@@ -339,7 +366,7 @@ void BindSweep(py::module_& m) {
                           "A brute-force sweep: one row per (chain, pass, step), ordered by chain, pass (up\n"
                           "before down) and step whatever the threads; `section` holds the recorded\n"
                           "stroboscopic states, shape (rows, periods, 4).")
-      .def_property_readonly("parameter", [](const SweepResult& r) { return std::string(ToString(r.parameter)); })
+      .def_property_readonly("parameter", [](const SweepResult& r) { return r.ParameterName(); })
       .def_property_readonly("section_phase", [](const SweepResult& r) { return r.phi_section; })
       .def_property_readonly("threads", [](const SweepResult& r) { return r.threads; },
                              "the threads the sweep ran on")
@@ -365,18 +392,20 @@ void BindSweep(py::module_& m) {
                              [](const SweepResult& r) {
                                const py::ssize_t rows = static_cast<py::ssize_t>(r.points.size());
                                const py::ssize_t k = rows == 0 ? 0 : static_cast<py::ssize_t>(r.points[0].section.size());
-                               py::array_t<double> a({rows, k, py::ssize_t{4}});
+                               const py::ssize_t n = k == 0 ? 4 : static_cast<py::ssize_t>(r.points[0].section[0].size());
+                               py::array_t<double> a({rows, k, n});
                                for (py::ssize_t i = 0; i < rows; ++i) {
                                  for (py::ssize_t j = 0; j < k; ++j) {
-                                   for (int c = 0; c < 4; ++c) a.mutable_at(i, j, c) = r.points[i].section[j](c);
+                                   for (py::ssize_t c = 0; c < n; ++c) a.mutable_at(i, j, c) = r.points[i].section[j](c);
                                  }
                                }
                                return a;
                              })
-      .def("csv", [](const SweepResult& r) { return SweepCsv(r.points, r.parameter, r.phi_section); },
+      .def("csv", [](const SweepResult& r) { return r.Csv(); },
            "The CSV text `stickslip sweep --output` writes for the same sweep")
       .def("__len__", [](const SweepResult& r) { return r.points.size(); });
   m.def("_sweep", &RunSweep, py::arg("start"), py::arg("options"));
+  m.def("_sweep_model", &RunModelSweep, py::arg("path"), py::arg("set"), py::arg("options"));
 }
 
 }  // namespace

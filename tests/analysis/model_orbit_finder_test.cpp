@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "stickslip/model/chain.hpp"
 #include "support/belt_cycle.hpp"
 #include "support/den_hartog_orbit.hpp"
+#include "support/den_hartogs_mass.hpp"
 #include "support/five_mass_chain.hpp"
 
 namespace stickslip {
@@ -23,15 +23,6 @@ ModelFindResult<Model> FromRest(const Model& model, const Model::Parameters& p, 
   ModelFindOptions options;
   options.duration = duration;
   return FindModelOrbit(model, p, FilledState(model, 0.0), options);
-}
-
-// Den Hartog's undamped mass: k = m = 1, force amplitude 1 (F_k, F_s and v_b are parameters).
-Model DenHartogsMass() {
-  Chain chain;
-  chain.masses = {1.0};
-  chain.springs = {{0, kGround, 1.0}};
-  chain.forcing = {1.0};
-  return Model(ChainData(chain));
 }
 
 // Two belt speeds, either side of v_b = omega_n d (where the slip's arc is half a circle).

@@ -1,6 +1,7 @@
 // The brute-force sweep: its section states against the independent Odeint simulator, the
 // chaining of points (the down pass from where the up pass ended), chains independent of each
-// other, and an output that does not depend on the number of threads.
+// other, and an output that does not depend on the number of threads; for a model of the user's,
+// Den Hartog's closed-form amplitude over the forcing frequency.
 #include "stickslip/analysis/sweep.hpp"
 
 #include <algorithm>
@@ -14,11 +15,15 @@
 
 #include <gtest/gtest.h>
 
+#include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/pascal_2014/modal.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 #include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
+#include "support/belt_cycle.hpp"
+#include "support/den_hartog_orbit.hpp"
+#include "support/den_hartogs_mass.hpp"
 #include "support/solved_presets.hpp"
 
 namespace stickslip {
@@ -111,10 +116,10 @@ TEST(Sweep, OutputDoesNotDependOnTheNumberOfThreads) {
   for (SweepStart start : {SweepStart::kChained, SweepStart::kFixed}) {
     SweepOptions o = ShortSweep(start);
     o.threads = 1;
-    const std::string serial = SweepCsv(Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi);
+    const std::string serial = SweepCsv(Pascal2014{}, Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi);
     for (int threads : {2, 3, 8}) {
       o.threads = threads;
-      EXPECT_EQ(SweepCsv(Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi), serial) << threads << " threads";
+      EXPECT_EQ(SweepCsv(Pascal2014{}, Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi), serial) << threads << " threads";
     }
   }
 }
@@ -153,8 +158,8 @@ TEST(Sweep, AmplitudeOfX2IsTheMaximumOfTheSimulatedMotionOverTheRecordedPeriods)
     for (const TimeSample& s : r.samples) {
       if (s.t >= o.transient_periods * period) sampled = std::max(sampled, std::abs(s.state(1)));
     }
-    EXPECT_LE(sampled, point.amplitude_x2 + 1e-6) << "omega = " << point.value;
-    EXPECT_GE(sampled, point.amplitude_x2 - 1e-5) << "omega = " << point.value;
+    EXPECT_LE(sampled, point.contact_amplitude + 1e-6) << "omega = " << point.value;
+    EXPECT_GE(sampled, point.contact_amplitude - 1e-5) << "omega = " << point.value;
   }
 }
 
@@ -170,7 +175,7 @@ TEST(Sweep, AmplitudeOfX2OnASettledOrbitIsTheOrbitsMeasure) {
   o.start = SweepStart::kFixed;
   const SweepPoint p = Sweep(orbit.parameters, {orbit.InitialState()}, orbit.phi, o).front();
   ASSERT_EQ(p.period, 1);
-  EXPECT_NEAR(p.amplitude_x2, Measure(orbit).amplitude_x2, 1e-9);
+  EXPECT_NEAR(p.contact_amplitude, Measure(orbit).amplitude_x2, 1e-9);
 }
 
 // Issue 11, item 9: --transients 1e6 failed with max_events (2e6 events in one simulation). The
@@ -234,7 +239,7 @@ TEST(Sweep, RejectsAnInteriorValueOnANaturalFrequencyNamingTheStep) {
 TEST(Sweep, NamesTheEndThatIsInvalid) {
   const PaperExample& e = *FindPaperExample("paper-4.1");
   SweepOptions o = ShortSweep(SweepStart::kChained);
-  o.parameter = ParameterId::kStaticFriction;
+  o.parameter = static_cast<int>(ParameterId::kStaticFriction);
   o.from = 0.3;
   o.to = 0.05;  // below u_s = 0.1
   try {
@@ -312,7 +317,7 @@ TEST(SweepProgress, CountsEveryPointOnceInOrderOnAnyNumberOfThreads) {
   const std::vector<State> starts = ScatteredStarts(e.initial_state, 1.0, 5, 3);
   for (SweepStart start : {SweepStart::kChained, SweepStart::kFixed}) {
     SweepOptions o = ShortSweep(start);
-    const std::string quiet = SweepCsv(Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi);
+    const std::string quiet = SweepCsv(Pascal2014{}, Sweep(e.parameters, starts, e.phi, o), o.parameter, e.phi);
     for (int threads : {1, 4}) {
       o.threads = threads;
       std::vector<double> done;
@@ -331,8 +336,58 @@ TEST(SweepProgress, CountsEveryPointOnceInOrderOnAnyNumberOfThreads) {
       ASSERT_EQ(done.size(), points.size()) << threads << " threads";
       EXPECT_EQ(total, static_cast<double>(points.size()));
       for (std::size_t k = 0; k < done.size(); ++k) EXPECT_EQ(done[k], static_cast<double>(k + 1));
-      EXPECT_EQ(SweepCsv(points, o.parameter, e.phi), quiet);
+      EXPECT_EQ(SweepCsv(Pascal2014{}, points, o.parameter, e.phi), quiet);
     }
+  }
+}
+
+// From rest at every omega = r (one pass), friction takes the transient out and the motion settles
+// on Den Hartog's non-sticking orbit: period 1, two stops and no stick per period, and the
+// amplitude X(r, beta) = sqrt(V^2 - beta^2 U^2) of his closed form (FRICTION-LITERATURE.md), to
+// what 400 periods leave of the transient. Once through the paper's column names, the model's.
+TEST(Sweep, FollowsDenHartogsClosedFormAmplitudeForAModelOfTheUsers) {
+  const DynamicLinearOscillator model = DenHartogsMass();
+  const double beta = 0.25;
+  const SweepOptions o{.from = 1.5, .to = 2.5, .steps = 4, .transient_periods = 400, .recorded_periods = 8,
+                       .start = SweepStart::kFixed, .threads = 2};
+  const std::vector<SweepPoint> points =
+      Sweep(model, {1.5, beta, beta, 0.0}, {Eigen::VectorXd::Zero(2)}, 0.0, o);
+  ASSERT_EQ(points.size(), 5u);
+  for (const SweepPoint& p : points) {
+    EXPECT_EQ(p.period, 1) << "omega = " << p.value;
+    EXPECT_EQ(p.stops_per_period, 2.0);
+    EXPECT_EQ(p.sticks_per_period, 0.0);
+    EXPECT_NEAR(p.contact_amplitude, DenHartogOrbit(p.value, beta).amplitude, 1e-8) << "omega = " << p.value;
+    ASSERT_EQ(p.section.front().size(), 2);
+  }
+  const std::string csv = SweepCsv(model, points, SweepOptions::kForcingFrequency, 0.0);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "chain,direction,step,omega,section_phase,k,m1,v_m1,stops_per_period,sticks_per_period,period,amplitude:m1");
+  EXPECT_TRUE(IsSweepCsvHeader(csv.substr(0, csv.find('\n'))));
+  SweepOptions one_thread = o;
+  one_thread.threads = 1;
+  EXPECT_EQ(SweepCsv(model, Sweep(model, {1.5, beta, beta, 0.0}, {Eigen::VectorXd::Zero(2)}, 0.0, one_thread),
+                     SweepOptions::kForcingFrequency, 0.0),
+            csv);
+}
+
+// A model without forcing has no forcing phase to take a section at: refused before any simulation,
+// as a start of another size is.
+TEST(Sweep, RefusesAModelWithoutForcingAndAStartOfAnotherSize) {
+  const BeltCycle belt;
+  const DynamicLinearOscillator autonomous(belt.Data());
+  const SweepOptions o{.parameter = 3, .from = 0.2, .to = 0.3, .steps = 1};
+  try {
+    Sweep(autonomous, {1.0, belt.F_k, belt.F_s, 0.2}, {Eigen::VectorXd::Zero(2)}, 0.0, o);
+    FAIL() << "no error";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "model") << error.what();
+  }
+  try {
+    Sweep(DenHartogsMass(), {1.5, 0.25, 0.25, 0.0}, {Eigen::VectorXd::Zero(3)}, 0.0, SweepOptions{.from = 1.5, .to = 2.0});
+    FAIL() << "no error";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "starts") << error.what();
   }
 }
 

@@ -81,6 +81,35 @@ parameters = { F_k = 1.0, F_s = 1.0, v_b = 0.5 }
 TOML
 expect 5 "steady slip" "$bin" find --model "$work/slide.toml"
 
+# sweep --model: Den Hartog's mass swept in omega from rest, one pass; the amplitude column is the
+# closed form X = sqrt(V^2 - beta^2 U^2) at every point, the columns the model's; the same file on
+# one thread as on two; a file the sweep did not write is not replaced.
+"$bin" sweep --model "$models/den-hartog.toml" --from 1.5 --to 2.5 --steps 4 --transients 400 --periods 8 \
+  --start fixed --chains 1 --threads 2 --output "$work/dh.csv" > "$work/dh.txt" 2>&1 || fail "sweep --model exits $?: $(cat "$work/dh.txt")"
+/usr/bin/python3 - "$work/dh.csv" <<'PY' && pass || fail "sweep --model: not Den Hartog's amplitude"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert list(rows[0])[3:8] == ["omega", "section_phase", "k", "m1", "v_m1"], list(rows[0])
+assert len({r["step"] for r in rows}) == 5
+for r in rows:
+    w, beta = float(r["omega"]), 0.25
+    v, u = 1 / (1 - w * w), math.tan(math.pi / (2 * w)) / w
+    assert abs(float(r["amplitude:m1"]) - math.sqrt(v * v - beta * beta * u * u)) < 1e-8, r
+    assert r["period"] == "1" and r["stops_per_period"] == "2" and r["sticks_per_period"] == "0", r
+PY
+"$bin" sweep --model "$models/den-hartog.toml" --from 1.5 --to 2.5 --steps 4 --transients 400 --periods 8 \
+  --start fixed --chains 1 --threads 1 --output "$work/dh1.csv" > /dev/null 2>&1 && cmp -s "$work/dh.csv" "$work/dh1.csv" &&
+  pass || fail "sweep --model: the file depends on --threads"
+echo "mine" > "$work/mine.csv"
+expect 2 "output" "$bin" sweep --model "$models/den-hartog.toml" --from 1.5 --to 2.5 --output "$work/mine.csv"
+grep -qx mine "$work/mine.csv" && pass || fail "sweep --model replaced a file it did not write"
+expect 2 "model = without forcing is invalid" "$bin" sweep --model "$models/belt.toml" --parameter v_b --from 0.2 --to 0.3 --output "$work/belt.csv"
+expect 2 "parameter = 'chi' is invalid: valid range omega, F_k, F_s, v_b" "$bin" sweep --model "$models/den-hartog.toml" --parameter chi --from 0.2 --to 0.3 --output "$work/x.csv"
+expect 2 "to: " "$bin" sweep --model "$models/den-hartog.toml" --parameter F_s --from 0.25 --to 0.1 --output "$work/x.csv"
+expect 2 "preset is not taken with --model" "$bin" sweep --model "$models/den-hartog.toml" --preset paper-4.1 --from 1 --to 2 --output "$work/x.csv"
+expect 2 "omega2 = 1 is invalid: omega2 is no parameter of the model" "$bin" sweep --model "$models/den-hartog.toml" --set omega2=1 --from 1.5 --to 2 --output "$work/x.csv"
+[ ! -e "$work/belt.csv" ] && [ ! -e "$work/x.csv" ] && pass || fail "a refused sweep --model wrote its file"
+
 # Bad input: the key or option named, exit 2.
 bad() {  # bad <name> <the line of belt.toml to replace> <its replacement>
   sed "s|$2|$3|" "$models/belt.toml" > "$work/$1.toml"

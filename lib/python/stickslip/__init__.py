@@ -414,7 +414,7 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
           steps=_SWEEP_DEFAULTS["steps"], transients=_SWEEP_DEFAULTS["transients"],
           periods=_SWEEP_DEFAULTS["periods"], start=_SWEEP_DEFAULTS["start"], chains=_SWEEP_DEFAULTS["chains"],
           scatter=_SWEEP_DEFAULTS["scatter"], seed=_SWEEP_DEFAULTS["seed"], threads=_SWEEP_DEFAULTS["threads"],
-          preset=None, point=None, results="results", set=None):
+          preset=None, point=None, results="results", set=None, model=None):
     """A brute-force bifurcation diagram by simulation, as `stickslip sweep`.
 
     range       (from, to) of `parameter` (chi, eta, omega, u_s or u_r), in its valid range
@@ -428,14 +428,26 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
     threads     0: every core (0 to 1024); the result does not depend on it
     The section is taken at the forcing phase phi. Returns a SweepResult with NumPy arrays;
     result.csv() is the file `stickslip sweep --output` writes.
+
+    model: a run file with a [model] table (an oscillator of your own, as `stickslip sweep --model`):
+    `parameter` one of its parameters (omega, F_k, F_s, v_b), `set` a dict of them over the file's;
+    the chains start from rest and from states scattered around it, the section at forcing phase 0;
+    section has the model's state size, the CSV its column names. A model without forcing is refused.
     """
-    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     low, high = _pair(range, "range")
     numbers = {"steps": steps, "transients": transients, "periods": periods, "chains": chains, "scatter": scatter,
                "seed": seed, "threads": threads}
     options = {"parameter": _checked(parameter, "parameter", "text"), "from": low, "to": high,
                "start": _checked(start, "start", "text"),
                **{name: _checked(value, name, "number") for name, value in numbers.items()}}
+    if model is not None:
+        given = [name for name, value in (("parameters", parameters), ("state", state), ("phi", phi),
+                                          ("preset", preset), ("point", point)) if value is not None]
+        if given or results != "results":
+            raise ValueError(f"{(given or ['results'])[0]} is invalid with model=: valid left out (the sweep starts "
+                             "from rest; set= gives the model's parameters)")
+        return _core._sweep_model(_checked(model, "model", "path"), _model_set(set), options)
+    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     return _core._sweep(origin, options)
 
 

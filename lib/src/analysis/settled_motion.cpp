@@ -6,23 +6,29 @@
 #include <optional>
 #include <vector>
 
-#include "stickslip/model/pascal_2014/events.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/transient.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 
 namespace stickslip {
 
 namespace {
 
-// max |x2| over the simulated segments of `r`: at each segment's ends, and inside a slip also at
-// the extrema of its closed form (MinimumAndMaximum: the zeros of x2'); NaN if a search was cut short.
-double AmplitudeX2(const SimulationResult& r) {
-  const Parameters& p = r.parameters;
+// max |q_c| of the contact's coordinate c over the simulated segments of `r`: at each segment's
+// ends, and inside a slip also at the extrema of its closed form (MinimumAndMaximum: the zeros of
+// q_c'); NaN if a search was cut short.
+template <OscillatorModel Model>
+double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& r) {
+  const typename Model::Parameters& p = r.parameters;
+  const int c = ContactCoordinate(model);
+  const double omega = model.ForcingFrequency(p);
   double amplitude = 0.0;
-  for (const Segment& s : r.segments) {
-    double low = std::min(s.start(1), s.end(1)), high = std::max(s.start(1), s.end(1));
+  for (const auto& s : r.segments) {
+    double low = std::min(s.start(c), s.end(c)), high = std::max(s.start(c), s.end(c));
     if (s.mode != Mode::kStick) {
-      const ModeMotion<double> motion = MotionInMode(s.mode, s.start, p.omega * s.t_start + r.phi, p);
-      const Extrema e = MinimumAndMaximum(CoordinateAlong(motion, 1), 0.0, s.t_end - s.t_start);
+      const typename Model::Motion motion = model.MotionInMode(s.mode, s.start, omega * s.t_start + r.phi, p);
+      const Extrema e = MinimumAndMaximum(model.CoordinateAlong(motion, c), 0.0, s.t_end - s.t_start);
       if (std::isnan(e.minimum.value) || std::isnan(e.maximum.value)) return std::numeric_limits<double>::quiet_NaN();
       low = std::min(low, e.minimum.value);
       high = std::max(high, e.maximum.value);
@@ -33,12 +39,13 @@ double AmplitudeX2(const SimulationResult& r) {
 }
 
 // The smallest p <= n/2 with section[k + p] == section[k] (to tolerance, absolute) for every k; 0 if none.
-int RepeatingPeriod(const std::vector<State>& section, double tolerance) {
+template <typename StateVector>
+int RepeatingPeriod(const std::vector<StateVector>& section, double tolerance) {
   const int n = static_cast<int>(section.size());
   for (int candidate = 1; candidate <= n / 2; ++candidate) {
     bool repeats = true;
     for (int k = 0; k + candidate < n && repeats; ++k) {
-      repeats = (section[k + candidate] - section[k]).lpNorm<Eigen::Infinity>() <= tolerance;
+      repeats = (section[k + candidate] - section[k]).template lpNorm<Eigen::Infinity>() <= tolerance;
     }
     if (repeats) return candidate;
   }
@@ -46,10 +53,11 @@ int RepeatingPeriod(const std::vector<State>& section, double tolerance) {
 }
 
 // max |section[k + step] - section[k]|_inf over k = from .. from + count - 1.
-double StepMismatch(const std::vector<State>& section, int step, int from, int count) {
+template <typename StateVector>
+double StepMismatch(const std::vector<StateVector>& section, int step, int from, int count) {
   double mismatch = 0.0;
   for (int k = from; k < from + count; ++k) {
-    mismatch = std::max(mismatch, (section[k + step] - section[k]).lpNorm<Eigen::Infinity>());
+    mismatch = std::max(mismatch, (section[k + step] - section[k]).template lpNorm<Eigen::Infinity>());
   }
   return mismatch;
 }
@@ -62,7 +70,8 @@ double StepMismatch(const std::vector<State>& section, int step, int from, int c
 // last p), the distance still to go is at most late/(1 - q) (a geometric tail), and the d-step
 // differences, shrinking too, are at most twice that distance. A motion of least period p has
 // d-step differences that neither shrink nor fit that bound.
-std::optional<double> ContractionOntoPeriod(const std::vector<State>& section, int p, int d) {
+template <typename StateVector>
+std::optional<double> ContractionOntoPeriod(const std::vector<StateVector>& section, int p, int d) {
   const int n = static_cast<int>(section.size());
   const int span = n - 2 * p;  // periods between the first and the last window of p-step differences
   if (span < p) return std::nullopt;
@@ -84,7 +93,8 @@ struct LeastSectionPeriod {
 
 // The period on the section (RepeatingPeriod), reduced to the least divisor d that the section is
 // contracting onto (ContractionOntoPeriod), with the distance still to go.
-LeastSectionPeriod LeastPeriodOnSection(const std::vector<State>& section, double tolerance) {
+template <typename StateVector>
+LeastSectionPeriod LeastPeriodOnSection(const std::vector<StateVector>& section, double tolerance) {
   const int p = RepeatingPeriod(section, tolerance);
   for (int d = 1; d < p; ++d) {
     if (p % d != 0) continue;
@@ -100,10 +110,11 @@ struct PerPeriod {
 
 // Stops and sticks per forcing period over the first `periods` forcing periods of the record (the
 // events are in time order).
-PerPeriod CountPerPeriod(const SimulationResult& r, int periods, double forcing_period) {
+template <typename Model>
+PerPeriod CountPerPeriod(const BasicSimulationResult<Model>& r, int periods, double forcing_period) {
   PerPeriod count;
   const double end = periods * forcing_period;
-  for (const Event& e : r.events) {
+  for (const auto& e : r.events) {
     if (e.t >= end) break;
     count.stops += e.kind == EventKind::kStop;
     count.sticks += e.mode_after == Mode::kStick;
@@ -113,37 +124,52 @@ PerPeriod CountPerPeriod(const SimulationResult& r, int periods, double forcing_
   return count;
 }
 
+// The state at time t (t_start <= t <= t_end of a segment of `r`) from the closed form.
+template <OscillatorModel Model>
+typename Model::State StateAtTime(const Model& model, const BasicSimulationResult<Model>& r, double t) {
+  const auto it = std::lower_bound(r.segments.begin(), r.segments.end(), t,
+                                   [](const auto& s, double time) { return s.t_end < time; });
+  const auto& s = it == r.segments.end() ? r.segments.back() : *it;
+  return model.Flow(s.mode, s.start, model.ForcingFrequency(r.parameters) * s.t_start + r.phi, t - s.t_start, r.parameters);
+}
+
 }  // namespace
 
-SettledMotion SimulateSettled(const Parameters& p, const State& start, double phi_section, const SettleOptions& o) {
-  const double period = 2.0 * std::numbers::pi / p.omega;
-  SettledMotion motion;
-  // The transients in chunks (SimulateTransient), each a simulation under max_events_per_simulation,
+template <OscillatorModel Model>
+BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Model::Parameters& p,
+                                          const typename Model::State& start, double phi_section,
+                                          const SettleOptions& o) {
+  using ModelState = typename Model::State;
+  const double period = 2.0 * std::numbers::pi / model.ForcingFrequency(p);
+  BasicSettledMotion<Model> motion;
+  // The transients in chunks (SimulateTransientAt), each a simulation under max_events_per_simulation,
   // so that the largest transients (1e6 periods, millions of events) run.
-  TransientOptions transient;
+  BasicTransientOptions<ModelState> transient;
   transient.periods = o.transient_periods;
   transient.simulation.max_events = o.max_events_per_simulation;
-  const Transient settled = SimulateTransient(SimulateExact, p, start, phi_section, transient);
+  const auto simulate = [&model](const typename Model::Parameters& q, const ModelState& x, double phi,
+                                 const BasicSimulationOptions<ModelState>& so) { return SimulateExact(model, q, x, phi, so); };
+  const BasicTransient<ModelState> settled = SimulateTransientAt(model.ForcingFrequency(p), simulate, p, start, phi_section, transient);
   motion.last = settled.state;
   if (!settled.Completed()) {
     motion.end = settled.end;
     motion.message = settled.message;
     return motion;
   }
-  SimulationOptions record;
+  BasicSimulationOptions<ModelState> record;
   record.duration = o.recorded_periods * period;
   record.max_events = o.max_events_per_simulation;
-  motion.record = SimulateExact(p, settled.state, phi_section, record);
-  const SimulationResult& r = motion.record;
+  motion.record = SimulateExact(model, p, settled.state, phi_section, record);
+  const BasicSimulationResult<Model>& r = motion.record;
   if (!r.Completed()) {
     motion.end = r.end;
     motion.message = r.message;
     if (!r.segments.empty()) motion.last = r.segments.back().end;
     return motion;
   }
-  for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAt(r, k * period));
+  for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * period));
   motion.last = motion.section.back();
-  motion.amplitude_x2 = AmplitudeX2(r);
+  motion.contact_amplitude = ContactAmplitude(model, r);
   const LeastSectionPeriod least = LeastPeriodOnSection(motion.section, o.periodicity_tolerance);
   motion.period = least.period;
   motion.settling = least.settling;
@@ -154,6 +180,17 @@ SettledMotion SimulateSettled(const Parameters& p, const State& start, double ph
   motion.stops_per_period = per_period.stops;
   motion.sticks_per_period = per_period.sticks;
   return motion;
+}
+
+template BasicSettledMotion<Pascal2014> SimulateSettled(const Pascal2014&, const Parameters&, const State&, double,
+                                                         const SettleOptions&);
+template BasicSettledMotion<DynamicLinearOscillator> SimulateSettled(const DynamicLinearOscillator&,
+                                                                     const DynamicLinearOscillator::Parameters&,
+                                                                     const DynamicLinearOscillator::State&, double,
+                                                                     const SettleOptions&);
+
+SettledMotion SimulateSettled(const Parameters& p, const State& start, double phi_section, const SettleOptions& o) {
+  return SimulateSettled(Pascal2014{}, p, start, phi_section, o);
 }
 
 }  // namespace stickslip

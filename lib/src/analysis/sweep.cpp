@@ -7,9 +7,12 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stickslip/analysis/settled_motion.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/transient.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip {
@@ -20,8 +23,9 @@ namespace {
 // range (up, down or fixed), was "pass" until 0.1 (a Python keyword, awkward in pandas).
 constexpr const char* kSweepColumnsBefore = "chain,direction,step,";
 constexpr const char* kOlderSweepColumnsBefore = "chain,pass,step,";
-constexpr const char* kSweepColumnsAfter =
-    "section_phase,k,x1,x2,v1,v2,stops_per_period,sticks_per_period,period,amplitude:x2";
+// The columns between the parameter and the state, and after the state up to the amplitude's name.
+constexpr const char* kSectionColumns = "section_phase,k";
+constexpr const char* kMotionColumns = "stops_per_period,sticks_per_period,period,amplitude:";
 
 double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
   // The last step lands on the range's end exactly: to - (to - from) may miss `from` by an ulp,
@@ -31,40 +35,96 @@ double ValueAt(const SweepOptions& o, SweepPass pass, int step) {
   return pass == SweepPass::kDown ? o.to - fraction * (o.to - o.from) : o.from + fraction * (o.to - o.from);
 }
 
-// A simulation of the point that stopped early, named.
-std::runtime_error PointError(const SweepOptions& o, int chain, SweepPass pass, int step, const Parameters& p,
-                              const std::string& message) {
-  return std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
-                                        ToString(pass), step, ToString(o.parameter), p[o.parameter], message));
+// The swept parameter's index among the model's.
+template <OscillatorModel Model>
+int SweptParameter(const SweepOptions& o) {
+  return o.parameter == SweepOptions::kForcingFrequency ? Model::kForcingFrequencyParameter : o.parameter;
 }
 
 // One point: transients from `start`, then the recorded section (SimulateSettled). Time 0 is a
-// section time (the forcing phase there is phi_section, as at every multiple of the period).
-SweepPoint SimulatePoint(const Parameters& base, const State& start, double phi_section, const SweepOptions& o,
-                         int chain, SweepPass pass, int step) {
-  Parameters p = base;
-  p[o.parameter] = ValueAt(o, pass, step);
+// section time (the forcing phase there is phi_section, as at every multiple of the period). A
+// simulation that stops early throws, naming the point.
+template <OscillatorModel Model>
+SweepPoint SimulatePoint(const Model& model, const typename Model::Parameters& base,
+                         const typename Model::State& start, double phi_section, const SweepOptions& o, int chain,
+                         SweepPass pass, int step) {
+  typename Model::Parameters p = base;
+  const int k = SweptParameter<Model>(o);
+  Model::ParameterAt(p, k) = ValueAt(o, pass, step);
   const SettleOptions settle{o.transient_periods, o.recorded_periods, o.periodicity_tolerance,
                              o.max_events_per_simulation};
-  SettledMotion motion = SimulateSettled(p, start, phi_section, settle);
-  if (!motion.Completed()) throw PointError(o, chain, pass, step, p, motion.message);
-  return SweepPoint{chain,    pass, step, p[o.parameter], std::move(motion.section), motion.stops_per_period,
-                    motion.sticks_per_period, motion.period, motion.amplitude_x2};
+  BasicSettledMotion<Model> motion = SimulateSettled(model, p, start, phi_section, settle);
+  if (!motion.Completed()) {
+    throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
+                                         ToString(pass), step, model.Description().parameters[k].name,
+                                         Model::ParameterAt(p, k), motion.message));
+  }
+  std::vector<Eigen::VectorXd> section(motion.section.begin(), motion.section.end());
+  return SweepPoint{chain, pass, step, Model::ParameterAt(p, k), std::move(section), motion.stops_per_period,
+                    motion.sticks_per_period, motion.period, motion.contact_amplitude};
 }
 
 // A chain's up pass and then its down pass, each point from the last section state before it.
-std::vector<SweepPoint> ChainedPasses(const Parameters& base, const State& start, double phi_section,
-                                      const SweepOptions& o, int chain, const std::function<void()>& point_done) {
+template <OscillatorModel Model>
+std::vector<SweepPoint> ChainedPasses(const Model& model, const typename Model::Parameters& base,
+                                      const typename Model::State& start, double phi_section, const SweepOptions& o,
+                                      int chain, const std::function<void()>& point_done) {
   std::vector<SweepPoint> points;
-  State x = start;
+  typename Model::State x = start;
   for (SweepPass pass : {SweepPass::kUp, SweepPass::kDown}) {
     for (int step = 0; step <= o.steps; ++step) {
-      points.push_back(SimulatePoint(base, x, phi_section, o, chain, pass, step));
+      points.push_back(SimulatePoint(model, base, x, phi_section, o, chain, pass, step));
       x = points.back().section.back();
       point_done();
     }
   }
   return points;
+}
+
+// Throws InvalidInput for what Sweep refuses before any simulation.
+template <OscillatorModel Model>
+void CheckSweep(const Model& model, const typename Model::Parameters& base,
+                const std::vector<typename Model::State>& starts, const SweepOptions& options) {
+  if (model.Autonomous()) {
+    throw InvalidInput("model", "without forcing",
+                       "a forced model: a sweep's section is the state at one forcing phase, once per period");
+  }
+  if (starts.empty()) throw InvalidInput("starts", "none", "at least one starting state");
+  for (const auto& x : starts) {
+    if (x.size() != model.StateSize()) throw InvalidInput("starts", fmt::format("a state of size {}", x.size()), fmt::format("the model's, {}", model.StateSize()));
+  }
+  const int k = SweptParameter<Model>(options);
+  if (k < 0 || k >= Model::kParameterCount) {
+    throw InvalidInput("parameter", options.parameter, fmt::format("0 <= parameter < {}", int{Model::kParameterCount}));
+  }
+  if (options.steps < 1) throw InvalidInput("steps", options.steps, "steps >= 1");
+  if (options.transient_periods < 0 || options.transient_periods > kMaxTransientPeriods) {
+    throw InvalidInput("transient_periods", options.transient_periods,
+                       fmt::format("0 <= transient_periods <= {}", kMaxTransientPeriods));
+  }
+  if (options.recorded_periods < 1) {
+    throw InvalidInput("recorded_periods", options.recorded_periods, "recorded_periods >= 1");
+  }
+  auto invalid_at = [&](double value) {
+    typename Model::Parameters p = base;
+    Model::ParameterAt(p, k) = value;
+    return model.Validate(p);
+  };
+  for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
+    if (const auto invalid = invalid_at(value)) throw InvalidInput::WithMessage(field, fmt::format("{}: {}", field, invalid->what()));
+  }
+  // Every value simulated, not only the ends: an interior one may fall on a natural frequency.
+  const bool chained = options.start == SweepStart::kChained;
+  for (SweepPass pass : chained ? std::vector{SweepPass::kUp, SweepPass::kDown} : std::vector{SweepPass::kFixed}) {
+    for (int step = 0; step <= options.steps; ++step) {
+      const double value = ValueAt(options, pass, step);
+      if (const auto invalid = invalid_at(value)) {
+        throw InvalidInput::WithMessage(
+            "steps", fmt::format("steps = {} puts step {} of the {} pass at {} = {}: {}", options.steps, step,
+                                 ToString(pass), model.Description().parameters[k].name, value, invalid->what()));
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -78,37 +138,12 @@ std::string ToString(SweepPass pass) {
   return "?";
 }
 
-std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
+template <OscillatorModel Model>
+std::vector<SweepPoint> Sweep(const Model& model, const typename Model::Parameters& base,
+                              const std::vector<typename Model::State>& starts, double phi_section,
                               const SweepOptions& options) {
-  if (starts.empty()) throw InvalidInput("starts", "none", "at least one starting state");
-  if (options.steps < 1) throw InvalidInput("steps", options.steps, "steps >= 1");
-  if (options.transient_periods < 0 || options.transient_periods > kMaxTransientPeriods) {
-    throw InvalidInput("transient_periods", options.transient_periods,
-                       fmt::format("0 <= transient_periods <= {}", kMaxTransientPeriods));
-  }
-  if (options.recorded_periods < 1) {
-    throw InvalidInput("recorded_periods", options.recorded_periods, "recorded_periods >= 1");
-  }
-  auto invalid_at = [&](double value) {
-    Parameters p = base;
-    p[options.parameter] = value;
-    return Validate(p);
-  };
-  for (const auto& [field, value] : {std::pair{"from", options.from}, std::pair{"to", options.to}}) {
-    if (const auto invalid = invalid_at(value)) throw InvalidInput::WithMessage(field, fmt::format("{}: {}", field, invalid->what()));
-  }
-  // Every value simulated, not only the ends: an interior one may fall on a natural frequency.
+  CheckSweep(model, base, starts, options);
   const bool chained = options.start == SweepStart::kChained;
-  for (SweepPass pass : chained ? std::vector{SweepPass::kUp, SweepPass::kDown} : std::vector{SweepPass::kFixed}) {
-    for (int step = 0; step <= options.steps; ++step) {
-      const double value = ValueAt(options, pass, step);
-      if (const auto invalid = invalid_at(value)) {
-        throw InvalidInput::WithMessage(
-            "steps", fmt::format("steps = {} puts step {} of the {} pass at {} = {}: {}", options.steps, step,
-                                 ToString(pass), ToString(options.parameter), value, invalid->what()));
-      }
-    }
-  }
   const int chains = static_cast<int>(starts.size());
   const int per_chain = options.steps + 1;
   // Each work item fills its own slot; the slots are joined in index order, so the output is the
@@ -127,10 +162,10 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& 
   };
   ParallelFor(items, options.threads, [&](int i) {
     if (chained) {
-      slots[i] = ChainedPasses(base, starts[i], phi_section, options, i, point_done);
+      slots[i] = ChainedPasses(model, base, starts[i], phi_section, options, i, point_done);
     } else {
       const int chain = i / per_chain;
-      slots[i] = {SimulatePoint(base, starts[chain], phi_section, options, chain, SweepPass::kFixed, i % per_chain)};
+      slots[i] = {SimulatePoint(model, base, starts[chain], phi_section, options, chain, SweepPass::kFixed, i % per_chain)};
       point_done();
     }
   });
@@ -141,7 +176,13 @@ std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& 
   return points;
 }
 
-std::vector<State> ScatteredStarts(const State& centre, double half_width, int count, std::uint64_t seed) {
+std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
+                              const SweepOptions& options) {
+  return Sweep(Pascal2014{}, base, starts, phi_section, options);
+}
+
+template <typename StateVector>
+std::vector<StateVector> ScatteredStarts(const StateVector& centre, double half_width, int count, std::uint64_t seed) {
   // splitmix64 (Steele, Lea and Flood 2014): fixed arithmetic, unlike the standard library's
   // distributions, whose output is left to the implementation.
   auto next = [&seed] {
@@ -150,11 +191,11 @@ std::vector<State> ScatteredStarts(const State& centre, double half_width, int c
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
   };
-  std::vector<State> starts;
+  std::vector<StateVector> starts;
   if (count > 0) starts.push_back(centre);
   for (int c = 1; c < count; ++c) {
-    State x = centre;
-    for (int i = 0; i < 4; ++i) {
+    StateVector x = centre;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
       const double unit = static_cast<double>(next() >> 11) * 0x1.0p-53;  // [0, 1), 53 random bits
       x(i) += half_width * (2.0 * unit - 1.0);
     }
@@ -164,24 +205,40 @@ std::vector<State> ScatteredStarts(const State& centre, double half_width, int c
 }
 
 bool IsSweepCsvHeader(std::string_view line) {
+  // chain,direction,step,<parameter>,section_phase,k,<state...>,stops_per_period,...,amplitude:<q_c>
   const std::string_view before = line.starts_with(kOlderSweepColumnsBefore) ? kOlderSweepColumnsBefore : kSweepColumnsBefore;
-  const std::string_view after = kSweepColumnsAfter;
-  if (line.size() < before.size() + after.size() + 1 || !line.starts_with(before) || !line.ends_with(after)) return false;
-  const std::string_view parameter = line.substr(before.size(), line.size() - before.size() - after.size() - 1);
-  return line[line.size() - after.size() - 1] == ',' && ParameterFromString(parameter).has_value();
+  if (!line.starts_with(before)) return false;
+  const std::string_view rest = line.substr(before.size());
+  const std::size_t section = rest.find(fmt::format(",{},", kSectionColumns));
+  const std::size_t motion = rest.rfind(fmt::format(",{}", kMotionColumns));
+  if (section == std::string_view::npos || section == 0 || motion == std::string_view::npos || motion <= section) return false;
+  const std::string_view contact = rest.substr(motion + 1 + std::string_view(kMotionColumns).size());
+  return !contact.empty() && contact.find(',') == std::string_view::npos;
 }
 
-std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section) {
-  std::string out = fmt::format("{}{},{}\n", kSweepColumnsBefore, ToString(parameter), kSweepColumnsAfter);
+template <OscillatorModel Model>
+std::string SweepCsv(const Model& model, const std::vector<SweepPoint>& points, int parameter, double phi_section) {
+  const ModelDescription& d = model.Description();
+  const int k = SweptParameter<Model>(SweepOptions{.parameter = parameter});
+  std::string out = fmt::format("{}{},{},{},{}{}\n", kSweepColumnsBefore, d.parameters[k].name, kSectionColumns,
+                                fmt::join(d.state_columns, ","), kMotionColumns, d.coordinates[ContactCoordinate(model)]);
   for (const SweepPoint& p : points) {
-    for (std::size_t k = 0; k < p.section.size(); ++k) {
-      const State& x = p.section[k];
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", p.chain, ToString(p.pass), p.step, p.value,
-                         phi_section, k, x(0), x(1), x(2), x(3), p.stops_per_period, p.sticks_per_period, p.period,
-                         p.amplitude_x2);
+    for (std::size_t j = 0; j < p.section.size(); ++j) {
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", p.chain, ToString(p.pass), p.step, p.value, phi_section, j,
+                         fmt::join(p.section[j], ","), p.stops_per_period, p.sticks_per_period, p.period,
+                         p.contact_amplitude);
     }
   }
   return out;
 }
+
+template std::vector<SweepPoint> Sweep(const Pascal2014&, const Parameters&, const std::vector<State>&, double,
+                                       const SweepOptions&);
+template std::vector<SweepPoint> Sweep(const DynamicLinearOscillator&, const DynamicLinearOscillator::Parameters&,
+                                       const std::vector<Eigen::VectorXd>&, double, const SweepOptions&);
+template std::string SweepCsv(const Pascal2014&, const std::vector<SweepPoint>&, int, double);
+template std::string SweepCsv(const DynamicLinearOscillator&, const std::vector<SweepPoint>&, int, double);
+template std::vector<State> ScatteredStarts(const State&, double, int, std::uint64_t);
+template std::vector<Eigen::VectorXd> ScatteredStarts(const Eigen::VectorXd&, double, int, std::uint64_t);
 
 }  // namespace stickslip

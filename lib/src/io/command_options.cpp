@@ -10,6 +10,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stickslip/io/start_input.hpp"
 #include "stickslip/model/transient.hpp"
@@ -171,9 +172,13 @@ std::string SweepOptionRange(std::string_view field) {
   return std::string(SetKeyRange(field));  // from, to: the swept parameter's range
 }
 
-SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
-  const std::optional<ParameterId> parameter = ParameterFromString(c.parameter);
-  if (!parameter) throw InvalidInput("parameter", "'" + c.parameter + "'", "chi, eta, omega, u_s, u_r");
+SweepPlan PlanSweep(const SweepCommand& c, const ModelDescription& model) {
+  const std::optional<int> parameter = model.ParameterIndex(c.parameter);
+  if (!parameter) {
+    std::vector<std::string> names;
+    for (const ParameterDescription& p : model.parameters) names.push_back(p.name);
+    throw InvalidInput("parameter", "'" + c.parameter + "'", fmt::format("{}", fmt::join(names, ", ")));
+  }
   SweepPlan plan;
   SweepOptions& options = plan.options;
   options.parameter = *parameter;
@@ -189,11 +194,11 @@ SweepPlan PlanSweep(const SweepCommand& c, const ModelStart& origin) {
   } else {
     throw InvalidInput("start", "'" + c.start + "'", "chained, fixed");
   }
-  const int chains = WholeNumberOf(kSweepWholeNumbers, "chains", c.chains);
+  plan.chains = WholeNumberOf(kSweepWholeNumbers, "chains", c.chains);
   if (!(c.scatter >= 0.0 && c.scatter <= 1e6)) throw InvalidInput("scatter", c.scatter, SweepOptionRange("scatter"));
-  const int seed = WholeNumberOf(kSweepWholeNumbers, "seed", c.seed);
+  plan.scatter = c.scatter;
+  plan.seed = static_cast<std::uint64_t>(WholeNumberOf(kSweepWholeNumbers, "seed", c.seed));
   options.threads = WholeNumberOf(kSweepWholeNumbers, "threads", c.threads);
-  plan.starts = ScatteredStarts(origin.initial_state, c.scatter, chains, static_cast<std::uint64_t>(seed));
   return plan;
 }
 

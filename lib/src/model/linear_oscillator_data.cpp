@@ -110,10 +110,17 @@ FirstOrderBasis BasisOf(const LinearOscillatorData& data, const Eigen::MatrixXd&
 
 // By the coordinates' names, whatever their order: q_0 for each position; for each velocity the
 // name with its leading x made v (x1: v1_0), or v_ before any other (left: v_left_0).
+// The state's columns: each coordinate q, then its velocity v<k> for x<k>, v_q for any other name.
+std::vector<std::string> StateColumnNames(const std::vector<std::string>& coordinates) {
+  std::vector<std::string> names = coordinates;
+  for (const std::string& q : coordinates) names.push_back(q.size() > 1 && q[0] == 'x' ? "v" + q.substr(1) : "v_" + q);
+  return names;
+}
+
+// The state at t = 0: each column's name with "_0".
 std::vector<std::string> StartStateNames(const std::vector<std::string>& coordinates) {
-  std::vector<std::string> names;
-  for (const std::string& q : coordinates) names.push_back(q + "_0");
-  for (const std::string& q : coordinates) names.push_back(q.size() > 1 && q[0] == 'x' ? "v" + q.substr(1) + "_0" : "v_" + q + "_0");
+  std::vector<std::string> names = StateColumnNames(coordinates);
+  for (std::string& name : names) name += "_0";
   return names;
 }
 
@@ -208,6 +215,7 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
   for (Eigen::Index j = static_cast<Eigen::Index>(d.coordinates.size()); j < n; ++j) d.coordinates.push_back(fmt::format("x{}", j + 1));
   for (const std::string& q : d.coordinates) d.state_components.push_back(q);
   for (const std::string& q : d.coordinates) d.state_components.push_back(q + "'");
+  d.state_columns = StateColumnNames(d.coordinates);
   d.initial_state = StartStateNames(d.coordinates);
   d.contact = {"s", "s'", "s''", "F", "F_k", "F_s", "F_k = 0", "grazing-sliding (F_s = F_k)"};
   return d;

@@ -22,6 +22,7 @@ ModelDescription Pascal2014Description() {
        parameter("u_r", "static friction level", kMinSlidingFriction, kMaxFriction, kStaticFrictionRange)},
       {"x1", "x2"},
       {"x1", "x2", "x1'", "x2'"},
+      {"x1", "x2", "v1", "v2"},
       {"x10", "x20", "v10", "v20"}};
 }
 

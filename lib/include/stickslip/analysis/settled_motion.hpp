@@ -2,7 +2,8 @@
 // simulated out with the exact simulator (in chunks, model/transient.hpp), then a record of
 // recorded_periods forcing periods whose stroboscopic section (the state at the forcing phase
 // phi_section, once per period), stops and sticks per period and period on the section are read.
-// The one per-point computation of analysis/sweep.hpp and analysis/brute_force_map.hpp.
+// The one per-point computation of analysis/sweep.hpp and analysis/brute_force_map.hpp, for the
+// paper's model and for a model of the user's (DynamicLinearOscillator), the models it is compiled for.
 //
 //   const SettledMotion m = SimulateSettled(p, x0, phi, SettleOptions{});
 //   if (m.Completed() && m.period > 0) use(m.section);
@@ -12,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/model/oscillator_model.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -28,7 +31,9 @@ struct SettleOptions {
   int max_events_per_simulation = 1000000;
 };
 
-struct SettledMotion {
+template <typename Model>
+struct BasicSettledMotion {
+  using State = typename Model::State;
   // The section after the transient: the states at t = k 2 pi/omega, k = 1..recorded_periods,
   // time 0 being the end of the transient. Empty when the simulation stopped early.
   std::vector<State> section;
@@ -45,23 +50,33 @@ struct SettledMotion {
   int period = 0;
   // That distance still to go (absolute, |.|_inf), where the period was reduced; 0 otherwise.
   double settling = 0.0;
-  // max |x2(t)| over the recorded periods, exact as orbits/orbit_measures.hpp's amplitude_x2: over
-  // each recorded segment, the extrema of x2 on its closed form (at its ends or at the zeros of x2',
-  // found by the root finder that cannot miss one); x2 held in a stick. NaN when the simulation
-  // stopped early or the search for a zero was cut short.
-  double amplitude_x2 = std::numeric_limits<double>::quiet_NaN();
+  // max |q_c(t)| of the contact's coordinate q_c (the paper's x2) over the recorded periods, exact as
+  // orbits/orbit_measures.hpp's amplitude: over each recorded segment, the extrema of q_c on its
+  // closed form (at its ends or at the zeros of q_c', found by the root finder that cannot miss
+  // one); q_c held in a stick. NaN when the simulation stopped early or the search for a zero was
+  // cut short.
+  double contact_amplitude = std::numeric_limits<double>::quiet_NaN();
   // The recorded periods (events and segments), from the end of the transient at t = 0.
-  SimulationResult record;
+  BasicSimulationResult<Model> record;
   // Where the motion got to: the last section state, or where a simulation stopped early.
-  State last = State::Zero();
+  State last = FixedSizeDefault<State>();
   SimulationEnd end = SimulationEnd::kDuration;
   std::string message;  // why a simulation stopped early, if one did
   bool Completed() const { return end == SimulationEnd::kDuration; }
 };
 
-// From `start` at t = 0 (forcing phase phi_section) at p. Preconditions: Validate(p) passed,
-// options in range (the callers check them). A simulation that stops early (max events, the event
-// search's bound) is reported in `end` and `message`, not thrown.
+using SettledMotion = BasicSettledMotion<Pascal2014>;
+
+// From `start` at t = 0 (forcing phase phi_section) at p, for a forced model (not Autonomous()).
+// Preconditions: model.Validate(p) passed, options in range (the callers check them). A simulation
+// that stops early (max events, the event search's bound) is reported in `end` and `message`, not
+// thrown. Compiled for Pascal2014 and DynamicLinearOscillator.
+template <OscillatorModel Model>
+BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Model::Parameters& p,
+                                          const typename Model::State& start, double phi_section,
+                                          const SettleOptions& options);
+
+// The paper's model's.
 SettledMotion SimulateSettled(const Parameters& p, const State& start, double phi_section, const SettleOptions& options);
 
 }  // namespace stickslip

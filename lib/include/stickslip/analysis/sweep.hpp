@@ -1,6 +1,9 @@
 // Brute-force bifurcation diagram: a parameter stepped over a range, transients simulated out
 // with the exact simulator, and the stroboscopic section (the state at the forcing phase
 // phi_section, once per forcing period) recorded, from one or several starting states (chains).
+// For the paper's model and for a forced model of the user's (DynamicLinearOscillator): the points
+// hold their states as vectors of the model's size, so that one CSV writer and every front end
+// take any model's sweep.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +11,11 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "stickslip/model/model_description.hpp"
+#include "stickslip/model/oscillator_model.hpp"
+#include "stickslip/model/pascal_2014.hpp"
 #include "stickslip/model/pascal_2014/flows.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/progress.hpp"
@@ -28,7 +36,10 @@ enum class SweepStart {
 };
 
 struct SweepOptions {
-  ParameterId parameter = ParameterId::kOmega;
+  // The swept parameter: its index in the model's description (ModelDescription::parameters; the
+  // paper's model's in ParameterId's order), or kForcingFrequency.
+  static constexpr int kForcingFrequency = -1;
+  int parameter = kForcingFrequency;
   double from = 0.0;           // first value of the up (or only) pass
   double to = 0.0;             // last value of the up (or only) pass
   int steps = 50;              // intervals between from and to (>= 1)
@@ -56,36 +67,48 @@ struct SweepPoint {
   SweepPass pass = SweepPass::kUp;
   int step = 0;        // index along the pass
   double value = 0.0;  // the parameter
-  std::vector<State> section;  // recorded_periods states at phase phi_section
+  std::vector<Eigen::VectorXd> section;  // recorded_periods states at phase phi_section
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
   int period = 0;  // smallest p with section[k + p] == section[k] (to tolerance); 0 if none
-  // max |x2(t)| over the recorded periods, exact (SettledMotion::amplitude_x2): the quantity a
-  // branch's `amplitude:x2` measures over its period, so the two are drawn on one axis.
-  double amplitude_x2 = 0.0;
+  // max |q_c(t)| of the contact's coordinate (the paper's x2) over the recorded periods, exact
+  // (SettledMotion::contact_amplitude): the quantity a branch's `amplitude:<q_c>` measures over its
+  // period, so the two are drawn on one axis.
+  double contact_amplitude = 0.0;
 };
 
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
 // (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
-// step, whatever the number of threads. Throws InvalidInput for no starts, options out of range
-// or a swept value where Validate fails (field "from" or "to" at an end, "steps" inside), and
-// std::runtime_error naming the point when a simulation stops early (max_events_per_simulation,
-// or the event search's bound).
+// step, whatever the number of threads. Throws InvalidInput for no starts, a start not of the
+// model's size, an autonomous model (no forcing phase to take a section at), options out of range
+// or a swept value where the model's Validate fails (field "from" or "to" at an end, "steps"
+// inside), and std::runtime_error naming the point when a simulation stops early
+// (max_events_per_simulation, or the event search's bound). Compiled for Pascal2014 and
+// DynamicLinearOscillator.
+template <OscillatorModel Model>
+std::vector<SweepPoint> Sweep(const Model& model, const typename Model::Parameters& base,
+                              const std::vector<typename Model::State>& starts, double phi_section,
+                              const SweepOptions& options);
+
+// The paper's model's.
 std::vector<SweepPoint> Sweep(const Parameters& base, const std::vector<State>& starts, double phi_section,
                               const SweepOptions& options);
 
 // `count` starting states: `centre` first, then states drawn uniformly from the box
 // |x - centre|_inf <= half_width by a splitmix64 generator seeded with `seed` (the same numbers
 // on every platform, so a sweep is reproduced by its command line).
-std::vector<State> ScatteredStarts(const State& centre, double half_width, int count, std::uint64_t seed);
+template <typename StateVector>
+std::vector<StateVector> ScatteredStarts(const StateVector& centre, double half_width, int count, std::uint64_t seed);
 
-// One CSV row per recorded section point: chain, pass, step, <parameter>, section_phase, k, x1,
-// x2, v1, v2, stops_per_period, sticks_per_period, period, amplitude:x2 (the point's, repeated on
-// each of its rows). Deterministic: shortest round-trip
-// numbers.
-std::string SweepCsv(const std::vector<SweepPoint>& points, ParameterId parameter, double phi_section);
-// Whether `line` is the header SweepCsv writes (for any parameter), or wrote before its second
-// column was renamed "direction" from "pass": the mark of a file that sweep may replace.
+// One CSV row per recorded section point: chain, direction, step, <parameter>, section_phase, k,
+// the state by the model's column names (ModelDescription::state_columns: x1, x2, v1, v2 for the
+// paper's model), stops_per_period, sticks_per_period, period, amplitude:<q_c> (the point's,
+// repeated on each of its rows). Deterministic: shortest round-trip numbers. `parameter` as
+// SweepOptions::parameter.
+template <OscillatorModel Model>
+std::string SweepCsv(const Model& model, const std::vector<SweepPoint>& points, int parameter, double phi_section);
+// Whether `line` is the header SweepCsv writes (for any model and parameter), or wrote before its
+// second column was renamed "direction" from "pass": the mark of a file that sweep may replace.
 bool IsSweepCsvHeader(std::string_view line);
 
 }  // namespace stickslip

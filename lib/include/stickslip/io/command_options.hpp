@@ -82,14 +82,17 @@ struct SweepCommand {
 // The valid range of a sweep option ("1 <= steps <= 100000"), for help texts and messages.
 std::string SweepOptionRange(std::string_view field);
 
-// The sweep `command` describes from `origin`: its options, and its chains' starting states
-// (ScatteredStarts around the origin's state). Throws InvalidInput naming "parameter", "start",
-// or the whole-number option out of its range; the swept values are checked by Sweep.
+// The sweep `command` describes of a model: its options (the parameter by its name in the model's
+// description), and how its chains start: ScatteredStarts(the given state, scatter, chains, seed).
+// Throws InvalidInput naming "parameter", "start", "scatter" or the whole-number option out of its
+// range; the swept values are checked by Sweep.
 struct SweepPlan {
   SweepOptions options;
-  std::vector<State> starts;
+  int chains = 1;
+  double scatter = 0.0;
+  std::uint64_t seed = 0;
 };
-SweepPlan PlanSweep(const SweepCommand& command, const ModelStart& origin);
+SweepPlan PlanSweep(const SweepCommand& command, const ModelDescription& model);
 
 // find: the options as given (numbers not yet checked to be whole or in range), the defaults the
 // library's. FindOptionsOf checks them, naming "transients", "max-multiple", "tolerance" or

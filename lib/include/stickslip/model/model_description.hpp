@@ -41,6 +41,9 @@ struct ModelDescription {
   std::vector<ParameterDescription> parameters;
   std::vector<std::string> coordinates;       // "x1", "x2": the generalised coordinates q
   std::vector<std::string> state_components;  // "x1", "x2", "x1'", "x2'": (q, q')
+  // The state by name as the columns of a file of states along a motion (a sweep's section): x1, x2,
+  // v1, v2 in the paper's model.
+  std::vector<std::string> state_columns;
   // The state at t = 0 by name, as set keys and result columns name it (x10, x20, v10, v20 in the
   // paper's model). An orbit's start variables are all but the last (the contact's velocity, zero at the
   // orbit's origin, a stop: orbits/orbit_layout.hpp).

@@ -1,0 +1,38 @@
+// sweep for a run file's [model] (model_table.hpp), as every front end runs it: the brute-force
+// bifurcation diagram (analysis/sweep.hpp) of the oscillator at the file's parameters and those of
+// `set` (ReadModelFileStart), in one of its parameters by name, from rest and from states scattered
+// around rest (PlanSweep's chains, scatter and seed), with the forcing's phase 0 at every section
+// time; and its CSV, with the model's own column names.
+//
+//   const ModelSweepRun run = SweepModel(ReadModelFileStart("den-hartog.toml", {}), command);
+//   WriteFileAtomically("den-hartog-sweep.csv", ModelSweepCsv(run));
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/analysis/sweep.hpp"
+#include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_find.hpp"
+#include "stickslip/progress.hpp"
+
+namespace stickslip {
+
+struct ModelSweepRun {
+  DynamicLinearOscillator model;
+  SweepOptions options;  // as PlanSweep gave them, the parameter by its index among the model's
+  int chains = 1;
+  int threads = 1;  // the threads it ran on
+  std::vector<SweepPoint> points;
+};
+
+// Throws InvalidInput as PlanSweep and Sweep do (an autonomous model, naming "model": a sweep's
+// section is a forcing phase), before any simulation; std::runtime_error as Sweep does.
+ModelSweepRun SweepModel(const ModelFileStart& start, const SweepCommand& command, ProgressCallback progress = {});
+
+// SweepCsv of the run: chain, direction, step, <parameter>, section_phase, k, the state by the
+// model's column names (q, then v<k> for x<k> and v_q for any other name), stops_per_period,
+// sticks_per_period, period, amplitude:<the contact's coordinate>.
+std::string ModelSweepCsv(const ModelSweepRun& run);
+
+}  // namespace stickslip
