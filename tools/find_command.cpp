@@ -211,15 +211,16 @@ int RunFind(const FindArgs& args) {
 
 // find --model: the options of the paper's model's start and of what find writes are refused.
 int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"--preset", "--point", "--results", "--max-multiple", "--tolerance", "--confirmations",
+  for (const char* option : {"--preset", "--point", "--results", "--tolerance", "--confirmations",
                              "--output", "--write-run", "--as", "--range", "--force"}) {
     if (cmd.count(option) == 0) continue;
     throw InvalidInput::WithMessage(
-        option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients, --trace, "
-                                "--trace-parameter and --json",
+        option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients, "
+                                "--max-multiple, --trace, --trace-parameter and --json",
                                 option));
   }
-  return RunModelFind({args.model, args.start.set, args.transients, args.json, args.trace, args.trace_parameter});
+  return RunModelFind(
+      {args.model, args.start.set, args.transients, args.max_multiple, args.json, args.trace, args.trace_parameter});
 }
 
 }  // namespace
@@ -249,8 +250,8 @@ Command AddFindCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--max-multiple", args->max_multiple,
                   fmt::format("the largest period multiple k tried: the motion repeats after k forcing periods "
-                              "(1 to {}, a whole number)",
-                              FindOrbitOptions::kMaxMultiple))
+                              "(1 to {}, a whole number; with --model 1 to {}, the least k that is a period taken)",
+                              FindOrbitOptions::kMaxMultiple, ModelFindOptions::kMaxMultiple))
       ->type_name("K")
       ->capture_default_str();
   cmd->add_option("--tolerance", args->tolerance,
@@ -292,10 +293,11 @@ Command AddFindCommand(CLI::App& app) {
   cmd->add_flag("--force", args->force, kForceHelp);
   cmd->add_option("--model", args->model,
                   "find the orbit of the oscillator in this run file's [model] (see describe) instead of the paper's: "
-                  "simulated from rest for --transients periods (forcing periods; without forcing, periods of its "
-                  "slowest free oscillation), its last period read from a stop (without forcing: between its last two "
-                  "sticks), solved and verified; takes --set NAME=VALUE over the file's parameters, --transients and "
-                  "--trace, --trace-parameter and --json only")
+                  "simulated from rest (or --set's start state by name, x1_0=..., v1_0=..., and phase phi=...) for "
+                  "--transients periods (forcing periods; without forcing, periods of its slowest free oscillation), "
+                  "its last period (the least of 1 to --max-multiple forcing periods that is one) read from a stop "
+                  "(without forcing: between its last two sticks), solved and verified; takes --set NAME=VALUE over "
+                  "the file's parameters, --transients, --max-multiple, --trace, --trace-parameter and --json only")
       ->type_name("FILE");
   cmd->add_option("--trace-parameter", args->trace_parameter,
                   "with --model and --trace: the parameter traced (omega, F_k, F_s or v_b; default omega, or v_b "

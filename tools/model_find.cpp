@@ -87,10 +87,13 @@ std::string TraceText(const BasicTraceResult<DynamicLinearOscillator>& trace) {
 ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
   const NamedValues set = ModelSetOf(args.set);
   const int transients = ParseCount("transients", args.transients, kMinModelTransients, kMaxModelTransients);
+  const int max_multiple = ParseCount("max-multiple", args.max_multiple, 1, ModelFindOptions::kMaxMultiple);
   if (!args.trace_parameter.empty() && args.trace.empty()) {
     throw InvalidInput("trace-parameter", "'" + args.trace_parameter + "'", "with --trace");
   }
-  if (args.trace.empty()) return {FindModelOrbitOf(ReadModelFileStart(args.file, set), transients, line.Callback()), {}};
+  if (args.trace.empty()) {
+    return {FindModelOrbitOf(ReadModelFileStart(args.file, set), transients, max_multiple, line.Callback()), {}};
+  }
   const auto [low, high] = ParseRange("trace", args.trace);
   const ModelFileStart start = ReadModelFileStart(args.file, set);
   const std::string parameter = !args.trace_parameter.empty() ? args.trace_parameter
@@ -99,7 +102,7 @@ ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
   TraceOptions options;
   options.progress = line.Callback();
   try {
-    return TraceModel(start, transients, parameter, low, high, options);
+    return TraceModel(start, transients, max_multiple, parameter, low, high, options);
   } catch (const InvalidInput& e) {  // the library's names, as the options name them
     if (e.field() == "range") throw e.Renamed("trace");
     if (e.field() == "parameter") throw e.Renamed("trace-parameter");

@@ -15,12 +15,13 @@ struct ModelFindArgs {
   std::string file;              // the run file with the [model]
   std::vector<std::string> set;  // NAME=VALUE: parameters over the file's
   std::string transients;        // periods simulated before the orbit is read
+  std::string max_multiple;      // the longest period read, in forcing periods
   bool json = false;
   std::string trace;             // "LO,HI": trace from the orbit found; empty: none
   std::string trace_parameter;   // the traced parameter; empty: omega, or v_b without forcing
 };
 
-// --set NAME=VALUE ... as named values, each a finite number (the model's reader checks the names
+// --set NAME=VALUE ... (parameters, start-state components by name, phi) as named values, each a finite number (the model's reader checks the names
 // and ranges). Throws InvalidInput naming "set" or the name.
 NamedValues ModelSetOf(const std::vector<std::string>& set);
 

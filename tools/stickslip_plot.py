@@ -1014,7 +1014,7 @@ def _response_figure(results, options, plt):
     elif all(r.kind == "curve" for r in results):
         y = results[0].second
     elif results[0].kind == "sweep" and "amplitude:x2" not in results[0].header:
-        y = next(c for c in results[0].header if c.startswith("amplitude:"))  # a model's contact coordinate
+        y = next((c for c in results[0].header if c.startswith("amplitude:")), "amplitude:x2")  # a model's contact
     else:
         y = "amplitude:x2"
     _check_quantity(options, "x", x, results)

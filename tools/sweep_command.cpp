@@ -1,6 +1,7 @@
 // stickslip sweep: a brute-force bifurcation diagram by simulation, a parameter stepped up and
 // then down from one or several starting states, the chains in parallel.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,14 +76,18 @@ int RunModelSweep(const SweepArgs& args, const CLI::App& cmd) {
   for (const char* option : {"--preset", "--point", "--results"}) {
     if (cmd.count(option) == 0) continue;
     throw InvalidInput::WithMessage(
-        option + 2, fmt::format("{} is not taken with --model: the sweep starts from rest (and --chains - 1 states "
-                                "scattered around it); --set sets the model's parameters",
+        option + 2, fmt::format("{} is not taken with --model: the sweep starts from rest, or --set's start state "
+                                "(x1_0=..., phi=...), and --chains - 1 states scattered around it; --set also sets "
+                                "the model's parameters",
                                 option));
   }
   CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.origin.set));
+  const ModelDescription& model = start.model.Description();
+  const std::optional<int> k = model.ParameterIndex(args.parameter);
+  const SweepCommand command = CommandOf(args, k ? model.parameters[*k].range : std::string("a finite number"));
   ProgressLine line("sweep");
-  const ModelSweepRun run = SweepModel(start, CommandOf(args, "a finite number in the parameter's range"), line.Callback());
+  const ModelSweepRun run = SweepModel(start, command, line.Callback());
   line.Clear();
   WriteFileAtomically(args.output, ModelSweepCsv(run));
   PrintSwept(args, run.options, run.chains, run.threads, run.points);
@@ -144,12 +149,13 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_flag("--force", args->force, kForceHelp);
   cmd->add_option("--model", args->model,
                   "sweep the oscillator in this run file's [model] (see describe) instead of the paper's: from rest "
-                  "and --chains - 1 states scattered around it, the section at forcing phase 0, --parameter one of "
-                  "the model's (omega, F_k, F_s, v_b; SI units), --set its parameters; the CSV's state columns are "
+                  "(or --set's start state by name and phase phi) and --chains - 1 states scattered around it, the "
+                  "section at that forcing phase (0 by default), --parameter one of the model's (omega, F_k, F_s, "
+                  "v_b; SI units), --set its parameters; the CSV's state columns are "
                   "the model's coordinates and velocities (v<k> for x<k>, v_q for any other q), the amplitude the "
                   "contact's coordinate's. A model without forcing is refused (no forcing phase)")
       ->type_name("FILE");
-  return {cmd, [args, cmd] { return args->model.empty() ? RunSweep(*args) : RunModelSweep(*args, *cmd); }};
+  return {cmd, [args, cmd] { return cmd->count("--model") == 0 ? RunSweep(*args) : RunModelSweep(*args, *cmd); }};
 }
 
 }  // namespace stickslip::cli

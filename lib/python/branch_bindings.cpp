@@ -351,7 +351,7 @@ SweepResult RunModelSweep(const std::string& path, const NamedValues& set, const
     py::gil_scoped_release release;
     run.emplace(SweepModel(start, command));
   }
-  return {std::move(run->points), run->options.parameter, 0.0, run->threads, run->chains, std::move(run->model)};
+  return {std::move(run->points), run->options.parameter, run->phi, run->threads, run->chains, std::move(run->model)};
 }
 
 template <typename T, typename Get>

@@ -575,13 +575,14 @@ void BindOrbits(py::module_& m) {
         py::arg("path"));
   m.def(
       "_find_model",
-      [](const std::string& path, const NamedValues& set, double transients) {
+      [](const std::string& path, const NamedValues& set, double transients, double max_multiple) {
         const int periods = WholeNumber("transients", transients, kMinModelTransients, kMaxModelTransients);
+        const int multiple = WholeNumber("max_multiple", max_multiple, 1, ModelFindOptions::kMaxMultiple);
         py::gil_scoped_release release;
-        const ModelFindRun run = FindModelOrbitOf(ReadModelFileStart(path, set), periods);
+        const ModelFindRun run = FindModelOrbitOf(ReadModelFileStart(path, set), periods, multiple);
         return ModelFindJson(run.model, run.found);
       },
-      py::arg("path"), py::arg("set"), py::arg("transients"));
+      py::arg("path"), py::arg("set"), py::arg("transients"), py::arg("max_multiple"));
   // The model's state at t = 0 by name (x10, x20, v10, v20), and the variables of an n-segment
   // orbit before its parameters (x10, x20, v10, phi, d1..dn), unknowns unless fixed (FreeIndices).
   m.def("_initial_state", [] { return Model().initial_state; });

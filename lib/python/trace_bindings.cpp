@@ -175,7 +175,8 @@ void BindTrace(py::module_& m) {
           const py::gil_scoped_acquire acquire;
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         };
-        return ModelTraceJson(TraceModel(ReadModelFileStart(path, set), periods, parameter, low, high, trace));
+        return ModelTraceJson(TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple,
+                                         parameter, low, high, trace));
       },
       py::arg("path"), py::arg("set"), py::arg("transients"), py::arg("parameter"), py::arg("low"), py::arg("high"),
       py::arg("options"));

@@ -100,15 +100,92 @@ PY
 "$bin" sweep --model "$models/den-hartog.toml" --from 1.5 --to 2.5 --steps 4 --transients 400 --periods 8 \
   --start fixed --chains 1 --threads 1 --output "$work/dh1.csv" > /dev/null 2>&1 && cmp -s "$work/dh.csv" "$work/dh1.csv" &&
   pass || fail "sweep --model: the file depends on --threads"
+# The same oscillator in other units (force, hence lengths and speeds, times 1e-7 and 1e7): the same
+# periods on the section, settled (300 transient periods) or not (none), and amplitudes scaled.
+for s in 1 1e-7 1e7; do
+  sed "s|forcing = { m1 = 1.0 }|forcing = { m1 = $s }|; s|F_k = 0.25, F_s = 0.25|F_k = $(python3 -c "print(0.25*$s)"), F_s = $(python3 -c "print(0.25*$s)")|" \
+    "$models/den-hartog.toml" > "$work/dh-$s.toml"
+  for n in 0 300; do
+    "$bin" sweep --model "$work/dh-$s.toml" --from 1.5 --to 2.5 --steps 4 --transients $n --periods 8 --start fixed \
+      --chains 1 --output "$work/dh-$s-$n.csv" > /dev/null 2>&1 || fail "sweep --model dh-$s.toml exits $?"
+  done
+done
+/usr/bin/python3 - "$work" <<'PY' && pass || fail "sweep --model: the periods depend on the model's units"
+import csv, sys
+def rows(s, n):
+    return list(csv.DictReader(open(f"{sys.argv[1]}/dh-{s}-{n}.csv")))
+for n in (0, 300):
+    one = rows("1", n)
+    assert any(r["period"] == "0" for r in rows("1", 0)), "the unsettled start should read no period"
+    for s in ("1e-7", "1e7"):
+        for a, b in zip(one, rows(s, n)):
+            assert a["period"] == b["period"], (s, n, a["omega"], a["period"], b["period"])
+            assert abs(float(b["amplitude:m1"]) / float(s) - float(a["amplitude:m1"])) <= 1e-9 * float(a["amplitude:m1"])
+PY
+sed 's|m1|b|g; s|contact = "b"|contact = "b"\nnames = ["b"]|' "$models/den-hartog.toml" > "$work/b.toml"
+expect 2 "parameter = 'v_b' is invalid" "$bin" sweep --model "$work/b.toml" --parameter v_b --from 0.1 --to 0.3 --output "$work/x.csv"
+sed 's|m1|k|g; s|contact = "k"|contact = "k"\nnames = ["k"]|' "$models/belt.toml" > "$work/k.toml"
+expect 2 "gives the state a column 'k'" "$bin" describe "$work/k.toml"
 echo "mine" > "$work/mine.csv"
 expect 2 "output" "$bin" sweep --model "$models/den-hartog.toml" --from 1.5 --to 2.5 --output "$work/mine.csv"
 grep -qx mine "$work/mine.csv" && pass || fail "sweep --model replaced a file it did not write"
-expect 2 "model = without forcing is invalid" "$bin" sweep --model "$models/belt.toml" --parameter v_b --from 0.2 --to 0.3 --output "$work/belt.csv"
+expect 2 "model = a model without forcing is invalid" "$bin" sweep --model "$models/belt.toml" --parameter v_b --from 0.2 --to 0.3 --output "$work/belt.csv"
 expect 2 "parameter = 'chi' is invalid: valid range omega, F_k, F_s, v_b" "$bin" sweep --model "$models/den-hartog.toml" --parameter chi --from 0.2 --to 0.3 --output "$work/x.csv"
 expect 2 "to: " "$bin" sweep --model "$models/den-hartog.toml" --parameter F_s --from 0.25 --to 0.1 --output "$work/x.csv"
 expect 2 "preset is not taken with --model" "$bin" sweep --model "$models/den-hartog.toml" --preset paper-4.1 --from 1 --to 2 --output "$work/x.csv"
 expect 2 "omega2 = 1 is invalid: omega2 is no parameter of the model" "$bin" sweep --model "$models/den-hartog.toml" --set omega2=1 --from 1.5 --to 2 --output "$work/x.csv"
 [ ! -e "$work/belt.csv" ] && [ ! -e "$work/x.csv" ] && pass || fail "a refused sweep --model wrote its file"
+
+# The paper's oscillator (section 4.1's data) written as a chain in physical units (eq. 3 with m1 = 1,
+# k1 + k2 = 1: m2 = 1/eta, k1 = 1 - chi, k2 = chi, forcing 1/eta on m2, F_k = u_s, F_s = u_r; time and
+# lengths then equal the paper's scaled ones), started where the paper's preset starts (--set its state
+# and phase): find --model reads the same subharmonics as the paper's own finder, period 3 antisymmetric
+# at omega = 0.37 and period 2 at 0.40: the same period, the same segments up to where the period is
+# read from, the same measures to 1e-8 (the paper's friction work and equivalent damping are per unit
+# m2, eq. 2's force eta u_s: eta = 4 times the chain's joules and N s/m), the same stability. Two
+# independent closed forms (the paper's eqs. 5-20 against the general model's modes).
+cat > "$work/pascal.toml" <<'TOML'
+[model]
+kind = "chain"
+masses = [1.0, 0.25]
+names = ["x1", "x2"]
+springs = [{ between = ["x1", "ground"], k = 0.7 }, { between = ["x1", "x2"], k = 0.3 }]
+forcing = { x2 = 0.25 }
+contact = "x2"
+parameters = { omega = 0.6, F_k = 0.1, F_s = 0.2996 }
+TOML
+for w in 0.37 0.40; do
+  "$bin" find --preset paper-4.1 --set omega=$w --json > "$work/paper.json" 2>&1 || fail "find --preset paper-4.1 at $w exits $?"
+  "$bin" find --model "$work/pascal.toml" --set omega=$w --set x1_0=1.5608 --set x2_0=3.3295 --set v1_0=0.1523 \
+    --set phi=0.3925 --json > "$work/model.json" 2> "$work/model.err" || fail "find --model (the paper's chain) at $w exits $?: $(cat "$work/model.err")"
+  /usr/bin/python3 - "$work/paper.json" "$work/model.json" <<'PY' && pass || fail "find --model: not the paper's orbit at omega = $w"
+import json, math, sys
+paper, model = json.load(open(sys.argv[1]))["orbit"], json.load(open(sys.argv[2]))["orbit"]
+def whole(signature, durations):  # the modes and durations over the whole period
+    modes = signature.split(" / ")[0].split()
+    if "antisymmetric" in signature:
+        mirror = {"slip+": "slip-", "slip-": "slip+", "stick": "stick"}
+        modes, durations = modes + [mirror[m] for m in modes], durations + durations
+    return modes, durations
+p_modes, p_d = whole(paper["signature"], [s["duration"] for s in paper["segments"]])
+m_modes, m_d = whole(model["signature"], model["durations"])
+# The same cycle of segments, whichever stop each finder took as the origin.
+shifts = [k for k in range(len(m_modes)) if m_modes[k:] + m_modes[:k] == p_modes and
+          max(abs(a - b) for a, b in zip(m_d[k:] + m_d[:k], p_d)) < 1e-8]
+assert len(p_modes) == len(m_modes) and shifts, (paper["signature"], p_d, model["signature"], m_d)
+assert abs(model["period"] - sum(p_d) / (2 if "antisymmetric" in paper["signature"] else 1) *
+           (2 if "antisymmetric" in paper["signature"] else 1)) < 1e-8
+eta = 4.0
+for key, value in paper["measures"].items():
+    expected = value / eta if key in ("friction-work", "equivalent-damping") else value
+    assert abs(model["measures"][key] - expected) <= 1e-8 * max(1, abs(expected)), (key, value, model["measures"][key])
+assert model["stable"] == paper["stable"] and model["verification"]["passed"]
+PY
+done
+expect 2 "x9_0 = 1 is invalid: x9_0 is no parameter of the model: valid omega, F_k, F_s, v_b, or the start's x1_0, x2_0, v1_0, v2_0 and phi" \
+  "$bin" find --model "$work/pascal.toml" --set x9_0=1
+expect 2 "x2_0 = 1e+300 is invalid" "$bin" find --model "$work/pascal.toml" --set x2_0=1e300
+expect 2 "max-multiple" "$bin" find --model "$work/pascal.toml" --max-multiple 21
 
 # Bad input: the key or option named, exit 2.
 bad() {  # bad <name> <the line of belt.toml to replace> <its replacement>

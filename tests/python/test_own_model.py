@@ -86,3 +86,21 @@ def test_sweep_is_the_command_lines_file(tmp_path):
                                           "--to", 0.3, "--output", tmp_path / "belt.csv")
     with pytest.raises(ValueError, match="preset is invalid with model="):
         stickslip.sweep(range=(1.5, 2.5), model=MODELS / "den-hartog.toml", preset="paper-4.1")
+
+
+def test_find_reads_a_subharmonic_from_a_given_start(tmp_path):
+    # Section 4.1's oscillator as a chain in physical units (m1 = 1, m2 = 1/eta, k1 = 1 - chi, k2 = chi,
+    # forcing 1/eta on m2, F_k = u_s, F_s = u_r), started at the paper's preset state and phase: at
+    # omega = 0.40 the motion settles on a period-2 orbit, as the paper's own finder reads it.
+    model = tmp_path / "pascal.toml"
+    model.write_text('[model]\nkind = "chain"\nmasses = [1.0, 0.25]\nnames = ["x1", "x2"]\n'
+                     'springs = [{ between = ["x1", "ground"], k = 0.7 }, { between = ["x1", "x2"], k = 0.3 }]\n'
+                     'forcing = { x2 = 0.25 }\ncontact = "x2"\nparameters = { omega = 0.4, F_k = 0.1, F_s = 0.2996 }\n')
+    start = {"x1_0": 1.5608, "x2_0": 3.3295, "v1_0": 0.1523, "phi": 0.3925}
+    found = stickslip.find(model=model, set=start)
+    assert found.found, found.message
+    assert found.orbit["signature"].endswith("/ period 2")
+    paper = stickslip.find(preset="paper-4.1", set={"omega": 0.4})
+    assert found.orbit["period"] == pytest.approx(paper.orbit.period, rel=1e-12)
+    assert found.orbit["measures"]["amplitude:x2"] == pytest.approx(paper.orbit.measures["amplitude:x2"], rel=1e-9)
+    assert not stickslip.find(model=model, set=start, max_multiple=1).found

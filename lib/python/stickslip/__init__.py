@@ -236,9 +236,10 @@ def describe(path):
     return _json.loads(_core._describe_model(_checked(path, "path", "path")))
 
 
-def _find_model(model, set, transients):
+def _find_model(model, set, transients, max_multiple):
     found = _json.loads(_core._find_model(_checked(model, "model", "path"), _model_set(set),
-                                          _checked(transients, "transients", "number")))
+                                          _checked(transients, "transients", "number"),
+                                          _checked(max_multiple, "max_multiple", "number")))
     return ModelFound(**found)
 
 
@@ -265,9 +266,11 @@ def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple
 
     model: a run file with a [model] table (an oscillator of your own, as `stickslip find --model`):
     its motion from rest simulated for `transients` periods (2 to 1e5: forcing periods; without
-    forcing, periods of its slowest free oscillation), its last period read from a stop, solved and
-    verified; `set` a dict of its parameters over the file's; returns a ModelFound. With `model`, the
-    other arguments must stay at their defaults.
+    forcing, periods of its slowest free oscillation), its last period (the least of 1 to
+    max_multiple forcing periods, 1 to 20, that is one) read from a stop, solved and verified; `set`
+    a dict of its parameters over the file's, its start state by name (x1_0, v1_0, ...) and the
+    forcing phase phi at t = 0; returns a ModelFound. With `model`, tolerance and confirmations
+    must stay at their defaults.
 
     Simulates `transients` forcing periods (0 to 1e6; more while the motion has not settled), finds
     the smallest k <= max_multiple (1 to 999) after which the stroboscopic section repeats to
@@ -281,12 +284,12 @@ def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple
         arguments = {"parameters": parameters, "state": state, "phi": phi, "preset": preset, "point": point}
         given = [name for name, value in arguments.items() if value is not None]
         given += ["results"] if results != "results" else []
-        given += [name for name, value, default in (("max_multiple", max_multiple, 8), ("tolerance", tolerance, 1e-6),
+        given += [name for name, value, default in (("tolerance", tolerance, 1e-6),
                                                     ("confirmations", confirmations, 3)) if value != default]
         if given:
             raise ValueError(f"{given[0]} is invalid with model=: valid left out (the model's run file gives the "
-                             "oscillator, its parameters and a start from rest)")
-        return _find_model(model, set, transients)
+                             "oscillator and its parameters; set= its parameters, start state and phi)")
+        return _find_model(model, set, transients, max_multiple)
     start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     numbers = [_checked(value, name, "number") for name, value in (("transients", transients), ("max_multiple", max_multiple),
                                                                   ("tolerance", tolerance), ("confirmations", confirmations))]
@@ -431,7 +434,8 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
 
     model: a run file with a [model] table (an oscillator of your own, as `stickslip sweep --model`):
     `parameter` one of its parameters (omega, F_k, F_s, v_b), `set` a dict of them over the file's;
-    the chains start from rest and from states scattered around it, the section at forcing phase 0;
+    the chains start from rest (or set='s start state and phi) and from states scattered around it,
+    the section at that forcing phase;
     section has the model's state size, the CSV its column names. A model without forcing is refused.
     """
     low, high = _pair(range, "range")
@@ -444,8 +448,8 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
         given = [name for name, value in (("parameters", parameters), ("state", state), ("phi", phi),
                                           ("preset", preset), ("point", point)) if value is not None]
         if given or results != "results":
-            raise ValueError(f"{(given or ['results'])[0]} is invalid with model=: valid left out (the sweep starts "
-                             "from rest; set= gives the model's parameters)")
+            raise ValueError(f"{(given or ['results'])[0]} is invalid with model=: valid left out (set= gives the "
+                             "model's parameters, its start state by name and phi; the start is rest otherwise)")
         return _core._sweep_model(_checked(model, "model", "path"), _model_set(set), options)
     origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     return _core._sweep(origin, options)

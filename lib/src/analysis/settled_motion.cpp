@@ -146,6 +146,7 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
   // so that the largest transients (1e6 periods, millions of events) run.
   BasicTransientOptions<ModelState> transient;
   transient.periods = o.transient_periods;
+  transient.chunk_periods = o.chunk_periods;
   transient.simulation.max_events = o.max_events_per_simulation;
   const auto simulate = [&model](const typename Model::Parameters& q, const ModelState& x, double phi,
                                  const BasicSimulationOptions<ModelState>& so) { return SimulateExact(model, q, x, phi, so); };
@@ -170,7 +171,12 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
   for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * period));
   motion.last = motion.section.back();
   motion.contact_amplitude = ContactAmplitude(model, r);
-  const LeastSectionPeriod least = LeastPeriodOnSection(motion.section, o.periodicity_tolerance);
+  double scale = 1.0;
+  if (o.relative_tolerance) {
+    scale = 0.0;
+    for (const ModelState& x : motion.section) scale = std::max(scale, x.template lpNorm<Eigen::Infinity>());
+  }
+  const LeastSectionPeriod least = LeastPeriodOnSection(motion.section, o.periodicity_tolerance * scale);
   motion.period = least.period;
   motion.settling = least.settling;
   // Over whole least periods (a period-p motion gives multiples of 1/p), the record's whole when

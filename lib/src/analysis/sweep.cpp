@@ -1,5 +1,6 @@
 #include "stickslip/analysis/sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <mutex>
@@ -52,7 +53,7 @@ SweepPoint SimulatePoint(const Model& model, const typename Model::Parameters& b
   const int k = SweptParameter<Model>(o);
   Model::ParameterAt(p, k) = ValueAt(o, pass, step);
   const SettleOptions settle{o.transient_periods, o.recorded_periods, o.periodicity_tolerance,
-                             o.max_events_per_simulation};
+                             o.max_events_per_simulation, o.relative_tolerance, o.chunk_periods};
   BasicSettledMotion<Model> motion = SimulateSettled(model, p, start, phi_section, settle);
   if (!motion.Completed()) {
     throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
@@ -86,7 +87,7 @@ template <OscillatorModel Model>
 void CheckSweep(const Model& model, const typename Model::Parameters& base,
                 const std::vector<typename Model::State>& starts, const SweepOptions& options) {
   if (model.Autonomous()) {
-    throw InvalidInput("model", "without forcing",
+    throw InvalidInput("model", "a model without forcing",
                        "a forced model: a sweep's section is the state at one forcing phase, once per period");
   }
   if (starts.empty()) throw InvalidInput("starts", "none", "at least one starting state");
@@ -96,6 +97,12 @@ void CheckSweep(const Model& model, const typename Model::Parameters& base,
   const int k = SweptParameter<Model>(options);
   if (k < 0 || k >= Model::kParameterCount) {
     throw InvalidInput("parameter", options.parameter, fmt::format("0 <= parameter < {}", int{Model::kParameterCount}));
+  }
+  const ModelDescription& d = model.Description();
+  if (std::find(d.state_columns.begin(), d.state_columns.end(), d.parameters[k].name) != d.state_columns.end()) {
+    throw InvalidInput("parameter", "'" + d.parameters[k].name + "'",
+                       "a parameter no state column shares its name with (a coordinate 'b' has the velocity column "
+                       "v_b: rename it to sweep the belt's speed)");
   }
   if (options.steps < 1) throw InvalidInput("steps", options.steps, "steps >= 1");
   if (options.transient_periods < 0 || options.transient_periods > kMaxTransientPeriods) {

@@ -1,6 +1,8 @@
 #include "stickslip/io/model_find.hpp"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -8,36 +10,76 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/model_table.hpp"
 
 namespace stickslip {
 
+namespace {
+
+// A name `set` gives that is neither a parameter nor the start's.
+InvalidInput UnknownName(const ModelDescription& d, const std::string& name, double value) {
+  std::vector<std::string> names;
+  for (const ParameterDescription& p : d.parameters) names.push_back(p.name);
+  return InvalidInput::WithMessage(
+      name, fmt::format("{} = {} is invalid: {} is no parameter of the model: valid {}, or the start's {} and phi", name,
+                        value, name, fmt::join(names, ", "), fmt::join(d.initial_state, ", ")));
+}
+
+}  // namespace
+
 ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const NamedValues& set) {
   const ModelTable table = ReadModelTable(run_file);
   const LinearOscillatorData data = ModelDataOf(table);
   DynamicLinearOscillator model(data);
-  const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, set);
+  // The start's entries of `set` (its state by name, the phase); the rest are parameters.
+  const std::vector<std::string>& names = model.Description().initial_state;
+  Eigen::VectorXd state = Eigen::VectorXd::Zero(model.StateSize());
+  double phi = 0.0;
+  NamedValues parameters;
+  for (const auto& [name, value] : set) {
+    const auto k = std::find(names.begin(), names.end(), name);
+    if (k == names.end() && name != "phi") {
+      if (!model.Description().ParameterIndex(name)) throw UnknownName(model.Description(), name, value);
+      parameters.emplace_back(name, value);
+      continue;
+    }
+    if (!(std::abs(value) <= kMaxModelStartValue)) {
+      throw InvalidInput(name, value, fmt::format("|{}| <= {:g}", name, kMaxModelStartValue));
+    }
+    (k == names.end() ? phi : state(k - names.begin())) = value;
+  }
+  const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, parameters);
   double slowest = std::numeric_limits<double>::infinity();
   for (const std::complex<double>& lambda : ModesOf(data).slip.eigenvalues) slowest = std::min(slowest, std::abs(lambda));
-  return {std::move(model), p, slowest};
+  return {std::move(model), p, slowest, std::move(state), phi};
 }
 
-ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, ProgressCallback progress) {
+ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int max_multiple, ProgressCallback progress) {
   if (transients < kMinModelTransients || transients > kMaxModelTransients) {
     throw InvalidInput("transients", transients,
                        fmt::format("whole numbers {} <= transients <= {}", kMinModelTransients, kMaxModelTransients));
+  }
+  if (max_multiple < 1 || max_multiple > ModelFindOptions::kMaxMultiple) {
+    throw InvalidInput("max-multiple", max_multiple,
+                       fmt::format("whole numbers 1 <= max-multiple <= {}", ModelFindOptions::kMaxMultiple));
   }
   const DynamicLinearOscillator& model = start.model;
   const DynamicLinearOscillator::Parameters& p = start.parameters;
   ModelFindOptions options;
   options.duration = transients * 2.0 * std::numbers::pi / (model.Autonomous() ? start.slowest_frequency : p.omega);
-  // Read from the last ten forcing periods; without forcing, from the last half, which must hold two
-  // stick-slip cycles (a slow belt's are long: its messages ask for more transients).
-  options.record = model.Autonomous() ? options.duration / 2 : std::min(options.duration, 20.0 * std::numbers::pi / p.omega);
+  // Read from the last 2 max_multiple + 2 forcing periods (at least ten); without forcing, from the last
+  // half, which must hold two stick-slip cycles (a slow belt's are long: its messages ask for more
+  // transients).
+  const int recorded = std::max(10, 2 * max_multiple + 2);
+  options.record = model.Autonomous() ? options.duration / 2
+                                      : std::min(options.duration, recorded * 2.0 * std::numbers::pi / p.omega);
+  options.max_multiple = max_multiple;
+  options.phi0 = start.phi;
   options.progress = std::move(progress);
-  return {model, p, FindModelOrbit(model, p, FilledState(model, 0.0), options)};
+  return {model, p, FindModelOrbit(model, p, start.state, options)};
 }
 
 }  // namespace stickslip

@@ -59,8 +59,8 @@ Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std
 
 }  // namespace
 
-ModelTraceRun TraceModel(const ModelFileStart& start, int transients, const std::string& parameter, double low,
-                         double high, TraceOptions options) {
+ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
+                         double low, double high, TraceOptions options) {
   // The parameter and the range before the work.
   const int k = ContinuedParameter(start.model, parameter);
   const double value = Model::ParameterAt(start.parameters, k);
@@ -69,7 +69,7 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, const std:
                        fmt::format("finite LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
   }
   options.Validate();
-  ModelTraceRun run{FindModelOrbitOf(start, transients, options.progress), std::nullopt};
+  ModelTraceRun run{FindModelOrbitOf(start, transients, max_multiple, options.progress), std::nullopt};
   if (run.find.found.status != FindOrbitStatus::kFound) return run;
   // In the belt's speed an antisymmetric orbit is written over its whole period (MakeOrbitContinuation).
   const BasicOrbit<Model>& found = run.find.found.solution->orbit;

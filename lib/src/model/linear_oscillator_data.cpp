@@ -149,6 +149,20 @@ void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n,
     throw Invalid(field, "give a position and a velocity the same start-state name (x1 and v1 both make v1_0): valid "
                          "names whose start-state names q_0, v<k>_0 for x<k> and v_q_0 differ");
   }
+  // The state's columns sit beside the parameters and the fixed columns of result files (a sweep's
+  // CSV). (A coordinate 'b' gives a velocity column v_b, the belt's speed's name: a sweep in v_b refuses it.)
+  static const std::set<std::string> kReserved = {
+      "omega", "F_k", "F_s", "phi", "period", "k", "chain", "direction", "step", "section_phase",
+      "stops_per_period", "sticks_per_period", "pt", "label", "stable", "admissible", "newton_iterations", "step_size"};
+  for (const std::string& column : StateColumnNames(names)) {
+    const bool duration = column.size() > 1 && column[0] == 'd' &&
+                          std::all_of(column.begin() + 1, column.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    if (kReserved.count(column) != 0 || duration) {
+      throw Invalid(field, fmt::format("gives the state a column '{}', a name files use for another quantity (a "
+                                       "parameter, a duration d<k> or a fixed column): valid other names",
+                                       column));
+    }
+  }
 }
 
 LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {

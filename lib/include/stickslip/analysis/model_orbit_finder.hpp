@@ -38,6 +38,10 @@ struct ModelFindOptions {
   double duration = 0.0;  // the model's time simulated from x0, > 0
   double record = 0.0;    // the last part of it the period is read from (settled_orbit.hpp); 0: all
   double phi0 = 0.0;      // the forcing's phase at t = 0
+  // A forced model's longest period read, in forcing periods (1 to kMaxMultiple): the least k that
+  // is one is taken (settled_orbit.hpp). The record must hold 2 max_multiple forcing periods.
+  int max_multiple = 1;
+  static constexpr int kMaxMultiple = 20;
   OrbitSolverOptions solver;
   ProgressCallback progress = {};  // the simulation's (model/simulation.hpp)
 };
@@ -94,7 +98,8 @@ ModelFindResult<Model> FindModelOrbit(const Model& model, const typename Model::
                                       const typename Model::State& x0, const ModelFindOptions& options) {
   ModelFindResult<Model> r;
   const double record = options.record > 0.0 ? options.record : options.duration;
-  SettledOrbitGuess<Model> settled = SettledOrbitGuessOf(model, p, x0, options.duration, record, options.phi0, options.progress);
+  SettledOrbitGuess<Model> settled =
+      SettledOrbitGuessOf(model, p, x0, options.duration, record, options.phi0, options.progress, options.max_multiple);
   if (!settled.orbit) {
     r.status = settled.message.starts_with("the simulation") ? FindOrbitStatus::kSimulationIncomplete
                                                              : FindOrbitStatus::kNoOrbitType;

@@ -25,10 +25,15 @@ struct SettleOptions {
   // Forcing periods simulated and discarded (0 to kMaxTransientPeriods), in chunks of 1000.
   int transient_periods = 200;
   int recorded_periods = 20;  // forcing periods recorded (>= 1)
-  // Section points repeat when |X - Y|_inf <= periodicity_tolerance (absolute).
+  // Section points repeat when |X - Y|_inf <= periodicity_tolerance (absolute; relative_tolerance:
+  // times the largest |component| of the section's states, for a model in physical units, whose
+  // lengths and speeds have a scale of their own).
   double periodicity_tolerance = 1e-6;
   // The simulator's guard against chattering, per simulation (per transient chunk).
   int max_events_per_simulation = 1000000;
+  bool relative_tolerance = false;
+  // Forcing periods per transient chunk, whose events and segments are held at once (>= 1).
+  int chunk_periods = 1000;
 };
 
 template <typename Model>

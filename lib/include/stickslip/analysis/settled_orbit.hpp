@@ -1,8 +1,8 @@
 // The periodic orbit a motion settles on, for any model (model/oscillator_model.hpp), as a guess
 // for the periodicity equations: the motion simulated exactly from a start state for a given time,
 // then its last whole period read from a stop (an orbit's origin is a stop). A forced model's
-// period is the forcing's, 2 pi/omega (a subharmonic or a motion that has not settled is then no
-// orbit, which the solve that follows reports); an autonomous one's (a mass on a belt, no forcing)
+// period is the least k 2 pi/omega, k = 1 to max_multiple, that is one (a motion that has not
+// settled, or a subharmonic of a higher order, is then no orbit); an autonomous one's (a mass on a belt, no forcing)
 // is the time between its last two stick entries, its self-excited stick-slip cycle. An orbit
 // whose second half mirrors its first (antisymmetric, to 1e-6 of the period, on a fixed surface) is
 // written over its half, whose symmetric segments then vanish together as one. The period must be one: a segment
@@ -142,7 +142,7 @@ Record<Model> SimulateRecord(const Model& model, const typename Model::Parameter
 template <OscillatorModel Model>
 SettledOrbitGuess<Model> OrbitOverPeriod(const Model& model, const typename Model::Parameters& p,
                                          const BasicSimulationResult<Model>& r, std::size_t first, double period,
-                                         double phi0) {
+                                         double phi0, int multiple) {
   const auto& segments = r.segments;
   const bool forced = !model.Autonomous();
   const double t0 = segments[first].t_start;
@@ -153,7 +153,8 @@ SettledOrbitGuess<Model> OrbitOverPeriod(const Model& model, const typename Mode
     durations.push_back(std::min(segments[k].t_end, t0 + period) - segments[k].t_start);
   }
   const std::size_t half = modes.size() / 2;
-  bool antisymmetric = forced && modes.size() % 2 == 0 && RestVelocity(model, p) == 0.0;
+  // Half an odd number of forcing periods flips the forcing's sign, as the mirror needs.
+  bool antisymmetric = forced && multiple % 2 == 1 && modes.size() % 2 == 0 && RestVelocity(model, p) == 0.0;
   for (std::size_t k = 0; antisymmetric && k < half; ++k) {
     antisymmetric = modes[k + half] == Mirror(modes[k]) && std::abs(durations[k + half] - durations[k]) <= 1e-6 * period;
   }
@@ -163,21 +164,46 @@ SettledOrbitGuess<Model> OrbitOverPeriod(const Model& model, const typename Mode
   }
   try {
     const double phi = forced ? std::remainder(model.ForcingFrequency(p) * t0 + phi0, 2.0 * std::numbers::pi) : 0.0;
-    return {BasicOrbit<Model>{Signature(modes, antisymmetric), p, segments[first].start, phi, durations}, ""};
+    return {BasicOrbit<Model>{Signature(modes, antisymmetric, multiple), p, segments[first].start, phi, durations}, ""};
   } catch (const InvalidInput& e) {  // a sequence no orbit type has (two sticks in a row)
     return {std::nullopt, std::string("the motion's period is no orbit type: ") + e.what()};
   }
 }
 
+// The orbit of a forced model over the least k <= max_multiple forcing periods that is a period of the
+// motion's end (a subharmonic of order k: NotSettled finds none shorter), or why there is none (the
+// reason for k = 1, the forcing's own period).
+template <OscillatorModel Model>
+SettledOrbitGuess<Model> ForcedOrbitGuess(const Model& model, const typename Model::Parameters& p,
+                                          const BasicSimulationResult<Model>& r, double record, double phi0,
+                                          int max_multiple) {
+  const double forcing_period = 2.0 * std::numbers::pi / model.ForcingFrequency(p);
+  std::string why;
+  for (int k = 1; k <= max_multiple; ++k) {
+    const double period = k * forcing_period;
+    const std::size_t first = LastPeriodStart(r.segments, record, period);
+    std::string reason = first == r.segments.size()
+                             ? "no stop in the last forcing period: the motion never stops (a steady slip) or has not settled"
+                             : NotSettled(r.segments, first, period, record);
+    if (reason.empty()) return OrbitOverPeriod(model, p, r, first, period, phi0, k);
+    if (k == 1) why = std::move(reason);
+    if (first == r.segments.size()) break;  // no stop a longer period before the end either
+  }
+  if (max_multiple > 1) why += fmt::format(" (nor is any k <= {} forcing periods a period of it)", max_multiple);
+  return {std::nullopt, std::move(why)};
+}
+
 }  // namespace settled_orbit_detail
 
 // Simulates `duration` (in the model's time, > 0) from x0 at phase phi0, and reads the period off
-// the last `record` of it (0 < record <= duration; it must hold two periods; SimulateRecord).
-// `progress` reports the whole simulation (simulation.hpp).
+// the last `record` of it (0 < record <= duration; it must hold two periods; SimulateRecord): for a
+// forced model the least of 1 to max_multiple forcing periods that is one (a subharmonic beyond the
+// first). `progress` reports the whole simulation (simulation.hpp).
 template <OscillatorModel Model>
 SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename Model::Parameters& p,
                                              const typename Model::State& x0, double duration, double record,
-                                             double phi0 = 0.0, const ProgressCallback& progress = {}) {
+                                             double phi0 = 0.0, const ProgressCallback& progress = {},
+                                             int max_multiple = 1) {
   using namespace settled_orbit_detail;
   record = std::min(record, duration);
   const Record<Model> recorded = SimulateRecord(model, p, x0, duration, record, phi0, progress);
@@ -189,22 +215,20 @@ SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename 
                                       "stick (no orbit type), or a stick longer than that (simulate longer)",
                                       record - segments.back().t_start, record)};
   }
-  const bool forced = !model.Autonomous();
-  const std::size_t first = LastPeriodStart(segments, record, forced ? 2.0 * std::numbers::pi / model.ForcingFrequency(p) : 0.0);
+  if (!model.Autonomous()) return ForcedOrbitGuess(model, p, r, record, recorded.phi0, max_multiple);
+  const std::size_t first = LastPeriodStart(segments, record, 0.0);
   if (first == segments.size()) {
-    return {std::nullopt, forced ? "no stop in the last forcing period: the motion never stops (a steady slip) or has "
-                                   "not settled"
-                                 : "fewer than two sticks in the time read: the motion does not stick periodically (a "
-                                   "steady slip, or nothing moves), or its stick-slip cycle is longer (simulate longer)"};
+    return {std::nullopt, "fewer than two sticks in the time read: the motion does not stick periodically (a steady "
+                          "slip, or nothing moves), or its stick-slip cycle is longer (simulate longer)"};
   }
-  double period = forced ? 2.0 * std::numbers::pi / model.ForcingFrequency(p) : 0.0;
+  double period = 0.0;
   for (std::size_t k = first + 1; k < segments.size() && period == 0.0; ++k) {
     if (segments[k].mode == Mode::kStick && segments[k - 1].end_reason == SegmentEnd::kStop) {
       period = segments[k].t_start - segments[first].t_start;
     }
   }
   if (std::string why = NotSettled(segments, first, period, record); !why.empty()) return {std::nullopt, std::move(why)};
-  return OrbitOverPeriod(model, p, r, first, period, recorded.phi0);
+  return OrbitOverPeriod(model, p, r, first, period, recorded.phi0, 1);
 }
 
 }  // namespace stickslip

@@ -48,6 +48,10 @@ struct SweepOptions {
   int transient_periods = 200;
   int recorded_periods = 20;    // forcing periods recorded at each point (>= 1)
   double periodicity_tolerance = 1e-6;  // section points this close repeat
+  // ... times the largest |component| of a point's section states (a model in physical units), else
+  // absolutely (the paper's scaled model).
+  bool relative_tolerance = false;
+  int chunk_periods = 1000;  // forcing periods per transient chunk (SettleOptions)
   SweepStart start = SweepStart::kChained;
   // The simulator's guard against chattering, per simulation (per transient chunk); reaching it fails the sweep with
   // an error naming the point, rather than recording a motion cut short.

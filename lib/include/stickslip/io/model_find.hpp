@@ -1,11 +1,11 @@
 // find for a run file's [model] (model_table.hpp), as every front end runs it: the oscillator and
 // its parameters (the file's, then `set` over them) read and checked once, before any work
-// (ReadModelFileStart); the motion from rest simulated for `transients` periods (kMinModelTransients to
+// (ReadModelFileStart); the motion from rest (or the state `set` gives) simulated for `transients` periods (kMinModelTransients to
 // kMaxModelTransients: forcing periods; without forcing, periods of the slowest free oscillation of
 // its slip, the stick-slip cycle's time scale), and the orbit it settles on solved and checked
 // (analysis/model_orbit_finder.hpp).
 //
-//   const ModelFindRun run = FindModelOrbitOf(ReadModelFileStart("belt.toml", {{"v_b", 0.4}}), 1000);
+//   const ModelFindRun run = FindModelOrbitOf(ReadModelFileStart("belt.toml", {{"v_b", 0.4}}), 1000, 8);
 #pragma once
 
 #include <filesystem>
@@ -22,14 +22,21 @@ namespace stickslip {
 inline constexpr int kMinModelTransients = 2;
 inline constexpr int kMaxModelTransients = 100000;
 
-// A run file's oscillator at its parameters, read once for find and trace.
+// The longest start-state component and forcing phase `set` takes (|value| at most).
+inline constexpr double kMaxModelStartValue = 1e9;
+
+// A run file's oscillator at its parameters, and the motion's start, read once for find, trace and sweep.
 struct ModelFileStart {
   DynamicLinearOscillator model;
   DynamicLinearOscillator::Parameters parameters;
   double slowest_frequency = 0.0;  // of its slip's free oscillations: the time unit without forcing
+  Eigen::VectorXd state;  // at t = 0: rest unless `set` names its components (x1_0, v1_0, ...)
+  double phi = 0.0;       // the forcing's phase at t = 0 (`set`'s phi)
 };
 
-// Throws RunFileError or InvalidInput (naming `set` entries by their names) for bad input.
+// `set` gives parameters (over the file's), start-state components by their names
+// (ModelDescription::initial_state) and the forcing phase "phi". Throws RunFileError or InvalidInput
+// (naming `set` entries by their names) for bad input.
 ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const NamedValues& set);
 
 struct ModelFindRun {
@@ -38,7 +45,10 @@ struct ModelFindRun {
   ModelFindResult<DynamicLinearOscillator> found;
 };
 
-// Throws InvalidInput naming "transients" out of its range, before any simulation.
-ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, ProgressCallback progress = {});
+// From the start's state and phase, the least period of 1 to max_multiple forcing periods (1 to
+// ModelFindOptions::kMaxMultiple; without forcing the stick-slip cycle's). Throws InvalidInput
+// naming "transients" or "max-multiple" out of its range, before any simulation.
+ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int max_multiple,
+                              ProgressCallback progress = {});
 
 }  // namespace stickslip

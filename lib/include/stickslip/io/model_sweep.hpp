@@ -1,8 +1,10 @@
 // sweep for a run file's [model] (model_table.hpp), as every front end runs it: the brute-force
 // bifurcation diagram (analysis/sweep.hpp) of the oscillator at the file's parameters and those of
-// `set` (ReadModelFileStart), in one of its parameters by name, from rest and from states scattered
-// around rest (PlanSweep's chains, scatter and seed), with the forcing's phase 0 at every section
-// time; and its CSV, with the model's own column names.
+// `set` (ReadModelFileStart), in one of its parameters by name, from rest (or the start `set` gives)
+// and from states scattered around it (PlanSweep's chains, scatter and seed), with the start's
+// forcing phase (0 unless `set` gives phi) at every section time, section points repeating within the
+// tolerance times their states' size (the model's units are its own); and its CSV, with the model's
+// own column names.
 //
 //   const ModelSweepRun run = SweepModel(ReadModelFileStart("den-hartog.toml", {}), command);
 //   WriteFileAtomically("den-hartog-sweep.csv", ModelSweepCsv(run));
@@ -18,11 +20,15 @@
 
 namespace stickslip {
 
+// Forcing periods per transient chunk of a model's sweep.
+inline constexpr int kModelChunkPeriods = 20;
+
 struct ModelSweepRun {
   DynamicLinearOscillator model;
   SweepOptions options;  // as PlanSweep gave them, the parameter by its index among the model's
   int chains = 1;
   int threads = 1;  // the threads it ran on
+  double phi = 0.0;  // the forcing phase of the section (the start's, ReadModelFileStart)
   std::vector<SweepPoint> points;
 };
 

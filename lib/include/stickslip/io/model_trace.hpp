@@ -22,8 +22,8 @@ struct ModelTraceRun {
 // Throws InvalidInput (naming "parameter" for a name that is not one of the model's parameters, or
 // omega without forcing; "range" for low >= high or one that does not hold the start's value) before
 // any work, and as FindModelOrbitOf and TraceOrbits do.
-ModelTraceRun TraceModel(const ModelFileStart& start, int transients, const std::string& parameter, double low,
-                         double high, TraceOptions options = {});
+ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
+                         double low, double high, TraceOptions options = {});
 
 // parameter, start (find's JSON: model_orbit_json.hpp), completed, and per direction ("down",
 // "up") its end, message and branches: signature, direction, start, margin, end, message and

@@ -124,7 +124,9 @@ struct OrbitMeasures {
   // segment of zero duration (where a branch changes type) included.
   int stops = 0;
   int sticks = 0;
-  // The energy friction dissipates per period (u_s times the distance x2 slides), and the viscous
+  // The energy friction dissipates per period (eta u_s, eq. 2's kinetic force, which is per unit m2,
+  // times the distance x2 slides: a chain in physical units with m1 = 1 and m2 = 1/eta dissipates
+  // u_s times it, a factor m2 less; so for equivalent_damping), and the viscous
   // coefficient that dissipates as much on x2 moving as X cos(w t) (X half x2's peak-to-peak, w the
   // orbit's angular frequency 2 pi / period): nan where x2 does not move.
   double friction_work = 0.0;
