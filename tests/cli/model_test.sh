@@ -186,6 +186,11 @@ expect 2 "x9_0 = 1 is invalid: x9_0 is no parameter of the model: valid omega, F
   "$bin" find --model "$work/pascal.toml" --set x9_0=1
 expect 2 "x2_0 = 1e+300 is invalid" "$bin" find --model "$work/pascal.toml" --set x2_0=1e300
 expect 2 "max-multiple" "$bin" find --model "$work/pascal.toml" --max-multiple 21
+printf 'start = { x9_0 = 1.0 }\n' | cat "$work/pascal.toml" - > "$work/start.toml"
+expect 2 "start.toml:9:9: model.start.x9_0 = 1 is invalid: x9_0 is not the start's: valid x1_0, x2_0, v1_0, v2_0 and phi" \
+  "$bin" find --model "$work/start.toml"
+printf 'start = { phi = 1e10 }\n' | cat "$work/pascal.toml" - > "$work/start.toml"
+expect 2 "model.start.phi" "$bin" find --model "$work/start.toml"
 
 # Bad input: the key or option named, exit 2.
 bad() {  # bad <name> <the line of belt.toml to replace> <its replacement>

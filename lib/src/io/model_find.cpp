@@ -34,27 +34,18 @@ ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const N
   const ModelTable table = ReadModelTable(run_file);
   const LinearOscillatorData data = ModelDataOf(table);
   DynamicLinearOscillator model(data);
-  // The start's entries of `set` (its state by name, the phase); the rest are parameters.
-  const std::vector<std::string>& names = model.Description().initial_state;
-  Eigen::VectorXd state = Eigen::VectorXd::Zero(model.StateSize());
-  double phi = 0.0;
+  // The start's entries of `set` (StartOf); the rest are parameters.
+  ModelStartState begin = StartOf(model, table, set);
   NamedValues parameters;
   for (const auto& [name, value] : set) {
-    const auto k = std::find(names.begin(), names.end(), name);
-    if (k == names.end() && name != "phi") {
-      if (!model.Description().ParameterIndex(name)) throw UnknownName(model.Description(), name, value);
-      parameters.emplace_back(name, value);
-      continue;
-    }
-    if (!(std::abs(value) <= kMaxModelStartValue)) {
-      throw InvalidInput(name, value, fmt::format("|{}| <= {:g}", name, kMaxModelStartValue));
-    }
-    (k == names.end() ? phi : state(k - names.begin())) = value;
+    if (IsStartName(model.Description(), name)) continue;
+    if (!model.Description().ParameterIndex(name)) throw UnknownName(model.Description(), name, value);
+    parameters.emplace_back(name, value);
   }
   const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, parameters);
   double slowest = std::numeric_limits<double>::infinity();
   for (const std::complex<double>& lambda : ModesOf(data).slip.eigenvalues) slowest = std::min(slowest, std::abs(lambda));
-  return {std::move(model), p, slowest, std::move(state), phi};
+  return {std::move(model), p, slowest, std::move(begin.state), begin.phi};
 }
 
 ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int max_multiple, ProgressCallback progress) {

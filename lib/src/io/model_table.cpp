@@ -3,6 +3,8 @@
 
 #include "stickslip/io/model_table.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -146,6 +148,7 @@ ModelTable ParseModelTable(std::string_view content, std::string_view path) {
   }
   model.Number("friction_slope", &table.friction_slope);
   model.Values("parameters", &table.parameters);
+  model.Values("start", &table.start);
   model.RejectUnknown();
   return table;
 }
@@ -340,6 +343,48 @@ DynamicLinearOscillator::Parameters ParametersOf(const DynamicLinearOscillator& 
     throw AtKey(table, invalid->Renamed("model.parameters." + invalid->field()));
   }
   return p;
+}
+
+bool IsStartName(const ModelDescription& d, std::string_view name) {
+  return name == "phi" || std::find(d.initial_state.begin(), d.initial_state.end(), name) != d.initial_state.end();
+}
+
+namespace {
+
+// Sets the start's `name` (IsStartName) to `value`, checked.
+void SetStart(const ModelDescription& d, const std::string& name, double value, ModelStartState* start) {
+  if (!(std::abs(value) <= kMaxModelStartValue)) {
+    throw InvalidInput(name, value, fmt::format("|{}| <= {:g}", name, kMaxModelStartValue));
+  }
+  if (name == "phi") {
+    start->phi = value;
+  } else {
+    start->state(std::find(d.initial_state.begin(), d.initial_state.end(), name) - d.initial_state.begin()) = value;
+  }
+}
+
+}  // namespace
+
+ModelStartState StartOf(const DynamicLinearOscillator& model, const ModelTable& table, const NamedValues& set) {
+  const ModelDescription& d = model.Description();
+  ModelStartState start{Eigen::VectorXd::Zero(model.StateSize()), 0.0};
+  for (const auto& [name, value] : table.start) {
+    const std::string key = "model.start." + name;
+    if (!IsStartName(d, name)) {
+      throw AtKey(table, InvalidInput::WithMessage(
+                             key, fmt::format("{} = {} is invalid: {} is not the start's: valid {} and phi", key, value,
+                                              name, fmt::join(d.initial_state, ", "))));
+    }
+    try {
+      SetStart(d, name, value, &start);
+    } catch (const InvalidInput& e) {
+      throw AtKey(table, e.Renamed(key));
+    }
+  }
+  for (const auto& [name, value] : set) {
+    if (IsStartName(d, name)) SetStart(d, name, value, &start);
+  }
+  return start;
 }
 
 }  // namespace stickslip

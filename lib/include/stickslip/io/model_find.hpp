@@ -22,21 +22,18 @@ namespace stickslip {
 inline constexpr int kMinModelTransients = 2;
 inline constexpr int kMaxModelTransients = 100000;
 
-// The longest start-state component and forcing phase `set` takes (|value| at most).
-inline constexpr double kMaxModelStartValue = 1e9;
-
 // A run file's oscillator at its parameters, and the motion's start, read once for find, trace and sweep.
 struct ModelFileStart {
   DynamicLinearOscillator model;
   DynamicLinearOscillator::Parameters parameters;
   double slowest_frequency = 0.0;  // of its slip's free oscillations: the time unit without forcing
-  Eigen::VectorXd state;  // at t = 0: rest unless `set` names its components (x1_0, v1_0, ...)
-  double phi = 0.0;       // the forcing's phase at t = 0 (`set`'s phi)
+  Eigen::VectorXd state;  // at t = 0: rest unless the file's start or `set` names its components (x1_0, v1_0, ...)
+  double phi = 0.0;       // the forcing's phase at t = 0 (the file's or `set`'s phi)
 };
 
-// `set` gives parameters (over the file's), start-state components by their names
-// (ModelDescription::initial_state) and the forcing phase "phi". Throws RunFileError or InvalidInput
-// (naming `set` entries by their names) for bad input.
+// `set` gives parameters (over the file's) and, over the file's start (StartOf), start-state
+// components by their names (ModelDescription::initial_state) and the forcing phase "phi". Throws
+// RunFileError or InvalidInput (naming `set` entries by their names) for bad input.
 ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const NamedValues& set);
 
 struct ModelFindRun {

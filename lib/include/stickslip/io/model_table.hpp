@@ -14,6 +14,7 @@
 //   contact = "m3"                                     # the mass the Coulomb contact is on
 //   friction_slope = 0.0                               # N s/m: a slip's kinetic level F_k + alpha |s| (optional)
 //   parameters = { omega = 0.8, F_k = 0.3, F_s = 0.4, v_b = 0.0 }   # rad/s, N, N, m/s
+//   start = { m3_0 = 0.5, phi = 0.3 }                  # m, m/s, rad: where the motion starts (optional: rest)
 //
 //   [model]
 //   kind = "matrices"                                  # files relative to the run file's folder
@@ -61,6 +62,7 @@ struct ModelTable {
   ModelMatrixFiles matrices;  // kind "matrices"
   double friction_slope = 0.0;
   NamedValues parameters;  // as written, in the file's order
+  NamedValues start;       // as written: start-state components by name (x1_0, v1_0, ...) and phi
 };
 
 // The [model] table of the run file at `path` (the rest of the file is left to ParseRunFile).
@@ -86,5 +88,22 @@ std::vector<std::optional<double>> GivenParameters(const ModelDescription& descr
 // those it has), a missing F_k, F_s or, where forced, omega, and a value outside its range.
 DynamicLinearOscillator::Parameters ParametersOf(const DynamicLinearOscillator& model, const ModelTable& table,
                                                  const NamedValues& set = {});
+
+// The largest |value| of a start-state component or phase.
+inline constexpr double kMaxModelStartValue = 1e9;
+
+// Whether `name` is one of the start's: a state component's start name (ModelDescription::initial_state)
+// or the forcing phase "phi".
+bool IsStartName(const ModelDescription& description, std::string_view name);
+
+// Where the motion starts: rest and phase 0, then the table's `start`, then `set`'s start entries
+// (IsStartName; its other entries are ParametersOf's) over it. Throws RunFileError naming
+// "model.start.<name>" at its place in the file, InvalidInput naming the name from `set`, for a name
+// that is not the start's or a value beyond kMaxModelStartValue.
+struct ModelStartState {
+  Eigen::VectorXd state;
+  double phi = 0.0;
+};
+ModelStartState StartOf(const DynamicLinearOscillator& model, const ModelTable& table, const NamedValues& set = {});
 
 }  // namespace stickslip
