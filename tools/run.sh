@@ -80,6 +80,11 @@ done
 "$bin" sweep --model continuation-scripts/models/five-mass-chain.toml --from 0.2 --to 2.0 --steps 60 --transients 300 \
   --periods 6 --chains 2 --output results/models/five-mass-chain-omega-sweep.csv
 "$bin" plot results/models/five-mass-chain-omega-sweep.csv --output results/figures/five-mass-chain-omega-sweep.png
+# The damped belt's brute-force diagram in its speed, read on its stick entries: the stick-slip cycle from
+# rest up to its fold near v_b = 0.549 (the trace's), steady sliding (max |x| = F_k/k) at every speed.
+"$bin" sweep --model continuation-scripts/models/belt-damped.toml --parameter v_b --from 0.1 --to 1.0 --steps 45 \
+  --transients 100 --periods 6 --chains 2 --output results/models/belt-damped-v_b-sweep.csv
+"$bin" plot results/models/belt-damped-v_b-sweep.csv --output results/figures/belt-damped-v_b-sweep.png
 /usr/bin/python3 tools/atlas_summary.py results
 /usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"

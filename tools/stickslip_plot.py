@@ -453,7 +453,8 @@ def quantity_label(name):
              "equivalent-damping": "equivalent viscous damping", "stops_per_period": "stops per period",
              "sticks_per_period": "sticks per period", "period": "period (forcing periods)",
              "x1": r"$x_1$ on the section", "x2": r"$x_2$ on the section", "v1": r"$\dot x_1$ on the section",
-             "v2": r"$\dot x_2$ on the section"}
+             "v2": r"$\dot x_2$ on the section", "v_b": r"belt speed $v_b$", "F_k": r"kinetic friction force $F_k$",
+             "F_s": r"static friction force $F_s$"}
     if name in words:
         return words[name]
     for prefix, text in (("amplitude:", "max $|{}|$ over a period"), ("peak-to-peak:", "peak-to-peak ${}$")):

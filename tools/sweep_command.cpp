@@ -153,7 +153,9 @@ Command AddSweepCommand(CLI::App& app) {
                   "section at that forcing phase (0 by default), --parameter one of the model's (omega, F_k, F_s, "
                   "v_b; SI units), --set its parameters; the CSV's state columns are "
                   "the model's coordinates and velocities (v<k> for x<k>, v_q for any other q), the amplitude the "
-                  "contact's coordinate's. A model without forcing is refused (no forcing phase)")
+                  "contact's coordinate's. A model without forcing (a belt) is read on its stick-entry section: the state at each "
+                  "stick entry, the period in stick-slip cycles, stops and sticks per cycle, --transients and --periods in "
+                  "units of its slowest free oscillation 2 pi/omega_1 (a steady slide: period 1, no stop)")
       ->type_name("FILE");
   return {cmd, [args, cmd] { return cmd->count("--model") == 0 ? RunSweep(*args) : RunModelSweep(*args, *cmd); }};
 }

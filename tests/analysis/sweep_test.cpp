@@ -371,17 +371,59 @@ TEST(Sweep, FollowsDenHartogsClosedFormAmplitudeForAModelOfTheUsers) {
             csv);
 }
 
-// A model without forcing has no forcing phase to take a section at: refused before any simulation,
-// as a start of another size is.
-TEST(Sweep, RefusesAModelWithoutForcingAndAStartOfAnotherSize) {
+// A mass on a belt (no forcing) read on its stick-entry section: at every belt speed the motion
+// from rest is the closed-form stick-slip cycle (FRICTION-LITERATURE.md): one stop and one stick per
+// cycle, period 1, the stick entered at x = (2 F_k - F_s)/k with the belt's speed, and max |x| =
+// F_k/k + hypot(d, v_b/omega_n), d = (F_s - F_k)/k.
+TEST(Sweep, ReadsABeltsStickSlipCycleOnItsStickEntries) {
   const BeltCycle belt;
-  const DynamicLinearOscillator autonomous(belt.Data());
-  const SweepOptions o{.parameter = 3, .from = 0.2, .to = 0.3, .steps = 1};
+  const DynamicLinearOscillator model(belt.Data());
+  SweepOptions o{.parameter = 3, .from = 0.2, .to = 0.9, .steps = 2, .transient_periods = 5, .recorded_periods = 6,
+                 .time_unit = 2.0 * std::numbers::pi, .start = SweepStart::kFixed};
+  const std::vector<SweepPoint> points = Sweep(model, {1.0, belt.F_k, belt.F_s, 0.2}, {Eigen::VectorXd::Zero(2)}, 0.0, o);
+  ASSERT_EQ(points.size(), 3u);
+  for (const SweepPoint& p : points) {
+    BeltCycle at = belt;
+    at.v_b = p.value;
+    EXPECT_EQ(p.period, 1) << "v_b = " << p.value;
+    EXPECT_EQ(p.stops_per_period, 1.0);
+    EXPECT_EQ(p.sticks_per_period, 1.0);
+    EXPECT_NEAR(p.contact_amplitude, at.F_k / at.k + at.Radius(), 1e-10) << "v_b = " << p.value;
+    ASSERT_FALSE(p.section.empty());
+    EXPECT_NEAR(p.section.front()(0), at.Restick(), 1e-10);
+    EXPECT_NEAR(p.section.front()(1), p.value, 1e-12);
+  }
+  // Its forcing frequency plays no part; a model without forcing needs a time unit.
+  o.parameter = SweepOptions::kForcingFrequency;
   try {
-    Sweep(autonomous, {1.0, belt.F_k, belt.F_s, 0.2}, {Eigen::VectorXd::Zero(2)}, 0.0, o);
+    Sweep(model, {1.0, belt.F_k, belt.F_s, 0.2}, {Eigen::VectorXd::Zero(2)}, 0.0, o);
     FAIL() << "no error";
   } catch (const InvalidInput& error) {
-    EXPECT_EQ(error.field(), "model") << error.what();
+    EXPECT_EQ(error.field(), "parameter") << error.what();
+  }
+  o.parameter = 3;
+  o.time_unit = 0.0;
+  try {
+    Sweep(model, {1.0, belt.F_k, belt.F_s, 0.2}, {Eigen::VectorXd::Zero(2)}, 0.0, o);
+    FAIL() << "no error";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "time_unit") << error.what();
+  }
+}
+
+// A damped mass on a belt with equal friction levels slides steadily at x = F_k/k: period 1 on the
+// section every time unit, no stop, no stick.
+TEST(Sweep, ReadsASteadySlideAsPeriodOneWithoutStops) {
+  BeltCycle belt;
+  belt.F_s = belt.F_k;
+  const DynamicLinearOscillator model(belt.Data(0.5));
+  const SweepOptions o{.parameter = 3, .from = 0.5, .to = 0.6, .steps = 1, .transient_periods = 20,
+                       .recorded_periods = 4, .time_unit = 2.0 * std::numbers::pi, .start = SweepStart::kFixed};
+  for (const SweepPoint& p : Sweep(model, {1.0, belt.F_k, belt.F_s, 0.5}, {Eigen::VectorXd::Zero(2)}, 0.0, o)) {
+    EXPECT_EQ(p.period, 1) << "v_b = " << p.value;
+    EXPECT_EQ(p.stops_per_period, 0.0);
+    EXPECT_EQ(p.sticks_per_period, 0.0);
+    EXPECT_NEAR(p.contact_amplitude, belt.F_k / belt.k, 1e-6);
   }
   try {
     Sweep(DenHartogsMass(), {1.5, 0.25, 0.25, 0.0}, {Eigen::VectorXd::Zero(3)}, 0.0, SweepOptions{.from = 1.5, .to = 2.0});

@@ -81,9 +81,9 @@ def test_sweep_is_the_command_lines_file(tmp_path):
     # Den Hartog's amplitude X = sqrt(V^2 - beta^2 U^2) at omega = 2: V = -1/3, U = 1/2, beta = 1/4.
     assert max(abs(swept.section[1, :, 0])) <= math.sqrt(1 / 9 - 1 / 64) + 1e-8
     with pytest.raises(ValueError) as python:
-        stickslip.sweep(range=(0.2, 0.3), parameter="v_b", model=MODELS / "belt.toml")
-    assert str(python.value) == cli_error("sweep", "--model", MODELS / "belt.toml", "--parameter", "v_b", "--from", 0.2,
-                                          "--to", 0.3, "--output", tmp_path / "belt.csv")
+        stickslip.sweep(range=(0.2, 0.3), parameter="omega", model=MODELS / "belt.toml")
+    assert str(python.value) == cli_error("sweep", "--model", MODELS / "belt.toml", "--parameter", "omega", "--from",
+                                          0.2, "--to", 0.3, "--output", tmp_path / "belt.csv")
     with pytest.raises(ValueError, match="preset is invalid with model="):
         stickslip.sweep(range=(1.5, 2.5), model=MODELS / "den-hartog.toml", preset="paper-4.1")
 

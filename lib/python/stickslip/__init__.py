@@ -436,7 +436,8 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
     `parameter` one of its parameters (omega, F_k, F_s, v_b), `set` a dict of them over the file's;
     the chains start from rest (or set='s start state and phi) and from states scattered around it,
     the section at that forcing phase;
-    section has the model's state size, the CSV its column names. A model without forcing is refused.
+    section has the model's state size, the CSV its column names. A model without forcing (a belt) is
+    read on its stick-entry section (per stick-slip cycle; a steady slide has period 1, no stop).
     """
     low, high = _pair(range, "range")
     numbers = {"steps": steps, "transients": transients, "periods": periods, "chains": chains, "scatter": scatter,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/transient.hpp"
@@ -15,11 +16,29 @@ namespace stickslip {
 
 namespace {
 
+// The extrema of f over [0, duration]; where the search over the whole is cut short (a slide of many
+// periods whose velocity decays towards underflow), over pieces of at most `piece`, at most 10^6 of them.
+template <typename Function>
+Extrema ExtremaInPieces(const Function& f, double duration, double piece) {
+  const Extrema whole = MinimumAndMaximum(f, 0.0, duration);
+  if (!(std::isnan(whole.minimum.value) || std::isnan(whole.maximum.value)) || !(piece > 0.0)) return whole;
+  const double pieces = std::ceil(duration / piece);
+  if (!(pieces <= 1e6)) return whole;
+  Extrema e = MinimumAndMaximum(f, 0.0, std::min(piece, duration));
+  for (double k = 1; k < pieces && !std::isnan(e.minimum.value) && !std::isnan(e.maximum.value); ++k) {
+    const Extrema part = MinimumAndMaximum(f, k * piece, std::min((k + 1) * piece, duration));
+    if (std::isnan(part.minimum.value) || std::isnan(part.maximum.value)) return part;
+    if (part.minimum.value < e.minimum.value) e.minimum = part.minimum;
+    if (part.maximum.value > e.maximum.value) e.maximum = part.maximum;
+  }
+  return e;
+}
+
 // max |q_c| of the contact's coordinate c over the simulated segments of `r`: at each segment's
 // ends, and inside a slip also at the extrema of its closed form (MinimumAndMaximum: the zeros of
-// q_c'); NaN if a search was cut short.
+// q_c', over pieces of one `piece` where a long slide's search is cut short); NaN if a search still is.
 template <OscillatorModel Model>
-double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& r) {
+double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& r, double piece) {
   const typename Model::Parameters& p = r.parameters;
   const int c = ContactCoordinate(model);
   const double omega = model.ForcingFrequency(p);
@@ -28,7 +47,7 @@ double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& 
     double low = std::min(s.start(c), s.end(c)), high = std::max(s.start(c), s.end(c));
     if (s.mode != Mode::kStick) {
       const typename Model::Motion motion = model.MotionInMode(s.mode, s.start, omega * s.t_start + r.phi, p);
-      const Extrema e = MinimumAndMaximum(model.CoordinateAlong(motion, c), 0.0, s.t_end - s.t_start);
+      const Extrema e = ExtremaInPieces(model.CoordinateAlong(motion, c), s.t_end - s.t_start, piece);
       if (std::isnan(e.minimum.value) || std::isnan(e.maximum.value)) return std::numeric_limits<double>::quiet_NaN();
       low = std::min(low, e.minimum.value);
       high = std::max(high, e.maximum.value);
@@ -108,20 +127,33 @@ struct PerPeriod {
   double sticks = 0.0;
 };
 
-// Stops and sticks per forcing period over the first `periods` forcing periods of the record (the
-// events are in time order).
+// Stops and sticks per period over the `periods` periods from t0 to t1 of the record (the events
+// are in time order).
 template <typename Model>
-PerPeriod CountPerPeriod(const BasicSimulationResult<Model>& r, int periods, double forcing_period) {
+PerPeriod CountPerPeriod(const BasicSimulationResult<Model>& r, int periods, double t0, double t1) {
   PerPeriod count;
-  const double end = periods * forcing_period;
   for (const auto& e : r.events) {
-    if (e.t >= end) break;
+    if (e.t >= t1) break;
+    if (e.t < t0) continue;
     count.stops += e.kind == EventKind::kStop;
     count.sticks += e.mode_after == Mode::kStick;
   }
   count.stops /= periods;
   count.sticks /= periods;
   return count;
+}
+
+// The times a stick begins after a stop in the record (the stick-entry section of a model without
+// forcing), at most `count`.
+template <typename Model>
+std::vector<double> StickEntries(const BasicSimulationResult<Model>& r, std::size_t count) {
+  std::vector<double> times;
+  for (std::size_t k = 1; k < r.segments.size() && times.size() < count; ++k) {
+    if (r.segments[k].mode == Mode::kStick && r.segments[k - 1].end_reason == SegmentEnd::kStop) {
+      times.push_back(r.segments[k].t_start);
+    }
+  }
+  return times;
 }
 
 // The state at time t (t_start <= t <= t_end of a segment of `r`) from the closed form.
@@ -133,14 +165,13 @@ typename Model::State StateAtTime(const Model& model, const BasicSimulationResul
   return model.Flow(s.mode, s.start, model.ForcingFrequency(r.parameters) * s.t_start + r.phi, t - s.t_start, r.parameters);
 }
 
-}  // namespace
-
+// The transient from `start` (its periods 2 pi/frequency), then the record of `duration` from its end:
+// the motion with its record, or with where and why a simulation stopped early.
 template <OscillatorModel Model>
-BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Model::Parameters& p,
-                                          const typename Model::State& start, double phi_section,
-                                          const SettleOptions& o) {
+BasicSettledMotion<Model> SimulateOut(const Model& model, const typename Model::Parameters& p,
+                                      const typename Model::State& start, double phi_section, double frequency,
+                                      double duration, const SettleOptions& o) {
   using ModelState = typename Model::State;
-  const double period = 2.0 * std::numbers::pi / model.ForcingFrequency(p);
   BasicSettledMotion<Model> motion;
   // The transients in chunks (SimulateTransientAt), each a simulation under max_events_per_simulation,
   // so that the largest transients (1e6 periods, millions of events) run.
@@ -150,7 +181,8 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
   transient.simulation.max_events = o.max_events_per_simulation;
   const auto simulate = [&model](const typename Model::Parameters& q, const ModelState& x, double phi,
                                  const BasicSimulationOptions<ModelState>& so) { return SimulateExact(model, q, x, phi, so); };
-  const BasicTransient<ModelState> settled = SimulateTransientAt(model.ForcingFrequency(p), simulate, p, start, phi_section, transient);
+  const BasicTransient<ModelState> settled =
+      SimulateTransientAt(frequency, simulate, p, start, phi_section, transient);
   motion.last = settled.state;
   if (!settled.Completed()) {
     motion.end = settled.end;
@@ -158,7 +190,7 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
     return motion;
   }
   BasicSimulationOptions<ModelState> record;
-  record.duration = o.recorded_periods * period;
+  record.duration = duration;
   record.max_events = o.max_events_per_simulation;
   motion.record = SimulateExact(model, p, settled.state, phi_section, record);
   const BasicSimulationResult<Model>& r = motion.record;
@@ -166,23 +198,78 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
     motion.end = r.end;
     motion.message = r.message;
     if (!r.segments.empty()) motion.last = r.segments.back().end;
-    return motion;
   }
-  for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * period));
-  motion.last = motion.section.back();
-  motion.contact_amplitude = ContactAmplitude(model, r);
+  return motion;
+}
+
+// The section's least period (to the tolerance, relative to its states' size where asked) and the
+// distance still to go.
+template <typename StateVector>
+LeastSectionPeriod PeriodOnSection(const std::vector<StateVector>& section, const SettleOptions& o) {
   double scale = 1.0;
   if (o.relative_tolerance) {
     scale = 0.0;
-    for (const ModelState& x : motion.section) scale = std::max(scale, x.template lpNorm<Eigen::Infinity>());
+    for (const StateVector& x : section) scale = std::max(scale, x.template lpNorm<Eigen::Infinity>());
   }
-  const LeastSectionPeriod least = LeastPeriodOnSection(motion.section, o.periodicity_tolerance * scale);
+  return LeastPeriodOnSection(section, o.periodicity_tolerance * scale);
+}
+
+// A model without forcing: the state at each stick entry (recorded_periods of them, in a record of
+// recorded_periods kRecordUnitsPerEntry time units), its least period in stick-slip cycles; where
+// the contact never sticks, the state every time unit (a steady slide repeats at once).
+inline constexpr int kRecordUnitsPerEntry = 10;
+template <OscillatorModel Model>
+BasicSettledMotion<Model> WithStickEntrySection(const Model& model, double unit, const SettleOptions& o,
+                                                BasicSettledMotion<Model> motion) {
+  const BasicSimulationResult<Model>& r = motion.record;
+  const std::vector<double> entries = StickEntries(r, static_cast<std::size_t>(o.recorded_periods) + 1);
+  if (entries.size() < 2) {  // no stick-slip cycle: the stroboscopic section in time units
+    for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * unit));
+    const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
+    motion.period = entries.empty() && r.events.empty() ? least.period : 0;
+    motion.last = motion.section.back();
+    return motion;
+  }
+  for (std::size_t k = 0; k + 1 < entries.size(); ++k) motion.section.push_back(StateAtTime(model, r, entries[k]));
+  const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
+  motion.period = least.period;
+  motion.settling = least.settling;
+  const int cycles = static_cast<int>(entries.size()) - 1;
+  const int counted = least.period > 0 ? cycles / least.period * least.period : cycles;
+  const PerPeriod per_cycle = CountPerPeriod(r, counted, entries.front(), entries[counted]);
+  motion.stops_per_period = per_cycle.stops;
+  motion.sticks_per_period = per_cycle.sticks;
+  motion.last = motion.section.back();
+  return motion;
+}
+
+}  // namespace
+
+template <OscillatorModel Model>
+BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Model::Parameters& p,
+                                          const typename Model::State& start, double phi_section,
+                                          const SettleOptions& o) {
+  const bool forced = !model.Autonomous();
+  if (!forced && !(o.time_unit > 0.0)) throw InvalidInput("time_unit", o.time_unit, "time_unit > 0 without forcing");
+  const double frequency = forced ? model.ForcingFrequency(p) : 2.0 * std::numbers::pi / o.time_unit;
+  const double period = forced ? 2.0 * std::numbers::pi / frequency : o.time_unit;
+  BasicSettledMotion<Model> motion = SimulateOut(model, p, start, phi_section, frequency,
+                                                 o.recorded_periods * period * (forced ? 1 : kRecordUnitsPerEntry), o);
+  if (!motion.Completed()) return motion;
+  const BasicSimulationResult<Model>& r = motion.record;
+  motion.contact_amplitude = ContactAmplitude(model, r, period);
+  if (!forced) {
+    return WithStickEntrySection(model, period, o, std::move(motion));
+  }
+  for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * period));
+  motion.last = motion.section.back();
+  const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
   motion.period = least.period;
   motion.settling = least.settling;
   // Over whole least periods (a period-p motion gives multiples of 1/p), the record's whole when
   // there is none: a window of part of a period would count that part's events once too few or many.
   const int counted = least.period > 0 ? o.recorded_periods / least.period * least.period : o.recorded_periods;
-  const PerPeriod per_period = CountPerPeriod(r, counted, period);
+  const PerPeriod per_period = CountPerPeriod(r, counted, 0.0, counted * period);
   motion.stops_per_period = per_period.stops;
   motion.sticks_per_period = per_period.sticks;
   return motion;

@@ -53,7 +53,7 @@ SweepPoint SimulatePoint(const Model& model, const typename Model::Parameters& b
   const int k = SweptParameter<Model>(o);
   Model::ParameterAt(p, k) = ValueAt(o, pass, step);
   const SettleOptions settle{o.transient_periods, o.recorded_periods, o.periodicity_tolerance,
-                             o.max_events_per_simulation, o.relative_tolerance, o.chunk_periods};
+                             o.max_events_per_simulation, o.relative_tolerance, o.chunk_periods, o.time_unit};
   BasicSettledMotion<Model> motion = SimulateSettled(model, p, start, phi_section, settle);
   if (!motion.Completed()) {
     throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
@@ -86,9 +86,8 @@ std::vector<SweepPoint> ChainedPasses(const Model& model, const typename Model::
 template <OscillatorModel Model>
 void CheckSweep(const Model& model, const typename Model::Parameters& base,
                 const std::vector<typename Model::State>& starts, const SweepOptions& options) {
-  if (model.Autonomous()) {
-    throw InvalidInput("model", "a model without forcing",
-                       "a forced model: a sweep's section is the state at one forcing phase, once per period");
+  if (model.Autonomous() && !(options.time_unit > 0.0)) {
+    throw InvalidInput("time_unit", options.time_unit, "time_unit > 0 for a model without forcing");
   }
   if (starts.empty()) throw InvalidInput("starts", "none", "at least one starting state");
   for (const auto& x : starts) {
@@ -99,6 +98,10 @@ void CheckSweep(const Model& model, const typename Model::Parameters& base,
     throw InvalidInput("parameter", options.parameter, fmt::format("0 <= parameter < {}", int{Model::kParameterCount}));
   }
   const ModelDescription& d = model.Description();
+  if (model.Autonomous() && k == Model::kForcingFrequencyParameter) {
+    throw InvalidInput("parameter", "'" + d.parameters[k].name + "'",
+                       "one of the parameters of a model without forcing (its forcing frequency plays no part)");
+  }
   if (std::find(d.state_columns.begin(), d.state_columns.end(), d.parameters[k].name) != d.state_columns.end()) {
     throw InvalidInput("parameter", "'" + d.parameters[k].name + "'",
                        "a parameter no state column shares its name with (a coordinate 'b' has the velocity column "

@@ -1,6 +1,7 @@
 #include "stickslip/io/model_sweep.hpp"
 
 #include <cstdint>
+#include <numbers>
 #include <utility>
 
 #include "stickslip/numerics/parallel_for.hpp"
@@ -15,6 +16,8 @@ ModelSweepRun SweepModel(const ModelFileStart& start, const SweepCommand& comman
   // transient chunks, whose events (each of the model's size) are held at once.
   run.options.relative_tolerance = true;
   run.options.chunk_periods = kModelChunkPeriods;
+  // Without forcing, the slowest free oscillation of its slip is the time unit (as find's).
+  run.options.time_unit = 2.0 * std::numbers::pi / start.slowest_frequency;
   const int items = run.options.start == SweepStart::kChained ? run.chains : run.chains * (run.options.steps + 1);
   run.threads = WorkerCount(run.options.threads, items);
   run.points = Sweep(start.model, start.parameters, ScatteredStarts(start.state, plan.scatter, plan.chains, plan.seed),

@@ -185,9 +185,35 @@ ZeroSearch Zeros(const ExponentialSum& f, double a, double b, int max_count, con
   if (const std::optional<SinusoidSum> undamped = AsSinusoidSum(f)) return Zeros(*undamped, a, b, max_count, options);
   return detail::FindZeros<IntervalBounds>(f, a, b, max_count, options);
 }
+namespace {
+
+// Where f' has decayed below the normal range of doubles to the end of [a, b] (a slide settling onto
+// a steady state), f moves less than (b - a) 2.2e-308 there: constant to rounding. The start of that
+// tail, found by bisection on the bound of |f'| (b where there is none).
+double FlatTailStart(const ExponentialSum& f, double a, double b) {
+  const auto flat = [&](double t) { return f.DerivativeBound(1, t, b) < std::numeric_limits<double>::min(); };
+  if (!flat(b) || flat(a)) return flat(a) ? a : b;
+  double low = a, high = b;
+  for (int k = 0; k < 200 && low < high && std::nextafter(low, high) < high; ++k) {  // bounded: halves to an ulp
+    const double middle = low + 0.5 * (high - low);
+    (flat(middle) ? high : low) = middle;
+  }
+  return high;
+}
+
+}  // namespace
+
 Extrema MinimumAndMaximum(const ExponentialSum& f, double a, double b, const ZeroSearchOptions& options) {
   if (const std::optional<SinusoidSum> undamped = AsSinusoidSum(f)) return MinimumAndMaximum(*undamped, a, b, options);
-  return detail::FindExtrema<IntervalBounds>(f, a, b, options);
+  const double tail = FlatTailStart(f, a, b);
+  if (tail >= b) return detail::FindExtrema<IntervalBounds>(f, a, b, options);
+  // The search up to the flat tail, whose extrema are its ends.
+  Extrema e = tail > a ? detail::FindExtrema<IntervalBounds>(f, a, tail, options) : Extrema{{a, f(a)}, {a, f(a)}};
+  for (const double t : {tail, b}) {
+    if (const double v = f(t); v < e.minimum.value) e.minimum = {t, v};
+    if (const double v = f(t); v > e.maximum.value) e.maximum = {t, v};
+  }
+  return e;
 }
 Extremum Minimum(const ExponentialSum& f, double a, double b, const ZeroSearchOptions& options) {
   return MinimumAndMaximum(f, a, b, options).minimum;

@@ -26,6 +26,7 @@
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
+#include "stickslip/orbits/least_period.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/model_orbit_solver.hpp"
 #include "stickslip/orbits/orbit_measures.hpp"
@@ -91,6 +92,33 @@ ModelFindResult<Model> CheckedModelOrbit(const Model& model, ModelFindResult<Mod
   return r;
 }
 
+// r with r.guess solved into r.solution, every start variable, the phase and the durations unknown (the
+// parameters held); where it cannot be or did not converge, with the status and the message why.
+template <IntegrableOscillatorModel Model>
+ModelFindResult<Model> SolvedAtFixedParameters(const Model& model, const ModelFindOptions& options,
+                                               ModelFindResult<Model> r) {
+  // At the given parameters: an abnormal stop (which the periodicity equations pay for with a
+  // released friction level, UnknownsAtFixedParameters) makes the system not square.
+  std::vector<int> free;
+  try {
+    free = FreeIndices(VariableSetOf(model, r.guess->signature), UnknownChoice{});
+  } catch (const InvalidInput&) {
+    r.status = FindOrbitStatus::kNoOrbitType;
+    r.message = fmt::format("the motion's period '{}' has an abnormal stop (a stop without reversal or stick), whose "
+                             "orbit is solved only with a friction level released: not at the given parameters",
+                             r.guess->signature.ToString());
+    return r;
+  }
+  r.solution = SolveOrbit(model, *r.guess, free, false, options.solver);
+  if (!r.solution->summary.Converged()) {
+    r.status = FindOrbitStatus::kSolveFailed;
+    r.message = fmt::format("Newton did not converge from the simulated '{}': {}", r.guess->signature.ToString(),
+                             r.solution->summary.BriefReport());
+    return r;
+  }
+  return r;
+}
+
 // Simulates from x0 (options.duration > 0), solves the orbit read off the motion's last period with
 // every start variable, the phase and the durations unknown (the parameters held), and checks it.
 template <IntegrableOscillatorModel Model>
@@ -107,24 +135,16 @@ ModelFindResult<Model> FindModelOrbit(const Model& model, const typename Model::
     return r;
   }
   r.guess = settled.orbit;
-  // At the given parameters: an abnormal stop (which the periodicity equations pay for with a
-  // released friction level, UnknownsAtFixedParameters) makes the system not square.
-  std::vector<int> free;
-  try {
-    free = FreeIndices(VariableSetOf(model, r.guess->signature), UnknownChoice{});
-  } catch (const InvalidInput&) {
-    r.status = FindOrbitStatus::kNoOrbitType;
-    r.message = fmt::format("the motion's period '{}' has an abnormal stop (a stop without reversal or stick), whose "
-                            "orbit is solved only with a friction level released: not at the given parameters",
-                            r.guess->signature.ToString());
-    return r;
-  }
-  r.solution = SolveOrbit(model, *r.guess, free, false, options.solver);
-  if (!r.solution->summary.Converged()) {
-    r.status = FindOrbitStatus::kSolveFailed;
-    r.message = fmt::format("Newton did not converge from the simulated '{}': {}", r.guess->signature.ToString(),
-                            r.solution->summary.BriefReport());
-    return r;
+  r = SolvedAtFixedParameters(model, options, std::move(r));
+  if (!r.message.empty()) return r;
+  // A motion still contracting onto an orbit of period d, with a multiplier near a (k/d)-th root of
+  // unity, repeats to tolerance after k > d forcing periods first: the orbit solved over k periods is
+  // the period-d one written k/d times. Reduced to its least period and solved there.
+  const BasicLeastPeriodOrbit<Model> least = ReduceToLeastPeriod(model, r.solution->orbit);
+  if (least.status == LeastPeriodStatus::kReduced) {
+    r.guess = least.orbit;
+    r = SolvedAtFixedParameters(model, options, std::move(r));
+    if (!r.message.empty()) return r;
   }
   return CheckedModelOrbit(model, std::move(r));
 }

@@ -34,6 +34,10 @@ struct SettleOptions {
   bool relative_tolerance = false;
   // Forcing periods per transient chunk, whose events and segments are held at once (>= 1).
   int chunk_periods = 1000;
+  // A model without forcing: the time that counts as a "period" (> 0; the slowest free oscillation's
+  // 2 pi/omega_1 for a model of the user's): the transient is transient_periods of it; the record
+  // holds recorded_periods stick entries within 10 recorded_periods of it.
+  double time_unit = 0.0;
 };
 
 template <typename Model>
@@ -72,10 +76,13 @@ struct BasicSettledMotion {
 
 using SettledMotion = BasicSettledMotion<Pascal2014>;
 
-// From `start` at t = 0 (forcing phase phi_section) at p, for a forced model (not Autonomous()).
-// Preconditions: model.Validate(p) passed, options in range (the callers check them). A simulation
-// that stops early (max events, the event search's bound) is reported in `end` and `message`, not
-// thrown. Compiled for Pascal2014 and DynamicLinearOscillator.
+// From `start` at t = 0 (forcing phase phi_section) at p. A model without forcing (Autonomous()) is
+// read on its stick-entry section: the state at each stick entry, the period in stick-slip cycles,
+// stops and sticks per cycle; where it never sticks, on the state every time_unit (a steady slide
+// then has period 1). Preconditions: model.Validate(p) passed, options in range (the callers check
+// them); throws InvalidInput for time_unit <= 0 without forcing. A simulation that stops early (max
+// events, the event search's bound) is reported in `end` and `message`, not thrown. Compiled for
+// Pascal2014 and DynamicLinearOscillator.
 template <OscillatorModel Model>
 BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Model::Parameters& p,
                                           const typename Model::State& start, double phi_section,

@@ -52,6 +52,9 @@ struct SweepOptions {
   // absolutely (the paper's scaled model).
   bool relative_tolerance = false;
   int chunk_periods = 1000;  // forcing periods per transient chunk (SettleOptions)
+  // A model without forcing: the time counted as a period (SettleOptions::time_unit, > 0); its
+  // points are read on their stick-entry section.
+  double time_unit = 0.0;
   SweepStart start = SweepStart::kChained;
   // The simulator's guard against chattering, per simulation (per transient chunk); reaching it fails the sweep with
   // an error naming the point, rather than recording a motion cut short.
@@ -83,8 +86,9 @@ struct SweepPoint {
 
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`
 // (time 0) of its first point. Points are ordered by chain, then pass (up before down), then
-// step, whatever the number of threads. Throws InvalidInput for no starts, a start not of the
-// model's size, an autonomous model (no forcing phase to take a section at), options out of range
+// step, whatever the number of threads. A model without forcing is read on its stick-entry section
+// (SimulateSettled). Throws InvalidInput for no starts, a start not of the model's size, omega or a
+// time_unit <= 0 for a model without forcing, options out of range
 // or a swept value where the model's Validate fails (field "from" or "to" at an end, "steps"
 // inside), and std::runtime_error naming the point when a simulation stops early
 // (max_events_per_simulation, or the event search's bound). Compiled for Pascal2014 and

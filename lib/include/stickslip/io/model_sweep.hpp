@@ -32,7 +32,8 @@ struct ModelSweepRun {
   std::vector<SweepPoint> points;
 };
 
-// Throws InvalidInput as PlanSweep and Sweep do (an autonomous model, naming "model": a sweep's
+// A model without forcing is read on its stick-entry section, its time unit the slowest free
+// oscillation of its slip (2 pi/omega_1, as find's). Throws InvalidInput as PlanSweep and Sweep do (omega for a model without forcing; a sweep's
 // section is a forcing phase), before any simulation; std::runtime_error as Sweep does.
 ModelSweepRun SweepModel(const ModelFileStart& start, const SweepCommand& command, ProgressCallback progress = {});
 
