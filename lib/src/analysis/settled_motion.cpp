@@ -143,17 +143,15 @@ PerPeriod CountPerPeriod(const BasicSimulationResult<Model>& r, int periods, dou
   return count;
 }
 
-// The times a stick begins after a stop in the record (the stick-entry section of a model without
-// forcing), at most `count`.
+// The segments of the record that are a stick begun at a stop (the stick-entry section of a model
+// without forcing: their start states are at rest exactly), at most `count`.
 template <typename Model>
-std::vector<double> StickEntries(const BasicSimulationResult<Model>& r, std::size_t count) {
-  std::vector<double> times;
-  for (std::size_t k = 1; k < r.segments.size() && times.size() < count; ++k) {
-    if (r.segments[k].mode == Mode::kStick && r.segments[k - 1].end_reason == SegmentEnd::kStop) {
-      times.push_back(r.segments[k].t_start);
-    }
+std::vector<std::size_t> StickEntries(const BasicSimulationResult<Model>& r, std::size_t count) {
+  std::vector<std::size_t> entries;
+  for (std::size_t k = 1; k < r.segments.size() && entries.size() < count; ++k) {
+    if (r.segments[k].mode == Mode::kStick && r.segments[k - 1].end_reason == SegmentEnd::kStop) entries.push_back(k);
   }
-  return times;
+  return entries;
 }
 
 // The state at time t (t_start <= t <= t_end of a segment of `r`) from the closed form.
@@ -222,21 +220,27 @@ template <OscillatorModel Model>
 BasicSettledMotion<Model> WithStickEntrySection(const Model& model, double unit, const SettleOptions& o,
                                                 BasicSettledMotion<Model> motion) {
   const BasicSimulationResult<Model>& r = motion.record;
-  const std::vector<double> entries = StickEntries(r, static_cast<std::size_t>(o.recorded_periods) + 1);
-  if (entries.size() < 2) {  // no stick-slip cycle: the stroboscopic section in time units
+  const std::vector<std::size_t> entries = StickEntries(r, static_cast<std::size_t>(o.recorded_periods) + 1);
+  if (entries.size() < 2) {
+    // No stick-slip cycle in the record: the state every time unit, and the stops and sticks per time
+    // unit; a period only where nothing happens (a steady slide, or a contact stuck throughout).
     for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * unit));
-    const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
-    motion.period = entries.empty() && r.events.empty() ? least.period : 0;
+    const int units = o.recorded_periods * kRecordUnitsPerEntry;  // the whole record
+    const PerPeriod per_unit = CountPerPeriod(r, units, 0.0, units * unit);
+    motion.stops_per_period = per_unit.stops;
+    motion.sticks_per_period = per_unit.sticks;
+    motion.period = r.events.empty() ? PeriodOnSection(motion.section, o).period : 0;
     motion.last = motion.section.back();
     return motion;
   }
-  for (std::size_t k = 0; k + 1 < entries.size(); ++k) motion.section.push_back(StateAtTime(model, r, entries[k]));
+  for (std::size_t k = 0; k + 1 < entries.size(); ++k) motion.section.push_back(r.segments[entries[k]].start);
   const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
   motion.period = least.period;
   motion.settling = least.settling;
   const int cycles = static_cast<int>(entries.size()) - 1;
   const int counted = least.period > 0 ? cycles / least.period * least.period : cycles;
-  const PerPeriod per_cycle = CountPerPeriod(r, counted, entries.front(), entries[counted]);
+  const PerPeriod per_cycle =
+      CountPerPeriod(r, counted, r.segments[entries.front()].t_start, r.segments[entries[counted]].t_start);
   motion.stops_per_period = per_cycle.stops;
   motion.sticks_per_period = per_cycle.sticks;
   motion.last = motion.section.back();

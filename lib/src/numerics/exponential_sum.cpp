@@ -187,11 +187,12 @@ ZeroSearch Zeros(const ExponentialSum& f, double a, double b, int max_count, con
 }
 namespace {
 
-// Where f' has decayed below the normal range of doubles to the end of [a, b] (a slide settling onto
-// a steady state), f moves less than (b - a) 2.2e-308 there: constant to rounding. The start of that
+// Where f' has decayed to the edge of the normal range of doubles to the end of [a, b] (a slide
+// settling onto a steady state), f moves less than (b - a) 2.4e-296 there: constant to rounding. The start of that
 // tail, found by bisection on the bound of |f'| (b where there is none).
 double FlatTailStart(const ExponentialSum& f, double a, double b) {
-  const auto flat = [&](double t) { return f.DerivativeBound(1, t, b) < std::numeric_limits<double>::min(); };
+  // With headroom over the normal range: the search before the tail bounds f' on its own sub-intervals.
+  const auto flat = [&](double t) { return f.DerivativeBound(1, t, b) < 0x1p40 * std::numeric_limits<double>::min(); };
   if (!flat(b) || flat(a)) return flat(a) ? a : b;
   double low = a, high = b;
   for (int k = 0; k < 200 && low < high && std::nextafter(low, high) < high; ++k) {  // bounded: halves to an ulp

@@ -51,7 +51,7 @@ template <OscillatorModel Model>
 struct ModelFindResult {
   FindOrbitStatus status = FindOrbitStatus::kNoOrbitType;
   std::string message;
-  std::optional<BasicOrbit<Model>> guess;  // read off the simulated motion
+  std::optional<BasicOrbit<Model>> guess;  // read off the simulated motion (at its least period)
   std::optional<BasicOrbitSolution<Model>> solution;
   // Where Newton converged:
   std::vector<Margin> margins;
@@ -142,9 +142,10 @@ ModelFindResult<Model> FindModelOrbit(const Model& model, const typename Model::
   // the period-d one written k/d times. Reduced to its least period and solved there.
   const BasicLeastPeriodOrbit<Model> least = ReduceToLeastPeriod(model, r.solution->orbit);
   if (least.status == LeastPeriodStatus::kReduced) {
-    r.guess = least.orbit;
-    r = SolvedAtFixedParameters(model, options, std::move(r));
-    if (!r.message.empty()) return r;
+    ModelFindResult<Model> reduced = r;
+    reduced.guess = least.orbit;
+    reduced = SolvedAtFixedParameters(model, options, std::move(reduced));
+    if (reduced.message.empty()) r = std::move(reduced);  // else the orbit as read, over k periods
   }
   return CheckedModelOrbit(model, std::move(r));
 }

@@ -78,8 +78,9 @@ using SettledMotion = BasicSettledMotion<Pascal2014>;
 
 // From `start` at t = 0 (forcing phase phi_section) at p. A model without forcing (Autonomous()) is
 // read on its stick-entry section: the state at each stick entry, the period in stick-slip cycles,
-// stops and sticks per cycle; where it never sticks, on the state every time_unit (a steady slide
-// then has period 1). Preconditions: model.Validate(p) passed, options in range (the callers check
+// stops and sticks per cycle; where the record holds fewer than two stick entries, on the state
+// every time_unit with stops and sticks per time unit, and a period only where nothing happens (a
+// steady slide, or a contact stuck throughout: its velocity is the belt's; period 1). Preconditions: model.Validate(p) passed, options in range (the callers check
 // them); throws InvalidInput for time_unit <= 0 without forcing. A simulation that stops early (max
 // events, the event search's bound) is reported in `end` and `message`, not thrown. Compiled for
 // Pascal2014 and DynamicLinearOscillator.
