@@ -16,29 +16,11 @@ namespace stickslip {
 
 namespace {
 
-// The extrema of f over [0, duration]; where the search over the whole is cut short (a slide of many
-// periods whose velocity decays towards underflow), over pieces of at most `piece`, at most 10^6 of them.
-template <typename Function>
-Extrema ExtremaInPieces(const Function& f, double duration, double piece) {
-  const Extrema whole = MinimumAndMaximum(f, 0.0, duration);
-  if (!(std::isnan(whole.minimum.value) || std::isnan(whole.maximum.value)) || !(piece > 0.0)) return whole;
-  const double pieces = std::ceil(duration / piece);
-  if (!(pieces <= 1e6)) return whole;
-  Extrema e = MinimumAndMaximum(f, 0.0, std::min(piece, duration));
-  for (double k = 1; k < pieces && !std::isnan(e.minimum.value) && !std::isnan(e.maximum.value); ++k) {
-    const Extrema part = MinimumAndMaximum(f, k * piece, std::min((k + 1) * piece, duration));
-    if (std::isnan(part.minimum.value) || std::isnan(part.maximum.value)) return part;
-    if (part.minimum.value < e.minimum.value) e.minimum = part.minimum;
-    if (part.maximum.value > e.maximum.value) e.maximum = part.maximum;
-  }
-  return e;
-}
-
 // max |q_c| of the contact's coordinate c over the simulated segments of `r`: at each segment's
 // ends, and inside a slip also at the extrema of its closed form (MinimumAndMaximum: the zeros of
-// q_c', over pieces of one `piece` where a long slide's search is cut short); NaN if a search still is.
+// q_c'); NaN if a search was cut short.
 template <OscillatorModel Model>
-double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& r, double piece) {
+double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& r) {
   const typename Model::Parameters& p = r.parameters;
   const int c = ContactCoordinate(model);
   const double omega = model.ForcingFrequency(p);
@@ -47,7 +29,7 @@ double ContactAmplitude(const Model& model, const BasicSimulationResult<Model>& 
     double low = std::min(s.start(c), s.end(c)), high = std::max(s.start(c), s.end(c));
     if (s.mode != Mode::kStick) {
       const typename Model::Motion motion = model.MotionInMode(s.mode, s.start, omega * s.t_start + r.phi, p);
-      const Extrema e = ExtremaInPieces(model.CoordinateAlong(motion, c), s.t_end - s.t_start, piece);
+      const Extrema e = MinimumAndMaximum(model.CoordinateAlong(motion, c), 0.0, s.t_end - s.t_start);
       if (std::isnan(e.minimum.value) || std::isnan(e.maximum.value)) return std::numeric_limits<double>::quiet_NaN();
       low = std::min(low, e.minimum.value);
       high = std::max(high, e.maximum.value);
@@ -261,7 +243,7 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
                                                  o.recorded_periods * period * (forced ? 1 : kRecordUnitsPerEntry), o);
   if (!motion.Completed()) return motion;
   const BasicSimulationResult<Model>& r = motion.record;
-  motion.contact_amplitude = ContactAmplitude(model, r, period);
+  motion.contact_amplitude = ContactAmplitude(model, r);
   if (!forced) {
     return WithStickEntrySection(model, period, o, std::move(motion));
   }

@@ -349,25 +349,20 @@ bool IsStartName(const ModelDescription& d, std::string_view name) {
   return name == "phi" || std::find(d.initial_state.begin(), d.initial_state.end(), name) != d.initial_state.end();
 }
 
-namespace {
-
-// Sets the start's `name` (IsStartName) to `value`, checked.
-void SetStart(const ModelDescription& d, const std::string& name, double value, ModelStartState* start) {
-  if (!(std::abs(value) <= kMaxModelStartValue)) {
-    throw InvalidInput(name, value, fmt::format("|{}| <= {:g}", name, kMaxModelStartValue));
-  }
-  if (name == "phi") {
-    start->phi = value;
-  } else {
-    start->state(std::find(d.initial_state.begin(), d.initial_state.end(), name) - d.initial_state.begin()) = value;
-  }
-}
-
-}  // namespace
-
 ModelStartState StartOf(const DynamicLinearOscillator& model, const ModelTable& table, const NamedValues& set) {
   const ModelDescription& d = model.Description();
   ModelStartState start{Eigen::VectorXd::Zero(model.StateSize()), 0.0};
+  // The start's `name` (IsStartName) set to `value`, checked.
+  const auto set_start = [&](const std::string& name, double value) {
+    if (!(std::abs(value) <= kMaxModelStartValue)) {
+      throw InvalidInput(name, value, fmt::format("|{}| <= {:g}", name, kMaxModelStartValue));
+    }
+    if (name == "phi") {
+      start.phi = value;
+    } else {
+      start.state(std::find(d.initial_state.begin(), d.initial_state.end(), name) - d.initial_state.begin()) = value;
+    }
+  };
   for (const auto& [name, value] : table.start) {
     const std::string key = "model.start." + name;
     if (!IsStartName(d, name)) {
@@ -376,13 +371,13 @@ ModelStartState StartOf(const DynamicLinearOscillator& model, const ModelTable& 
                                               name, fmt::join(d.initial_state, ", "))));
     }
     try {
-      SetStart(d, name, value, &start);
+      set_start(name, value);
     } catch (const InvalidInput& e) {
       throw AtKey(table, e.Renamed(key));
     }
   }
   for (const auto& [name, value] : set) {
-    if (IsStartName(d, name)) SetStart(d, name, value, &start);
+    if (IsStartName(d, name)) set_start(name, value);
   }
   return start;
 }
