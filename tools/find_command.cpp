@@ -138,7 +138,7 @@ int WriteAndTrace(const FindArgs& args, const FindOutputs& outputs, const StartI
   const RunFile run = FoundRun(solved, *outputs.trace, args.output, true);
   int code = kExitOk;
   const std::optional<TraceRun> trace = ExecuteTrace(run, args.start.results, &code);
-  return trace ? WriteAndReportTrace(run, *trace, args.start.results) : code;
+  return trace ? WriteAndReportTrace(trace->stored, trace->seconds, args.start.results) : code;
 }
 
 // find's outcome as one JSON object, by the names of Python's Found: status, message, the section's
@@ -211,16 +211,16 @@ int RunFind(const FindArgs& args) {
 
 // find --model: the options of the paper's model's start and of what find writes are refused.
 int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"--preset", "--point", "--results", "--tolerance", "--confirmations",
-                             "--output", "--write-run", "--as", "--range", "--force"}) {
+  for (const char* option : {"--preset", "--point", "--tolerance", "--confirmations", "--write-run", "--as",
+                             "--range", "--force"}) {
     if (cmd.count(option) == 0) continue;
     throw InvalidInput::WithMessage(
         option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients, "
-                                "--max-multiple, --trace, --trace-parameter and --json",
+                                "--max-multiple, --trace, --trace-parameter, --output, --results and --json",
                                 option));
   }
-  return RunModelFind(
-      {args.model, args.start.set, args.transients, args.max_multiple, args.json, args.trace, args.trace_parameter});
+  return RunModelFind({args.model, args.start.set, args.transients, args.max_multiple, args.json, args.trace,
+                       args.trace_parameter, args.output, args.start.results});
 }
 
 }  // namespace
@@ -266,7 +266,7 @@ Command AddFindCommand(CLI::App& app) {
   cmd->add_option("--trace", args->trace,
                   "then trace from the found orbit in omega over LO,HI (which must hold its omega), as stickslip "
                   "trace does, into <results>/<output>/: the same files, the same report (with --model: in "
-                  "--trace-parameter, printed, not written)")
+                  "--trace-parameter; printed, and written where --output is given)")
       ->type_name("LO,HI");
   cmd->add_option("--output", args->output, "the trace's directory under --results (a run name; with --trace), and "
                                             "the output of the run file --write-run writes");
@@ -297,7 +297,8 @@ Command AddFindCommand(CLI::App& app) {
                   "--transients periods (forcing periods; without forcing, periods of its slowest free oscillation), "
                   "its last period (the least of 1 to --max-multiple forcing periods that is one) read from a stop "
                   "(without forcing: between its last two sticks), solved and verified; takes --set NAME=VALUE over "
-                  "the file's parameters, --transients, --max-multiple, --trace, --trace-parameter and --json only")
+                  "the file's parameters, --transients, --max-multiple, --trace, --trace-parameter, --output, --results and "
+                  "--json only")
       ->type_name("FILE");
   cmd->add_option("--trace-parameter", args->trace_parameter,
                   "with --model and --trace: the parameter traced (omega, F_k, F_s or v_b; default omega, or v_b "

@@ -95,7 +95,7 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   }
   if (!(r.first_min < r.first_max)) throw InvalidInput("first-from", r.first_min, fmt::format("< first-to ({})", r.first_max));
   if (!(r.second_min < r.second_max)) throw InvalidInput("second-from", r.second_min, fmt::format("< second-to ({})", r.second_max));
-  CheckCorners(r, trace.runs.front().branch.front().orbit.parameters);
+  CheckCorners(r, OrbitOf(trace.runs.front(), trace.runs.front().branch.front()).parameters);
   std::optional<BruteForceMap> brute;
   if (cmd.count("--brute-force") > 0) {  // "" too: no file
     brute = ReadBruteForceMapCsv(ReadWholeFile(args.brute_force, "brute-force", "a map file of stickslip map-sweep"), args.brute_force);

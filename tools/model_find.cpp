@@ -1,5 +1,6 @@
 #include "model_find.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -15,6 +16,8 @@
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/io/model_find.hpp"
 #include "stickslip/io/model_trace.hpp"
+#include "stickslip/io/trace_files.hpp"
+#include "trace_run.hpp"
 
 namespace stickslip::cli {
 
@@ -79,7 +82,7 @@ std::string TraceText(const BasicTraceResult<DynamicLinearOscillator>& trace) {
     }
     out += fmt::format("  {}: {}: {}\n", chain->direction > 0 ? "up" : "down", ToString(chain->end), chain->message);
   }
-  out += "(printed, not written: the result files hold the paper's model only in this version; --json gives every point)\n";
+  out += "(printed: --output NAME writes it as stickslip trace does; --json gives every point)\n";
   return out;
 }
 
@@ -90,6 +93,11 @@ ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
   const int max_multiple = ParseCount("max-multiple", args.max_multiple, 1, ModelFindOptions::kMaxMultiple);
   if (!args.trace_parameter.empty() && args.trace.empty()) {
     throw InvalidInput("trace-parameter", "'" + args.trace_parameter + "'", "with --trace");
+  }
+  if (!args.output.empty() && args.trace.empty()) throw InvalidInput("output", "'" + args.output + "'", "with --trace");
+  if (!args.output.empty()) {
+    if (!IsRunName(args.output)) throw InvalidInput("output", "'" + args.output + "'", std::string(kRunNameRule));
+    CheckTraceOutputDirectory(args.results, args.output);
   }
   if (args.trace.empty()) {
     return {FindModelOrbitOf(ReadModelFileStart(args.file, set), transients, max_multiple, line.Callback()), {}};
@@ -125,18 +133,31 @@ NamedValues ModelSetOf(const std::vector<std::string>& texts) {
 
 int RunModelFind(const ModelFindArgs& args) {
   ProgressLine line("find: transient");
+  const auto started = std::chrono::steady_clock::now();
   const ModelTraceRun run = FindAndTrace(args, line);
   line.Clear();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const ModelFindResult<DynamicLinearOscillator>& found = run.find.found;
+  const bool written = run.trace && !args.output.empty() && !(run.trace->down.links.empty() && run.trace->up.links.empty());
   if (args.json) {
     fmt::print("{}\n", run.trace ? ModelTraceJson(run) : ModelFindJson(run.find.model, found));
   } else if (found.solution && found.solution->summary.Converged()) {
     fmt::print("{}", Text(run.find.model, found));
-    if (run.trace) fmt::print("{}", TraceText(*run.trace));
+    if (run.trace && !written) fmt::print("{}", TraceText(*run.trace));
   }
   if (const int code = FindExitCode(found.status); code != kExitOk) {
     fmt::print(stderr, "error: {}: {}\n", args.file, found.message);
     return code;
+  }
+  if (written) {
+    const StoredTrace stored = RecordTrace(run.find.model,
+                                           StoredSummary{.run_file = args.file,
+                                                         .output = args.output,
+                                                         .parameter = run.trace->parameter,
+                                                         .model = kLinearOscillatorModel},
+                                           *run.trace);
+    if (!args.json) return WriteAndReportTrace(stored, seconds, args.results);
+    WriteTraceFiles(args.results, stored);
   }
   if (!run.trace || !run.trace->Failed()) return kExitOk;
   for (const BasicTraceDirection<DynamicLinearOscillator>* chain : {&run.trace->down, &run.trace->up}) {

@@ -19,6 +19,8 @@ struct ModelFindArgs {
   bool json = false;
   std::string trace;             // "LO,HI": trace from the orbit found; empty: none
   std::string trace_parameter;   // the traced parameter; empty: omega, or v_b without forcing
+  std::string output;            // with --trace: the trace's directory under `results`; empty: printed only
+  std::string results = "results";
 };
 
 // --set NAME=VALUE ... (parameters, start-state components by name, phi) as named values, each a finite number (the model's reader checks the names
@@ -27,7 +29,9 @@ NamedValues ModelSetOf(const std::vector<std::string>& set);
 
 // The exit code as find's: 0 found and verified (and the trace ran to its ends), 3 Newton failed (or
 // a branch of the trace), 4 no motion or not verified, 5 no orbit type read off the motion (it never
-// stops, or has not settled), 1 the simulation stopped early. Throws InvalidInput for bad input.
+// stops, or has not settled), 1 the simulation stopped early. With `output`, the trace is written
+// to results/<output>/ as stickslip trace writes one (io/trace_files.hpp), its directory checked
+// before the work. Throws InvalidInput for bad input.
 int RunModelFind(const ModelFindArgs& args);
 
 }  // namespace stickslip::cli

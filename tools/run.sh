@@ -70,21 +70,26 @@ mkdir -p results/models
 for f in continuation-scripts/models/*.toml; do
   { "$bin" describe "$f"; echo; "$bin" find --model "$f"; } > "results/models/$(basename "$f" .toml).txt"
 done
-# Two of them traced from there through their changes of orbit type: the five-mass chain over a decade
-# of omega, the damped belt in its speed up to the fold where the slip grazes the belt.
-"$bin" find --model continuation-scripts/models/five-mass-chain.toml --trace 0.2,2.0 \
-  > results/models/five-mass-chain-omega-trace.txt
-"$bin" find --model continuation-scripts/models/belt-damped.toml --trace 0.1,1.0 > results/models/belt-damped-v_b-trace.txt
+# Two of them traced from there through their changes of orbit type, written as stickslip trace writes a
+# trace: the five-mass chain over a decade of omega, the damped belt in its speed up to the fold where
+# the slip grazes the belt.
+"$bin" find --model continuation-scripts/models/five-mass-chain.toml --trace 0.2,2.0 --results results/models \
+  --output five-mass-chain-omega-trace
+"$bin" find --model continuation-scripts/models/belt-damped.toml --trace 0.1,1.0 --results results/models \
+  --output belt-damped-v_b-trace
 # The five-mass chain's brute-force diagram over the same decade, from rest and a start scattered around
-# it, up and back down: its resonances, and the permanent sticks below omega = 0.4; and its figure.
+# it, up and back down: its resonances, and the permanent sticks below omega = 0.4; and its figure with
+# the trace's branches over it.
 "$bin" sweep --model continuation-scripts/models/five-mass-chain.toml --from 0.2 --to 2.0 --steps 60 --transients 300 \
   --periods 6 --chains 2 --output results/models/five-mass-chain-omega-sweep.csv
-"$bin" plot results/models/five-mass-chain-omega-sweep.csv --output results/figures/five-mass-chain-omega-sweep.png
+"$bin" plot results/models/five-mass-chain-omega-trace results/models/five-mass-chain-omega-sweep.csv \
+  --output results/figures/five-mass-chain-omega-sweep.png
 # The damped belt's brute-force diagram in its speed, read on its stick entries: the stick-slip cycle from
 # rest up to its fold near v_b = 0.549 (the trace's), steady sliding (max |x| = F_k/k) at every speed.
 "$bin" sweep --model continuation-scripts/models/belt-damped.toml --parameter v_b --from 0.1 --to 1.0 --steps 45 \
   --transients 100 --periods 6 --chains 2 --output results/models/belt-damped-v_b-sweep.csv
-"$bin" plot results/models/belt-damped-v_b-sweep.csv --output results/figures/belt-damped-v_b-sweep.png
+"$bin" plot results/models/belt-damped-v_b-trace results/models/belt-damped-v_b-sweep.csv \
+  --output results/figures/belt-damped-v_b-sweep.png
 /usr/bin/python3 tools/atlas_summary.py results
 /usr/bin/python3 tools/map_summary.py results
 tools/paper_table.sh "$bin"

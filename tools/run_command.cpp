@@ -113,7 +113,7 @@ int RunRuns(const RunArgs& args) {
     if (run.trace) {
       int traced = kExitOk;
       std::optional<TraceRun> trace = ExecuteTrace(run, args.results, &traced);
-      if (trace) traced = WriteAndReportTrace(run, *trace, args.results);
+      if (trace) traced = WriteAndReportTrace(trace->stored, trace->seconds, args.results);
       if (code == kExitOk) code = traced;
       continue;
     }

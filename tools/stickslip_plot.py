@@ -1008,16 +1008,29 @@ def _check_drawable(options, x, y, results):
             raise BadInput(options.name(which), "'log'", f"linear, or log where some value of {quantity} is > 0 (none is)")
 
 
+def _contact_amplitude(result):
+    """The default y: max |x2| for the paper's model; for a [model] its contact coordinate's
+    amplitude (the coordinate its peak-to-peak column names, or a sweep's amplitude column)."""
+    if result.kind == "sweep":
+        columns = result.header
+    else:
+        columns = next((list(b.rows[0]) for b in _branches(result) if b.rows), [])
+    if "amplitude:x2" in columns or not columns:
+        return "amplitude:x2"
+    contact = next((c.split(":", 1)[1] for c in columns if c.startswith("peak-to-peak:")), None)
+    if contact:
+        return f"amplitude:{contact}"
+    return next((c for c in columns if c.startswith("amplitude:")), "amplitude:x2")
+
+
 def _response_figure(results, options, plt):
     x = options.x or results[0].parameter
     if options.y:
         y = options.y
     elif all(r.kind == "curve" for r in results):
         y = results[0].second
-    elif results[0].kind == "sweep" and "amplitude:x2" not in results[0].header:
-        y = next((c for c in results[0].header if c.startswith("amplitude:")), "amplitude:x2")  # a model's contact
     else:
-        y = "amplitude:x2"
+        y = _contact_amplitude(results[0])
     _check_quantity(options, "x", x, results)
     _check_quantity(options, "y", y, results)
     _check_drawable(options, x, y, results)

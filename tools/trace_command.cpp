@@ -39,29 +39,26 @@ std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::
   return TraceRun{std::move(result), std::move(stored), seconds};
 }
 
-int TraceExitCode(const TraceResult& trace) { return trace.Failed() ? kExitNoConvergence : kExitOk; }
-
-int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::filesystem::path& results) {
-  const std::vector<std::string> kept = WriteTraceFiles(results, trace.stored);
-  fmt::print("{}: {} branches in {:.3f} s\n", run.output, trace.stored.branches.size(), trace.seconds);
-  for (const StoredTraceBranch& b : trace.stored.branches) {
+int WriteAndReportTrace(const StoredTrace& trace, double seconds, const std::filesystem::path& results) {
+  const std::vector<std::string> kept = WriteTraceFiles(results, trace);
+  fmt::print("{}: {} branches in {:.3f} s\n", trace.output, trace.branches.size(), seconds);
+  for (const StoredTraceBranch& b : trace.branches) {
     fmt::print("  {} ({} chain) '{}' {} from {}{}: {} points, {}\n", b.name, b.chain, b.signature, b.direction, b.start,
                b.margin.empty() ? "" : " at " + b.margin, b.points, b.end);
   }
-  for (const StoredTraceDirection& d : trace.stored.directions) {
+  for (const StoredTraceDirection& d : trace.directions) {
     // A resonance's message names it already ("resonance: the amplitude ...").
     fmt::print("  {}: {}\n", d.direction, d.message.starts_with(d.end + ":") ? d.message : d.end + ": " + d.message);
   }
   if (!kept.empty()) {
-    fmt::print("{}: kept {} other file(s) of {}: {}\n", run.output, kept.size(), (results / run.output).string(),
+    fmt::print("{}: kept {} other file(s) of {}: {}\n", trace.output, kept.size(), (results / trace.output).string(),
                fmt::join(kept, ", "));
   }
-  const int code = TraceExitCode(trace.result);
-  if (code != kExitOk) {
-    for (const StoredTraceDirection& d : trace.stored.directions) {
-      if (d.end != "continuation-failed") continue;
-      fmt::print(stderr, "{}: the {} chain failed: {}\n", run.output, d.direction, d.message);
-    }
+  int code = kExitOk;
+  for (const StoredTraceDirection& d : trace.directions) {
+    if (d.end != ToString(TraceEnd::kContinuationFailed)) continue;
+    fmt::print(stderr, "{}: the {} chain failed: {}\n", trace.output, d.direction, d.message);
+    code = kExitNoConvergence;
   }
   return code;
 }
@@ -93,7 +90,7 @@ int RunTrace(TraceArgs args) {
     throw AsOption(error);
   }
   if (!trace) return code;
-  return WriteAndReportTrace(run, *trace, args.continuation.start.results);
+  return WriteAndReportTrace(trace->stored, trace->seconds, args.continuation.start.results);
 }
 
 }  // namespace

@@ -21,13 +21,10 @@ struct TraceRun {
 // it), kExitNoConvergence when no branch started. Nothing to write then.
 std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code);
 
-// kExitOk when both directions ran to their ends, whatever those were (a bound, a loop, a
-// resonance, a change of type that switched nowhere, ...: results, written and printed);
-// kExitNoConvergence when a branch failed to converge.
-int TraceExitCode(const TraceResult& trace);
-
-// Writes the trace's files and reports it on stdout; returns TraceExitCode, with the reason of a
-// non-zero code on stderr.
-int WriteAndReportTrace(const RunFile& run, const TraceRun& trace, const std::filesystem::path& results);
+// Writes the trace's files (any model's, io/trace_files.hpp) and reports it on stdout, `seconds`
+// its wall time. Returns kExitOk when both directions ran to their ends, whatever those were (a
+// bound, a loop, a resonance, a change of type that switched nowhere, ...: results, written and
+// printed), kExitNoConvergence when a branch failed to converge, with the reason on stderr.
+int WriteAndReportTrace(const StoredTrace& trace, double seconds, const std::filesystem::path& results);
 
 }  // namespace stickslip::cli

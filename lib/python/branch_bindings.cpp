@@ -495,7 +495,7 @@ void BindBranches(py::module_& m) {
             const int size = static_cast<int>(r.branch.size());
             if (point < 0) point += size;
             if (point < 0 || point >= size) throw py::index_error(fmt::format("point {} of {}", point, size));
-            return SampleOrbit(r.branch[point].orbit, n);
+            return SampleOrbit(OrbitOf(r, r.branch[point]), n);
           },
           py::arg("point"), py::arg("n"))
       .def("__len__", [](const StoredRun& r) { return r.branch.size(); });

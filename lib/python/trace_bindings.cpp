@@ -163,7 +163,8 @@ void BindTrace(py::module_& m) {
       });
   m.def("_trace", &Trace, py::arg("run"), py::arg("options"));
   // A run file's [model] traced from the orbit its motion settles on (io/model_trace.hpp), as the
-  // JSON text of `stickslip find --model --trace --json`, for the package to load.
+  // JSON text of `stickslip find --model --trace --json`, for the package to load, and its stored
+  // form (None where no branch started), whose save() writes what --output writes.
   m.def(
       "_trace_model",
       [](const std::string& path, const NamedValues& set, double transients, const std::string& parameter, double low,
@@ -175,8 +176,16 @@ void BindTrace(py::module_& m) {
           const py::gil_scoped_acquire acquire;
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         };
-        return ModelTraceJson(TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple,
-                                         parameter, low, high, trace));
+        const ModelTraceRun run =
+            TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple, parameter, low, high, trace);
+        std::optional<StoredTrace> stored;
+        if (run.trace && !(run.trace->down.links.empty() && run.trace->up.links.empty())) {
+          stored = RecordTrace(run.find.model,
+                               StoredSummary{.run_file = path, .output = "trace", .parameter = parameter,
+                                             .model = kLinearOscillatorModel},
+                               *run.trace);
+        }
+        return std::make_pair(ModelTraceJson(run), std::move(stored));
       },
       py::arg("path"), py::arg("set"), py::arg("transients"), py::arg("parameter"), py::arg("low"), py::arg("high"),
       py::arg("options"));

@@ -20,7 +20,7 @@ namespace {
 Orbit LabelledOrbit(const char* run, const char* label) {
   const StoredRun stored = ReadRunFiles(std::filesystem::path(STICKSLIP_SOURCE_DIR) / "results" / run);
   for (const StoredSpecialPoint& s : stored.special_points) {
-    if (s.point.label == label) return s.point.orbit;
+    if (s.point.label == label) return OrbitOf(stored, s.point);
   }
   throw std::runtime_error(std::string(label) + " is not in " + run);
 }

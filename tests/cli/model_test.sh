@@ -246,14 +246,46 @@ expect 2 "model.springs" "$bin" describe "$work/loose.toml"
 expect 2 "Omega = 1 is invalid: Omega is no parameter of the model" "$bin" find --model "$models/belt.toml" --set Omega=1
 expect 2 "v_b = 1e+300 is invalid" "$bin" find --model "$models/belt.toml" --set v_b=1e300
 expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1
-expect 2 "results is not taken with --model" "$bin" find --model "$models/belt.toml" --results "$work/out"
 expect 2 "transients" "$bin" find --model "$models/belt.toml" --transients 1e9
 expect 2 "preset is not taken with --model" "$bin" find --model "$models/belt.toml" --preset paper-5.1
-expect 2 "output is not taken with --model" "$bin" find --model "$models/belt.toml" --trace 0.1,0.2 --output t
+expect 2 "output = 't' is invalid: valid range with --trace" "$bin" find --model "$models/belt.toml" --output t --results "$work/out"
+expect 2 "output = 'a/b' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --output a/b --results "$work/out"
+mkdir -p "$work/out/mine" && echo notes > "$work/out/mine/NOTES.md"
+expect 2 "output = 'mine' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --output mine --results "$work/out"
+rm -r "$work/out/mine"
 expect 2 "trace-parameter = 'F_k' is invalid: valid range with --model" "$bin" find --preset paper-4.1 --trace-parameter F_k
 expect 2 "trace-parameter = 'v_b' is invalid: valid range with --trace" "$bin" find --model "$models/belt.toml" --trace-parameter v_b
 expect 2 "trace-parameter = 'omega' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,1 --trace-parameter omega
 expect 2 "trace = '0.3,1' is invalid: valid range finite LO < HI with LO <= v_b = 0.2 <= HI" "$bin" find --model "$models/belt.toml" --trace 0.3,1
+# A [model]'s trace written as stickslip trace writes one: the forced chain's trace.csv holds each
+# orbit's period (k 2 pi/omega, k from its signature), its start state by the model's names, and
+# the points --json prints; a second run replaces its own files and keeps the user's.
+"$bin" find --model "$models/five-mass-chain.toml" --trace 0.55,0.7 --output chain --results "$work/traces" \
+  > "$work/chain.txt" 2> "$work/chain.err" && grep -q "^chain: 3 branches in" "$work/chain.txt" && pass ||
+  fail "find --model --trace --output: $(cat "$work/chain.err" "$work/chain.txt")"
+"$bin" find --model "$models/five-mass-chain.toml" --trace 0.55,0.7 --json > "$work/chain.json"
+/usr/bin/python3 - "$work/traces/chain" "$work/chain.json" <<'PY' && pass || fail "the written model trace is not the printed one"
+import csv, json, math, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/trace.csv")))
+printed = json.load(open(sys.argv[2]))
+points = [p for d in ("down", "up") for b in printed[d]["branches"] for p in b["points"]]
+assert len(rows) == len(points) > 50, (len(rows), len(points))
+assert list(rows[0])[7:17] == ["m1_0", "m2_0", "m3_0", "m4_0", "m5_0", "v_m1_0", "v_m2_0", "v_m3_0", "v_m4_0", "stable"], list(rows[0])
+for row, p in zip(rows, points):
+    k = 3 if "period 3" in row["signature"] else 2 if "period 2" in row["signature"] else 1
+    assert abs(float(row["period"]) - k * 2 * math.pi / float(row["omega"])) <= 1e-12 * float(row["period"]), row
+    assert float(row["omega"]) == p["omega"] and float(row["period"]) == p["period"], (row, p)
+    assert int(row["stable"]) == p["stable"] and int(row["admissible"]) == p["admissible"], (row, p)
+summary = json.load(open(sys.argv[1] + "/branch-1/summary.json"))
+assert summary["model"] == "linear-oscillator" and json.load(open(sys.argv[1] + "/trace.json"))["model"] == "linear-oscillator"
+PY
+echo mine > "$work/traces/chain/NOTES.md"
+"$bin" find --model "$models/five-mass-chain.toml" --trace 0.55,0.7 --output chain --results "$work/traces" > "$work/chain.txt" &&
+  grep -q "kept 1 other file(s) of .*: NOTES.md" "$work/chain.txt" && [ "$(cat "$work/traces/chain/NOTES.md")" = mine ] && pass ||
+  fail "a second find --model --trace --output did not keep the user's file: $(cat "$work/chain.txt")"
+"$bin" plot "$work/traces/chain" --output "$work/chain.png" > /dev/null && [ -s "$work/chain.png" ] && pass ||
+  fail "stickslip plot of a [model]'s trace"
+expect 2 "valid here a run of the paper's oscillator" "$bin" export --auto "$work/traces/chain/branch-1"
 expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
 expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \

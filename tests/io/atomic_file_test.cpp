@@ -11,17 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/file_text.hpp"
+
 namespace stickslip {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Contents(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class AtomicFile : public ::testing::Test {
  protected:
@@ -43,7 +38,7 @@ TEST_F(AtomicFile, WriterPiecesAppearAtCommit) {
   for (int k = 0; k < 1000; ++k) out.Write(std::to_string(k) + ",0.5\n");
   EXPECT_FALSE(fs::exists(target));
   out.Commit();
-  const std::string text = Contents(target);
+  const std::string text = Slurp(target);
   EXPECT_EQ(text.substr(0, 5), "t,x1\n");
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1001);
   EXPECT_EQ(Entries(), 1);
@@ -58,7 +53,7 @@ TEST_F(AtomicFile, WriterDroppedBeforeCommitLeavesTheTargetAndNoTemporaryFile) {
     throw std::runtime_error("the simulation failed");
   } catch (const std::runtime_error&) {
   }
-  EXPECT_EQ(Contents(target), "keep\n");
+  EXPECT_EQ(Slurp(target), "keep\n");
   EXPECT_EQ(Entries(), 1);
 }
 
@@ -82,7 +77,7 @@ TEST_F(AtomicFile, WriterRefusesALinkPlantedAtItsTemporaryName) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("is in the way"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(Contents(precious), "mine\n");
+  EXPECT_EQ(Slurp(precious), "mine\n");
   EXPECT_TRUE(fs::is_symlink(temporary));
   EXPECT_FALSE(fs::exists(target));
 }
@@ -96,7 +91,7 @@ TEST_F(AtomicFile, WholeWriteReplacesTheTarget) {
   const fs::path target = directory_ / "b.run";
   std::ofstream(target) << "old";
   WriteFileAtomically(target, "new");
-  EXPECT_EQ(Contents(target), "new");
+  EXPECT_EQ(Slurp(target), "new");
   EXPECT_EQ(Entries(), 1);
 }
 

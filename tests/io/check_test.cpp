@@ -27,7 +27,7 @@ TEST(CompareWithStored, ReportsAFoldMovedBeyondTheParameterTolerance) {
   StoredRun fresh = stored;
   StoredSpecialPoint& fold = fresh.special_points[3];
   ASSERT_EQ(fold.point.label, "LP4");
-  fold.point.orbit.parameters.omega *= 1 + 1e-6;  // the tolerance is a relative 1e-8
+  Named(fold.point.solution, "omega") *= 1 + 1e-6;  // the tolerance is a relative 1e-8
   const std::vector<Difference> differences = CompareWithStored(fresh, stored);
   ASSERT_EQ(differences.size(), 1u);
   EXPECT_EQ(differences[0].file, "special-points.csv");
@@ -56,10 +56,10 @@ TEST(CompareWithStored, ReportsAMeasureBeyondTheSolutionToleranceAndACountThatDi
   const StoredRun stored = ReadRunFiles(kRun);
   StoredRun fresh = stored;
   StoredPoint& fold = fresh.special_points[3].point;
-  fold.measures.amplitude_x2 += 1e-8 * fold.measures.amplitude_x2;  // within 1e-7 (1 + |x|)
+  Named(fold.measures, "amplitude:x2") *= 1 + 1e-8;  // within 1e-7 (1 + |x|)
   EXPECT_TRUE(CompareWithStored(fresh, stored).empty());
-  fold.measures.amplitude_x2 = stored.special_points[3].point.measures.amplitude_x2 + 1e-5;
-  fold.measures.sticks = 2;
+  Named(fold.measures, "amplitude:x2") = Named(stored.special_points[3].point.measures, "amplitude:x2") + 1e-5;
+  Named(fold.measures, "sticks") = 2;
   std::vector<std::string> found;
   for (const Difference& d : CompareWithStored(fresh, stored)) found.push_back(d.row + " " + d.column);
   EXPECT_EQ(found, (std::vector<std::string>{"LP4 amplitude:x2", "LP4 sticks"}));
@@ -71,8 +71,8 @@ TEST(CompareWithStored, LeavesOutTheMeasuresTheStoredFilesLack) {
   StoredRun stored = ReadRunFiles(kRun);
   const StoredRun fresh = stored;
   stored.absent_measures = {"friction-work", "equivalent-damping"};
-  for (StoredSpecialPoint& s : stored.special_points) s.point.measures.friction_work = std::nan("");
-  for (StoredPoint& p : stored.branch) p.measures.equivalent_damping = std::nan("");
+  for (StoredSpecialPoint& s : stored.special_points) Named(s.point.measures, "friction-work") = std::nan("");
+  for (StoredPoint& p : stored.branch) Named(p.measures, "equivalent-damping") = std::nan("");
   EXPECT_TRUE(CompareWithStored(fresh, stored).empty());
   stored.absent_measures.clear();
   EXPECT_FALSE(CompareWithStored(fresh, stored).empty());

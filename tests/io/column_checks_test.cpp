@@ -21,19 +21,14 @@
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/trace_files.hpp"
 
+#include "support/file_text.hpp"
+
 namespace stickslip {
 namespace {
 
 namespace fs = std::filesystem;
 
 const fs::path kResults = fs::path(STICKSLIP_SOURCE_DIR) / "results";
-
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string ErrorOf(const std::function<void()>& read) {
   try {
@@ -126,7 +121,8 @@ TEST(ColumnChecks, ADurationIsWithinThePeriodOnAnAdmissibleRowToRounding) {
 }
 
 // The non-finite values the format documents: an inapplicable margin inf, det(H + I) of an
-// orbit that is not antisymmetric nan, a Floquet value that could not be computed nan.
+// orbit that is not antisymmetric nan, a Floquet value that could not be computed nan, a product
+// over the multipliers that overflows inf or -inf (never a multiplier).
 TEST(ColumnChecks, OnlyTheDocumentedNonFiniteValuesAreRead) {
   const std::string run = "paper-5.1-omega-up";  // slip- slip+ stick slip+, not antisymmetric
   EXPECT_EQ(BranchError(run, 3, "margin:velocity:1", "inf"), "(accepted)");
@@ -136,6 +132,8 @@ TEST(ColumnChecks, OnlyTheDocumentedNonFiniteValuesAreRead) {
   EXPECT_EQ(BranchError(run, 3, "margin:duration:1", "nan"), "(accepted)");
   EXPECT_EQ(BranchError(run, 3, "floquet:det(M-I)", "nan"), "(accepted)");
   EXPECT_EQ(BranchError(run, 3, "floquet:mu1_re", "inf").find("stored/branch.csv:3: column 'floquet:mu1_re' = 'inf'"), 0u);
+  EXPECT_EQ(BranchError(run, 3, "floquet:torus", "-inf"), "(accepted)");
+  EXPECT_EQ(BranchError(run, 3, "floquet:det(M+I)", "inf"), "(accepted)");
   EXPECT_EQ(BranchError(run, 3, "floquet:det(H+I)", "0.5").find("stored/branch.csv:3: column 'floquet:det(H+I)' = '0.5' "
                                                                 "is invalid: valid nan (the orbit is not antisymmetric)"),
             0u);

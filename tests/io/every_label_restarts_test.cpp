@@ -21,7 +21,9 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/start_input.hpp"
+#include "stickslip/io/model_find.hpp"
 #include "stickslip/io/trace_files.hpp"
+#include "stickslip/orbits/model_orbit_solver.hpp"
 
 namespace stickslip {
 namespace {
@@ -147,12 +149,35 @@ void ExpectRestarts(const LabelCase& c) {
   ExpectOneStep(start, c);
 }
 
+// A label of a run file's [model] (its traces' branches, `find --model --trace --output`): no
+// front end restarts one yet, but its stored variables (OrbitOf, the columns' inverse) are the
+// model's orbit there: Newton at its parameters converges from them to 1e-10.
+void ExpectModelLabelSolves(const fs::path& run, const StoredRun& stored, const StoredSpecialPoint& s) {
+  SCOPED_TRACE(fmt::format("{}:{}", run.string(), s.point.label));
+  const ModelFileStart file = ReadModelFileStart(kSource / stored.summary.run_file, {});
+  const BasicOrbit<DynamicLinearOscillator> orbit = OrbitOf(file.model, file.parameters, stored, s.point);
+  OrbitSolverOptions solver;
+  solver.newton.residual_tolerance = 1e-10;
+  solver.newton.estimate_condition = false;
+  const OrbitVariableSet variables = VariableSetOf(file.model, orbit.signature);
+  const BasicOrbitSolution<DynamicLinearOscillator> solved =
+      SolveOrbit(file.model, orbit, FreeIndices(variables, UnknownsAtFixedParameters(variables)), false, solver);
+  EXPECT_TRUE(solved.summary.Converged()) << solved.summary.message;
+  EXPECT_LE(solved.summary.residual_norms.back(), 1e-10);
+  EXPECT_LE(solved.summary.residual_norms.front(), 1e-8);  // the stored orbit is one already
+}
+
 TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
   const std::vector<fs::path> runs = RunDirectories();
   ASSERT_GE(runs.size(), 70u);
-  std::size_t labels = 0;
+  std::size_t labels = 0, model_labels = 0;
   for (const fs::path& run : runs) {
     const StoredRun stored = ReadRunFiles(run);
+    if (!stored.summary.model.empty()) {
+      for (const StoredSpecialPoint& s : stored.special_points) ExpectModelLabelSolves(run, stored, s);
+      model_labels += stored.special_points.size();
+      continue;
+    }
     const UnknownChoice unknowns = UnknownsOf(run, stored.summary);
     const ShootingChoice shooting = *ShootingChoiceFromString(stored.summary.shooting);
     for (const StoredSpecialPoint& s : stored.special_points) {
@@ -163,6 +188,8 @@ TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
   // Every stored run was visited: 263 labels when one end point carries one EP label (issue 22,
   // defect 3); a floor, so that a run added to results/ does not need this number changed.
   EXPECT_GE(labels, 250u);
+  EXPECT_GE(model_labels, 10u);
+  RecordProperty("model_labels", std::to_string(model_labels));
 }
 
 // A run past the changes of type (continue_past_type_changes) stores labels whose segment has a
@@ -184,14 +211,14 @@ TEST(EveryLabel, PastAChangeOfTypeRestarts) {
       run, ContinueOrbit({.start = start.orbit, .unknowns = start.unknowns, .parameter = "omega", .options = options}));
   int negative = 0;
   for (const StoredSpecialPoint& s : stored.special_points) {
-    if (!(s.point.orbit.durations[1] < 0.0)) continue;
+    if (!(Named(s.point.solution, "d2") < 0.0)) continue;
     ++negative;
     SCOPED_TRACE(s.point.label);
     StartInput again;
-    again.restart = RestartPoint{"past", s.point.label, stored.summary.signature, SolutionColumns(s.point.orbit)};
+    again.restart = RestartPoint{"past", s.point.label, stored.summary.signature, s.point.solution};
     again.parameter = "omega";
     const StartProblem from = BuildStartProblem(again);
-    EXPECT_EQ(from.orbit.durations[1], s.point.orbit.durations[1]);
+    EXPECT_EQ(from.orbit.durations[1], Named(s.point.solution, "d2"));
     ExpectOneStep(from, {"past", s.point.label, "omega", from.unknowns, ShootingChoice::kAuto});
   }
   EXPECT_GE(negative, 2);

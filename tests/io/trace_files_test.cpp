@@ -15,19 +15,12 @@
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 
+#include "support/file_text.hpp"
+
 namespace stickslip {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void Spit(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 class StoredTraceFiles : public ::testing::Test {
  protected:

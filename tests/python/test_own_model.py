@@ -57,14 +57,22 @@ def test_bad_input_raises_the_command_lines_message():
         stickslip.find(model=MODELS / "belt.toml", set={"v_b": True})
 
 
-def test_trace_is_the_command_lines_json():
+def test_trace_is_the_command_lines_json_and_saves_its_files(tmp_path):
     traced = stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", max_branches=4)
     done = cli("find", "--model", MODELS / "belt-damped.toml", "--trace", "0.1,1.0", "--trace-parameter", "v_b",
-               "--json")
+               "--json", "--output", "belt", "--results", tmp_path / "cli")
     assert done.returncode == 0, done.stderr
     import json
     assert traced == json.loads(done.stdout)
     assert traced["up"]["end"] == "no-adjacent-type"
+    assert traced.save(tmp_path / "python" / "belt") == []
+    written = sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli").rglob("*") if p.is_file())
+    assert len(written) >= 5, written
+    for name in written:
+        assert (tmp_path / "python" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    loaded = stickslip.Trace.load(tmp_path / "python" / "belt")
+    assert len(loaded.files()["trace.csv"].splitlines()) == 1 + sum(
+        len(b["points"]) for d in ("down", "up") for b in traced[d]["branches"])
     with pytest.raises(TypeError, match="ds"):
         stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", ds=0.1)
 

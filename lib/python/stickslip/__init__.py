@@ -255,9 +255,28 @@ def _trace_model(parameter, range, options, *, model, set=None, transients=1000,
         raise TypeError(f"trace() got an unexpected keyword argument '{next(iter(others))}' with model= (it takes "
                         "set= and transients=)")
     low, high = _pair(range, "range")
-    return _json.loads(_core._trace_model(_checked(model, "model", "path"), _model_set(set),
-                                          _checked(transients, "transients", "number"),
-                                          _checked(parameter, "parameter", "text"), low, high, options))
+    text, stored = _core._trace_model(_checked(model, "model", "path"), _model_set(set),
+                                      _checked(transients, "transients", "number"),
+                                      _checked(parameter, "parameter", "text"), low, high, options)
+    return ModelTrace(_json.loads(text), stored)
+
+
+class ModelTrace(dict):
+    """trace(model=...)'s result: the JSON of `stickslip find --model --trace --json` as a dict."""
+
+    def __init__(self, printed, stored):
+        super().__init__(printed)
+        self._stored = stored
+
+    def save(self, directory):
+        """Writes the trace's files into `directory` as `stickslip find --model --trace --output`
+        writes them (branch-<k>/, trace.csv, trace.json; the directory's name becomes the output
+        name); other files in it are kept and their names returned. A directory that holds neither a
+        stickslip trace nor a run raises ValueError, and nothing is touched; a trace whose every
+        branch failed to start raises ValueError."""
+        if self._stored is None:
+            raise ValueError("the trace has no branch to write (no branch started)")
+        return self._stored.save(_checked(directory, "directory", "path"))
 
 
 def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple=8, tolerance=1e-6,
@@ -382,9 +401,10 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
     model=path (with set= a dict over the file's parameters and transients=, as find(model=...)):
     an oscillator of your own traced in one of its parameters (omega, F_k, F_s, v_b) from the orbit
     its motion from rest settles on, as `stickslip find --model path --trace LO,HI --trace-parameter
-    NAME --json`; returns that JSON as a dict (start: the orbit found; down, up: their end, message
-    and branches, each with every point's columns by name). Of continue_orbit's keywords none is taken
-    with it.
+    NAME --json`; returns that JSON as a dict, a ModelTrace (start: the orbit found; down, up: their
+    end, message and branches, each with every point's columns by name), whose save(directory)
+    writes the files --output writes (stickslip.Trace.load reads them back). Of continue_orbit's
+    keywords none is taken with it.
     """
     options = {"max_branches": _checked(max_branches, "max_branches", "count"),
                "max_amplitude": _checked(max_amplitude, "max_amplitude", "number"),

@@ -41,29 +41,23 @@ std::pair<int, int> AutoLabel(const std::string& label, const std::filesystem::p
 // parameter: a frequency response), then the orbit's start and durations.
 struct BranchColumns {
   std::vector<std::string> names;
-  std::vector<int> variables;  // orbit_variables::Pack indices: the parameter, then the columns after the measures
+  std::size_t measures = 0;  // names[1 .. measures] are the measures; the rest the orbit's variables
 
   std::vector<double> Values(const StoredPoint& p) const {
-    const Eigen::VectorXd packed = orbit_variables::Pack(p.orbit);
-    std::vector<double> values = {packed(variables.front())};
-    orbit_columns::ForEachMeasure(p.measures, [&](const char*, const auto& value) { values.push_back(value); });
-    for (std::size_t k = 1; k < variables.size(); ++k) values.push_back(packed(variables[k]));
+    std::vector<double> values = {Named(p.solution, names.front())};
+    for (const auto& [name, value] : p.measures) values.push_back(value);
+    for (std::size_t k = 1 + measures; k < names.size(); ++k) values.push_back(Named(p.solution, names[k]));
     return values;
   }
 };
 
+// The paper's run (OrbitOf refuses another model's: its s. file samples the paper's orbits).
 BranchColumns ColumnsOf(const StoredRun& run) {
-  const int segments = run.branch.front().orbit.signature.size();
-  BranchColumns columns;
-  std::vector<std::string> variables = {run.summary.parameter};  // then the start, phi and the durations
-  for (int i = 0; i < orbit_variables::FirstParameter(segments); ++i) variables.push_back(orbit_variables::Name(segments, i));
+  const int segments = OrbitOf(run, run.branch.front()).signature.size();
+  BranchColumns columns{.names = {run.summary.parameter}, .measures = run.branch.front().measures.size()};
+  for (const auto& [name, value] : run.branch.front().measures) columns.names.push_back(name);
   // The reader checked that the parameter is a variable of the orbit.
-  for (const std::string& name : variables) columns.variables.push_back(*orbit_variables::IndexOf(segments, name));
-  columns.names = {variables.front()};
-  orbit_columns::ForEachMeasure(run.branch.front().measures, [&](const char* name, const auto&) {
-    columns.names.emplace_back(name);
-  });
-  columns.names.insert(columns.names.end(), variables.begin() + 1, variables.end());
+  for (int i = 0; i < orbit_variables::FirstParameter(segments); ++i) columns.names.push_back(orbit_variables::Name(segments, i));
   return columns;
 }
 
@@ -84,8 +78,8 @@ std::string BranchHeader(const StoredRun& run, const BranchColumns& columns) {
 
 // The s. file's entry of a labelled point: one period at `samples` times (t scaled to [0, 1]),
 // then NPAR = 36 parameters.
-std::string SolutionEntry(const StoredPoint& p, int ty, int lab, int samples) {
-  const Orbit& orbit = p.orbit;
+std::string SolutionEntry(const StoredRun& run, const StoredPoint& p, int ty, int lab, int samples) {
+  const Orbit orbit = OrbitOf(run, p);
   const std::vector<State> states = orbit.Sample(samples);
   constexpr int kParameters = 36;  // AUTO's NPAR
   std::vector<double> par(kParameters, 0.0);
@@ -145,7 +139,7 @@ AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
     files.b += "\n";
     if (!files.d.empty()) files.d += kDiagnosticsDivider;
     files.d += DiagnosticsEntry(p, run.summary.parameter, values.front(), lab);
-    if (!p.label.empty()) files.s += SolutionEntry(p, ty, lab, samples);
+    if (!p.label.empty()) files.s += SolutionEntry(run, p, ty, lab, samples);
   }
   return files;
 }

@@ -67,25 +67,20 @@ void ComparePoints(const std::string& file, const std::string& where, const Stor
     }
   }
   if (r.label != s.label) out->push_back({file, where, "label", r.label, s.label});
-  const NamedValues stored_solution = SolutionColumns(r.orbit);
-  const NamedValues fresh_solution = SolutionColumns(s.orbit);
-  for (std::size_t k = 0; k < stored_solution.size(); ++k) {
-    const auto& [column, x] = stored_solution[k];
-    const double y = fresh_solution[k].second;
+  for (std::size_t k = 0; k < r.solution.size(); ++k) {
+    const auto& [column, x] = r.solution[k];
+    const double y = s.solution[k].second;
     const double limit = column == parameter ? tol.parameter_relative * std::max(std::abs(x), 1e-300)
                                              : tol.solution * std::max(1.0, std::abs(x));
     if (!(Distance(x, y) <= limit)) out->push_back({file, where, column, Text(x), Text(y)});
   }
   // The measures follow from the solution: to the same tolerance, the counts exactly.
-  std::vector<std::pair<const char*, double>> fresh_measures;
-  orbit_columns::ForEachMeasure(s.measures, [&](const char* column, const auto& y) { fresh_measures.emplace_back(column, y); });
-  orbit_columns::ForEachMeasure(r.measures, [&, k = 0](const char* column, const auto& x) mutable {
-    const double y = fresh_measures[k++].second;
-    if (std::find(absent.begin(), absent.end(), column) != absent.end()) return;
-    if (!(Distance(x, y) <= tol.solution * std::max(1.0, std::abs(static_cast<double>(x))))) {
-      out->push_back({file, where, column, Text(x), Text(y)});
-    }
-  });
+  for (std::size_t k = 0; k < r.measures.size(); ++k) {
+    const auto& [column, x] = r.measures[k];
+    const double y = s.measures[k].second;
+    if (std::find(absent.begin(), absent.end(), column) != absent.end()) continue;
+    if (!(Distance(x, y) <= tol.solution * std::max(1.0, std::abs(x)))) out->push_back({file, where, column, Text(x), Text(y)});
+  }
   if (MultipliersClearOfUnitCircle(r.multipliers, tol.flag_clearance) && r.stable != s.stable) {
     out->push_back({file, where, "stable", Text(r.stable), Text(s.stable)});
   }

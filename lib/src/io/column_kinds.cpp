@@ -24,7 +24,7 @@ const ParameterDescription& Described(ParameterId id) {
 
 bool ValidValues::Holds(double value) const {
   if (std::isnan(value)) return nan;
-  if (std::isinf(value)) return inf && value > 0.0;
+  if (std::isinf(value)) return value > 0.0 ? inf : minus_inf;
   return finite && value >= min && value <= max;
 }
 
@@ -72,8 +72,13 @@ ValidValues Margin() {
 
 ValidValues FloquetValue() { return {.nan = true, .text = "a finite number, or nan (not computed)"}; }
 
+ValidValues FloquetProduct() {
+  return {.inf = true, .minus_inf = true, .nan = true,
+          .text = "a finite number, inf or -inf (a product that overflows) or nan (not computed)"};
+}
+
 ValidValues SymmetryTest(bool antisymmetric) {
-  if (antisymmetric) return FloquetValue();
+  if (antisymmetric) return FloquetProduct();
   return {.finite = false, .nan = true, .text = "nan (the orbit is not antisymmetric)"};
 }
 

@@ -20,6 +20,7 @@ struct ValidValues {
   double max = std::numeric_limits<double>::infinity();
   bool finite = true;      // finite values are valid (within min, max)
   bool inf = false;        // +inf is valid
+  bool minus_inf = false;  // -inf is valid
   bool nan = false;        // nan is valid
   std::string text;        // the valid values as a message states them
 
@@ -52,10 +53,12 @@ ValidValues FrictionMeasure();
 // An admissibility margin: a finite number, inf where the margin does not apply, nan where it
 // could not be computed (margins.hpp SmallestMargin: undefined).
 ValidValues Margin();
-// A Floquet multiplier's part, det(M - I), det(M + I), the torus test: a finite number, or nan
-// where it could not be computed.
+// A Floquet multiplier's part: a finite number, or nan where it could not be computed.
 ValidValues FloquetValue();
-// det(H + I): a Floquet value of an antisymmetric orbit; nan for any other.
+// det(M - I), det(M + I), the torus test: a Floquet value, or inf or -inf where the product over the
+// multipliers overflows (the torus test of ten multipliers, a five-mass chain's, has 45 factors).
+ValidValues FloquetProduct();
+// det(H + I): a Floquet product of an antisymmetric orbit; nan for any other.
 ValidValues SymmetryTest(bool antisymmetric);
 
 }  // namespace stickslip::detail

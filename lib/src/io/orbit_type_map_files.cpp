@@ -204,9 +204,9 @@ MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
   for (std::size_t k = 0; k < trace.branches.size(); ++k) {
     const StoredRun& stored = trace.runs[k];
     MapTraceBranch b{.name = trace.branches[k].name, .unknowns = unknowns, .orbits = {}, .special = {}};
-    for (const StoredPoint& p : stored.branch) b.orbits.push_back(p.orbit);
+    for (const StoredPoint& p : stored.branch) b.orbits.push_back(OrbitOf(stored, p));
     for (const StoredSpecialPoint& s : stored.special_points) {
-      b.special.push_back({trace.branches[k].name, s.point.label, s.type, s.test_function, s.point.orbit});
+      b.special.push_back({trace.branches[k].name, s.point.label, s.type, s.test_function, OrbitOf(stored, s.point)});
     }
     map.branches.push_back(std::move(b));
   }

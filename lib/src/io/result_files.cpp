@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -23,6 +24,7 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/trace_files.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 
 namespace stickslip {
 
@@ -67,6 +69,9 @@ constexpr std::array<TextKey, 6> kLeadingKeys = {{{"run_file", &StoredSummary::r
 constexpr std::array<TextKey, 2> kTrailingKeys = {{{"termination", &StoredSummary::termination},
                                                    {"message", &StoredSummary::message}}};
 constexpr const char* kPointsKey = "points";
+// Only in the summary of a model other than the paper's: the files of every run before models
+// existed (and of every run of the paper's model since) read as they were written.
+constexpr const char* kModelKey = "model";
 constexpr const char* kSpecialPointsKey = "special_points";
 
 std::map<std::string, std::size_t> CountsByType(const std::vector<StoredSpecialPoint>& special_points) {
@@ -83,7 +88,7 @@ const char* Flag(bool b) { return b ? "1" : "0"; }
 
 std::string Row(const StoredPoint& p) {
   std::vector<std::string> fields = {std::to_string(p.pt), p.label};
-  for (const auto& [name, value] : SolutionColumns(p.orbit)) fields.push_back(Number(value));
+  for (const auto& [name, value] : p.solution) fields.push_back(Number(value));
   for (const auto& [name, value] : p.margins) fields.push_back(Number(value));
   for (const std::complex<double>& mu : p.multipliers) {
     fields.push_back(Number(mu.real()));
@@ -92,7 +97,7 @@ std::string Row(const StoredPoint& p) {
   fields.push_back(Flag(p.stable));
   for (double v : {p.fold_test, p.flip_test, p.torus_test, p.symmetry_test}) fields.push_back(Number(v));
   fields.push_back(Flag(p.admissible));
-  orbit_columns::ForEachMeasure(p.measures, [&](const char*, const auto& value) { fields.push_back(Number(value)); });
+  for (const auto& [name, value] : p.measures) fields.push_back(Number(value));
   fields.push_back(std::to_string(p.newton_iterations));
   fields.push_back(Number(p.step_size));
   return fmt::format("{}", fmt::join(fields, ","));
@@ -101,6 +106,7 @@ std::string Row(const StoredPoint& p) {
 std::string FormatSummary(const StoredRun& run) {
   Json json = Json::object();
   for (const TextKey& k : kLeadingKeys) json[k.key] = run.summary.*k.field;
+  if (!run.summary.model.empty()) json[kModelKey] = run.summary.model;
   json[kPointsKey] = run.branch.size();
   json[kSpecialPointsKey] = Json::object();
   for (const auto& [type, count] : CountsByType(run.special_points)) json[kSpecialPointsKey][type] = count;
@@ -128,7 +134,7 @@ std::size_t Count(const Json& value, const fs::path& file, const std::string& ke
 Summary ParseSummary(const std::string& text, const fs::path& file) {
   const Json json = detail::ParseJsonObject(text, file);
   Summary summary;
-  std::vector<std::string> known = {kPointsKey, kSpecialPointsKey};
+  std::vector<std::string> known = {kModelKey, kPointsKey, kSpecialPointsKey};
   auto required = [&](const std::string& key) -> const Json& {
     const auto it = json.find(key);
     if (it == json.end()) throw KeyError(file, key, "is missing");
@@ -141,6 +147,13 @@ Summary ParseSummary(const std::string& text, const fs::path& file) {
       summary.fields.*k.field = value.get<std::string>();
       known.push_back(k.key);
     }
+  }
+  if (const auto model = json.find(kModelKey); model != json.end()) {
+    if (!model->is_string() || model->get<std::string>() != kLinearOscillatorModel) {
+      throw KeyError(file, kModelKey, fmt::format("= {} is invalid: valid \"{}\" (or no key, for the paper's model)",
+                                                  model->dump(), kLinearOscillatorModel));
+    }
+    summary.fields.model = model->get<std::string>();
   }
   summary.points = Count(required(kPointsKey), file, kPointsKey);
   const Json& special = required(kSpecialPointsKey);
@@ -166,12 +179,13 @@ constexpr int kAbsent = -1;
 struct ColumnIndices {
   int pt = 0;
   int label = 0;
-  std::vector<std::pair<int, int>> variables;    // (column, orbit_variables index)
+  std::vector<std::pair<int, int>> variables;    // the paper's: (column, orbit_variables index)
+  std::vector<int> solution;                     // another model's: its variables' columns, in order
   std::vector<int> margins;
   std::vector<std::pair<int, int>> multipliers;  // (real part, imaginary part)
   std::array<int, kStabilityColumns.size()> stability{};
   int admissible = 0;
-  std::vector<int> measures;  // in ForEachMeasure's order; kAbsent for a measure added later
+  std::vector<std::pair<std::string, int>> measures;  // (name, column); kAbsent for a measure added later
   std::array<int, kStepColumns.size()> step{};
   std::array<int, kSpecialColumns.size()> special{};  // special-points.csv only
 };
@@ -179,17 +193,48 @@ struct ColumnIndices {
 // The names of the measures whose columns the table lacks.
 std::vector<std::string> AbsentMeasures(const ColumnIndices& c) {
   std::vector<std::string> absent;
-  const OrbitMeasures measures{};
-  orbit_columns::ForEachMeasure(measures, [&, k = 0](const char* name, const auto&) mutable {
-    if (c.measures[k++] == kAbsent) absent.emplace_back(name);
-  });
+  for (const auto& [name, column] : c.measures) {
+    if (column == kAbsent) absent.push_back(name);
+  }
   return absent;
 }
 
+// The paper's variables and measures, each by its name.
+void FindPaperColumns(const CsvTable& table, const Signature& signature, const std::function<int(const std::string&)>& column,
+                      ColumnIndices& c) {
+  for (int i = 0; i < ov::Count(signature.size()); ++i) c.variables.emplace_back(column(ov::Name(signature.size(), i)), i);
+  const OrbitMeasures measures{};
+  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) {
+    c.measures.emplace_back(name, orbit_columns::AddedLater(name) && table.Find(name) < 0 ? kAbsent : column(name));
+  });
+  // The measures added later come together: a file has all of them or none.
+  const std::vector<std::string> absent = AbsentMeasures(c);
+  for (const auto& [name, index] : c.measures) {
+    if (orbit_columns::AddedLater(name) && !absent.empty() && index != kAbsent) {
+      throw table.HeaderError(fmt::format("column '{}' is missing", absent.front()));
+    }
+  }
+}
+
+// Another model's variables, the columns between label and the margins, and its measures, those
+// between admissible and the step's: the model names them (orbit_layout.hpp, MeasureNames).
+void FindModelColumns(const CsvTable& table, const std::function<int(const std::string&)>& column, ColumnIndices& c) {
+  const std::vector<std::string>& header = table.header();
+  const auto first_margin = std::find_if(header.begin(), header.end(), [](const std::string& name) {
+    return name.starts_with(kMarginPrefix) || name.starts_with("floquet:") || name == orbit_columns::kStable;
+  });
+  for (auto name = header.begin() + std::min<std::size_t>(2, header.size()); name < first_margin; ++name) {
+    c.solution.push_back(column(*name));
+  }
+  const auto admissible = std::find(header.begin(), header.end(), orbit_columns::kAdmissible);
+  const auto step = std::find(header.begin(), header.end(), kStepColumns.front());
+  for (auto name = admissible + (admissible != header.end()); name < step; ++name) c.measures.emplace_back(*name, column(*name));
+}
+
 // Throws InvalidInput if a column is missing, unknown or repeated.
-ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, bool special_points) {
+ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, bool paper_model, bool special_points) {
   std::vector<bool> used(table.header().size(), false);
-  auto column = [&](const std::string& name) {
+  const std::function<int(const std::string&)> column = [&](const std::string& name) {
     const int c = table.Column(name);
     used[c] = true;
     return c;
@@ -197,7 +242,11 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   ColumnIndices c;
   c.pt = column("pt");
   c.label = column("label");
-  for (int i = 0; i < ov::Count(signature.size()); ++i) c.variables.emplace_back(column(ov::Name(signature.size(), i)), i);
+  if (paper_model) {
+    FindPaperColumns(table, signature, column, c);
+  } else {
+    FindModelColumns(table, column, c);
+  }
   for (std::size_t k = 0; k < table.header().size(); ++k) {
     if (table.header()[k].starts_with(kMarginPrefix)) c.margins.push_back(column(table.header()[k]));
   }
@@ -206,17 +255,6 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
   }
   for (std::size_t k = 0; k < kStabilityColumns.size(); ++k) c.stability[k] = column(kStabilityColumns[k]);
   c.admissible = column(orbit_columns::kAdmissible);
-  const OrbitMeasures measures{};
-  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) {
-    c.measures.push_back(orbit_columns::AddedLater(name) && table.Find(name) < 0 ? kAbsent : column(name));
-  });
-  // The measures added later come together: a file has all of them or none.
-  const std::vector<std::string> absent = AbsentMeasures(c);
-  orbit_columns::ForEachMeasure(measures, [&](const char* name, const auto&) {
-    if (orbit_columns::AddedLater(name) && !absent.empty() && table.Find(name) >= 0) {
-      throw table.HeaderError(fmt::format("column '{}' is missing", absent.front()));
-    }
-  });
   for (std::size_t k = 0; k < kStepColumns.size(); ++k) c.step[k] = column(kStepColumns[k]);
   for (std::size_t k = 0; special_points && k < kSpecialColumns.size(); ++k) c.special[k] = column(kSpecialColumns[k]);
   for (std::size_t k = 0; k < used.size(); ++k) {
@@ -228,22 +266,18 @@ ColumnIndices FindColumns(const CsvTable& table, const Signature& signature, boo
 // A measure from its column (column_kinds.hpp): a count as a whole number >= 0, the stick
 // fraction 0 to 1 where admissible, the friction work and the equivalent damping a finite number
 // or nan, any other a number >= 0; nan from a column the file lacks (a measure added later).
-void ReadField(const CsvTable& t, int row, int column, bool, int* count) {
-  *count = t.Integer(row, column, 0, std::numeric_limits<int>::max());
-}
-void ReadField(const CsvTable& t, int row, int column, bool admissible, double* value) {
-  if (column == kAbsent) {
-    *value = std::numeric_limits<double>::quiet_NaN();
-    return;
+double ReadMeasure(const CsvTable& t, int row, const std::string& name, int column, bool admissible) {
+  if (column == kAbsent) return std::numeric_limits<double>::quiet_NaN();
+  if (name == orbit_columns::kStops || name == orbit_columns::kSticks) {
+    return t.Integer(row, column, 0, std::numeric_limits<int>::max());
   }
-  const std::string& name = t.header()[column];
-  *value = t.Value(row, column, name == orbit_columns::kStickFraction       ? detail::Fraction(admissible)
-                                : orbit_columns::AddedLater(name)           ? detail::FrictionMeasure()
-                                                                            : detail::NonNegative());
+  return t.Value(row, column, name == orbit_columns::kStickFraction ? detail::Fraction(admissible)
+                              : orbit_columns::AddedLater(name)     ? detail::FrictionMeasure()
+                                                                    : detail::NonNegative());
 }
 
-// The row's orbit, each variable by its kind: the parameters in their ranges on a branch, the
-// state and phase finite, then each duration within the period that omega gives.
+// The row's orbit of the paper's model, each variable by its kind: the parameters in their ranges
+// on a branch, the state and phase finite, then each duration within the period that omega gives.
 Orbit ParseOrbit(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature, bool admissible) {
   const int n = signature.size();
   const int first_parameter = ov::FirstParameter(n);
@@ -264,26 +298,34 @@ Orbit ParseOrbit(const CsvTable& t, int row, const ColumnIndices& c, const Signa
   return orbit;
 }
 
+// The row's variables: the paper's by their kinds (ParseOrbit); another model's finite (its
+// ranges are its file's, which the run's files do not hold).
+NamedValues ParseSolution(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature, bool admissible) {
+  if (!c.variables.empty()) return SolutionColumns(ParseOrbit(t, row, c, signature, admissible));
+  NamedValues solution;
+  for (int column : c.solution) solution.emplace_back(t.header()[column], t.Value(row, column, detail::Finite()));
+  return solution;
+}
+
 // Every column by its kind (column_kinds.hpp); the non-finite values only where the format has them.
 StoredPoint ParsePoint(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature) {
   const bool admissible = t.Flag(row, c.admissible);
   StoredPoint p{.pt = t.Integer(row, c.pt, 1, std::numeric_limits<int>::max()),
                 .label = t.Text(row, c.label),
-                .orbit = ParseOrbit(t, row, c, signature, admissible)};
+                .solution = ParseSolution(t, row, c, signature, admissible)};
   for (int column : c.margins) {
     p.margins.emplace_back(t.header()[column].substr(kMarginPrefix.size()), t.Value(row, column, detail::Margin()));
   }
   const detail::ValidValues floquet = detail::FloquetValue();
   for (const auto& [re, im] : c.multipliers) p.multipliers.emplace_back(t.Value(row, re, floquet), t.Value(row, im, floquet));
   p.stable = t.Flag(row, c.stability[0]);
-  p.fold_test = t.Value(row, c.stability[1], floquet);
-  p.flip_test = t.Value(row, c.stability[2], floquet);
-  p.torus_test = t.Value(row, c.stability[3], floquet);
+  const detail::ValidValues product = detail::FloquetProduct();
+  p.fold_test = t.Value(row, c.stability[1], product);
+  p.flip_test = t.Value(row, c.stability[2], product);
+  p.torus_test = t.Value(row, c.stability[3], product);
   p.symmetry_test = t.Value(row, c.stability[4], detail::SymmetryTest(signature.antisymmetric()));
   p.admissible = admissible;
-  orbit_columns::ForEachMeasure(p.measures, [&, k = 0](const char*, auto& field) mutable {
-    ReadField(t, row, c.measures[k++], admissible, &field);
-  });
+  for (const auto& [name, column] : c.measures) p.measures.emplace_back(name, ReadMeasure(t, row, name, column, admissible));
   p.newton_iterations = t.Integer(row, c.step[0], 0, std::numeric_limits<int>::max());
   p.step_size = t.Value(row, c.step[1], detail::NonNegative());
   return p;
@@ -318,7 +360,7 @@ std::error_code TryCreateDirectories(const fs::path& directory) {
 
 std::vector<std::string> ColumnNames(const StoredPoint& p) {
   std::vector<std::string> columns = {"pt", "label"};
-  for (const auto& [name, value] : SolutionColumns(p.orbit)) columns.push_back(name);
+  for (const auto& [name, value] : p.solution) columns.push_back(name);
   for (const auto& [name, value] : p.margins) columns.push_back(std::string(kMarginPrefix) + name);
   for (std::size_t k = 1; k <= p.multipliers.size(); ++k) {
     columns.push_back(MultiplierColumn(k, "re"));
@@ -326,7 +368,7 @@ std::vector<std::string> ColumnNames(const StoredPoint& p) {
   }
   columns.insert(columns.end(), kStabilityColumns.begin(), kStabilityColumns.end());
   columns.push_back(orbit_columns::kAdmissible);
-  orbit_columns::ForEachMeasure(p.measures, [&](const char* name, const auto&) { columns.push_back(name); });
+  for (const auto& [name, value] : p.measures) columns.push_back(name);
   columns.insert(columns.end(), kStepColumns.begin(), kStepColumns.end());
   return columns;
 }
@@ -364,7 +406,8 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
       throw KeyError(summary_file, "signature", fmt::format("= '{}' is invalid: {}", summary.fields.signature, e.what()));
     }
   }();
-  if (!ov::IndexOf(signature.size(), summary.fields.parameter)) {
+  const bool paper_model = summary.fields.model.empty();
+  if (paper_model && !ov::IndexOf(signature.size(), summary.fields.parameter)) {
     std::vector<std::string> names;
     for (int i = 0; i < ov::Count(signature.size()); ++i) names.push_back(ov::Name(signature.size(), i));
     throw KeyError(summary_file, "parameter", fmt::format("= '{}' is invalid: valid a variable of the orbit, {}",
@@ -373,13 +416,29 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
 
   StoredRun run{std::move(summary.fields), {}, {}};
   const CsvTable branch(files.branch_csv, directory / kBranchFile);
-  const ColumnIndices branch_columns = FindColumns(branch, signature, false);
+  const ColumnIndices branch_columns = FindColumns(branch, signature, paper_model, false);
   for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, signature));
   run.absent_measures = AbsentMeasures(branch_columns);
   if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
+  if (!paper_model) {
+    // trace.csv, the AUTO export and a restart read these by name.
+    const NamedValues& solution = run.branch.front().solution;
+    std::vector<std::string> names;
+    for (const auto& [name, value] : solution) names.push_back(name);
+    std::vector<std::string> needed = {run.summary.parameter, "phi"};
+    for (int i = 1; i <= signature.size(); ++i) needed.push_back(fmt::format("d{}", i));
+    for (const std::string& name : needed) {
+      if (std::find(names.begin(), names.end(), name) == names.end()) {
+        throw KeyError(summary_file, "parameter",
+                       fmt::format("names '{}', which is not a column of {}: valid the orbit's variables ({}) with phi "
+                                   "and d1..d{}",
+                                   name, kBranchFile, fmt::join(names, ", "), signature.size()));
+      }
+    }
+  }
 
   const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);
-  const ColumnIndices special_columns = FindColumns(special, signature, true);
+  const ColumnIndices special_columns = FindColumns(special, signature, paper_model, true);
   if (AbsentMeasures(special_columns) != run.absent_measures) {
     throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
                               "test_function, located");
@@ -489,7 +548,7 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   const StoredRun stored = ReadRunFiles(results_root / run);
   std::vector<std::string> labels;
   for (const StoredSpecialPoint& s : stored.special_points) {
-    if (s.point.label == label) return {stored.summary.signature, SolutionColumns(s.point.orbit), s.test_function};
+    if (s.point.label == label) return {stored.summary.signature, s.point.solution, s.test_function};
     labels.push_back(s.point.label);
   }
   throw InvalidInput::WithMessage(

@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 #include <type_traits>
 
 #include <fmt/format.h>
 
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/orbits/orbit_measures.hpp"
 #include "stickslip/orbits/start_problem.hpp"
 #include "stickslip/version.hpp"
 
@@ -15,16 +20,80 @@ namespace stickslip {
 
 namespace ov = orbit_variables;
 
-NamedValues SolutionColumns(const Orbit& orbit) {
-  const int n = orbit.signature.size();
-  const Eigen::VectorXd variables = ov::Pack(orbit);
+template <OscillatorModel Model>
+NamedValues SolutionColumns(const Model& model, const BasicOrbit<Model>& orbit) {
+  const OrbitLayout layout(model.Description(), orbit.signature.size());
   std::vector<int> order;
-  for (ParameterId id : kAllParameters) order.push_back(ov::Parameter(n, id));
-  order.insert(order.end(), {ov::kPhi, ov::kX10, ov::kX20, ov::kV10});
-  for (int i = 0; i < n; ++i) order.push_back(ov::Duration(i));
+  for (int k = 0; k < model.Description().ParameterCount(); ++k) {
+    // Without forcing its frequency plays no part (and StoredPeriod reads an orbit without it as autonomous).
+    if (!(k == Model::kForcingFrequencyParameter && model.Autonomous())) order.push_back(layout.Parameter(k));
+  }
+  order.push_back(layout.Phi());
+  for (int i = 0; i < layout.StartVariables(); ++i) order.push_back(i);
+  for (int i = 0; i < orbit.signature.size(); ++i) order.push_back(layout.Duration(i));
   NamedValues columns;
-  for (int index : order) columns.emplace_back(ov::Name(n, index), variables(index));
+  for (int index : order) columns.emplace_back(layout.Name(index), VariableOf(model, orbit, index));
   return columns;
+}
+
+NamedValues SolutionColumns(const Orbit& orbit) { return SolutionColumns(Pascal2014{}, orbit.OnModel()); }
+
+double& Named(NamedValues& values, std::string_view name) {
+  for (auto& [n, value] : values) {
+    if (n == name) return value;
+  }
+  throw std::out_of_range(fmt::format("no value named '{}'", name));
+}
+
+double Named(const NamedValues& values, std::string_view name) { return Named(const_cast<NamedValues&>(values), name); }
+
+template <OscillatorModel Model>
+BasicOrbit<Model> OrbitOf(const Model& model, const typename Model::Parameters& held, const StoredRun& run,
+                          const StoredPoint& point) {
+  const Signature signature = Signature::Parse(run.summary.signature);
+  const OrbitLayout layout(model.Description(), signature.size());
+  BasicOrbit<Model> orbit{signature, held, Model::State::Zero(model.StateSize()), 0.0,
+                          std::vector<double>(signature.size())};
+  for (int index = 0; index < layout.Count(); ++index) {
+    const std::string name = layout.Name(index);
+    const bool listed = std::any_of(point.solution.begin(), point.solution.end(), [&](const auto& v) { return v.first == name; });
+    if (index >= layout.Parameter(0) && !listed) continue;  // held
+    const double value = Named(point.solution, name);
+    if (index < layout.StartVariables()) {
+      orbit.start(index) = value;
+    } else if (index == layout.Phi()) {
+      orbit.phi = value;
+    } else if (index < layout.Parameter(0)) {
+      orbit.durations[index - layout.Duration(0)] = value;
+    } else {
+      Model::ParameterAt(orbit.parameters, index - layout.Parameter(0)) = value;
+    }
+  }
+  // The contact's velocity at the origin, no variable: the surface's (periodicity_equations.hpp).
+  orbit.start(model.StateSize() - 1) = RestVelocity<Model>(orbit.parameters, 0.0);
+  return orbit;
+}
+
+double StoredPeriod(const Signature& signature, const StoredPoint& point) {
+  for (const auto& [name, value] : point.solution) {
+    if (name == "omega") return signature.period_multiple() * 2.0 * std::numbers::pi / value;
+  }
+  double listed = 0.0;
+  for (int i = 0; i < signature.size(); ++i) listed += Named(point.solution, fmt::format("d{}", i + 1));
+  return listed / signature.CoveredFraction();
+}
+
+Orbit OrbitOf(const StoredRun& run, const StoredPoint& point) {
+  if (!run.summary.model.empty()) {
+    throw InvalidInput::WithMessage(
+        "model", fmt::format("'{}' is a run of a {} (a run file's [model]): valid here a run of the paper's oscillator",
+                             run.summary.output, run.summary.model));
+  }
+  const Signature signature = Signature::Parse(run.summary.signature);
+  const int n = signature.size();
+  Eigen::VectorXd variables(ov::Count(n));
+  for (int i = 0; i < ov::Count(n); ++i) variables(i) = Named(point.solution, ov::Name(n, i));
+  return ov::Unpack(signature, variables);
 }
 
 std::vector<std::string> PointLabels(const Branch& branch) {
@@ -56,11 +125,11 @@ namespace {
 // stands for (start_problem.hpp, ZeroLengthToRounding), so no stored duration is negative but one
 // past a change of type. Its margin duration:i, d_i itself, follows; so do the measures, which a
 // row holds of its own stored orbit.
-void StoreZeroLengthSegments(StoredPoint* point) {
-  Orbit& orbit = point->orbit;
+template <OscillatorModel Model>
+void StoreZeroLengthSegments(const Model& model, OrbitOfModel<Model> orbit, StoredPoint* point) {
   bool changed = false;
   for (std::size_t i = 0; i < orbit.durations.size(); ++i) {
-    const double d = ZeroLengthToRounding(orbit.durations[i], orbit.Period());
+    const double d = ZeroLengthToRounding(orbit.durations[i], PeriodOf(model, AsBasicOrbit(orbit)));
     if (d == orbit.durations[i]) continue;
     orbit.durations[i] = d;
     changed = true;
@@ -68,17 +137,23 @@ void StoreZeroLengthSegments(StoredPoint* point) {
       if (name == fmt::format("duration:{}", i + 1)) value = d;
     }
   }
-  if (changed) point->measures = Measure(orbit);
+  if (!changed) return;
+  point->solution = SolutionColumns(model, AsBasicOrbit(orbit));
+  const int contact = ContactCoordinate(model);
+  const std::vector<double> measures = orbit_columns::MeasureValues(Measure(model, AsBasicOrbit(orbit)), contact);
+  for (std::size_t k = 0; k < measures.size(); ++k) point->measures[k].second = measures[k];
 }
 
 }  // namespace
 
-StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
+template <OscillatorModel Model>
+StoredRun RecordRun(const Model& model, const StoredSummary& identity, const BasicOrbitBranch<Model>& b) {
+  const std::vector<std::string> measure_names = orbit_columns::MeasureNames(model.Description(), ContactCoordinate(model));
   // The monitor's columns by name: its margins, then what it records of the stability and the
   // orbit's measures.
   auto record = [&](int i, std::string label) {
     const BranchPoint& p = b.branch.points[i];
-    StoredPoint point{.pt = i + 1, .label = std::move(label), .orbit = b.orbits[i]};
+    StoredPoint point{.pt = i + 1, .label = std::move(label), .solution = SolutionColumns(model, AsBasicOrbit(b.orbits[i]))};
     std::map<std::string, double> recorded;
     const std::vector<double> values = ColumnValues(b.columns, p);
     for (std::size_t k = 0; k < b.columns.size(); ++k) {
@@ -99,18 +174,20 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
     point.torus_test = recorded.at(orbit_columns::kTorusTest);
     point.symmetry_test = recorded.at(orbit_columns::kSymmetryTest);
     point.admissible = recorded.at(orbit_columns::kAdmissible) != 0.0;
-    orbit_columns::ForEachMeasure(point.measures, [&](const char* name, auto& field) {
-      field = static_cast<std::remove_reference_t<decltype(field)>>(recorded.at(name));
-    });
+    for (const std::string& name : measure_names) point.measures.emplace_back(name, recorded.at(name));
     point.newton_iterations = p.newton_iterations;
     point.step_size = p.ds;
-    StoreZeroLengthSegments(&point);
+    StoreZeroLengthSegments(model, b.orbits[i], &point);
     return point;
   };
 
   StoredRun stored;
-  stored.summary = {run.path, Version(), run.output, b.orbits.front().signature.ToString(), run.parameter,
-                    ToString(b.shooting), ToString(b.branch.end), b.branch.end_message};
+  stored.summary = identity;
+  stored.summary.stickslip_version = Version();
+  stored.summary.signature = b.orbits.front().signature.ToString();
+  stored.summary.shooting = ToString(b.shooting);
+  stored.summary.termination = ToString(b.branch.end);
+  stored.summary.message = b.branch.end_message;
   const std::vector<std::string> labels = PointLabels(b.branch);
   for (std::size_t i = 0; i < b.branch.points.size(); ++i) stored.branch.push_back(record(static_cast<int>(i), labels[i]));
   // Every special point has a label of its own (SpecialPointLabels).
@@ -121,5 +198,20 @@ StoredRun RecordRun(const RunFile& run, const OrbitBranch& b) {
   }
   return stored;
 }
+
+StoredRun RecordRun(const RunFile& run, const OrbitBranch& branch) {
+  return RecordRun(Pascal2014{}, StoredSummary{.run_file = run.path, .output = run.output, .parameter = run.parameter},
+                   branch);
+}
+
+template NamedValues SolutionColumns(const Pascal2014&, const BasicOrbit<Pascal2014>&);
+template NamedValues SolutionColumns(const DynamicLinearOscillator&, const BasicOrbit<DynamicLinearOscillator>&);
+template BasicOrbit<Pascal2014> OrbitOf(const Pascal2014&, const Pascal2014::Parameters&, const StoredRun&,
+                                        const StoredPoint&);
+template BasicOrbit<DynamicLinearOscillator> OrbitOf(const DynamicLinearOscillator&,
+                                                     const DynamicLinearOscillator::Parameters&, const StoredRun&,
+                                                     const StoredPoint&);
+template StoredRun RecordRun(const Pascal2014&, const StoredSummary&, const BasicOrbitBranch<Pascal2014>&);
+template StoredRun RecordRun(const DynamicLinearOscillator&, const StoredSummary&, const BasicOrbitBranch<DynamicLinearOscillator>&);
 
 }  // namespace stickslip

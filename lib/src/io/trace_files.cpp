@@ -16,6 +16,7 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/result_files.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/orbits/orbit_layout.hpp"
 
 namespace stickslip {
@@ -36,13 +37,28 @@ const char* WayName(int direction) { return direction > 0 ? "up" : "down"; }
 
 std::string Number(double v) { return fmt::format("{}", v); }
 
-// trace.csv's columns; the parameter's name stands second after the label.
-std::vector<std::string> CsvHeader(const std::string& parameter) {
-  const OrbitLayout layout(Pascal2014{}.Description(), 0);
+// trace.csv's columns; the parameter's name stands second after the label, the model's start
+// state's names after the period.
+std::vector<std::string> CsvHeader(const std::string& parameter, const std::vector<std::string>& start) {
   std::vector<std::string> header = {"branch", "signature", "pt", "label", parameter, "phi", "period"};
-  for (int k = 0; k < layout.StartVariables(); ++k) header.push_back(layout.Name(k));
+  header.insert(header.end(), start.begin(), start.end());
   header.insert(header.end(), {"stable", "admissible"});
   return header;
+}
+
+// The start state's names of the trace's model: the solution's columns between phi and d1
+// (SolutionColumns), or, for a trace without a branch, the paper's.
+std::vector<std::string> StartNames(const StoredTrace& t) {
+  std::vector<std::string> names;
+  if (t.runs.empty()) {
+    const OrbitLayout layout(Pascal2014{}.Description(), 0);
+    for (int k = 0; k < layout.StartVariables(); ++k) names.push_back(layout.Name(k));
+    return names;
+  }
+  const NamedValues& solution = t.runs.front().branch.front().solution;
+  const auto phi = std::find_if(solution.begin(), solution.end(), [](const auto& v) { return v.first == "phi"; });
+  for (auto v = phi + (phi != solution.end()); v != solution.end() && v->first != "d1"; ++v) names.push_back(v->first);
+  return names;
 }
 
 // ---- trace.json
@@ -122,6 +138,7 @@ std::string FormatJson(const StoredTrace& t) {
   json["output"] = t.output;
   json["parameter"] = t.parameter;
   json["signature"] = t.signature;
+  if (!t.model.empty()) json["model"] = t.model;
   json["directions"] = Json::array();
   for (const StoredTraceDirection& d : t.directions) {
     json["directions"].push_back(
@@ -158,6 +175,13 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   t.output = top.Text("output");
   t.parameter = top.Text("parameter");
   t.signature = top.SignatureText("signature", false);
+  if (json.contains("model")) {
+    t.model = top.Text("model");
+    if (t.model != kLinearOscillatorModel) {
+      throw KeyError(file, "model", fmt::format("= '{}' is invalid: valid '{}' (or no key, for the paper's model)", t.model,
+                                                kLinearOscillatorModel));
+    }
+  }
   const Json& directions = top.Get("directions");
   if (!directions.is_array() || directions.size() != 2) {
     throw KeyError(file, "directions", "is invalid: valid an array of two directions, down and up");
@@ -179,7 +203,8 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   }
   const Json& branches = top.Get("branches");
   if (!branches.is_array()) throw KeyError(file, "branches", "is invalid: valid an array of branches");
-  const std::optional<ParameterId> parameter = ParameterFromString(t.parameter);
+  // Another model's parameter has the range of its file, which the trace's files do not hold.
+  const std::optional<ParameterId> parameter = t.model.empty() ? ParameterFromString(t.parameter) : std::nullopt;
   const detail::ValidValues lambda = parameter ? detail::BranchParameter(*parameter) : detail::Finite();
   for (std::size_t k = 0; k < branches.size(); ++k) {
     JsonObject b(branches[k], file, fmt::format("branches[{}]", k));
@@ -245,11 +270,12 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
 // ---- trace.csv
 
 std::string FormatCsv(const StoredTrace& t) {
-  std::string text = fmt::format("{}\n", fmt::join(CsvHeader(t.parameter), ","));
+  std::string text = fmt::format("{}\n", fmt::join(CsvHeader(t.parameter, StartNames(t)), ","));
   for (const StoredTracePoint& p : t.points) {
-    text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", p.branch, p.signature, p.pt, p.label, Number(p.lambda),
-                        Number(p.phi), Number(p.period), Number(p.x10), Number(p.x20), Number(p.v10),
-                        p.stable ? 1 : 0, p.admissible ? 1 : 0);
+    std::vector<std::string> start;
+    for (const auto& [name, value] : p.start) start.push_back(Number(value));
+    text += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.branch, p.signature, p.pt, p.label, Number(p.lambda),
+                        Number(p.phi), Number(p.period), fmt::join(start, ","), p.stable ? 1 : 0, p.admissible ? 1 : 0);
   }
   return text;
 }
@@ -265,15 +291,19 @@ std::string ParsedSignature(const CsvTable& table, int row, int column) {
   return text;
 }
 
-std::vector<StoredTracePoint> ParseCsv(const std::string& text, const fs::path& file, const std::string& parameter) {
+std::vector<StoredTracePoint> ParseCsv(const std::string& text, const fs::path& file, const std::string& parameter,
+                                       const std::vector<std::string>& start) {
   const CsvTable table(text, file);
-  const std::vector<std::string> header = CsvHeader(parameter);
+  const std::vector<std::string> header = CsvHeader(parameter, start);
   if (table.header() != header) {
     throw table.HeaderError(fmt::format("the columns are invalid: valid {}", fmt::join(header, ",")));
   }
   std::vector<StoredTracePoint> points;
   const detail::ValidValues finite = detail::Finite();
+  const int m = static_cast<int>(start.size());
   for (int r = 0; r < table.rows(); ++r) {
+    NamedValues state;
+    for (int k = 0; k < m; ++k) state.emplace_back(start[k], table.Value(r, 7 + k, finite));
     points.push_back({.branch = static_cast<std::size_t>(table.Integer(r, 0, 1, std::numeric_limits<int>::max())),
                       .signature = ParsedSignature(table, r, 1),
                       .pt = table.Integer(r, 2, 1, std::numeric_limits<int>::max()),
@@ -281,31 +311,29 @@ std::vector<StoredTracePoint> ParseCsv(const std::string& text, const fs::path& 
                       .lambda = table.Value(r, 4, finite),
                       .phi = table.Value(r, 5, finite),
                       .period = table.Value(r, 6, detail::NonNegative()),
-                      .x10 = table.Value(r, 7, finite),
-                      .x20 = table.Value(r, 8, finite),
-                      .v10 = table.Value(r, 9, finite),
-                      .stable = table.Flag(r, 10),
-                      .admissible = table.Flag(r, 11)});
+                      .start = std::move(state),
+                      .stable = table.Flag(r, 7 + m),
+                      .admissible = table.Flag(r, 8 + m)});
   }
   return points;
 }
 
-std::vector<StoredTracePoint> PointsOf(const std::vector<StoredRun>& runs, const std::string& parameter) {
+std::vector<StoredTracePoint> PointsOf(const StoredTrace& t) {
+  const std::vector<std::string> start = StartNames(t);
   std::vector<StoredTracePoint> points;
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    for (const StoredPoint& p : runs[k].branch) {
-      const Eigen::VectorXd variables = ov::Pack(p.orbit);
-      const int n = p.orbit.signature.size();
+  for (std::size_t k = 0; k < t.runs.size(); ++k) {
+    const Signature signature = Signature::Parse(t.runs[k].summary.signature);
+    for (const StoredPoint& p : t.runs[k].branch) {
+      NamedValues state;
+      for (const std::string& name : start) state.emplace_back(name, Named(p.solution, name));
       points.push_back({.branch = k + 1,
-                        .signature = runs[k].summary.signature,
+                        .signature = t.runs[k].summary.signature,
                         .pt = p.pt,
                         .label = p.label,
-                        .lambda = variables(*ov::IndexOf(n, parameter)),
-                        .phi = p.orbit.phi,
-                        .period = p.orbit.Period(),
-                        .x10 = p.orbit.x10,
-                        .x20 = p.orbit.x20,
-                        .v10 = p.orbit.v10,
+                        .lambda = Named(p.solution, t.parameter),
+                        .phi = Named(p.solution, "phi"),
+                        .period = StoredPeriod(signature, p),
+                        .start = std::move(state),
                         .stable = p.stable,
                         .admissible = p.admissible});
     }
@@ -315,18 +343,20 @@ std::vector<StoredTracePoint> PointsOf(const std::vector<StoredRun>& runs, const
 
 }  // namespace
 
-StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
+template <OscillatorModel Model>
+StoredTrace RecordTrace(const Model& model, const StoredSummary& identity, const BasicTraceResult<Model>& trace) {
   StoredTrace t;
-  t.run_file = run.path;
-  t.output = run.output;
+  t.run_file = identity.run_file;
+  t.output = identity.output;
+  t.model = identity.model;
   t.parameter = trace.parameter;
-  for (const TraceDirection* chain : {&trace.down, &trace.up}) {
+  for (const BasicTraceDirection<Model>* chain : {&trace.down, &trace.up}) {
     StoredTraceDirection direction{.direction = WayName(chain->direction), .end = ToString(chain->end), .message = chain->message};
-    for (const TraceLink& link : chain->links) {
+    for (const BasicTraceLink<Model>& link : chain->links) {
       const std::size_t k = t.branches.size() + 1;
-      RunFile branch_run = run;
+      StoredSummary branch_run = identity;
       branch_run.output = fmt::format("{}{}", kBranchPrefix, k);
-      StoredRun stored = RecordRun(branch_run, link.branch);
+      StoredRun stored = RecordRun(model, branch_run, link.branch);
       if (t.stickslip_version.empty()) t.stickslip_version = stored.summary.stickslip_version;
       if (t.signature.empty()) t.signature = link.signature;
       StoredTraceBranch b{.name = branch_run.output,
@@ -339,7 +369,7 @@ StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
                           .end = ToString(link.end),
                           .message = link.message};
       if (link.type_switch) {
-        const TypeSwitch& sw = *link.type_switch;
+        const BasicTypeSwitch<Model>& sw = *link.type_switch;
         const bool confirmed = sw.status == TypeSwitchStatus::kConfirmed;
         b.has_switch = true;
         b.type_switch = {.status = ToString(sw.status),
@@ -349,7 +379,7 @@ StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
                          .persists = confirmed && sw.persists,
                          .from_past = confirmed && sw.singular_start};
       }
-      for (const BifurcationMet& m : link.bifurcations) {
+      for (const BasicBifurcationMet<Model>& m : link.bifurcations) {
         // Its label, as the branch's special-points.csv has it.
         std::string label;
         for (const StoredSpecialPoint& s : stored.special_points) {
@@ -358,9 +388,9 @@ StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
         std::string followed;
         if (m.followed && !m.followed->orbits.empty()) {
           followed = fmt::format("{}-{}", branch_run.output, label);
-          RunFile followed_run = run;
+          StoredSummary followed_run = identity;
           followed_run.output = followed;
-          t.followed_runs.push_back(RecordRun(followed_run, *m.followed));
+          t.followed_runs.push_back(RecordRun(model, followed_run, *m.followed));
         }
         b.bifurcations.push_back({label, m.type, m.lambda, m.signature, m.singularity, m.message, followed});
       }
@@ -370,9 +400,18 @@ StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
     }
     t.directions.push_back(std::move(direction));
   }
-  t.points = PointsOf(t.runs, t.parameter);
+  t.points = PointsOf(t);
   return t;
 }
+
+StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace) {
+  return RecordTrace(Pascal2014{}, StoredSummary{.run_file = run.path, .output = run.output, .parameter = run.parameter},
+                     trace);
+}
+
+template StoredTrace RecordTrace(const Pascal2014&, const StoredSummary&, const BasicTraceResult<Pascal2014>&);
+template StoredTrace RecordTrace(const DynamicLinearOscillator&, const StoredSummary&,
+                                 const BasicTraceResult<DynamicLinearOscillator>&);
 
 TraceFiles FormatTraceFiles(const StoredTrace& trace) { return {FormatCsv(trace), FormatJson(trace)}; }
 
@@ -461,6 +500,10 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
                      fmt::format("says {} points of '{}': {} has {} of '{}'", b.points, b.signature, b.name,
                                  run.branch.size(), run.summary.signature));
     }
+    if (run.summary.model != t.model) {
+      throw KeyError(json_file, b.name, fmt::format("is a run of another model than the trace's ('{}', not '{}')",
+                                                    run.summary.model, t.model));
+    }
     // trace.csv's column is read as this variable of every branch's orbits.
     if (run.summary.parameter != t.parameter) {
       throw KeyError(json_file, "parameter",
@@ -472,9 +515,11 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
     }
   }
   const fs::path csv_file = trace_directory / kTraceCsv;
-  t.points = ParseCsv(detail::ReadTextFile(csv_file), csv_file, t.parameter);
+  t.points = ParseCsv(detail::ReadTextFile(csv_file), csv_file, t.parameter, StartNames(t));
   const std::string read = FormatCsv(t);
-  const std::string expected = FormatCsv({.parameter = t.parameter, .points = PointsOf(t.runs, t.parameter)});
+  StoredTrace from_branches = t;
+  from_branches.points = PointsOf(t);
+  const std::string expected = FormatCsv(from_branches);
   if (read != expected) {
     const auto [r, e] = std::mismatch(read.begin(), read.end(), expected.begin(), expected.end());
     const auto line = 1 + std::count(read.begin(), r, '\n');

@@ -1,8 +1,8 @@
 // trace for a run file's [model] (model_table.hpp), as every front end runs it: the orbit the motion
 // from rest settles on (model_find.hpp), then the chain of its branches in one of the model's
 // parameters over [low, high] through every change of orbit type, both ways (branches/trace.hpp);
-// and the trace as one JSON object. The result files (io/trace_files.hpp) hold the paper's model
-// only in this version: a model's trace is printed.
+// and the trace as one JSON object. Its result files are any trace's (io/trace_files.hpp,
+// RecordTrace of the model).
 #pragma once
 
 #include <filesystem>

@@ -6,8 +6,10 @@
 //                 (--results results/<output> --point branch-<k>:LABEL) and `export --auto` work
 //                 on each as on any run.
 //   trace.csv     one row per point of every branch: branch (k), signature, pt, label, the
-//                 continued parameter, phi, period, x10, x20, v10, stable, admissible
-//   trace.json    the run file, version, output, parameter and start signature; per direction its
+//                 continued parameter, phi, period, the start state (x10, x20, v10 for the
+//                 paper's model; a [model]'s names), stable, admissible
+//   trace.json    the run file, version, output, parameter and start signature (and, for a run
+//                 file's [model], "model": "linear-oscillator"); per direction its
 //                 end, message and branches (their k); per branch its name, direction, signature,
 //                 points, how it began (start, margin, and for a switch the bifurcation, the edit,
 //                 the adjacent signature, persists or a nonsmooth fold, from the orbit past the
@@ -81,9 +83,7 @@ struct StoredTracePoint {
   double lambda = 0.0;
   double phi = 0.0;
   double period = 0.0;
-  double x10 = 0.0;
-  double x20 = 0.0;
-  double v10 = 0.0;
+  NamedValues start{};  // the orbit's start state by name (x10, x20, v10 for the paper's model)
   bool stable = false;
   bool admissible = false;
 };
@@ -94,6 +94,7 @@ struct StoredTrace {
   std::string output;
   std::string parameter;
   std::string signature;  // the start's
+  std::string model;      // StoredSummary::model: "" for the paper's
   std::vector<StoredTraceDirection> directions;  // down, then up
   std::vector<StoredTraceBranch> branches;       // branch-1, branch-2, ...
   std::vector<StoredRun> runs;                   // one per branch, its directory's files
@@ -103,6 +104,10 @@ struct StoredTrace {
 
 // The stored form of a trace just computed from `run`.
 StoredTrace RecordTrace(const RunFile& run, const TraceResult& trace);
+// Any model's: `identity` gives the run file, the output and the model (StoredSummary), and each
+// branch's parameter. Compiled for the paper's model and DynamicLinearOscillator.
+template <OscillatorModel Model>
+StoredTrace RecordTrace(const Model& model, const StoredSummary& identity, const BasicTraceResult<Model>& trace);
 
 struct TraceFiles {
   std::string trace_csv;

@@ -1,0 +1,134 @@
+// A trace of a run file's [model] through the trace files' one writer and one reader
+// (io/trace_files.hpp, io/result_files.hpp): the model is erased to columns by name, written,
+// read back to the same bytes, and its trace.csv holds each orbit's period and start as the closed
+// form of the mass on a belt gives them (support/belt_cycle.hpp, ../shared/FRICTION-LITERATURE.md);
+// a run of another model is never read as the paper's orbit.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/io/model_trace.hpp"
+#include "stickslip/io/result_files.hpp"
+#include "stickslip/io/trace_files.hpp"
+#include "support/file_text.hpp"
+#include "support/belt_cycle.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The undamped mass on a belt (m = k = 1, F_s = 1.5, F_k = 1) from rest at v_b = 0.2, traced in
+// the belt's speed over [0.1, 0.5] and stored as `stickslip find --model --trace --output belt`
+// stores it.
+class BeltTraceFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const BeltCycle belt;
+    ModelFileStart start{.model = DynamicLinearOscillator(belt.Data()),
+                         .parameters = {1.0, belt.F_k, belt.F_s, belt.v_b},
+                         .slowest_frequency = belt.w(),
+                         .state = Eigen::VectorXd::Zero(2),
+                         .phi = 0.0};
+    const ModelTraceRun run = TraceModel(start, 50, 1, "v_b", 0.1, 0.5);
+    ASSERT_TRUE(run.trace.has_value()) << run.find.found.message;
+    stored_ = RecordTrace(run.find.model,
+                          {.run_file = "belt.toml", .output = "belt", .parameter = "v_b", .model = kLinearOscillatorModel},
+                          *run.trace);
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    root_ = fs::temp_directory_path() / (std::string("stickslip-model-trace-") + test->name());
+    fs::remove_all(root_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  StoredTrace stored_;
+  fs::path root_;
+};
+
+TEST_F(BeltTraceFiles, ReadBackToTheSameBytes) {
+  WriteTraceFiles(root_, stored_);
+  const StoredTrace read = ReadTraceFiles(root_ / "belt");
+  EXPECT_EQ(read.model, kLinearOscillatorModel);
+  EXPECT_EQ(FormatTraceFiles(read).trace_csv, FormatTraceFiles(stored_).trace_csv);
+  EXPECT_EQ(FormatTraceFiles(read).trace_json, FormatTraceFiles(stored_).trace_json);
+  ASSERT_EQ(read.runs.size(), stored_.runs.size());
+  for (std::size_t k = 0; k < read.runs.size(); ++k) {
+    const RunFiles a = FormatRunFiles(read.runs[k]), b = FormatRunFiles(stored_.runs[k]);
+    EXPECT_EQ(a.branch_csv, b.branch_csv) << k;
+    EXPECT_EQ(a.special_points_csv, b.special_points_csv) << k;
+    EXPECT_EQ(a.summary_json, b.summary_json) << k;
+    EXPECT_EQ(read.runs[k].summary.model, kLinearOscillatorModel);
+  }
+}
+
+// Autonomous: the period is the cycle's time, T_stick + T_slip, not a forcing period (omega,
+// which plays no part, is no column); the stick is entered at x = (2 F_k - F_s)/k.
+TEST_F(BeltTraceFiles, HoldTheClosedFormCycleOfEveryPoint) {
+  WriteTraceFiles(root_, stored_);
+  const std::string header = Slurp(root_ / "belt" / "trace.csv").substr(0, Slurp(root_ / "belt" / "trace.csv").find('\n'));
+  EXPECT_EQ(header, "branch,signature,pt,label,v_b,phi,period,x1_0,stable,admissible");
+  EXPECT_EQ(Slurp(root_ / "belt" / "branch-1" / "branch.csv").find(",omega,"), std::string::npos);
+  ASSERT_GT(stored_.points.size(), 10u);
+  double worst = 0.0;
+  for (const StoredTracePoint& p : ReadTraceFiles(root_ / "belt").points) {
+    BeltCycle at;
+    at.v_b = p.lambda;
+    ASSERT_EQ(p.signature, "stick slip-");
+    worst = std::max({worst, std::abs(p.period - (at.Stick() + at.Slip())), std::abs(Named(p.start, "x1_0") - at.Restick())});
+  }
+  EXPECT_LE(worst, 1e-9);
+  RecordProperty("worst_difference", std::to_string(worst));
+}
+
+TEST_F(BeltTraceFiles, AreNeverReadAsThePapersOrbit) {
+  try {
+    OrbitOf(stored_.runs.front(), stored_.runs.front().branch.front());
+    FAIL() << "a [model]'s point read as the paper's orbit";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "model");
+  }
+}
+
+// A summary naming a model stickslip does not know, and a branch of another model than its
+// trace's, are refused naming the file and the key.
+TEST_F(BeltTraceFiles, RefuseAnUnknownModelAndABranchOfAnotherModel) {
+  WriteTraceFiles(root_, stored_);
+  const fs::path summary = root_ / "belt" / "branch-1" / "summary.json";
+  const std::string text = Slurp(summary);
+  std::string other = text;
+  other.replace(other.find("\"linear-oscillator\""), 19, "\"nonlinear\"");
+  Spit(summary, other);
+  try {
+    ReadRunFiles(root_ / "belt" / "branch-1");
+    FAIL() << "an unknown model read";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("summary.json: key 'model'"), std::string::npos) << e.what();
+  }
+  std::string paper = text;
+  paper.erase(paper.find("  \"model\": \"linear-oscillator\",\n"), 33);
+  Spit(summary, paper);
+  try {
+    ReadTraceFiles(root_ / "belt");
+    FAIL() << "a branch without the model read into a [model]'s trace";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("branch-1"), std::string::npos) << e.what();
+  }
+  Spit(summary, text);
+  const fs::path trace_json = root_ / "belt" / "trace.json";
+  std::string without = Slurp(trace_json);
+  without.erase(without.find("  \"model\": \"linear-oscillator\",\n"), 33);
+  Spit(trace_json, without);
+  try {
+    ReadTraceFiles(root_ / "belt");
+    FAIL() << "a [model]'s branch read into a trace of the paper's model";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("is a run of another model"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace stickslip
