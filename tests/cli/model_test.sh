@@ -122,6 +122,28 @@ for n in (0, 300):
             assert a["period"] == b["period"], (s, n, a["omega"], a["period"], b["period"])
             assert abs(float(b["amplitude:m1"]) / float(s) - float(a["amplitude:m1"])) <= 1e-9 * float(a["amplitude:m1"])
 PY
+# find --model in those units: a linear oscillator with Coulomb friction is homogeneous (forces and
+# the state times s give a motion), so the five-mass chain's orbit with forces times 1e-7 and 1e7 is
+# the same type with the same durations, its start state s times, solved and verified (the
+# tolerances relative to the orbit's size: absolute ones failed Odeint's check at 1e-7 and Newton at 1e7).
+for s in 1 1e-7 1e7; do
+  sed "s|forcing = { m1 = 1.0 }|forcing = { m1 = $s }|; s|F_k = 0.3, F_s = 0.4|F_k = $(python3 -c "print(0.3*$s)"), F_s = $(python3 -c "print(0.4*$s)")|" \
+    "$models/five-mass-chain.toml" > "$work/chain-$s.toml"
+  "$bin" find --model "$work/chain-$s.toml" --json > "$work/chain-$s.json" 2> "$work/chain-$s.err" ||
+    fail "find --model chain-$s.toml exits $?: $(cat "$work/chain-$s.err")"
+done
+/usr/bin/python3 - "$work" <<'PY' && pass || fail "find --model: the orbit depends on the model's units"
+import json, sys
+def orbit(s):
+    return json.load(open(f"{sys.argv[1]}/chain-{s}.json"))["orbit"]
+one = orbit("1")
+for s in ("1e-7", "1e7"):
+    o = orbit(s)
+    assert o["signature"] == one["signature"] and o["verification"]["passed"], (s, o["signature"], o["verification"])
+    assert all(abs(a - b) <= 1e-9 * (1 + abs(a)) for a, b in zip(one["durations"], o["durations"])), (s, o["durations"])
+    scale = max(abs(v) for v in one["start"].values())
+    assert all(abs(o["start"][k] / float(s) - v) <= 1e-8 * scale for k, v in one["start"].items()), (s, o["start"])
+PY
 sed 's|m1|b|g; s|contact = "b"|contact = "b"\nnames = ["b"]|' "$models/den-hartog.toml" > "$work/b.toml"
 expect 2 "parameter = 'v_b' is invalid" "$bin" sweep --model "$work/b.toml" --parameter v_b --from 0.1 --to 0.3 --output "$work/x.csv"
 sed 's|m1|k|g; s|contact = "k"|contact = "k"\nnames = ["k"]|' "$models/belt.toml" > "$work/k.toml"

@@ -27,8 +27,8 @@ std::vector<Mode> MergedModes(const std::vector<Mode>& modes) {
 
 bool Verification::Passed() const {
   return not_simulated.empty() && exact.sequence_matches && odeint.sequence_matches &&
-         exact.periodicity_mismatch <= kExactTolerance &&
-         odeint.periodicity_mismatch <= kOdeintTolerance;
+         exact.periodicity_mismatch <= kExactTolerance * scale &&
+         odeint.periodicity_mismatch <= kOdeintTolerance * scale;
 }
 
 std::string Verification::Report() const {
@@ -42,7 +42,7 @@ std::string Verification::Report() const {
                        c.max_event_time_difference);
   };
   return fmt::format("expected [{}]\n", ModeList(expected)) +
-         line("exact", exact, kExactTolerance) + line("odeint", odeint, kOdeintTolerance);
+         line("exact", exact, kExactTolerance * scale) + line("odeint", odeint, kOdeintTolerance * scale);
 }
 
 Verification VerifyOrbit(const Orbit& orbit) {

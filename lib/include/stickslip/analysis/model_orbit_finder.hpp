@@ -60,15 +60,24 @@ struct ModelFindResult {
   std::optional<Verification> verification;
 };
 
-// The orbit's verification by the model's exact simulator and by Odeint's.
+// The orbit's verification by the model's exact simulator and by Odeint's, both relative to the
+// orbit's size (OrbitSize): Odeint's absolute tolerance and the mismatches' thresholds scale with it,
+// so that the same motion in other units (forces times 1e-7 or 1e7) verifies the same.
 template <IntegrableOscillatorModel Model>
 Verification VerifyByBothSimulators(const Model& model, const BasicOrbit<Model>& orbit) {
   using ModelState = typename Model::State;
+  const double size = OrbitSize(model, orbit);
+  OdeintOptions odeint;
+  odeint.absolute_tolerance *= size;
   auto exact = [](const Model& m, const typename Model::Parameters& p, const ModelState& x0, double phi,
                   const BasicSimulationOptions<ModelState>& options) { return SimulateExact(m, p, x0, phi, options); };
-  auto integrated = [](const Model& m, const typename Model::Parameters& p, const ModelState& x0, double phi,
-                       const BasicSimulationOptions<ModelState>& options) { return SimulateOdeint(m, p, x0, phi, options); };
-  return VerifyOrbit(model, orbit, exact, integrated);
+  auto integrated = [&odeint](const Model& m, const typename Model::Parameters& p, const ModelState& x0, double phi,
+                              const BasicSimulationOptions<ModelState>& options) {
+    return SimulateOdeint(m, p, x0, phi, options, odeint);
+  };
+  Verification v = VerifyOrbit(model, orbit, exact, integrated);
+  v.scale = size;
+  return v;
 }
 
 // `r` with its converged orbit's margins, stability, measures and verification, and its status:
@@ -109,7 +118,13 @@ ModelFindResult<Model> SolvedAtFixedParameters(const Model& model, const ModelFi
                              r.guess->signature.ToString());
     return r;
   }
-  r.solution = SolveOrbit(model, *r.guess, free, false, options.solver);
+  // Newton's residual (states and velocities at the segment ends) in the model's units: its
+  // tolerances relative to the orbit's size.
+  OrbitSolverOptions solver = options.solver;
+  const double size = OrbitSize(model, *r.guess);
+  solver.newton.residual_tolerance *= size;
+  solver.newton.stagnation_residual *= size;
+  r.solution = SolveOrbit(model, *r.guess, free, false, solver);
   if (!r.solution->summary.Converged()) {
     r.status = FindOrbitStatus::kSolveFailed;
     r.message = fmt::format("Newton did not converge from the simulated '{}': {}", r.guess->signature.ToString(),

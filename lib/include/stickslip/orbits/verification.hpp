@@ -41,6 +41,9 @@ struct Verification {
   // Thresholds: the exact flows carry rounding only; Odeint integrates at 1e-12 tolerances.
   static constexpr double kExactTolerance = 1e-9;
   static constexpr double kOdeintTolerance = 1e-6;
+  // The orbit's size the mismatches are judged against, in the model's units (OrbitSize): the
+  // thresholds are the tolerances times it. 1 for the paper's scaled model: absolute.
+  double scale = 1.0;
   bool Passed() const;
   std::string Report() const;  // one line per simulator, or why there was no simulation
 };
@@ -83,6 +86,18 @@ SimulatorCheck CheckSimulation(const BasicSimulationResult<Model>& r, double per
     }
   }
   return check;
+}
+
+// The largest |component| of the state at the orbit's segment ends over its whole period: its size
+// in the model's units (metres and metres per second of a user's [model], whose forces may be
+// micronewtons or meganewtons), 1 where that is not a positive finite number.
+template <OscillatorModel Model>
+double OrbitSize(const Model& model, const BasicOrbit<Model>& orbit) {
+  double size = 0.0;
+  WalkSegments(model, orbit, Extent::kFullPeriod, PhaseRule::kAccumulated, [&](const SegmentVisit<double, Model>& s) {
+    size = std::max(size, s.end.template lpNorm<Eigen::Infinity>());
+  });
+  return std::isfinite(size) && size > 0.0 ? size : 1.0;
 }
 
 // The verification of an orbit of any model by two simulators of one period from its start, each
