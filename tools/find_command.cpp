@@ -219,6 +219,9 @@ int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
                                 "--max-multiple, --trace, --trace-parameter, --output, --results and --json",
                                 option));
   }
+  if (cmd.count("--output") != 0 && args.output.empty()) {
+    throw InvalidInput("output", "''", std::string(kRunNameRule));
+  }
   return RunModelFind({args.model, args.start.set, args.transients, args.max_multiple, args.json, args.trace,
                        args.trace_parameter, args.output, args.start.results});
 }
@@ -302,7 +305,8 @@ Command AddFindCommand(CLI::App& app) {
       ->type_name("FILE");
   cmd->add_option("--trace-parameter", args->trace_parameter,
                   "with --model and --trace: the parameter traced (omega, F_k, F_s or v_b; default omega, or v_b "
-                  "without forcing); the trace is printed (the branches, and with --json every point), not written")
+                  "without forcing); the trace is printed (the branches, and with --json every point), and written with "
+                  "--output")
       ->type_name("NAME");
   return {cmd, [args, cmd] {
             if (cmd->count("--model") != 0) return RunModelFindOf(*args, *cmd);

@@ -14,6 +14,7 @@
 #include "progress_line.hpp"
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
 #include "stickslip/io/model_trace.hpp"
 #include "stickslip/io/trace_files.hpp"
@@ -151,7 +152,8 @@ int RunModelFind(const ModelFindArgs& args) {
   }
   if (written) {
     const StoredTrace stored = RecordTrace(run.find.model,
-                                           StoredSummary{.run_file = args.file,
+                                           // What --set changed is not in the file: the command line is the run's input.
+                                           StoredSummary{.run_file = args.set.empty() ? args.file : std::string(kOneOffRunPath),
                                                          .output = args.output,
                                                          .parameter = run.trace->parameter,
                                                          .model = kLinearOscillatorModel},

@@ -181,7 +181,8 @@ void BindTrace(py::module_& m) {
         std::optional<StoredTrace> stored;
         if (run.trace && !(run.trace->down.links.empty() && run.trace->up.links.empty())) {
           stored = RecordTrace(run.find.model,
-                               StoredSummary{.run_file = path, .output = "trace", .parameter = parameter,
+                               StoredSummary{.run_file = set.empty() ? path : std::string(kOneOffRunPath),
+                                             .output = "trace", .parameter = parameter,
                                              .model = kLinearOscillatorModel},
                                *run.trace);
         }

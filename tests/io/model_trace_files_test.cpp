@@ -84,6 +84,44 @@ TEST_F(BeltTraceFiles, HoldTheClosedFormCycleOfEveryPoint) {
   RecordProperty("worst_difference", std::to_string(worst));
 }
 
+// What every linear oscillator with a Coulomb contact has, checked where the row is admissible: a
+// duration within the period (for the belt, whose period is its durations' sum: not negative),
+// F_k > 0, F_s >= F_k; and every branch with the same start state.
+TEST_F(BeltTraceFiles, RefuseAnImpossibleRowAndABranchOfAnotherStartState) {
+  WriteTraceFiles(root_, stored_);
+  const fs::path branch = root_ / "belt" / "branch-2" / "branch.csv";
+  const std::string text = Slurp(branch);
+  auto refused = [&](const std::string& from, const std::string& to, const std::string& why) {
+    std::string damaged = text;
+    damaged.replace(damaged.find(from), from.size(), to);
+    Spit(branch, damaged);
+    try {
+      ReadRunFiles(branch.parent_path());
+      ADD_FAILURE() << "read with " << to;
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+    Spit(branch, text);
+  };
+  // Row 2 (pt 1): F_k, F_s, v_b, phi, x1_0, d1, d2 = 1, 1.5, 0.2, 0, 0.5, 5, 3.9026...
+  refused(",5,3.9026", ",-1,3.9026", "column 'd1' = '-1' is invalid");
+  refused("\n1,EP1,1,1.5,", "\n1,EP1,1,0.5,", "column 'F_s' = '0.5' is invalid: valid F_s >= F_k = 1");
+  refused("\n1,EP1,1,", "\n1,EP1,-1,", "column 'F_k' = '-1' is invalid: valid F_k > 0");
+  std::string renamed = text;
+  renamed.replace(renamed.find(",x1_0,"), 6, ",y1_0,");
+  Spit(branch, renamed);
+  std::string special = Slurp(branch.parent_path() / "special-points.csv");
+  special.replace(special.find(",x1_0,"), 6, ",y1_0,");
+  Spit(branch.parent_path() / "special-points.csv", special);
+  try {
+    ReadTraceFiles(root_ / "belt");
+    FAIL() << "a branch of another start state read into the trace";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'branch-2' has the start state y1_0 where branch-1 has x1_0"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(BeltTraceFiles, AreNeverReadAsThePapersOrbit) {
   try {
     OrbitOf(stored_.runs.front(), stored_.runs.front().branch.front());

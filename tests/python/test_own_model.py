@@ -70,6 +70,8 @@ def test_trace_is_the_command_lines_json_and_saves_its_files(tmp_path):
     assert len(written) >= 5, written
     for name in written:
         assert (tmp_path / "python" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    import copy, pickle
+    assert pickle.loads(pickle.dumps(traced)) == traced and copy.deepcopy(traced) == traced
     loaded = stickslip.Trace.load(tmp_path / "python" / "belt")
     assert len(loaded.files()["trace.csv"].splitlines()) == 1 + sum(
         len(b["points"]) for d in ("down", "up") for b in traced[d]["branches"])

@@ -268,6 +268,10 @@ class ModelTrace(dict):
         super().__init__(printed)
         self._stored = stored
 
+    def __reduce__(self):
+        # A copy or a pickle is the dict: the stored trace it would save is a C++ object.
+        return (dict, (dict(self),))
+
     def save(self, directory):
         """Writes the trace's files into `directory` as `stickslip find --model --trace --output`
         writes them (branch-<k>/, trace.csv, trace.json; the directory's name becomes the output

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <cctype>
+#include <cmath>
 #include <functional>
 #include <fstream>
 #include <limits>
@@ -298,13 +300,52 @@ Orbit ParseOrbit(const CsvTable& t, int row, const ColumnIndices& c, const Signa
   return orbit;
 }
 
+// Another model's variables as its columns must stand for the files' readers (trace.csv, a
+// period, the model's orbit): the continued parameter among them, then phi, the start state and
+// d1..dn last, in order.
+void CheckModelVariables(const CsvTable& table, const ColumnIndices& c, const Signature& signature,
+                         const std::string& parameter, const fs::path& summary_file) {
+  std::vector<std::string> names;
+  for (int column : c.solution) names.push_back(table.header()[column]);
+  const int n = signature.size();
+  const auto phi = std::find(names.begin(), names.end(), "phi");
+  for (int i = 0; i < n; ++i) {
+    const std::size_t at = names.size() - n + i;
+    if (names.size() < static_cast<std::size_t>(n) + 1 || names[at] != fmt::format("d{}", i + 1) ||
+        phi == names.end() || phi >= names.begin() + static_cast<std::ptrdiff_t>(names.size() - n)) {
+      throw table.HeaderError(fmt::format("the orbit's variables {} are invalid: valid its parameters, phi, its start "
+                                          "state, then d1..d{} in order",
+                                          fmt::join(names, ","), n));
+    }
+  }
+  if (std::find(names.begin(), names.end(), parameter) == names.end()) {
+    throw KeyError(summary_file, "parameter",
+                   fmt::format("= '{}' is not a column of the tables: valid one of the orbit's variables, {}", parameter,
+                               fmt::join(names, ", ")));
+  }
+}
+
 // The row's variables: the paper's by their kinds (ParseOrbit); another model's finite (its
-// ranges are its file's, which the run's files do not hold).
+// ranges are its file's, which the run's files do not hold), but what holds for every linear
+// oscillator with a Coulomb contact where the row is admissible: the kinetic level F_k > 0 (its
+// sliding-friction margin), the static level F_s >= F_k, each duration within the period.
 NamedValues ParseSolution(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature, bool admissible) {
   if (!c.variables.empty()) return SolutionColumns(ParseOrbit(t, row, c, signature, admissible));
-  NamedValues solution;
-  for (int column : c.solution) solution.emplace_back(t.header()[column], t.Value(row, column, detail::Finite()));
-  return solution;
+  StoredPoint point;
+  for (int column : c.solution) point.solution.emplace_back(t.header()[column], t.Value(row, column, detail::Finite()));
+  if (!admissible) return point.solution;
+  std::optional<double> kinetic;
+  for (int column : c.solution) {
+    const std::string& name = t.header()[column];
+    if (name == "F_k") {
+      kinetic = t.Value(row, column, {.min = std::nextafter(0.0, 1.0), .text = "F_k > 0 where admissible"});
+    } else if (name == "F_s" && kinetic) {
+      t.Value(row, column, {.min = *kinetic * (1.0 - 1e-12), .text = fmt::format("F_s >= F_k = {} where admissible", *kinetic)});
+    } else if (name.starts_with("d") && name.size() > 1 && std::isdigit(static_cast<unsigned char>(name[1]))) {
+      t.Value(row, column, detail::Duration(name, StoredPeriod(signature, point), true));
+    }
+  }
+  return point.solution;
 }
 
 // Every column by its kind (column_kinds.hpp); the non-finite values only where the format has them.
@@ -417,28 +458,14 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   StoredRun run{std::move(summary.fields), {}, {}};
   const CsvTable branch(files.branch_csv, directory / kBranchFile);
   const ColumnIndices branch_columns = FindColumns(branch, signature, paper_model, false);
+  if (!paper_model) CheckModelVariables(branch, branch_columns, signature, run.summary.parameter, summary_file);
   for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, signature));
   run.absent_measures = AbsentMeasures(branch_columns);
   if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
-  if (!paper_model) {
-    // trace.csv, the AUTO export and a restart read these by name.
-    const NamedValues& solution = run.branch.front().solution;
-    std::vector<std::string> names;
-    for (const auto& [name, value] : solution) names.push_back(name);
-    std::vector<std::string> needed = {run.summary.parameter, "phi"};
-    for (int i = 1; i <= signature.size(); ++i) needed.push_back(fmt::format("d{}", i));
-    for (const std::string& name : needed) {
-      if (std::find(names.begin(), names.end(), name) == names.end()) {
-        throw KeyError(summary_file, "parameter",
-                       fmt::format("names '{}', which is not a column of {}: valid the orbit's variables ({}) with phi "
-                                   "and d1..d{}",
-                                   name, kBranchFile, fmt::join(names, ", "), signature.size()));
-      }
-    }
-  }
 
   const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);
   const ColumnIndices special_columns = FindColumns(special, signature, paper_model, true);
+  if (!paper_model) CheckModelVariables(special, special_columns, signature, run.summary.parameter, summary_file);
   if (AbsentMeasures(special_columns) != run.absent_measures) {
     throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
                               "test_function, located");
@@ -546,6 +573,12 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
     throw InvalidInput::WithMessage("run", fmt::format("run '{}' is invalid: valid {}", run, kRunNameRule));
   }
   const StoredRun stored = ReadRunFiles(results_root / run);
+  if (!stored.summary.model.empty()) {
+    throw InvalidInput::WithMessage(
+        "run", fmt::format("'{}' holds a run of a {} (a run file's [model]): valid a run of the paper's oscillator "
+                           "(a restart from a [model]'s label is not done in this version)",
+                           (results_root / run).string(), stored.summary.model));
+  }
   std::vector<std::string> labels;
   for (const StoredSpecialPoint& s : stored.special_points) {
     if (s.point.label == label) return {stored.summary.signature, s.point.solution, s.test_function};

@@ -46,18 +46,22 @@ std::vector<std::string> CsvHeader(const std::string& parameter, const std::vect
   return header;
 }
 
-// The start state's names of the trace's model: the solution's columns between phi and d1
-// (SolutionColumns), or, for a trace without a branch, the paper's.
-std::vector<std::string> StartNames(const StoredTrace& t) {
+// The start state's names of a run's model: its solution's columns between phi and d1
+// (SolutionColumns; the reader checked that order).
+std::vector<std::string> StartNamesOf(const StoredRun& run) {
   std::vector<std::string> names;
-  if (t.runs.empty()) {
-    const OrbitLayout layout(Pascal2014{}.Description(), 0);
-    for (int k = 0; k < layout.StartVariables(); ++k) names.push_back(layout.Name(k));
-    return names;
-  }
-  const NamedValues& solution = t.runs.front().branch.front().solution;
+  const NamedValues& solution = run.branch.front().solution;
   const auto phi = std::find_if(solution.begin(), solution.end(), [](const auto& v) { return v.first == "phi"; });
   for (auto v = phi + (phi != solution.end()); v != solution.end() && v->first != "d1"; ++v) names.push_back(v->first);
+  return names;
+}
+
+// The trace's: its first branch's, or, for a trace without a branch, the paper's.
+std::vector<std::string> StartNames(const StoredTrace& t) {
+  if (!t.runs.empty()) return StartNamesOf(t.runs.front());
+  std::vector<std::string> names;
+  const OrbitLayout layout(Pascal2014{}.Description(), 0);
+  for (int k = 0; k < layout.StartVariables(); ++k) names.push_back(layout.Name(k));
   return names;
 }
 
@@ -504,7 +508,12 @@ StoredTrace ReadTraceFiles(const fs::path& trace_directory) {
       throw KeyError(json_file, b.name, fmt::format("is a run of another model than the trace's ('{}', not '{}')",
                                                     run.summary.model, t.model));
     }
-    // trace.csv's column is read as this variable of every branch's orbits.
+    // trace.csv's columns are read as these variables of every branch's orbits.
+    if (!t.runs.empty() && StartNamesOf(run) != StartNamesOf(t.runs.front())) {
+      throw KeyError(json_file, b.name,
+                     fmt::format("has the start state {} where branch-1 has {}: valid the same model's branches",
+                                 fmt::join(StartNamesOf(run), ","), fmt::join(StartNamesOf(t.runs.front()), ",")));
+    }
     if (run.summary.parameter != t.parameter) {
       throw KeyError(json_file, "parameter",
                      fmt::format("= '{}' differs from the parameter of {}, '{}'", t.parameter, b.name, run.summary.parameter));
