@@ -66,6 +66,43 @@ for solution, row in zip(s, labelled):
 print(f"{run}: AUTO reads {len(b)} points, {len(s)} labelled solutions, {len(d)} diagnostics")
 PY
 done
+# A [model]'s run (a branch of the five-mass chain's trace): the b. file's columns are the model's
+# (omega, amplitude:m1 .. m5, ...), the s. file holds its ten-component state sampled by the exact
+# simulator from the stored start over one period, which comes back to it, and PAR(1..4) = omega,
+# F_k, F_s, v_b with PAR(11) = 2 pi/omega. The model is read from the run file the summary names,
+# relative to where the run was made (the source tree).
+model_run="$work/chain/branch-3"
+mkdir -p "$work/chain"
+cp -r "$root/results/models/five-mass-chain-omega-trace/branch-3" "$model_run"
+(cd "$root" && "$bin" export --auto "$model_run")
+/usr/bin/python3 - "$model_run" <<'PY'
+import csv, math, os, sys
+sys.path.insert(0, "/usr/lib/auto-07p/python")
+import numpy
+numpy.bool = bool
+import io, contextlib
+with contextlib.redirect_stdout(io.StringIO()):
+    from auto import parseB, parseS
+directory = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(directory, "branch.csv"))))
+labelled = [r for r in rows if r["label"]]
+b = parseB.parseB(os.path.join(directory, "b.branch-3"))
+assert len(b) == len(rows) and b.coordnames[:7] == ["omega"] + [f"amplitude:m{k}" for k in range(1, 6)] + ["peak-to-peak:m5"], b.coordnames
+s = parseS.parseS(os.path.join(directory, "s.branch-3"))
+assert len(s) == len(labelled), (len(s), len(labelled))
+names = [f"m{k}_0" for k in range(1, 6)] + [f"v_m{k}_0" for k in range(1, 5)]
+for solution, row in zip(s, labelled):
+    omega = float(row["omega"])
+    par = [solution[f"PAR({k})"] for k in range(1, 5)]
+    assert all(abs(a - e) <= 1e-9 * max(1.0, abs(e)) for a, e in zip(par, [omega, float(row["F_k"]), float(row["F_s"]), 0.0])), par
+    assert abs(solution["PAR(11)"] - 2 * math.pi / omega) <= 1e-9 * 2 * math.pi / omega
+    u = solution.coordarray
+    assert u.shape == (10, 101), u.shape
+    start = [float(row[n]) for n in names] + [0.0]
+    assert all(abs(u[i][0] - start[i]) <= 1e-9 for i in range(10)), (u[:, 0], start)
+    assert all(abs(u[i][-1] - u[i][0]) <= 1e-8 for i in range(10)), "not periodic"
+print(f"five-mass chain: AUTO reads {len(b)} points, {len(s)} labelled solutions of 10 components")
+PY
 # A run stored before the friction measures existed: read with them nan, exported with every value
 # its own right-aligned field (NaN too), which AUTO's parser reads, the measures read back as NaN.
 old=paper-5.1-omega-old

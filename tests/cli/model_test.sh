@@ -307,7 +307,6 @@ echo mine > "$work/traces/chain/NOTES.md"
   fail "a second find --model --trace --output did not keep the user's file: $(cat "$work/chain.txt")"
 "$bin" plot "$work/traces/chain" --output "$work/chain.png" > /dev/null && [ -s "$work/chain.png" ] && pass ||
   fail "stickslip plot of a [model]'s trace"
-expect 2 "valid here a run of the paper's oscillator" "$bin" export --auto "$work/traces/chain/branch-1"
 expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid a run of the paper's oscillator" \
   "$bin" continue --results "$work/traces/chain" --point branch-1:EP1 --parameter omega --range 0.3,0.9 --output z
 expect 2 "output = '' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --output "" --results "$work/out"
@@ -316,6 +315,10 @@ expect 2 "output = '' is invalid" "$bin" find --model "$models/belt.toml" --trac
   grep -q '"run_file": "(command line)"' "$work/traces/belt/trace.json" &&
   grep -q '"run_file": "(command line)"' "$work/traces/belt/branch-1/summary.json" && pass ||
   fail "find --model --set --trace --output: the run file is not the command line"
+"$bin" export --auto "$work/traces/chain/branch-1" > /dev/null && [ -s "$work/traces/chain/branch-1/s.branch-1" ] && pass ||
+  fail "export --auto of a [model]'s run"
+expect 2 "was computed from the command line (--set): its s. file needs the model" \
+  "$bin" export --auto "$work/traces/belt/branch-1"
 expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
 expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \

@@ -11,6 +11,10 @@
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/result_files.hpp"
+#include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_find.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
@@ -51,13 +55,18 @@ struct BranchColumns {
   }
 };
 
-// The paper's run (OrbitOf refuses another model's: its s. file samples the paper's orbits).
+// The b. file's columns of any model's run: the start state (the solution's columns between phi and
+// d1), phi and the durations after the measures (for the paper's model: x10, x20, v10, phi, d1..dn).
 BranchColumns ColumnsOf(const StoredRun& run) {
-  const int segments = OrbitOf(run, run.branch.front()).signature.size();
   BranchColumns columns{.names = {run.summary.parameter}, .measures = run.branch.front().measures.size()};
   for (const auto& [name, value] : run.branch.front().measures) columns.names.push_back(name);
-  // The reader checked that the parameter is a variable of the orbit.
-  for (int i = 0; i < orbit_variables::FirstParameter(segments); ++i) columns.names.push_back(orbit_variables::Name(segments, i));
+  const NamedValues& solution = run.branch.front().solution;
+  const auto phi = std::find_if(solution.begin(), solution.end(), [](const auto& v) { return v.first == "phi"; });
+  for (auto v = phi + 1; v != solution.end() && v->first != "d1"; ++v) columns.names.push_back(v->first);
+  columns.names.push_back("phi");
+  for (auto v = std::find_if(phi, solution.end(), [](const auto& v) { return v.first == "d1"; }); v != solution.end(); ++v) {
+    columns.names.push_back(v->first);
+  }
   return columns;
 }
 
@@ -76,28 +85,78 @@ std::string BranchHeader(const StoredRun& run, const BranchColumns& columns) {
   return header + "\n";
 }
 
-// The s. file's entry of a labelled point: one period at `samples` times (t scaled to [0, 1]),
-// then NPAR = 36 parameters.
-std::string SolutionEntry(const StoredRun& run, const StoredPoint& p, int ty, int lab, int samples) {
-  const Orbit orbit = OrbitOf(run, p);
-  const std::vector<State> states = orbit.Sample(samples);
+// One period of a labelled point's orbit as the s. file holds it: the state at `samples` equally
+// spaced times, and AUTO's parameters PAR(1..) (the model's, in its order) with PAR(11) the period.
+struct SampledOrbit {
+  std::vector<std::vector<double>> states;
+  std::vector<double> parameters;
+  double period = 0.0;
+};
+
+// The paper's orbit by its closed forms (Orbit::Sample).
+SampledOrbit SampledOf(const Orbit& orbit, int samples) {
+  SampledOrbit sampled;
+  for (const State& x : orbit.Sample(samples)) sampled.states.emplace_back(x.data(), x.data() + x.size());
+  for (int k = 0; k < kParameterCount; ++k) sampled.parameters.push_back(orbit.parameters[kAllParameters[k]]);
+  sampled.period = orbit.Period();
+  return sampled;
+}
+
+// A [model]'s orbit by its exact simulator (the same closed forms, sampled), the model read from the
+// run's run file.
+SampledOrbit SampledOf(const StoredRun& run, const StoredPoint& p, int samples) {
+  if (run.summary.run_file == kOneOffRunPath) {
+    throw InvalidInput::WithMessage(
+        "run", fmt::format("'{}' was computed from the command line (--set): its s. file needs the model, which only "
+                           "a run file names: valid a run whose summary.json names its [model]'s file",
+                           run.summary.output));
+  }
+  const ModelFileStart file = ReadModelFileStart(run.summary.run_file, {});
+  const BasicOrbit<DynamicLinearOscillator> orbit = OrbitOf(file.model, file.parameters, run, p);
+  SampledOrbit sampled;
+  sampled.period = PeriodOf(file.model, orbit);
+  BasicSimulationOptions<DynamicLinearOscillator::State> options;
+  options.duration = sampled.period;
+  options.sample_step = sampled.period / (samples - 1);
+  const auto simulated = SimulateExact(file.model, orbit.parameters, orbit.start, orbit.phi, options);
+  for (int k = 0; k < samples && k < static_cast<int>(simulated.samples.size()); ++k) {
+    const auto& x = simulated.samples[k].state;
+    sampled.states.emplace_back(x.data(), x.data() + x.size());
+  }
+  for (int k = 0; k < file.model.Description().ParameterCount(); ++k) {
+    sampled.parameters.push_back(DynamicLinearOscillator::ParameterAt(orbit.parameters, k));
+  }
+  return sampled;
+}
+
+// The s. file's entry of a labelled point: one period (t scaled to [0, 1], then the state, seven
+// numbers a line as AUTO writes them), then NPAR = 36 parameters.
+std::string SolutionEntry(const StoredPoint& p, int ty, int lab, const SampledOrbit& orbit) {
   constexpr int kParameters = 36;  // AUTO's NPAR
+  constexpr int kPerLine = 7;
   std::vector<double> par(kParameters, 0.0);
-  for (int k = 0; k < kParameterCount; ++k) par[k] = orbit.parameters[kAllParameters[k]];
-  par[10] = orbit.Period();
-  const int lines = samples + (kParameters + 6) / 7;
+  std::copy(orbit.parameters.begin(), orbit.parameters.end(), par.begin());
+  par[10] = orbit.period;
+  const int samples = static_cast<int>(orbit.states.size());
+  const int dimension = static_cast<int>(orbit.states.front().size());
+  const int rows = (dimension + kPerLine) / kPerLine;  // t and the state
+  const int lines = samples * rows + (kParameters + kPerLine - 1) / kPerLine;
   // IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR
   std::string s = fmt::format("{:6d}{:6d}{:6d}{:6d}{:6d}{:6d}{:8d}{:6d}{:8d}{:5d}{:5d}{:5d}\n", 1,
-                              p.stable ? -p.pt : p.pt, ty, lab, 1, 1, samples, 5, lines, samples - 1, 1, kParameters);
+                              p.stable ? -p.pt : p.pt, ty, lab, 1, 1, samples, dimension + 1, lines, samples - 1, 1,
+                              kParameters);
+  auto write = [&s](const std::vector<double>& values) {
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      s += fmt::format("{}{:>19.10E}", k % kPerLine == 0 ? "    " : "", values[k]);
+      if (k % kPerLine == kPerLine - 1 || k + 1 == values.size()) s += "\n";
+    }
+  };
   for (int k = 0; k < samples; ++k) {
-    const State& x = states[k];
-    s += fmt::format("    {:>19.10E}{:>19.10E}{:>19.10E}{:>19.10E}{:>19.10E}\n", static_cast<double>(k) / (samples - 1), x(0),
-                     x(1), x(2), x(3));
+    std::vector<double> row = {static_cast<double>(k) / (samples - 1)};
+    row.insert(row.end(), orbit.states[k].begin(), orbit.states[k].end());
+    write(row);
   }
-  for (int k = 0; k < kParameters; ++k) {
-    s += fmt::format("{}{:>19.10E}", k % 7 == 0 ? "    " : "", par[k]);
-    if (k % 7 == 6 || k + 1 == kParameters) s += "\n";
-  }
+  write(par);
   return s;
 }
 
@@ -139,7 +198,9 @@ AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
     files.b += "\n";
     if (!files.d.empty()) files.d += kDiagnosticsDivider;
     files.d += DiagnosticsEntry(p, run.summary.parameter, values.front(), lab);
-    if (!p.label.empty()) files.s += SolutionEntry(run, p, ty, lab, samples);
+    if (p.label.empty()) continue;
+    files.s += SolutionEntry(p, ty, lab, run.summary.model.empty() ? SampledOf(OrbitOf(run, p), samples)
+                                                                    : SampledOf(run, p, samples));
   }
   return files;
 }
