@@ -147,7 +147,10 @@ int RunModelFind(const ModelFindArgs& args) {
     if (run.trace && !written) fmt::print("{}", TraceText(*run.trace));
   }
   if (const int code = FindExitCode(found.status); code != kExitOk) {
-    fmt::print(stderr, "error: {}: {}\n", args.file, found.message);
+    const bool unsettled = found.message.find("not settled") != std::string::npos ||
+                           found.message.find("simulate longer") != std::string::npos;
+    fmt::print(stderr, "error: {}: {}{}\n", args.file, found.message,
+               unsettled ? fmt::format(" (--transients {} periods now: more simulates longer)", args.transients) : "");
     return code;
   }
   if (written) {

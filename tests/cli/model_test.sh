@@ -309,6 +309,9 @@ echo mine > "$work/traces/chain/NOTES.md"
   fail "stickslip plot of a [model]'s trace"
 expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid a run of the paper's oscillator" \
   "$bin" continue --results "$work/traces/chain" --point branch-1:EP1 --parameter omega --range 0.3,0.9 --output z
+expect 2 "phi = 0.3 is invalid: the model has no forcing" "$bin" find --model "$models/belt.toml" --set phi=0.3
+expect 5 "the motion has not settled (nor is any k <= 8 forcing periods a period of it) (--transients 2 periods now: more simulates longer)" \
+  "$bin" find --model "$models/five-mass-chain.toml" --transients 2
 expect 2 "output = '' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --output "" --results "$work/out"
 # With --set the file is not the run's input: the command line is (as the paper's find writes it).
 "$bin" find --model "$models/belt.toml" --set F_s=2 --trace 0.1,0.3 --output belt --results "$work/traces" > /dev/null &&

@@ -38,6 +38,12 @@ ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const N
   ModelStartState begin = StartOf(model, table, set);
   NamedValues parameters;
   for (const auto& [name, value] : set) {
+    if (name == "phi" && model.Autonomous()) {
+      throw InvalidInput::WithMessage(
+          "phi", fmt::format("phi = {} is invalid: the model has no forcing, whose phase it would be: valid for a "
+                             "forced model only",
+                             value));
+    }
     if (IsStartName(model.Description(), name)) continue;
     if (!model.Description().ParameterIndex(name)) throw UnknownName(model.Description(), name, value);
     parameters.emplace_back(name, value);

@@ -6,7 +6,7 @@
 // is the time between its last two stick entries, its self-excited stick-slip cycle. An orbit
 // whose second half mirrors its first (antisymmetric, to 1e-6 of the period, on a fixed surface) is
 // written over its half, whose symmetric segments then vanish together as one. The period must be one: a segment
-// begins one period after the stop it is read from, in the state that stop had (to 1e-6), within the
+// begins one period after the stop it is read from, in the state that stop had (to 1e-6 of its size), within the
 // last two periods of the simulation, with at most 100 segments; else the guess is none, and the
 // message says why (a permanent stick, a steady slip, a motion not settled).
 //
@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -81,7 +82,8 @@ std::string NotSettled(const Segments& segments, std::size_t first, double perio
   }
   const auto& x0 = segments[first].start;
   const double mismatch = (segments[end].start - x0).template lpNorm<Eigen::Infinity>();
-  if (!(mismatch <= 1e-6 * (1.0 + x0.template lpNorm<Eigen::Infinity>()))) {
+  // Relative to the state's size: a model in other units (forces of micronewtons) is judged alike.
+  if (!(mismatch <= 1e-6 * std::max(x0.template lpNorm<Eigen::Infinity>(), std::numeric_limits<double>::min()))) {
     return fmt::format("the state one period on differs by {:.3g} from the start: the motion has not settled (simulate "
                        "longer) or is not of this period",
                        mismatch);
