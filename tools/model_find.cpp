@@ -14,7 +14,6 @@
 #include "progress_line.hpp"
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
-#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
 #include "stickslip/io/model_trace.hpp"
 #include "stickslip/io/trace_files.hpp"
@@ -154,13 +153,7 @@ int RunModelFind(const ModelFindArgs& args) {
     return code;
   }
   if (written) {
-    const StoredTrace stored = RecordTrace(run.find.model,
-                                           // What --set changed is not in the file: the command line is the run's input.
-                                           StoredSummary{.run_file = args.set.empty() ? args.file : std::string(kOneOffRunPath),
-                                                         .output = args.output,
-                                                         .parameter = run.trace->parameter,
-                                                         .model = kLinearOscillatorModel},
-                                           *run.trace);
+    const StoredTrace stored = StoredModelTrace(run, args.file, ModelSetOf(args.set), args.output);
     if (!args.json) return WriteAndReportTrace(stored, seconds, args.results);
     WriteTraceFiles(args.results, stored);
   }

@@ -783,29 +783,42 @@ def draw_sweep(canvas, sweep, x, y):
 
 
 def mark_natural_frequencies(canvas, pairs, axis="x"):
-    """omega1, omega2 of each (chi, eta) in `pairs`: inside the axes a dotted line, labelled
-    (placed with the other labels); outside, a line of the legend giving their values."""
+    """omega1, omega2 of each (chi, eta) in `pairs` (eq. 56)."""
+    named = []
+    for chi, eta in sorted(pairs):
+        for k, natural in enumerate(natural_frequencies(chi, eta), 1):
+            named.append((rf"$\omega_{k}$" + (f" ($\\chi$ = {chi:g}, $\\eta$ = {eta:g})" if len(pairs) > 1 else ""), natural))
+    mark_frequencies(canvas, named, axis, "natural frequency (eq. 56)")
+
+
+def mark_model_frequencies(canvas, frequencies, axis="x"):
+    """A [model]'s slip natural frequencies (trace.json's natural_frequencies, rad/s)."""
+    named = [(rf"$\omega_{k}$", f) for k, f in enumerate(frequencies, 1)]
+    mark_frequencies(canvas, named, axis, "natural frequency of the slip (undamped)")
+
+
+def mark_frequencies(canvas, named, axis, legend):
+    """Each (name, frequency) of `named`: inside the axes a dotted line, labelled (placed with the
+    other labels); outside, a line of the legend giving their values."""
     from matplotlib.lines import Line2D
     ax = canvas.ax
     low, high = sorted(ax.get_xlim() if axis == "x" else ax.get_ylim())
     outside = []
-    for chi, eta in sorted(pairs):
-        for k, natural in enumerate(natural_frequencies(chi, eta), 1):
-            name = rf"$\omega_{k}$" + (f" ($\\chi$ = {chi:g}, $\\eta$ = {eta:g})" if len(pairs) > 1 else "")
-            if low < natural < high:
-                line = ax.axvline if axis == "x" else ax.axhline
-                line(natural, ls=":", color="0.25", lw=1.0, zorder=1)
-                if axis == "x":
-                    y0, y1 = ax.get_ylim()
-                    top = ax.transData.inverted().transform(ax.transAxes.transform((0, 0.97)))[1]
-                    canvas.labels.append((name, natural, top if y0 < top < y1 else y1))
-                else:
-                    right = ax.transData.inverted().transform(ax.transAxes.transform((0.97, 0)))[0]
-                    canvas.labels.append((name, right, natural))
+    for name, natural in named:
+        if low < natural < high:
+            line = ax.axvline if axis == "x" else ax.axhline
+            line(natural, ls=":", color="0.25", lw=1.0, zorder=1)
+            if axis == "x":
+                y0, y1 = ax.get_ylim()
+                top = ax.transData.inverted().transform(ax.transAxes.transform((0, 0.97)))[1]
+                canvas.labels.append((name, natural, top if y0 < top < y1 else y1))
             else:
-                outside.append(f"{name} = {natural:.4g}")
-    if any(low < n < high for chi, eta in pairs for n in natural_frequencies(chi, eta)):
-        canvas.extra.append(Line2D([], [], ls=":", color="0.25", lw=1.0, label="natural frequency (eq. 56)"))
+                right = ax.transData.inverted().transform(ax.transAxes.transform((0.97, 0)))[0]
+                canvas.labels.append((name, right, natural))
+        else:
+            outside.append(f"{name} = {natural:.4g}")
+    if any(low < n < high for _, n in named):
+        canvas.extra.append(Line2D([], [], ls=":", color="0.25", lw=1.0, label=legend))
     if outside:
         canvas.extra.append(Line2D([], [], ls="", label="natural frequencies " + ", ".join(outside)))
 
@@ -1060,6 +1073,9 @@ def _response_figure(results, options, plt):
             pairs |= {(float(row["chi"]), float(row["eta"])) for row in b.rows if "chi" in row}
     if options.natural_frequencies and pairs and len(pairs) <= 2 and "omega" in (x, y):
         mark_natural_frequencies(canvas, pairs, "x" if x == "omega" else "y")
+    models = {tuple(r.trace.get("natural_frequencies", ())) for r in results if r.kind == "trace"} - {()}
+    if options.natural_frequencies and len(models) == 1 and not pairs and "omega" in (x, y):
+        mark_model_frequencies(canvas, next(iter(models)), "x" if x == "omega" else "y")
     _finish(fig, [(ax, canvas)], options, _title(results, x, y))
     return fig
 

@@ -180,11 +180,7 @@ void BindTrace(py::module_& m) {
             TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple, parameter, low, high, trace);
         std::optional<StoredTrace> stored;
         if (run.trace && !(run.trace->down.links.empty() && run.trace->up.links.empty())) {
-          stored = RecordTrace(run.find.model,
-                               StoredSummary{.run_file = set.empty() ? path : std::string(kOneOffRunPath),
-                                             .output = "trace", .parameter = parameter,
-                                             .model = kLinearOscillatorModel},
-                               *run.trace);
+          stored = StoredModelTrace(run, path, set, "trace");
         }
         return std::make_pair(ModelTraceJson(run), std::move(stored));
       },

@@ -298,6 +298,11 @@ for row, p in zip(rows, points):
     assert abs(float(row["period"]) - k * 2 * math.pi / float(row["omega"])) <= 1e-12 * float(row["period"]), row
     assert float(row["omega"]) == p["omega"] and float(row["period"]) == p["period"], (row, p)
     assert int(row["stable"]) == p["stable"] and int(row["admissible"]) == p["admissible"], (row, p)
+# The slip's natural frequencies, which a figure over omega marks: five equal masses and springs, fixed
+# at one end and free at the other (the contact's mass sliding): 2 sin((2k - 1) pi / 22) rad/s.
+natural = json.load(open(sys.argv[1] + "/trace.json"))["natural_frequencies"]
+assert len(natural) == 5 and all(abs(f - 2 * math.sin((2 * k - 1) * math.pi / 22)) <= 1e-12
+                                 for k, f in enumerate(natural, 1)), natural
 summary = json.load(open(sys.argv[1] + "/branch-1/summary.json"))
 assert summary["model"] == "linear-oscillator" and json.load(open(sys.argv[1] + "/trace.json"))["model"] == "linear-oscillator"
 PY

@@ -122,6 +122,24 @@ TEST_F(BeltTraceFiles, RefuseAnImpossibleRowAndABranchOfAnotherStartState) {
   }
 }
 
+// The slip's natural frequencies a [model]'s trace carries for its figures: read back as written, a
+// list that is not one of positive numbers refused.
+TEST_F(BeltTraceFiles, CarryTheSlipsNaturalFrequencies) {
+  stored_.natural_frequencies = {1.25};  // (the belt's is 1: a value of its own, to find in the text)
+  WriteTraceFiles(root_, stored_);
+  const fs::path json = root_ / "belt" / "trace.json";
+  EXPECT_EQ(ReadTraceFiles(root_ / "belt").natural_frequencies, stored_.natural_frequencies);
+  std::string text = Slurp(json);
+  text.replace(text.find("1.25"), 4, "-1.25");
+  Spit(json, text);
+  try {
+    ReadTraceFiles(root_ / "belt");
+    FAIL() << "a negative natural frequency read";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'natural_frequencies' = [-1.25] is invalid"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(BeltTraceFiles, AreNeverReadAsThePapersOrbit) {
   try {
     OrbitOf(stored_.runs.front(), stored_.runs.front().branch.front());

@@ -12,7 +12,9 @@
 
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
+#include "stickslip/io/model_summary.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
 
@@ -81,6 +83,20 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
   setup.options.lambda_max = high;
   run.trace = TraceOrbits(setup, options);
   return run;
+}
+
+StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::path& run_file, const NamedValues& set,
+                             const std::string& output) {
+  StoredTrace stored = RecordTrace(run.find.model,
+                                   StoredSummary{.run_file = set.empty() ? run_file.string() : std::string(kOneOffRunPath),
+                                                 .output = output,
+                                                 .parameter = run.trace->parameter,
+                                                 .model = kLinearOscillatorModel},
+                                   *run.trace);
+  for (const FreeOscillation& mode : SummarizeModel(run_file).slip) {
+    if (mode.oscillates) stored.natural_frequencies.push_back(mode.frequency);
+  }
+  return stored;
 }
 
 std::string ModelTraceJson(const ModelTraceRun& run) {

@@ -1,6 +1,7 @@
 #include "stickslip/io/trace_files.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <set>
@@ -143,6 +144,7 @@ std::string FormatJson(const StoredTrace& t) {
   json["parameter"] = t.parameter;
   json["signature"] = t.signature;
   if (!t.model.empty()) json["model"] = t.model;
+  if (!t.natural_frequencies.empty()) json["natural_frequencies"] = t.natural_frequencies;
   json["directions"] = Json::array();
   for (const StoredTraceDirection& d : t.directions) {
     json["directions"].push_back(
@@ -185,6 +187,15 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
       throw KeyError(file, "model", fmt::format("= '{}' is invalid: valid '{}' (or no key, for the paper's model)", t.model,
                                                 kLinearOscillatorModel));
     }
+  }
+  if (json.contains("natural_frequencies")) {
+    const Json& frequencies = top.Get("natural_frequencies");
+    const auto positive = [](const Json& f) { return f.is_number() && f.get<double>() > 0.0 && std::isfinite(f.get<double>()); };
+    if (t.model.empty() || !frequencies.is_array() || !std::all_of(frequencies.begin(), frequencies.end(), positive)) {
+      throw KeyError(file, "natural_frequencies",
+                     fmt::format("= {} is invalid: valid a [model]'s list of positive frequencies", frequencies.dump()));
+    }
+    for (const Json& f : frequencies) t.natural_frequencies.push_back(f.get<double>());
   }
   const Json& directions = top.Get("directions");
   if (!directions.is_array() || directions.size() != 2) {

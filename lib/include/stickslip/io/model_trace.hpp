@@ -11,6 +11,7 @@
 
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/io/model_find.hpp"
+#include "stickslip/io/trace_files.hpp"
 
 namespace stickslip {
 
@@ -24,6 +25,13 @@ struct ModelTraceRun {
 // any work, and as FindModelOrbitOf and TraceOrbits do.
 ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
                          double low, double high, TraceOptions options = {});
+
+// The stored form of run.trace (set) as every front end writes it (RecordTrace, trace_files.hpp):
+// its run file `run_file`, or "(command line)" where `set` changed what the file gives; and the
+// model's slip's natural frequencies (its oscillating free modes', as describe lists them), which a
+// figure over omega marks. Throws RunFileError as ReadModelTable.
+StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::path& run_file, const NamedValues& set,
+                             const std::string& output);
 
 // parameter, start (find's JSON: model_orbit_json.hpp), completed, and per direction ("down",
 // "up") its end, message and branches: signature, direction, start, margin, end, message and

@@ -9,7 +9,8 @@
 //                 continued parameter, phi, period, the start state (x10, x20, v10 for the
 //                 paper's model; a [model]'s names), stable, admissible
 //   trace.json    the run file, version, output, parameter and start signature (and, for a run
-//                 file's [model], "model": "linear-oscillator"); per direction its
+//                 file's [model], "model": "linear-oscillator" and its slip's natural
+//                 frequencies, "natural_frequencies"); per direction its
 //                 end, message and branches (their k); per branch its name, direction, signature,
 //                 points, how it began (start, margin, and for a switch the bifurcation, the edit,
 //                 the adjacent signature, persists or a nonsmooth fold, from the orbit past the
@@ -95,6 +96,9 @@ struct StoredTrace {
   std::string parameter;
   std::string signature;  // the start's
   std::string model;      // StoredSummary::model: "" for the paper's
+  // A [model]'s undamped natural frequencies of its slip (rad/s, increasing), that a figure over
+  // omega marks; empty for the paper's (eq. 56 gives them from chi and eta) and where unknown.
+  std::vector<double> natural_frequencies;
   std::vector<StoredTraceDirection> directions;  // down, then up
   std::vector<StoredTraceBranch> branches;       // branch-1, branch-2, ...
   std::vector<StoredRun> runs;                   // one per branch, its directory's files
