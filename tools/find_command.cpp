@@ -222,6 +222,9 @@ int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
   if (cmd.count("--output") != 0 && args.output.empty()) {
     throw InvalidInput("output", "''", std::string(kRunNameRule));
   }
+  if (cmd.count("--results") != 0 && cmd.count("--output") == 0) {
+    throw InvalidInput("results", "'" + args.start.results + "'", "with --output (where the trace is written)");
+  }
   return RunModelFind({args.model, args.start.set, args.transients, args.max_multiple, args.json, args.trace,
                        args.trace_parameter, args.output, args.start.results});
 }

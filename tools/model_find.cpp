@@ -144,6 +144,7 @@ int RunModelFind(const ModelFindArgs& args) {
   } else if (found.solution && found.solution->summary.Converged()) {
     fmt::print("{}", Text(run.find.model, found));
     if (run.trace && !written) fmt::print("{}", TraceText(*run.trace));
+    if (run.trace && !written && !args.output.empty()) fmt::print("{}: no branch started: nothing written\n", args.output);
   }
   if (const int code = FindExitCode(found.status); code != kExitOk) {
     const bool unsettled = found.message.find("not settled") != std::string::npos ||

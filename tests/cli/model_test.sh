@@ -317,6 +317,12 @@ expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid a run
 expect 2 "phi = 0.3 is invalid: the model has no forcing" "$bin" find --model "$models/belt.toml" --set phi=0.3
 expect 5 "the motion has not settled (nor is any k <= 8 forcing periods a period of it) (--transients 2 periods now: more simulates longer)" \
   "$bin" find --model "$models/five-mass-chain.toml" --transients 2
+expect 2 "results = '$work/out' is invalid: valid range with --output" "$bin" find --model "$models/belt.toml" --results "$work/out"
+# A run file changed since the run no longer describes its model: export refuses the s. file.
+sed 's|masses = \[1.0|masses = [1.5|' "$models/five-mass-chain.toml" > "$work/changed.toml"
+"$bin" find --model "$work/changed.toml" --trace 0.55,0.6 --output changed --results "$work/traces" > /dev/null &&
+  sed -i 's|masses = \[1.5|masses = [1.0|' "$work/changed.toml" && pass || fail "find --model changed.toml --trace"
+expect 2 "is no periodic orbit of the model" "$bin" export --auto "$work/traces/changed/branch-1"
 expect 2 "output = '' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --output "" --results "$work/out"
 # With --set the file is not the run's input: the command line is (as the paper's find writes it).
 "$bin" find --model "$models/belt.toml" --set F_s=2 --trace 0.1,0.3 --output belt --results "$work/traces" > /dev/null &&

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <complex>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/verification.hpp"
 
 namespace stickslip {
 
@@ -60,13 +62,10 @@ struct BranchColumns {
 BranchColumns ColumnsOf(const StoredRun& run) {
   BranchColumns columns{.names = {run.summary.parameter}, .measures = run.branch.front().measures.size()};
   for (const auto& [name, value] : run.branch.front().measures) columns.names.push_back(name);
-  const NamedValues& solution = run.branch.front().solution;
-  const auto phi = std::find_if(solution.begin(), solution.end(), [](const auto& v) { return v.first == "phi"; });
-  for (auto v = phi + 1; v != solution.end() && v->first != "d1"; ++v) columns.names.push_back(v->first);
+  for (const std::string& name : StartStateNames(run.branch.front().solution)) columns.names.push_back(name);
   columns.names.push_back("phi");
-  for (auto v = std::find_if(phi, solution.end(), [](const auto& v) { return v.first == "d1"; }); v != solution.end(); ++v) {
-    columns.names.push_back(v->first);
-  }
+  const int segments = Signature::Parse(run.summary.signature).size();
+  for (int i = 1; i <= segments; ++i) columns.names.push_back(fmt::format("d{}", i));
   return columns;
 }
 
@@ -102,16 +101,20 @@ SampledOrbit SampledOf(const Orbit& orbit, int samples) {
   return sampled;
 }
 
-// A [model]'s orbit by its exact simulator (the same closed forms, sampled), the model read from the
-// run's run file.
-SampledOrbit SampledOf(const StoredRun& run, const StoredPoint& p, int samples) {
+// The [model] a run was computed for, from the run file its summary names.
+ModelFileStart ModelOfRun(const StoredRun& run) {
   if (run.summary.run_file == kOneOffRunPath) {
     throw InvalidInput::WithMessage(
         "run", fmt::format("'{}' was computed from the command line (--set): its s. file needs the model, which only "
                            "a run file names: valid a run whose summary.json names its [model]'s file",
                            run.summary.output));
   }
-  const ModelFileStart file = ReadModelFileStart(run.summary.run_file, {});
+  return ReadModelFileStart(run.summary.run_file, {});
+}
+
+// A [model]'s orbit by its exact simulator (the same closed forms, sampled), which must come back to
+// its start after the period: else the run file no longer describes the model of the run.
+SampledOrbit SampledOf(const ModelFileStart& file, const StoredRun& run, const StoredPoint& p, int samples) {
   const BasicOrbit<DynamicLinearOscillator> orbit = OrbitOf(file.model, file.parameters, run, p);
   SampledOrbit sampled;
   sampled.period = PeriodOf(file.model, orbit);
@@ -119,7 +122,15 @@ SampledOrbit SampledOf(const StoredRun& run, const StoredPoint& p, int samples) 
   options.duration = sampled.period;
   options.sample_step = sampled.period / (samples - 1);
   const auto simulated = SimulateExact(file.model, orbit.parameters, orbit.start, orbit.phi, options);
-  for (int k = 0; k < samples && k < static_cast<int>(simulated.samples.size()); ++k) {
+  const double size = OrbitSize(file.model, orbit);
+  if (!simulated.Completed() || static_cast<int>(simulated.samples.size()) < samples ||
+      !((simulated.samples[samples - 1].state - orbit.start).lpNorm<Eigen::Infinity>() <= 1e-6 * size)) {
+    throw InvalidInput::WithMessage(
+        "run_file", fmt::format("'{}': the orbit of {} is no periodic orbit of the model '{}' describes now (was the file "
+                                "changed since the run?): valid the run file the run was made from",
+                                run.summary.output, p.label, run.summary.run_file));
+  }
+  for (int k = 0; k < samples; ++k) {
     const auto& x = simulated.samples[k].state;
     sampled.states.emplace_back(x.data(), x.data() + x.size());
   }
@@ -188,6 +199,7 @@ constexpr std::string_view kDiagnosticsDivider = "==============================
 AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
   const StoredRun run = ReadRunFiles(run_directory);
   const BranchColumns columns = ColumnsOf(run);
+  const std::optional<ModelFileStart> model = run.summary.model.empty() ? std::nullopt : std::optional(ModelOfRun(run));
   AutoFiles files;
   files.b = BranchHeader(run, columns);
   for (const StoredPoint& p : run.branch) {
@@ -199,8 +211,7 @@ AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
     if (!files.d.empty()) files.d += kDiagnosticsDivider;
     files.d += DiagnosticsEntry(p, run.summary.parameter, values.front(), lab);
     if (p.label.empty()) continue;
-    files.s += SolutionEntry(p, ty, lab, run.summary.model.empty() ? SampledOf(OrbitOf(run, p), samples)
-                                                                    : SampledOf(run, p, samples));
+    files.s += SolutionEntry(p, ty, lab, model ? SampledOf(*model, run, p, samples) : SampledOf(OrbitOf(run, p), samples));
   }
   return files;
 }

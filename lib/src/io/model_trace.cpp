@@ -90,8 +90,7 @@ StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::pa
   StoredTrace stored = RecordTrace(run.find.model,
                                    StoredSummary{.run_file = set.empty() ? run_file.string() : std::string(kOneOffRunPath),
                                                  .output = output,
-                                                 .parameter = run.trace->parameter,
-                                                 .model = kLinearOscillatorModel},
+                                                 .parameter = run.trace->parameter},
                                    *run.trace);
   for (const FreeOscillation& mode : SummarizeModel(run_file).slip) {
     if (mode.oscillates) stored.natural_frequencies.push_back(mode.frequency);

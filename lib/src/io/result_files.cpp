@@ -45,7 +45,7 @@ constexpr const char* kSpecialPointsFile = "special-points.csv";
 constexpr const char* kSummaryFile = "summary.json";
 
 // The columns of a point after its margins and multipliers: the stability, admissible, the
-// measures (orbit_columns::ForEachMeasure), the step; and those a special point adds.
+// measures (orbit_columns::MeasureNames), the step; and those a special point adds.
 using orbit_columns::kMarginPrefix;
 constexpr std::array<const char*, 5> kStabilityColumns = {orbit_columns::kStable, orbit_columns::kFoldTest,
                                                           orbit_columns::kFlipTest, orbit_columns::kTorusTest,
@@ -231,6 +231,20 @@ void FindModelColumns(const CsvTable& table, const std::function<int(const std::
   const auto admissible = std::find(header.begin(), header.end(), orbit_columns::kAdmissible);
   const auto step = std::find(header.begin(), header.end(), kStepColumns.front());
   for (auto name = admissible + (admissible != header.end()); name < step; ++name) c.measures.emplace_back(*name, column(*name));
+  // The measures MeasureNames gives any model: the coordinates' amplitudes and the contact's
+  // peak-to-peak, then the same five as the paper's.
+  const std::vector<std::string> tail = {orbit_columns::kStickFraction, orbit_columns::kStops, orbit_columns::kSticks,
+                                         orbit_columns::kFrictionWork, orbit_columns::kEquivalentDamping};
+  bool valid = c.measures.size() > tail.size();
+  for (std::size_t k = 0; valid && k < c.measures.size(); ++k) {
+    const std::string& name = c.measures[k].first;
+    const std::size_t from_tail = c.measures.size() - tail.size();
+    valid = k >= from_tail ? name == tail[k - from_tail] : name.starts_with("amplitude:") || name.starts_with("peak-to-peak:");
+  }
+  if (!valid) {
+    throw table.HeaderError(fmt::format("the measure columns are invalid: valid amplitude:<coordinate> ..., "
+                                        "peak-to-peak:<contact>, then {} after admissible", fmt::join(tail, ", ")));
+  }
 }
 
 // Throws InvalidInput if a column is missing, unknown or repeated.
@@ -332,17 +346,24 @@ void CheckModelVariables(const CsvTable& table, const ColumnIndices& c, const Si
 NamedValues ParseSolution(const CsvTable& t, int row, const ColumnIndices& c, const Signature& signature, bool admissible) {
   if (!c.variables.empty()) return SolutionColumns(ParseOrbit(t, row, c, signature, admissible));
   StoredPoint point;
-  for (int column : c.solution) point.solution.emplace_back(t.header()[column], t.Value(row, column, detail::Finite()));
-  if (!admissible) return point.solution;
-  std::optional<double> kinetic;
   for (int column : c.solution) {
     const std::string& name = t.header()[column];
-    if (name == "F_k") {
+    point.solution.emplace_back(name, t.Value(row, column, name == "omega" ? detail::ValidValues{.min = std::nextafter(0.0, 1.0), .text = "omega > 0"}
+                                                                          : detail::Finite()));
+  }
+  if (!admissible) return point.solution;
+  // The durations are the last columns (CheckModelVariables); F_k stands before F_s.
+  const std::size_t first_duration = c.solution.size() - signature.size();
+  std::optional<double> kinetic;
+  for (std::size_t k = 0; k < c.solution.size(); ++k) {
+    const int column = c.solution[k];
+    const std::string& name = t.header()[column];
+    if (k >= first_duration) {
+      t.Value(row, column, detail::Duration(name, StoredPeriod(signature, point), true));
+    } else if (name == "F_k") {
       kinetic = t.Value(row, column, {.min = std::nextafter(0.0, 1.0), .text = "F_k > 0 where admissible"});
     } else if (name == "F_s" && kinetic) {
       t.Value(row, column, {.min = *kinetic * (1.0 - 1e-12), .text = fmt::format("F_s >= F_k = {} where admissible", *kinetic)});
-    } else if (name.starts_with("d") && name.size() > 1 && std::isdigit(static_cast<unsigned char>(name[1]))) {
-      t.Value(row, column, detail::Duration(name, StoredPeriod(signature, point), true));
     }
   }
   return point.solution;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <numbers>
+#include <ranges>
 #include <stdexcept>
 #include <type_traits>
 
@@ -55,10 +56,16 @@ BasicOrbit<Model> OrbitOf(const Model& model, const typename Model::Parameters& 
   BasicOrbit<Model> orbit{signature, held, Model::State::Zero(model.StateSize()), 0.0,
                           std::vector<double>(signature.size())};
   for (int index = 0; index < layout.Count(); ++index) {
+    // An autonomous model's forcing frequency is no column (SolutionColumns): held.
+    if (index == layout.Parameter(Model::kForcingFrequencyParameter) && model.Autonomous()) continue;
     const std::string name = layout.Name(index);
-    const bool listed = std::any_of(point.solution.begin(), point.solution.end(), [&](const auto& v) { return v.first == name; });
-    if (index >= layout.Parameter(0) && !listed) continue;  // held
-    const double value = Named(point.solution, name);
+    const auto listed = std::find_if(point.solution.begin(), point.solution.end(), [&](const auto& v) { return v.first == name; });
+    if (listed == point.solution.end()) {
+      throw InvalidInput::WithMessage(
+          "run", fmt::format("'{}' has no column '{}': valid a run of this model (its variables {})", run.summary.output,
+                             name, fmt::join(SolutionColumns(model, orbit) | std::views::keys, ", ")));
+    }
+    const double value = listed->second;
     if (index < layout.StartVariables()) {
       orbit.start(index) = value;
     } else if (index == layout.Phi()) {
@@ -72,6 +79,13 @@ BasicOrbit<Model> OrbitOf(const Model& model, const typename Model::Parameters& 
   // The contact's velocity at the origin, no variable: the surface's (periodicity_equations.hpp).
   orbit.start(model.StateSize() - 1) = RestVelocity<Model>(orbit.parameters, 0.0);
   return orbit;
+}
+
+std::vector<std::string> StartStateNames(const NamedValues& solution) {
+  std::vector<std::string> names;
+  const auto phi = std::find_if(solution.begin(), solution.end(), [](const auto& v) { return v.first == "phi"; });
+  for (auto v = phi + (phi != solution.end()); v != solution.end() && v->first != "d1"; ++v) names.push_back(v->first);
+  return names;
 }
 
 double StoredPeriod(const Signature& signature, const StoredPoint& point) {
@@ -126,22 +140,24 @@ namespace {
 // past a change of type. Its margin duration:i, d_i itself, follows; so do the measures, which a
 // row holds of its own stored orbit.
 template <OscillatorModel Model>
-void StoreZeroLengthSegments(const Model& model, OrbitOfModel<Model> orbit, StoredPoint* point) {
+StoredPoint StoreZeroLengthSegments(const Model& model, OrbitOfModel<Model> orbit, StoredPoint point) {
   bool changed = false;
+  const double period = PeriodOf(model, AsBasicOrbit(orbit));
   for (std::size_t i = 0; i < orbit.durations.size(); ++i) {
-    const double d = ZeroLengthToRounding(orbit.durations[i], PeriodOf(model, AsBasicOrbit(orbit)));
+    const double d = ZeroLengthToRounding(orbit.durations[i], period);
     if (d == orbit.durations[i]) continue;
     orbit.durations[i] = d;
     changed = true;
-    for (auto& [name, value] : point->margins) {
+    for (auto& [name, value] : point.margins) {
       if (name == fmt::format("duration:{}", i + 1)) value = d;
     }
   }
-  if (!changed) return;
-  point->solution = SolutionColumns(model, AsBasicOrbit(orbit));
+  if (!changed) return point;
+  point.solution = SolutionColumns(model, AsBasicOrbit(orbit));
   const int contact = ContactCoordinate(model);
   const std::vector<double> measures = orbit_columns::MeasureValues(Measure(model, AsBasicOrbit(orbit)), contact);
-  for (std::size_t k = 0; k < measures.size(); ++k) point->measures[k].second = measures[k];
+  for (std::size_t k = 0; k < measures.size(); ++k) point.measures[k].second = measures[k];
+  return point;
 }
 
 }  // namespace
@@ -177,12 +193,12 @@ StoredRun RecordRun(const Model& model, const StoredSummary& identity, const Bas
     for (const std::string& name : measure_names) point.measures.emplace_back(name, recorded.at(name));
     point.newton_iterations = p.newton_iterations;
     point.step_size = p.ds;
-    StoreZeroLengthSegments(model, b.orbits[i], &point);
-    return point;
+    return StoreZeroLengthSegments(model, b.orbits[i], std::move(point));
   };
 
   StoredRun stored;
   stored.summary = identity;
+  stored.summary.model = std::is_same_v<Model, Pascal2014> ? "" : kLinearOscillatorModel;
   stored.summary.stickslip_version = Version();
   stored.summary.signature = b.orbits.front().signature.ToString();
   stored.summary.shooting = ToString(b.shooting);

@@ -47,15 +47,8 @@ std::vector<std::string> CsvHeader(const std::string& parameter, const std::vect
   return header;
 }
 
-// The start state's names of a run's model: its solution's columns between phi and d1
-// (SolutionColumns; the reader checked that order).
-std::vector<std::string> StartNamesOf(const StoredRun& run) {
-  std::vector<std::string> names;
-  const NamedValues& solution = run.branch.front().solution;
-  const auto phi = std::find_if(solution.begin(), solution.end(), [](const auto& v) { return v.first == "phi"; });
-  for (auto v = phi + (phi != solution.end()); v != solution.end() && v->first != "d1"; ++v) names.push_back(v->first);
-  return names;
-}
+// The start state's names of a run's model (the reader checked the columns' order).
+std::vector<std::string> StartNamesOf(const StoredRun& run) { return StartStateNames(run.branch.front().solution); }
 
 // The trace's: its first branch's, or, for a trace without a branch, the paper's.
 std::vector<std::string> StartNames(const StoredTrace& t) {
@@ -172,6 +165,26 @@ std::string FormatJson(const StoredTrace& t) {
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
+// A [model]'s keys: "model" and its "natural_frequencies" (neither in a trace of the paper's model).
+void ParseModelKeys(const Json& json, JsonObject& top, StoredTrace& t) {
+  const fs::path& file = top.file();
+  if (json.contains("model")) {
+    t.model = top.Text("model");
+    if (t.model != kLinearOscillatorModel) {
+      throw KeyError(file, "model", fmt::format("= '{}' is invalid: valid '{}' (or no key, for the paper's model)", t.model,
+                                                kLinearOscillatorModel));
+    }
+  }
+  if (!json.contains("natural_frequencies")) return;
+  const Json& frequencies = top.Get("natural_frequencies");
+  const auto positive = [](const Json& f) { return f.is_number() && f.get<double>() > 0.0 && std::isfinite(f.get<double>()); };
+  if (t.model.empty() || !frequencies.is_array() || !std::all_of(frequencies.begin(), frequencies.end(), positive)) {
+    throw KeyError(file, "natural_frequencies",
+                   fmt::format("= {} is invalid: valid a [model]'s list of positive frequencies", frequencies.dump()));
+  }
+  for (const Json& f : frequencies) t.natural_frequencies.push_back(f.get<double>());
+}
+
 StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   const Json json = detail::ParseJsonObject(text, file);
   JsonObject top(json, file, "");
@@ -181,22 +194,7 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   t.output = top.Text("output");
   t.parameter = top.Text("parameter");
   t.signature = top.SignatureText("signature", false);
-  if (json.contains("model")) {
-    t.model = top.Text("model");
-    if (t.model != kLinearOscillatorModel) {
-      throw KeyError(file, "model", fmt::format("= '{}' is invalid: valid '{}' (or no key, for the paper's model)", t.model,
-                                                kLinearOscillatorModel));
-    }
-  }
-  if (json.contains("natural_frequencies")) {
-    const Json& frequencies = top.Get("natural_frequencies");
-    const auto positive = [](const Json& f) { return f.is_number() && f.get<double>() > 0.0 && std::isfinite(f.get<double>()); };
-    if (t.model.empty() || !frequencies.is_array() || !std::all_of(frequencies.begin(), frequencies.end(), positive)) {
-      throw KeyError(file, "natural_frequencies",
-                     fmt::format("= {} is invalid: valid a [model]'s list of positive frequencies", frequencies.dump()));
-    }
-    for (const Json& f : frequencies) t.natural_frequencies.push_back(f.get<double>());
-  }
+  ParseModelKeys(json, top, t);
   const Json& directions = top.Get("directions");
   if (!directions.is_array() || directions.size() != 2) {
     throw KeyError(file, "directions", "is invalid: valid an array of two directions, down and up");
@@ -363,7 +361,7 @@ StoredTrace RecordTrace(const Model& model, const StoredSummary& identity, const
   StoredTrace t;
   t.run_file = identity.run_file;
   t.output = identity.output;
-  t.model = identity.model;
+  t.model = std::is_same_v<Model, Pascal2014> ? "" : kLinearOscillatorModel;
   t.parameter = trace.parameter;
   for (const BasicTraceDirection<Model>* chain : {&trace.down, &trace.up}) {
     StoredTraceDirection direction{.direction = WayName(chain->direction), .end = ToString(chain->end), .message = chain->message};

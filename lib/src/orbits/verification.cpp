@@ -34,7 +34,7 @@ bool Verification::Passed() const {
 std::string Verification::Report() const {
   if (!not_simulated.empty()) return fmt::format("expected [{}]\nnot simulated: {}\n", ModeList(expected), not_simulated);
   auto line = [&](const char* name, const SimulatorCheck& c, double tolerance) {
-    return fmt::format("{:<7} events [{}] {}; periodicity mismatch {:.2e} (<= {:.0e}: {}); event "
+    return fmt::format("{:<7} events [{}] {}; periodicity mismatch {:.2e} (<= {:.3g}: {}); event "
                        "times within {:.2e}\n",
                        name, ModeList(c.modes), c.sequence_matches ? "match" : "DIFFER",
                        c.periodicity_mismatch, tolerance,

@@ -118,10 +118,12 @@ ModelFindResult<Model> SolvedAtFixedParameters(const Model& model, const ModelFi
                              r.guess->signature.ToString());
     return r;
   }
-  // Newton's residual (states and velocities at the segment ends) in the model's units: its
-  // tolerances relative to the orbit's size.
+  // Newton's residual mixes units (states, velocities, forces at a stick's exit, times): its
+  // tolerances widen with a large orbit, whose rounding floor grows with it (forces of meganewtons),
+  // and are never tighter than the default (the times' floor does not shrink with a small orbit,
+  // whose verification, relative to its size, judges it).
   OrbitSolverOptions solver = options.solver;
-  const double size = OrbitSize(model, *r.guess);
+  const double size = std::max(1.0, OrbitSize(model, *r.guess));
   solver.newton.residual_tolerance *= size;
   solver.newton.stagnation_residual *= size;
   r.solution = SolveOrbit(model, *r.guess, free, false, solver);

@@ -61,7 +61,7 @@ struct StoredSummary {
   std::string stickslip_version;
   std::string output;       // the run's folder under the results root
   std::string signature;    // Signature::ToString of the orbits
-  std::string parameter;    // the continued variable (an orbit_variables name)
+  std::string parameter;    // the continued variable (one of SolutionColumns' names)
   std::string shooting;     // "single" or "multiple"
   // The oscillator: "" for the paper's (summary.json then has no "model" key, as before models
   // existed), kLinearOscillatorModel for a run file's [model].
@@ -94,6 +94,10 @@ NamedValues SolutionColumns(const Orbit& orbit);
 double& Named(NamedValues& values, std::string_view name);
 double Named(const NamedValues& values, std::string_view name);
 
+// The start state's names among a point's solution columns (SolutionColumns): those between phi
+// and d1 (x10, x20, v10 for the paper's model; m1_0, ..., v_m1_0, ... for a [model]).
+std::vector<std::string> StartStateNames(const NamedValues& solution);
+
 // The time after which a stored point's orbit of `signature` repeats: its forcing periods where
 // the model has a forcing frequency (the variable "omega", as Orbit::Period), else, for an
 // autonomous model, its durations over the part of the period they cover.
@@ -103,10 +107,10 @@ double StoredPeriod(const Signature& signature, const StoredPoint& point);
 // "model" for a run of another model, and std::out_of_range for a point without the paper's
 // variables.
 Orbit OrbitOf(const StoredRun& run, const StoredPoint& point);
-// Any model's orbit of a point of `run` (SolutionColumns' inverse): each variable by its name, a
-// parameter the columns do not hold (an autonomous model's forcing frequency) from `held`. Throws
-// std::out_of_range for a point without one of the model's other variables. Compiled for the
-// paper's model and DynamicLinearOscillator.
+// Any model's orbit of a point of `run` (SolutionColumns' inverse): each variable by its name, an
+// autonomous model's forcing frequency (no column) from `held`. Throws InvalidInput naming "run"
+// for a point without one of the model's other variables (a run of another model). Compiled for
+// the paper's model and DynamicLinearOscillator.
 template <OscillatorModel Model>
 BasicOrbit<Model> OrbitOf(const Model& model, const typename Model::Parameters& held, const StoredRun& run,
                           const StoredPoint& point);
@@ -126,7 +130,8 @@ std::vector<std::string> SpecialPointLabels(const Branch& branch);
 // zero is stored as the zero-length segment it is, 0 (start_problem.hpp, kDurationRounding), with
 // its margin duration:i and the row's measures taken of that orbit.
 StoredRun RecordRun(const RunFile& run, const OrbitBranch& branch);
-// Any model's: `identity` gives the summary's run_file, output and parameter (and the model).
+// Any model's: `identity` gives the summary's run_file, output and parameter; its model is the
+// type's ("" for the paper's, kLinearOscillatorModel for any other).
 // Compiled for the paper's model and DynamicLinearOscillator.
 template <OscillatorModel Model>
 StoredRun RecordRun(const Model& model, const StoredSummary& identity, const BasicOrbitBranch<Model>& branch);
