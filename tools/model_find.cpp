@@ -138,7 +138,7 @@ int RunModelFind(const ModelFindArgs& args) {
   line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const ModelFindResult<DynamicLinearOscillator>& found = run.find.found;
-  const bool written = run.trace && !args.output.empty() && !(run.trace->down.links.empty() && run.trace->up.links.empty());
+  const bool written = run.trace && !args.output.empty() && run.trace->HasBranches();
   if (args.json) {
     fmt::print("{}\n", run.trace ? ModelTraceJson(run) : ModelFindJson(run.find.model, found));
   } else if (found.solution && found.solution->summary.Converged()) {

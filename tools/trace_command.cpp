@@ -30,7 +30,7 @@ std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::
   TraceResult result = TraceOrbits(setup, options);
   line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (result.down.links.empty() && result.up.links.empty()) {
+  if (!result.HasBranches()) {
     fmt::print(stderr, "error: {}: {}\n", run.path, result.down.message);
     *exit_code = result.NotAMotion() ? kExitNotAMotion : kExitNoConvergence;
     return std::nullopt;

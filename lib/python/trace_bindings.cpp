@@ -82,7 +82,7 @@ StoredTrace Trace(RunInput input, const py::object& options) {
     result = TraceOrbits(setup, trace);
   }
   if (result.NotAMotion()) throw py::value_error(fmt::format("{}: {}", input.run.path, result.down.message));
-  if (result.down.links.empty() && result.up.links.empty()) {
+  if (!result.HasBranches()) {
     py::dict summary;
     summary["termination"] = ToString(result.down.end);
     summary["message"] = result.down.message;
@@ -179,7 +179,7 @@ void BindTrace(py::module_& m) {
         const ModelTraceRun run =
             TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple, parameter, low, high, trace);
         std::optional<StoredTrace> stored;
-        if (run.trace && !(run.trace->down.links.empty() && run.trace->up.links.empty())) {
+        if (run.trace && run.trace->HasBranches()) {
           stored = StoredModelTrace(run, path, set, "trace");
         }
         return std::make_pair(ModelTraceJson(run), std::move(stored));

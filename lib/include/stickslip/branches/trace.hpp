@@ -171,6 +171,8 @@ struct BasicTraceResult {
   }
   // The start is not a motion and the trace was refused (TraceEnd::kNotAMotion): no branches.
   bool NotAMotion() const { return down.end == TraceEnd::kNotAMotion; }
+  // Some branch started (else there is nothing to store: the reason is down.message).
+  bool HasBranches() const { return !down.links.empty() || !up.links.empty(); }
 };
 using TraceResult = BasicTraceResult<Pascal2014>;
 
