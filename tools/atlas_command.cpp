@@ -2,6 +2,8 @@
 // brute force on a grid, the exact orbit of every attractor, a trace from each one on no branch
 // yet; written to results/<output>/ (io/atlas_files.hpp).
 #include <chrono>
+#include <cstdint>
+#include <numbers>
 #include <memory>
 #include <string>
 
@@ -14,7 +16,10 @@
 #include "start_options.hpp"
 #include "stickslip/analysis/atlas.hpp"
 #include "stickslip/io/atlas_files.hpp"
+#include "model_find.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_trace.hpp"
 #include "stickslip/io/run.hpp"
 
 namespace stickslip::cli {
@@ -34,6 +39,7 @@ struct AtlasArgs {
   int max_points = static_cast<int>(kDefaults.max_points);
   double resonance_approach = kDefaults.resonance_approach;
   std::string output;  // required
+  std::string model;   // --model FILE: the atlas of a user's oscillator (analysis/model_atlas.hpp)
 };
 
 // "LO,HI": two numbers (AtlasOptionsOf checks LO < HI and each grid value).
@@ -58,16 +64,17 @@ AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
   return AtlasOptionsOf(c, origin);
 }
 
-void Report(const std::string& output, const Atlas& atlas, const StoredAtlas& stored, double seconds,
-            const std::vector<std::string>& kept, const std::filesystem::path& results) {
+template <typename AnyAtlas>
+void Report(const std::string& output, const AnyAtlas& atlas, std::size_t values, const StoredAtlas& stored,
+            double seconds, const std::vector<std::string>& kept, const std::filesystem::path& results) {
   std::size_t branches = 0;
   for (const StoredTrace& t : stored.traces) branches += t.branches.size();
   const int unexplained = static_cast<int>(atlas.attractors.size()) - atlas.OnBranches();
   fmt::print("{}: {} attractor(s) at {} value(s) of {}: {} periodic within the limit, {} on a branch, {} listed with "
              "the reason; {} trace(s), {} branch(es) in {:.1f} s\n",
-             output, atlas.attractors.size(), atlas.brute_force.cells.size(), atlas.parameter, atlas.PeriodicWithinLimit(),
+             output, atlas.attractors.size(), values, atlas.parameter, atlas.PeriodicWithinLimit(),
              atlas.OnBranches(), unexplained, stored.traces.size(), branches, seconds);
-  for (const AtlasAttractor& a : atlas.attractors) {
+  for (const auto& a : atlas.attractors) {
     if (a.fate == AttractorFate::kOnBranch) continue;
     fmt::print("  {} = {:.6g}, attractor {}: {}: {}\n", atlas.parameter, a.value, a.index + 1, ToString(a.fate), a.reason);
   }
@@ -76,28 +83,87 @@ void Report(const std::string& output, const Atlas& atlas, const StoredAtlas& st
   }
 }
 
+std::size_t GridValues(const Atlas& atlas) { return atlas.brute_force.cells.size(); }
+std::size_t GridValues(const ModelAtlas& atlas) { return atlas.grid.size(); }
+
+// Checks the output before the work, computes the atlas (compute(progress)) under a progress line,
+// records it (record(atlas)), writes its files and reports.
+template <typename Compute, typename Record>
+int ComputeAndWrite(const RunFile& run, const std::filesystem::path& results, Compute compute, Record record) {
+  CheckAtlasOutputDirectory(results, run.output);
+  ProgressLineOptions line_options;
+  line_options.value_name = run.parameter;
+  ProgressLine line(run.output, line_options);
+  const auto started = std::chrono::steady_clock::now();
+  const auto atlas = compute(line.Callback());
+  line.Clear();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const StoredAtlas stored = record(atlas);
+  const std::vector<std::string> kept = WriteAtlasFiles(results, stored);
+  Report(run.output, atlas, GridValues(atlas), stored, seconds, kept, results);
+  return kExitOk;
+}
+
 int RunAtlas(const AtlasArgs& args) {
   const ModelStart origin = BuildModelStart(ToStartInput(args.origin));
-  if (args.output.empty()) throw InvalidInput("output", "(not given)", "--output NAME is required");
   RunFile run;
   run.path = kOneOffRunPath;
   run.output = args.output;
   run.parameter = args.parameter;
   AtlasOptions options = OptionsOf(args, origin);
-  const std::filesystem::path results = args.origin.results;
-  CheckAtlasOutputDirectory(results, run.output);
-  ProgressLineOptions line_options;
-  line_options.value_name = args.parameter;
-  ProgressLine line(run.output, line_options);
-  options.progress = line.Callback();
-  const auto started = std::chrono::steady_clock::now();
-  const Atlas atlas = ComputeAtlas(origin.parameters, options);
-  line.Clear();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const StoredAtlas stored = RecordAtlas(run, atlas, options);
-  const std::vector<std::string> kept = WriteAtlasFiles(results, stored);
-  Report(run.output, atlas, stored, seconds, kept, results);
-  return kExitOk;
+  return ComputeAndWrite(
+      run, args.origin.results,
+      [&](ProgressCallback progress) {
+        options.progress = std::move(progress);
+        return ComputeAtlas(origin.parameters, options);
+      },
+      [&](const Atlas& atlas) { return RecordAtlas(run, atlas, options); });
+}
+
+// The atlas of a [model]: the brute force's flags as the paper's, the model's own parameter names
+// and units; without forcing, periods of the slowest free oscillation of its slip (as find's).
+ModelAtlasOptions ModelAtlasOptionsOf(const AtlasArgs& args, const ModelFileStart& start) {
+  ModelAtlasOptions o;
+  o.parameter = args.parameter;
+  std::tie(o.from, o.to) = ParseRange(args.range);
+  o.steps = args.steps;
+  o.transient_periods = args.brute.transients;
+  o.recorded_periods = args.brute.periods;
+  o.scattered_starts = args.brute.starts;
+  o.scatter = args.brute.scatter;
+  o.seed = static_cast<std::uint64_t>(args.brute.seed);
+  o.periodicity_tolerance = args.brute.tolerance;
+  o.threads = args.brute.threads;
+  o.time_unit = 2.0 * std::numbers::pi / start.slowest_frequency;
+  o.max_multiple = args.max_multiple;
+  o.trace.max_amplitude = args.max_amplitude;
+  o.continuation.max_points = args.max_points;
+  o.resonance_approach = args.resonance_approach;
+  return o;
+}
+
+int RunModelAtlas(const AtlasArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"--preset", "--point"}) {
+    if (cmd.count(option) != 0) {
+      throw InvalidInput::WithMessage(option + 2, fmt::format("{} is not taken with --model: the run file's [model] and "
+                                                              "--set give the oscillator and its parameters", option));
+    }
+  }
+  const NamedValues set = ModelSetOf(args.origin.set);
+  const ModelFileStart start = ReadModelFileStart(args.model, set);
+  RunFile run;
+  run.path = set.empty() ? args.model : std::string(kOneOffRunPath);
+  run.output = args.output;
+  run.parameter = args.parameter;
+  ModelAtlasOptions options = ModelAtlasOptionsOf(args, start);
+  options.Validate(start.model, start.parameters);
+  return ComputeAndWrite(
+      run, args.origin.results,
+      [&](ProgressCallback progress) {
+        options.progress = std::move(progress);
+        return ComputeModelAtlas(start.model, start.parameters, options);
+      },
+      [&](const ModelAtlas& atlas) { return RecordModelAtlas(run, atlas, options, SlipNaturalFrequencies(args.model)); });
 }
 
 }  // namespace
@@ -136,9 +202,19 @@ Command AddAtlasCommand(CLI::App& app) {
   AddNumberOption(*cmd, "--resonance-approach", &args->resonance_approach, "0 <= resonance-approach < 1",
                   "a trace's branch of orbits that never stick ends as a resonance at its first point within this "
                   "(relative) of a natural frequency of the undamped slip that it approaches (0: never)");
+  cmd->add_option("--model", args->model,
+                  "the atlas of the oscillator in this run file's [model] (see describe) instead of the paper's: "
+                  "--parameter one of the model's (omega, F_k, F_s, v_b; SI units), --set its parameters; the brute "
+                  "force runs from rest and --starts states scattered in the box |x| <= --scatter (the model's units) "
+                  "at every grid value, and from the neighbouring value's end both ways; --tolerance is relative to "
+                  "the section states' size. Without forcing (a belt) the section is the stick entry, --transients "
+                  "and --periods in units of its slowest free oscillation 2 pi/omega_1, and --parameter must be given "
+                  "(F_k, F_s or v_b). The mirror images of asymmetric orbits are not traced (the scattered starts must "
+                  "find both of a pair)");
   return {cmd, [args, cmd] {
             if (cmd->count("--range") == 0) throw InvalidInput("range", "(not given)", "--range LO,HI is required");
-            return RunAtlas(*args);
+            if (cmd->count("--output") == 0) throw InvalidInput("output", "(not given)", "--output NAME is required");
+            return args->model.empty() ? RunAtlas(*args) : RunModelAtlas(*args, *cmd);
           }};
 }
 

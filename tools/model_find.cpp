@@ -147,10 +147,8 @@ int RunModelFind(const ModelFindArgs& args) {
     if (run.trace && !written && !args.output.empty()) fmt::print("{}: no branch started: nothing written\n", args.output);
   }
   if (const int code = FindExitCode(found.status); code != kExitOk) {
-    const bool unsettled = found.message.find("not settled") != std::string::npos ||
-                           found.message.find("simulate longer") != std::string::npos;
     fmt::print(stderr, "error: {}: {}{}\n", args.file, found.message,
-               unsettled ? fmt::format(" (--transients {} periods now: more simulates longer)", args.transients) : "");
+               LongerMayFind(found) ? fmt::format(" (--transients {} periods now: more simulates longer)", args.transients) : "");
     return code;
   }
   if (written) {

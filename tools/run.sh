@@ -61,9 +61,18 @@ mkdir -p results/atlases
 "$bin" atlas --preset paper-4.1 --range 0.3,0.95 --steps 65 --results results/atlases --output paper-4.1-omega
 "$bin" atlas --preset paper-5.1 --range 0.4,0.8 --steps 40 --results results/atlases --output paper-5.1-omega
 "$bin" atlas --preset paper-6 --range 0.4,0.75 --steps 35 --results results/atlases --output paper-6-omega
-for a in paper-4.1-omega paper-5.1-omega paper-6-omega; do
+# ... and of oscillators of your own ([model]): the paper's two masses written as a chain (the same
+# motions as paper-4.1-omega, by the general model's code), five masses, and a belt (no forcing).
+"$bin" atlas --model continuation-scripts/models/paper-4.1-as-a-chain.toml --range 0.3,0.95 --steps 65 \
+  --results results/atlases --output paper-4.1-as-a-chain-omega
+"$bin" atlas --model continuation-scripts/models/five-mass-chain.toml --range 0.2,2.0 --steps 60 \
+  --results results/atlases --output five-mass-chain-omega
+"$bin" atlas --model continuation-scripts/models/belt-damped.toml --parameter v_b --range 0.1,1.0 --steps 18 --transients 100 \
+  --results results/atlases --output belt-damped-v_b
+for a in paper-4.1-omega paper-5.1-omega paper-6-omega paper-4.1-as-a-chain-omega five-mass-chain-omega; do
   "$bin" plot results/atlases/$a --yscale log --output results/figures/$a-atlas.png
 done
+"$bin" plot results/atlases/belt-damped-v_b --output results/figures/belt-damped-v_b-atlas.png
 # Oscillators of your own (continuation-scripts/models/: a chain, matrices in Matrix Market files, a
 # belt): each described, and the periodic orbit its motion from rest settles on found and verified.
 mkdir -p results/models

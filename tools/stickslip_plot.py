@@ -1084,11 +1084,12 @@ def draw_atlas_attractors(canvas, atlas, x, y):
     """The exact orbits found from the brute force's attractors (atlas.json records their
     amplitudes), where x is the atlas's parameter and y an amplitude: black crosses."""
     from matplotlib.lines import Line2D
-    key = {"amplitude:x1": "amplitude_x1", "amplitude:x2": "amplitude_x2"}.get(y)
-    if x != atlas.parameter or key is None:
+    # The paper's atlas names them amplitude_x1, amplitude_x2; a [model]'s by its columns' names.
+    key = {"amplitude:x1": "amplitude_x1", "amplitude:x2": "amplitude_x2"}.get(y, y)
+    if x != atlas.parameter or not y.startswith("amplitude:"):
         return
-    points = [(g["value"], a[key]) for g in atlas.atlas["grid"] for a in g["attractors"]
-              if a["fate"] == "on-branch" and a.get(key) is not None]
+    points = [(g["value"], a.get(y, a.get(key))) for g in atlas.atlas["grid"] for a in g["attractors"]
+              if a["fate"] == "on-branch" and a.get(y, a.get(key)) is not None]
     if points:
         xs, ys = zip(*points)
         canvas.ax.plot(xs, ys, "x", color="black", ms=4.5, mew=0.9, zorder=4)
@@ -1138,7 +1139,7 @@ def _atlas_figure(atlas, options, plt):
         raise BadInput("input", f"'{atlas.name}'", "an atlas with at least one traced branch (this one traced none: "
                        "its atlas.json lists every attractor with the reason)")
     x = options.x or atlas.parameter
-    y = options.y or "amplitude:x2"
+    y = options.y or _contact_amplitude(atlas)
     _check_quantity(options, "x", x, [atlas])
     _check_quantity(options, "y", y, [atlas])
     _check_drawable(options, x, y, [atlas])
@@ -1165,6 +1166,9 @@ def _atlas_figure(atlas, options, plt):
     pairs = {(float(row["chi"]), float(row["eta"])) for b in _branches(atlas) for row in b.rows if "chi" in row}
     if options.natural_frequencies and pairs and len(pairs) <= 2 and "omega" in (x, y):
         mark_natural_frequencies(canvas, pairs, "x" if x == "omega" else "y")
+    models = {tuple(t.trace.get("natural_frequencies", ())) for t in atlas.traces} - {()}
+    if options.natural_frequencies and len(models) == 1 and not pairs and "omega" in (x, y):
+        mark_model_frequencies(canvas, next(iter(models)), "x" if x == "omega" else "y")
     _finish(fig, [(strip, Canvas(strip)), (ax, canvas)], options, _atlas_title(atlas))
     return fig
 

@@ -337,4 +337,51 @@ expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
 expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \
   "$bin" run --results "$work/out" "$models/belt.toml"
+# A [model]'s atlas: M. Pascal's two masses written as a chain reproduce the paper's own atlas's
+# bifurcations (its committed intervals: PD at omega = 0.3499031780, SB at 0.3497430893, the fold at
+# 0.6011956426); its files are an atlas's (each trace-<t> a trace's, atlas.json "model"); the same
+# bytes on one thread and two; a re-run keeps the user's files; bad input writes nothing.
+for t in 1 2; do
+  "$bin" atlas --model "$models/paper-4.1-as-a-chain.toml" --range 0.3,0.65 --steps 14 --threads $t --output chain41 \
+    --results "$work/atlas$t" > "$work/atlas$t.txt" 2> "$work/atlas$t.err" || fail "atlas --model (threads $t): $(cat "$work/atlas$t.err")"
+done
+diff -r "$work/atlas1/chain41" "$work/atlas2/chain41" > /dev/null && pass || fail "atlas --model: files differ for 1 and 2 threads"
+/usr/bin/python3 - "$work/atlas1/chain41" <<'PY' && pass || fail "atlas --model of the paper's masses as a chain"
+import csv, json, sys
+atlas = json.load(open(sys.argv[1] + "/atlas.json"))
+assert atlas["model"] == "linear-oscillator" and atlas["parameter"] == "omega", atlas["parameter"]
+counts = atlas["counts"]
+assert counts["on_branches"] == counts["periodic_within_limit"] > 10, counts
+rows = list(csv.DictReader(open(sys.argv[1] + "/atlas-intervals.csv")))
+def located(label, value):
+    return any(r[end].startswith(label) and abs(float(r[side]) - value) <= 1e-8
+               for r in rows for end, side in (("first_label", "from"), ("last_label", "to")))
+for label, value in (("PD", 0.34990317802386234), ("SB", 0.3497430892795275), ("LP", 0.60119564258631)):
+    assert located(label, value), (label, value)
+for grid in atlas["grid"]:
+    for a in grid["attractors"]:
+        assert a["fate"] != "on-branch" or a["amplitude:x2"] > 0, a
+trace = json.load(open(sys.argv[1] + "/trace-1/trace.json"))
+assert trace["model"] == "linear-oscillator" and len(trace["natural_frequencies"]) == 2, trace.keys()
+PY
+echo mine > "$work/atlas1/chain41/trace-1/NOTES.md"
+"$bin" atlas --model "$models/paper-4.1-as-a-chain.toml" --range 0.3,0.65 --steps 14 --output chain41 \
+  --results "$work/atlas1" > "$work/atlas1.txt" && grep -q "kept 1 other file(s) of .*: trace-1/NOTES.md" "$work/atlas1.txt" &&
+  [ "$(cat "$work/atlas1/chain41/trace-1/NOTES.md")" = mine ] && pass ||
+  fail "a second atlas --model did not keep the user's file: $(cat "$work/atlas1.txt")"
+"$bin" plot "$work/atlas1/chain41" --output "$work/chain41.png" > /dev/null && [ -s "$work/chain41.png" ] && pass ||
+  fail "stickslip plot of a [model]'s atlas"
+"$bin" atlas --model "$models/belt-damped.toml" --parameter v_b --range 0.1,0.7 --steps 6 --transients 100 --output belt \
+  --results "$work/atlas1" > "$work/belt.txt" && grep -q "^belt: .* 1 trace(s)" "$work/belt.txt" && pass ||
+  fail "atlas --model of a belt: $(cat "$work/belt.txt")"
+expect 2 "parameter = 'omega' is invalid" "$bin" atlas --model "$models/belt.toml" --range 0.2,0.3 --output b --results "$work/out"
+expect 2 "range = '0.5,1' is invalid: grid value omega = 1" \
+  "$bin" atlas --model "$models/den-hartog.toml" --range 0.5,1 --steps 5 --output d --results "$work/out"
+expect 2 "steps" "$bin" atlas --model "$models/den-hartog.toml" --range 1.5,2 --steps 100000000 --output d --results "$work/out"
+expect 2 "max-multiple" "$bin" atlas --model "$models/den-hartog.toml" --range 1.5,2 --max-multiple 0 --output d --results "$work/out"
+expect 2 "preset is not taken with --model" \
+  "$bin" atlas --model "$models/den-hartog.toml" --preset paper-4.1 --range 1.5,2 --output d --results "$work/out"
+expect 2 "output = '' is invalid" "$bin" atlas --model "$models/den-hartog.toml" --range 1.5,2 --output "" --results "$work/out"
+mkdir -p "$work/out/mine"
+expect 2 "holds no stickslip atlas" "$bin" atlas --model "$models/den-hartog.toml" --range 1.5,2 --output mine --results "$work/out"
 finish

@@ -1,4 +1,5 @@
 #include "stickslip/branches/branch_membership.hpp"
+#include "stickslip/branches/model_branch_membership.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,14 +18,18 @@ namespace stickslip {
 
 namespace ov = orbit_variables;
 
-void BranchMembershipOptions::Validate() const {
+void BranchMembershipOptions::ValidateTolerances() const {
   if (!(tolerance >= kMinTolerance && tolerance <= kMaxTolerance)) {
     throw InvalidInput("tolerance", tolerance, fmt::format("{} <= tolerance <= {}", kMinTolerance, kMaxTolerance));
   }
+  least_period.Validate();
+}
+
+void BranchMembershipOptions::Validate() const {
+  ValidateTolerances();
   if (!ParameterFromString(parameter)) {
     throw InvalidInput("parameter", fmt::format("'{}'", parameter), "a parameter: chi, eta, omega, u_s, u_r");
   }
-  least_period.Validate();
 }
 
 std::vector<const OrbitBranch*> BranchesOf(const TraceResult& trace) {
@@ -34,6 +39,41 @@ std::vector<const OrbitBranch*> BranchesOf(const TraceResult& trace) {
   }
   return branches;
 }
+
+namespace membership_detail {
+
+bool SameTypeUpToOrigin(const Signature& signature, const Signature& candidate) {
+  if (signature.size() != candidate.size() || signature.antisymmetric() != candidate.antisymmetric() ||
+      signature.period_multiple() != candidate.period_multiple()) {
+    return false;
+  }
+  for (int j = 0; j < OriginCount(candidate); ++j) {
+    if (WithOriginAt(candidate, j) == signature) return true;
+  }
+  return false;
+}
+
+std::vector<Passage> PassagesBy(const std::vector<double>& values, double value, double tolerance) {
+  std::vector<Passage> passages;
+  const double margin = tolerance * (1.0 + std::abs(value));
+  for (int i = 0; i + 1 < static_cast<int>(values.size()); ++i) {
+    const double low = values[i];
+    const double high = values[i + 1];
+    if (value < std::min(low, high) - margin || value > std::max(low, high) + margin) continue;
+    passages.push_back({i, high == low ? 0.0 : std::clamp((value - low) / (high - low), 0.0, 1.0)});
+  }
+  return passages;
+}
+
+std::string OnNoneMessage(std::size_t count, const std::string& parameter, double value, const Signature& signature,
+                          double distance) {
+  const std::string where = fmt::format("on none of {} branches at {} = {}", count, parameter, value);
+  return std::isinf(distance) ? fmt::format("{}: none of type '{}' passes there", where, signature.ToString())
+                              : fmt::format("{}: the nearest orbit of type '{}' is {:.3g} from it", where,
+                                            signature.ToString(), distance);
+}
+
+}  // namespace membership_detail
 
 namespace {
 
@@ -66,18 +106,6 @@ double MismatchOverOrigins(const Orbit& orbit, const Orbit& candidate) {
   return best;
 }
 
-// Whether some origin of `candidate`'s signature gives `signature`: the same type, another origin.
-bool SameTypeUpToOrigin(const Signature& signature, const Signature& candidate) {
-  if (signature.size() != candidate.size() || signature.antisymmetric() != candidate.antisymmetric() ||
-      signature.period_multiple() != candidate.period_multiple()) {
-    return false;
-  }
-  for (int j = 0; j < OriginCount(candidate); ++j) {
-    if (WithOriginAt(candidate, j) == signature) return true;
-  }
-  return false;
-}
-
 // Every parameter of `a` but `skip` equal to b's within tolerance (relative to 1 + |b|).
 bool OtherParametersAgree(const Parameters& a, const Parameters& b, ParameterId skip, double tolerance) {
   for (ParameterId id : kAllParameters) {
@@ -101,20 +129,12 @@ Orbit BranchOrbitAt(const OrbitBranch& branch, int i, double t, const Orbit& orb
   return solved.summary.Converged() ? solved.orbit : guess;
 }
 
-// Where `branch` passes `value` of the parameter: the points i whose interval [i, i + 1] holds it,
-// widened by `tolerance` (relative to 1 + |value|: a start located at a branch's end lies a rounding
-// error outside it), with the fraction t in [0, 1] of the way from i to i + 1.
-std::vector<std::pair<int, double>> Passages(const OrbitBranch& branch, ParameterId parameter, double value,
-                                             double tolerance) {
-  std::vector<std::pair<int, double>> passages;
-  const double margin = tolerance * (1.0 + std::abs(value));
-  for (int i = 0; i + 1 < static_cast<int>(branch.orbits.size()); ++i) {
-    const double low = branch.orbits[i].parameters[parameter];
-    const double high = branch.orbits[i + 1].parameters[parameter];
-    if (value < std::min(low, high) - margin || value > std::max(low, high) + margin) continue;
-    passages.emplace_back(i, high == low ? 0.0 : std::clamp((value - low) / (high - low), 0.0, 1.0));
-  }
-  return passages;
+// Where `branch` passes `value` of the parameter (PassagesBy).
+std::vector<membership_detail::Passage> Passages(const OrbitBranch& branch, ParameterId parameter, double value,
+                                                 double tolerance) {
+  std::vector<double> values;
+  for (const Orbit& orbit : branch.orbits) values.push_back(orbit.parameters[parameter]);
+  return membership_detail::PassagesBy(values, value, tolerance);
 }
 
 struct PassageMatch {
@@ -149,7 +169,7 @@ BranchMembership FindOnBranches(const Orbit& orbit, const std::vector<const Orbi
     if (branch.orbits.empty()) continue;
     // Of its orbit, not its signature alone: a signature may repeat a shorter one whose orbit does not.
     const Signature branch_type = LeastPeriodOf(branch.orbits.front(), options.least_period).signature;
-    if (!SameTypeUpToOrigin(least.signature, branch_type)) continue;
+    if (!membership_detail::SameTypeUpToOrigin(least.signature, branch_type)) continue;
     const PassageMatch match = NearestPassage(least, branch, parameter, options);
     membership.distance = std::min(membership.distance, match.distance);
     if (match.distance <= options.tolerance) {
@@ -159,12 +179,8 @@ BranchMembership FindOnBranches(const Orbit& orbit, const std::vector<const Orbi
       return membership;
     }
   }
-  const std::string where = fmt::format("on none of {} branches at {} = {}", branches.size(), options.parameter,
-                                        least.parameters[parameter]);
-  membership.message = std::isinf(membership.distance)
-                           ? fmt::format("{}: none of type '{}' passes there", where, least.signature.ToString())
-                           : fmt::format("{}: the nearest orbit of type '{}' is {:.3g} from it", where,
-                                         least.signature.ToString(), membership.distance);
+  membership.message = membership_detail::OnNoneMessage(branches.size(), options.parameter, least.parameters[parameter],
+                                                        least.signature, membership.distance);
   return membership;
 }
 

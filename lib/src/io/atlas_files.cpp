@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "result_directory.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/map_file.hpp"
@@ -34,10 +35,11 @@ constexpr const char* kTracePrefix = "trace-";
 
 std::string TraceName(std::size_t t) { return fmt::format("{}{}", kTracePrefix, t + 1); }
 
-// "trace-<t>/branch-<k>" of the atlas's branch `branch` (an index into Atlas::Branches()).
-std::string BranchPlace(const Atlas& atlas, int branch) {
+// "trace-<t>/branch-<k>" of the atlas's branch `branch` (an index into its Branches()).
+template <typename AnyAtlas>
+std::string BranchPlace(const AnyAtlas& atlas, int branch) {
   for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
-    const AtlasTrace& trace = atlas.traces[t];
+    const auto& trace = atlas.traces[t];
     if (branch >= trace.first_branch && branch < trace.first_branch + trace.count) {
       return fmt::format("{}/branch-{}", TraceName(t), branch - trace.first_branch + 1);
     }
@@ -45,59 +47,97 @@ std::string BranchPlace(const Atlas& atlas, int branch) {
   return "";
 }
 
+// The trace the attractor's own exact orbit started ("trace-<t>"), or "".
+template <typename AnyAtlas, typename AnyAttractor>
+std::string StartedTrace(const AnyAtlas& atlas, const AnyAttractor& a) {
+  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+    const auto& trace = atlas.traces[t];
+    bool mirror = false;
+    if constexpr (requires { trace.mirror; }) mirror = trace.mirror;
+    if (&atlas.attractors[trace.attractor] == &a && !mirror && trace.from_branch < 0) return TraceName(t);
+  }
+  return "";
+}
+
+// Where the attractor ended: its fate, the branch and point, and the reason.
+template <typename AnyAtlas, typename AnyAttractor>
+void AddFate(Json& json, const AnyAtlas& atlas, const AnyAttractor& a) {
+  const bool on = a.fate == AttractorFate::kOnBranch;
+  json["fate"] = ToString(a.fate);
+  json["branch"] = on ? BranchPlace(atlas, a.branch) : "";
+  json["point"] = on ? a.point + 1 : 0;
+  json["started_trace"] = StartedTrace(atlas, a);
+  json["reason"] = on ? fmt::format("on {} between its points {} and {}", BranchPlace(atlas, a.branch), a.point + 1, a.point + 2)
+                      : a.reason;
+}
+
 Json AttractorJson(const Atlas& atlas, const AtlasAttractor& a) {
   const bool solved = a.found && a.found->solution;
   const OrbitMeasures m = solved ? Measure(a.found->solution->orbit) : OrbitMeasures{NAN, NAN, NAN, NAN, 0, 0};
-  std::string started;
-  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
-    const AtlasTrace& trace = atlas.traces[t];
-    if (&atlas.attractors[trace.attractor] == &a && !trace.mirror && trace.from_branch < 0) started = TraceName(t);
-  }
-  return {{"status", ToString(a.attractor.status)},
-          {"period", a.attractor.period},
-          {"signature", a.attractor.signature},
-          {"starts", a.attractor.starts},
-          {"find", a.found ? ToString(a.found->status) : ""},
-          {"exact_signature", solved ? a.found->solution->orbit.signature.ToString() : ""},
-          {"amplitude_x1", m.amplitude_x1},
-          {"amplitude_x2", m.amplitude_x2},
-          {"fate", ToString(a.fate)},
-          {"branch", a.fate == AttractorFate::kOnBranch ? BranchPlace(atlas, a.branch) : ""},
-          {"point", a.fate == AttractorFate::kOnBranch ? a.point + 1 : 0},
-          {"started_trace", started},
-          {"reason", a.fate == AttractorFate::kOnBranch
-                         ? fmt::format("on {} between its points {} and {}", BranchPlace(atlas, a.branch), a.point + 1, a.point + 2)
-                         : a.reason}};
+  Json json{{"status", ToString(a.attractor.status)},
+            {"period", a.attractor.period},
+            {"signature", a.attractor.signature},
+            {"starts", a.attractor.starts},
+            {"find", a.found ? ToString(a.found->status) : ""},
+            {"exact_signature", solved ? a.found->solution->orbit.signature.ToString() : ""},
+            {"amplitude_x1", m.amplitude_x1},
+            {"amplitude_x2", m.amplitude_x2}};
+  AddFate(json, atlas, a);
+  return json;
 }
 
-// Per grid value: its attractors, and the branches its stable motions (the attractors placed)
-// lie on, each once.
-Json GridJson(const Atlas& atlas) {
+// A [model]'s attractor: the brute force's reading (no signature: its runs count stops and sticks),
+// and the exact orbit's amplitude of every coordinate, by the columns' names.
+Json AttractorJson(const ModelAtlas& atlas, const ModelAtlasAttractor& a) {
+  const bool solved = a.found && a.found->solution && a.found->measures;
+  Json json{{"status", ToString(a.attractor.status)},
+            {"period", a.attractor.period},
+            {"stops_per_period", a.attractor.stops_per_period},
+            {"sticks_per_period", a.attractor.sticks_per_period},
+            {"starts", a.attractor.starts},
+            {"find", a.found ? ToString(a.found->status) : ""},
+            {"exact_signature", solved ? a.found->solution->orbit.signature.ToString() : ""}};
+  const std::vector<std::string>& coordinates = atlas.model.Description().coordinates;
+  for (std::size_t k = 0; k < coordinates.size(); ++k) {
+    json[orbit_columns::AmplitudeOf(coordinates[k])] = solved ? Json(a.found->measures->coordinates[k].Amplitude()) : Json(nullptr);
+  }
+  AddFate(json, atlas, a);
+  return json;
+}
+
+// Per grid value (index, value): its attractors, and the branches its stable motions (the
+// attractors placed) lie on, each once.
+template <typename AnyAtlas>
+Json GridJson(const AnyAtlas& atlas, const std::vector<std::pair<int, double>>& values) {
   Json grid = Json::array();
-  for (const MapCell& cell : atlas.brute_force.cells) {
+  for (const auto& [i, value] : values) {
     Json attractors = Json::array();
     std::set<std::string> stable;
-    for (const AtlasAttractor& a : atlas.attractors) {
-      if (a.grid != cell.i) continue;
+    for (const auto& a : atlas.attractors) {
+      if (a.grid != i) continue;
       attractors.push_back(AttractorJson(atlas, a));
       if (a.fate == AttractorFate::kOnBranch) stable.insert(BranchPlace(atlas, a.branch));
     }
-    grid.push_back({{"value", cell.first}, {"attractors", attractors}, {"stable_on", stable}});
+    grid.push_back({{"value", value}, {"attractors", attractors}, {"stable_on", stable}});
   }
   return grid;
 }
 
 // Where a trace started: an attractor's exact orbit, its mirror image, or a switch another trace
 // confirmed at a branch's end and did not take.
-Json FromJson(const Atlas& atlas, const AtlasTrace& trace) {
-  const AtlasAttractor& a = atlas.attractors[trace.attractor];
+template <typename AnyAtlas, typename AnyTrace>
+Json FromJson(const AnyAtlas& atlas, const AnyTrace& trace) {
+  const auto& a = atlas.attractors[trace.attractor];
   if (trace.from_branch >= 0) {
     return {{"switch_at_end_of", BranchPlace(atlas, trace.from_branch)}, {"adjacent", trace.adjacent}};
   }
-  return {{"value", a.value}, {"attractor", a.index + 1}, {"mirror_image", trace.mirror}};
+  bool mirror = false;  // a [model]'s atlas traces no mirror image
+  if constexpr (requires { trace.mirror; }) mirror = trace.mirror;
+  return {{"value", a.value}, {"attractor", a.index + 1}, {"mirror_image", mirror}};
 }
 
-Json TracesJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
+template <typename AnyAtlas>
+Json TracesJson(const AnyAtlas& atlas, const std::vector<StoredTrace>& stored) {
   Json traces = Json::array();
   for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
     Json directions = Json::array();
@@ -113,7 +153,8 @@ Json TracesJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
   return traces;
 }
 
-Json CountsJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
+template <typename AnyAtlas>
+Json CountsJson(const AnyAtlas& atlas, const std::vector<StoredTrace>& stored) {
   std::set<std::string> types;
   std::size_t branches = 0;
   for (const StoredTrace& t : stored) {
@@ -122,7 +163,7 @@ Json CountsJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
   }
   const int placed = atlas.OnBranches();
   Json fates = Json::object();
-  for (const AtlasAttractor& a : atlas.attractors) {
+  for (const auto& a : atlas.attractors) {
     const char* fate = ToString(a.fate);
     fates[fate] = fates.value(fate, 0) + 1;
   }
@@ -136,19 +177,31 @@ Json CountsJson(const Atlas& atlas, const std::vector<StoredTrace>& stored) {
           {"orbit_types", types}};
 }
 
-std::string FormatAtlasJson(const RunFile& run, const Atlas& atlas, const AtlasOptions& options,
+// What atlas.json says of the run before its counts: the range, grid and period limit.
+struct AtlasHeader {
+  const RunFile& run;
+  std::string model;  // "" for the paper's (no key), kLinearOscillatorModel for a [model]'s
+  std::string parameter;
+  double from = 0.0;
+  double to = 0.0;
+  int grid_points = 0;
+  int max_multiple = 0;
+};
+
+template <typename AnyAtlas>
+std::string FormatAtlasJson(const AtlasHeader& header, const AnyAtlas& atlas, const std::vector<std::pair<int, double>>& grid,
                             const std::vector<StoredTrace>& stored) {
-  const MapAxis& grid = options.brute_force.first;
   Json json = Json::object();
-  json["run_file"] = run.path;
+  json["run_file"] = header.run.path;
   json["stickslip_version"] = Version();
-  json["output"] = run.output;
-  json["parameter"] = atlas.parameter;
-  json["range"] = {grid.from, grid.to};
-  json["grid_points"] = grid.Count();
-  json["max_multiple"] = options.max_multiple;
+  if (!header.model.empty()) json["model"] = header.model;
+  json["output"] = header.run.output;
+  json["parameter"] = header.parameter;
+  json["range"] = {header.from, header.to};
+  json["grid_points"] = header.grid_points;
+  json["max_multiple"] = header.max_multiple;
   json["counts"] = CountsJson(atlas, stored);
-  json["grid"] = GridJson(atlas);
+  json["grid"] = GridJson(atlas, grid);
   json["traces"] = TracesJson(atlas, stored);
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
@@ -187,6 +240,24 @@ std::string FormatIntervalsCsv(const std::vector<StoredTrace>& traces) {
                          branch_ends ? traces[t].branches[first.branch - 1].end : "");
       begin = end + 1;
     }
+  }
+  return csv;
+}
+
+// brute-force.csv of a [model]'s atlas: one row per attractor of each grid value, its first section
+// point by the model's state names.
+std::string ModelBruteForceCsv(const ModelAtlas& atlas) {
+  const ModelDescription& d = atlas.model.Description();
+  std::string csv = fmt::format("grid,{},attractor,status,period,starts,stops_per_period,sticks_per_period,{}", atlas.parameter,
+                                orbit_columns::AmplitudeOf(d.coordinates[ContactCoordinate(atlas.model)]));
+  for (const std::string& name : d.state_columns) csv += "," + name;
+  csv += "\n";
+  for (const ModelAtlasAttractor& a : atlas.attractors) {
+    const ModelAttractor& m = a.attractor;
+    csv += fmt::format("{},{},{},{},{},{},{},{},{}", a.grid, a.value, a.index + 1, ToString(m.status), m.period, m.starts,
+                       m.stops_per_period, m.sticks_per_period, m.contact_amplitude);
+    for (const double x : m.section.front()) csv += fmt::format(",{}", x);
+    csv += "\n";
   }
   return csv;
 }
@@ -241,8 +312,29 @@ StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptio
     trace_run.output = TraceName(t);
     stored.traces.push_back(RecordTrace(trace_run, atlas.traces[t].result));
   }
-  stored.files = {FormatAtlasJson(run, atlas, options, stored.traces), FormatIntervalsCsv(stored.traces),
+  const MapAxis& axis = options.brute_force.first;
+  std::vector<std::pair<int, double>> grid;
+  for (const MapCell& cell : atlas.brute_force.cells) grid.emplace_back(cell.i, cell.first);
+  const AtlasHeader header{run, "", atlas.parameter, axis.from, axis.to, axis.Count(), options.max_multiple};
+  stored.files = {FormatAtlasJson(header, atlas, grid, stored.traces), FormatIntervalsCsv(stored.traces),
                   BruteForceMapCsv(atlas.brute_force)};
+  return stored;
+}
+
+StoredAtlas RecordModelAtlas(const RunFile& run, const ModelAtlas& atlas, const ModelAtlasOptions& options,
+                             const std::vector<double>& natural_frequencies) {
+  StoredAtlas stored{.output = run.output};
+  for (std::size_t t = 0; t < atlas.traces.size(); ++t) {
+    const StoredSummary identity{.run_file = run.path, .output = TraceName(t), .parameter = atlas.parameter};
+    stored.traces.push_back(RecordTrace(atlas.model, identity, atlas.traces[t].result));
+    stored.traces.back().natural_frequencies = natural_frequencies;
+  }
+  std::vector<std::pair<int, double>> grid;
+  for (std::size_t i = 0; i < atlas.grid.size(); ++i) grid.emplace_back(static_cast<int>(i), atlas.grid[i]);
+  const AtlasHeader header{run, kLinearOscillatorModel, atlas.parameter, options.from, options.to,
+                           static_cast<int>(atlas.grid.size()), options.max_multiple};
+  stored.files = {FormatAtlasJson(header, atlas, grid, stored.traces), FormatIntervalsCsv(stored.traces),
+                  ModelBruteForceCsv(atlas)};
   return stored;
 }
 

@@ -92,10 +92,16 @@ StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::pa
                                                  .output = output,
                                                  .parameter = run.trace->parameter},
                                    *run.trace);
-  for (const FreeOscillation& mode : SummarizeModel(run_file).slip) {
-    if (mode.oscillates) stored.natural_frequencies.push_back(mode.frequency);
-  }
+  stored.natural_frequencies = SlipNaturalFrequencies(run_file);
   return stored;
+}
+
+std::vector<double> SlipNaturalFrequencies(const std::filesystem::path& run_file) {
+  std::vector<double> frequencies;
+  for (const FreeOscillation& mode : SummarizeModel(run_file).slip) {
+    if (mode.oscillates) frequencies.push_back(mode.frequency);
+  }
+  return frequencies;
 }
 
 std::string ModelTraceJson(const ModelTraceRun& run) {

@@ -60,6 +60,21 @@ struct ModelFindResult {
   std::optional<Verification> verification;
 };
 
+// Whether the motion `r` was read off had not settled on a period (settled_orbit.hpp's messages
+// say so: a "no orbit type" that a longer simulation may turn into an orbit).
+template <OscillatorModel Model>
+bool MotionNotSettled(const ModelFindResult<Model>& r) {
+  return r.status == FindOrbitStatus::kNoOrbitType && r.message.find("not settled") != std::string::npos;
+}
+
+// Whether a longer simulation may find what `r` did not: a motion not settled, or a stick or a
+// stick-slip cycle that outlasted the time read ("simulate longer").
+template <OscillatorModel Model>
+bool LongerMayFind(const ModelFindResult<Model>& r) {
+  return MotionNotSettled(r) ||
+         (r.status == FindOrbitStatus::kNoOrbitType && r.message.find("simulate longer") != std::string::npos);
+}
+
 // The orbit's verification by the model's exact simulator and by Odeint's, both relative to the
 // orbit's size (OrbitSize): Odeint's absolute tolerance and the mismatches' thresholds scale with it,
 // so that the same motion in other units (forces times 1e-7 or 1e7) verifies the same.

@@ -38,7 +38,8 @@ struct BranchMembershipOptions {
 
   static constexpr double kMinTolerance = 1e-14;
   static constexpr double kMaxTolerance = 1e-1;
-  void Validate() const;  // throws InvalidInput naming "tolerance" or "parameter"
+  void Validate() const;  // throws InvalidInput naming "tolerance" or "parameter" (the paper's names)
+  void ValidateTolerances() const;  // Validate but the parameter, which another model names (tolerance, least_period)
 };
 
 struct BranchMembership {

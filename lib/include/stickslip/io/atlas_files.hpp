@@ -13,7 +13,8 @@
 //   atlas-intervals.csv  per branch, its pieces of one stability and admissibility: trace, branch,
 //                        signature, from, to (the parameter at the piece's first and last point),
 //                        stable, admissible, first_label, last_label, branch_end
-//   brute-force.csv      the brute force, as `stickslip map-sweep` writes a map (io/map_file.hpp)
+//   brute-force.csv      the brute force, as `stickslip map-sweep` writes a map (io/map_file.hpp);
+//                        a [model]'s: its attractors (RecordModelAtlas)
 // Numbers in shortest round-trip form, no time or host: the same atlas gives the same bytes.
 #pragma once
 
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "stickslip/analysis/atlas.hpp"
+#include "stickslip/analysis/model_atlas.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/trace_files.hpp"
 
@@ -42,6 +44,15 @@ struct StoredAtlas {
 // The stored form of an atlas just computed from `run` (its path, output and parameter) with
 // `options` (the range, grid and period limit it records).
 StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptions& options);
+
+// The stored form of a [model]'s atlas (analysis/model_atlas.hpp) from `run` (its path, output):
+// the same files, atlas.json with "model": "linear-oscillator" and each attractor's exact orbit's
+// amplitudes by coordinate ("amplitude:<q>"), every trace carrying `natural_frequencies` (the
+// slip's, as a [model]'s trace: io/model_trace.hpp), brute-force.csv one row per attractor (grid,
+// <parameter>, attractor, status, period, starts, stops_per_period, sticks_per_period,
+// amplitude:<q_c>, the first section state by the model's state columns).
+StoredAtlas RecordModelAtlas(const RunFile& run, const ModelAtlas& atlas, const ModelAtlasOptions& options,
+                             const std::vector<double>& natural_frequencies);
 
 // Throws InvalidInput naming "output" unless it is a run name (IsRunName) that is new (then as
 // CheckOutputDirectory, result_files.hpp) or names a directory holding an atlas (its atlas.json reads

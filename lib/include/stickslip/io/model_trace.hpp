@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/io/model_find.hpp"
@@ -32,6 +33,10 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
 // figure over omega marks. Throws RunFileError as ReadModelTable.
 StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::path& run_file, const NamedValues& set,
                              const std::string& output);
+
+// The natural frequencies of the slip of the run file's [model]: its oscillating free modes', as
+// describe lists them. Throws RunFileError as ReadModelTable.
+std::vector<double> SlipNaturalFrequencies(const std::filesystem::path& run_file);
 
 // parameter, start (find's JSON: model_orbit_json.hpp), completed, and per direction ("down",
 // "up") its end, message and branches: signature, direction, start, margin, end, message and

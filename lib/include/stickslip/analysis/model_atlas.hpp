@@ -1,0 +1,138 @@
+// The atlas (atlas.hpp) of an oscillator of the user's (model/linear_oscillator.hpp): every periodic
+// motion over a range of one of its parameters, in the paper's atlas's three stages, built from the
+// parts every model has:
+//   1. brute force (analysis/sweep.hpp): at every grid value, runs from rest and from scattered
+//      starts (a fixed sweep: every value from each start afresh) and from the neighbouring value's
+//      end both ways (a chained sweep from rest, up then down); the runs that end on the same
+//      section orbit (the same period, the same section points under a cyclic shift, to the
+//      tolerance times their size) are one attractor; the runs that settle on none are one
+//      "not-settled" entry. A model without forcing is read on its stick-entry section;
+//   2. exact orbits (model_orbit_finder.hpp): FindModelOrbit from every attractor of period up to
+//      max_multiple and from where the runs not settled ended, its simulation doubled (find_rounds
+//      simulations at most) while a longer one may find an orbit (LongerMayFind);
+//   3. traces (branches/model_trace.hpp), in grid order, from every exact orbit on no branch traced
+//      before it (branches/model_branch_membership.hpp decides, on the exact orbit), and from each
+//      confirmed switch a trace did not take at a branch's end that lies on none.
+// Every attractor ends accounted for, with the fates of the paper's atlas (AttractorFate). The
+// paper's atlas also traces the mirror image of an asymmetric orbit, which an oscillator of the
+// user's (a belt, forcing on several masses) need not have: here the brute force's scattered
+// starts must find both motions of a pair.
+//
+// Stages 1 and 2 run on every thread; stage 3 is sequential: the result does not depend on the
+// thread count.
+//
+//   ModelAtlasOptions o;
+//   o.parameter = "omega", o.from = 0.3, o.to = 0.95, o.steps = 26;
+//   const ModelAtlas<DynamicLinearOscillator> atlas = ComputeModelAtlas(model, parameters, o);
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stickslip/analysis/atlas.hpp"  // AttractorFate
+#include "stickslip/analysis/model_orbit_finder.hpp"
+#include "stickslip/analysis/sweep.hpp"
+#include "stickslip/branches/branch_membership.hpp"
+#include "stickslip/branches/trace.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/progress.hpp"
+
+namespace stickslip {
+
+struct ModelAtlasOptions {
+  std::string parameter = "omega";  // the atlas's parameter, by the model's name
+  double from = 0.0;  // the range (from < to), every grid value one the model takes
+  double to = 0.0;
+  int steps = 20;     // grid intervals over the range (1 to kMaxSteps)
+  // Per brute-force run: periods simulated and discarded, then recorded (forcing periods; without
+  // forcing, `time_unit`s). Periods up to recorded/2 are detected.
+  int transient_periods = 300;  // 0 to kMaxPeriods
+  int recorded_periods = 12;    // 2 to kMaxPeriods
+  int scattered_starts = 4;     // besides rest (0 to kMaxScatteredStarts)
+  double scatter = 1.0;         // the box |x|_inf <= scatter they are drawn from, in the model's units (0 to 1e6)
+  std::uint64_t seed = 1;       // of the scattered starts (splitmix64)
+  // Section points repeat, and two runs end on one attractor, within this times their size.
+  double periodicity_tolerance = 1e-6;
+  // Without forcing, the time counted as a period (> 0): the slowest free oscillation's 2 pi/omega_1.
+  double time_unit = 0.0;
+  int max_multiple = 4;  // the period limit, forcing periods (1 to ModelFindOptions::kMaxMultiple)
+  // FindModelOrbit from an attractor: find_periods periods first, doubled while the motion read
+  // has not settled, find_rounds simulations at most (1 to kMaxFindRounds).
+  int find_periods = 100;  // kMinFindPeriods to kMaxPeriods
+  int find_rounds = 5;
+  ContinuationOptions continuation;  // every trace's; its range is the atlas's
+  TraceOptions trace;  // its max_amplitude in the model's units
+  double resonance_approach = kDefaultResonanceApproach;
+  BranchMembershipOptions membership;  // its parameter is the atlas's
+  int max_traces = 500;  // 1 to AtlasOptions::kMaxTraces
+  int threads = 0;       // 0: every hardware thread. The result does not depend on it.
+  // Called per stage: "points" of the brute force, "attractors solved", "attractors placed".
+  ProgressCallback progress = {};
+
+  static constexpr int kMaxSteps = 10000;
+  static constexpr int kMaxPeriods = 100000;
+  static constexpr int kMaxScatteredStarts = 1000;
+  static constexpr int kMinFindPeriods = 2;
+  static constexpr int kMaxFindRounds = 10;
+  // Brute-force runs of one atlas, at most: (steps + 1) x (scattered_starts + 3).
+  static constexpr long long kMaxRuns = 10000000;
+
+  // Throws InvalidInput naming the field as the command line's flag ("parameter", "range" for a
+  // value the model refuses, "steps", "max-multiple", "tolerance", ...), before any simulation.
+  void Validate(const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base) const;
+};
+
+// What the brute force found at one grid value: an attractor, or every run that settled on none.
+struct ModelAttractor {
+  AttractorStatus status = AttractorStatus::kNotSettled;
+  int period = 0;  // forcing periods (stick-slip cycles without forcing); 0 unless periodic
+  double stops_per_period = 0.0;
+  double sticks_per_period = 0.0;
+  double contact_amplitude = 0.0;  // max |q_c| over the recorded periods
+  int starts = 0;                  // the runs that ended on it
+  std::vector<Eigen::VectorXd> section;  // periodic: its `period` section points; else where the first run ended
+};
+
+struct ModelAtlasAttractor {
+  int grid = 0;        // the grid index
+  double value = 0.0;  // the parameter there
+  int index = 0;       // in its grid value's order
+  ModelAttractor attractor;
+  std::optional<ModelFindResult<DynamicLinearOscillator>> found;  // where FindModelOrbit ran
+  AttractorFate fate = AttractorFate::kNotSettled;
+  int branch = -1;  // kOnBranch: index into ModelAtlas::Branches()
+  int point = -1;   // kOnBranch: the branch's point on the near side of the passage
+  std::string reason;
+};
+
+struct ModelAtlasTrace {
+  int attractor = 0;      // index into ModelAtlas::attractors: the one being placed when it started
+  int from_branch = -1;   // a switch at the end of Branches()[from_branch] another trace did not take; else -1
+  std::string adjacent;   // that switch's type
+  BasicTraceResult<DynamicLinearOscillator> result;
+  int first_branch = 0;   // its branches are Branches()[first_branch, first_branch + count)
+  int count = 0;
+};
+
+struct ModelAtlas {
+  DynamicLinearOscillator model;
+  std::string parameter;
+  std::vector<double> grid;  // the grid values
+  std::vector<ModelAtlasAttractor> attractors;  // by grid index, then in their grid value's order
+  std::vector<ModelAtlasTrace> traces;          // in the order started
+  std::vector<const BasicOrbitBranch<DynamicLinearOscillator>*> Branches() const;
+  int PeriodicWithinLimit() const;  // as Atlas's
+  int OnBranches() const;
+};
+
+// The atlas of `model` around `base` (the parameter replaced at each grid value), forced models'
+// sections at forcing phase 0. Throws InvalidInput (Validate), std::runtime_error where a brute-force
+// simulation stops early (the sweep's, naming the point); every other outcome is recorded.
+ModelAtlas ComputeModelAtlas(const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base,
+                             const ModelAtlasOptions& options);
+
+}  // namespace stickslip

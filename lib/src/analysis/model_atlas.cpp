@@ -1,0 +1,373 @@
+#include "stickslip/analysis/model_atlas.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "stickslip/branches/model_branch_membership.hpp"
+#include "stickslip/branches/model_trace.hpp"
+#include "stickslip/invalid_input.hpp"
+#include "stickslip/numerics/parallel_for.hpp"
+
+namespace stickslip {
+
+namespace {
+
+using Model = DynamicLinearOscillator;
+using ModelBranch = BasicOrbitBranch<Model>;
+
+void CheckCount(const char* field, long long value, long long low, long long high) {
+  if (value < low || value > high) {
+    throw InvalidInput(field, std::to_string(value), fmt::format("whole numbers {} <= {} <= {}", low, field, high));
+  }
+}
+
+// The grid's values; the last is `to` exactly.
+std::vector<double> GridOf(const ModelAtlasOptions& o) {
+  std::vector<double> grid;
+  for (int i = 0; i <= o.steps; ++i) grid.push_back(i == o.steps ? o.to : o.from + static_cast<double>(i) / o.steps * (o.to - o.from));
+  return grid;
+}
+
+// The brute force's sweep options: every value from each start afresh (kFixed), or from the
+// neighbouring value's end up and down (kChained).
+SweepOptions SweepOf(const Model& model, const ModelAtlasOptions& o, SweepStart start) {
+  SweepOptions s;
+  s.parameter = *model.Description().ParameterIndex(o.parameter);
+  s.from = o.from;
+  s.to = o.to;
+  s.steps = o.steps;
+  s.transient_periods = o.transient_periods;
+  s.recorded_periods = o.recorded_periods;
+  s.periodicity_tolerance = o.periodicity_tolerance;
+  s.relative_tolerance = true;  // the model's units are its own
+  s.chunk_periods = 20;         // short chunks: each event holds a state of the model's size
+  s.time_unit = o.time_unit;
+  s.start = start;
+  s.threads = o.threads;
+  return s;
+}
+
+// The largest |component| of a section orbit's points (never 0: a rest point compares absolutely).
+double SectionSize(const std::vector<Eigen::VectorXd>& section, int period) {
+  double size = std::numeric_limits<double>::min();
+  for (int k = 0; k < period; ++k) size = std::max(size, section[k].lpNorm<Eigen::Infinity>());
+  return size;
+}
+
+// Whether two periodic runs end on one section orbit: the same period and the same points under a
+// cyclic shift, within the tolerance times the larger size.
+bool SameSectionOrbit(const ModelAttractor& a, const SweepPoint& p, double tolerance) {
+  if (a.period != p.period) return false;
+  const double within = tolerance * std::max(SectionSize(a.section, a.period), SectionSize(p.section, p.period));
+  for (int shift = 0; shift < p.period; ++shift) {
+    bool same = true;
+    for (int k = 0; k < p.period && same; ++k) {
+      same = (a.section[k] - p.section[(k + shift) % p.period]).lpNorm<Eigen::Infinity>() <= within;
+    }
+    if (same) return true;
+  }
+  return false;
+}
+
+ModelAttractor AttractorOf(const SweepPoint& p) {
+  ModelAttractor a{p.period > 0 ? AttractorStatus::kPeriodic : AttractorStatus::kNotSettled,
+                   p.period, p.stops_per_period, p.sticks_per_period, p.contact_amplitude, 1, {}};
+  a.section.assign(p.section.begin(), p.section.begin() + (p.period > 0 ? p.period : 1));
+  if (p.period == 0) a.section.front() = p.section.back();
+  return a;
+}
+
+// Stage 1: the attractors of every grid value, in the order the runs found them (the fresh starts
+// by start, then the chained sweep's up and down passes).
+std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Parameters& base, const ModelAtlasOptions& o,
+                                            const std::vector<double>& grid) {
+  const std::vector<Model::State> fresh =
+      ScatteredStarts<Model::State>(Model::State::Zero(model.StateSize()), o.scatter, 1 + o.scattered_starts, o.seed);
+  SweepOptions fixed = SweepOf(model, o, SweepStart::kFixed);
+  SweepOptions chained = SweepOf(model, o, SweepStart::kChained);
+  const double total = static_cast<double>((o.steps + 1) * (fresh.size() + 2));
+  double done = 0.0;
+  std::mutex report;
+  const auto counted = [&](const Progress& r) {
+    if (!o.progress) return;
+    const std::lock_guard<std::mutex> lock(report);
+    done += 1.0;
+    o.progress({done, total, "points", r.value});
+  };
+  fixed.progress = counted;
+  chained.progress = counted;
+  std::vector<SweepPoint> points = Sweep(model, base, fresh, 0.0, fixed);
+  std::vector<SweepPoint> followed = Sweep(model, base, {fresh.front()}, 0.0, chained);
+  points.insert(points.end(), followed.begin(), followed.end());
+  std::vector<std::vector<ModelAttractor>> cells(o.steps + 1);
+  for (const SweepPoint& p : points) {
+    const int i = p.pass == SweepPass::kDown ? o.steps - p.step : p.step;
+    std::vector<ModelAttractor>& cell = cells[i];
+    const auto same = std::find_if(cell.begin(), cell.end(), [&](const ModelAttractor& a) {
+      return p.period == 0 ? a.status == AttractorStatus::kNotSettled : SameSectionOrbit(a, p, o.periodicity_tolerance);
+    });
+    if (same == cell.end()) {
+      cell.push_back(AttractorOf(p));
+    } else {
+      ++same->starts;
+    }
+  }
+  std::vector<ModelAtlasAttractor> attractors;
+  for (int i = 0; i <= o.steps; ++i) {
+    for (std::size_t k = 0; k < cells[i].size(); ++k) {
+      ModelAtlasAttractor a{.grid = i, .value = grid[i], .index = static_cast<int>(k), .attractor = cells[i][k]};
+      if (a.attractor.status == AttractorStatus::kNotSettled) {
+        a.reason = fmt::format("{} run(s) settled on no period of at most {} on the section", a.attractor.starts,
+                               o.recorded_periods / 2);
+      } else if (a.attractor.period > o.max_multiple) {
+        a.fate = AttractorFate::kAboveLimit;
+        a.reason = fmt::format("period {} is above the period limit {}", a.attractor.period, o.max_multiple);
+      }
+      attractors.push_back(std::move(a));
+    }
+  }
+  return attractors;
+}
+
+// FindModelOrbit is asked about every attractor but one periodic above the limit: a run not settled
+// on the section may settle in its longer simulations.
+bool Asked(const ModelAtlasAttractor& a, int max_multiple) {
+  return a.attractor.status == AttractorStatus::kNotSettled || a.attractor.period <= max_multiple;
+}
+
+AttractorFate FateOfFind(const ModelFindResult<Model>& found) {
+  switch (found.status) {
+    case FindOrbitStatus::kFound: return AttractorFate::kOffBranch;  // until stage 3 places it
+    case FindOrbitStatus::kSimulationIncomplete: return AttractorFate::kIncomplete;
+    case FindOrbitStatus::kNoOrbitType: return MotionNotSettled(found) ? AttractorFate::kNotSettled : AttractorFate::kNoOrbitType;
+    default: return AttractorFate::kNotSolved;
+  }
+}
+
+// FindModelOrbit from the attractor's first section point (where a run not settled ended), its
+// simulation doubled while a longer one may find an orbit.
+ModelFindResult<Model> FoundFrom(const Model& model, const Model::Parameters& p, const ModelAtlasAttractor& a,
+                                 const ModelAtlasOptions& o) {
+  const double unit = model.Autonomous() ? o.time_unit : 2.0 * std::numbers::pi / model.ForcingFrequency(p);
+  ModelFindOptions find;
+  find.max_multiple = model.Autonomous() ? 1 : o.max_multiple;
+  ModelFindResult<Model> found;
+  for (int round = 0; round < o.find_rounds; ++round) {
+    find.duration = std::ldexp(o.find_periods * unit, round);
+    // As find --model reads it: the last 2 max_multiple + 2 forcing periods (at least ten), or half.
+    find.record = model.Autonomous() ? find.duration / 2 : std::min(find.duration, std::max(10, 2 * o.max_multiple + 2) * unit);
+    found = FindModelOrbit(model, p, a.attractor.section.front(), find);
+    if (!LongerMayFind(found)) break;
+  }
+  return found;
+}
+
+// Stage 2: the exact orbit of every attractor asked about, on every thread.
+void SolveAttractors(const Model& model, const Model::Parameters& base, std::vector<ModelAtlasAttractor>& attractors,
+                     const ModelAtlasOptions& o) {
+  std::vector<int> asked;
+  for (std::size_t k = 0; k < attractors.size(); ++k) {
+    if (Asked(attractors[k], o.max_multiple)) asked.push_back(static_cast<int>(k));
+  }
+  const int parameter = *model.Description().ParameterIndex(o.parameter);
+  std::mutex report;
+  int done = 0;
+  ParallelFor(static_cast<int>(asked.size()), o.threads, [&](int i) {
+    ModelAtlasAttractor& a = attractors[asked[i]];
+    Model::Parameters p = base;
+    Model::ParameterAt(p, parameter) = a.value;
+    a.found = FoundFrom(model, p, a, o);
+    a.fate = FateOfFind(*a.found);
+    a.reason = a.found->message;
+    if (!o.progress) return;
+    const std::lock_guard<std::mutex> lock(report);
+    o.progress({static_cast<double>(++done), static_cast<double>(asked.size()), "attractors solved", a.value});
+  });
+}
+
+// Stage 3 for one attractor at a time: placed on a branch traced before it, or on the trace started
+// from its exact orbit (and from the switches that trace confirmed and did not take).
+class Placer {
+ public:
+  Placer(ModelAtlas& atlas, const ModelAtlasOptions& options) : atlas_(atlas), options_(options) {
+    membership_ = options.membership;
+    membership_.parameter = options.parameter;
+    trace_ = options.trace;
+    trace_.record_other_switches = true;
+  }
+
+  void Place(int k) {
+    ModelAtlasAttractor& a = atlas_.attractors[k];
+    const BasicOrbit<Model>& orbit = a.found->solution->orbit;
+    if (PlaceOn(a)) return;
+    const bool traced = TraceIfNew({.attractor = k}, orbit, UnknownChoice{});
+    if (PlaceOn(a)) return;
+    const ModelAtlasTrace& last = atlas_.traces.back();
+    a.reason = traced ? fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
+                                    last.result.down.message, last.result.up.message)
+                      : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
+  }
+
+ private:
+  bool PlaceOn(ModelAtlasAttractor& a) {
+    const BranchMembership m = FindOnModelBranches(atlas_.model, a.found->solution->orbit, atlas_.Branches(), membership_);
+    a.reason = m.message;
+    if (!m.on_branch) return false;
+    a.fate = AttractorFate::kOnBranch;
+    a.branch = m.branch;
+    a.point = m.point;
+    return true;
+  }
+
+  BasicOrbitContinuationSetup<Model> SetupFrom(const BasicOrbit<Model>& start, const UnknownChoice& unknowns) const {
+    // In the belt's speed an antisymmetric orbit is written over its whole period (as find --model --trace).
+    const int k = *atlas_.model.Description().ParameterIndex(options_.parameter);
+    const bool unfold = k == Model::kRestVelocityParameter && start.signature.antisymmetric();
+    BasicOrbitContinuationSetup<Model> setup{unfold ? Unfolded(start, 1) : start, unknowns, options_.parameter,
+                                             ShootingChoice::kAuto, LinearSolverType::kKlu, options_.continuation,
+                                             {}, {}, {}, options_.trace.max_amplitude, options_.resonance_approach,
+                                             atlas_.model};
+    setup.options.parameter_name = options_.parameter;
+    setup.options.lambda_min = options_.from;
+    setup.options.lambda_max = options_.to;
+    return AtLeastPeriod(std::move(setup));
+  }
+
+  // Traces from `start` unless a branch holds it or max_traces is reached; then from every switch
+  // the new trace confirmed and did not take, in turn. True if `start` was traced.
+  bool TraceIfNew(ModelAtlasTrace from, const BasicOrbit<Model>& start, const UnknownChoice& unknowns) {
+    if (FindOnModelBranches(atlas_.model, start, atlas_.Branches(), membership_).on_branch) return false;
+    if (static_cast<int>(atlas_.traces.size()) >= options_.max_traces) return false;
+    from.result = TraceOrbits(SetupFrom(start, unknowns), trace_);
+    from.first_branch = static_cast<int>(atlas_.Branches().size());
+    for (const auto* chain : {&from.result.down, &from.result.up}) from.count += static_cast<int>(chain->links.size());
+    atlas_.traces.push_back(std::move(from));
+    const ModelAtlasTrace& added = atlas_.traces.back();
+    std::vector<std::pair<int, BasicTypeSwitch<Model>>> others;  // copied out: the traces below grow atlas_.traces
+    int branch = added.first_branch;
+    for (const auto* chain : {&added.result.down, &added.result.up}) {
+      for (const auto& link : chain->links) {
+        for (const auto& sw : link.other_switches) others.emplace_back(branch, sw);
+        ++branch;
+      }
+    }
+    const int attractor = added.attractor;
+    for (const auto& [at, sw] : others) {
+      TraceIfNew({.attractor = attractor, .from_branch = at, .adjacent = sw.adjacent->edit.signature.ToString()},
+                 AsBasicOrbit(sw.BranchStart()), sw.unknowns);
+    }
+    return true;
+  }
+
+  ModelAtlas& atlas_;
+  const ModelAtlasOptions& options_;
+  BranchMembershipOptions membership_;
+  TraceOptions trace_;
+};
+
+}  // namespace
+
+void ModelAtlasOptions::Validate(const Model& model, const Model::Parameters& base) const {
+  const std::optional<int> k = model.Description().ParameterIndex(parameter);
+  if (!k || (*k == Model::kForcingFrequencyParameter && model.Autonomous())) {
+    std::string names;
+    for (const ParameterDescription& d : model.Description().parameters) {
+      if (!(d.name == "omega" && model.Autonomous())) names += (names.empty() ? "" : ", ") + d.name;
+    }
+    throw InvalidInput("parameter", "'" + parameter + "'",
+                       model.Autonomous() ? names + " (omega plays no part without forcing: name one of these)" : names);
+  }
+  if (!(std::isfinite(from) && std::isfinite(to) && from < to)) {
+    throw InvalidInput("range", fmt::format("'{},{}'", from, to), "finite LO < HI");
+  }
+  CheckCount("steps", steps, 1, kMaxSteps);
+  CheckCount("transients", transient_periods, 0, kMaxPeriods);
+  CheckCount("periods", recorded_periods, 2, kMaxPeriods);
+  CheckCount("starts", scattered_starts, 0, kMaxScatteredStarts);
+  CheckCount("max-multiple", max_multiple, 1, ModelFindOptions::kMaxMultiple);
+  CheckCount("find-periods", find_periods, kMinFindPeriods, kMaxPeriods);
+  CheckCount("find-rounds", find_rounds, 1, kMaxFindRounds);
+  CheckCount("max-traces", max_traces, 1, AtlasOptions::kMaxTraces);
+  CheckCount("threads", threads, 0, 1024);
+  if (static_cast<long long>(steps + 1) * (scattered_starts + 3) > kMaxRuns) {
+    throw InvalidInput("steps", steps, fmt::format("(steps + 1) (starts + 3) <= {} runs", kMaxRuns));
+  }
+  if (!(scatter >= 0.0 && scatter <= 1e6)) throw InvalidInput("scatter", scatter, "0 <= scatter <= 1e6");
+  if (!(periodicity_tolerance >= 1e-14 && periodicity_tolerance <= 1e-2)) {
+    throw InvalidInput("tolerance", periodicity_tolerance, "1e-14 <= tolerance <= 1e-2");
+  }
+  if (model.Autonomous() && !(std::isfinite(time_unit) && time_unit > 0.0)) {
+    throw InvalidInput("time-unit", time_unit, "a finite time unit > 0 for a model without forcing");
+  }
+  if (2 * max_multiple > recorded_periods && !model.Autonomous()) {
+    throw InvalidInput("periods", recorded_periods,
+                       fmt::format("at least 2 x max-multiple = {} (a period of k is read off 2 k recorded periods)",
+                                   2 * max_multiple));
+  }
+  trace.Validate();
+  CheckResonanceLimits(trace.max_amplitude, resonance_approach);
+  membership.ValidateTolerances();
+  ContinuationOptions c = continuation;
+  c.parameter_index = 0;  // set for the trace's parameter
+  c.lambda_min = from;
+  c.lambda_max = to;
+  c.Validate();
+  // Every grid value one the model takes: the sweep refuses the others, naming them.
+  for (const double value : GridOf(*this)) {
+    Model::Parameters p = base;
+    Model::ParameterAt(p, *k) = value;
+    if (const std::optional<InvalidInput> invalid = model.Validate(p)) {
+      throw InvalidInput::WithMessage("range", fmt::format("range = '{},{}' is invalid: grid value {} = {}: {}", from,
+                                                           to, parameter, Model::ParameterAt(p, *k), invalid->what()));
+    }
+  }
+}
+
+std::vector<const ModelBranch*> ModelAtlas::Branches() const {
+  std::vector<const ModelBranch*> branches;
+  for (const ModelAtlasTrace& t : traces) {
+    for (const auto* chain : {&t.result.down, &t.result.up}) {
+      for (const auto& link : chain->links) branches.push_back(&link.branch);
+    }
+  }
+  return branches;
+}
+
+int ModelAtlas::PeriodicWithinLimit() const {
+  int n = 0;
+  for (const ModelAtlasAttractor& a : attractors) {
+    n += a.fate == AttractorFate::kOnBranch || a.fate == AttractorFate::kOffBranch || a.fate == AttractorFate::kNotSolved;
+  }
+  return n;
+}
+
+int ModelAtlas::OnBranches() const {
+  int n = 0;
+  for (const ModelAtlasAttractor& a : attractors) n += a.fate == AttractorFate::kOnBranch;
+  return n;
+}
+
+ModelAtlas ComputeModelAtlas(const Model& model, const Model::Parameters& base, const ModelAtlasOptions& options) {
+  options.Validate(model, base);
+  ModelAtlas atlas{.model = model, .parameter = options.parameter};
+  atlas.grid = GridOf(options);
+  atlas.attractors = BruteForce(model, base, options, atlas.grid);
+  SolveAttractors(model, base, atlas.attractors, options);
+  Placer placer(atlas, options);
+  for (std::size_t k = 0; k < atlas.attractors.size(); ++k) {
+    const ModelAtlasAttractor& a = atlas.attractors[k];
+    if (!a.found || a.found->status != FindOrbitStatus::kFound) continue;
+    placer.Place(static_cast<int>(k));
+    if (options.progress) {
+      options.progress({static_cast<double>(k + 1), static_cast<double>(atlas.attractors.size()), "attractors placed", a.value});
+    }
+  }
+  return atlas;
+}
+
+}  // namespace stickslip
