@@ -2,8 +2,6 @@
 // brute force on a grid, the exact orbit of every attractor, a trace from each one on no branch
 // yet; written to results/<output>/ (io/atlas_files.hpp).
 #include <chrono>
-#include <cstdint>
-#include <numbers>
 #include <memory>
 #include <string>
 
@@ -18,8 +16,7 @@
 #include "stickslip/io/atlas_files.hpp"
 #include "model_find.hpp"
 #include "stickslip/io/command_options.hpp"
-#include "stickslip/io/model_find.hpp"
-#include "stickslip/io/model_trace.hpp"
+#include "stickslip/io/model_atlas.hpp"
 #include "stickslip/io/run.hpp"
 
 namespace stickslip::cli {
@@ -52,7 +49,7 @@ std::pair<double, double> ParseRange(const std::string& text) {
   return {ParseNumber("range", text.substr(0, comma), valid), ParseNumber("range", text.substr(comma + 1), valid)};
 }
 
-AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
+AtlasCommand CommandOf(const AtlasArgs& args) {
   AtlasCommand c = WithBruteForceFlags(AtlasCommand{}, args.brute);
   c.parameter = args.parameter;
   std::tie(c.from, c.to) = ParseRange(args.range);
@@ -61,7 +58,7 @@ AtlasOptions OptionsOf(const AtlasArgs& args, const ModelStart& origin) {
   c.max_amplitude = args.max_amplitude;
   c.max_points = args.max_points;
   c.resonance_approach = args.resonance_approach;
-  return AtlasOptionsOf(c, origin);
+  return c;
 }
 
 template <typename AnyAtlas>
@@ -110,7 +107,7 @@ int RunAtlas(const AtlasArgs& args) {
   run.path = kOneOffRunPath;
   run.output = args.output;
   run.parameter = args.parameter;
-  AtlasOptions options = OptionsOf(args, origin);
+  AtlasOptions options = AtlasOptionsOf(CommandOf(args), origin);
   return ComputeAndWrite(
       run, args.origin.results,
       [&](ProgressCallback progress) {
@@ -118,28 +115,6 @@ int RunAtlas(const AtlasArgs& args) {
         return ComputeAtlas(origin.parameters, options);
       },
       [&](const Atlas& atlas) { return RecordAtlas(run, atlas, options); });
-}
-
-// The atlas of a [model]: the brute force's flags as the paper's, the model's own parameter names
-// and units; without forcing, periods of the slowest free oscillation of its slip (as find's).
-ModelAtlasOptions ModelAtlasOptionsOf(const AtlasArgs& args, const ModelFileStart& start) {
-  ModelAtlasOptions o;
-  o.parameter = args.parameter;
-  std::tie(o.from, o.to) = ParseRange(args.range);
-  o.steps = args.steps;
-  o.transient_periods = args.brute.transients;
-  o.recorded_periods = args.brute.periods;
-  o.scattered_starts = args.brute.starts;
-  o.scatter = args.brute.scatter;
-  o.seed = static_cast<std::uint64_t>(args.brute.seed);
-  o.periodicity_tolerance = args.brute.tolerance;
-  o.threads = args.brute.threads;
-  o.time_unit = 2.0 * std::numbers::pi / start.slowest_frequency;
-  o.max_multiple = args.max_multiple;
-  o.trace.max_amplitude = args.max_amplitude;
-  o.continuation.max_points = args.max_points;
-  o.resonance_approach = args.resonance_approach;
-  return o;
 }
 
 int RunModelAtlas(const AtlasArgs& args, const CLI::App& cmd) {
@@ -152,18 +127,16 @@ int RunModelAtlas(const AtlasArgs& args, const CLI::App& cmd) {
   const NamedValues set = ModelSetOf(args.origin.set);
   const ModelFileStart start = ReadModelFileStart(args.model, set);
   RunFile run;
-  run.path = set.empty() ? args.model : std::string(kOneOffRunPath);
   run.output = args.output;
   run.parameter = args.parameter;
-  ModelAtlasOptions options = ModelAtlasOptionsOf(args, start);
-  options.Validate(start.model, start.parameters);
+  ModelAtlasOptions options = ModelAtlasOptionsOf(CommandOf(args), start);
   return ComputeAndWrite(
       run, args.origin.results,
       [&](ProgressCallback progress) {
         options.progress = std::move(progress);
         return ComputeModelAtlas(start.model, start.parameters, options);
       },
-      [&](const ModelAtlas& atlas) { return RecordModelAtlas(run, atlas, options, SlipNaturalFrequencies(args.model)); });
+      [&](const ModelAtlas& atlas) { return StoredModelAtlas(atlas, options, args.model, set, args.output); });
 }
 
 }  // namespace
@@ -180,7 +153,7 @@ Command AddAtlasCommand(CLI::App& app) {
       "results/<output>/: trace-<t>/ (each a trace's directory), atlas.json, atlas-intervals.csv and brute-force.csv; "
       "`stickslip plot results/<output>` draws its frequency response. Exit 0 when it ran to its ends, whatever "
       "they were; 2 for bad input (nothing written). The files do not depend on --threads. Time is the paper's "
-      "scaled time.");
+      "scaled time (with --model the model's own).");
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--results", args->origin.results, "where the atlas is written (and --point read)")->capture_default_str();
   cmd->add_option("--output", args->output, "the atlas's directory name under --results (required)");
@@ -203,14 +176,16 @@ Command AddAtlasCommand(CLI::App& app) {
                   "a trace's branch of orbits that never stick ends as a resonance at its first point within this "
                   "(relative) of a natural frequency of the undamped slip that it approaches (0: never)");
   cmd->add_option("--model", args->model,
-                  "the atlas of the oscillator in this run file's [model] (see describe) instead of the paper's: "
-                  "--parameter one of the model's (omega, F_k, F_s, v_b; SI units), --set its parameters; the brute "
-                  "force runs from rest and --starts states scattered in the box |x| <= --scatter (the model's units) "
-                  "at every grid value, and from the neighbouring value's end both ways; --tolerance is relative to "
-                  "the section states' size. Without forcing (a belt) the section is the stick entry, --transients "
-                  "and --periods in units of its slowest free oscillation 2 pi/omega_1, and --parameter must be given "
-                  "(F_k, F_s or v_b). The mirror images of asymmetric orbits are not traced (the scattered starts must "
-                  "find both of a pair)");
+                  "the atlas of the oscillator in this run file's [model] (see describe) instead of the paper's, in "
+                  "its own units (SI): --parameter one of the model's (omega, F_k, F_s, v_b), --set its parameters, "
+                  "start state (x1_0, v1_0, ...) and phi; at every grid value the brute force runs from rest, from the "
+                  "start's state and --starts - 1 states scattered in the box |x - x0| <= --scatter around it, and "
+                  "from the neighbouring value's end both ways, read at forcing phase phi; --tolerance is relative to "
+                  "the section states' size, --max-amplitude in the model's units, --max-multiple at most 20 and "
+                  "--steps at least 1. Without forcing (a belt) --parameter must be given (F_k, F_s or v_b), the "
+                  "section is the stick entry, --transients counts periods of its slowest free oscillation 2 pi/"
+                  "omega_1 and the period limit is one stick-slip cycle. The mirror image of an asymmetric orbit is "
+                  "traced where the model has the symmetry (v_b = 0)");
   return {cmd, [args, cmd] {
             if (cmd->count("--range") == 0) throw InvalidInput("range", "(not given)", "--range LO,HI is required");
             if (cmd->count("--output") == 0) throw InvalidInput("output", "(not given)", "--output NAME is required");

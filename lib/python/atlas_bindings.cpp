@@ -13,6 +13,7 @@
 #include "stickslip/analysis/atlas.hpp"
 #include "stickslip/io/atlas_files.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_atlas.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip::python {
@@ -37,28 +38,44 @@ constexpr std::pair<const char*, double AtlasCommand::*> kAtlasNumbers[] = {
     {"resonance_approach", &AtlasCommand::resonance_approach},
 };
 
-// The atlas of `start` with the keywords `o`; the GIL is released while it runs, taken after
-// every stage's step to see Ctrl-C.
-StoredAtlas Atlas(const py::dict& start, const py::dict& o, const std::string& output) {
-  const ModelStart origin = BuildModelStart(ToStartInput(start));
+AtlasCommand CommandOf(const py::dict& o) {
   AtlasCommand c;
   c.parameter = o["parameter"].cast<std::string>();
   for (const auto& [key, member] : kAtlasNumbers) c.*member = o[key].cast<double>();
+  return c;
+}
+
+// `compute` run with the GIL released, taken after every stage's step to see Ctrl-C.
+template <typename Options, typename Compute>
+auto ComputeReleased(Options& options, Compute compute) {
+  const py::gil_scoped_release release;
+  options.progress = [](const Progress&) {
+    const py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+  return compute();
+}
+
+// The atlas of `start` with the keywords `o`.
+StoredAtlas Atlas(const py::dict& start, const py::dict& o, const std::string& output) {
+  const ModelStart origin = BuildModelStart(ToStartInput(start));
+  AtlasCommand c = CommandOf(o);
   AtlasOptions options = AtlasOptionsOf(c, origin);
   RunFile run;
   run.path = "(python)";
   run.output = output;
   run.parameter = c.parameter;
-  stickslip::Atlas atlas;
-  {
-    const py::gil_scoped_release release;
-    options.progress = [](const Progress&) {
-      const py::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    };
-    atlas = ComputeAtlas(origin.parameters, options);
-  }
+  const stickslip::Atlas atlas = ComputeReleased(options, [&] { return ComputeAtlas(origin.parameters, options); });
   return RecordAtlas(run, atlas, options);
+}
+
+// The atlas of the run file's [model] (`set` over it) with the keywords `o`.
+StoredAtlas ModelAtlasOf(const std::string& path, const NamedValues& set, const py::dict& o, const std::string& output) {
+  const ModelFileStart start = ReadModelFileStart(path, set);
+  ModelAtlasOptions options = ModelAtlasOptionsOf(CommandOf(o), start);
+  const ModelAtlas atlas =
+      ComputeReleased(options, [&] { return ComputeModelAtlas(start.model, start.parameters, options); });
+  return StoredModelAtlas(atlas, options, path, set, output);
 }
 
 std::vector<std::string> SaveAtlas(const StoredAtlas& atlas, const std::string& directory) {
@@ -89,6 +106,7 @@ void BindAtlas(py::module_& m) {
       .def_property_readonly("traces", [](const StoredAtlas& a) { return a.traces; })
       .def("save", &SaveAtlas, py::arg("directory"));
   m.def("_atlas", &Atlas, py::arg("start"), py::arg("options"), py::arg("output"));
+  m.def("_model_atlas", &ModelAtlasOf, py::arg("model"), py::arg("set"), py::arg("options"), py::arg("output"));
   m.def("_atlas_defaults", [] {
     const AtlasCommand c;
     py::dict d;

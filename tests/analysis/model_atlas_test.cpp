@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <string>
 #include <utility>
@@ -13,7 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include "stickslip/branches/model_branch_membership.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
+#include "stickslip/orbits/signature_edits.hpp"
 #include "support/belt_cycle.hpp"
 #include "support/den_hartog_orbit.hpp"
 #include "support/den_hartogs_mass.hpp"
@@ -55,6 +59,9 @@ TEST(ModelAtlas, FindsThePapersBifurcationsInOtherPhysicalUnits) {
   o.from = 0.55 * unit;
   o.to = 0.65 * unit;
   o.steps = 4;
+  // More starts than the paper's atlas takes: which attractors a brute force meets depends on its
+  // starts, and these are drawn in other units.
+  o.scattered_starts = 8;
   o.scatter = physical.Length(paper);
   const ModelAtlas atlas = ComputeModelAtlas(model, physical.Of<Model>(paper), o);
   ASSERT_GT(atlas.OnBranches(), 0);
@@ -140,28 +147,75 @@ TEST(ModelAtlas, TracesTheStickSlipCycleOfAMassOnABelt) {
   EXPECT_EQ(atlas.traces.size(), 1u);
 }
 
+// Section 4.1's masses in physical units over a window with several attractors per grid value,
+// traces and switches: everything the atlas holds, for one thread and two.
 TEST(ModelAtlas, DoesNotDependOnTheThreadCount) {
-  const Model model = DenHartogsMass();
+  const Parameters paper = SolvedPreset("paper-4.1").parameters;
+  const PhysicalTwoMasses physical;
+  const Model model(physical.Data(paper));
   ModelAtlasOptions o;
-  o.parameter = "omega";
-  o.from = 1.5;
-  o.to = 2.5;
+  o.from = 0.55 * physical.Omega(paper);
+  o.to = 0.65 * physical.Omega(paper);
   o.steps = 4;
+  o.scatter = physical.Length(paper);
   o.threads = 1;
-  const ModelAtlas one = ComputeModelAtlas(model, {1.5, 0.25, 0.25, 0.0}, o);
+  const ModelAtlas one = ComputeModelAtlas(model, physical.Of<Model>(paper), o);
   o.threads = 2;
-  const ModelAtlas two = ComputeModelAtlas(model, {1.5, 0.25, 0.25, 0.0}, o);
+  const ModelAtlas two = ComputeModelAtlas(model, physical.Of<Model>(paper), o);
+  ASSERT_GT(one.traces.size(), 1u);
   ASSERT_EQ(one.attractors.size(), two.attractors.size());
   for (std::size_t k = 0; k < one.attractors.size(); ++k) {
-    EXPECT_EQ(one.attractors[k].fate, two.attractors[k].fate);
-    EXPECT_EQ(one.attractors[k].attractor.section.front(), two.attractors[k].attractor.section.front());
+    const ModelAtlasAttractor &a = one.attractors[k], &b = two.attractors[k];
+    EXPECT_EQ(a.fate, b.fate);
+    EXPECT_EQ(a.branch, b.branch);
+    EXPECT_EQ(a.point, b.point);
+    EXPECT_EQ(a.reason, b.reason);
+    EXPECT_EQ(a.attractor.starts, b.attractor.starts);
+    EXPECT_EQ(a.attractor.section, b.attractor.section);
   }
   const auto a = one.Branches(), b = two.Branches();
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k) {
     ASSERT_EQ(a[k]->orbits.size(), b[k]->orbits.size());
-    EXPECT_EQ(a[k]->orbits.back().start, b[k]->orbits.back().start);
+    for (std::size_t i = 0; i < a[k]->orbits.size(); ++i) {
+      EXPECT_EQ(a[k]->orbits[i].start, b[k]->orbits[i].start);
+      EXPECT_EQ(a[k]->orbits[i].durations, b[k]->orbits[i].durations);
+    }
   }
+}
+
+// Membership judges the motion, not its description: Den Hartog's orbit read from its other stop
+// (half a period on) lies on the branch traced from it; the same orbit with its forcing a quarter
+// cycle off does not, nor does it at another amplitude.
+TEST(ModelAtlas, MembershipTakesAnotherOriginAndRefusesAnotherPhaseOrState) {
+  const Model model = DenHartogsMass();
+  ModelAtlasOptions o;
+  o.from = 1.5;
+  o.to = 2.5;
+  o.steps = 1;
+  const ModelAtlas atlas = ComputeModelAtlas(model, {1.5, 0.25, 0.25, 0.0}, o);
+  const ModelAtlasAttractor& a = atlas.attractors.front();
+  ASSERT_TRUE(a.found && a.found->solution);
+  const BasicOrbit<Model> whole = Unfolded(a.found->solution->orbit, 1);  // slip+ slip-
+  ASSERT_EQ(whole.signature.size(), 2);
+  BranchMembershipOptions options;
+  options.parameter = "omega";
+  // From the start of its second segment: the state there, the phase omega d1 later.
+  BasicOrbit<Model> other = whole;
+  other.signature = Signature::Parse("slip- slip+");
+  other.durations = {whole.durations[1], whole.durations[0]};
+  WalkSegments(model, whole, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double, Model>& s) {
+    if (s.index == 1) other.start = s.start, other.phi = s.phase;
+  });
+  EXPECT_TRUE(FindOnModelBranches(model, other, atlas.Branches(), options).on_branch);
+  BasicOrbit<Model> shifted = whole;
+  shifted.phi += std::numbers::pi / 2.0;
+  const BranchMembership off = FindOnModelBranches(model, shifted, atlas.Branches(), options);
+  EXPECT_FALSE(off.on_branch);
+  EXPECT_NEAR(off.distance, 0.25, 1e-9) << off.message;  // a quarter of a forcing cycle
+  BasicOrbit<Model> larger = whole;
+  larger.start *= 1.01;
+  EXPECT_FALSE(FindOnModelBranches(model, larger, atlas.Branches(), options).on_branch);
 }
 
 // Bad input is refused before any work, naming the field.
@@ -195,6 +249,7 @@ TEST(ModelAtlas, RefusesOptionsOutOfRangeNamingTheField) {
            {"find-rounds", [](ModelAtlasOptions& x) { x.find_rounds = 0; }},
            {"tolerance", [](ModelAtlasOptions& x) { x.periodicity_tolerance = 0.0; }},
            {"max_amplitude", [](ModelAtlasOptions& x) { x.trace.max_amplitude = -1.0; }},
+           {"centre", [](ModelAtlasOptions& x) { x.centre = Eigen::VectorXd::Zero(3); }},
        }) {
     ModelAtlasOptions bad = o;
     edit(bad);

@@ -374,6 +374,11 @@ echo mine > "$work/atlas1/chain41/trace-1/NOTES.md"
 "$bin" atlas --model "$models/belt-damped.toml" --parameter v_b --range 0.1,0.7 --steps 6 --transients 100 --output belt \
   --results "$work/atlas1" > "$work/belt.txt" && grep -q "^belt: .* 1 trace(s)" "$work/belt.txt" && pass ||
   fail "atlas --model of a belt: $(cat "$work/belt.txt")"
+# Friction falling with the slip speed turns propulsive past about 3.3 m/s: the motion from rest grows
+# without bound at v_b = 3, an attractor listed "incomplete" with the reason, not the end of the atlas.
+"$bin" atlas --model "$models/belt-falling-friction.toml" --parameter v_b --range 0.1,3 --steps 3 --output falling \
+  --results "$work/atlas1" > "$work/falling.txt" 2>&1 && grep -q "v_b = 3, attractor 2: incomplete: 1 run(s) stopped early" "$work/falling.txt" &&
+  pass || fail "atlas --model with a motion growing without bound: $(cat "$work/falling.txt")"
 expect 2 "parameter = 'omega' is invalid" "$bin" atlas --model "$models/belt.toml" --range 0.2,0.3 --output b --results "$work/out"
 expect 2 "range = '0.5,1' is invalid: grid value omega = 1" \
   "$bin" atlas --model "$models/den-hartog.toml" --range 0.5,1 --steps 5 --output d --results "$work/out"

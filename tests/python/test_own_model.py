@@ -114,3 +114,28 @@ def test_find_reads_a_subharmonic_from_a_given_start(tmp_path):
     assert found.orbit["period"] == pytest.approx(paper.orbit.period, rel=1e-12)
     assert found.orbit["measures"]["amplitude:x2"] == pytest.approx(paper.orbit.measures["amplitude:x2"], rel=1e-9)
     assert not stickslip.find(model=model, set=start, max_multiple=1).found
+
+
+def test_atlas_is_the_command_lines_files(tmp_path):
+    """stickslip.atlas(model=...) writes the bytes `stickslip atlas --model` writes (but the run file,
+    which records the Python call's output name as the command line's), and every attractor of the
+    damped belt it solves lies on the one stick-slip branch up to the fold."""
+    mapped = stickslip.atlas("v_b", (0.1, 0.7), model=MODELS / "belt-damped.toml", steps=6, transients=100,
+                             output="belt")
+    done = cli("atlas", "--model", MODELS / "belt-damped.toml", "--parameter", "v_b", "--range", "0.1,0.7",
+               "--steps", 6, "--transients", 100, "--output", "belt", "--results", tmp_path / "cli")
+    assert done.returncode == 0, done.stderr
+    assert mapped.save(tmp_path / "python" / "belt") == []
+    written = sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli").rglob("*") if p.is_file())
+    assert len(written) >= 8, written
+    for name in written:
+        assert (tmp_path / "python" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    assert mapped.json["model"] == "linear-oscillator"
+    assert mapped.counts["on_branches"] == mapped.counts["periodic_within_limit"] > 0
+    assert {a["exact_signature"] for a in mapped.attractors if a["fate"] == "on-branch"} == {"stick slip-"}
+    with pytest.raises(ValueError, match="preset is invalid with model="):
+        stickslip.atlas("v_b", (0.1, 0.7), model=MODELS / "belt-damped.toml", preset="paper-4.1")
+    with pytest.raises(ValueError) as python:
+        stickslip.atlas("omega", (0.2, 0.3), model=MODELS / "belt.toml")
+    assert str(python.value) == cli_error("atlas", "--model", MODELS / "belt.toml", "--range", "0.2,0.3",
+                                          "--output", "x", "--results", tmp_path / "none")

@@ -526,7 +526,8 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
           scatter=_ATLAS_DEFAULTS["scatter"], seed=_ATLAS_DEFAULTS["seed"], tolerance=_ATLAS_DEFAULTS["tolerance"],
           max_multiple=_ATLAS_DEFAULTS["max_multiple"], max_amplitude=_ATLAS_DEFAULTS["max_amplitude"],
           max_points=_ATLAS_DEFAULTS["max_points"], resonance_approach=_ATLAS_DEFAULTS["resonance_approach"],
-          threads=_ATLAS_DEFAULTS["threads"], output="atlas", preset=None, point=None, results="results", set=None):
+          threads=_ATLAS_DEFAULTS["threads"], output="atlas", preset=None, point=None, results="results", set=None,
+          model=None):
     """Every periodic motion over `range` = (min, max) of `parameter` (chi, eta, omega, u_s, u_r), as
     `stickslip atlas`: a brute force on steps + 1 grid values (rest, the neighbouring value's
     attractor and `starts` scattered states around the given state at each; transients, periods,
@@ -539,8 +540,21 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
     parameters, state, phi, preset, point, set: as simulate; output: the name atlas.json records.
     Returns an Atlas whatever it found (every attractor on a branch or listed with the reason); bad
     input raises ValueError. The GIL is released while it runs; the result does not depend on threads.
+
+    model=path: the atlas of the oscillator in that run file's [model] (set= a dict over its
+    parameters), as `stickslip atlas --model`: parameter one of the model's (omega, F_k, F_s, v_b),
+    scatter in its units around its start, tolerance relative; without forcing read on the
+    stick-entry section; mirror images traced where the model has the symmetry (v_b = 0).
     """
-    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    if model is None:
+        origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
+    else:
+        arguments = {"parameters": parameters, "state": state, "phi": phi, "preset": preset, "point": point}
+        given = [name for name, value in arguments.items() if value is not None]
+        given += ["results"] if results != "results" else []
+        if given:
+            raise ValueError(f"{given[0]} is invalid with model=: valid left out (the model's run file gives the "
+                             "oscillator and its parameters; set= its parameters)")
     low, high = _pair(range, "range")
     numbers = {"steps": steps, "transients": transients, "periods": periods, "starts": starts, "scatter": scatter,
                "seed": seed, "tolerance": tolerance, "threads": threads, "max_multiple": max_multiple,
@@ -548,5 +562,8 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
                "resonance_approach": resonance_approach}
     options = {"parameter": _checked(parameter, "parameter", "text"), "from": low, "to": high,
                **{name: _checked(value, name, "number") for name, value in numbers.items()}}
-    return Atlas(_core._atlas(origin, options, _checked(output, "output", "text")))
+    output = _checked(output, "output", "text")
+    if model is not None:
+        return Atlas(_core._model_atlas(_checked(model, "model", "path"), _model_set(set), options, output))
+    return Atlas(_core._atlas(origin, options, output))
 

@@ -22,7 +22,9 @@ class Atlas:
     atlas.attractors    one dict per brute-force attractor, with the grid value (value): status,
                         period, signature (the brute force's), starts, find (FindOrbit's status),
                         exact_signature, amplitude_x1, amplitude_x2, fate, branch
-                        ("trace-<t>/branch-<k>"), point, started_trace, reason
+                        ("trace-<t>/branch-<k>"), point, started_trace, reason; a [model]'s
+                        (atlas(model=...)) stops_per_period and sticks_per_period instead of the
+                        signature, and amplitude:<coordinate> for each of its coordinates
     atlas.traces        the traces, each a Trace (trace-1, trace-2, ...)
     atlas.intervals     atlas-intervals.csv's rows as dicts (trace, branch, signature, from, to,
                         stable, admissible, first_label, last_label, branch_end)

@@ -12,6 +12,7 @@
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
+#include "stickslip/orbits/orbit_origin.hpp"
 
 namespace stickslip {
 
@@ -33,6 +34,10 @@ std::vector<double> GridOf(const ModelAtlasOptions& o) {
   return grid;
 }
 
+// The longest period FindModelOrbit reads: max_multiple forcing periods, or one stick-slip cycle
+// without forcing.
+int PeriodLimit(const Model& model, const ModelAtlasOptions& o) { return model.Autonomous() ? 1 : o.max_multiple; }
+
 // The brute force's sweep options: every value from each start afresh (kFixed), or from the
 // neighbouring value's end up and down (kChained).
 SweepOptions SweepOf(const Model& model, const ModelAtlasOptions& o, SweepStart start) {
@@ -49,6 +54,7 @@ SweepOptions SweepOf(const Model& model, const ModelAtlasOptions& o, SweepStart 
   s.time_unit = o.time_unit;
   s.start = start;
   s.threads = o.threads;
+  s.record_incomplete = true;  // one motion that grows without bound ends as an attractor "incomplete"
   return s;
 }
 
@@ -74,9 +80,13 @@ bool SameSectionOrbit(const ModelAttractor& a, const SweepPoint& p, double toler
   return false;
 }
 
+AttractorStatus StatusOf(const SweepPoint& p) {
+  if (!p.incomplete.empty()) return AttractorStatus::kIncomplete;
+  return p.period > 0 ? AttractorStatus::kPeriodic : AttractorStatus::kNotSettled;
+}
+
 ModelAttractor AttractorOf(const SweepPoint& p) {
-  ModelAttractor a{p.period > 0 ? AttractorStatus::kPeriodic : AttractorStatus::kNotSettled,
-                   p.period, p.stops_per_period, p.sticks_per_period, p.contact_amplitude, 1, {}};
+  ModelAttractor a{StatusOf(p), p.period, p.stops_per_period, p.sticks_per_period, p.contact_amplitude, 1, {}, p.incomplete};
   a.section.assign(p.section.begin(), p.section.begin() + (p.period > 0 ? p.period : 1));
   if (p.period == 0) a.section.front() = p.section.back();
   return a;
@@ -86,8 +96,12 @@ ModelAttractor AttractorOf(const SweepPoint& p) {
 // by start, then the chained sweep's up and down passes).
 std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Parameters& base, const ModelAtlasOptions& o,
                                             const std::vector<double>& grid) {
-  const std::vector<Model::State> fresh =
-      ScatteredStarts<Model::State>(Model::State::Zero(model.StateSize()), o.scatter, 1 + o.scattered_starts, o.seed);
+  // Rest, then the given centre and states scattered around it (as the paper's brute force starts).
+  std::vector<Model::State> fresh = {Model::State::Zero(model.StateSize())};
+  for (Model::State& x : ScatteredStarts<Model::State>(o.centre.size() == 0 ? fresh.front() : o.centre, o.scatter,
+                                                       o.scattered_starts, o.seed)) {
+    fresh.push_back(std::move(x));
+  }
   SweepOptions fixed = SweepOf(model, o, SweepStart::kFixed);
   SweepOptions chained = SweepOf(model, o, SweepStart::kChained);
   const double total = static_cast<double>((o.steps + 1) * (fresh.size() + 2));
@@ -101,15 +115,17 @@ std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Par
   };
   fixed.progress = counted;
   chained.progress = counted;
-  std::vector<SweepPoint> points = Sweep(model, base, fresh, 0.0, fixed);
-  std::vector<SweepPoint> followed = Sweep(model, base, {fresh.front()}, 0.0, chained);
+  std::vector<SweepPoint> points = Sweep(model, base, fresh, o.section_phase, fixed);
+  std::vector<SweepPoint> followed = Sweep(model, base, {fresh.front()}, o.section_phase, chained);
   points.insert(points.end(), followed.begin(), followed.end());
   std::vector<std::vector<ModelAttractor>> cells(o.steps + 1);
   for (const SweepPoint& p : points) {
     const int i = p.pass == SweepPass::kDown ? o.steps - p.step : p.step;
     std::vector<ModelAttractor>& cell = cells[i];
+    // The runs not settled are one entry, as are those stopped early: they cannot be told apart.
     const auto same = std::find_if(cell.begin(), cell.end(), [&](const ModelAttractor& a) {
-      return p.period == 0 ? a.status == AttractorStatus::kNotSettled : SameSectionOrbit(a, p, o.periodicity_tolerance);
+      return StatusOf(p) == AttractorStatus::kPeriodic ? SameSectionOrbit(a, p, o.periodicity_tolerance)
+                                                       : a.status == StatusOf(p);
     });
     if (same == cell.end()) {
       cell.push_back(AttractorOf(p));
@@ -121,12 +137,17 @@ std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Par
   for (int i = 0; i <= o.steps; ++i) {
     for (std::size_t k = 0; k < cells[i].size(); ++k) {
       ModelAtlasAttractor a{.grid = i, .value = grid[i], .index = static_cast<int>(k), .attractor = cells[i][k]};
-      if (a.attractor.status == AttractorStatus::kNotSettled) {
+      if (a.attractor.status == AttractorStatus::kIncomplete) {
+        a.fate = AttractorFate::kIncomplete;
+        a.reason = fmt::format("{} run(s) stopped early, the first: {}", a.attractor.starts, a.attractor.incomplete);
+      } else if (a.attractor.status == AttractorStatus::kNotSettled) {
         a.reason = fmt::format("{} run(s) settled on no period of at most {} on the section", a.attractor.starts,
                                o.recorded_periods / 2);
-      } else if (a.attractor.period > o.max_multiple) {
+      } else if (a.attractor.period > PeriodLimit(model, o)) {
         a.fate = AttractorFate::kAboveLimit;
-        a.reason = fmt::format("period {} is above the period limit {}", a.attractor.period, o.max_multiple);
+        a.reason = model.Autonomous()
+                       ? fmt::format("{} stick-slip cycles to a period: find reads one", a.attractor.period)
+                       : fmt::format("period {} is above the period limit {}", a.attractor.period, o.max_multiple);
       }
       attractors.push_back(std::move(a));
     }
@@ -134,35 +155,41 @@ std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Par
   return attractors;
 }
 
-// FindModelOrbit is asked about every attractor but one periodic above the limit: a run not settled
-// on the section may settle in its longer simulations.
+// FindModelOrbit is asked about every attractor but one periodic above the limit or stopped early: a
+// run not settled on the section may settle in its longer simulations.
 bool Asked(const ModelAtlasAttractor& a, int max_multiple) {
-  return a.attractor.status == AttractorStatus::kNotSettled || a.attractor.period <= max_multiple;
+  return a.attractor.status == AttractorStatus::kNotSettled ||
+         (a.attractor.status == AttractorStatus::kPeriodic && a.attractor.period <= max_multiple);
 }
 
-AttractorFate FateOfFind(const ModelFindResult<Model>& found) {
+// As the paper's atlas decides: a motion that had not settled is one not settled unless the brute
+// force found it periodic (then find failed on it: not solved).
+AttractorFate FateOfFind(const ModelAttractor& a, const ModelFindResult<Model>& found) {
   switch (found.status) {
     case FindOrbitStatus::kFound: return AttractorFate::kOffBranch;  // until stage 3 places it
     case FindOrbitStatus::kSimulationIncomplete: return AttractorFate::kIncomplete;
-    case FindOrbitStatus::kNoOrbitType: return MotionNotSettled(found) ? AttractorFate::kNotSettled : AttractorFate::kNoOrbitType;
+    case FindOrbitStatus::kNoOrbitType:
+      if (!MotionNotSettled(found)) return AttractorFate::kNoOrbitType;
+      return a.status == AttractorStatus::kPeriodic ? AttractorFate::kNotSolved : AttractorFate::kNotSettled;
     default: return AttractorFate::kNotSolved;
   }
 }
 
-// FindModelOrbit from the attractor's first section point (where a run not settled ended), its
-// simulation doubled while a longer one may find an orbit.
+// FindModelOrbit from the attractor's first section point (where the first run not settled ended),
+// its simulation doubled while the motion it reads has not settled.
 ModelFindResult<Model> FoundFrom(const Model& model, const Model::Parameters& p, const ModelAtlasAttractor& a,
                                  const ModelAtlasOptions& o) {
   const double unit = model.Autonomous() ? o.time_unit : 2.0 * std::numbers::pi / model.ForcingFrequency(p);
   ModelFindOptions find;
-  find.max_multiple = model.Autonomous() ? 1 : o.max_multiple;
+  find.max_multiple = PeriodLimit(model, o);
+  find.phi0 = o.section_phase;
   ModelFindResult<Model> found;
   for (int round = 0; round < o.find_rounds; ++round) {
     find.duration = std::ldexp(o.find_periods * unit, round);
     // As find --model reads it: the last 2 max_multiple + 2 forcing periods (at least ten), or half.
     find.record = model.Autonomous() ? find.duration / 2 : std::min(find.duration, std::max(10, 2 * o.max_multiple + 2) * unit);
     found = FindModelOrbit(model, p, a.attractor.section.front(), find);
-    if (!LongerMayFind(found)) break;
+    if (!MotionNotSettled(found)) break;  // a permanent stick is one at any length
   }
   return found;
 }
@@ -181,9 +208,15 @@ void SolveAttractors(const Model& model, const Model::Parameters& base, std::vec
     ModelAtlasAttractor& a = attractors[asked[i]];
     Model::Parameters p = base;
     Model::ParameterAt(p, parameter) = a.value;
-    a.found = FoundFrom(model, p, a, o);
-    a.fate = FateOfFind(*a.found);
-    a.reason = a.found->message;
+    try {
+      a.found = FoundFrom(model, p, a, o);
+      a.fate = FateOfFind(a.attractor, *a.found);
+      a.reason = a.found->message;
+    } catch (const InvalidInput& e) {  // a solution the simulators refuse (a period <= 0, a state not finite)
+      a.found.reset();
+      a.fate = AttractorFate::kNotSolved;
+      a.reason = fmt::format("find cannot check its orbit: {}", e.what());
+    }
     if (!o.progress) return;
     const std::lock_guard<std::mutex> lock(report);
     o.progress({static_cast<double>(++done), static_cast<double>(asked.size()), "attractors solved", a.value});
@@ -204,13 +237,20 @@ class Placer {
   void Place(int k) {
     ModelAtlasAttractor& a = atlas_.attractors[k];
     const BasicOrbit<Model>& orbit = a.found->solution->orbit;
-    if (PlaceOn(a)) return;
-    const bool traced = TraceIfNew({.attractor = k}, orbit, UnknownChoice{});
-    if (PlaceOn(a)) return;
-    const ModelAtlasTrace& last = atlas_.traces.back();
-    a.reason = traced ? fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
-                                    last.result.down.message, last.result.up.message)
-                      : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
+    if (!PlaceOn(a)) {
+      const std::size_t own = atlas_.traces.size();  // the index its own trace takes (its switches' come after)
+      const bool traced = TraceIfNew({.attractor = k}, orbit, UnknownChoice{});
+      if (!PlaceOn(a)) {
+        a.reason = traced ? fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
+                                        atlas_.traces[own].result.down.message, atlas_.traces[own].result.up.message)
+                          : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
+      }
+    }
+    // The other motion of an asymmetric pair, whose basin the brute force may have missed, where the
+    // model has the symmetry (no belt speed).
+    if (!orbit.signature.antisymmetric() && Model::ParameterAt(orbit.parameters, Model::kRestVelocityParameter) == 0.0) {
+      TraceIfNew({.attractor = k, .mirror = true}, MirrorImage(orbit), UnknownChoice{});
+    }
   }
 
  private:
@@ -298,6 +338,12 @@ void ModelAtlasOptions::Validate(const Model& model, const Model::Parameters& ba
     throw InvalidInput("steps", steps, fmt::format("(steps + 1) (starts + 3) <= {} runs", kMaxRuns));
   }
   if (!(scatter >= 0.0 && scatter <= 1e6)) throw InvalidInput("scatter", scatter, "0 <= scatter <= 1e6");
+  if (centre.size() != 0 && centre.size() != model.StateSize()) {
+    throw InvalidInput("centre", fmt::format("a state of size {}", centre.size()), fmt::format("the model's, {}", model.StateSize()));
+  }
+  if (!centre.allFinite() || !std::isfinite(section_phase)) {
+    throw InvalidInput::WithMessage("centre", "centre or section_phase is invalid: valid finite numbers");
+  }
   if (!(periodicity_tolerance >= 1e-14 && periodicity_tolerance <= 1e-2)) {
     throw InvalidInput("tolerance", periodicity_tolerance, "1e-14 <= tolerance <= 1e-2");
   }

@@ -44,7 +44,7 @@ int SweptParameter(const SweepOptions& o) {
 
 // One point: transients from `start`, then the recorded section (SimulateSettled). Time 0 is a
 // section time (the forcing phase there is phi_section, as at every multiple of the period). A
-// simulation that stops early throws, naming the point.
+// simulation that stops early throws, naming the point, or is recorded so (record_incomplete).
 template <OscillatorModel Model>
 SweepPoint SimulatePoint(const Model& model, const typename Model::Parameters& base,
                          const typename Model::State& start, double phi_section, const SweepOptions& o, int chain,
@@ -56,9 +56,12 @@ SweepPoint SimulatePoint(const Model& model, const typename Model::Parameters& b
                              o.max_events_per_simulation, o.relative_tolerance, o.chunk_periods, o.time_unit};
   BasicSettledMotion<Model> motion = SimulateSettled(model, p, start, phi_section, settle);
   if (!motion.Completed()) {
-    throw std::runtime_error(fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain,
-                                         ToString(pass), step, model.Description().parameters[k].name,
-                                         Model::ParameterAt(p, k), motion.message));
+    std::string why = fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain, ToString(pass),
+                                  step, model.Description().parameters[k].name, Model::ParameterAt(p, k), motion.message);
+    if (!o.record_incomplete) throw std::runtime_error(why);
+    SweepPoint point{chain, pass, step, Model::ParameterAt(p, k), {Eigen::VectorXd(start)}, 0.0, 0.0, 0, 0.0, {}};
+    point.incomplete = std::move(why);
+    return point;
   }
   std::vector<Eigen::VectorXd> section(motion.section.begin(), motion.section.end());
   return SweepPoint{chain, pass, step, Model::ParameterAt(p, k), std::move(section), motion.stops_per_period,
@@ -75,7 +78,7 @@ std::vector<SweepPoint> ChainedPasses(const Model& model, const typename Model::
   for (SweepPass pass : {SweepPass::kUp, SweepPass::kDown}) {
     for (int step = 0; step <= o.steps; ++step) {
       points.push_back(SimulatePoint(model, base, x, phi_section, o, chain, pass, step));
-      x = points.back().section.back();
+      if (points.back().incomplete.empty()) x = points.back().section.back();
       point_done();
     }
   }

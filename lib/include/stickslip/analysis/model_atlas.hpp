@@ -6,17 +6,16 @@
 //      end both ways (a chained sweep from rest, up then down); the runs that end on the same
 //      section orbit (the same period, the same section points under a cyclic shift, to the
 //      tolerance times their size) are one attractor; the runs that settle on none are one
-//      "not-settled" entry. A model without forcing is read on its stick-entry section;
+//      "not-settled" entry, those whose simulation stopped early (a motion growing without bound)
+//      one "incomplete" entry. A model without forcing is read on its stick-entry section;
 //   2. exact orbits (model_orbit_finder.hpp): FindModelOrbit from every attractor of period up to
-//      max_multiple and from where the runs not settled ended, its simulation doubled (find_rounds
-//      simulations at most) while a longer one may find an orbit (LongerMayFind);
+//      max_multiple and from where the first run not settled ended, its simulation doubled
+//      (find_rounds simulations at most) while the motion it reads has not settled;
 //   3. traces (branches/model_trace.hpp), in grid order, from every exact orbit on no branch traced
-//      before it (branches/model_branch_membership.hpp decides, on the exact orbit), and from each
-//      confirmed switch a trace did not take at a branch's end that lies on none.
-// Every attractor ends accounted for, with the fates of the paper's atlas (AttractorFate). The
-// paper's atlas also traces the mirror image of an asymmetric orbit, which an oscillator of the
-// user's (a belt, forcing on several masses) need not have: here the brute force's scattered
-// starts must find both motions of a pair.
+//      before it (branches/model_branch_membership.hpp decides, on the exact orbit), from its mirror
+//      image where the model has the symmetry (no belt speed: orbits/orbit_origin.hpp), and from
+//      each confirmed switch a trace did not take at a branch's end that lies on none.
+// Every attractor ends accounted for, with the fates of the paper's atlas (AttractorFate).
 //
 // Stages 1 and 2 run on every thread; stage 3 is sequential: the result does not depend on the
 // thread count.
@@ -52,14 +51,21 @@ struct ModelAtlasOptions {
   // forcing, `time_unit`s). Periods up to recorded/2 are detected.
   int transient_periods = 300;  // 0 to kMaxPeriods
   int recorded_periods = 12;    // 2 to kMaxPeriods
-  int scattered_starts = 4;     // besides rest (0 to kMaxScatteredStarts)
-  double scatter = 1.0;         // the box |x|_inf <= scatter they are drawn from, in the model's units (0 to 1e6)
+  // Besides rest, at every grid value: `centre` (rest where empty), then states drawn from the box
+  // |x - centre|_inf <= scatter (in the model's units, 0 to 1e6); scattered_starts in all (0 to
+  // kMaxScatteredStarts).
+  int scattered_starts = 4;
+  Eigen::VectorXd centre;
+  double scatter = 1.0;
   std::uint64_t seed = 1;       // of the scattered starts (splitmix64)
   // Section points repeat, and two runs end on one attractor, within this times their size.
   double periodicity_tolerance = 1e-6;
   // Without forcing, the time counted as a period (> 0): the slowest free oscillation's 2 pi/omega_1.
   double time_unit = 0.0;
-  int max_multiple = 4;  // the period limit, forcing periods (1 to ModelFindOptions::kMaxMultiple)
+  double section_phase = 0.0;  // with forcing: the forcing phase at the section times (time 0 of every run)
+  // The period limit, forcing periods (1 to ModelFindOptions::kMaxMultiple); without forcing one
+  // stick-slip cycle, which is what FindModelOrbit reads.
+  int max_multiple = 4;
   // FindModelOrbit from an attractor: find_periods periods first, doubled while the motion read
   // has not settled, find_rounds simulations at most (1 to kMaxFindRounds).
   int find_periods = 100;  // kMinFindPeriods to kMaxPeriods
@@ -74,7 +80,7 @@ struct ModelAtlasOptions {
   ProgressCallback progress = {};
 
   static constexpr int kMaxSteps = 10000;
-  static constexpr int kMaxPeriods = 100000;
+  static constexpr int kMaxPeriods = 1000000;
   static constexpr int kMaxScatteredStarts = 1000;
   static constexpr int kMinFindPeriods = 2;
   static constexpr int kMaxFindRounds = 10;
@@ -95,25 +101,27 @@ struct ModelAttractor {
   double contact_amplitude = 0.0;  // max |q_c| over the recorded periods
   int starts = 0;                  // the runs that ended on it
   std::vector<Eigen::VectorXd> section;  // periodic: its `period` section points; else where the first run ended
+  std::string incomplete;  // kIncomplete: why the first run stopped early (the state it started from is the section's)
 };
 
 struct ModelAtlasAttractor {
   int grid = 0;        // the grid index
   double value = 0.0;  // the parameter there
   int index = 0;       // in its grid value's order
-  ModelAttractor attractor;
-  std::optional<ModelFindResult<DynamicLinearOscillator>> found;  // where FindModelOrbit ran
+  ModelAttractor attractor = {};
+  std::optional<ModelFindResult<DynamicLinearOscillator>> found = {};  // where FindModelOrbit ran
   AttractorFate fate = AttractorFate::kNotSettled;
   int branch = -1;  // kOnBranch: index into ModelAtlas::Branches()
   int point = -1;   // kOnBranch: the branch's point on the near side of the passage
-  std::string reason;
+  std::string reason = {};
 };
 
 struct ModelAtlasTrace {
   int attractor = 0;      // index into ModelAtlas::attractors: the one being placed when it started
+  bool mirror = false;    // started from the mirror image of the attractor's exact orbit
   int from_branch = -1;   // a switch at the end of Branches()[from_branch] another trace did not take; else -1
-  std::string adjacent;   // that switch's type
-  BasicTraceResult<DynamicLinearOscillator> result;
+  std::string adjacent = {};  // that switch's type
+  BasicTraceResult<DynamicLinearOscillator> result = {};
   int first_branch = 0;   // its branches are Branches()[first_branch, first_branch + count)
   int count = 0;
 };
@@ -121,17 +129,15 @@ struct ModelAtlasTrace {
 struct ModelAtlas {
   DynamicLinearOscillator model;
   std::string parameter;
-  std::vector<double> grid;  // the grid values
-  std::vector<ModelAtlasAttractor> attractors;  // by grid index, then in their grid value's order
-  std::vector<ModelAtlasTrace> traces;          // in the order started
+  std::vector<double> grid = {};  // the grid values
+  std::vector<ModelAtlasAttractor> attractors = {};  // by grid index, then in their grid value's order
+  std::vector<ModelAtlasTrace> traces = {};          // in the order started
   std::vector<const BasicOrbitBranch<DynamicLinearOscillator>*> Branches() const;
   int PeriodicWithinLimit() const;  // as Atlas's
   int OnBranches() const;
 };
 
-// The atlas of `model` around `base` (the parameter replaced at each grid value), forced models'
-// sections at forcing phase 0. Throws InvalidInput (Validate), std::runtime_error where a brute-force
-// simulation stops early (the sweep's, naming the point); every other outcome is recorded.
+// The atlas of `model` around `base` (the parameter replaced at each grid value). Throws InvalidInput (Validate); every numerical outcome is recorded.
 ModelAtlas ComputeModelAtlas(const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base,
                              const ModelAtlasOptions& options);
 

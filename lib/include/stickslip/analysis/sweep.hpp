@@ -59,6 +59,11 @@ struct SweepOptions {
   // The simulator's guard against chattering, per simulation (per transient chunk); reaching it fails the sweep with
   // an error naming the point, rather than recording a motion cut short.
   int max_events_per_simulation = 1000000;
+  // A simulation that stops early (that guard, or the event search's bound on a motion that grows
+  // without bound): false, the sweep throws naming the point; true, the point is recorded with its
+  // message (SweepPoint::incomplete), its section the state it started from, and a chained pass
+  // goes on from that state.
+  bool record_incomplete = false;
   int threads = 0;  // 0: every hardware thread. The result does not depend on it.
   // Called after every point with done = the points simulated so far and total = all of them
   // (unit "points"), from the worker threads but one call at a time, done increasing. Empty: no
@@ -82,6 +87,8 @@ struct SweepPoint {
   // (SettledMotion::contact_amplitude): the quantity a branch's `amplitude:<q_c>` measures over its
   // period, so the two are drawn on one axis.
   double contact_amplitude = 0.0;
+  // With SweepOptions::record_incomplete: why the simulation stopped early; "" when it ran its course.
+  std::string incomplete;
 };
 
 // One chain per state of `starts`, each taken as the state at forcing phase `phi_section`

@@ -2,11 +2,11 @@
 // orbit lies on one of a trace's branches, and where. The rule is the paper's: the same
 // least-period type up to the choice of origin, and at the orbit's value of the branch's parameter
 // (every other parameter equal) the branch's orbit there, solved by Newton from the interpolation of
-// its points on either side, is the same motion. The origins are any model's: the state and phase
-// at the start of each segment by the one walk (segment_walk.hpp), mirrored (-state, phase + pi) in
-// the second half of an antisymmetric orbit; the state is compared relative to the orbit's size
-// (OrbitSize: a model in physical units), the phase in forcing cycles (not at all without forcing,
-// whose phase is pinned by an event).
+// its points on either side, is the same motion. Both orbits are written over their whole period
+// (an antisymmetric one's mirrored half listed), so that every origin is a segment's start: its
+// state and phase by the one walk (segment_walk.hpp); the state is compared relative to the orbit's
+// size (OrbitSize: a model in physical units), the phase in forcing cycles (not at all without
+// forcing, whose phase is pinned by an event).
 //
 //   const BranchMembership m = FindOnModelBranches(model, found.solution->orbit, branches, {.parameter = "omega"});
 #pragma once
@@ -60,24 +60,22 @@ BasicOrbit<Model> LeastPeriodOf(const Model& model, const BasicOrbit<Model>& orb
 
 // The smallest mismatch between `orbit` and `candidate` over the candidate's origins whose
 // signature is the orbit's: the state relative to the candidate's size, the phase in forcing cycles
-// (modulo one; a forced model's only). Infinity when no origin gives the orbit's signature.
+// (modulo one; a forced model's only). Infinity when no origin gives the orbit's signature. Both are
+// written over their whole period (LeastPeriodOf): every origin is the start of a listed segment.
 template <OscillatorModel Model>
 double MismatchOverOrigins(const Model& model, const BasicOrbit<Model>& orbit, const BasicOrbit<Model>& candidate) {
   const double size = OrbitSize(model, candidate);
-  const int n = candidate.signature.size();
-  std::vector<std::pair<typename Model::State, double>> origins;  // the start state and phase of each listed segment
+  std::vector<std::pair<typename Model::State, double>> origins;  // the start state and phase of each segment
   WalkSegments(model, candidate, Extent::kListed, PhaseRule::kFromOrigin,
                [&](const SegmentVisit<double, Model>& s) { origins.emplace_back(s.start, s.phase); });
   double best = std::numeric_limits<double>::infinity();
-  for (int j = 0; j < OriginCount(candidate.signature); ++j) {
+  for (int j = 0; j < candidate.signature.size(); ++j) {
     if (WithOriginAt(candidate.signature, j) != orbit.signature) continue;
-    const bool mirrored = j >= n;
-    const auto& [start, phase] = origins[mirrored ? j - n : j];
-    const double sign = mirrored ? -1.0 : 1.0;
-    double mismatch = (orbit.start - sign * start).template lpNorm<Eigen::Infinity>() / size;
+    const auto& [start, phase] = origins[j];
+    double mismatch = (orbit.start - start).template lpNorm<Eigen::Infinity>() / size;
     if (!model.Autonomous()) {
-      const double turn = phase + (mirrored ? std::numbers::pi : 0.0) - orbit.phi;
-      mismatch = std::max(mismatch, std::abs(std::remainder(turn, 2.0 * std::numbers::pi)) / (2.0 * std::numbers::pi));
+      const double turn = std::remainder(phase - orbit.phi, 2.0 * std::numbers::pi);
+      mismatch = std::max(mismatch, std::abs(turn) / (2.0 * std::numbers::pi));
     }
     if (std::isfinite(mismatch)) best = std::min(best, mismatch);
   }

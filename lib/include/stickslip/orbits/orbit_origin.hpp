@@ -9,6 +9,9 @@
 //   for (int j = 0; j < OriginCount(orbit.signature); ++j) compare(WithOriginAt(orbit, j), other);
 #pragma once
 
+#include <numbers>
+#include <vector>
+
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/signature.hpp"
 
@@ -31,5 +34,19 @@ Orbit WithOriginAt(const Orbit& orbit, int j);
 // the phase phi + pi and every slip's direction reversed is a motion whenever X(t) is. An
 // antisymmetric orbit is its own (from another origin).
 Orbit MirrorImage(const Orbit& orbit);
+
+// The same of any model's orbit: a motion's mirror image is one where the model is odd under
+// x -> -x with the forcing half a period on, which a model whose contact slides on a fixed surface
+// is (a belt's speed breaks it: the caller decides).
+template <typename Model>
+BasicOrbit<Model> MirrorImage(const BasicOrbit<Model>& orbit) {
+  std::vector<Mode> modes;
+  for (Mode mode : orbit.signature.segments()) modes.push_back(Mirror(mode));
+  BasicOrbit<Model> mirrored = orbit;
+  mirrored.signature = Signature(modes, orbit.signature.antisymmetric(), orbit.signature.period_multiple());
+  mirrored.start = -orbit.start;
+  mirrored.phi = PhaseInCycle(orbit.phi + std::numbers::pi);
+  return mirrored;
+}
 
 }  // namespace stickslip
