@@ -4,6 +4,8 @@
 // non-sticking orbit; the closed-form stick-slip cycle of a mass on a belt.
 #include "stickslip/analysis/model_atlas.hpp"
 
+#include "stickslip/analysis/atlas.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/analysis/atlas_placement.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 #include "stickslip/orbits/orbit_origin.hpp"
@@ -116,12 +117,6 @@ void SolveAttractors(std::vector<AtlasAttractor>& attractors, const Parameters& 
   });
 }
 
-TraceOptions TraceOptionsOf(const AtlasOptions& options) {
-  TraceOptions trace = options.trace;
-  trace.record_other_switches = true;
-  return trace;
-}
-
 OrbitContinuationSetup TraceStart(const Orbit& start, const UnknownChoice& unknowns, const std::string& parameter,
                                   const AtlasOptions& options) {
   OrbitContinuationSetup setup{start, unknowns, parameter, ShootingChoice::kAuto, LinearSolverType::kKlu,
@@ -134,23 +129,21 @@ OrbitContinuationSetup TraceStart(const Orbit& start, const UnknownChoice& unkno
   return setup;
 }
 
-// Why an attractor is not on the trace started from it: where it was looked for, and how the trace's
-// directions ended (a resonance or a bound right at the start leaves a single point, no passage).
-std::string OwnTraceMissed(const std::string& where, const TraceResult& trace) {
-  return fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", where, trace.down.message,
-                     trace.up.message);
-}
-
-// Where `a`'s exact orbit lies among `branches` (indices offset by `first`).
-bool Place(AtlasAttractor& a, const std::vector<const OrbitBranch*>& branches, int first,
-           const BranchMembershipOptions& membership) {
-  const BranchMembership m = FindOnBranches(a.found->solution->orbit, branches, membership);
-  a.reason = m.message;
-  if (!m.on_branch) return false;
-  a.fate = AttractorFate::kOnBranch;
-  a.branch = first + m.branch;
-  a.point = m.point;
-  return true;
+// The paper's model in stage 3: its traces at least period, its membership, the mirror image of
+// every asymmetric orbit (the model is odd under x -> -x with the forcing half a period on).
+AtlasPlacementHooks<Pascal2014> PlacementOf(const std::string& parameter, const AtlasOptions& options) {
+  BranchMembershipOptions membership = options.membership;
+  membership.parameter = parameter;
+  return {
+      .setup = [parameter, &options](const Orbit& start, const UnknownChoice& unknowns) {
+        return AtLeastPeriod(TraceStart(start, unknowns, parameter, options));
+      },
+      .membership = [membership](const Orbit& orbit, const std::vector<const OrbitBranch*>& branches) {
+        return FindOnBranches(orbit, branches, membership);
+      },
+      .mirror = [](const Orbit& orbit) {
+        return orbit.signature.antisymmetric() ? std::nullopt : std::optional<Orbit>(MirrorImage(orbit));
+      }};
 }
 
 }  // namespace
@@ -199,66 +192,6 @@ int Atlas::OnBranches() const {
   return n;
 }
 
-namespace {
-
-// Stage 3 for the attractor `k`: placed on a branch traced before it, or on the trace started from
-// its exact orbit; then its mirror image traced where no branch holds it.
-class Placer {
- public:
-  Placer(Atlas& atlas, const AtlasOptions& options) : atlas_(atlas), options_(options), membership_(options.membership) {
-    membership_.parameter = atlas.parameter;
-  }
-
-  void Place(int k) {
-    AtlasAttractor& a = atlas_.attractors[k];
-    const Orbit& orbit = a.found->solution->orbit;
-    const UnknownChoice& unknowns = a.found->problem->unknowns;
-    if (!stickslip::Place(a, atlas_.Branches(), 0, membership_)) {
-      a.started_trace = TraceIfNew({.attractor = k}, orbit, unknowns);
-      const std::vector<const OrbitBranch*> branches = atlas_.Branches();
-      if (!stickslip::Place(a, branches, 0, membership_)) {
-        a.reason = a.started_trace ? OwnTraceMissed(a.reason, atlas_.traces.back().result)
-                                   : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
-      }
-    }
-    if (!orbit.signature.antisymmetric()) TraceIfNew({.attractor = k, .mirror = true}, MirrorImage(orbit), unknowns);
-  }
-
- private:
-  // Traces from `start` unless a branch holds it already or max_traces is reached; then from every
-  // switch a new trace confirmed but did not take, in turn. True if `start` was traced.
-  bool TraceIfNew(AtlasTrace from, const Orbit& start, const UnknownChoice& unknowns) {
-    if (FindOnBranches(start, atlas_.Branches(), membership_).on_branch) return false;
-    if (static_cast<int>(atlas_.traces.size()) >= options_.max_traces) return false;
-    from.result = TraceOrbits(AtLeastPeriod(TraceStart(start, unknowns, atlas_.parameter, options_)), TraceOptionsOf(options_));
-    from.first_branch = static_cast<int>(atlas_.Branches().size());
-    from.count = static_cast<int>(BranchesOf(from.result).size());
-    atlas_.traces.push_back(std::move(from));
-    // Copied out first: the traces below grow atlas_.traces.
-    const AtlasTrace& added = atlas_.traces.back();
-    std::vector<std::pair<int, TypeSwitch>> others;
-    int branch = added.first_branch;
-    for (const TraceDirection* chain : {&added.result.down, &added.result.up}) {
-      for (const TraceLink& link : chain->links) {
-        for (const TypeSwitch& sw : link.other_switches) others.emplace_back(branch, sw);
-        ++branch;
-      }
-    }
-    const int attractor = added.attractor;
-    for (const auto& [at, sw] : others) {
-      TraceIfNew({.attractor = attractor, .from_branch = at, .adjacent = sw.adjacent->edit.signature.ToString()},
-                 sw.BranchStart(), sw.unknowns);
-    }
-    return true;
-  }
-
-  Atlas& atlas_;
-  const AtlasOptions& options_;
-  BranchMembershipOptions membership_;
-};
-
-}  // namespace
-
 Atlas ComputeAtlas(const Parameters& base, const AtlasOptions& options) {
   options.Validate(base);
   const ParameterId parameter = options.brute_force.first.parameter;
@@ -268,11 +201,11 @@ Atlas ComputeAtlas(const Parameters& base, const AtlasOptions& options) {
   atlas.attractors = AttractorsOf(atlas.brute_force, options.max_multiple);
   SolveAttractors(atlas.attractors, base, parameter, atlas.brute_force.section_phase, options);
   // Stage 3, in grid order: whether an orbit needs a trace depends on the traces before it.
-  Placer placer(atlas, options);
+  AtlasPlacer<Pascal2014, Atlas> placer(atlas, PlacementOf(atlas.parameter, options), options.trace, options.max_traces);
   for (std::size_t k = 0; k < atlas.attractors.size(); ++k) {
     const AtlasAttractor& a = atlas.attractors[k];
     if (!a.found || !a.found->Found()) continue;
-    placer.Place(static_cast<int>(k));
+    placer.Place(static_cast<int>(k), a.found->solution->orbit, a.found->problem->unknowns);
     if (options.progress) {
       options.progress({static_cast<double>(k + 1), static_cast<double>(atlas.attractors.size()), "attractors placed", a.value});
     }

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "stickslip/analysis/atlas_placement.hpp"
 #include "stickslip/branches/model_branch_membership.hpp"
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
@@ -223,92 +224,34 @@ void SolveAttractors(const Model& model, const Model::Parameters& base, std::vec
   });
 }
 
-// Stage 3 for one attractor at a time: placed on a branch traced before it, or on the trace started
-// from its exact orbit (and from the switches that trace confirmed and did not take).
-class Placer {
- public:
-  Placer(ModelAtlas& atlas, const ModelAtlasOptions& options) : atlas_(atlas), options_(options) {
-    membership_ = options.membership;
-    membership_.parameter = options.parameter;
-    trace_ = options.trace;
-    trace_.record_other_switches = true;
-  }
-
-  void Place(int k) {
-    ModelAtlasAttractor& a = atlas_.attractors[k];
-    const BasicOrbit<Model>& orbit = a.found->solution->orbit;
-    if (!PlaceOn(a)) {
-      const std::size_t own = atlas_.traces.size();  // the index its own trace takes (its switches' come after)
-      const bool traced = TraceIfNew({.attractor = k}, orbit, UnknownChoice{});
-      if (!PlaceOn(a)) {
-        a.reason = traced ? fmt::format("its own trace does not pass through it ({}; down: {}; up: {})", a.reason,
-                                        atlas_.traces[own].result.down.message, atlas_.traces[own].result.up.message)
-                          : fmt::format("{}; max_traces = {} reached", a.reason, options_.max_traces);
-      }
-    }
-    // The other motion of an asymmetric pair, whose basin the brute force may have missed, where the
-    // model has the symmetry (no belt speed).
-    if (!orbit.signature.antisymmetric() && Model::ParameterAt(orbit.parameters, Model::kRestVelocityParameter) == 0.0) {
-      TraceIfNew({.attractor = k, .mirror = true}, MirrorImage(orbit), UnknownChoice{});
-    }
-  }
-
- private:
-  bool PlaceOn(ModelAtlasAttractor& a) {
-    const BranchMembership m = FindOnModelBranches(atlas_.model, a.found->solution->orbit, atlas_.Branches(), membership_);
-    a.reason = m.message;
-    if (!m.on_branch) return false;
-    a.fate = AttractorFate::kOnBranch;
-    a.branch = m.branch;
-    a.point = m.point;
-    return true;
-  }
-
-  BasicOrbitContinuationSetup<Model> SetupFrom(const BasicOrbit<Model>& start, const UnknownChoice& unknowns) const {
-    // In the belt's speed an antisymmetric orbit is written over its whole period (as find --model --trace).
-    const int k = *atlas_.model.Description().ParameterIndex(options_.parameter);
-    const bool unfold = k == Model::kRestVelocityParameter && start.signature.antisymmetric();
-    BasicOrbitContinuationSetup<Model> setup{unfold ? Unfolded(start, 1) : start, unknowns, options_.parameter,
-                                             ShootingChoice::kAuto, LinearSolverType::kKlu, options_.continuation,
-                                             {}, {}, {}, options_.trace.max_amplitude, options_.resonance_approach,
-                                             atlas_.model};
-    setup.options.parameter_name = options_.parameter;
-    setup.options.lambda_min = options_.from;
-    setup.options.lambda_max = options_.to;
-    return AtLeastPeriod(std::move(setup));
-  }
-
-  // Traces from `start` unless a branch holds it or max_traces is reached; then from every switch
-  // the new trace confirmed and did not take, in turn. True if `start` was traced.
-  bool TraceIfNew(ModelAtlasTrace from, const BasicOrbit<Model>& start, const UnknownChoice& unknowns) {
-    if (FindOnModelBranches(atlas_.model, start, atlas_.Branches(), membership_).on_branch) return false;
-    if (static_cast<int>(atlas_.traces.size()) >= options_.max_traces) return false;
-    from.result = TraceOrbits(SetupFrom(start, unknowns), trace_);
-    from.first_branch = static_cast<int>(atlas_.Branches().size());
-    for (const auto* chain : {&from.result.down, &from.result.up}) from.count += static_cast<int>(chain->links.size());
-    atlas_.traces.push_back(std::move(from));
-    const ModelAtlasTrace& added = atlas_.traces.back();
-    std::vector<std::pair<int, BasicTypeSwitch<Model>>> others;  // copied out: the traces below grow atlas_.traces
-    int branch = added.first_branch;
-    for (const auto* chain : {&added.result.down, &added.result.up}) {
-      for (const auto& link : chain->links) {
-        for (const auto& sw : link.other_switches) others.emplace_back(branch, sw);
-        ++branch;
-      }
-    }
-    const int attractor = added.attractor;
-    for (const auto& [at, sw] : others) {
-      TraceIfNew({.attractor = attractor, .from_branch = at, .adjacent = sw.adjacent->edit.signature.ToString()},
-                 AsBasicOrbit(sw.BranchStart()), sw.unknowns);
-    }
-    return true;
-  }
-
-  ModelAtlas& atlas_;
-  const ModelAtlasOptions& options_;
-  BranchMembershipOptions membership_;
-  TraceOptions trace_;
-};
+// A [model] in stage 3: its traces at least period (a belt's antisymmetric orbit over its whole
+// period in v_b, as find --model --trace), its membership, and the mirror image of an asymmetric
+// orbit where the model has the symmetry (no belt speed).
+AtlasPlacementHooks<Model> PlacementOf(const Model& model, const ModelAtlasOptions& options) {
+  BranchMembershipOptions membership = options.membership;
+  membership.parameter = options.parameter;
+  const int k = *model.Description().ParameterIndex(options.parameter);
+  return {
+      .setup = [&model, &options, k](const BasicOrbit<Model>& start, const UnknownChoice& unknowns) {
+        const bool unfold = k == Model::kRestVelocityParameter && start.signature.antisymmetric();
+        BasicOrbitContinuationSetup<Model> setup{unfold ? Unfolded(start, 1) : start, unknowns, options.parameter,
+                                                 ShootingChoice::kAuto, LinearSolverType::kKlu, options.continuation,
+                                                 {}, {}, {}, options.trace.max_amplitude, options.resonance_approach,
+                                                 model};
+        setup.options.parameter_name = options.parameter;
+        setup.options.lambda_min = options.from;
+        setup.options.lambda_max = options.to;
+        return AtLeastPeriod(std::move(setup));
+      },
+      .membership = [&model, membership](const BasicOrbit<Model>& orbit, const std::vector<const ModelBranch*>& branches) {
+        return FindOnModelBranches(model, orbit, branches, membership);
+      },
+      .mirror = [](const BasicOrbit<Model>& orbit) -> std::optional<BasicOrbit<Model>> {
+        const bool symmetric = Model::ParameterAt(orbit.parameters, Model::kRestVelocityParameter) == 0.0;
+        if (orbit.signature.antisymmetric() || !symmetric) return std::nullopt;
+        return MirrorImage(orbit);
+      }};
+}
 
 }  // namespace
 
@@ -332,7 +275,7 @@ void ModelAtlasOptions::Validate(const Model& model, const Model::Parameters& ba
   CheckCount("max-multiple", max_multiple, 1, ModelFindOptions::kMaxMultiple);
   CheckCount("find-periods", find_periods, kMinFindPeriods, kMaxPeriods);
   CheckCount("find-rounds", find_rounds, 1, kMaxFindRounds);
-  CheckCount("max-traces", max_traces, 1, AtlasOptions::kMaxTraces);
+  CheckCount("max-traces", max_traces, 1, kMaxTraces);
   CheckCount("threads", threads, 0, 1024);
   if (static_cast<long long>(steps + 1) * (scattered_starts + 3) > kMaxRuns) {
     throw InvalidInput("steps", steps, fmt::format("(steps + 1) (starts + 3) <= {} runs", kMaxRuns));
@@ -404,11 +347,11 @@ ModelAtlas ComputeModelAtlas(const Model& model, const Model::Parameters& base, 
   atlas.grid = GridOf(options);
   atlas.attractors = BruteForce(model, base, options, atlas.grid);
   SolveAttractors(model, base, atlas.attractors, options);
-  Placer placer(atlas, options);
+  AtlasPlacer<Model, ModelAtlas> placer(atlas, PlacementOf(atlas.model, options), options.trace, options.max_traces);
   for (std::size_t k = 0; k < atlas.attractors.size(); ++k) {
     const ModelAtlasAttractor& a = atlas.attractors[k];
     if (!a.found || a.found->status != FindOrbitStatus::kFound) continue;
-    placer.Place(static_cast<int>(k));
+    placer.Place(static_cast<int>(k), a.found->solution->orbit, UnknownChoice{});
     if (options.progress) {
       options.progress({static_cast<double>(k + 1), static_cast<double>(atlas.attractors.size()), "attractors placed", a.value});
     }

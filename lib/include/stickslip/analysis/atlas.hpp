@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/analysis/atlas_fate.hpp"
 #include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/branches/branch_membership.hpp"
@@ -75,17 +76,6 @@ struct AtlasOptions {
   void Validate(const Parameters& base) const;
 };
 
-// What became of one brute-force attractor.
-enum class AttractorFate {
-  kOnBranch,     // its exact orbit lies on a traced branch (branch, point)
-  kNotSettled,   // no period on the section, even after FindOrbit's longer transients
-  kAboveLimit,   // periodic with a period above max_multiple
-  kIncomplete,   // a simulation stopped early (chattering, the event search's bound)
-  kNoOrbitType,  // periodic, but no orbit type describes it (a permanent stick: no segment end)
-  kNotSolved,    // FindOrbit gave no exact orbit: its status and message say why
-  kOffBranch,    // solved, but on no branch, not even the one traced from it (the reason says why)
-};
-const char* ToString(AttractorFate fate);  // "on-branch", "not-settled", ...
 
 struct AtlasAttractor {
   int grid = 0;         // the grid index (the brute-force cell's i)

@@ -32,7 +32,8 @@
 
 #include <Eigen/Core>
 
-#include "stickslip/analysis/atlas.hpp"  // AttractorFate
+#include "stickslip/analysis/atlas_fate.hpp"
+#include "stickslip/analysis/brute_force_map.hpp"  // AttractorStatus
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/branches/branch_membership.hpp"
@@ -74,7 +75,7 @@ struct ModelAtlasOptions {
   TraceOptions trace;  // its max_amplitude in the model's units
   double resonance_approach = kDefaultResonanceApproach;
   BranchMembershipOptions membership;  // its parameter is the atlas's
-  int max_traces = 500;  // 1 to AtlasOptions::kMaxTraces
+  int max_traces = 500;  // 1 to kMaxTraces
   int threads = 0;       // 0: every hardware thread. The result does not depend on it.
   // Called per stage: "points" of the brute force, "attractors solved", "attractors placed".
   ProgressCallback progress = {};
@@ -84,6 +85,7 @@ struct ModelAtlasOptions {
   static constexpr int kMaxScatteredStarts = 1000;
   static constexpr int kMinFindPeriods = 2;
   static constexpr int kMaxFindRounds = 10;
+  static constexpr int kMaxTraces = 100000;
   // Brute-force runs of one atlas, at most: (steps + 1) x (scattered_starts + 3).
   static constexpr long long kMaxRuns = 10000000;
 
@@ -113,6 +115,7 @@ struct ModelAtlasAttractor {
   AttractorFate fate = AttractorFate::kNotSettled;
   int branch = -1;  // kOnBranch: index into ModelAtlas::Branches()
   int point = -1;   // kOnBranch: the branch's point on the near side of the passage
+  bool started_trace = false;  // the trace its exact orbit started is in ModelAtlas::traces
   std::string reason = {};
 };
 
