@@ -9,11 +9,19 @@
 //   build/release/tests/model_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
 // The ratio general/pascal of the medians of one run is the figure the general-oscillator issue asks for.
+// Last, the atlas of section 4.1's data both ways, its wall time split by stage (--benchmark_filter=Atlas).
+#include <chrono>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include <benchmark/benchmark.h>
 
+#include "stickslip/analysis/atlas.hpp"
+#include "stickslip/analysis/model_atlas.hpp"
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/model/pascal_2014.hpp"
@@ -192,6 +200,79 @@ BENCHMARK_TEMPLATE(Chain, 5, Eigen::Dynamic)->ArgName("margins")->Arg(0)->Arg(1)
 BENCHMARK_TEMPLATE(Chain, 10, Eigen::Dynamic)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(Chain, 20, Eigen::Dynamic)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(Chain, 50, Eigen::Dynamic)->ArgName("margins")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The atlas of section 4.1's data over omega in [0.3, 0.95] on its 66 grid values (as
+// results/atlases/paper-4.1-omega), on every core: the paper's (ComputeAtlas) and the same masses as
+// an oscillator of the user's in physical units (ComputeModelAtlas), the wall time split into its
+// three stages (brute force, exact orbits, traces) by when each stage's last progress report came.
+class StageClock {
+ public:
+  using Clock = std::chrono::steady_clock;
+  ProgressCallback Callback() {
+    return [this](const Progress& p) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      last_[p.unit] = Clock::now();
+    };
+  }
+  // Seconds from `from` to the last report of `unit` (`from` itself where there was none).
+  Clock::time_point Last(const std::string& unit, Clock::time_point from) const {
+    const auto it = last_.find(unit);
+    return it == last_.end() ? from : it->second;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, Clock::time_point> last_;
+};
+
+void ReportStages(benchmark::State& state, StageClock::Clock::time_point start, StageClock::Clock::time_point end,
+                  const StageClock& clock, const char* brute_unit) {
+  const auto brute = clock.Last(brute_unit, start), finds = clock.Last("attractors solved", brute);
+  const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+  state.counters["brute_force_s"] = seconds(start, brute);
+  state.counters["finds_s"] = seconds(brute, finds);
+  state.counters["traces_s"] = seconds(finds, end);
+}
+
+template <typename Compute>
+void AtlasStages(benchmark::State& state, Compute compute, const char* brute_unit) {
+  for (auto _ : state) {
+    StageClock clock;
+    const auto start = StageClock::Clock::now();
+    const auto counts = compute(clock.Callback());
+    const auto end = StageClock::Clock::now();
+    state.SetIterationTime(std::chrono::duration<double>(end - start).count());
+    ReportStages(state, start, end, clock, brute_unit);
+    state.counters["attractors"] = counts.first;
+    state.counters["on_branches"] = counts.second;
+  }
+}
+
+void PaperAtlas(benchmark::State& state) {
+  AtlasStages(state, [](ProgressCallback progress) {
+    AtlasOptions o;
+    o.brute_force.first = {ParameterId::kOmega, 0.3, 0.95, 65};
+    o.progress = std::move(progress);
+    const Atlas atlas = ComputeAtlas(Section41().parameters, o);
+    return std::pair{static_cast<double>(atlas.attractors.size()), static_cast<double>(atlas.OnBranches())};
+  }, "cells");
+}
+void ModelAtlasOfTheSameMasses(benchmark::State& state) {
+  AtlasStages(state, [](ProgressCallback progress) {
+    const Orbit o = Section41();
+    ModelAtlasOptions options;
+    options.from = 0.3 * kUnitTwoMasses.Omega(o.parameters);  // the model's time is not the paper's scaled one
+    options.to = 0.95 * kUnitTwoMasses.Omega(o.parameters);
+    options.steps = 65;
+    options.scatter = kUnitTwoMasses.Length(o.parameters);
+    options.progress = std::move(progress);
+    const DynamicLinearOscillator model(kUnitTwoMasses.Data(o.parameters));
+    const ModelAtlas atlas = ComputeModelAtlas(model, kUnitTwoMasses.Of<DynamicLinearOscillator>(o.parameters), options);
+    return std::pair{static_cast<double>(atlas.attractors.size()), static_cast<double>(atlas.OnBranches())};
+  }, "points");
+}
+BENCHMARK(PaperAtlas)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(ModelAtlasOfTheSameMasses)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace stickslip
