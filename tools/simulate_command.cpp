@@ -1,5 +1,6 @@
 // stickslip simulate: event-driven simulation from an initial state, exact or with Boost.Odeint.
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -16,7 +18,12 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/output_marker.hpp"
+#include "model_find.hpp"
+#include "stickslip/io/model_find.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/odeint_simulation.hpp"
 #include "stickslip/model/pascal_2014/odeint_simulator.hpp"
+#include "stickslip/model/transient.hpp"
 #include "stickslip/model/simulation.hpp"
 #include "stickslip/model/transient.hpp"
 
@@ -35,60 +42,76 @@ struct SimulateArgs {
   std::string max_events = "10000000";
   bool json = false;
   bool force = false;
+  std::string model;  // --model FILE: a user's oscillator (io/model_find.hpp)
 };
 
-// The CSV's header, its first line: the mark of a file that simulate may replace.
-constexpr std::string_view kCsvHeader = "t,x1,x2,v1,v2,mode";
+// The CSV's header, its first line: t, the state by the model's column names, mode (the paper's:
+// t,x1,x2,v1,v2,mode), the mark of a file that simulate may replace.
+std::string CsvHeader(const ModelDescription& d) { return fmt::format("t,{},mode", fmt::join(d.state_columns, ",")); }
 
-std::string StateJson(const State& x) {
-  return fmt::format("[{}, {}, {}, {}]", x(0), x(1), x(2), x(3));
+template <typename StateType>
+std::string StateJson(const StateType& x) {
+  std::vector<double> values(x.data(), x.data() + x.size());
+  return fmt::format("[{}]", fmt::join(values, ", "));
 }
 
 // The events as one JSON object, printed event by event (a long simulation has millions). The
-// printed times are the paper's absolute t: the simulation after a transient of t0 counts its
-// time from t0 (the forcing has the same phase there), and t0 is added back.
-void PrintEventsJson(const SimulationResult& result, double t0) {
+// printed times are absolute: the simulation after a transient of t0 counts its time from t0 (the
+// forcing has the same phase there), and t0 is added back.
+template <typename Result>
+void PrintEventsJson(const Result& result, double t0) {
   fmt::print("{{\"events\": [");
   for (std::size_t i = 0; i < result.events.size(); ++i) {
-    const Event& e = result.events[i];
+    const auto& e = result.events[i];
     fmt::print("{}{{\"t\": {}, \"kind\": \"{}\", \"mode_after\": \"{}\", \"state\": {}}}",
                i == 0 ? "" : ", ", t0 + e.t, ToString(e.kind), ToString(e.mode_after), StateJson(e.state));
   }
   fmt::print("]}}\n");
 }
 
-void PrintEventTable(const SimulationResult& result, double t0) {
-  fmt::print("{:>22} {:<14} {:<6} {:>22} {:>22} {:>22} {:>22}\n", "t", "event", "after", "x1", "x2", "x1'", "x2'");
-  for (const Event& e : result.events) {
-    const std::string kind =
-        e.IsAbnormalStop() ? std::string("abnormal-stop") : std::string(ToString(e.kind));
-    fmt::print("{:>22.15g} {:<14} {:<6} {:>22.15g} {:>22.15g} {:>22.15g} {:>22.15g}\n", t0 + e.t, kind,
-               ToString(e.mode_after), e.state(0), e.state(1), e.state(2), e.state(3));
+// One row per event, the state by the model's component names (the paper's x1, x2, x1', x2').
+template <typename Result>
+void PrintEventTable(const Result& result, double t0, const ModelDescription& d) {
+  std::string header = fmt::format("{:>22} {:<14} {:<6}", "t", "event", "after");
+  for (const std::string& name : d.state_components) header += fmt::format(" {:>22}", name);
+  fmt::print("{}\n", header);
+  for (const auto& e : result.events) {
+    const std::string kind = e.IsAbnormalStop() ? std::string("abnormal-stop") : std::string(ToString(e.kind));
+    std::string row = fmt::format("{:>22.15g} {:<14} {:<6}", t0 + e.t, kind, ToString(e.mode_after));
+    for (int i = 0; i < e.state.size(); ++i) row += fmt::format(" {:>22.15g}", e.state(i));
+    fmt::print("{}\n", row);
   }
 }
 
 // The largest --max-events: the events and segments a simulation keeps take about 150 bytes each.
 constexpr int kMaxEventsLimit = 10000000;
 
-int RunSimulate(const SimulateArgs& args) {
-  if (args.csv_given) {
-    const OutputMarker marker{"stickslip simulate", [](std::string_view line) { return line == kCsvHeader; }};
-    CheckReplaceableOutputFile(args.csv_path, "csv", marker, args.force);
-  }
-  const ModelStart input = BuildModelStart(ToStartInput(args.start));
+// One simulation, as every model runs it: what is to be simulated and how it is described.
+template <typename Model>
+struct Simulation {
+  const Model& model;
+  typename Model::Parameters parameters;
+  typename Model::State x0;
+  double phi = 0.0;
+  // The forcing's frequency, or without forcing the slowest free oscillation's: --periods and
+  // --transients count its periods 2 pi/frequency.
+  double frequency = 1.0;
+  // The lines before the table: the data and the start, then (given the transient's end) where the
+  // shown part starts.
+  std::function<void(const BasicTransient<typename Model::State>&, int transients, double periods)> describe;
+};
+
+// The transient (not shown), then --periods shown: the table, --json or --csv, and the exit code.
+template <typename Model, typename Simulate>
+int SimulateAndReport(const Simulation<Model>& sim, const Simulate& simulate, const SimulateArgs& args) {
+  using ModelState = typename Model::State;
   const double periods = ParseNumber("periods", args.periods, "0 < periods <= 1e6");
   const double samples_per_period =
       ParseNumber("samples-per-period", args.samples_per_period, "1 <= samples-per-period <= 1e5");
-  SimulationOptions options = SimulationOver(input.parameters, periods, samples_per_period, args.csv_given);
+  auto options = SimulationOver<ModelState>(2.0 * std::numbers::pi / sim.frequency, periods, samples_per_period,
+                                            args.csv_given);
   const int transients = ParseCount("transients", args.transients, 0, kMaxTransientPeriods);
-  const int max_events = ParseCount("max-events", args.max_events, 1, kMaxEventsLimit);
-  const double period = 2.0 * std::numbers::pi / input.parameters.omega;
-  const Simulator simulate =
-      args.method == "exact"
-          ? Simulator(SimulateExact)
-          : Simulator([](const Parameters& p, const State& x0, double phi, const SimulationOptions& o) {
-              return SimulateOdeint(p, x0, phi, o);
-            });
+  options.max_events = ParseCount("max-events", args.max_events, 1, kMaxEventsLimit);
   ProgressLine line("simulate");
   // One line over the transient and the shown periods.
   auto reporting = [&](double offset) -> ProgressCallback {
@@ -97,48 +120,37 @@ int RunSimulate(const SimulateArgs& args) {
       line.Update({offset + p.done, total, "periods"});
     };
   };
-  TransientOptions transient;
+  BasicTransientOptions<ModelState> transient;
   transient.periods = transients;
   transient.simulation.progress = reporting(0.0);
-  const Transient settled =
-      SimulateTransient(simulate, input.parameters, input.initial_state, input.phi, transient);
+  const auto settled =
+      SimulateTransientAt(sim.frequency, simulate, sim.parameters, sim.x0, sim.phi, transient);
   if (!settled.Completed()) {
     line.Clear();
     fmt::print(stderr, "error: simulation incomplete in the transient: {}\n", settled.message);
     return kExitFailure;
   }
   const double t0 = settled.t;
-  options.max_events = max_events;
   options.progress = reporting(transients);
   // The time series goes to the file sample by sample (1e6 periods at 1e5 samples each would
   // not fit in memory), and the file appears, whole, once the simulation has ended.
   std::optional<AtomicFileWriter> csv;
   if (args.csv_given) {
     csv.emplace(args.csv_path);
-    csv->Write(fmt::format("{}\n", kCsvHeader));
-    options.on_sample = [&csv, t0](const TimeSample& s, Mode mode) {
-      csv->Write(fmt::format("{},{},{},{},{},{}\n", t0 + s.t, s.state(0), s.state(1), s.state(2), s.state(3),
-                             ToString(mode)));
+    csv->Write(CsvHeader(sim.model.Description()) + "\n");
+    options.on_sample = [&csv, t0](const BasicTimeSample<ModelState>& s, Mode mode) {
+      std::vector<double> values(s.state.data(), s.state.data() + s.state.size());
+      csv->Write(fmt::format("{},{},{}\n", t0 + s.t, fmt::join(values, ","), ToString(mode)));
     };
   }
-  const SimulationResult result = simulate(input.parameters, settled.state, input.phi, options);
+  const auto result = simulate(sim.parameters, settled.state, sim.phi, options);
   line.Clear();
   if (csv) csv->Commit();
   if (args.json) {
     PrintEventsJson(result, t0);
   } else {
-    const State& x = input.initial_state;
-    fmt::print("stickslip simulate{}: {}\n", args.start.preset.empty() ? "" : " " + args.start.preset,
-               DescribeParameters(input.parameters));
-    fmt::print("start: x10={} x20={} v10={} v20={} phi={}; {} period(s) of 2 pi/omega = {}; "
-               "method {}\n",
-               x(0), x(1), x(2), x(3), input.phi, periods, period, args.method);
-    if (transient.periods > 0) {
-      const State& y = settled.state;
-      fmt::print("after {} transient period(s), not shown: t={} x1={} x2={} x1'={} x2'={}\n", transient.periods, t0,
-                 y(0), y(1), y(2), y(3));
-    }
-    PrintEventTable(result, t0);
+    sim.describe(settled, transients, periods);
+    PrintEventTable(result, t0, sim.model.Description());
     fmt::print("{} event(s), {} segment(s){}\n", result.events.size(), result.segments.size(),
                !args.csv_given ? "" : fmt::format("; time series written to {}", args.csv_path));
   }
@@ -148,6 +160,88 @@ int RunSimulate(const SimulateArgs& args) {
     return kExitFailure;
   }
   return kExitOk;
+}
+
+// A file --csv may replace: one whose first line is the CSV header simulate writes for this model.
+void CheckCsv(const SimulateArgs& args, const ModelDescription& d) {
+  if (!args.csv_given) return;
+  const OutputMarker marker{"stickslip simulate", [header = CsvHeader(d)](std::string_view line) { return line == header; }};
+  CheckReplaceableOutputFile(args.csv_path, "csv", marker, args.force);
+}
+
+int RunSimulate(const SimulateArgs& args) {
+  const Pascal2014 model;
+  CheckCsv(args, model.Description());
+  const ModelStart input = BuildModelStart(ToStartInput(args.start));
+  const Simulation<Pascal2014> sim{
+      model, input.parameters, input.initial_state, input.phi, input.parameters.omega,
+      [&](const Transient& settled, int transients, double periods) {
+        const State& x = input.initial_state;
+        fmt::print("stickslip simulate{}: {}\n", args.start.preset.empty() ? "" : " " + args.start.preset,
+                   DescribeParameters(input.parameters));
+        fmt::print("start: x10={} x20={} v10={} v20={} phi={}; {} period(s) of 2 pi/omega = {}; method {}\n", x(0), x(1),
+                   x(2), x(3), input.phi, periods, 2.0 * std::numbers::pi / input.parameters.omega, args.method);
+        if (transients > 0) {
+          const State& y = settled.state;
+          fmt::print("after {} transient period(s), not shown: t={} x1={} x2={} x1'={} x2'={}\n", transients,
+                     settled.t, y(0), y(1), y(2), y(3));
+        }
+      }};
+  if (args.method == "exact") {
+    return SimulateAndReport(sim, [](const Parameters& p, const State& x, double phi, const SimulationOptions& o) {
+      return SimulateExact(p, x, phi, o);
+    }, args);
+  }
+  return SimulateAndReport(sim, [](const Parameters& p, const State& x, double phi, const SimulationOptions& o) {
+    return SimulateOdeint(p, x, phi, o);
+  }, args);
+}
+
+// simulate --model: the run file's oscillator from the start it and --set give; without forcing
+// --periods counts periods of the slowest free oscillation of its slip (as find's).
+int RunModelSimulate(const SimulateArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"--preset", "--point"}) {
+    if (cmd.count(option) != 0) {
+      throw InvalidInput::WithMessage(option + 2, fmt::format("{} is not taken with --model: the run file's [model] and "
+                                                              "--set give the oscillator, its parameters and its start",
+                                                              option));
+    }
+  }
+  using Model = DynamicLinearOscillator;
+  const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.start.set));
+  CheckCsv(args, start.model.Description());
+  const double frequency = start.model.Autonomous() ? start.slowest_frequency : start.parameters.omega;
+  const ModelDescription& d = start.model.Description();
+  const auto named = [](const std::vector<std::string>& names, const Eigen::VectorXd& x) {
+    std::string text;
+    for (int i = 0; i < x.size(); ++i) text += fmt::format("{}{}={}", i == 0 ? "" : " ", names[i], x(i));
+    return text;
+  };
+  const Simulation<Model> sim{
+      start.model, start.parameters, start.state, start.phi, frequency,
+      [&](const BasicTransient<Model::State>& settled, int transients, double periods) {
+        std::string parameters;
+        for (int k = 0; k < Model::kParameterCount; ++k) {
+          parameters += fmt::format("{}{}={}", k == 0 ? "" : " ", d.parameters[k].name, Model::ParameterAt(start.parameters, k));
+        }
+        fmt::print("stickslip simulate --model {}: {}\n", args.model, parameters);
+        fmt::print("start: {} phi={}; {} period(s) of {} = {}; method {}\n", named(d.initial_state, start.state), start.phi,
+                   periods, start.model.Autonomous() ? "2 pi/omega_1 (the slowest free oscillation)" : "2 pi/omega",
+                   2.0 * std::numbers::pi / frequency, args.method);
+        if (transients > 0) {
+          fmt::print("after {} transient period(s), not shown: t={} {}\n", transients, settled.t,
+                     named(d.state_components, settled.state));
+        }
+      }};
+  using Options = BasicSimulationOptions<Model::State>;
+  if (args.method == "exact") {
+    return SimulateAndReport(sim, [&](const Model::Parameters& p, const Model::State& x, double phi, const Options& o) {
+      return SimulateExact(start.model, p, x, phi, o);
+    }, args);
+  }
+  return SimulateAndReport(sim, [&](const Model::Parameters& p, const Model::State& x, double phi, const Options& o) {
+    return SimulateOdeint(start.model, p, x, phi, o);
+  }, args);
 }
 
 }  // namespace
@@ -195,7 +289,14 @@ Command AddSimulateCommand(CLI::App& app) {
   cmd->add_flag("--json", args->json,
                 "print one JSON object {\"events\": [{\"t\", \"kind\", \"mode_after\", "
                 "\"state\": [x1, x2, x1', x2']}]} instead of the table");
-  return {cmd, [args] { return RunSimulate(*args); }};
+  cmd->add_option("--model", args->model,
+                  "simulate the oscillator in this run file's [model] (see describe) instead of the paper's, in its "
+                  "own units (SI): from the file's start (rest unless it gives one) and --set's parameters, start "
+                  "state (x1_0, v1_0, ...) and phi; the table, --json and the CSV (t, the model's state columns, mode) "
+                  "name its coordinates. Without forcing --periods and --transients count periods of its slowest free "
+                  "oscillation 2 pi/omega_1")
+      ->type_name("FILE");
+  return {cmd, [args, cmd] { return args->model.empty() ? RunSimulate(*args) : RunModelSimulate(*args, *cmd); }};
 }
 
 }  // namespace stickslip::cli

@@ -389,4 +389,33 @@ expect 2 "preset is not taken with --model" \
 expect 2 "output = '' is invalid" "$bin" atlas --model "$models/den-hartog.toml" --range 1.5,2 --output "" --results "$work/out"
 mkdir -p "$work/out/mine"
 expect 2 "holds no stickslip atlas" "$bin" atlas --model "$models/den-hartog.toml" --range 1.5,2 --output mine --results "$work/out"
+# simulate --model: Den Hartog's mass after 100 forcing periods stops at +-X(r, beta), his closed form
+# (V = 1/(1 - r^2), U = tan(pi/(2r))/r, X = sqrt(V^2 - beta^2 U^2)); the exact and the Odeint
+# simulators agree on the belt's events; the CSV names the model's state columns.
+"$bin" simulate --model "$models/den-hartog.toml" --transients 100 --periods 1 --json > "$work/dh-sim.json" &&
+  "$bin" simulate --model "$models/belt.toml" --periods 3 --json > "$work/belt-exact.json" &&
+  "$bin" simulate --model "$models/belt.toml" --periods 3 --json --method odeint > "$work/belt-odeint.json" &&
+  "$bin" simulate --model "$models/belt.toml" --periods 1 --csv "$work/belt-sim.csv" > /dev/null && pass ||
+  fail "simulate --model"
+/usr/bin/python3 - "$work" <<'PY' && pass || fail "simulate --model against Den Hartog's closed form and Odeint"
+import json, math, sys
+work = sys.argv[1]
+r, beta = 1.5, 0.25
+V, U = 1 / (1 - r * r), math.tan(math.pi / (2 * r)) / r
+X = math.sqrt(V * V - beta * beta * U * U)
+events = json.load(open(work + "/dh-sim.json"))["events"]
+assert len(events) == 2 and all(abs(abs(e["state"][0]) - X) <= 1e-9 for e in events), (events, X)
+assert all(e["t"] >= 100 * 2 * math.pi / r for e in events), events
+exact = json.load(open(work + "/belt-exact.json"))["events"]
+odeint = json.load(open(work + "/belt-odeint.json"))["events"]
+assert len(exact) == len(odeint) >= 4, (len(exact), len(odeint))
+assert all(a["kind"] == b["kind"] and abs(a["t"] - b["t"]) <= 1e-6 for a, b in zip(exact, odeint)), (exact, odeint)
+assert open(work + "/belt-sim.csv").readline() == "t,m1,v_m1,mode\n"
+PY
+expect 2 "phi = 1 is invalid: the model has no forcing" "$bin" simulate --model "$models/belt.toml" --set phi=1
+expect 2 "preset is not taken with --model" "$bin" simulate --model "$models/belt.toml" --preset paper-4.1
+echo mine > "$work/out/notes.csv"
+expect 2 "it exists and was not written by stickslip simulate" \
+  "$bin" simulate --model "$models/belt.toml" --csv "$work/out/notes.csv"
+expect 2 "periods" "$bin" simulate --model "$models/den-hartog.toml" --periods 0
 finish

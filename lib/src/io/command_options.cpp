@@ -67,15 +67,7 @@ RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::st
 }
 
 SimulationOptions SimulationOver(const Parameters& p, double periods, double samples_per_period, bool sampled) {
-  if (!(periods > 0.0 && periods <= 1e6)) throw InvalidInput("periods", periods, "0 < periods <= 1e6");
-  if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
-    throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
-  }
-  const double period = 2.0 * std::numbers::pi / p.omega;
-  SimulationOptions options;
-  options.duration = periods * period;
-  if (sampled) options.sample_step = period / samples_per_period;
-  return options;
+  return SimulationOver<State>(2.0 * std::numbers::pi / p.omega, periods, samples_per_period, sampled);
 }
 
 void SetRunFileStart(const StartInput& input, RunFile* run) {

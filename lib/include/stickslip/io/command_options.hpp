@@ -20,6 +20,7 @@
 #include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/analysis/sweep.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -39,9 +40,22 @@ inline constexpr std::string_view kOneOffRunPath = "(command line)";
 // (io/start_input.hpp) when the point cannot be read.
 RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::string_view run_and_label);
 
-// simulate: `periods` forcing periods 2 pi/omega of simulated time (0 < periods <= 1e6), and a
-// sample every 1/samples_per_period of a period (1 <= samples_per_period <= 1e5) when `sampled`.
-// Throws InvalidInput naming "periods" or "samples-per-period".
+// simulate: `periods` periods of simulated time (0 < periods <= 1e6), each `period` long (the
+// forcing's 2 pi/omega; without forcing a model's time unit), and a sample every
+// 1/samples_per_period of a period (1 <= samples_per_period <= 1e5) when `sampled`. Throws
+// InvalidInput naming "periods" or "samples-per-period".
+template <typename StateType>
+BasicSimulationOptions<StateType> SimulationOver(double period, double periods, double samples_per_period, bool sampled) {
+  if (!(periods > 0.0 && periods <= 1e6)) throw InvalidInput("periods", periods, "0 < periods <= 1e6");
+  if (!(samples_per_period >= 1.0 && samples_per_period <= 1e5)) {
+    throw InvalidInput("samples-per-period", samples_per_period, "1 <= samples-per-period <= 1e5");
+  }
+  BasicSimulationOptions<StateType> options;
+  options.duration = periods * period;
+  if (sampled) options.sample_step = period / samples_per_period;
+  return options;
+}
+// The paper's model's, over forcing periods 2 pi/omega.
 SimulationOptions SimulationOver(const Parameters& p, double periods, double samples_per_period, bool sampled);
 
 // A continuation run given by its keys instead of a run file (`stickslip continue`, Python's
