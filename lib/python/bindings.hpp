@@ -53,7 +53,16 @@ py::dict SummaryDict(const NewtonSummary& summary);
 py::tuple SampleOrbit(const Orbit& orbit, int count);
 
 // A list of 4-vectors as an (n, 4) array.
-py::array_t<double> StateArray(const std::vector<State>& states);
+// States as an (n, size) array, any model's (every state of one size).
+template <typename StateType>
+py::array_t<double> StateArray(const std::vector<StateType>& states, py::ssize_t size) {
+  py::array_t<double> a({static_cast<py::ssize_t>(states.size()), size});
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    for (py::ssize_t j = 0; j < size; ++j) a.mutable_at(i, j) = states[i](j);
+  }
+  return a;
+}
+py::array_t<double> StateArray(const std::vector<State>& states);  // the paper's, (n, 4)
 
 // The bindings of orbit_bindings.cpp (model, single orbits) and branch_bindings.cpp (branches,
 // continuation stepping, sweeps, runs) and trace_bindings.cpp (traces, maps). A new capability (find, trace) adds a function to one of

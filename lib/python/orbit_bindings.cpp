@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,8 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/stored_run.hpp"
 #include "stickslip/model/pascal_2014.hpp"
+#include "stickslip/model/exact_simulator.hpp"
+#include "stickslip/model/odeint_simulation.hpp"
 #include "stickslip/model/pascal_2014/odeint_simulator.hpp"
 #include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
@@ -80,13 +83,16 @@ std::string DescribeParameters(const Parameters& p) {
 
 // ---- simulate
 
-py::dict SimulationDict(const SimulationResult& r) {
+// Any model's simulation: events, samples and segments as arrays and lists, states (n, size).
+template <typename Result>
+py::dict SimulationDict(const Result& r, py::ssize_t size) {
+  using StateType = std::decay_t<decltype(r.events.front().state)>;
   const std::size_t n_events = r.events.size();
   py::array_t<double> t_events(static_cast<py::ssize_t>(n_events));
-  std::vector<State> event_states;
+  std::vector<StateType> event_states;
   py::list kinds, before, after;
   for (std::size_t i = 0; i < n_events; ++i) {
-    const Event& e = r.events[i];
+    const auto& e = r.events[i];
     t_events.mutable_at(i) = e.t;
     event_states.push_back(e.state);
     kinds.append(e.IsAbnormalStop() ? "abnormal-stop" : ToString(e.kind));
@@ -98,14 +104,14 @@ py::dict SimulationDict(const SimulationResult& r) {
   events["kind"] = kinds;
   events["mode_before"] = before;
   events["mode_after"] = after;
-  events["state"] = StateArray(event_states);
+  events["state"] = StateArray(event_states, size);
 
   py::array_t<double> t_samples(static_cast<py::ssize_t>(r.samples.size()));
-  std::vector<State> sample_states;
+  std::vector<StateType> sample_states;
   py::list sample_modes;
   std::size_t segment = 0;
   for (std::size_t i = 0; i < r.samples.size(); ++i) {
-    const TimeSample& s = r.samples[i];
+    const auto& s = r.samples[i];
     while (segment + 1 < r.segments.size() && r.segments[segment].t_end < s.t) ++segment;
     t_samples.mutable_at(i) = s.t;
     sample_states.push_back(s.state);
@@ -113,16 +119,15 @@ py::dict SimulationDict(const SimulationResult& r) {
   }
   py::dict samples;
   samples["t"] = t_samples;
-  samples["state"] = StateArray(sample_states);
+  samples["state"] = StateArray(sample_states, size);
   samples["mode"] = sample_modes;
 
   py::list segments;
-  for (const Segment& s : r.segments) {
+  for (const auto& s : r.segments) {
     segments.append(py::dict(py::arg("mode") = ToString(s.mode), py::arg("t_start") = s.t_start,
                              py::arg("t_end") = s.t_end, py::arg("end") = ToString(s.end_reason)));
   }
   py::dict out;
-  out["parameters"] = r.parameters;
   out["phi"] = r.phi;
   out["events"] = events;
   out["samples"] = samples;
@@ -149,8 +154,39 @@ py::dict Simulate(const py::dict& start, double periods, const std::string& meth
     result = method == "exact" ? SimulateExact(input.parameters, input.initial_state, input.phi, options)
                                : SimulateOdeint(input.parameters, input.initial_state, input.phi, options);
   }
-  py::dict out = SimulationDict(result);
+  py::dict out = SimulationDict(result, 4);
+  out["parameters"] = result.parameters;
   out["initial_state"] = py::array_t<double>(4, input.initial_state.data());
+  return out;
+}
+
+// simulate(model=...): the run file's oscillator (`set` over it) from its start, as `stickslip
+// simulate --model`; its parameters by name, its states (n, the model's size).
+py::dict SimulateModel(const std::string& path, const NamedValues& set, double periods, const std::string& method,
+                       double samples_per_period) {
+  using Model = DynamicLinearOscillator;
+  const ModelFileStart start = ReadModelFileStart(path, set);
+  const Model& model = start.model;
+  const double frequency = model.Autonomous() ? start.slowest_frequency : start.parameters.omega;
+  const auto options = SimulationOver<Model::State>(2.0 * std::numbers::pi / frequency, periods, samples_per_period, true);
+  if (!(periods * samples_per_period <= 1e7)) {
+    throw InvalidInput("samples-per-period", samples_per_period,
+                       fmt::format("periods ({}) x samples-per-period <= 1e7: the samples are kept in memory", periods));
+  }
+  if (method != "exact" && method != "odeint") throw InvalidInput("method", "'" + method + "'", "exact, odeint");
+  BasicSimulationResult<Model> result;
+  {
+    py::gil_scoped_release release;
+    result = method == "exact" ? SimulateExact(model, start.parameters, start.state, start.phi, options)
+                               : SimulateOdeint(model, start.parameters, start.state, start.phi, options);
+  }
+  const ModelDescription& d = model.Description();
+  py::dict out = SimulationDict(result, model.StateSize());
+  py::dict parameters;
+  for (int k = 0; k < Model::kParameterCount; ++k) parameters[py::str(d.parameters[k].name)] = Model::ParameterAt(start.parameters, k);
+  out["parameters"] = parameters;
+  out["initial_state"] = py::array_t<double>(start.state.size(), start.state.data());
+  out["state_names"] = d.state_components;
   return out;
 }
 
@@ -543,13 +579,7 @@ py::tuple SampleOrbit(const Orbit& orbit, int count) {
   return py::make_tuple(t, StateArray(states));
 }
 
-py::array_t<double> StateArray(const std::vector<State>& states) {
-  py::array_t<double> a({static_cast<py::ssize_t>(states.size()), py::ssize_t{4}});
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    for (int j = 0; j < 4; ++j) a.mutable_at(i, j) = states[i](j);
-  }
-  return a;
-}
+py::array_t<double> StateArray(const std::vector<State>& states) { return StateArray(states, 4); }
 
 void BindOrbits(py::module_& m) {
   BindParameters(m);
@@ -562,6 +592,8 @@ void BindOrbits(py::module_& m) {
   });
   m.def("_preset", &PresetDict, py::arg("name"));
   m.def("_simulate", &Simulate, py::arg("start"), py::arg("periods"), py::arg("method"), py::arg("samples_per_period"));
+  m.def("_simulate_model", &SimulateModel, py::arg("model"), py::arg("set"), py::arg("periods"), py::arg("method"),
+        py::arg("samples_per_period"));
   m.def("_solve", &Solve, py::arg("start"), py::arg("shooting"), py::arg("linear_solver"));
   m.def(
       "_find",

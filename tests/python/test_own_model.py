@@ -139,3 +139,23 @@ def test_atlas_is_the_command_lines_files(tmp_path):
         stickslip.atlas("omega", (0.2, 0.3), model=MODELS / "belt.toml")
     assert str(python.value) == cli_error("atlas", "--model", MODELS / "belt.toml", "--range", "0.2,0.3",
                                           "--output", "x", "--results", tmp_path / "none")
+
+
+def test_simulate_is_the_command_lines_events():
+    """stickslip.simulate(model=...) gives the events `stickslip simulate --model --json` prints, its
+    states of the model's size, and Den Hartog's stops at +-X(r, beta) after the transient."""
+    simulated = stickslip.simulate(model=MODELS / "belt.toml", periods=3, set={"v_b": 0.3})
+    done = cli_json("simulate", "--model", MODELS / "belt.toml", "--periods", 3, "--set", "v_b=0.3", "--json")
+    assert len(done["events"]) == len(simulated.events["t"]) >= 4
+    for k, e in enumerate(done["events"]):
+        assert e["t"] == simulated.events["t"][k] and e["kind"] == simulated.events["kind"][k]
+        assert list(simulated.events["state"][k]) == e["state"]
+    assert simulated.state_names == ["m1", "m1'"] and simulated.samples["state"].shape[1] == 2
+    assert simulated.parameters == {"omega": 1.0, "F_k": 1.0, "F_s": 1.5, "v_b": 0.3}
+    r, beta = 1.5, 0.25
+    V, U = 1 / (1 - r * r), math.tan(math.pi / (2 * r)) / r
+    dh = stickslip.simulate(model=MODELS / "den-hartog.toml", periods=200)
+    last = dh.events["state"][-2:, 0]
+    assert max(abs(abs(last) - math.sqrt(V * V - beta * beta * U * U))) <= 1e-9, last
+    with pytest.raises(ValueError, match="preset is invalid with model="):
+        stickslip.simulate(model=MODELS / "belt.toml", preset="paper-4.1")

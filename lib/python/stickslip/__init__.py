@@ -127,8 +127,9 @@ def natural_frequencies(parameters):
 
 
 class Simulation:
-    """A simulated motion: `events` (t, kind, mode_before, mode_after, state (n, 4)), `samples`
-    (t, state (n, 4), mode), `segments`, and how it ended (`end`, `message`, `completed`)."""
+    """A simulated motion: `events` (t, kind, mode_before, mode_after, state (n, 4): a [model]'s
+    (n, its size), named by `state_names`), `samples` (t, state, mode), `segments`, and how it ended
+    (`end`, `message`, `completed`)."""
 
     def __init__(self, d):
         self.parameters = d["parameters"]
@@ -140,6 +141,7 @@ class Simulation:
         self.end = d["end"]
         self.message = d["message"]
         self.completed = d["completed"]
+        self.state_names = d.get("state_names", ["x1", "x2", "x1'", "x2'"])
 
     def __repr__(self):
         return (f"<stickslip.Simulation {len(self.events['t'])} events, {len(self.samples['t'])} samples, "
@@ -147,7 +149,7 @@ class Simulation:
 
 
 def simulate(parameters=None, state=None, phi=None, *, periods=2.0, method="exact", samples_per_period=200,
-             preset=None, point=None, results="results", set=None):
+             preset=None, point=None, results="results", set=None, model=None):
     """Simulate the oscillator under Coulomb's law, as `stickslip simulate`.
 
     parameters  Parameters (or give preset=, point= or set=)
@@ -161,10 +163,18 @@ def simulate(parameters=None, state=None, phi=None, *, periods=2.0, method="exac
                 later values win over the preset's, a key given twice is an error.
     Returns a Simulation: events and the sampled time series as NumPy arrays. A simulation that
     stops early (chattering) is returned with completed False and the reason in `message`.
+
+    model=path: the oscillator in that run file's [model], as `stickslip simulate --model`, from its
+    start (set= a dict over its parameters, start state by name and phi); its states (n, its size)
+    named by `state_names`, its parameters a dict; without forcing periods count 2 pi/omega_1.
     """
+    numbers = [_checked(periods, "periods", "number"), _checked(method, "method", "text"),
+               _checked(samples_per_period, "samples_per_period", "number")]
+    if model is not None:
+        _refuse_paper_start(parameters, state, phi, preset, point, results)
+        return Simulation(_core._simulate_model(_checked(model, "model", "path"), _model_set(set), *numbers))
     start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
-    return Simulation(_core._simulate(start, _checked(periods, "periods", "number"), _checked(method, "method", "text"),
-                                      _checked(samples_per_period, "samples_per_period", "number")))
+    return Simulation(_core._simulate(start, *numbers))
 
 
 def solve(parameters=None, signature=None, *, preset=None, point=None, results="results", set=None, guess=None,
@@ -249,6 +259,18 @@ def _model_set(set):
         raise InvalidArgument(f"set = {set!r} is invalid: valid range a dict of name: number")
     return [(_checked(name, "set", "text"), _checked(value, name, "number")) for name, value in given.items()]
 
+def _refuse_paper_start(parameters, state, phi, preset, point, results, others=()):
+    """With model=: the paper's start arguments (and `others`, names of arguments given that the
+    model's path does not take) raise ValueError naming the first one."""
+    given = [name for name, value in (("parameters", parameters), ("state", state), ("phi", phi), ("preset", preset),
+                                      ("point", point)) if value is not None]
+    given += ["results"] if results != "results" else []
+    given += list(others)
+    if given:
+        raise ValueError(f"{given[0]} is invalid with model=: valid left out (the model's run file gives the "
+                         "oscillator and its start; set= its parameters, start state by name and phi)")
+
+
 
 def _trace_model(parameter, range, options, *, model, set=None, transients=1000, **others):
     if others:
@@ -304,14 +326,9 @@ def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple
     4, 5). Bad input raises ValueError.
     """
     if model is not None:
-        arguments = {"parameters": parameters, "state": state, "phi": phi, "preset": preset, "point": point}
-        given = [name for name, value in arguments.items() if value is not None]
-        given += ["results"] if results != "results" else []
-        given += [name for name, value, default in (("tolerance", tolerance, 1e-6),
-                                                    ("confirmations", confirmations, 3)) if value != default]
-        if given:
-            raise ValueError(f"{given[0]} is invalid with model=: valid left out (the model's run file gives the "
-                             "oscillator and its parameters; set= its parameters, start state and phi)")
+        _refuse_paper_start(parameters, state, phi, preset, point, results,
+                            [name for name, value, default in (("tolerance", tolerance, 1e-6),
+                                                               ("confirmations", confirmations, 3)) if value != default])
         return _find_model(model, set, transients, max_multiple)
     start = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     numbers = [_checked(value, name, "number") for name, value in (("transients", transients), ("max_multiple", max_multiple),
@@ -470,11 +487,7 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
                "start": _checked(start, "start", "text"),
                **{name: _checked(value, name, "number") for name, value in numbers.items()}}
     if model is not None:
-        given = [name for name, value in (("parameters", parameters), ("state", state), ("phi", phi),
-                                          ("preset", preset), ("point", point)) if value is not None]
-        if given or results != "results":
-            raise ValueError(f"{(given or ['results'])[0]} is invalid with model=: valid left out (set= gives the "
-                             "model's parameters, its start state by name and phi; the start is rest otherwise)")
+        _refuse_paper_start(parameters, state, phi, preset, point, results)
         return _core._sweep_model(_checked(model, "model", "path"), _model_set(set), options)
     origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     return _core._sweep(origin, options)
@@ -549,12 +562,7 @@ def atlas(parameter, range, parameters=None, state=None, phi=None, *, steps=_ATL
     if model is None:
         origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     else:
-        arguments = {"parameters": parameters, "state": state, "phi": phi, "preset": preset, "point": point}
-        given = [name for name, value in arguments.items() if value is not None]
-        given += ["results"] if results != "results" else []
-        if given:
-            raise ValueError(f"{given[0]} is invalid with model=: valid left out (the model's run file gives the "
-                             "oscillator and its parameters; set= its parameters)")
+        _refuse_paper_start(parameters, state, phi, preset, point, results)
     low, high = _pair(range, "range")
     numbers = {"steps": steps, "transients": transients, "periods": periods, "starts": starts, "scatter": scatter,
                "seed": seed, "tolerance": tolerance, "threads": threads, "max_multiple": max_multiple,
