@@ -136,7 +136,7 @@ int RunModelAtlas(const AtlasArgs& args, const CLI::App& cmd) {
         options.progress = std::move(progress);
         return ComputeModelAtlas(start.model, start.parameters, options);
       },
-      [&](const ModelAtlas& atlas) { return StoredModelAtlas(atlas, options, args.model, set, args.output); });
+      [&](const ModelAtlas& atlas) { return StoredModelAtlas(atlas, options, start, args.model, set, args.output); });
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ StoredAtlas ModelAtlasOf(const std::string& path, const NamedValues& set, const 
   ModelAtlasOptions options = ModelAtlasOptionsOf(CommandOf(o), start);
   const ModelAtlas atlas =
       ComputeReleased(options, [&] { return ComputeModelAtlas(start.model, start.parameters, options); });
-  return StoredModelAtlas(atlas, options, path, set, output);
+  return StoredModelAtlas(atlas, options, start, path, set, output);
 }
 
 std::vector<std::string> SaveAtlas(const StoredAtlas& atlas, const std::string& directory) {

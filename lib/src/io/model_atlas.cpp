@@ -33,13 +33,13 @@ ModelAtlasOptions ModelAtlasOptionsOf(const AtlasCommand& c, const ModelFileStar
   return o;
 }
 
-StoredAtlas StoredModelAtlas(const ModelAtlas& atlas, const ModelAtlasOptions& options,
+StoredAtlas StoredModelAtlas(const ModelAtlas& atlas, const ModelAtlasOptions& options, const ModelFileStart& start,
                              const std::filesystem::path& run_file, const NamedValues& set, const std::string& output) {
   RunFile run;
   run.path = set.empty() ? run_file.string() : std::string(kOneOffRunPath);
   run.output = output;
   run.parameter = atlas.parameter;
-  return RecordModelAtlas(run, atlas, options, SlipNaturalFrequencies(run_file));
+  return RecordModelAtlas(run, atlas, options, start.slip_frequencies);
 }
 
 }  // namespace stickslip

@@ -1,5 +1,7 @@
 #include "stickslip/io/model_find.hpp"
 
+#include "stickslip/model/free_oscillations.hpp"
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -49,9 +51,14 @@ ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const N
     parameters.emplace_back(name, value);
   }
   const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, parameters);
+  const Eigen::VectorXcd slip = ModesOf(data).slip.eigenvalues;
   double slowest = std::numeric_limits<double>::infinity();
-  for (const std::complex<double>& lambda : ModesOf(data).slip.eigenvalues) slowest = std::min(slowest, std::abs(lambda));
-  return {std::move(model), p, slowest, std::move(begin.state), begin.phi};
+  for (const std::complex<double>& lambda : slip) slowest = std::min(slowest, std::abs(lambda));
+  std::vector<double> frequencies;
+  for (const FreeOscillation& mode : FreeOscillations(slip)) {
+    if (mode.oscillates) frequencies.push_back(mode.frequency);
+  }
+  return {std::move(model), p, slowest, std::move(frequencies), std::move(begin.state), begin.phi};
 }
 
 ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int max_multiple, ProgressCallback progress) {
@@ -76,7 +83,7 @@ ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int m
   options.max_multiple = max_multiple;
   options.phi0 = start.phi;
   options.progress = std::move(progress);
-  return {model, p, FindModelOrbit(model, p, start.state, options)};
+  return {model, p, FindModelOrbit(model, p, start.state, options), start.slip_frequencies};
 }
 
 }  // namespace stickslip

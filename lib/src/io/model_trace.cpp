@@ -14,7 +14,6 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
-#include "stickslip/io/model_summary.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
 
@@ -92,16 +91,8 @@ StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::pa
                                                  .output = output,
                                                  .parameter = run.trace->parameter},
                                    *run.trace);
-  stored.natural_frequencies = SlipNaturalFrequencies(run_file);
+  stored.natural_frequencies = run.find.slip_frequencies;
   return stored;
-}
-
-std::vector<double> SlipNaturalFrequencies(const std::filesystem::path& run_file) {
-  std::vector<double> frequencies;
-  for (const FreeOscillation& mode : SummarizeModel(run_file).slip) {
-    if (mode.oscillates) frequencies.push_back(mode.frequency);
-  }
-  return frequencies;
 }
 
 std::string ModelTraceJson(const ModelTraceRun& run) {

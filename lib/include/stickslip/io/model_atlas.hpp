@@ -6,7 +6,7 @@
 //   const ModelFileStart start = ReadModelFileStart("belt-damped.toml", {});
 //   const ModelAtlasOptions options = ModelAtlasOptionsOf(command, start);
 //   WriteAtlasFiles("results", StoredModelAtlas(ComputeModelAtlas(start.model, start.parameters, options),
-//                                               options, "belt-damped.toml", {}, "belt-atlas"));
+//                                               options, start, "belt-damped.toml", {}, "belt-atlas"));
 #pragma once
 
 #include <filesystem>
@@ -27,8 +27,9 @@ namespace stickslip {
 // naming the flag (ModelAtlasOptions::Validate, WholeNumber), before any simulation.
 ModelAtlasOptions ModelAtlasOptionsOf(const AtlasCommand& command, const ModelFileStart& start);
 
-// The atlas's files (RecordModelAtlas) with the slip's natural frequencies in every trace.
-StoredAtlas StoredModelAtlas(const ModelAtlas& atlas, const ModelAtlasOptions& options,
+// The atlas's files (RecordModelAtlas) with the slip's natural frequencies (the start's) in every
+// trace; its run file `run_file`, or "(command line)" where `set` changed what it gives.
+StoredAtlas StoredModelAtlas(const ModelAtlas& atlas, const ModelAtlasOptions& options, const ModelFileStart& start,
                              const std::filesystem::path& run_file, const NamedValues& set, const std::string& output);
 
 }  // namespace stickslip

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
@@ -27,6 +28,9 @@ struct ModelFileStart {
   DynamicLinearOscillator model;
   DynamicLinearOscillator::Parameters parameters;
   double slowest_frequency = 0.0;  // of its slip's free oscillations: the time unit without forcing
+  // The natural frequencies of its slip (its oscillating free modes', as describe lists them), which
+  // a figure over omega marks; read with the model, so that a long run needs the file only at its start.
+  std::vector<double> slip_frequencies;
   Eigen::VectorXd state;  // at t = 0: rest unless the file's start or `set` names its components (x1_0, v1_0, ...)
   double phi = 0.0;       // the forcing's phase at t = 0 (the file's or `set`'s phi)
 };
@@ -40,6 +44,7 @@ struct ModelFindRun {
   DynamicLinearOscillator model;
   DynamicLinearOscillator::Parameters parameters;
   ModelFindResult<DynamicLinearOscillator> found;
+  std::vector<double> slip_frequencies;  // the start's (ModelFileStart::slip_frequencies)
 };
 
 // From the start's state and phase, the least period of 1 to max_multiple forcing periods (1 to

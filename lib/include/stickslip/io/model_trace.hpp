@@ -29,14 +29,10 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
 
 // The stored form of run.trace (set) as every front end writes it (RecordTrace, trace_files.hpp):
 // its run file `run_file`, or "(command line)" where `set` changed what the file gives; and the
-// model's slip's natural frequencies (its oscillating free modes', as describe lists them), which a
-// figure over omega marks. Throws RunFileError as ReadModelTable.
+// model's slip's natural frequencies (its oscillating free modes', as describe lists them, read with
+// the model: ModelFindRun::slip_frequencies), which a figure over omega marks.
 StoredTrace StoredModelTrace(const ModelTraceRun& run, const std::filesystem::path& run_file, const NamedValues& set,
                              const std::string& output);
-
-// The natural frequencies of the slip of the run file's [model]: its oscillating free modes', as
-// describe lists them. Throws RunFileError as ReadModelTable.
-std::vector<double> SlipNaturalFrequencies(const std::filesystem::path& run_file);
 
 // parameter, start (find's JSON: model_orbit_json.hpp), completed, and per direction ("down",
 // "up") its end, message and branches: signature, direction, start, margin, end, message and
