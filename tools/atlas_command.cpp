@@ -189,6 +189,7 @@ Command AddAtlasCommand(CLI::App& app) {
   return {cmd, [args, cmd] {
             if (cmd->count("--range") == 0) throw InvalidInput("range", "(not given)", "--range LO,HI is required");
             if (cmd->count("--output") == 0) throw InvalidInput("output", "(not given)", "--output NAME is required");
+            if (cmd->count("--model") != 0 && args->model.empty()) throw InvalidInput("model", "''", "a run file's path");
             return args->model.empty() ? RunAtlas(*args) : RunModelAtlas(*args, *cmd);
           }};
 }

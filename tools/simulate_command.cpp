@@ -46,8 +46,12 @@ struct SimulateArgs {
 };
 
 // The CSV's header, its first line: t, the state by the model's column names, mode (the paper's:
-// t,x1,x2,v1,v2,mode), the mark of a file that simulate may replace.
+// t,x1,x2,v1,v2,mode). A first line of that form, any model's, is the mark of a file that
+// simulate wrote and may replace.
 std::string CsvHeader(const ModelDescription& d) { return fmt::format("t,{},mode", fmt::join(d.state_columns, ",")); }
+bool IsCsvHeader(std::string_view line) {
+  return line.starts_with("t,") && line.ends_with(",mode") && line.find(' ') == std::string_view::npos;
+}
 
 template <typename StateType>
 std::string StateJson(const StateType& x) {
@@ -61,10 +65,12 @@ std::string StateJson(const StateType& x) {
 template <typename Result>
 void PrintEventsJson(const Result& result, double t0) {
   fmt::print("{{\"events\": [");
-  for (std::size_t i = 0; i < result.events.size(); ++i) {
-    const auto& e = result.events[i];
+  bool first = true;
+  for (const auto& e : result.events) {
+    if (!e.state.allFinite()) continue;  // where a motion growing without bound overflowed: it ends there
     fmt::print("{}{{\"t\": {}, \"kind\": \"{}\", \"mode_after\": \"{}\", \"state\": {}}}",
-               i == 0 ? "" : ", ", t0 + e.t, ToString(e.kind), ToString(e.mode_after), StateJson(e.state));
+               first ? "" : ", ", t0 + e.t, ToString(e.kind), ToString(e.mode_after), StateJson(e.state));
+    first = false;
   }
   fmt::print("]}}\n");
 }
@@ -76,6 +82,7 @@ void PrintEventTable(const Result& result, double t0, const ModelDescription& d)
   for (const std::string& name : d.state_components) header += fmt::format(" {:>22}", name);
   fmt::print("{}\n", header);
   for (const auto& e : result.events) {
+    if (!e.state.allFinite()) continue;  // where a motion growing without bound overflowed: it ends there
     const std::string kind = e.IsAbnormalStop() ? std::string("abnormal-stop") : std::string(ToString(e.kind));
     std::string row = fmt::format("{:>22.15g} {:<14} {:<6}", t0 + e.t, kind, ToString(e.mode_after));
     for (int i = 0; i < e.state.size(); ++i) row += fmt::format(" {:>22.15g}", e.state(i));
@@ -139,6 +146,7 @@ int SimulateAndReport(const Simulation<Model>& sim, const Simulate& simulate, co
     csv.emplace(args.csv_path);
     csv->Write(CsvHeader(sim.model.Description()) + "\n");
     options.on_sample = [&csv, t0](const BasicTimeSample<ModelState>& s, Mode mode) {
+      if (!s.state.allFinite()) return;  // where a motion growing without bound overflowed: it ends there
       std::vector<double> values(s.state.data(), s.state.data() + s.state.size());
       csv->Write(fmt::format("{},{},{}\n", t0 + s.t, fmt::join(values, ","), ToString(mode)));
     };
@@ -162,16 +170,15 @@ int SimulateAndReport(const Simulation<Model>& sim, const Simulate& simulate, co
   return kExitOk;
 }
 
-// A file --csv may replace: one whose first line is the CSV header simulate writes for this model.
-void CheckCsv(const SimulateArgs& args, const ModelDescription& d) {
+void CheckCsv(const SimulateArgs& args) {
   if (!args.csv_given) return;
-  const OutputMarker marker{"stickslip simulate", [header = CsvHeader(d)](std::string_view line) { return line == header; }};
+  const OutputMarker marker{"stickslip simulate", IsCsvHeader};
   CheckReplaceableOutputFile(args.csv_path, "csv", marker, args.force);
 }
 
 int RunSimulate(const SimulateArgs& args) {
+  CheckCsv(args);
   const Pascal2014 model;
-  CheckCsv(args, model.Description());
   const ModelStart input = BuildModelStart(ToStartInput(args.start));
   const Simulation<Pascal2014> sim{
       model, input.parameters, input.initial_state, input.phi, input.parameters.omega,
@@ -208,8 +215,8 @@ int RunModelSimulate(const SimulateArgs& args, const CLI::App& cmd) {
     }
   }
   using Model = DynamicLinearOscillator;
+  CheckCsv(args);
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.start.set));
-  CheckCsv(args, start.model.Description());
   const double frequency = start.model.Autonomous() ? start.slowest_frequency : start.parameters.omega;
   const ModelDescription& d = start.model.Description();
   const auto named = [](const std::vector<std::string>& names, const Eigen::VectorXd& x) {
@@ -296,7 +303,10 @@ Command AddSimulateCommand(CLI::App& app) {
                   "name its coordinates. Without forcing --periods and --transients count periods of its slowest free "
                   "oscillation 2 pi/omega_1")
       ->type_name("FILE");
-  return {cmd, [args, cmd] { return args->model.empty() ? RunSimulate(*args) : RunModelSimulate(*args, *cmd); }};
+  return {cmd, [args, cmd] {
+            if (cmd->count("--model") != 0 && args->model.empty()) throw InvalidInput("model", "''", "a run file's path");
+            return args->model.empty() ? RunSimulate(*args) : RunModelSimulate(*args, *cmd);
+          }};
 }
 
 }  // namespace stickslip::cli

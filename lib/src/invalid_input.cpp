@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string_view>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -77,6 +78,25 @@ int WholeNumber(std::string_view field, double value, int low, int high) {
 
 std::string WholeNumberRange(std::string_view field, int low, int high) {
   return fmt::format("whole numbers {} <= {} <= {}", low, field, high);
+}
+
+}  // namespace stickslip
+
+namespace stickslip {
+
+// One pass with the names seen so far: a caller may pass any number of names (100,000 took 25 s
+// when every pair was compared).
+void RefuseRepeatedNames(std::string_view field, const std::vector<std::pair<std::string, double>>& values,
+                         std::string_view where) {
+  std::unordered_map<std::string_view, std::size_t> first;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const auto [seen, added] = first.emplace(values[k].first, k);
+    if (!added) {
+      throw InvalidInput::WithMessage(std::string(field), fmt::format("{} gives '{}' twice ({} and {}): give it once{}",
+                                                                      field, values[k].first, values[seen->second].second,
+                                                                      values[k].second, where));
+    }
+  }
 }
 
 }  // namespace stickslip

@@ -418,4 +418,14 @@ echo mine > "$work/out/notes.csv"
 expect 2 "it exists and was not written by stickslip simulate" \
   "$bin" simulate --model "$models/belt.toml" --csv "$work/out/notes.csv"
 expect 2 "periods" "$bin" simulate --model "$models/den-hartog.toml" --periods 0
+expect 2 "set gives 'F_k' twice (0.1 and 0.2): give it once" \
+  "$bin" simulate --model "$models/belt.toml" --set F_k=0.1 --set F_k=0.2
+expect 2 "omega = 1000000000000 is invalid: the model has no forcing" "$bin" simulate --model "$models/belt.toml" --set omega=1e12
+expect 2 "model = '' is invalid" "$bin" simulate --model ""
+expect 2 "model = '' is invalid" "$bin" atlas --model "" --range 1,2 --output x --results "$work/out"
+# A motion growing without bound: the exact simulator ends where it overflows, and nothing printed
+# or written holds an infinity (--json stays JSON).
+"$bin" simulate --model "$models/belt-falling-friction.toml" --set v_b=1e6 --periods 1000 --json > "$work/falling.json" \
+  2> /dev/null; [ $? -eq 1 ] && /usr/bin/python3 -c "import json, sys; json.load(open(sys.argv[1]))" "$work/falling.json" &&
+  pass || fail "simulate --model of a diverging motion: not valid JSON or not exit 1"
 finish

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
+#include <utility>
 
 namespace stickslip {
 
@@ -44,6 +46,12 @@ class InvalidInput : public std::invalid_argument {
 // value <= high, or InvalidInput "<field> = <value> is invalid: valid range whole numbers low <=
 // <field> <= high".
 int WholeNumber(std::string_view field, double value, int low, int high);
+
+// Throws InvalidInput naming `field` for the first name `values` gives twice ("set gives 'F_k' twice
+// (0.1 and 0.2): give it once", then `where`, e.g. " (in set, guess or a fix value)"): a repeated
+// name would silently keep its last value.
+void RefuseRepeatedNames(std::string_view field, const std::vector<std::pair<std::string, double>>& values,
+                         std::string_view where = "");
 // That valid range as messages and help texts state it: "whole numbers low <= <field> <= high".
 std::string WholeNumberRange(std::string_view field, int low, int high);
 

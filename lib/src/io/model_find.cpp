@@ -40,6 +40,12 @@ ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const N
   ModelStartState begin = StartOf(model, table, set);
   NamedValues parameters;
   for (const auto& [name, value] : set) {
+    if (name == "omega" && model.Autonomous()) {  // no part in the motion, but its event search's scale
+      throw InvalidInput::WithMessage(
+          "omega", fmt::format("omega = {} is invalid: the model has no forcing, whose frequency it would be: valid "
+                               "for a forced model only",
+                               value));
+    }
     if (name == "phi" && model.Autonomous()) {
       throw InvalidInput::WithMessage(
           "phi", fmt::format("phi = {} is invalid: the model has no forcing, whose phase it would be: valid for a "
@@ -50,6 +56,7 @@ ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const N
     if (!model.Description().ParameterIndex(name)) throw UnknownName(model.Description(), name, value);
     parameters.emplace_back(name, value);
   }
+  RefuseRepeatedNames("set", set);
   const DynamicLinearOscillator::Parameters p = ParametersOf(model, table, parameters);
   const Eigen::VectorXcd slip = ModesOf(data).slip.eigenvalues;
   double slowest = std::numeric_limits<double>::infinity();

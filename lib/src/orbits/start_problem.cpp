@@ -67,21 +67,6 @@ struct Values {
   }
 };
 
-// A name given twice would silently keep its last value ("--set omega=0.6 --set omega=0.7"). One
-// pass with the names seen so far: a caller may pass any number of names (100,000 took 25 s when
-// every pair was compared), and the first repeated one is refused as before.
-void RefuseRepeatedNames(std::string_view field, const NamedValues& values) {
-  std::unordered_map<std::string_view, std::size_t> first;
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    const auto [seen, added] = first.emplace(values[k].first, k);
-    if (!added) {
-      throw InvalidInput::WithMessage(std::string(field), fmt::format("{} gives '{}' twice ({} and {}): give it once "
-                                                                      "(in set, guess or a fix value)",
-                                                                      field, values[k].first, values[seen->second].second,
-                                                                      values[k].second));
-    }
-  }
-}
 
 // The values start from a preset's or a restart point's, never from both (which would win?).
 Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
@@ -89,7 +74,7 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
     throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' and preset = '{}': give at most one of them",
                                                            input.restart->run, input.restart->label, input.preset));
   }
-  RefuseRepeatedNames("set", input.set);
+  RefuseRepeatedNames("set", input.set, " (in set, guess or a fix value)");
   Values v{Eigen::VectorXd::Zero(ov::Count(n)), std::vector<bool>(ov::Count(n), false),
            std::vector<bool>(ov::Count(n), false)};
   if (preset != nullptr) {
@@ -271,7 +256,7 @@ StartProblem BuildStartProblem(const StartInput& input) {
   for (const FixedVariable& f : input.fix) {
     if (f.value) values.emplace_back(f.name, *f.value);
   }
-  RefuseRepeatedNames("guess", values);
+  RefuseRepeatedNames("guess", values, " (in set, guess or a fix value)");
   for (const auto& [name, value] : input.guess) v.Assign(VariableIndex(n, "guess", name), Checked(name, value));
   for (const FixedVariable& f : input.fix) {
     if (f.value) v.Assign(VariableIndex(n, "fix", f.name), Checked(f.name, *f.value));

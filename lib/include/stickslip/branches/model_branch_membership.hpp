@@ -93,7 +93,8 @@ BasicOrbit<Model> BranchOrbitAt(const Model& model, const BasicOrbitBranch<Model
   BasicOrbit<Model> guess = a;
   guess.parameters = target.parameters;
   guess.start = (1.0 - t) * a.start + t * b.start;
-  guess.phi = (1.0 - t) * a.phi + t * b.phi;
+  // The phase the short way round: two points a stored reduction to [0, 2 pi) put either side of 0.
+  guess.phi = a.phi + t * std::remainder(b.phi - a.phi, 2.0 * std::numbers::pi);
   for (std::size_t k = 0; k < guess.durations.size(); ++k) guess.durations[k] = (1.0 - t) * a.durations[k] + t * b.durations[k];
   const OrbitVariableSet variables = VariableSetOf(model, guess.signature);
   const UnknownChoice unknowns = UnknownsAtFixedParameters(variables);
