@@ -118,12 +118,7 @@ int RunAtlas(const AtlasArgs& args) {
 }
 
 int RunModelAtlas(const AtlasArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"--preset", "--point"}) {
-    if (cmd.count(option) != 0) {
-      throw InvalidInput::WithMessage(option + 2, fmt::format("{} is not taken with --model: the run file's [model] and "
-                                                              "--set give the oscillator and its parameters", option));
-    }
-  }
+  RefuseWithModel(cmd, {"--preset", "--point"}, "the run file's [model] and --set give the oscillator and its parameters");
   const NamedValues set = ModelSetOf(args.origin.set);
   const ModelFileStart start = ReadModelFileStart(args.model, set);
   RunFile run;

@@ -211,14 +211,10 @@ int RunFind(const FindArgs& args) {
 
 // find --model: the options of the paper's model's start and of what find writes are refused.
 int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"--preset", "--point", "--tolerance", "--confirmations", "--write-run", "--as",
-                             "--range", "--force"}) {
-    if (cmd.count(option) == 0) continue;
-    throw InvalidInput::WithMessage(
-        option + 2, fmt::format("{} is not taken with --model: valid with --model are --set, --transients, "
-                                "--max-multiple, --trace, --trace-parameter, --output, --results and --json",
-                                option));
-  }
+  RefuseWithModel(cmd,
+                  {"--preset", "--point", "--tolerance", "--confirmations", "--write-run", "--as", "--range", "--force"},
+                  "valid with --model are --set, --transients, --max-multiple, --trace, --trace-parameter, --output, "
+                  "--results and --json");
   if (cmd.count("--output") != 0 && args.output.empty()) {
     throw InvalidInput("output", "''", std::string(kRunNameRule));
   }

@@ -131,6 +131,13 @@ NamedValues ModelSetOf(const std::vector<std::string>& texts) {
   return set;
 }
 
+void RefuseWithModel(const CLI::App& cmd, std::initializer_list<const char*> options, std::string_view instead) {
+  for (const char* option : options) {
+    if (cmd.count(option) == 0) continue;
+    throw InvalidInput::WithMessage(option + 2, fmt::format("{} is not taken with --model: {}", option, instead));
+  }
+}
+
 int RunModelFind(const ModelFindArgs& args) {
   ProgressLine line("find: transient");
   const auto started = std::chrono::steady_clock::now();

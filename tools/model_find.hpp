@@ -4,8 +4,12 @@
 // or as one JSON object.
 #pragma once
 
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "stickslip/named_values.hpp"
 
@@ -26,6 +30,10 @@ struct ModelFindArgs {
 // --set NAME=VALUE ... (parameters, start-state components by name, phi) as named values, each a finite number (the model's reader checks the names
 // and ranges). Throws InvalidInput naming "set" or the name.
 NamedValues ModelSetOf(const std::vector<std::string>& set);
+
+// Throws InvalidInput naming the first of `options` given on `cmd` ("X is not taken with --model: "
+// followed by `instead`, what gives the oscillator and its start with --model).
+void RefuseWithModel(const CLI::App& cmd, std::initializer_list<const char*> options, std::string_view instead);
 
 // The exit code as find's: 0 found and verified (and the trace ran to its ends), 3 Newton failed (or
 // a branch of the trace), 4 no motion or not verified, 5 no orbit type read off the motion (it never

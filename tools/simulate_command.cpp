@@ -207,13 +207,8 @@ int RunSimulate(const SimulateArgs& args) {
 // simulate --model: the run file's oscillator from the start it and --set give; without forcing
 // --periods counts periods of the slowest free oscillation of its slip (as find's).
 int RunModelSimulate(const SimulateArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"--preset", "--point"}) {
-    if (cmd.count(option) != 0) {
-      throw InvalidInput::WithMessage(option + 2, fmt::format("{} is not taken with --model: the run file's [model] and "
-                                                              "--set give the oscillator, its parameters and its start",
-                                                              option));
-    }
-  }
+  RefuseWithModel(cmd, {"--preset", "--point"},
+                  "the run file's [model] and --set give the oscillator, its parameters and its start");
   using Model = DynamicLinearOscillator;
   CheckCsv(args);
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.start.set));

@@ -73,14 +73,9 @@ void PrintSwept(const SweepArgs& args, const SweepOptions& options, int chains, 
 
 // sweep --model: from rest and states scattered around it; the paper's model's start options refused.
 int RunModelSweep(const SweepArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"--preset", "--point", "--results"}) {
-    if (cmd.count(option) == 0) continue;
-    throw InvalidInput::WithMessage(
-        option + 2, fmt::format("{} is not taken with --model: the sweep starts from rest, or --set's start state "
-                                "(x1_0=..., phi=...), and --chains - 1 states scattered around it; --set also sets "
-                                "the model's parameters",
-                                option));
-  }
+  RefuseWithModel(cmd, {"--preset", "--point", "--results"},
+                  "the sweep starts from rest, or --set's start state (x1_0=..., phi=...), and --chains - 1 states "
+                  "scattered around it; --set also sets the model's parameters");
   CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.origin.set));
   const ModelDescription& model = start.model.Description();

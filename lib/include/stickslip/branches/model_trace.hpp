@@ -1,6 +1,6 @@
 // TraceOrbits and AtLeastPeriod (trace.hpp) for any model (model/oscillator_model.hpp). The
-// paper's model is compiled once, in trace.cpp; a program or test tracing another model's orbits
-// includes this header.
+// paper's model is compiled once, in trace.cpp, a [model]'s (DynamicLinearOscillator) in
+// model_trace.cpp; a program or test tracing another model's orbits includes this header.
 #pragma once
 
 #include <fmt/format.h>
@@ -17,6 +17,7 @@
 #include "stickslip/branches/model_type_switch.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/model/linear_oscillator.hpp"
 #include "stickslip/orbits/least_period.hpp"
 #include "stickslip/orbits/margins.hpp"
 
@@ -439,5 +440,11 @@ BasicTraceResult<Model> TraceOrbits(const BasicOrbitContinuationSetup<Model>& st
   }
   return trace_detail::Tracer<Model>(start, options).Run();
 }
+
+// A model whose size comes with its data (a user's [model]): compiled once, in model_trace.cpp.
+extern template BasicTraceResult<DynamicLinearOscillator> TraceOrbits(
+    const BasicOrbitContinuationSetup<DynamicLinearOscillator>& start, const TraceOptions& options);
+extern template BasicOrbitContinuationSetup<DynamicLinearOscillator> AtLeastPeriod(
+    BasicOrbitContinuationSetup<DynamicLinearOscillator> setup);
 
 }  // namespace stickslip
