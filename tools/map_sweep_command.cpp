@@ -15,10 +15,12 @@
 #include "brute_force_flags.hpp"
 #include "cli_common.hpp"
 #include "progress_line.hpp"
+#include "model_find.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/map_file.hpp"
+#include "stickslip/io/model_map.hpp"
 #include "stickslip/io/output_marker.hpp"
 #include "stickslip/model/transient.hpp"
 
@@ -41,6 +43,7 @@ struct MapSweepArgs {
   std::string merge;  // the merged file
   std::vector<std::string> shards;
   bool force = false;
+  std::string model;  // --model FILE: a run file's [model] (io/model_map.hpp)
 };
 
 const std::string kShardRange = fmt::format("k/N with whole numbers 1 <= k <= N <= {}", BruteForceMapOptions::kMaxShards);
@@ -83,16 +86,33 @@ int RunMerge(const MapSweepArgs& args) {
                                                            args.merge, path));
     }
   }
-  std::vector<BruteForceMap> maps;
-  for (const std::string& path : args.shards) maps.push_back(ReadBruteForceMapCsv(ReadShardFile(path), path));
-  const BruteForceMap merged = MergeBruteForceMaps(maps, args.shards);
-  WriteFileAtomically(args.merge, BruteForceMapCsv(merged));
-  fmt::print("merged {} shard(s): {}", args.shards.size(), MapSweepSummary(merged, args.merge));
+  std::vector<std::string> texts;
+  for (const std::string& path : args.shards) texts.push_back(ReadShardFile(path));
+  const MapFile merged = MergeMapFiles(texts, args.shards, args.merge);
+  WriteFileAtomically(args.merge, merged.text);
+  fmt::print("merged {} shard(s): {}", args.shards.size(), merged.summary);
   return kExitOk;
 }
 
-MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
-  const ModelStart input = BuildModelStart(ToStartInput(args.origin));
+std::string AxisName(ParameterId id) { return ToString(id); }
+const std::string& AxisName(const std::string& name) { return name; }
+
+template <typename Map>
+std::string MapSweepSummary(const Map& map, const std::string& output) {
+  int attractors = 0, coexisting = 0, unsettled = 0;
+  for (const auto& cell : map.cells) {
+    attractors += static_cast<int>(cell.attractors.size());
+    coexisting += cell.attractors.size() > 1;
+    for (const auto& a : cell.attractors) unsettled += a.status != AttractorStatus::kPeriodic;
+  }
+  return fmt::format("map {} x {} ({} x {} cells): {} cell(s), {} attractor(s), {} cell(s) with more than one, {} "
+                     "not settled or incomplete; written to {}\n",
+                     AxisName(map.first), AxisName(map.second), map.first_count, map.second_count, map.cells.size(),
+                     attractors, coexisting, unsettled, output);
+}
+
+// The command as the library reads it: the axes, the brute force's flags and the shard.
+MapSweepCommand CommandOf(const MapSweepArgs& args) {
   MapSweepCommand c = WithBruteForceFlags(MapSweepCommand{}, args.brute);
   c.first = args.first;
   c.second = args.second;
@@ -103,14 +123,53 @@ MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   c.second_to = args.second_to;
   c.second_steps = args.second_steps;
   std::tie(c.shard, c.shards) = ParseShard(args.shard);
-  // Ranks split the rows as shards do (rank 0, the first shard, has the most), so the bound on the
-  // runs is checked for a rank's rows.
-  MapSweepCommand checked = c;
-  if (ranks > 1 && c.shards == 1) checked.shards = ranks;
-  BruteForceMapOptions options = MapOptionsOf(checked, input);
-  options.shard = c.shard;
-  options.shards = c.shards;
-  return {input.parameters, input.phi, options, args.output, args.force};
+  return c;
+}
+
+// Ranks split the rows as shards do (rank 0, the first shard, has the most), so the bound on the
+// runs is checked for a rank's rows.
+MapSweepCommand CheckedForRanks(MapSweepCommand c, int ranks) {
+  if (ranks > 1 && c.shards == 1) c.shards = ranks;
+  return c;
+}
+
+MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
+  const ModelStart input = BuildModelStart(ToStartInput(args.origin));
+  const MapSweepCommand c = CommandOf(args);
+  const BruteForceMapOptions options = MapOptionsOf(CheckedForRanks(c, ranks), input);
+  const auto compute = [base = input.parameters, phi = input.phi, options, output = args.output](
+                           int shard, int shards, const ProgressCallback& progress) {
+    BruteForceMapOptions o = options;
+    o.shard = shard;
+    o.shards = shards;
+    o.progress = progress;
+    const BruteForceMap map = ComputeBruteForceMap(base, phi, o);
+    return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
+  };
+  return {compute, c.shard, c.shards, args.output, args.force};
+}
+
+// map-sweep --model: the run file's oscillator at its parameters and --set's, the scattered starts
+// around its start state, the section at its phase.
+MapSweepPlan ModelPlanOf(const MapSweepArgs& args, const CLI::App& cmd, int ranks) {
+  RefuseWithModel(cmd, {"--preset", "--point", "--results"},
+                  "the run file's [model] and --set give the oscillator, its parameters and the start the "
+                  "scattered starts are drawn around");
+  const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.origin.set));
+  MapSweepCommand c = CommandOf(args);
+  if (cmd.count("--first") == 0) c.first = start.model.Autonomous() ? "v_b" : "omega";
+  if (cmd.count("--second") == 0) c.second = "F_s";
+  const ModelBruteForceMapOptions options = ModelMapOptionsOf(CheckedForRanks(c, ranks), start);
+  const auto compute = [model = start.model, base = start.parameters, options, output = args.output](
+                           int shard, int shards, const ProgressCallback& progress) {
+    ModelBruteForceMapOptions o = options;
+    o.shard = shard;
+    o.shards = shards;
+    o.runs.progress = progress;
+    const ModelBruteForceMap map = ComputeModelBruteForceMap(model, base, o);
+    return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
+  };
+  return {compute, c.shard, c.shards, args.output, args.force};
 }
 
 }  // namespace
@@ -119,28 +178,26 @@ void CheckMapOutputFile(const std::string& path, const std::string& field, bool 
   CheckReplaceableOutputFile(path, field, {"stickslip map-sweep", IsBruteForceMapCsvHeader}, force);
 }
 
-std::string MapSweepSummary(const BruteForceMap& map, const std::string& output) {
-  int attractors = 0, coexisting = 0, unsettled = 0;
-  for (const MapCell& cell : map.cells) {
-    attractors += static_cast<int>(cell.attractors.size());
-    coexisting += cell.attractors.size() > 1;
-    for (const Attractor& a : cell.attractors) unsettled += a.status != AttractorStatus::kPeriodic;
-  }
-  return fmt::format("map {} x {} ({} x {} cells): {} cell(s), {} attractor(s), {} cell(s) with more than one, {} "
-                     "not settled or incomplete; written to {}\n",
-                     ToString(map.first), ToString(map.second), map.first_count, map.second_count, map.cells.size(),
-                     attractors, coexisting, unsettled, output);
+MapFile MergeMapFiles(const std::vector<std::string>& texts, const std::vector<std::string>& names,
+                      const std::string& output) {
+  const auto merged = [&](auto read) {
+    std::vector<decltype(read(texts[0], names[0]))> maps;
+    for (std::size_t s = 0; s < texts.size(); ++s) maps.push_back(read(texts[s], names[s]));
+    const auto map = MergeBruteForceMaps(maps, names);
+    return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
+  };
+  // A model's map by its header; shards of the two kinds are refused as the paper's header's error.
+  if (!texts.empty() && IsModelBruteForceMapCsv(texts[0])) return merged(ReadModelBruteForceMapCsv);
+  return merged(ReadBruteForceMapCsv);
 }
 
 int RunMapSweepHere(const MapSweepPlan& plan) {
   CheckMapOutputFile(plan.output, "output", plan.force);
-  BruteForceMapOptions options = plan.options;
   ProgressLine line("map-sweep");
-  options.progress = line.Callback();
-  const BruteForceMap map = ComputeBruteForceMap(plan.base, plan.phi, options);
+  const MapFile map = plan.compute(plan.shard, plan.shards, line.Callback());
   line.Clear();
-  WriteFileAtomically(plan.output, BruteForceMapCsv(map));
-  fmt::print("{}", MapSweepSummary(map, plan.output));
+  WriteFileAtomically(plan.output, map.text);
+  fmt::print("{}", map.summary);
   return kExitOk;
 }
 
@@ -161,9 +218,16 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, in
                   : "The file does not depend on --threads or the number of ranks. ") +
           "Time is the paper's scaled time.");
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
+  cmd->add_option("--model", args->model,
+                  "a run file with a [model] (an oscillator of your own, in its units): its map over two of its "
+                  "parameters (--first, --second by its names; unless given omega, v_b without forcing, and F_s); --set NAME=VALUE sets "
+                  "its parameters and the start the scattered starts are drawn around (x1_0=..., phi=...)")
+      ->type_name("FILE");
   cmd->add_option("--results", args->origin.results, "where the runs of --point are stored")->capture_default_str();
   const std::string range = "the parameter's valid range (every cell is checked)";
-  cmd->add_option("--first", args->first, "the parameter stepped along i: chi, eta, omega, u_s or u_r")->capture_default_str();
+  cmd->add_option("--first", args->first,
+                  "the parameter stepped along i: chi, eta, omega, u_s or u_r (a [model]'s by its names)")
+      ->capture_default_str();
   AddNumberOption(*cmd, "--first-from", &args->first_from, range, "its value at i = 0 (its range under --set; every cell is checked)");
   AddNumberOption(*cmd, "--first-to", &args->first_to, range, "its value at i = --first-steps");
   AddCountOption(*cmd, "--first-steps", &args->first_steps, 0, BruteForceMapOptions::kMaxSteps,
@@ -195,6 +259,10 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, in
               if (cmd->count(fmt::format("--{}", option)) == 0) {
                 throw InvalidInput(option, "(not given)", fmt::format("--{} is required unless --merge", option));
               }
+            }
+            if (cmd->count("--model") > 0) {
+              if (args->model.empty()) throw InvalidInput("model", "''", "a run file with a [model]");
+              return runner(ModelPlanOf(*args, *cmd, ranks));
             }
             return runner(PlanOf(*args, ranks));
           }};

@@ -5,6 +5,7 @@
 // here: the library knows nothing of it.
 //
 //   mpirun -np 4 stickslip-mpi map-sweep --preset paper-6 --first omega ... --output map.csv
+//   mpirun -np 4 stickslip-mpi map-sweep --model chain.toml --first omega --second F_s ... --output map.csv
 //   (as root: mpirun --allow-run-as-root; more ranks than cores: --oversubscribe)
 #include <mpi.h>
 
@@ -22,7 +23,6 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
-#include "stickslip/io/map_file.hpp"
 
 namespace stickslip::cli {
 namespace {
@@ -65,26 +65,22 @@ int RunAcrossRanks(const MapSweepPlan& plan, int rank, int ranks) {
     if (rank == 0) fmt::print(stderr, "error: {}\n", refused);
     return kExitBadInput;
   }
-  BruteForceMapOptions options = plan.options;
-  options.shard = rank + 1;
-  options.shards = ranks;
   ProgressLine line("map-sweep (rank 0)");
-  if (rank == 0) options.progress = line.Callback();
-  const BruteForceMap mine = ComputeBruteForceMap(plan.base, plan.phi, options);
+  const MapFile mine = plan.compute(rank + 1, ranks, rank == 0 ? line.Callback() : ProgressCallback{});
   line.Clear();
   if (rank != 0) {
-    SendText(BruteForceMapCsv(mine), 0);
+    SendText(mine.text, 0);
     return kExitOk;
   }
-  std::vector<BruteForceMap> maps = {mine};
+  std::vector<std::string> texts = {mine.text};
   std::vector<std::string> names = {"rank 0"};
   for (int r = 1; r < ranks; ++r) {
     names.push_back(fmt::format("rank {}", r));
-    maps.push_back(ReadBruteForceMapCsv(ReceiveText(r), names.back()));
+    texts.push_back(ReceiveText(r));
   }
-  const BruteForceMap merged = MergeBruteForceMaps(maps, names);
-  WriteFileAtomically(plan.output, BruteForceMapCsv(merged));
-  fmt::print("{} rank(s): {}", ranks, MapSweepSummary(merged, plan.output));
+  const MapFile merged = MergeMapFiles(texts, names, plan.output);
+  WriteFileAtomically(plan.output, merged.text);
+  fmt::print("{} rank(s): {}", ranks, merged.summary);
   return kExitOk;
 }
 

@@ -137,7 +137,7 @@ int RunPlot(const PlotArgs& args) {
         in.seekg(0);
         std::ostringstream text;
         text << in.rdbuf();
-        ReadBruteForceMapCsv(text.str(), path.string());
+        CheckBruteForceMapCsv(text.str(), path.string());
       }
     }
     // A missing or damaged run or trace is bad input, before any work (sweeps, orbit-type maps and

@@ -56,6 +56,11 @@ mkdir -p results/maps
 for m in paper-5.1-omega-u_r paper-6-omega-u_r; do
   "$bin" plot results/maps/$m results/maps/$m-brute-force.csv --output results/figures/$m-map.png
 done
+# ... and the brute-force map of an oscillator of your own ([model]): five masses over (omega, F_s).
+"$bin" map-sweep --model continuation-scripts/models/five-mass-chain.toml --first omega --first-from 0.2 --first-to 1.6 \
+  --first-steps 28 --second F_s --second-from 0.3 --second-to 0.6 --second-steps 6 \
+  --output results/maps/five-mass-chain-omega-F_s-brute-force.csv
+"$bin" plot results/maps/five-mass-chain-omega-F_s-brute-force.csv --output results/figures/five-mass-chain-omega-F_s-map.png
 # Atlases: every periodic motion over a range of omega (stickslip atlas), and their frequency responses.
 mkdir -p results/atlases
 "$bin" atlas --preset paper-4.1 --range 0.3,0.95 --steps 65 --results results/atlases --output paper-4.1-omega

@@ -234,7 +234,7 @@ class MapSweep(Result):
 
     def __init__(self, name, rows, header):
         self.name, self.rows, self.header = name, rows, header
-        self.first, self.second = [c for c in header if c in PARAMETERS][:2]
+        self.first, self.second = header[4], header[5]  # i,j,ni,nj,<first>,<second>,... (any model's names)
         self.parameter = self.first
 
     def columns(self):
@@ -436,7 +436,7 @@ def natural_frequencies(chi, eta):
 
 
 SYMBOLS = {"omega": r"$\omega$", "chi": r"$\chi$", "eta": r"$\eta$", "u_s": r"$u_s$", "u_r": r"$u_r$",
-           "phi": r"$\varphi$"}
+           "phi": r"$\varphi$", "F_k": r"$F_k$", "F_s": r"$F_s$", "v_b": r"$v_b$"}
 
 
 def symbol(name):

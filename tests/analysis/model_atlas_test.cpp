@@ -63,8 +63,8 @@ TEST(ModelAtlas, FindsThePapersBifurcationsInOtherPhysicalUnits) {
   o.steps = 4;
   // More starts than the paper's atlas takes: which attractors a brute force meets depends on its
   // starts, and these are drawn in other units.
-  o.scattered_starts = 8;
-  o.scatter = physical.Length(paper);
+  o.brute_force.scattered_starts = 8;
+  o.brute_force.scatter = physical.Length(paper);
   const ModelAtlas atlas = ComputeModelAtlas(model, physical.Of<Model>(paper), o);
   ASSERT_GT(atlas.OnBranches(), 0);
   EXPECT_EQ(atlas.OnBranches(), atlas.PeriodicWithinLimit());
@@ -101,7 +101,7 @@ TEST(ModelAtlas, TracesDenHartogsOrbitWithItsClosedFormAmplitude) {
   o.from = 1.3;
   o.to = 2.5;
   o.steps = 6;
-  o.threads = 2;
+  o.brute_force.threads = 2;
   const ModelAtlas atlas = ComputeModelAtlas(model, {1.5, 0.25, 0.25, 0.0}, o);
   ASSERT_EQ(atlas.attractors.size(), 7u);
   for (const ModelAtlasAttractor& a : atlas.attractors) {
@@ -129,9 +129,9 @@ TEST(ModelAtlas, TracesTheStickSlipCycleOfAMassOnABelt) {
   o.from = 0.2;
   o.to = 0.8;
   o.steps = 3;
-  o.scatter = 0.5;
-  o.transient_periods = 60;
-  o.time_unit = 2.0 * std::numbers::pi;
+  o.brute_force.scatter = 0.5;
+  o.brute_force.transient_periods = 60;
+  o.brute_force.time_unit = 2.0 * std::numbers::pi;
   const ModelAtlas atlas = ComputeModelAtlas(model, {1.0, belt.F_k, belt.F_s, 0.5}, o);
   EXPECT_EQ(atlas.OnBranches(), atlas.PeriodicWithinLimit());
   int cycles = 0;
@@ -159,10 +159,10 @@ TEST(ModelAtlas, DoesNotDependOnTheThreadCount) {
   o.from = 0.55 * physical.Omega(paper);
   o.to = 0.65 * physical.Omega(paper);
   o.steps = 4;
-  o.scatter = physical.Length(paper);
-  o.threads = 1;
+  o.brute_force.scatter = physical.Length(paper);
+  o.brute_force.threads = 1;
   const ModelAtlas one = ComputeModelAtlas(model, physical.Of<Model>(paper), o);
-  o.threads = 2;
+  o.brute_force.threads = 2;
   const ModelAtlas two = ComputeModelAtlas(model, physical.Of<Model>(paper), o);
   ASSERT_GT(one.traces.size(), 1u);
   ASSERT_EQ(one.attractors.size(), two.attractors.size());
@@ -246,12 +246,12 @@ TEST(ModelAtlas, RefusesOptionsOutOfRangeNamingTheField) {
            {"steps", [](ModelAtlasOptions& x) { x.steps = 100000000; }},
            {"max-multiple", [](ModelAtlasOptions& x) { x.max_multiple = 0; }},
            {"max-multiple", [](ModelAtlasOptions& x) { x.max_multiple = 1000000; }},
-           {"periods", [](ModelAtlasOptions& x) { x.recorded_periods = 4; }},  // below 2 max_multiple
-           {"scatter", [](ModelAtlasOptions& x) { x.scatter = 1e300; }},
+           {"periods", [](ModelAtlasOptions& x) { x.brute_force.recorded_periods = 4; }},  // below 2 max_multiple
+           {"scatter", [](ModelAtlasOptions& x) { x.brute_force.scatter = 1e300; }},
            {"find-rounds", [](ModelAtlasOptions& x) { x.find_rounds = 0; }},
-           {"tolerance", [](ModelAtlasOptions& x) { x.periodicity_tolerance = 0.0; }},
+           {"tolerance", [](ModelAtlasOptions& x) { x.brute_force.periodicity_tolerance = 0.0; }},
            {"max_amplitude", [](ModelAtlasOptions& x) { x.trace.max_amplitude = -1.0; }},
-           {"centre", [](ModelAtlasOptions& x) { x.centre = Eigen::VectorXd::Zero(3); }},
+           {"centre", [](ModelAtlasOptions& x) { x.brute_force.centre = Eigen::VectorXd::Zero(3); }},
        }) {
     ModelAtlasOptions bad = o;
     edit(bad);

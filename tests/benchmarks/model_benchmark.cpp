@@ -264,7 +264,7 @@ void ModelAtlasOfTheSameMasses(benchmark::State& state) {
     options.from = 0.3 * kUnitTwoMasses.Omega(o.parameters);  // the model's time is not the paper's scaled one
     options.to = 0.95 * kUnitTwoMasses.Omega(o.parameters);
     options.steps = 65;
-    options.scatter = kUnitTwoMasses.Length(o.parameters);
+    options.brute_force.scatter = kUnitTwoMasses.Length(o.parameters);
     options.progress = std::move(progress);
     const DynamicLinearOscillator model(kUnitTwoMasses.Data(o.parameters));
     const ModelAtlas atlas = ComputeModelAtlas(model, kUnitTwoMasses.Of<DynamicLinearOscillator>(o.parameters), options);

@@ -75,5 +75,11 @@ if mpi_ready; then
   map_runner=("${mpi[@]}" -np 2 "$STICKSLIP_MPI")
   expect_map 2 "periods = 1 is invalid" --periods 1 --output "$work/out/m.csv"
   map_runner=()
+  # An oscillator of your own ([model]) on 2 ranks: the single process's bytes.
+  model=(map-sweep --model "$root/continuation-scripts/models/den-hartog.toml" --first-from 1.2 --first-to 2
+         --first-steps 4 --second F_k --second-from 0.15 --second-to 0.25 --second-steps 2 --set F_s=0.3 --starts 2)
+  "$bin" "${model[@]}" --output "$work/model.csv" > /dev/null &&
+    "${mpi[@]}" -np 2 "$STICKSLIP_MPI" "${model[@]}" --output "$work/model-2.csv" > /dev/null &&
+    cmp -s "$work/model.csv" "$work/model-2.csv" && pass || fail "map-sweep --model on 2 ranks differs from one process"
 fi
 finish

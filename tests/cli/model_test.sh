@@ -2,7 +2,8 @@
 # A user's own oscillator on the command line: describe and find --model read every example of
 # continuation-scripts/models/ (exit 0); find --model's orbit of the mass on a belt is the closed-form
 # stick-slip cycle (../shared/FRICTION-LITERATURE.md) and its JSON the text's; a steady slide exits 5;
-# and a table of bad input: exit 2, one line naming the key or option, nothing written.
+# map-sweep --model's amplitudes are Den Hartog's; and a table of bad input: exit 2, one line naming
+# the key or option, nothing written.
 source "$(dirname "$0")/expect.sh"
 models="$root/continuation-scripts/models"
 
@@ -428,4 +429,46 @@ expect 2 "model = '' is invalid" "$bin" atlas --model "" --range 1,2 --output x 
 "$bin" simulate --model "$models/belt-falling-friction.toml" --set v_b=1e6 --periods 1000 --json > "$work/falling.json" \
   2> /dev/null; [ $? -eq 1 ] && /usr/bin/python3 -c "import json, sys; json.load(open(sys.argv[1]))" "$work/falling.json" &&
   pass || fail "simulate --model of a diverging motion: not valid JSON or not exit 1"
+# map-sweep --model: Den Hartog's mass over (omega, F_k), his amplitude in every cell; two shards
+# merged are the whole file (two MPI ranks': map_sweep_test.sh); plot draws it.
+grid=(--first-from 1.2 --first-to 2 --first-steps 4 --second F_k --second-from 0.15 --second-to 0.25 --second-steps 2
+      --set F_s=0.3 --starts 2)
+"$bin" map-sweep --model "$models/den-hartog.toml" "${grid[@]}" --output "$work/dh-map.csv" > /dev/null &&
+  "$bin" map-sweep --model "$models/den-hartog.toml" "${grid[@]}" --shard 2/2 --output "$work/dh-2.csv" > /dev/null &&
+  "$bin" map-sweep --model "$models/den-hartog.toml" "${grid[@]}" --shard 1/2 --threads 1 --output "$work/dh-1.csv" \
+    > /dev/null && "$bin" map-sweep --merge "$work/dh-merged.csv" "$work/dh-2.csv" "$work/dh-1.csv" > /dev/null &&
+  cmp -s "$work/dh-map.csv" "$work/dh-merged.csv" && pass || fail "map-sweep --model: shards merged differ from the whole"
+/usr/bin/python3 - "$work/dh-map.csv" <<'PY' && pass || fail "map-sweep --model against Den Hartog's closed form"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 15 and rows[0]["amplitude:m1"] and list(rows[0])[-3:] == ["k", "m1", "v_m1"], list(rows[0])
+for r in rows:
+    w, beta = float(r["omega"]), float(r["F_k"])
+    V, U = 1 / (1 - w * w), math.tan(math.pi / (2 * w)) / w
+    X = math.sqrt(V * V - beta * beta * U * U)
+    assert r["status"] == "periodic" and r["period"] == "1" and r["sticks_per_period"] == "0", r
+    assert abs(float(r["amplitude:m1"]) - X) <= 1e-6 * X, (r, X)
+PY
+"$bin" plot "$work/dh-map.csv" --output "$work/dh-map.png" > /dev/null && [ -s "$work/dh-map.png" ] && pass ||
+  fail "plot of a model's map-sweep"
+"$bin" map-sweep --preset paper-6 --first-from 0.55 --first-to 0.56 --first-steps 1 --second-from 1.3 --second-to 1.3 \
+  --second-steps 0 --transients 10 --periods 4 --starts 0 --output "$work/paper-map.csv" > /dev/null
+cp "$work/dh-map.csv" "$work/out/dh-map.csv"
+expect 2 "paper-map.csv:1: the header is invalid" "$bin" map-sweep --merge "$work/out/merged.csv" "$work/dh-1.csv" \
+  "$work/paper-map.csv"
+expect 2 "preset is not taken with --model" "$bin" map-sweep --model "$models/den-hartog.toml" --preset paper-6 \
+  "${grid[@]}" --output "$work/out/x.csv"
+expect 2 "first = 'chi' is invalid: valid range omega, F_k, F_s, v_b" "$bin" map-sweep --model "$models/den-hartog.toml" \
+  --first chi --first-from 1 --first-to 2 --second-from 0.1 --second-to 0.2 --output "$work/out/x.csv"
+expect 2 "second = 'omega' is invalid" "$bin" map-sweep --model "$models/belt.toml" --first-from 0.2 --first-to 0.4 \
+  --second omega --second-from 1 --second-to 2 --output "$work/out/x.csv"
+expect 2 "grid cell (i, j) = (0, 2)" "$bin" map-sweep --model "$models/den-hartog.toml" --first-from 1.2 --first-to 2 \
+  --second F_k --second-from 0.1 --second-to 0.3 --second-steps 2 --output "$work/out/x.csv"
+expect 2 "first-steps" "$bin" map-sweep --model "$models/den-hartog.toml" "${grid[@]}" --first-steps 0 --output "$work/out/x.csv"
+expect 2 "model = '' is invalid" "$bin" map-sweep --model "" "${grid[@]}" --output "$work/out/x.csv"
+echo mine > "$work/out/notes.csv"
+expect 2 "it exists and was not written by stickslip map-sweep" "$bin" map-sweep --model "$models/den-hartog.toml" \
+  "${grid[@]}" --output "$work/out/notes.csv"
+sed 's/,periodic,/,cyclic,/' "$work/dh-map.csv" > "$work/out/damaged.csv"
+expect 2 "damaged.csv:2: column 'status' = 'cyclic' is invalid" "$bin" plot "$work/out/damaged.csv" --output "$work/x.png"
 finish

@@ -1,6 +1,5 @@
 #include "stickslip/analysis/brute_force_map.hpp"
 
-#include <bit>
 #include <cmath>
 #include <mutex>
 #include <numbers>
@@ -17,14 +16,17 @@
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/model/transient.hpp"
+#include "stickslip/numerics/fingerprint.hpp"
 #include "stickslip/numerics/parallel_for.hpp"
 
 namespace stickslip {
 
-double MapAxis::ValueAt(int index) const {
+double GridValueAt(double from, double to, int steps, int index) {
   if (index == steps) return to;
   return steps == 0 ? from : from + (static_cast<double>(index) / steps) * (to - from);
 }
+
+double MapAxis::ValueAt(int index) const { return GridValueAt(from, to, steps, index); }
 
 const char* ToString(AttractorStatus status) {
   switch (status) {
@@ -198,13 +200,9 @@ void BruteForceMapOptions::Validate(const Parameters& base) const {
 }
 
 std::uint64_t MapRunFingerprint(const Parameters& base, double phi_section, const BruteForceMapOptions& o) {
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits
-  const auto add = [&hash](std::uint64_t value) {
-    for (int byte = 0; byte < 8; ++byte) {
-      hash = (hash ^ ((value >> (8 * byte)) & 0xffu)) * 1099511628211ull;
-    }
-  };
-  const auto add_number = [&add](double value) { add(std::bit_cast<std::uint64_t>(value)); };
+  Fingerprint hash;
+  const auto add = [&hash](std::uint64_t value) { hash.Add(value); };
+  const auto add_number = [&hash](double value) { hash.AddNumber(value); };
   for (const ParameterId id : kAllParameters) add_number(base[id]);
   add_number(phi_section);
   for (const MapAxis* axis : {&o.first, &o.second}) {
@@ -220,7 +218,7 @@ std::uint64_t MapRunFingerprint(const Parameters& base, double phi_section, cons
   add_number(o.scatter);
   add(o.seed);
   add_number(o.periodicity_tolerance);
-  return hash;
+  return hash.Value();
 }
 
 BruteForceMap ComputeBruteForceMap(const Parameters& base, double phi_section, const BruteForceMapOptions& o) {

@@ -31,7 +31,7 @@ void CheckCount(const char* field, long long value, long long low, long long hig
 // The grid's values; the last is `to` exactly.
 std::vector<double> GridOf(const ModelAtlasOptions& o) {
   std::vector<double> grid;
-  for (int i = 0; i <= o.steps; ++i) grid.push_back(i == o.steps ? o.to : o.from + static_cast<double>(i) / o.steps * (o.to - o.from));
+  for (int i = 0; i <= o.steps; ++i) grid.push_back(GridValueAt(o.from, o.to, o.steps, i));
   return grid;
 }
 
@@ -39,101 +39,14 @@ std::vector<double> GridOf(const ModelAtlasOptions& o) {
 // without forcing.
 int PeriodLimit(const Model& model, const ModelAtlasOptions& o) { return model.Autonomous() ? 1 : o.max_multiple; }
 
-// The brute force's sweep options: every value from each start afresh (kFixed), or from the
-// neighbouring value's end up and down (kChained).
-SweepOptions SweepOf(const Model& model, const ModelAtlasOptions& o, SweepStart start) {
-  SweepOptions s;
-  s.parameter = *model.Description().ParameterIndex(o.parameter);
-  s.from = o.from;
-  s.to = o.to;
-  s.steps = o.steps;
-  s.transient_periods = o.transient_periods;
-  s.recorded_periods = o.recorded_periods;
-  s.periodicity_tolerance = o.periodicity_tolerance;
-  s.relative_tolerance = true;  // the model's units are its own
-  s.chunk_periods = 20;         // short chunks: each event holds a state of the model's size
-  s.time_unit = o.time_unit;
-  s.start = start;
-  s.threads = o.threads;
-  s.record_incomplete = true;  // one motion that grows without bound ends as an attractor "incomplete"
-  return s;
-}
-
-// The largest |component| of a section orbit's points (never 0: a rest point compares absolutely).
-double SectionSize(const std::vector<Eigen::VectorXd>& section, int period) {
-  double size = std::numeric_limits<double>::min();
-  for (int k = 0; k < period; ++k) size = std::max(size, section[k].lpNorm<Eigen::Infinity>());
-  return size;
-}
-
-// Whether two periodic runs end on one section orbit: the same period and the same points under a
-// cyclic shift, within the tolerance times the larger size.
-bool SameSectionOrbit(const ModelAttractor& a, const SweepPoint& p, double tolerance) {
-  if (a.period != p.period) return false;
-  const double within = tolerance * std::max(SectionSize(a.section, a.period), SectionSize(p.section, p.period));
-  for (int shift = 0; shift < p.period; ++shift) {
-    bool same = true;
-    for (int k = 0; k < p.period && same; ++k) {
-      same = (a.section[k] - p.section[(k + shift) % p.period]).lpNorm<Eigen::Infinity>() <= within;
-    }
-    if (same) return true;
-  }
-  return false;
-}
-
-AttractorStatus StatusOf(const SweepPoint& p) {
-  if (!p.incomplete.empty()) return AttractorStatus::kIncomplete;
-  return p.period > 0 ? AttractorStatus::kPeriodic : AttractorStatus::kNotSettled;
-}
-
-ModelAttractor AttractorOf(const SweepPoint& p) {
-  ModelAttractor a{StatusOf(p), p.period, p.stops_per_period, p.sticks_per_period, p.contact_amplitude, 1, {}, p.incomplete};
-  a.section.assign(p.section.begin(), p.section.begin() + (p.period > 0 ? p.period : 1));
-  if (p.period == 0) a.section.front() = p.section.back();
-  return a;
-}
-
 // Stage 1: the attractors of every grid value, in the order the runs found them (the fresh starts
 // by start, then the chained sweep's up and down passes).
 std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Parameters& base, const ModelAtlasOptions& o,
                                             const std::vector<double>& grid) {
-  // Rest, then the given centre and states scattered around it (as the paper's brute force starts).
-  std::vector<Model::State> fresh = {Model::State::Zero(model.StateSize())};
-  for (Model::State& x : ScatteredStarts<Model::State>(o.centre.size() == 0 ? fresh.front() : o.centre, o.scatter,
-                                                       o.scattered_starts, o.seed)) {
-    fresh.push_back(std::move(x));
-  }
-  SweepOptions fixed = SweepOf(model, o, SweepStart::kFixed);
-  SweepOptions chained = SweepOf(model, o, SweepStart::kChained);
-  const double total = static_cast<double>((o.steps + 1) * (fresh.size() + 2));
-  double done = 0.0;
-  std::mutex report;
-  const auto counted = [&](const Progress& r) {
-    if (!o.progress) return;
-    const std::lock_guard<std::mutex> lock(report);
-    done += 1.0;
-    o.progress({done, total, "points", r.value});
-  };
-  fixed.progress = counted;
-  chained.progress = counted;
-  std::vector<SweepPoint> points = Sweep(model, base, fresh, o.section_phase, fixed);
-  std::vector<SweepPoint> followed = Sweep(model, base, {fresh.front()}, o.section_phase, chained);
-  points.insert(points.end(), followed.begin(), followed.end());
-  std::vector<std::vector<ModelAttractor>> cells(o.steps + 1);
-  for (const SweepPoint& p : points) {
-    const int i = p.pass == SweepPass::kDown ? o.steps - p.step : p.step;
-    std::vector<ModelAttractor>& cell = cells[i];
-    // The runs not settled are one entry, as are those stopped early: they cannot be told apart.
-    const auto same = std::find_if(cell.begin(), cell.end(), [&](const ModelAttractor& a) {
-      return StatusOf(p) == AttractorStatus::kPeriodic ? SameSectionOrbit(a, p, o.periodicity_tolerance)
-                                                       : a.status == StatusOf(p);
-    });
-    if (same == cell.end()) {
-      cell.push_back(AttractorOf(p));
-    } else {
-      ++same->starts;
-    }
-  }
+  ModelBruteForceOptions runs = o.brute_force;
+  runs.progress = o.progress;
+  const std::vector<std::vector<ModelAttractor>> cells =
+      ModelBruteForce(model, base, ModelAxis{o.parameter, o.from, o.to, o.steps}, runs);
   std::vector<ModelAtlasAttractor> attractors;
   for (int i = 0; i <= o.steps; ++i) {
     for (std::size_t k = 0; k < cells[i].size(); ++k) {
@@ -143,7 +56,7 @@ std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Par
         a.reason = fmt::format("{} run(s) stopped early, the first: {}", a.attractor.starts, a.attractor.incomplete);
       } else if (a.attractor.status == AttractorStatus::kNotSettled) {
         a.reason = fmt::format("{} run(s) settled on no period of at most {} on the section", a.attractor.starts,
-                               o.recorded_periods / 2);
+                               o.brute_force.recorded_periods / 2);
       } else if (a.attractor.period > PeriodLimit(model, o)) {
         a.fate = AttractorFate::kAboveLimit;
         a.reason = model.Autonomous()
@@ -180,10 +93,10 @@ AttractorFate FateOfFind(const ModelAttractor& a, const ModelFindResult<Model>& 
 // its simulation doubled while the motion it reads has not settled.
 ModelFindResult<Model> FoundFrom(const Model& model, const Model::Parameters& p, const ModelAtlasAttractor& a,
                                  const ModelAtlasOptions& o) {
-  const double unit = model.Autonomous() ? o.time_unit : 2.0 * std::numbers::pi / model.ForcingFrequency(p);
+  const double unit = model.Autonomous() ? o.brute_force.time_unit : 2.0 * std::numbers::pi / model.ForcingFrequency(p);
   ModelFindOptions find;
   find.max_multiple = PeriodLimit(model, o);
-  find.phi0 = o.section_phase;
+  find.phi0 = o.brute_force.section_phase;
   ModelFindResult<Model> found;
   for (int round = 0; round < o.find_rounds; ++round) {
     find.duration = std::ldexp(o.find_periods * unit, round);
@@ -205,7 +118,7 @@ void SolveAttractors(const Model& model, const Model::Parameters& base, std::vec
   const int parameter = *model.Description().ParameterIndex(o.parameter);
   std::mutex report;
   int done = 0;
-  ParallelFor(static_cast<int>(asked.size()), o.threads, [&](int i) {
+  ParallelFor(static_cast<int>(asked.size()), o.brute_force.threads, [&](int i) {
     ModelAtlasAttractor& a = attractors[asked[i]];
     Model::Parameters p = base;
     Model::ParameterAt(p, parameter) = a.value;
@@ -256,45 +169,21 @@ AtlasPlacementHooks<Model> PlacementOf(const Model& model, const ModelAtlasOptio
 }  // namespace
 
 void ModelAtlasOptions::Validate(const Model& model, const Model::Parameters& base) const {
-  const std::optional<int> k = model.Description().ParameterIndex(parameter);
-  if (!k || (*k == Model::kForcingFrequencyParameter && model.Autonomous())) {
-    std::string names;
-    for (const ParameterDescription& d : model.Description().parameters) {
-      if (!(d.name == "omega" && model.Autonomous())) names += (names.empty() ? "" : ", ") + d.name;
-    }
-    throw InvalidInput("parameter", "'" + parameter + "'",
-                       model.Autonomous() ? names + " (omega plays no part without forcing: name one of these)" : names);
-  }
+  const int k = ModelAxis{parameter}.IndexIn(model, "parameter");
   if (!(std::isfinite(from) && std::isfinite(to) && from < to)) {
     throw InvalidInput("range", fmt::format("'{},{}'", from, to), "finite LO < HI");
   }
   CheckCount("steps", steps, 1, kMaxSteps);
-  CheckCount("transients", transient_periods, 0, kMaxPeriods);
-  CheckCount("periods", recorded_periods, 2, kMaxPeriods);
-  CheckCount("starts", scattered_starts, 0, kMaxScatteredStarts);
+  brute_force.Validate(model);
   CheckCount("max-multiple", max_multiple, 1, ModelFindOptions::kMaxMultiple);
-  CheckCount("find-periods", find_periods, kMinFindPeriods, kMaxPeriods);
+  CheckCount("find-periods", find_periods, kMinFindPeriods, ModelBruteForceOptions::kMaxPeriods);
   CheckCount("find-rounds", find_rounds, 1, kMaxFindRounds);
   CheckCount("max-traces", max_traces, 1, kMaxTraces);
-  CheckCount("threads", threads, 0, 1024);
-  if (static_cast<long long>(steps + 1) * (scattered_starts + 3) > kMaxRuns) {
+  if (static_cast<long long>(steps + 1) * brute_force.RunsPerValue() > kMaxRuns) {
     throw InvalidInput("steps", steps, fmt::format("(steps + 1) (starts + 3) <= {} runs", kMaxRuns));
   }
-  if (!(scatter >= 0.0 && scatter <= 1e6)) throw InvalidInput("scatter", scatter, "0 <= scatter <= 1e6");
-  if (centre.size() != 0 && centre.size() != model.StateSize()) {
-    throw InvalidInput("centre", fmt::format("a state of size {}", centre.size()), fmt::format("the model's, {}", model.StateSize()));
-  }
-  if (!centre.allFinite() || !std::isfinite(section_phase)) {
-    throw InvalidInput::WithMessage("centre", "centre or section_phase is invalid: valid finite numbers");
-  }
-  if (!(periodicity_tolerance >= 1e-14 && periodicity_tolerance <= 1e-2)) {
-    throw InvalidInput("tolerance", periodicity_tolerance, "1e-14 <= tolerance <= 1e-2");
-  }
-  if (model.Autonomous() && !(std::isfinite(time_unit) && time_unit > 0.0)) {
-    throw InvalidInput("time-unit", time_unit, "a finite time unit > 0 for a model without forcing");
-  }
-  if (2 * max_multiple > recorded_periods && !model.Autonomous()) {
-    throw InvalidInput("periods", recorded_periods,
+  if (2 * max_multiple > brute_force.recorded_periods && !model.Autonomous()) {
+    throw InvalidInput("periods", brute_force.recorded_periods,
                        fmt::format("at least 2 x max-multiple = {} (a period of k is read off 2 k recorded periods)",
                                    2 * max_multiple));
   }
@@ -309,10 +198,10 @@ void ModelAtlasOptions::Validate(const Model& model, const Model::Parameters& ba
   // Every grid value one the model takes: the sweep refuses the others, naming them.
   for (const double value : GridOf(*this)) {
     Model::Parameters p = base;
-    Model::ParameterAt(p, *k) = value;
+    Model::ParameterAt(p, k) = value;
     if (const std::optional<InvalidInput> invalid = model.Validate(p)) {
       throw InvalidInput::WithMessage("range", fmt::format("range = '{},{}' is invalid: grid value {} = {}: {}", from,
-                                                           to, parameter, Model::ParameterAt(p, *k), invalid->what()));
+                                                           to, parameter, Model::ParameterAt(p, k), invalid->what()));
     }
   }
 }

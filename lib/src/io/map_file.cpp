@@ -15,6 +15,8 @@
 #include <fmt/ranges.h>
 
 #include "csv_table.hpp"
+#include "stickslip/analysis/model_brute_force_map.hpp"
+#include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/signature.hpp"
 
@@ -23,18 +25,50 @@ namespace stickslip {
 namespace {
 
 constexpr const char* kColumnsBefore = "i,j,ni,nj";
-constexpr const char* kColumnsAfter =
-    "section_phase,run,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,"
-    "v2";
+// The columns from the section phase to an attractor's start count, in both maps.
+constexpr const char* kAttractorColumns =
+    "section_phase,run,attractors,attractor,status,period,stops_per_period,sticks_per_period,starts";
+// The paper's map's after them: the signature and the state.
+constexpr const char* kPaperColumnsAfter = "signature,k,x1,x2,v1,v2";
 
 std::string Header(ParameterId first, ParameterId second) {
-  return fmt::format("{},{},{},{}", kColumnsBefore, ToString(first), ToString(second), kColumnsAfter);
+  return fmt::format("{},{},{},{},{}", kColumnsBefore, ToString(first), ToString(second), kAttractorColumns, kPaperColumnsAfter);
+}
+
+std::string Header(const ModelBruteForceMap& map) {
+  return fmt::format("{},{},{},{},{},k,{}", kColumnsBefore, map.first, map.second, kAttractorColumns,
+                     orbit_columns::AmplitudeOf(map.contact), fmt::join(map.state_columns, ","));
+}
+
+// A row's columns from i to starts.
+template <typename Map, typename Cell, typename Attractor>
+std::string RowStart(const Map& map, const Cell& cell, std::size_t index, const Attractor& a) {
+  return fmt::format("{},{},{},{},{},{},{},{:016x},{},{},{},{},{},{},{}", cell.i, cell.j, map.first_count,
+                     map.second_count, cell.first, cell.second, map.section_phase, map.run, cell.attractors.size(), index,
+                     ToString(a.status), a.period, a.stops_per_period, a.sticks_per_period, a.starts);
+}
+
+// The model's header: the leading and attractor columns, a name, the amplitude and k, then the
+// state's names (at least one).
+bool IsModelMapHeader(std::string_view line) {
+  const std::string before = std::string(kColumnsBefore) + ",", middle = "," + std::string(kAttractorColumns) + ",amplitude:";
+  const std::size_t at = line.find(middle);
+  if (!line.starts_with(before) || at == std::string_view::npos) return false;
+  const std::string_view names = line.substr(before.size(), at - before.size());
+  const std::size_t comma = names.find(',');
+  const std::string_view rest = line.substr(at + middle.size());
+  const std::size_t k = rest.find(",k,");
+  return comma != std::string_view::npos && comma > 0 && comma + 1 < names.size() &&
+         names.find(',', comma + 1) == std::string_view::npos && k != std::string_view::npos && k > 0 &&
+         k + 3 < rest.size();
 }
 
 }  // namespace
 
 bool IsBruteForceMapCsvHeader(std::string_view line) {
-  const std::string before = std::string(kColumnsBefore) + ",", after = "," + std::string(kColumnsAfter);
+  if (IsModelMapHeader(line)) return true;
+  const std::string before = std::string(kColumnsBefore) + ",",
+                    after = "," + std::string(kAttractorColumns) + "," + kPaperColumnsAfter;
   if (line.size() < before.size() + after.size() || !line.starts_with(before) || !line.ends_with(after)) return false;
   const std::string_view pair = line.substr(before.size(), line.size() - before.size() - after.size());
   const std::size_t comma = pair.find(',');
@@ -49,11 +83,22 @@ std::string BruteForceMapCsv(const BruteForceMap& map) {
       const Attractor& attractor = cell.attractors[a];
       for (std::size_t k = 0; k < attractor.section.size(); ++k) {
         const State& x = attractor.section[k];
-        out += fmt::format("{},{},{},{},{},{},{},{:016x},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell.i, cell.j,
-                           map.first_count, map.second_count, cell.first, cell.second, map.section_phase, map.run,
-                           cell.attractors.size(), a, ToString(attractor.status), attractor.period,
-                           attractor.stops_per_period, attractor.sticks_per_period, attractor.starts,
-                           attractor.signature, k, x(0), x(1), x(2), x(3));
+        out += fmt::format("{},{},{},{},{},{},{}\n", RowStart(map, cell, a, attractor), attractor.signature, k, x(0),
+                           x(1), x(2), x(3));
+      }
+    }
+  }
+  return out;
+}
+
+std::string BruteForceMapCsv(const ModelBruteForceMap& map) {
+  std::string out = Header(map) + "\n";
+  for (const ModelMapCell& cell : map.cells) {
+    for (std::size_t a = 0; a < cell.attractors.size(); ++a) {
+      const ModelAttractor& attractor = cell.attractors[a];
+      for (std::size_t k = 0; k < attractor.section.size(); ++k) {
+        out += fmt::format("{},{},{},{}\n", RowStart(map, cell, a, attractor), attractor.contact_amplitude, k,
+                           fmt::join(attractor.section[k], ","));
       }
     }
   }
@@ -64,15 +109,17 @@ namespace {
 
 using detail::CsvTable;
 
-// Where the fields of a row are; i, j, ni, nj and the two parameters are the first six columns.
+// Where the fields of a row are; i, j, ni, nj and the two parameters are the first six columns,
+// `own` the attractor's column after starts (the paper's signature, a model's amplitude), the state
+// from x to the last.
 struct MapColumns {
   explicit MapColumns(const CsvTable& t)
       : phase(t.Column("section_phase")), run(t.Column("run")), count(t.Column("attractors")),
         index(t.Column("attractor")), status(t.Column("status")), period(t.Column("period")),
         stops(t.Column("stops_per_period")), sticks(t.Column("sticks_per_period")), starts(t.Column("starts")),
-        signature(t.Column("signature")), k(t.Column("k")), x1(t.Column("x1")) {}
+        own(starts + 1), k(t.Column("k")), x(k + 1), components(static_cast<int>(t.header().size()) - x) {}
   static constexpr int i = 0, j = 1, ni = 2, nj = 3, first = 4, second = 5;
-  int phase, run, count, index, status, period, stops, sticks, starts, signature, k, x1;
+  int phase, run, count, index, status, period, stops, sticks, starts, own, k, x, components;
 };
 
 std::pair<ParameterId, ParameterId> MapParameters(const CsvTable& table) {
@@ -89,6 +136,21 @@ std::pair<ParameterId, ParameterId> MapParameters(const CsvTable& table) {
   return {*first, *second};
 }
 
+// A model's map as its header names it: the parameters, the contact and the state's columns.
+ModelBruteForceMap ModelMapOf(const CsvTable& table) {
+  const std::vector<std::string>& header = table.header();
+  const std::string line = fmt::format("{}", fmt::join(header, ","));
+  const std::string_view amplitude = header.size() > 16 ? std::string_view(header[15]) : std::string_view();
+  if (!IsModelMapHeader(line) || header.size() < 18 || header[16] != "k" || !amplitude.starts_with("amplitude:")) {
+    throw table.HeaderError(fmt::format("the header is invalid: valid {},omega,F_s,{},amplitude:<coordinate>,k,<state>",
+                                        kColumnsBefore, kAttractorColumns));
+  }
+  ModelBruteForceMap map{.first = header[4], .second = header[5], .contact = std::string(amplitude.substr(10))};
+  map.state_columns.assign(header.begin() + 17, header.end());
+  if (Header(map) != line) throw table.HeaderError("the header is invalid: a column name is empty or repeated");
+  return map;
+}
+
 std::uint64_t Fingerprint(const CsvTable& t, int row, int column) {
   const std::string& run = t.Text(row, column);
   std::uint64_t fingerprint = 0;
@@ -100,7 +162,8 @@ std::uint64_t Fingerprint(const CsvTable& t, int row, int column) {
 }
 
 // The grid's columns (ni, nj, section_phase, run): valid, and in every row as in the first.
-void ReadGrid(const CsvTable& t, int row, const MapColumns& c, BruteForceMap* map) {
+template <typename Map>
+void ReadGrid(const CsvTable& t, int row, const MapColumns& c, Map* map) {
   const int max_cells = BruteForceMapOptions::kMaxSteps + 1;
   const int ni = t.Integer(row, c.ni, 1, max_cells), nj = t.Integer(row, c.nj, 1, max_cells);
   const double phase = t.Value(row, c.phase, detail::Finite());
@@ -117,11 +180,17 @@ void ReadGrid(const CsvTable& t, int row, const MapColumns& c, BruteForceMap* ma
   if (fingerprint != map->run) throw t.Error(row, c.run, "differs from the first row's");
 }
 
+// The valid values of a map's parameters: the paper model's ranges; a model's are its own, checked
+// where it is read with its run file.
+detail::ValidValues AxisValues(ParameterId id) { return detail::ModelParameter(id); }
+detail::ValidValues AxisValues(const std::string&) { return detail::Finite(); }
+
 // The row's cell: a new one after the last (cells by j then i, each once), or the last again.
-MapCell& ReadCell(const CsvTable& t, int row, const MapColumns& c, BruteForceMap* map) {
+template <typename Map>
+auto& ReadCell(const CsvTable& t, int row, const MapColumns& c, Map* map) {
   const int i = t.Integer(row, c.i, 0, map->first_count - 1), j = t.Integer(row, c.j, 0, map->second_count - 1);
-  const double first = t.Value(row, c.first, detail::ModelParameter(map->first));
-  const double second = t.Value(row, c.second, detail::ModelParameter(map->second));
+  const double first = t.Value(row, c.first, AxisValues(map->first));
+  const double second = t.Value(row, c.second, AxisValues(map->second));
   const bool new_cell = map->cells.empty() || map->cells.back().i != i || map->cells.back().j != j;
   if (new_cell) {
     if (!map->cells.empty() && std::pair{j, i} <= std::pair{map->cells.back().j, map->cells.back().i}) {
@@ -136,13 +205,28 @@ MapCell& ReadCell(const CsvTable& t, int row, const MapColumns& c, BruteForceMap
   // (rows of one cell, and of one attractor, are consecutive): else the file is not one a
   // writer wrote, and would be written back otherwise.
   if (!new_cell && t.Text(row, c.count) != t.Text(row - 1, c.count)) throw t.Error(row, c.count, "differs from the cell's first row");
-  MapCell& cell = map->cells.back();
+  auto& cell = map->cells.back();
   if (first != cell.first) throw t.Error(row, c.first, "differs from the cell's first row");
   if (second != cell.second) throw t.Error(row, c.second, "differs from the cell's first row");
   return cell;
 }
 
-// An attractor's own columns, each by its kind; the signature parsed.
+// The attractor's own column: the paper's signature (parsed), a model's contact amplitude.
+void ReadOwn(const CsvTable& t, int row, const MapColumns& c, Attractor& a) {
+  a.signature = t.Text(row, c.own);
+  if (a.signature.empty()) return;
+  try {
+    Signature::Parse(a.signature);
+  } catch (const InvalidInput& e) {
+    throw t.Error(row, c.own, fmt::format("is invalid: {}", e.what()));
+  }
+}
+void ReadOwn(const CsvTable& t, int row, const MapColumns& c, ModelAttractor& a) {
+  a.contact_amplitude = t.Value(row, c.own, detail::NonNegative());
+}
+
+// An attractor's columns, each by its kind.
+template <typename Attractor>
 Attractor ReadAttractor(const CsvTable& t, int row, const MapColumns& c) {
   Attractor a;
   if (!FromString(t.Text(row, c.status), &a.status)) throw t.Error(row, c.status, "is invalid: valid periodic, not-settled, incomplete");
@@ -154,22 +238,17 @@ Attractor ReadAttractor(const CsvTable& t, int row, const MapColumns& c) {
   a.stops_per_period = t.Value(row, c.stops, detail::NonNegative());
   a.sticks_per_period = t.Value(row, c.sticks, detail::NonNegative());
   a.starts = t.Integer(row, c.starts, 1, std::numeric_limits<int>::max());
-  a.signature = t.Text(row, c.signature);
-  if (!a.signature.empty()) {
-    try {
-      Signature::Parse(a.signature);
-    } catch (const InvalidInput& e) {
-      throw t.Error(row, c.signature, fmt::format("is invalid: {}", e.what()));
-    }
-  }
+  ReadOwn(t, row, c, a);
   return a;
 }
 
 // The row's attractor: a new one (numbered from 0) or the last again, unchanged.
-Attractor& ReadRowAttractor(const CsvTable& t, int row, const MapColumns& c, MapCell& cell) {
+template <typename Cell>
+auto& ReadRowAttractor(const CsvTable& t, int row, const MapColumns& c, Cell& cell) {
+  using Attractor = typename decltype(cell.attractors)::value_type;
   const int index = t.Integer(row, c.index);
   if (!cell.attractors.empty() && index == static_cast<int>(cell.attractors.size()) - 1) {
-    for (const int column : {c.status, c.period, c.stops, c.sticks, c.starts, c.signature}) {
+    for (const int column : {c.status, c.period, c.stops, c.sticks, c.starts, c.own}) {
       if (t.Text(row, column) != t.Text(row - 1, column)) throw t.Error(row, column, "differs from the attractor's first row");
     }
     return cell.attractors.back();
@@ -177,29 +256,33 @@ Attractor& ReadRowAttractor(const CsvTable& t, int row, const MapColumns& c, Map
   if (index != static_cast<int>(cell.attractors.size())) {
     throw t.Error(row, c.index, fmt::format("is invalid: valid {} (attractors are numbered from 0)", cell.attractors.size()));
   }
-  cell.attractors.push_back(ReadAttractor(t, row, c));
+  cell.attractors.push_back(ReadAttractor<Attractor>(t, row, c));
   return cell.attractors.back();
 }
 
 // The row's section point, k = 0, 1, ... in order; each component finite.
+template <typename Attractor>
 void ReadSectionPoint(const CsvTable& t, int row, const MapColumns& c, Attractor& a) {
   const int points = a.status == AttractorStatus::kPeriodic ? a.period : 1;
   const int k = t.Integer(row, c.k);
   if (k != static_cast<int>(a.section.size()) || k >= points) {
     throw t.Error(row, c.k, fmt::format("is invalid: valid {} (k = 0..{} in order)", a.section.size(), points - 1));
   }
-  State x;
-  for (int component = 0; component < 4; ++component) x(component) = t.Value(row, c.x1 + component, detail::Finite());
+  auto x = decltype(a.section)::value_type::Zero(c.components).eval();
+  for (int component = 0; component < c.components; ++component) {
+    x(component) = t.Value(row, c.x + component, detail::Finite());
+  }
   a.section.push_back(x);
 }
 
 // Every cell's last attractor count, and every attractor's number of section points.
-void CheckCounts(const CsvTable& t, const BruteForceMap& map, const std::string& name, const MapColumns& c) {
+template <typename Map>
+void CheckCounts(const CsvTable& t, const Map& map, const std::string& name, const MapColumns& c) {
   if (!map.cells.empty() && map.cells.back().attractors.size() != static_cast<std::size_t>(t.Integer(t.rows() - 1, c.count))) {
     throw t.Error(t.rows() - 1, c.count, "is not the number of attractors the cell lists");
   }
-  for (const MapCell& cell : map.cells) {
-    for (const Attractor& a : cell.attractors) {
+  for (const auto& cell : map.cells) {
+    for (const auto& a : cell.attractors) {
       const std::size_t points = a.status == AttractorStatus::kPeriodic ? a.period : 1;
       if (a.section.size() != points) {
         throw InvalidInput::WithMessage(
@@ -210,34 +293,68 @@ void CheckCounts(const CsvTable& t, const BruteForceMap& map, const std::string&
   }
 }
 
-}  // namespace
-
-BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& name) {
-  const CsvTable table(text, name);
-  const auto [first, second] = MapParameters(table);
-  BruteForceMap map{first, second, 0, 0, 0.0, 0, {}};
+// The rows of `table` into `map` (its names set from the header).
+template <typename Map>
+Map ReadMapRows(const CsvTable& table, Map map, const std::string& name) {
   const MapColumns columns(table);
   for (int row = 0; row < table.rows(); ++row) {
     ReadGrid(table, row, columns, &map);
-    MapCell& cell = ReadCell(table, row, columns, &map);
+    auto& cell = ReadCell(table, row, columns, &map);
     ReadSectionPoint(table, row, columns, ReadRowAttractor(table, row, columns, cell));
   }
   CheckCounts(table, map, name, columns);
   return map;
 }
 
-BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, const std::vector<std::string>& names) {
+}  // namespace
+
+BruteForceMap ReadBruteForceMapCsv(std::string_view text, const std::string& name) {
+  const CsvTable table(text, name);
+  const auto [first, second] = MapParameters(table);
+  return ReadMapRows(table, BruteForceMap{first, second, 0, 0, 0.0, 0, {}}, name);
+}
+
+ModelBruteForceMap ReadModelBruteForceMapCsv(std::string_view text, const std::string& name) {
+  const CsvTable table(text, name);
+  return ReadMapRows(table, ModelMapOf(table), name);
+}
+
+void CheckBruteForceMapCsv(std::string_view text, const std::string& name) {
+  if (IsModelBruteForceMapCsv(text)) {
+    ReadModelBruteForceMapCsv(text, name);
+  } else {
+    ReadBruteForceMapCsv(text, name);
+  }
+}
+
+bool IsModelBruteForceMapCsv(std::string_view text) {
+  return IsModelMapHeader(text.substr(0, text.find('\n')));
+}
+
+namespace {
+
+std::string AxisName(ParameterId id) { return ToString(id); }
+const std::string& AxisName(const std::string& name) { return name; }
+
+// The map's parameters and what its rows hold: the same in every shard.
+bool SameKind(const BruteForceMap& a, const BruteForceMap& b) { return a.first == b.first && a.second == b.second; }
+bool SameKind(const ModelBruteForceMap& a, const ModelBruteForceMap& b) {
+  return a.first == b.first && a.second == b.second && a.contact == b.contact && a.state_columns == b.state_columns;
+}
+
+template <typename Map>
+Map MergeMaps(const std::vector<Map>& shards, const std::vector<std::string>& names) {
   auto refuse = [](const std::string& what) {
     return InvalidInput::WithMessage("merge", fmt::format("merge: {}: valid the shards of one map, every cell once", what));
   };
   if (shards.empty()) throw refuse("no shard given");
-  const BruteForceMap* grid = nullptr;  // the first shard with cells
+  const Map* grid = nullptr;  // the first shard with cells
   std::size_t grid_shard = 0;
   for (std::size_t s = 0; s < shards.size(); ++s) {
-    const BruteForceMap& m = shards[s];
-    if (m.first != shards[0].first || m.second != shards[0].second) {
-      throw refuse(fmt::format("'{}' maps {} and {}, '{}' {} and {}", names[s], ToString(m.first), ToString(m.second),
-                               names[0], ToString(shards[0].first), ToString(shards[0].second)));
+    const Map& m = shards[s];
+    if (!SameKind(m, shards[0])) {
+      throw refuse(fmt::format("'{}' maps {} and {}, '{}' {} and {}", names[s], AxisName(m.first), AxisName(m.second),
+                               names[0], AxisName(shards[0].first), AxisName(shards[0].second)));
     }
     if (m.cells.empty()) continue;
     if (!grid) {
@@ -253,16 +370,16 @@ BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, cons
   }
   if (!grid) throw refuse("no shard holds a cell");
   // Each cell from one shard; each value of i (of j) the same in every shard.
-  std::map<std::pair<int, int>, std::pair<const MapCell*, std::size_t>> cells;
+  std::map<std::pair<int, int>, std::pair<const typename decltype(grid->cells)::value_type*, std::size_t>> cells;
   std::map<int, std::pair<double, std::size_t>> first_values, second_values;
   for (std::size_t s = 0; s < shards.size(); ++s) {
-    for (const MapCell& cell : shards[s].cells) {
+    for (const auto& cell : shards[s].cells) {
       for (const auto& [values, index, value, axis] :
            {std::tuple{&first_values, cell.i, cell.first, "i"}, std::tuple{&second_values, cell.j, cell.second, "j"}}) {
         const auto [v, added] = values->try_emplace(index, value, s);
         if (!added && v->second.first != value) {
           throw refuse(fmt::format("'{}' has {} = {} at {} = {}, '{}' {}", names[s], axis, index,
-                                   axis == std::string_view("i") ? ToString(grid->first) : ToString(grid->second), value,
+                                   axis == std::string_view("i") ? AxisName(grid->first) : AxisName(grid->second), value,
                                    names[v->second.second], v->second.first));
         }
       }
@@ -274,14 +391,14 @@ BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, cons
   }
   // Last, so that a grid of other values or a cell twice is named as such: the fingerprint holds the axes too.
   for (std::size_t s = 0; s < shards.size(); ++s) {
-    const BruteForceMap& m = shards[s];
+    const Map& m = shards[s];
     if (!m.cells.empty() && m.run != grid->run) {
       throw refuse(fmt::format("'{}' is of run {:016x}, '{}' of run {:016x} (other data, axes, starts or options)", names[s],
                                m.run, names[grid_shard], grid->run));
     }
   }
-  BruteForceMap merged{grid->first,         grid->second, grid->first_count, grid->second_count,
-                       grid->section_phase, grid->run,    {}};
+  Map merged = *grid;
+  merged.cells.clear();
   for (int j = 0; j < merged.second_count; ++j) {
     for (int i = 0; i < merged.first_count; ++i) {
       const auto it = cells.find({j, i});
@@ -290,6 +407,16 @@ BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, cons
     }
   }
   return merged;
+}
+
+}  // namespace
+
+BruteForceMap MergeBruteForceMaps(const std::vector<BruteForceMap>& shards, const std::vector<std::string>& names) {
+  return MergeMaps(shards, names);
+}
+
+ModelBruteForceMap MergeBruteForceMaps(const std::vector<ModelBruteForceMap>& shards, const std::vector<std::string>& names) {
+  return MergeMaps(shards, names);
 }
 
 }  // namespace stickslip

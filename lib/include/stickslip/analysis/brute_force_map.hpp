@@ -44,6 +44,10 @@ namespace stickslip {
 inline constexpr ParameterId kDefaultFirstAxis = kAllParameters[Pascal2014::kForcingFrequencyParameter];
 inline constexpr ParameterId kDefaultSecondAxis = kAllParameters[Pascal2014::kStaticLevelParameter];
 
+// The value at index 0..steps of steps + 1 values from `from` to `to`, evenly spaced; index steps is
+// `to` exactly (from + (to - from) may miss it by an ulp).
+double GridValueAt(double from, double to, int steps, int index);
+
 // One axis of the grid: steps + 1 values from `from` to `to`, evenly spaced.
 struct MapAxis {
   ParameterId parameter = kDefaultFirstAxis;
@@ -52,8 +56,7 @@ struct MapAxis {
   int steps = 10;  // intervals between from and to (0 to BruteForceMapOptions::kMaxSteps): one value when 0
 
   int Count() const { return steps + 1; }
-  // The value at index 0..steps; index steps is `to` exactly (from + (to - from) may miss it by an ulp).
-  double ValueAt(int index) const;
+  double ValueAt(int index) const;  // GridValueAt
 };
 
 struct BruteForceMapOptions {

@@ -1,13 +1,8 @@
 // The atlas (atlas.hpp) of an oscillator of the user's (model/linear_oscillator.hpp): every periodic
 // motion over a range of one of its parameters, in the paper's atlas's three stages, built from the
 // parts every model has:
-//   1. brute force (analysis/sweep.hpp): at every grid value, runs from rest and from scattered
-//      starts (a fixed sweep: every value from each start afresh) and from the neighbouring value's
-//      end both ways (a chained sweep from rest, up then down); the runs that end on the same
-//      section orbit (the same period, the same section points under a cyclic shift, to the
-//      tolerance times their size) are one attractor; the runs that settle on none are one
-//      "not-settled" entry, those whose simulation stopped early (a motion growing without bound)
-//      one "incomplete" entry. A model without forcing is read on its stick-entry section;
+//   1. brute force (model_brute_force.hpp): at every grid value, runs from rest, from scattered
+//      starts and from the neighbouring value's end both ways, merged into attractors;
 //   2. exact orbits (model_orbit_finder.hpp): FindModelOrbit from every attractor of period up to
 //      max_multiple and from where the first run not settled ended, its simulation doubled
 //      (find_rounds simulations at most) while the motion it reads has not settled;
@@ -25,17 +20,13 @@
 //   const ModelAtlas<DynamicLinearOscillator> atlas = ComputeModelAtlas(model, parameters, o);
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "stickslip/analysis/atlas_fate.hpp"
-#include "stickslip/analysis/brute_force_map.hpp"  // AttractorStatus
+#include "stickslip/analysis/model_brute_force.hpp"
 #include "stickslip/analysis/model_orbit_finder.hpp"
-#include "stickslip/analysis/sweep.hpp"
 #include "stickslip/branches/branch_membership.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/model/linear_oscillator.hpp"
@@ -48,41 +39,25 @@ struct ModelAtlasOptions {
   double from = 0.0;  // the range (from < to), every grid value one the model takes
   double to = 0.0;
   int steps = 20;     // grid intervals over the range (1 to kMaxSteps)
-  // Per brute-force run: periods simulated and discarded, then recorded (forcing periods; without
-  // forcing, `time_unit`s). Periods up to recorded/2 are detected.
-  int transient_periods = 300;  // 0 to kMaxPeriods
-  int recorded_periods = 12;    // 2 to kMaxPeriods
-  // Besides rest, at every grid value: `centre` (rest where empty), then states drawn from the box
-  // |x - centre|_inf <= scatter (in the model's units, 0 to 1e6); scattered_starts in all (0 to
-  // kMaxScatteredStarts).
-  int scattered_starts = 4;
-  Eigen::VectorXd centre;
-  double scatter = 1.0;
-  std::uint64_t seed = 1;       // of the scattered starts (splitmix64)
-  // Section points repeat, and two runs end on one attractor, within this times their size.
-  double periodicity_tolerance = 1e-6;
-  // Without forcing, the time counted as a period (> 0): the slowest free oscillation's 2 pi/omega_1.
-  double time_unit = 0.0;
-  double section_phase = 0.0;  // with forcing: the forcing phase at the section times (time 0 of every run)
+  // Its runs, periods and section; its threads are every stage's (its progress is replaced by the
+  // atlas's).
+  ModelBruteForceOptions brute_force;
   // The period limit, forcing periods (1 to ModelFindOptions::kMaxMultiple); without forcing one
   // stick-slip cycle, which is what FindModelOrbit reads.
   int max_multiple = 4;
   // FindModelOrbit from an attractor: find_periods periods first, doubled while the motion read
   // has not settled, find_rounds simulations at most (1 to kMaxFindRounds).
-  int find_periods = 100;  // kMinFindPeriods to kMaxPeriods
+  int find_periods = 100;  // kMinFindPeriods to ModelBruteForceOptions::kMaxPeriods
   int find_rounds = 5;
   ContinuationOptions continuation;  // every trace's; its range is the atlas's
   TraceOptions trace;  // its max_amplitude in the model's units
   double resonance_approach = kDefaultResonanceApproach;
   BranchMembershipOptions membership;  // its parameter is the atlas's
   int max_traces = 500;  // 1 to kMaxTraces
-  int threads = 0;       // 0: every hardware thread. The result does not depend on it.
   // Called per stage: "points" of the brute force, "attractors solved", "attractors placed".
   ProgressCallback progress = {};
 
   static constexpr int kMaxSteps = 10000;
-  static constexpr int kMaxPeriods = 1000000;
-  static constexpr int kMaxScatteredStarts = 1000;
   static constexpr int kMinFindPeriods = 2;
   static constexpr int kMaxFindRounds = 10;
   static constexpr int kMaxTraces = 100000;
@@ -92,18 +67,6 @@ struct ModelAtlasOptions {
   // Throws InvalidInput naming the field as the command line's flag ("parameter", "range" for a
   // value the model refuses, "steps", "max-multiple", "tolerance", ...), before any simulation.
   void Validate(const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base) const;
-};
-
-// What the brute force found at one grid value: an attractor, or every run that settled on none.
-struct ModelAttractor {
-  AttractorStatus status = AttractorStatus::kNotSettled;
-  int period = 0;  // forcing periods (stick-slip cycles without forcing); 0 unless periodic
-  double stops_per_period = 0.0;
-  double sticks_per_period = 0.0;
-  double contact_amplitude = 0.0;  // max |q_c| over the recorded periods
-  int starts = 0;                  // the runs that ended on it
-  std::vector<Eigen::VectorXd> section;  // periodic: its `period` section points; else where the first run ended
-  std::string incomplete;  // kIncomplete: why the first run stopped early (the state it started from is the section's)
 };
 
 struct ModelAtlasAttractor {

@@ -20,11 +20,9 @@
 
 namespace stickslip {
 
-// The command's options for the model's atlas: its brute force's flags as the paper's (--tolerance
-// relative to the section states' size, --scatter in the model's units around the start's state,
-// the section at the start's phase), without forcing the transient in units of the slowest free
-// oscillation of its slip (as find's). Throws InvalidInput
-// naming the flag (ModelAtlasOptions::Validate, WholeNumber), before any simulation.
+// The command's options for the model's atlas, its brute force's as ModelBruteForceOptionsOf
+// (model_map.hpp) reads them. Throws InvalidInput naming the flag (ModelAtlasOptions::Validate,
+// WholeNumber), before any simulation.
 ModelAtlasOptions ModelAtlasOptionsOf(const AtlasCommand& command, const ModelFileStart& start);
 
 // The atlas's files (RecordModelAtlas) with the slip's natural frequencies (the start's) in every
