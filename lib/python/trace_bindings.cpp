@@ -24,6 +24,7 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/map_file.hpp"
+#include "stickslip/io/model_map.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/io/trace_files.hpp"
 
@@ -229,13 +230,30 @@ BruteForceMap MapSweep(const py::dict& start, const py::dict& o) {
   return ComputeBruteForceMap(origin.parameters, origin.phi, options);
 }
 
+// map_sweep(model=...): the run file's oscillator at its parameters and `set`'s, the options as
+// the command line's (the axes' names empty: the model's defaults).
+ModelBruteForceMap ModelMapSweep(const fs::path& path, const NamedValues& set, const py::dict& o) {
+  const ModelFileStart start = ReadModelFileStart(path, set);
+  MapSweepCommand c;
+  c.first = o["first"].cast<std::string>();
+  c.second = o["second"].cast<std::string>();
+  for (const auto& [key, member] : kMapNumbers) c.*member = o[key].cast<double>();
+  const ModelBruteForceMapOptions options = ModelMapOptionsOf(c, start);
+  const py::gil_scoped_release release;
+  return ComputeModelBruteForceMap(start.model, start.parameters, options);
+}
+
+std::string AxisName(ParameterId id) { return ToString(id); }
+const std::string& AxisName(const std::string& name) { return name; }
+
 // The cells as columns: i, j, the two parameters' values and the attractors found in each.
-py::dict CellColumns(const BruteForceMap& map) {
+template <typename Map>
+py::dict CellColumns(const Map& map) {
   const auto n = static_cast<py::ssize_t>(map.cells.size());
   py::array_t<int> i(n), j(n), count(n);
   py::array_t<double> first(n), second(n);
   for (py::ssize_t k = 0; k < n; ++k) {
-    const MapCell& cell = map.cells[k];
+    const auto& cell = map.cells[k];
     i.mutable_at(k) = cell.i;
     j.mutable_at(k) = cell.j;
     first.mutable_at(k) = cell.first;
@@ -245,23 +263,31 @@ py::dict CellColumns(const BruteForceMap& map) {
   py::dict d;
   d["i"] = i;
   d["j"] = j;
-  d[py::str(ToString(map.first))] = first;
-  d[py::str(ToString(map.second))] = second;
+  d[py::str(AxisName(map.first))] = first;
+  d[py::str(AxisName(map.second))] = second;
   d["attractors"] = count;
   return d;
 }
 
+// The attractor's own column: the paper's signature, a model's contact amplitude.
+void AddOwn(const Attractor& a, py::list& signature, std::vector<double>&) { signature.append(a.signature); }
+void AddOwn(const ModelAttractor& a, py::list&, std::vector<double>& amplitude) { amplitude.push_back(a.contact_amplitude); }
+py::array_t<double> SectionOf(const Attractor& a) { return StateArray(a.section); }
+py::array_t<double> SectionOf(const ModelAttractor& a) { return StateArray(a.section, a.section.front().size()); }
+
 // One row per attractor of every cell: its cell (index into the cells), its index in the cell,
-// status, period, stops and sticks per period, starts, signature and section points (period x 4,
-// or the last state, 1 x 4, when not periodic).
-py::dict AttractorColumns(const BruteForceMap& map) {
+// status, period, stops and sticks per period, starts, signature (the paper's model) or the
+// contact's amplitude (a [model]'s), and section points (period x state size, or the last state,
+// 1 x state size, when not periodic).
+template <typename Map>
+py::dict AttractorColumns(const Map& map) {
   std::vector<int> cell, index, period, starts;
-  std::vector<double> stops, sticks;
+  std::vector<double> stops, sticks, amplitude;
   py::list status, signature, section;
   for (std::size_t k = 0; k < map.cells.size(); ++k) {
-    const std::vector<Attractor>& attractors = map.cells[k].attractors;
+    const auto& attractors = map.cells[k].attractors;
     for (std::size_t a = 0; a < attractors.size(); ++a) {
-      const Attractor& attractor = attractors[a];
+      const auto& attractor = attractors[a];
       cell.push_back(static_cast<int>(k));
       index.push_back(static_cast<int>(a));
       status.append(ToString(attractor.status));
@@ -269,8 +295,8 @@ py::dict AttractorColumns(const BruteForceMap& map) {
       stops.push_back(attractor.stops_per_period);
       sticks.push_back(attractor.sticks_per_period);
       starts.push_back(attractor.starts);
-      signature.append(attractor.signature);
-      section.append(StateArray(attractor.section));
+      AddOwn(attractor, signature, amplitude);
+      section.append(SectionOf(attractor));
     }
   }
   const auto array = [](const auto& values) {
@@ -285,49 +311,74 @@ py::dict AttractorColumns(const BruteForceMap& map) {
   d["stops_per_period"] = array(stops);
   d["sticks_per_period"] = array(sticks);
   d["starts"] = array(starts);
-  d["signature"] = signature;
+  if constexpr (std::is_same_v<Map, ModelBruteForceMap>) {
+    d[py::str("amplitude:" + map.contact)] = array(amplitude);
+  } else {
+    d["signature"] = signature;
+  }
   d["section"] = section;
   return d;
 }
 
-void BindMap(py::module_& m) {
-  py::class_<BruteForceMap>(m, "MapSweepResult",
-                            "A brute-force map over two parameters (as `stickslip map-sweep`): `cells` and\n"
-                            "`attractors` as columns of NumPy arrays (see stickslip.map_sweep); csv() is the\n"
-                            "command line's file, save(path) writes it, MapSweepResult.load(path) reads one.")
-      .def_property_readonly("first", [](const BruteForceMap& map) { return std::string(ToString(map.first)); },
+// The result class of map_sweep for either map: its axes, cells and attractors as NumPy columns, its file.
+template <typename Map>
+void BindMapResult(py::module_& m, const char* name, const char* doc, const char* attractors_doc,
+                   Map (*read)(std::string_view, const std::string&)) {
+  py::class_<Map>(m, name, doc)
+      .def_property_readonly("first", [](const Map& map) { return std::string(AxisName(map.first)); },
                              "the parameter stepped along i")
-      .def_property_readonly("second", [](const BruteForceMap& map) { return std::string(ToString(map.second)); },
+      .def_property_readonly("second", [](const Map& map) { return std::string(AxisName(map.second)); },
                              "the parameter stepped along j (a row per value)")
-      .def_property_readonly("shape", [](const BruteForceMap& map) { return py::make_tuple(map.first_count, map.second_count); },
+      .def_property_readonly("shape", [](const Map& map) { return py::make_tuple(map.first_count, map.second_count); },
                              "(cells along i, cells along j)")
-      .def_property_readonly("section_phase", [](const BruteForceMap& map) { return map.section_phase; },
+      .def_property_readonly("section_phase", [](const Map& map) { return map.section_phase; },
                              "the forcing phase of the stroboscopic section, rad")
-      .def_property_readonly("cells", &CellColumns,
+      .def_property_readonly("cells", &CellColumns<Map>,
                              "{'i', 'j', <first>, <second>, 'attractors'}: one entry per cell, by j then i")
-      .def_property_readonly("attractors", &AttractorColumns,
-                             "one entry per attractor of every cell: 'cell' (index into cells), 'attractor',\n"
-                             "'status' (periodic, not-settled, incomplete), 'period' (forcing periods; 0 unless\n"
-                             "periodic), 'stops_per_period', 'sticks_per_period', 'starts' (the runs that ended\n"
-                             "on it), 'signature' ('' if none was read), 'section' (period x 4 section states\n"
-                             "x1, x2, v1, v2; the last state, 1 x 4, when not periodic)")
-      .def("csv", [](const BruteForceMap& map) { return BruteForceMapCsv(map); },
+      .def_property_readonly("attractors", &AttractorColumns<Map>, attractors_doc)
+      .def("csv", [](const Map& map) { return BruteForceMapCsv(map); },
            "The CSV text `stickslip map-sweep --output` writes for the same map")
       .def(
-          "save", [](const BruteForceMap& map, const fs::path& path) { WriteFileAtomically(path, BruteForceMapCsv(map)); },
+          "save", [](const Map& map, const fs::path& path) { WriteFileAtomically(path, BruteForceMapCsv(map)); },
           py::arg("path"), "Writes csv() to `path` (whole or not at all)")
       .def_static(
           "load",
-          [](const fs::path& path) {
+          [read](const fs::path& path) {
             std::ifstream in(path, std::ios::binary);
             if (!in) throw InvalidInput("path", "'" + path.string() + "'", "a readable map file of stickslip map-sweep");
             std::ostringstream text;
             text << in.rdbuf();
-            return ReadBruteForceMapCsv(text.str(), path.string());
+            return read(text.str(), path.string());
           },
           py::arg("path"), "The map of a file `stickslip map-sweep` (or save) wrote")
-      .def("__len__", [](const BruteForceMap& map) { return map.cells.size(); });
+      .def("__len__", [](const Map& map) { return map.cells.size(); });
+}
+
+void BindMap(py::module_& m) {
+  BindMapResult<BruteForceMap>(
+      m, "MapSweepResult",
+      "A brute-force map over two parameters (as `stickslip map-sweep`): `cells` and\n"
+      "`attractors` as columns of NumPy arrays (see stickslip.map_sweep); csv() is the\n"
+      "command line's file, save(path) writes it, MapSweepResult.load(path) reads one.",
+      "one entry per attractor of every cell: 'cell' (index into cells), 'attractor',\n"
+      "'status' (periodic, not-settled, incomplete), 'period' (forcing periods; 0 unless\n"
+      "periodic), 'stops_per_period', 'sticks_per_period', 'starts' (the runs that ended\n"
+      "on it), 'signature' ('' if none was read), 'section' (period x 4 section states\n"
+      "x1, x2, v1, v2; the last state, 1 x 4, when not periodic)",
+      &ReadBruteForceMapCsv);
+  BindMapResult<ModelBruteForceMap>(
+      m, "ModelMapSweepResult",
+      "A brute-force map of an oscillator of your own over two of its parameters (as `stickslip\n"
+      "map-sweep --model`): `cells` and `attractors` as columns of NumPy arrays; csv(), save(path)\n"
+      "and ModelMapSweepResult.load(path) as MapSweepResult's.",
+      "one entry per attractor of every cell: 'cell' (index into cells), 'attractor',\n"
+      "'status' (periodic, not-settled, incomplete), 'period' (forcing periods, stick-slip cycles\n"
+      "without forcing; 0 unless periodic), 'stops_per_period', 'sticks_per_period', 'starts',\n"
+      "'amplitude:<contact>' (max |q| of the contact's coordinate over the recorded periods),\n"
+      "'section' (period x state size, the model's units; the last state when not periodic)",
+      &ReadModelBruteForceMapCsv);
   m.def("_map_sweep", &MapSweep, py::arg("start"), py::arg("options"));
+  m.def("_map_sweep_model", &ModelMapSweep, py::arg("path"), py::arg("set"), py::arg("options"));
   // The defaults of the keywords, stated once (MapSweepCommand): whole numbers as int.
   m.def("_map_sweep_defaults", [] {
     const MapSweepCommand c;

@@ -98,6 +98,35 @@ def test_sweep_is_the_command_lines_file(tmp_path):
         stickslip.sweep(range=(1.5, 2.5), model=MODELS / "den-hartog.toml", preset="paper-4.1")
 
 
+def test_map_sweep_is_the_command_lines_file(tmp_path):
+    mapped = stickslip.map_sweep(model=MODELS / "den-hartog.toml", first_range=(1.2, 2.0), first_steps=2,
+                                 second="F_k", second_range=(0.15, 0.25), second_steps=1, starts=1,
+                                 set={"F_s": 0.3})
+    out = tmp_path / "dh-map.csv"
+    done = cli("map-sweep", "--model", MODELS / "den-hartog.toml", "--first-from", 1.2, "--first-to", 2.0,
+               "--first-steps", 2, "--second", "F_k", "--second-from", 0.15, "--second-to", 0.25, "--second-steps", 1,
+               "--starts", 1, "--set", "F_s=0.3", "--output", out)
+    assert done.returncode == 0, done.stderr
+    assert mapped.csv() == out.read_text()
+    assert stickslip.ModelMapSweepResult.load(out).csv() == mapped.csv()
+    assert (mapped.first, mapped.second, mapped.shape) == ("omega", "F_k", (3, 2))
+    a = mapped.attractors
+    assert list(a["period"]) == [1] * 6 and a["section"][0].shape == (1, 2)
+    # Den Hartog's amplitude in every cell, to the simulation's settling.
+    for cell, amplitude in zip(a["cell"], a["amplitude:m1"]):
+        r, beta = mapped.cells["omega"][cell], mapped.cells["F_k"][cell]
+        V, U = 1 / (1 - r * r), math.tan(math.pi / (2 * r)) / r
+        assert abs(amplitude - math.sqrt(V * V - beta * beta * U * U)) <= 1e-6 * amplitude
+    with pytest.raises(ValueError) as python:
+        stickslip.map_sweep(model=MODELS / "belt.toml", first_range=(0.2, 0.4), second="omega", second_range=(1, 2))
+    assert str(python.value) == cli_error("map-sweep", "--model", MODELS / "belt.toml", "--first-from", 0.2,
+                                          "--first-to", 0.4, "--second", "omega", "--second-from", 1, "--second-to", 2,
+                                          "--output", tmp_path / "belt.csv")
+    with pytest.raises(ValueError, match="point is invalid with model="):
+        stickslip.map_sweep(model=MODELS / "den-hartog.toml", first_range=(1.2, 2), second_range=(0.3, 0.4),
+                            point="x:EP1")
+
+
 def test_find_reads_a_subharmonic_from_a_given_start(tmp_path):
     # Section 4.1's oscillator as a chain in physical units (m1 = 1, m2 = 1/eta, k1 = 1 - chi, k2 = chi,
     # forcing 1/eta on m2, F_k = u_s, F_s = u_r), started at the paper's preset state and phase: at

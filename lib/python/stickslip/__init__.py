@@ -38,7 +38,7 @@ from dataclasses import dataclass as _dataclass
 import numpy as _np
 
 from . import _stickslip as _core
-from ._stickslip import ConvergenceError, MapSweepResult, Orbit, Parameters, Signature, SweepResult
+from ._stickslip import ConvergenceError, MapSweepResult, ModelMapSweepResult, Orbit, Parameters, Signature, SweepResult
 # The project's VERSION (CMakeLists.txt), as `stickslip --version` and the result files give it.
 from ._stickslip import __version__
 from ._branch import Branch, Continuation
@@ -48,7 +48,7 @@ from ._inputs import InvalidArgument, _checked, _one_off_run, _optional_text, _p
 from . import plotting
 
 __all__ = [
-    "Atlas", "atlas", "Branch", "Continuation", "ConvergenceError", "InvalidArgument", "MapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
+    "Atlas", "atlas", "Branch", "Continuation", "ConvergenceError", "InvalidArgument", "MapSweepResult", "ModelMapSweepResult", "Orbit", "Parameters", "Preset", "Signature",
     "Found", "ModelFound", "Simulation", "SweepResult", "Trace", "continue_orbit", "describe", "find", "map_sweep", "natural_frequencies",
     "plot", "plotting", "presets", "run", "simulate", "solve", "sweep", "trace", "two_parameter",
 ]
@@ -85,7 +85,7 @@ Parameters.preset = staticmethod(_parameters_of_preset)
 def _plotting_result(result, name):
     if isinstance(result, (Branch, Trace)):
         return result._plotting_result()
-    if isinstance(result, (SweepResult, MapSweepResult)):
+    if isinstance(result, (SweepResult, MapSweepResult, ModelMapSweepResult)):
         return plotting.csv_result(name, result.csv())
     return result  # a path, or a plotting result already
 
@@ -118,6 +118,7 @@ def _result_plot(self, **options):
 
 SweepResult.plot = _result_plot
 MapSweepResult.plot = _result_plot
+ModelMapSweepResult.plot = _result_plot
 
 
 def natural_frequencies(parameters):
@@ -496,15 +497,15 @@ def sweep(parameters=None, state=None, phi=None, *, range, parameter=_SWEEP_DEFA
 _MAP_DEFAULTS = _core._map_sweep_defaults()
 
 
-def map_sweep(parameters=None, state=None, phi=None, *, first_range, second_range,
-              first=_MAP_DEFAULTS["first"], second=_MAP_DEFAULTS["second"],
+def map_sweep(parameters=None, state=None, phi=None, *, first_range, second_range, first=None, second=None,
               first_steps=_MAP_DEFAULTS["first_steps"], second_steps=_MAP_DEFAULTS["second_steps"],
               transients=_MAP_DEFAULTS["transients"], periods=_MAP_DEFAULTS["periods"], starts=_MAP_DEFAULTS["starts"],
               scatter=_MAP_DEFAULTS["scatter"], seed=_MAP_DEFAULTS["seed"], tolerance=_MAP_DEFAULTS["tolerance"],
-              threads=_MAP_DEFAULTS["threads"], preset=None, point=None, results="results", set=None):
+              threads=_MAP_DEFAULTS["threads"], preset=None, point=None, results="results", set=None, model=None):
     """The brute-force map of motions over two parameters, as `stickslip map-sweep`.
 
-    first, second   the parameters stepped along i and along j (chi, eta, omega, u_s, u_r; different)
+    first, second   the parameters stepped along i and along j (chi, eta, omega, u_s, u_r; different;
+                    unless given omega and u_r)
     first_range, second_range  (from, to) of each, in the parameter's valid range (every cell is
                     checked: u_r >= u_s, away from the natural frequencies)
     first_steps, second_steps  intervals along i and j (0 to 1e4): (steps + 1) cells each
@@ -519,15 +520,28 @@ def map_sweep(parameters=None, state=None, phi=None, *, first_range, second_rang
     The section is taken at the forcing phase phi (time 0 of every run). Returns a MapSweepResult:
     per cell and per attractor NumPy arrays; result.csv() / result.save(path) is the file
     `stickslip map-sweep --output` writes. The GIL is released while the map is computed.
+
+    model: a run file with a [model] table (an oscillator of your own, as `stickslip map-sweep
+    --model`): first and second name its parameters (unless given omega, v_b without forcing, and
+    F_s), set= a dict over the file's parameters and start (x1_0=..., phi=...), scatter and
+    tolerance in its units (tolerance relative to the section states' size). Returns a
+    ModelMapSweepResult: its attractors carry 'amplitude:<contact>' where the paper's carry
+    'signature', their sections the model's state size.
     """
-    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     first_from, first_to = _pair(first_range, "first_range")
     second_from, second_to = _pair(second_range, "second_range")
     numbers = {"first_steps": first_steps, "second_steps": second_steps, "transients": transients, "periods": periods,
                "starts": starts, "scatter": scatter, "seed": seed, "tolerance": tolerance, "threads": threads}
-    options = {"first": _checked(first, "first", "text"), "second": _checked(second, "second", "text"),
+    options = {"first": "" if first is None else _checked(first, "first", "text"),
+               "second": "" if second is None else _checked(second, "second", "text"),
                "first_from": first_from, "first_to": first_to, "second_from": second_from, "second_to": second_to,
                **{name: _checked(value, name, "number") for name, value in numbers.items()}}
+    if model is not None:
+        _refuse_paper_start(parameters, state, phi, preset, point, results)
+        return _core._map_sweep_model(_checked(model, "model", "path"), _model_set(set), options)
+    options["first"] = _MAP_DEFAULTS["first"] if first is None else options["first"]
+    options["second"] = _MAP_DEFAULTS["second"] if second is None else options["second"]
+    origin = _start(parameters, state, phi, preset=preset, point=point, results=results, set=set)
     return _core._map_sweep(origin, options)
 
 

@@ -38,8 +38,8 @@ ModelBruteForceOptions ModelBruteForceOptionsOf(const Command& c, const ModelFil
   return o;
 }
 
-// map-sweep's options for the model's map (its axes by the model's parameter names, the shard as
-// given). Throws InvalidInput naming the flag (ModelBruteForceMapOptions::Validate, WholeNumber),
+// map-sweep's options for the model's map (its axes by the model's parameter names: where empty,
+// omega, or v_b without forcing, and F_s; the shard as given). Throws InvalidInput naming the flag (ModelBruteForceMapOptions::Validate, WholeNumber),
 // before any simulation.
 ModelBruteForceMapOptions ModelMapOptionsOf(const MapSweepCommand& command, const ModelFileStart& start);
 
