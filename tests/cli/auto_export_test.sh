@@ -67,8 +67,8 @@ print(f"{run}: AUTO reads {len(b)} points, {len(s)} labelled solutions, {len(d)}
 PY
 done
 # A [model]'s run (a branch of the five-mass chain's trace): the b. file's columns are the model's
-# (omega, amplitude:m1 .. m5, ...), the s. file holds its ten-component state sampled by the exact
-# simulator from the stored start over one period, which comes back to it, and PAR(1..4) = omega,
+# (omega, amplitude:m1 .. m5, ...), the s. file holds its ten-component state sampled by the closed
+# forms from the stored start over one period, which comes back to it, and PAR(1..4) = omega,
 # F_k, F_s, v_b with PAR(11) = 2 pi/omega. The model is read from the run file the summary names,
 # relative to where the run was made (the source tree).
 model_run="$work/chain/branch-3"
@@ -103,6 +103,20 @@ for solution, row in zip(s, labelled):
     assert all(abs(u[i][-1] - u[i][0]) <= 1e-8 for i in range(10)), "not periodic"
 print(f"five-mass chain: AUTO reads {len(b)} points, {len(s)} labelled solutions of 10 components")
 PY
+# Every branch of every [model] trace in results/ exports, labels at grazings (GR), crossings (SK)
+# and tori (NS) included: their orbits are sampled by the closed forms, which a simulator may not
+# follow where a margin vanishes (it took the other side at 15 of them).
+mkdir -p "$work/all"
+count=0
+for branch in "$root"/results/models/*-trace/branch-* "$root"/results/atlases/*/trace-*/branch-*; do
+  grep -q '"model": "linear-oscillator"' "$branch/summary.json" 2> /dev/null || continue
+  count=$((count + 1))
+  copy="$work/all/$count/$(basename "$branch")"
+  mkdir -p "$(dirname "$copy")" && cp -r "$branch" "$copy"
+  (cd "$root" && "$bin" export --auto "$copy" > /dev/null) || { echo "FAIL: export --auto of $branch"; exit 1; }
+done
+[ "$count" -ge 50 ] || { echo "FAIL: only $count [model] branches found in results/"; exit 1; }
+echo "every [model] branch in results exports: $count"
 # A run stored before the friction measures existed: read with them nan, exported with every value
 # its own right-aligned field (NaN too), which AUTO's parser reads, the measures read back as NaN.
 old=paper-5.1-omega-old

@@ -14,7 +14,6 @@
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
-#include "stickslip/model/exact_simulator.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/verification.hpp"
@@ -112,28 +111,22 @@ ModelFileStart ModelOfRun(const StoredRun& run) {
   return ReadModelFileStart(run.summary.run_file, {});
 }
 
-// A [model]'s orbit by its exact simulator (the same closed forms, sampled), which must come back to
-// its start after the period: else the run file no longer describes the model of the run.
+// A [model]'s orbit by its closed forms (SampleOrbit), which must come back to its start after the
+// period: else the run file no longer describes the model of the run.
 SampledOrbit SampledOf(const ModelFileStart& file, const StoredRun& run, const StoredPoint& p, int samples) {
   const BasicOrbit<DynamicLinearOscillator> orbit = OrbitOf(file.model, file.parameters, run, p);
   SampledOrbit sampled;
   sampled.period = PeriodOf(file.model, orbit);
-  BasicSimulationOptions<DynamicLinearOscillator::State> options;
-  options.duration = sampled.period;
-  options.sample_step = sampled.period / (samples - 1);
-  const auto simulated = SimulateExact(file.model, orbit.parameters, orbit.start, orbit.phi, options);
+  const std::vector<DynamicLinearOscillator::State> states = SampleOrbit(file.model, orbit, samples);
   const double size = OrbitSize(file.model, orbit);
-  if (!simulated.Completed() || static_cast<int>(simulated.samples.size()) < samples ||
-      !((simulated.samples[samples - 1].state - orbit.start).lpNorm<Eigen::Infinity>() <= 1e-6 * size)) {
+  if (static_cast<int>(states.size()) != samples || !states.back().allFinite() ||
+      !((states.back() - orbit.start).lpNorm<Eigen::Infinity>() <= 1e-6 * size)) {
     throw InvalidInput::WithMessage(
         "run_file", fmt::format("'{}': the orbit of {} is no periodic orbit of the model '{}' describes now (was the file "
                                 "changed since the run?): valid the run file the run was made from",
                                 run.summary.output, p.label, run.summary.run_file));
   }
-  for (int k = 0; k < samples; ++k) {
-    const auto& x = simulated.samples[k].state;
-    sampled.states.emplace_back(x.data(), x.data() + x.size());
-  }
+  for (const DynamicLinearOscillator::State& x : states) sampled.states.emplace_back(x.data(), x.data() + x.size());
   for (int k = 0; k < file.model.Description().ParameterCount(); ++k) {
     sampled.parameters.push_back(DynamicLinearOscillator::ParameterAt(orbit.parameters, k));
   }

@@ -1,5 +1,7 @@
 #include "stickslip/orbits/orbit.hpp"
 
+#include "stickslip/orbits/any_orbit.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -25,19 +27,7 @@ std::vector<State> Orbit::SegmentStates() const {
   return states;
 }
 
-std::vector<State> Orbit::Sample(int count) const {
-  std::vector<State> samples;
-  const double period = Period();
-  int k = 0;
-  WalkSegments(*this, Extent::kFullPeriod, PhaseRule::kAccumulated, [&](const SegmentVisit<double>& s) {
-    for (; k < count; ++k) {
-      const double t = period * k / (count - 1);
-      if (!s.last && t > s.t0 + s.duration) break;  // in a later segment
-      samples.push_back(s.motion.StateAt(t - s.t0));
-    }
-  });
-  return samples;
-}
+std::vector<State> Orbit::Sample(int count) const { return SampleOrbit(Pascal2014{}, OnModel(), count); }
 
 double PhaseInCycle(double phase) {
   double reduced = std::fmod(phase, 2.0 * std::numbers::pi);

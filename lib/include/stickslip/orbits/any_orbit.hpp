@@ -8,12 +8,14 @@
 #include <cmath>
 #include <numbers>
 #include <string_view>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "stickslip/model/oscillator_model.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_layout.hpp"
+#include "stickslip/orbits/segment_walk.hpp"
 
 namespace stickslip {
 
@@ -34,6 +36,24 @@ double PeriodOf(const Model& model, const BasicOrbit<Model>& orbit) {
     return listed / orbit.signature.CoveredFraction();
   }
   return orbit.signature.period_multiple() * 2.0 * std::numbers::pi / model.ForcingFrequency(orbit.parameters);
+}
+
+// `count` (>= 2) states evenly spaced in time over the period, from the start to the period's end
+// (back at the start on a periodic orbit), by the closed forms along the one segment walk: exact
+// also where a margin vanishes (a grazing), where a simulator may take either side.
+template <OscillatorModel Model>
+std::vector<typename Model::State> SampleOrbit(const Model& model, const BasicOrbit<Model>& orbit, int count) {
+  std::vector<typename Model::State> samples;
+  const double period = PeriodOf(model, orbit);
+  int k = 0;
+  WalkSegments(model, orbit, Extent::kFullPeriod, PhaseRule::kAccumulated, [&](const SegmentVisit<double, Model>& s) {
+    for (; k < count; ++k) {
+      const double t = period * k / (count - 1);
+      if (!s.last && t > s.t0 + s.duration) break;  // in a later segment
+      samples.push_back(s.motion.StateAt(t - s.t0));
+    }
+  });
+  return samples;
 }
 
 // The variable of OrbitLayout's `index` (start state, phase, durations, parameters).
