@@ -94,9 +94,6 @@ int RunMerge(const MapSweepArgs& args) {
   return kExitOk;
 }
 
-std::string AxisName(ParameterId id) { return ToString(id); }
-const std::string& AxisName(const std::string& name) { return name; }
-
 template <typename Map>
 std::string MapSweepSummary(const Map& map, const std::string& output) {
   int attractors = 0, coexisting = 0, unsettled = 0;
@@ -133,20 +130,39 @@ MapSweepCommand CheckedForRanks(MapSweepCommand c, int ranks) {
   return c;
 }
 
+// The plan that computes a shard of the map `compute` makes of `options` (either model's).
+template <typename Options, typename Compute>
+MapSweepPlan PlanWith(const Options& options, Compute compute, const MapSweepCommand& c, const MapSweepArgs& args) {
+  const auto shard = [options, compute, output = args.output](int k, int n, const ProgressCallback& progress) {
+    Options o = options;
+    o.shard = k;
+    o.shards = n;
+    o.progress = progress;
+    const auto map = compute(o);
+    return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
+  };
+  return {shard, c.shard, c.shards, args.output, args.force};
+}
+
+// --merge joins files: an option of the computation given with it would be ignored.
+void RefuseWithMerge(const CLI::App& cmd) {
+  for (const CLI::Option* option : cmd.get_options()) {
+    const std::string name = option->get_name();
+    if (option->count() == 0 || name == "--merge" || name == "--force" || name == "shards") continue;
+    throw InvalidInput::WithMessage(name.substr(name.starts_with("--") ? 2 : 0),
+                                    fmt::format("{} is not taken with --merge: it joins the shard files as they are "
+                                                "(--merge OUT SHARD.csv... [--force])",
+                                                name));
+  }
+}
+
 MapSweepPlan PlanOf(const MapSweepArgs& args, int ranks) {
   const ModelStart input = BuildModelStart(ToStartInput(args.origin));
   const MapSweepCommand c = CommandOf(args);
-  const BruteForceMapOptions options = MapOptionsOf(CheckedForRanks(c, ranks), input);
-  const auto compute = [base = input.parameters, phi = input.phi, options, output = args.output](
-                           int shard, int shards, const ProgressCallback& progress) {
-    BruteForceMapOptions o = options;
-    o.shard = shard;
-    o.shards = shards;
-    o.progress = progress;
-    const BruteForceMap map = ComputeBruteForceMap(base, phi, o);
-    return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
+  const auto compute = [base = input.parameters, phi = input.phi](const BruteForceMapOptions& o) {
+    return ComputeBruteForceMap(base, phi, o);
   };
-  return {compute, c.shard, c.shards, args.output, args.force};
+  return PlanWith(MapOptionsOf(CheckedForRanks(c, ranks), input), compute, c, args);
 }
 
 // map-sweep --model: the run file's oscillator at its parameters and --set's, the scattered starts
@@ -155,21 +171,15 @@ MapSweepPlan ModelPlanOf(const MapSweepArgs& args, const CLI::App& cmd, int rank
   RefuseWithModel(cmd, {"--preset", "--point", "--results"},
                   "the run file's [model] and --set give the oscillator, its parameters and the start the "
                   "scattered starts are drawn around");
+  RefuseOutputOverModel(args.output, args.model, "output");
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.origin.set));
   MapSweepCommand c = CommandOf(args);
-  if (cmd.count("--first") == 0) c.first = start.model.Autonomous() ? "v_b" : "omega";
-  if (cmd.count("--second") == 0) c.second = "F_s";
-  const ModelBruteForceMapOptions options = ModelMapOptionsOf(CheckedForRanks(c, ranks), start);
-  const auto compute = [model = start.model, base = start.parameters, options, output = args.output](
-                           int shard, int shards, const ProgressCallback& progress) {
-    ModelBruteForceMapOptions o = options;
-    o.shard = shard;
-    o.shards = shards;
-    o.runs.progress = progress;
-    const ModelBruteForceMap map = ComputeModelBruteForceMap(model, base, o);
-    return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
+  if (cmd.count("--first") == 0) c.first.clear();  // the model's own defaults (ModelMapOptionsOf)
+  if (cmd.count("--second") == 0) c.second.clear();
+  const auto compute = [model = start.model, base = start.parameters](const ModelBruteForceMapOptions& o) {
+    return ComputeModelBruteForceMap(model, base, o);
   };
-  return {compute, c.shard, c.shards, args.output, args.force};
+  return PlanWith(ModelMapOptionsOf(CheckedForRanks(c, ranks), start), compute, c, args);
 }
 
 }  // namespace
@@ -186,7 +196,7 @@ MapFile MergeMapFiles(const std::vector<std::string>& texts, const std::vector<s
     const auto map = MergeBruteForceMaps(maps, names);
     return MapFile{BruteForceMapCsv(map), MapSweepSummary(map, output)};
   };
-  // A model's map by its header; shards of the two kinds are refused as the paper's header's error.
+  // Either model's map, by the first shard's header; a shard of the other kind has a header its reader refuses.
   if (!texts.empty() && IsModelBruteForceMapCsv(texts[0])) return merged(ReadModelBruteForceMapCsv);
   return merged(ReadBruteForceMapCsv);
 }
@@ -212,11 +222,14 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, in
       "--transients forcing periods simulated out, then --periods recorded on the stroboscopic section (the"
       " state at forcing phase phi). Runs that end on the same periodic section orbit (to --tolerance, any "
       "shift) are one attractor, listed with its period, stops and sticks per period, signature (orbit "
-      "type) and how many starts found it; motions that do not settle are listed as not-settled. ") +
+      "type) and how many starts found it; motions that do not settle are listed as not-settled. With --model "
+      "each row is the brute force of atlas --model: rest, --starts scattered states and the neighbouring "
+      "cells' ends both ways along the row (a chained sweep up and down). ") +
           (shards ? "The file does not depend on --threads, --shard or MPI ranks. --shard k/N computes the rows j with j "
                     "mod N = k - 1; --merge OUT SHARD.csv... joins the shards into the file the whole run writes. "
                   : "The file does not depend on --threads or the number of ranks. ") +
-          "Time is the paper's scaled time.");
+          "Time is the paper's scaled time; with --model the model's own units, --tolerance relative to the "
+          "section states' size and each attractor's amplitude:<contact> in place of its signature.");
   AddStartOptions(*cmd, &args->origin, StartOptions::kMotion);
   cmd->add_option("--model", args->model,
                   "a run file with a [model] (an oscillator of your own, in its units): its map over two of its "
@@ -231,7 +244,7 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, in
   AddNumberOption(*cmd, "--first-from", &args->first_from, range, "its value at i = 0 (its range under --set; every cell is checked)");
   AddNumberOption(*cmd, "--first-to", &args->first_to, range, "its value at i = --first-steps");
   AddCountOption(*cmd, "--first-steps", &args->first_steps, 0, BruteForceMapOptions::kMaxSteps,
-                 "intervals along i (0 to 1e4)");
+                 "intervals along i (0 to 1e4; with --model 1 to 1e4)");
   cmd->add_option("--second", args->second, "the parameter stepped along j (a row per value)")->capture_default_str();
   AddNumberOption(*cmd, "--second-from", &args->second_from, range, "its value at j = 0 (its range under --set)");
   AddNumberOption(*cmd, "--second-to", &args->second_to, range, "its value at j = --second-steps");
@@ -244,14 +257,18 @@ Command AddMapSweepCommand(CLI::App& app, MapSweepRunner runner, bool shards, in
   }
   cmd->add_option("--output", args->output,
                   "CSV file: i,j,ni,nj,<first>,<second>,section_phase,run,attractors,attractor,status,period,"
-                  "stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2");
+                  "stops_per_period,sticks_per_period,starts,signature,k,x1,x2,v1,v2 (with --model: "
+                  "...,starts,amplitude:<contact>,k,<the state by the model's names>)");
   cmd->add_flag("--force", args->force, kForceHelp);
   if (shards) {
     cmd->add_option("--merge", args->merge, "merge the SHARD files into this file instead of computing");
     cmd->add_option("shards", args->shards, "with --merge: the shard files (every cell of one map once)");
   }
   return {cmd, [args, runner, cmd, shards, ranks] {
-            if (shards && cmd->count("--merge") > 0) return RunMerge(*args);
+            if (shards && cmd->count("--merge") > 0) {
+              RefuseWithMerge(*cmd);
+              return RunMerge(*args);
+            }
             if (!args->shards.empty()) {
               throw InvalidInput("shards", "'" + args->shards.front() + "'", "shard files only with --merge OUT");
             }

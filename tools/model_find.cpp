@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -136,6 +137,14 @@ void RefuseWithModel(const CLI::App& cmd, std::initializer_list<const char*> opt
     if (cmd.count(option) == 0) continue;
     throw InvalidInput::WithMessage(option + 2, fmt::format("{} is not taken with --model: {}", option, instead));
   }
+}
+
+void RefuseOutputOverModel(const std::string& output, const std::string& model, const char* field) {
+  std::error_code error;  // none when the output does not exist yet
+  if (!std::filesystem::equivalent(output, model, error)) return;
+  throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: it is the run file --model reads: valid "
+                                                     "another file",
+                                                     field, output));
 }
 
 int RunModelFind(const ModelFindArgs& args) {

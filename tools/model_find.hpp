@@ -35,6 +35,10 @@ NamedValues ModelSetOf(const std::vector<std::string>& set);
 // followed by `instead`, what gives the oscillator and its start with --model).
 void RefuseWithModel(const CLI::App& cmd, std::initializer_list<const char*> options, std::string_view instead);
 
+// Throws InvalidInput naming `field` when `output` is the run file `model` itself (by any path),
+// which no output replaces, --force or not.
+void RefuseOutputOverModel(const std::string& output, const std::string& model, const char* field);
+
 // The exit code as find's: 0 found and verified (and the trace ran to its ends), 3 Newton failed (or
 // a branch of the trace), 4 no motion or not verified, 5 no orbit type read off the motion (it never
 // stops, or has not settled), 1 the simulation stopped early. With `output`, the trace is written

@@ -211,6 +211,7 @@ int RunModelSimulate(const SimulateArgs& args, const CLI::App& cmd) {
                   "the run file's [model] and --set give the oscillator, its parameters and its start");
   using Model = DynamicLinearOscillator;
   CheckCsv(args);
+  if (args.csv_given) RefuseOutputOverModel(args.csv_path, args.model, "csv");
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.start.set));
   const double frequency = start.model.Autonomous() ? start.slowest_frequency : start.parameters.omega;
   const ModelDescription& d = start.model.Description();

@@ -77,6 +77,7 @@ int RunModelSweep(const SweepArgs& args, const CLI::App& cmd) {
                   "the sweep starts from rest, or --set's start state (x1_0=..., phi=...), and --chains - 1 states "
                   "scattered around it; --set also sets the model's parameters");
   CheckReplaceableOutputFile(args.output, "output", {"stickslip sweep", IsSweepCsvHeader}, args.force);
+  RefuseOutputOverModel(args.output, args.model, "output");
   const ModelFileStart start = ReadModelFileStart(args.model, ModelSetOf(args.origin.set));
   const ModelDescription& model = start.model.Description();
   const std::optional<int> k = model.ParameterIndex(args.parameter);

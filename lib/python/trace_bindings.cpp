@@ -243,8 +243,6 @@ ModelBruteForceMap ModelMapSweep(const fs::path& path, const NamedValues& set, c
   return ComputeModelBruteForceMap(start.model, start.parameters, options);
 }
 
-std::string AxisName(ParameterId id) { return ToString(id); }
-const std::string& AxisName(const std::string& name) { return name; }
 
 // The cells as columns: i, j, the two parameters' values and the attractors found in each.
 template <typename Map>

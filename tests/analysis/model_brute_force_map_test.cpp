@@ -4,6 +4,9 @@
 // file (io/map_file.hpp): the same bytes for any thread count, its shards merged, read back.
 #include "stickslip/analysis/model_brute_force_map.hpp"
 
+#include <cstdint>
+#include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -121,6 +124,9 @@ TEST(ModelBruteForceMap, ShardsMergedGiveTheUnshardedFile) {
   EXPECT_THROW(MergeBruteForceMaps({maps[0], other}, {"2", "other"}), InvalidInput);
 }
 
+// A header the writer could not have written, with as many fields as the rows (so that it is the
+// header's names that are refused), or a row's value out of its kind, is refused; an amplitude not
+// computed (nan) reads back as written.
 TEST(ModelBruteForceMap, DamagedFileIsRefused) {
   const std::string whole = BruteForceMapCsv(ComputeModelBruteForceMap(DenHartogsMass(), kDenHartogBase, DenHartogGrid()));
   const auto damaged = [&](const std::string& from, const std::string& to) {
@@ -128,13 +134,49 @@ TEST(ModelBruteForceMap, DamagedFileIsRefused) {
     text.replace(text.find(from), from.size(), to);
     return text;
   };
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{",k,m1,v_m1", ",k"},  // no state
-                                 {",amplitude:m1,", ",amplitude,"},                       // no coordinate
-                                 {",k,m1,", ",k,m1,m1,"},                                 // a column twice
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{",k,m1,v_m1", ",k,m1,m1"},  // a column twice
+                                 {",amplitude:m1,", ",amplitude:v_m1,"},  // the contact's velocity
+                                 {",amplitude:m1,", ",amplitude:,"},       // no coordinate
+                                 {"omega,F_k,", "F_k,F_k,"},                 // one parameter twice
+                                 {"omega,F_k,", "omega,m1,"},                // a parameter named as a state column
+                                 {",k,m1,v_m1", ",kk,m1,v_m1"},
+                                 {"\n1,0,5,3,1.4,0.15,", "\n1,0,5,3,1.4,0.16,"},  // a row's F_k not its neighbours'
+                                 {"\n1,1,5,3,1.4,", "\n1,1,5,3,1.41,"},           // a column's omega not its own
                                  {",periodic,", ",cyclic,"},
                                  {",0,periodic,1,2,0,5,", ",0,periodic,1,2,0,5,-"}}) {  // a negative amplitude
     EXPECT_THROW(ReadModelBruteForceMapCsv(damaged(from, to), "map.csv"), InvalidInput) << from << " -> " << to;
   }
+  ModelBruteForceMap map = ReadModelBruteForceMapCsv(whole, "map.csv");
+  map.cells[0].attractors[0].contact_amplitude = std::numeric_limits<double>::quiet_NaN();
+  const std::string with_nan = BruteForceMapCsv(map);
+  EXPECT_EQ(BruteForceMapCsv(ReadModelBruteForceMapCsv(with_nan, "map.csv")), with_nan);
+}
+
+// The run fingerprint changes with everything the cells depend on, and with nothing else.
+TEST(ModelBruteForceMap, FingerprintTellsRunsApart) {
+  const Model model = DenHartogsMass();
+  const ModelBruteForceMapOptions o = DenHartogGrid();
+  const std::uint64_t run = ModelMapRunFingerprint(model, kDenHartogBase, o);
+  ModelBruteForceMapOptions same = o;
+  same.shard = 2;
+  same.shards = 3;
+  same.runs.threads = 5;
+  same.progress = [](const Progress&) {};
+  EXPECT_EQ(ModelMapRunFingerprint(model, kDenHartogBase, same), run);
+  const std::vector<std::function<void(ModelBruteForceMapOptions&)>> changes = {
+      [](auto& x) { x.first.to = 2.1; },          [](auto& x) { x.second.steps = 3; },
+      [](auto& x) { x.second.parameter = "F_s"; }, [](auto& x) { x.runs.transient_periods = 201; },
+      [](auto& x) { x.runs.seed = 2; },            [](auto& x) { x.runs.scatter = 0.5; },
+      [](auto& x) { x.runs.periodicity_tolerance = 1e-7; }, [](auto& x) { x.runs.section_phase = 0.1; }};
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    ModelBruteForceMapOptions other = o;
+    changes[k](other);
+    EXPECT_NE(ModelMapRunFingerprint(model, kDenHartogBase, other), run) << "change " << k;
+  }
+  EXPECT_NE(ModelMapRunFingerprint(model, {1.5, 0.25, 0.3, 0.0}, o), run);
+  LinearOscillatorData damped = model.Data();
+  damped.damping(0, 0) = 0.01;
+  EXPECT_NE(ModelMapRunFingerprint(Model(damped), kDenHartogBase, o), run);
 }
 
 TEST(ModelBruteForceMap, ValidateNamesTheField) {
@@ -175,12 +217,28 @@ TEST(ModelBruteForceMap, ValidateNamesTheField) {
   o = DenHartogGrid();
   o.runs.periodicity_tolerance = 0.0;
   EXPECT_EQ(field(forced, kDenHartogBase, o), "tolerance");
+  o = DenHartogGrid();
+  o.first.from = -1.5e308;  // every value finite, not the step between them
+  o.first.to = 1.5e308;
+  EXPECT_EQ(field(forced, kDenHartogBase, o), "first-to");
+  o = DenHartogGrid();
+  o.second.from = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(field(forced, kDenHartogBase, o), "second-from");
+  o = DenHartogGrid();
+  o.first.parameter = "";
+  EXPECT_EQ(field(forced, kDenHartogBase, o), "first");
+  EXPECT_THROW(ModelBruteForce(forced, kDenHartogBase, {"chi", 1.2, 2.0, 2}, o.runs), InvalidInput);
   o = DenHartogGrid();  // omega plays no part without forcing
   o.second.parameter = "F_s";
   o.second.from = 1.2;
   o.second.to = 1.5;
   o.runs.time_unit = 1.0;
   EXPECT_EQ(field(autonomous, {1.0, belt.F_k, belt.F_s, 0.5}, o), "first");
+  // A coordinate 'b' has the velocity column v_b, which the belt's speed would share in the file.
+  LinearOscillatorData named = belt.Data();
+  named.coordinates = {"b"};
+  o.first = {"v_b", 0.2, 0.4, 2};
+  EXPECT_EQ(field(Model(named), {1.0, belt.F_k, belt.F_s, 0.5}, o), "first");
 }
 
 }  // namespace

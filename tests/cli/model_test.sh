@@ -466,6 +466,15 @@ expect 2 "grid cell (i, j) = (0, 2)" "$bin" map-sweep --model "$models/den-harto
   --second F_k --second-from 0.1 --second-to 0.3 --second-steps 2 --output "$work/out/x.csv"
 expect 2 "first-steps" "$bin" map-sweep --model "$models/den-hartog.toml" "${grid[@]}" --first-steps 0 --output "$work/out/x.csv"
 expect 2 "model = '' is invalid" "$bin" map-sweep --model "" "${grid[@]}" --output "$work/out/x.csv"
+expect 2 "set F_k=0.2 is invalid: the map's second axis varies F_k" "$bin" map-sweep --model "$models/den-hartog.toml" \
+  "${grid[@]}" --set F_k=0.2 --output "$work/out/x.csv"
+expect 2 "--transients is not taken with --merge" "$bin" map-sweep --merge "$work/out/m.csv" "$work/dh-1.csv" \
+  "$work/dh-2.csv" --transients 7
+cp "$models/den-hartog.toml" "$work/out/dh.toml"
+expect 2 "it is the run file --model reads" "$bin" map-sweep --model "$work/out/dh.toml" "${grid[@]}" \
+  --output "$work/out/./dh.toml" --force
+expect 2 "it is the run file --model reads" "$bin" sweep --model "$work/out/dh.toml" --from 1.5 --to 2 \
+  --output "$work/out/dh.toml" --force
 echo mine > "$work/out/notes.csv"
 expect 2 "it exists and was not written by stickslip map-sweep" "$bin" map-sweep --model "$models/den-hartog.toml" \
   "${grid[@]}" --output "$work/out/notes.csv"

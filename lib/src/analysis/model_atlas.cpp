@@ -22,11 +22,6 @@ namespace {
 using Model = DynamicLinearOscillator;
 using ModelBranch = BasicOrbitBranch<Model>;
 
-void CheckCount(const char* field, long long value, long long low, long long high) {
-  if (value < low || value > high) {
-    throw InvalidInput(field, std::to_string(value), fmt::format("whole numbers {} <= {} <= {}", low, field, high));
-  }
-}
 
 // The grid's values; the last is `to` exactly.
 std::vector<double> GridOf(const ModelAtlasOptions& o) {
@@ -173,12 +168,12 @@ void ModelAtlasOptions::Validate(const Model& model, const Model::Parameters& ba
   if (!(std::isfinite(from) && std::isfinite(to) && from < to)) {
     throw InvalidInput("range", fmt::format("'{},{}'", from, to), "finite LO < HI");
   }
-  CheckCount("steps", steps, 1, kMaxSteps);
+  WholeNumber("steps", steps, 1, kMaxSteps);
   brute_force.Validate(model);
-  CheckCount("max-multiple", max_multiple, 1, ModelFindOptions::kMaxMultiple);
-  CheckCount("find-periods", find_periods, kMinFindPeriods, ModelBruteForceOptions::kMaxPeriods);
-  CheckCount("find-rounds", find_rounds, 1, kMaxFindRounds);
-  CheckCount("max-traces", max_traces, 1, kMaxTraces);
+  WholeNumber("max-multiple", max_multiple, 1, ModelFindOptions::kMaxMultiple);
+  WholeNumber("find-periods", find_periods, kMinFindPeriods, ModelBruteForceOptions::kMaxPeriods);
+  WholeNumber("find-rounds", find_rounds, 1, kMaxFindRounds);
+  WholeNumber("max-traces", max_traces, 1, kMaxTraces);
   if (static_cast<long long>(steps + 1) * brute_force.RunsPerValue() > kMaxRuns) {
     throw InvalidInput("steps", steps, fmt::format("(steps + 1) (starts + 3) <= {} runs", kMaxRuns));
   }

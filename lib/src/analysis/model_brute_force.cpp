@@ -19,17 +19,12 @@ namespace {
 
 using Model = DynamicLinearOscillator;
 
-void CheckCount(const char* field, long long value, long long low, long long high) {
-  if (value < low || value > high) {
-    throw InvalidInput(field, std::to_string(value), fmt::format("whole numbers {} <= {} <= {}", low, field, high));
-  }
-}
 
 // The sweep's options: every value from each start afresh (kFixed), or from the neighbouring
 // value's end up and down (kChained).
 SweepOptions SweepOf(const Model& model, const ModelAxis& axis, const ModelBruteForceOptions& o, SweepStart start) {
   SweepOptions s;
-  s.parameter = *model.Description().ParameterIndex(axis.parameter);
+  s.parameter = axis.IndexIn(model, "parameter");
   s.from = axis.from;
   s.to = axis.to;
   s.steps = axis.steps;
@@ -84,21 +79,22 @@ ModelAttractor AttractorOf(const SweepPoint& p) {
 double ModelAxis::ValueAt(int index) const { return GridValueAt(from, to, steps, index); }
 
 int ModelAxis::IndexIn(const Model& model, const char* field) const {
-  const std::optional<int> k = model.Description().ParameterIndex(parameter);
-  if (k && !(*k == Model::kForcingFrequencyParameter && model.Autonomous())) return *k;
-  std::string names;
-  for (const ParameterDescription& d : model.Description().parameters) {
-    if (!(d.name == "omega" && model.Autonomous())) names += (names.empty() ? "" : ", ") + d.name;
+  const ModelDescription& d = model.Description();
+  const int k = d.VariedParameter(field, parameter, model.Autonomous());
+  // The brute force's files name the parameter and the state's columns side by side.
+  if (std::find(d.state_columns.begin(), d.state_columns.end(), parameter) != d.state_columns.end()) {
+    throw InvalidInput(field, "'" + parameter + "'",
+                       "a parameter no state column shares its name with (a coordinate 'b' has the velocity column "
+                       "v_b: rename it to vary the belt's speed)");
   }
-  throw InvalidInput(field, "'" + parameter + "'",
-                     model.Autonomous() ? names + " (omega plays no part without forcing: name one of these)" : names);
+  return k;
 }
 
 void ModelBruteForceOptions::Validate(const Model& model) const {
-  CheckCount("transients", transient_periods, 0, kMaxPeriods);
-  CheckCount("periods", recorded_periods, 2, kMaxPeriods);
-  CheckCount("starts", scattered_starts, 0, kMaxScatteredStarts);
-  CheckCount("threads", threads, 0, 1024);
+  WholeNumber("transients", transient_periods, 0, kMaxPeriods);
+  WholeNumber("periods", recorded_periods, 2, kMaxPeriods);
+  WholeNumber("starts", scattered_starts, 0, kMaxScatteredStarts);
+  WholeNumber("threads", threads, 0, 1024);
   if (!(scatter >= 0.0 && scatter <= 1e6)) throw InvalidInput("scatter", scatter, "0 <= scatter <= 1e6");
   if (centre.size() != 0 && centre.size() != model.StateSize()) {
     throw InvalidInput("centre", fmt::format("a state of size {}", centre.size()), fmt::format("the model's, {}", model.StateSize()));
@@ -116,6 +112,7 @@ void ModelBruteForceOptions::Validate(const Model& model) const {
 
 std::vector<std::vector<ModelAttractor>> ModelBruteForce(const Model& model, const Model::Parameters& base,
                                                          const ModelAxis& axis, const ModelBruteForceOptions& o) {
+  axis.IndexIn(model, "parameter");
   o.Validate(model);
   // Rest, then the given centre and states scattered around it (as the paper's brute force starts).
   std::vector<Model::State> fresh = {Model::State::Zero(model.StateSize())};

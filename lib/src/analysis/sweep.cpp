@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
@@ -59,7 +60,9 @@ SweepPoint SimulatePoint(const Model& model, const typename Model::Parameters& b
     std::string why = fmt::format("sweep: chain {}, {} pass, step {} ({} = {}): the simulation {}", chain, ToString(pass),
                                   step, model.Description().parameters[k].name, Model::ParameterAt(p, k), motion.message);
     if (!o.record_incomplete) throw std::runtime_error(why);
-    SweepPoint point{chain, pass, step, Model::ParameterAt(p, k), {Eigen::VectorXd(start)}, 0.0, 0.0, 0, 0.0, {}};
+    // No amplitude: the motion was not followed to the end (nan, as a search cut short leaves it).
+    SweepPoint point{chain, pass, step,          Model::ParameterAt(p, k), {Eigen::VectorXd(start)}, 0.0, 0.0, 0,
+                     std::numeric_limits<double>::quiet_NaN(), {}};
     point.incomplete = std::move(why);
     return point;
   }

@@ -59,6 +59,13 @@ ValidValues Fraction(bool admissible) {
 
 ValidValues NonNegative() { return Range(0.0, std::numeric_limits<double>::infinity(), "a finite number >= 0"); }
 
+ValidValues SettledAmplitude() {
+  ValidValues valid = NonNegative();
+  valid.nan = true;
+  valid.text = "a finite number >= 0 or nan (not computed)";
+  return valid;
+}
+
 ValidValues FrictionMeasure() {
   ValidValues valid = Finite();
   valid.nan = true;

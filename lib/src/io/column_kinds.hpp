@@ -45,6 +45,10 @@ ValidValues Duration(std::string_view name, double period, bool admissible);
 ValidValues Fraction(bool admissible);
 // A finite number >= 0: an amplitude, a peak-to-peak, a step size, stops or sticks per period.
 ValidValues NonNegative();
+// A brute force's amplitude of the contact over the recorded periods: a finite number >= 0, or nan
+// where the simulation stopped early or the search for an extremum was cut short
+// (analysis/settled_motion.hpp).
+ValidValues SettledAmplitude();
 // The friction work per period and its equivalent viscous damping: a finite number (of the kinetic
 // level's sign: below 0 only where a released u_s ends its family, located to either side of 0),
 // or nan (the damping where the contact's coordinate does not move; either where a file written

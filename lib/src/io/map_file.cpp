@@ -147,11 +147,22 @@ ModelBruteForceMap ModelMapOf(const CsvTable& table) {
   }
   ModelBruteForceMap map{.first = header[4], .second = header[5], .contact = std::string(amplitude.substr(10))};
   map.state_columns.assign(header.begin() + 17, header.end());
-  if (Header(map) != line) throw table.HeaderError("the header is invalid: a column name is empty or repeated");
+  // As a model's description names them: (q, q') of n coordinates, the contact on the last; every
+  // name once in the header.
+  const std::size_t n = map.state_columns.size() / 2;
+  std::vector<std::string> names = header;
+  std::sort(names.begin(), names.end());
+  if (map.state_columns.size() % 2 != 0 || map.contact != map.state_columns[n - 1] ||
+      std::adjacent_find(names.begin(), names.end()) != names.end() ||
+      std::any_of(names.begin(), names.end(), [](const std::string& name) { return name.empty(); })) {
+    throw table.HeaderError(
+        "the header is invalid: valid the state's 2n columns after k (n coordinates, the contact's the last, then "
+        "their velocities), every column's name once and none empty");
+  }
   return map;
 }
 
-std::uint64_t Fingerprint(const CsvTable& t, int row, int column) {
+std::uint64_t ReadRun(const CsvTable& t, int row, int column) {
   const std::string& run = t.Text(row, column);
   std::uint64_t fingerprint = 0;
   const auto [end, error] = std::from_chars(run.data(), run.data() + run.size(), fingerprint, 16);
@@ -167,7 +178,7 @@ void ReadGrid(const CsvTable& t, int row, const MapColumns& c, Map* map) {
   const int max_cells = BruteForceMapOptions::kMaxSteps + 1;
   const int ni = t.Integer(row, c.ni, 1, max_cells), nj = t.Integer(row, c.nj, 1, max_cells);
   const double phase = t.Value(row, c.phase, detail::Finite());
-  const std::uint64_t fingerprint = Fingerprint(t, row, c.run);
+  const std::uint64_t fingerprint = ReadRun(t, row, c.run);
   if (row == 0) {
     map->first_count = ni;
     map->second_count = nj;
@@ -222,7 +233,7 @@ void ReadOwn(const CsvTable& t, int row, const MapColumns& c, Attractor& a) {
   }
 }
 void ReadOwn(const CsvTable& t, int row, const MapColumns& c, ModelAttractor& a) {
-  a.contact_amplitude = t.Value(row, c.own, detail::NonNegative());
+  a.contact_amplitude = t.Value(row, c.own, detail::SettledAmplitude());
 }
 
 // An attractor's columns, each by its kind.
@@ -293,6 +304,23 @@ void CheckCounts(const CsvTable& t, const Map& map, const std::string& name, con
   }
 }
 
+// Every cell of one i has one value of the first parameter, of one j one of the second: a grid.
+template <typename Map>
+void CheckGridValues(const Map& map, const std::string& name) {
+  std::map<int, double> first, second;
+  for (const auto& cell : map.cells) {
+    for (const auto& [values, index, value, axis] :
+         {std::tuple{&first, cell.i, cell.first, "i"}, std::tuple{&second, cell.j, cell.second, "j"}}) {
+      const auto [known, added] = values->try_emplace(index, value);
+      if (added || known->second == value) continue;
+      throw InvalidInput::WithMessage(
+          name, fmt::format("{}: cell ({}, {}) has {} = {} at {} = {}, another cell {}: valid one value per {}", name,
+                            cell.i, cell.j, axis == std::string_view("i") ? AxisName(map.first) : AxisName(map.second),
+                            value, axis, index, known->second, axis));
+    }
+  }
+}
+
 // The rows of `table` into `map` (its names set from the header).
 template <typename Map>
 Map ReadMapRows(const CsvTable& table, Map map, const std::string& name) {
@@ -303,6 +331,7 @@ Map ReadMapRows(const CsvTable& table, Map map, const std::string& name) {
     ReadSectionPoint(table, row, columns, ReadRowAttractor(table, row, columns, cell));
   }
   CheckCounts(table, map, name, columns);
+  CheckGridValues(map, name);
   return map;
 }
 
@@ -333,13 +362,11 @@ bool IsModelBruteForceMapCsv(std::string_view text) {
 
 namespace {
 
-std::string AxisName(ParameterId id) { return ToString(id); }
-const std::string& AxisName(const std::string& name) { return name; }
 
-// The map's parameters and what its rows hold: the same in every shard.
-bool SameKind(const BruteForceMap& a, const BruteForceMap& b) { return a.first == b.first && a.second == b.second; }
-bool SameKind(const ModelBruteForceMap& a, const ModelBruteForceMap& b) {
-  return a.first == b.first && a.second == b.second && a.contact == b.contact && a.state_columns == b.state_columns;
+// The map's parameters and what its rows hold (the same in every shard), as a message says them.
+std::string KindOf(const BruteForceMap& map) { return fmt::format("{} and {}", ToString(map.first), ToString(map.second)); }
+std::string KindOf(const ModelBruteForceMap& map) {
+  return fmt::format("{} and {} (contact {}, state {})", map.first, map.second, map.contact, fmt::join(map.state_columns, ", "));
 }
 
 template <typename Map>
@@ -352,9 +379,8 @@ Map MergeMaps(const std::vector<Map>& shards, const std::vector<std::string>& na
   std::size_t grid_shard = 0;
   for (std::size_t s = 0; s < shards.size(); ++s) {
     const Map& m = shards[s];
-    if (!SameKind(m, shards[0])) {
-      throw refuse(fmt::format("'{}' maps {} and {}, '{}' {} and {}", names[s], AxisName(m.first), AxisName(m.second),
-                               names[0], AxisName(shards[0].first), AxisName(shards[0].second)));
+    if (KindOf(m) != KindOf(shards[0])) {
+      throw refuse(fmt::format("'{}' maps {}, '{}' {}", names[s], KindOf(m), names[0], KindOf(shards[0])));
     }
     if (m.cells.empty()) continue;
     if (!grid) {

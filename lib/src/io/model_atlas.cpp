@@ -18,6 +18,7 @@ ModelAtlasOptions ModelAtlasOptionsOf(const AtlasCommand& c, const ModelFileStar
   o.trace.max_amplitude = c.max_amplitude;
   o.continuation.max_points = WholeNumber("max-points", c.max_points, 1, kMaxRunPoints);
   o.resonance_approach = c.resonance_approach;
+  start.RefuseSetOf(o.parameter, "the atlas's grid");
   o.Validate(start.model, start.parameters);
   return o;
 }

@@ -65,7 +65,16 @@ ModelFileStart ReadModelFileStart(const std::filesystem::path& run_file, const N
   for (const FreeOscillation& mode : FreeOscillations(slip)) {
     if (mode.oscillates) frequencies.push_back(mode.frequency);
   }
-  return {std::move(model), p, slowest, std::move(frequencies), std::move(begin.state), begin.phi};
+  return {std::move(model), p, slowest, std::move(frequencies), std::move(begin.state), begin.phi, std::move(parameters)};
+}
+
+void ModelFileStart::RefuseSetOf(const std::string& parameter, std::string_view varies) const {
+  for (const auto& [name, value] : set_parameters) {
+    if (name != parameter) continue;
+    throw InvalidInput::WithMessage("set", fmt::format("set {}={} is invalid: {} varies {} over its own values: valid "
+                                                       "--set of the other parameters",
+                                                       name, value, varies, name));
+  }
 }
 
 ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int max_multiple, ProgressCallback progress) {

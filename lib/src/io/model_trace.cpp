@@ -24,23 +24,6 @@ namespace {
 using Model = DynamicLinearOscillator;
 using Json = nlohmann::ordered_json;
 
-// The parameter's index among the model's, refused as the continued one where it is no parameter
-// (or omega, which plays no part without forcing).
-int ContinuedParameter(const Model& model, const std::string& parameter) {
-  const ModelDescription& d = model.Description();
-  std::vector<std::string> names;
-  for (const ParameterDescription& p : d.parameters) {
-    if (!(p.name == "omega" && model.Autonomous())) names.push_back(p.name);
-  }
-  const std::optional<int> k = d.ParameterIndex(parameter);
-  if (!k || (*k == Model::kForcingFrequencyParameter && model.Autonomous())) {
-    throw InvalidInput("parameter", "'" + parameter + "'",
-                       fmt::format("one of the model's parameters {}{}", fmt::join(names, ", "),
-                                   model.Autonomous() ? " (omega plays no part without forcing)" : ""));
-  }
-  return *k;
-}
-
 Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std::string& parameter) {
   Json points = Json::array();
   const BasicOrbitBranch<Model>& b = link.branch;
@@ -63,7 +46,7 @@ Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std
 ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
                          double low, double high, TraceOptions options) {
   // The parameter and the range before the work.
-  const int k = ContinuedParameter(start.model, parameter);
+  const int k = start.model.Description().VariedParameter("parameter", parameter, start.model.Autonomous());
   const double value = Model::ParameterAt(start.parameters, k);
   if (!(std::isfinite(low) && std::isfinite(high) && low < high) || !(low <= value && value <= high)) {
     throw InvalidInput("range", fmt::format("'{},{}'", low, high),

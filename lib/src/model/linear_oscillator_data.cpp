@@ -153,7 +153,9 @@ void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n,
   // CSV). (A coordinate 'b' gives a velocity column v_b, the belt's speed's name: a sweep in v_b refuses it.)
   static const std::set<std::string> kReserved = {
       "omega", "F_k", "F_s", "phi", "period", "k", "chain", "direction", "step", "section_phase",
-      "stops_per_period", "sticks_per_period", "pt", "label", "stable", "admissible", "newton_iterations", "step_size"};
+      "stops_per_period", "sticks_per_period", "pt", "label", "stable", "admissible", "newton_iterations", "step_size",
+      // a brute-force map's (io/map_file.hpp)
+      "i", "j", "ni", "nj", "run", "attractors", "attractor", "status", "starts"};
   for (const std::string& column : StateColumnNames(names)) {
     const bool duration = column.size() > 1 && column[0] == 'd' &&
                           std::all_of(column.begin() + 1, column.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
@@ -233,6 +235,20 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
   d.initial_state = StartStateNames(d.coordinates);
   d.contact = {"s", "s'", "s''", "F", "F_k", "F_s", "F_k = 0", "grazing-sliding (F_s = F_k)"};
   return d;
+}
+
+void LinearOscillatorData::AddTo(Fingerprint& hash) const {
+  for (const Eigen::MatrixXd* m : {&mass, &damping, &stiffness}) {
+    hash.Add(static_cast<std::uint64_t>(m->rows()));
+    hash.Add(static_cast<std::uint64_t>(m->cols()));
+    for (Eigen::Index k = 0; k < m->size(); ++k) hash.AddNumber(m->data()[k]);
+  }
+  hash.Add(static_cast<std::uint64_t>(forcing.size()));
+  for (Eigen::Index k = 0; k < forcing.size(); ++k) hash.AddNumber(forcing(k));
+  hash.AddNumber(friction_slope);
+  hash.Add(coordinates.size());
+  for (const std::string& coordinate : coordinates) hash.AddText(coordinate);
+  hash.AddText(name);
 }
 
 }  // namespace stickslip

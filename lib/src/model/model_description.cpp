@@ -1,5 +1,9 @@
 #include "stickslip/model/model_description.hpp"
 
+#include <fmt/format.h>
+
+#include "stickslip/invalid_input.hpp"
+
 namespace stickslip {
 
 std::optional<int> ModelDescription::ParameterIndex(std::string_view name) const {
@@ -7,6 +11,15 @@ std::optional<int> ModelDescription::ParameterIndex(std::string_view name) const
     if (parameters[k].name == name) return k;
   }
   return std::nullopt;
+}
+
+int ModelDescription::VariedParameter(std::string_view field, const std::string& parameter, bool autonomous) const {
+  const std::optional<int> k = ParameterIndex(parameter);
+  if (k && !(*k == 0 && autonomous)) return *k;
+  std::string names;
+  for (int i = autonomous ? 1 : 0; i < ParameterCount(); ++i) names += (names.empty() ? "" : ", ") + parameters[i].name;
+  throw InvalidInput(std::string(field), "'" + parameter + "'",
+                     autonomous ? names + fmt::format(" ({} plays no part without forcing)", parameters[0].name) : names);
 }
 
 }  // namespace stickslip

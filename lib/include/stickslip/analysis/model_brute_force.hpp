@@ -59,7 +59,8 @@ struct ModelBruteForceOptions {
   double time_unit = 0.0;
   double section_phase = 0.0;  // with forcing: the forcing phase at the section times (time 0 of every run)
   int threads = 0;             // 0: every hardware thread. The result does not depend on it.
-  // Called after every run with unit "points" (done of total, the run's parameter value).
+  // Called after every run with unit "points" (done of total, the run's parameter value); the
+  // atlas and the map replace it with their own.
   ProgressCallback progress = {};
 
   static constexpr int kMaxPeriods = 1000000;

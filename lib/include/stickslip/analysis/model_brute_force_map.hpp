@@ -5,8 +5,8 @@
 // merged into the row's attractors cell by cell.
 //
 // The result does not depend on the number of threads. shard/shards computes only the rows j with
-// j mod shards = shard - 1 (job arrays, MPI ranks); the shards merged (io/model_map_file.hpp) give
-// the unsharded map.
+// j mod shards = shard - 1 (job arrays, MPI ranks); the shards merged (io/map_file.hpp) give the
+// unsharded map.
 //
 //   ModelBruteForceMapOptions o;
 //   o.first = {"omega", 0.3, 1.5, 40};
@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stickslip/analysis/model_brute_force.hpp"
@@ -24,22 +25,41 @@
 namespace stickslip {
 
 struct ModelBruteForceMapOptions {
-  ModelAxis first{"omega"};  // index i, 1 to kMaxSteps steps: each row's brute force runs along it
-  ModelAxis second{"F_s"};   // index j, 0 to kMaxSteps steps: a row per value
-  ModelBruteForceOptions runs;  // every row's, its progress counting the map's runs
+  // Index i, 1 to kMaxSteps steps: each row's brute force runs along it; index j, 0 to kMaxSteps
+  // steps: a row per value. Their parameters by the model's names (DefaultMapAxes: what a front
+  // end takes unless told).
+  ModelAxis first{""};
+  ModelAxis second{""};
+  ModelBruteForceOptions runs;  // every row's (its progress replaced by the map's)
   int shard = 1;   // compute the rows j with j mod shards == shard - 1 (1 <= shard <= shards)
   int shards = 1;  // 1 to kMaxShards
+  // Called after every run with done = the runs finished and total = the runs of the shard (unit
+  // "runs"), one call at a time, done increasing. Empty: no reports.
+  ProgressCallback progress = {};
 
   static constexpr int kMaxSteps = 10000;
   static constexpr int kMaxShards = 100000;
   // Runs of one shard, at most: its rows x cells of a row x ModelBruteForceOptions::RunsPerValue().
   static constexpr long long kMaxRuns = 10000000;
 
-  // Throws InvalidInput naming the field as the command line's flag ("first", "first-steps",
-  // "second", "shard", the brute force's), or "grid" for a cell whose parameters the model refuses
-  // or a shard of more than kMaxRuns runs.
+  // Throws InvalidInput naming the field as the command line's flag ("first", "first-from",
+  // "first-to", "first-steps", the same of "second", "shard", "shards", the brute force's), or
+  // "grid" for a cell whose parameters the model refuses or a shard of more than kMaxRuns runs.
   void Validate(const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base) const;
 };
+
+// The parameters a model's map has unless told: along i its forcing frequency (the belt's speed
+// without forcing), along j its static friction level.
+inline std::pair<std::string, std::string> DefaultMapAxes(const DynamicLinearOscillator& model) {
+  const ModelDescription& d = model.Description();
+  return {d.parameters[model.Autonomous() ? DynamicLinearOscillator::kRestVelocityParameter
+                                           : DynamicLinearOscillator::kForcingFrequencyParameter].name,
+          d.parameters[DynamicLinearOscillator::kStaticLevelParameter].name};
+}
+
+// A map's parameter by its name, either model's (the paper's map holds a ParameterId).
+inline const std::string& AxisName(const std::string& name) { return name; }
+inline std::string AxisName(ParameterId id) { return std::string(ToString(id)); }
 
 struct ModelMapCell {
   int i = 0;

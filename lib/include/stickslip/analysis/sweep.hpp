@@ -85,7 +85,8 @@ struct SweepPoint {
   int period = 0;  // smallest p with section[k + p] == section[k] (to tolerance); 0 if none
   // max |q_c(t)| of the contact's coordinate (the paper's x2) over the recorded periods, exact
   // (SettledMotion::contact_amplitude): the quantity a branch's `amplitude:<q_c>` measures over its
-  // period, so the two are drawn on one axis.
+  // period, so the two are drawn on one axis. NaN where the search was cut short or the point is
+  // incomplete.
   double contact_amplitude = 0.0;
   // With SweepOptions::record_incomplete: why the simulation stopped early; "" when it ran its course.
   std::string incomplete;

@@ -9,6 +9,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "stickslip/analysis/model_orbit_finder.hpp"
@@ -33,6 +35,11 @@ struct ModelFileStart {
   std::vector<double> slip_frequencies;
   Eigen::VectorXd state;  // at t = 0: rest unless the file's start or `set` names its components (x1_0, v1_0, ...)
   double phi = 0.0;       // the forcing's phase at t = 0 (the file's or `set`'s phi)
+  NamedValues set_parameters;  // the parameters `set` gave over the file's
+
+  // Throws InvalidInput naming "set" when `set` gave `parameter`, which `varies` (a map's axis, an
+  // atlas's grid) sets at every value itself: the value would be ignored.
+  void RefuseSetOf(const std::string& parameter, std::string_view varies) const;
 };
 
 // `set` gives parameters (over the file's) and, over the file's start (StartOf), start-state

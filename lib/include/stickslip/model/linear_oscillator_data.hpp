@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "stickslip/model/model_description.hpp"
+#include "stickslip/numerics/fingerprint.hpp"
 
 namespace stickslip {
 
@@ -35,6 +36,9 @@ struct LinearOscillatorData {
   double friction_slope = 0.0;
   std::vector<std::string> coordinates;  // their names; empty: x1 ... xn
   std::string name = "linear-oscillator";
+
+  // Every field into a run's fingerprint (the shards of one brute-force map share it).
+  void AddTo(Fingerprint& hash) const;
 };
 
 // One mode's first-order system y' = A y + inputs, on the D components of the state (q, q') it

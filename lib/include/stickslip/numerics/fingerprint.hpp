@@ -5,6 +5,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <string_view>
 
 namespace stickslip {
 
@@ -14,6 +15,11 @@ class Fingerprint {
     for (int byte = 0; byte < 8; ++byte) hash_ = (hash_ ^ ((value >> (8 * byte)) & 0xffu)) * 1099511628211ull;
   }
   void AddNumber(double value) { Add(std::bit_cast<std::uint64_t>(value)); }
+  // Its length first, so that ("ab", "c") and ("a", "bc") differ.
+  void AddText(std::string_view text) {
+    Add(text.size());
+    for (const char c : text) Add(static_cast<unsigned char>(c));
+  }
   std::uint64_t Value() const { return hash_; }
 
  private:
