@@ -347,6 +347,10 @@ for t in 1 2; do
     --results "$work/atlas$t" > "$work/atlas$t.txt" 2> "$work/atlas$t.err" || fail "atlas --model (threads $t): $(cat "$work/atlas$t.err")"
 done
 diff -r "$work/atlas1/chain41" "$work/atlas2/chain41" > /dev/null && pass || fail "atlas --model: files differ for 1 and 2 threads"
+# Its brute force is a one-row map file (omega along i, F_k held along j), which --merge reads back.
+"$bin" map-sweep --merge "$work/atlas-map.csv" "$work/atlas1/chain41/brute-force.csv" > /dev/null &&
+  cmp -s "$work/atlas-map.csv" "$work/atlas1/chain41/brute-force.csv" &&
+  head -1 "$work/atlas-map.csv" | grep -q "^i,j,ni,nj,omega,F_k," && pass || fail "atlas --model: brute-force.csv is no map file"
 /usr/bin/python3 - "$work/atlas1/chain41" <<'PY' && pass || fail "atlas --model of the paper's masses as a chain"
 import csv, json, sys
 atlas = json.load(open(sys.argv[1] + "/atlas.json"))

@@ -34,18 +34,28 @@ std::vector<double> GridOf(const ModelAtlasOptions& o) {
 // without forcing.
 int PeriodLimit(const Model& model, const ModelAtlasOptions& o) { return model.Autonomous() ? 1 : o.max_multiple; }
 
-// Stage 1: the attractors of every grid value, in the order the runs found them (the fresh starts
-// by start, then the chained sweep's up and down passes).
-std::vector<ModelAtlasAttractor> BruteForce(const Model& model, const Model::Parameters& base, const ModelAtlasOptions& o,
-                                            const std::vector<double>& grid) {
-  ModelBruteForceOptions runs = o.brute_force;
-  runs.progress = o.progress;
-  const std::vector<std::vector<ModelAttractor>> cells =
-      ModelBruteForce(model, base, ModelAxis{o.parameter, o.from, o.to, o.steps}, runs);
+// Stage 1 as a brute-force map of one row: the grid along i, the model's first parameter that is
+// neither the atlas's nor omega without forcing along j, held at its value.
+ModelBruteForceMapOptions BruteForceOf(const Model& model, const Model::Parameters& base, const ModelAtlasOptions& o) {
+  ModelBruteForceMapOptions map{.first = {o.parameter, o.from, o.to, o.steps}, .runs = o.brute_force};
+  const ModelDescription& d = model.Description();
+  for (int k = model.Autonomous() ? 1 : 0; k < d.ParameterCount() && map.second.parameter.empty(); ++k) {
+    if (d.parameters[k].name == o.parameter) continue;
+    const double value = Model::ParameterAt(base, k);
+    map.second = {d.parameters[k].name, value, value, 0};
+  }
+  map.progress = o.progress;
+  return map;
+}
+
+// The attractors of every grid value (the map's cells), in the order the runs found them (the
+// fresh starts by start, then the chained sweep's up and down passes), each with its fate where
+// the brute force decides it.
+std::vector<ModelAtlasAttractor> AttractorsOf(const Model& model, const ModelBruteForceMap& map, const ModelAtlasOptions& o) {
   std::vector<ModelAtlasAttractor> attractors;
-  for (int i = 0; i <= o.steps; ++i) {
-    for (std::size_t k = 0; k < cells[i].size(); ++k) {
-      ModelAtlasAttractor a{.grid = i, .value = grid[i], .index = static_cast<int>(k), .attractor = cells[i][k]};
+  for (const ModelMapCell& cell : map.cells) {
+    for (std::size_t k = 0; k < cell.attractors.size(); ++k) {
+      ModelAtlasAttractor a{.grid = cell.i, .value = cell.first, .index = static_cast<int>(k), .attractor = cell.attractors[k]};
       if (a.attractor.status == AttractorStatus::kIncomplete) {
         a.fate = AttractorFate::kIncomplete;
         a.reason = fmt::format("{} run(s) stopped early, the first: {}", a.attractor.starts, a.attractor.incomplete);
@@ -229,7 +239,8 @@ ModelAtlas ComputeModelAtlas(const Model& model, const Model::Parameters& base, 
   options.Validate(model, base);
   ModelAtlas atlas{.model = model, .parameter = options.parameter};
   atlas.grid = GridOf(options);
-  atlas.attractors = BruteForce(model, base, options, atlas.grid);
+  atlas.brute_force = ComputeModelBruteForceMap(model, base, BruteForceOf(model, base, options));
+  atlas.attractors = AttractorsOf(model, atlas.brute_force, options);
   SolveAttractors(model, base, atlas.attractors, options);
   AtlasPlacer<Model, ModelAtlas> placer(atlas, PlacementOf(atlas.model, options), options.trace, options.max_traces);
   for (std::size_t k = 0; k < atlas.attractors.size(); ++k) {

@@ -244,24 +244,6 @@ std::string FormatIntervalsCsv(const std::vector<StoredTrace>& traces) {
   return csv;
 }
 
-// brute-force.csv of a [model]'s atlas: one row per attractor of each grid value, its first section
-// point by the model's state names.
-std::string ModelBruteForceCsv(const ModelAtlas& atlas) {
-  const ModelDescription& d = atlas.model.Description();
-  std::string csv = fmt::format("grid,{},attractor,status,period,starts,stops_per_period,sticks_per_period,{}", atlas.parameter,
-                                orbit_columns::AmplitudeOf(d.coordinates[ContactCoordinate(atlas.model)]));
-  for (const std::string& name : d.state_columns) csv += "," + name;
-  csv += "\n";
-  for (const ModelAtlasAttractor& a : atlas.attractors) {
-    const ModelAttractor& m = a.attractor;
-    csv += fmt::format("{},{},{},{},{},{},{},{},{}", a.grid, a.value, a.index + 1, ToString(m.status), m.period, m.starts,
-                       m.stops_per_period, m.sticks_per_period, m.contact_amplitude);
-    for (const double x : m.section.front()) csv += fmt::format(",{}", x);
-    csv += "\n";
-  }
-  return csv;
-}
-
 bool IsAtlasFile(std::string_view name) { return name == kAtlasJson || name == kIntervalsCsv || name == kBruteForceCsv; }
 
 // The atlas's files and trace directories, `own_trace` telling which trace-<t> names are its and
@@ -334,7 +316,7 @@ StoredAtlas RecordModelAtlas(const RunFile& run, const ModelAtlas& atlas, const 
   const AtlasHeader header{run, kLinearOscillatorModel, atlas.parameter, options.from, options.to,
                            static_cast<int>(atlas.grid.size()), options.max_multiple};
   stored.files = {FormatAtlasJson(header, atlas, grid, stored.traces), FormatIntervalsCsv(stored.traces),
-                  ModelBruteForceCsv(atlas)};
+                  BruteForceMapCsv(atlas.brute_force)};
   return stored;
 }
 

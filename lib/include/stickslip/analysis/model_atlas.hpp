@@ -2,7 +2,9 @@
 // motion over a range of one of its parameters, in the paper's atlas's three stages, built from the
 // parts every model has:
 //   1. brute force (model_brute_force.hpp): at every grid value, runs from rest, from scattered
-//      starts and from the neighbouring value's end both ways, merged into attractors;
+//      starts and from the neighbouring value's end both ways, merged into attractors: a one-row
+//      brute-force map (model_brute_force_map.hpp), its second axis the model's first other
+//      parameter held at its value (as the paper's atlas holds chi);
 //   2. exact orbits (model_orbit_finder.hpp): FindModelOrbit from every attractor of period up to
 //      max_multiple and from where the first run not settled ended, its simulation doubled
 //      (find_rounds simulations at most) while the motion it reads has not settled;
@@ -25,7 +27,7 @@
 #include <vector>
 
 #include "stickslip/analysis/atlas_fate.hpp"
-#include "stickslip/analysis/model_brute_force.hpp"
+#include "stickslip/analysis/model_brute_force_map.hpp"
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/branches/branch_membership.hpp"
 #include "stickslip/branches/trace.hpp"
@@ -96,6 +98,7 @@ struct ModelAtlas {
   DynamicLinearOscillator model;
   std::string parameter;
   std::vector<double> grid = {};  // the grid values
+  ModelBruteForceMap brute_force = {};  // stage 1: one row, a cell per grid value
   std::vector<ModelAtlasAttractor> attractors = {};  // by grid index, then in their grid value's order
   std::vector<ModelAtlasTrace> traces = {};          // in the order started
   std::vector<const BasicOrbitBranch<DynamicLinearOscillator>*> Branches() const;

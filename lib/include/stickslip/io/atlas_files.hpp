@@ -48,9 +48,8 @@ StoredAtlas RecordAtlas(const RunFile& run, const Atlas& atlas, const AtlasOptio
 // The stored form of a [model]'s atlas (analysis/model_atlas.hpp) from `run` (its path, output):
 // the same files, atlas.json with "model": "linear-oscillator" and each attractor's exact orbit's
 // amplitudes by coordinate ("amplitude:<q>"), every trace carrying `natural_frequencies` (the
-// slip's, as a [model]'s trace: io/model_trace.hpp), brute-force.csv one row per attractor (grid,
-// <parameter>, attractor, status, period, starts, stops_per_period, sticks_per_period,
-// amplitude:<q_c>, the first section state by the model's state columns).
+// slip's, as a [model]'s trace: io/model_trace.hpp), brute-force.csv its one-row map as
+// `stickslip map-sweep --model` writes one (io/map_file.hpp).
 StoredAtlas RecordModelAtlas(const RunFile& run, const ModelAtlas& atlas, const ModelAtlasOptions& options,
                              const std::vector<double>& natural_frequencies);
 
