@@ -92,6 +92,27 @@ TEST(ModelBruteForceMap, ReadsTheBeltsStickSlipCycleInEveryCell) {
   }
 }
 
+// A mass on a belt faster than its slip ever moves (v_b = 0.7 > F_k omega_n): from rest it slides
+// for ever about x = F_k/k, an undamped oscillation of amplitude F_k whose every time unit (2 pi)
+// brings it back to rest at x = 0. Its section is that one point at rest, which alone gives the
+// relative tolerance no scale (1e-21): the contact's excursion over the record does.
+TEST(ModelBruteForceMap, ReadsASlideThroughRestAsPeriodic) {
+  const BeltCycle belt;
+  const Model model(belt.Data());
+  ModelBruteForceOptions o;
+  o.transient_periods = 50;
+  o.recorded_periods = 6;
+  o.scattered_starts = 0;
+  o.time_unit = 2.0 * std::numbers::pi;
+  const auto cells = ModelBruteForce(model, {1.0, 0.2, 1.5, 0.7}, {"F_k", 0.2, 0.3, 1}, o);
+  for (int i = 0; i < 2; ++i) {
+    const ModelAttractor& from_rest = cells[i].front();
+    EXPECT_EQ(from_rest.status, AttractorStatus::kPeriodic) << "F_k = " << 0.2 + 0.1 * i;
+    EXPECT_EQ(from_rest.stops_per_period, 0.0);
+    EXPECT_NEAR(from_rest.contact_amplitude, 2.0 * (0.2 + 0.1 * i), 1e-12);  // from 0 to 2 F_k/k
+  }
+}
+
 TEST(ModelBruteForceMap, FileDoesNotDependOnTheNumberOfThreads) {
   ModelBruteForceMapOptions o = DenHartogGrid();
   o.runs.threads = 1;

@@ -182,13 +182,14 @@ BasicSettledMotion<Model> SimulateOut(const Model& model, const typename Model::
   return motion;
 }
 
-// The section's least period (to the tolerance, relative to its states' size where asked) and the
-// distance still to go.
+// The section's least period (to the tolerance, relative where asked to the motion's size: its
+// section states' and the contact's excursion over the record, which a section at rest does not
+// show) and the distance still to go.
 template <typename StateVector>
-LeastSectionPeriod PeriodOnSection(const std::vector<StateVector>& section, const SettleOptions& o) {
+LeastSectionPeriod PeriodOnSection(const std::vector<StateVector>& section, const SettleOptions& o, double excursion) {
   double scale = 1.0;
   if (o.relative_tolerance) {
-    scale = 0.0;
+    scale = std::isfinite(excursion) ? excursion : 0.0;
     for (const StateVector& x : section) scale = std::max(scale, x.template lpNorm<Eigen::Infinity>());
   }
   return LeastPeriodOnSection(section, o.periodicity_tolerance * scale);
@@ -211,12 +212,12 @@ BasicSettledMotion<Model> WithStickEntrySection(const Model& model, double unit,
     const PerPeriod per_unit = CountPerPeriod(r, units, 0.0, units * unit);
     motion.stops_per_period = per_unit.stops;
     motion.sticks_per_period = per_unit.sticks;
-    motion.period = r.events.empty() ? PeriodOnSection(motion.section, o).period : 0;
+    motion.period = r.events.empty() ? PeriodOnSection(motion.section, o, motion.contact_amplitude).period : 0;
     motion.last = motion.section.back();
     return motion;
   }
   for (std::size_t k = 0; k + 1 < entries.size(); ++k) motion.section.push_back(r.segments[entries[k]].start);
-  const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
+  const LeastSectionPeriod least = PeriodOnSection(motion.section, o, motion.contact_amplitude);
   motion.period = least.period;
   motion.settling = least.settling;
   const int cycles = static_cast<int>(entries.size()) - 1;
@@ -249,7 +250,7 @@ BasicSettledMotion<Model> SimulateSettled(const Model& model, const typename Mod
   }
   for (int k = 1; k <= o.recorded_periods; ++k) motion.section.push_back(StateAtTime(model, r, k * period));
   motion.last = motion.section.back();
-  const LeastSectionPeriod least = PeriodOnSection(motion.section, o);
+  const LeastSectionPeriod least = PeriodOnSection(motion.section, o, motion.contact_amplitude);
   motion.period = least.period;
   motion.settling = least.settling;
   // Over whole least periods (a period-p motion gives multiples of 1/p), the record's whole when

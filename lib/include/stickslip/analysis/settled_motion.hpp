@@ -26,8 +26,8 @@ struct SettleOptions {
   int transient_periods = 200;
   int recorded_periods = 20;  // forcing periods recorded (>= 1)
   // Section points repeat when |X - Y|_inf <= periodicity_tolerance (absolute; relative_tolerance:
-  // times the largest |component| of the section's states, for a model in physical units, whose
-  // lengths and speeds have a scale of their own).
+  // times the largest |component| of the section's states or the contact's excursion over the
+  // record, for a model in physical units, whose lengths and speeds have a scale of their own).
   double periodicity_tolerance = 1e-6;
   // The simulator's guard against chattering, per simulation (per transient chunk).
   int max_events_per_simulation = 1000000;
