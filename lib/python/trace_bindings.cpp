@@ -219,13 +219,18 @@ constexpr std::array<std::pair<const char*, double MapSweepCommand::*>, 13> kMap
     {"threads", &MapSweepCommand::threads},
 }};
 
-BruteForceMap MapSweep(const py::dict& start, const py::dict& o) {
-  const ModelStart origin = BuildModelStart(ToStartInput(start));
+// map_sweep's keywords as the command line's options (numbers not yet checked).
+MapSweepCommand MapCommandOf(const py::dict& o) {
   MapSweepCommand c;
   c.first = o["first"].cast<std::string>();
   c.second = o["second"].cast<std::string>();
   for (const auto& [key, member] : kMapNumbers) c.*member = o[key].cast<double>();
-  const BruteForceMapOptions options = MapOptionsOf(c, origin);
+  return c;
+}
+
+BruteForceMap MapSweep(const py::dict& start, const py::dict& o) {
+  const ModelStart origin = BuildModelStart(ToStartInput(start));
+  const BruteForceMapOptions options = MapOptionsOf(MapCommandOf(o), origin);
   const py::gil_scoped_release release;
   return ComputeBruteForceMap(origin.parameters, origin.phi, options);
 }
@@ -234,11 +239,7 @@ BruteForceMap MapSweep(const py::dict& start, const py::dict& o) {
 // the command line's (the axes' names empty: the model's defaults).
 ModelBruteForceMap ModelMapSweep(const fs::path& path, const NamedValues& set, const py::dict& o) {
   const ModelFileStart start = ReadModelFileStart(path, set);
-  MapSweepCommand c;
-  c.first = o["first"].cast<std::string>();
-  c.second = o["second"].cast<std::string>();
-  for (const auto& [key, member] : kMapNumbers) c.*member = o[key].cast<double>();
-  const ModelBruteForceMapOptions options = ModelMapOptionsOf(c, start);
+  const ModelBruteForceMapOptions options = ModelMapOptionsOf(MapCommandOf(o), start);
   const py::gil_scoped_release release;
   return ComputeModelBruteForceMap(start.model, start.parameters, options);
 }

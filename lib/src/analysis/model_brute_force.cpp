@@ -19,12 +19,11 @@ namespace {
 
 using Model = DynamicLinearOscillator;
 
-
 // The sweep's options: every value from each start afresh (kFixed), or from the neighbouring
 // value's end up and down (kChained).
-SweepOptions SweepOf(const Model& model, const ModelAxis& axis, const ModelBruteForceOptions& o, SweepStart start) {
+SweepOptions SweepOf(int parameter, const ModelAxis& axis, const ModelBruteForceOptions& o, SweepStart start) {
   SweepOptions s;
-  s.parameter = axis.IndexIn(model, "parameter");
+  s.parameter = parameter;
   s.from = axis.from;
   s.to = axis.to;
   s.steps = axis.steps;
@@ -112,7 +111,7 @@ void ModelBruteForceOptions::Validate(const Model& model) const {
 
 std::vector<std::vector<ModelAttractor>> ModelBruteForce(const Model& model, const Model::Parameters& base,
                                                          const ModelAxis& axis, const ModelBruteForceOptions& o) {
-  axis.IndexIn(model, "parameter");
+  const int parameter = axis.IndexIn(model, "parameter");
   o.Validate(model);
   // Rest, then the given centre and states scattered around it (as the paper's brute force starts).
   std::vector<Model::State> fresh = {Model::State::Zero(model.StateSize())};
@@ -120,8 +119,8 @@ std::vector<std::vector<ModelAttractor>> ModelBruteForce(const Model& model, con
                                                        o.scattered_starts, o.seed)) {
     fresh.push_back(std::move(x));
   }
-  SweepOptions fixed = SweepOf(model, axis, o, SweepStart::kFixed);
-  SweepOptions chained = SweepOf(model, axis, o, SweepStart::kChained);
+  SweepOptions fixed = SweepOf(parameter, axis, o, SweepStart::kFixed);
+  SweepOptions chained = SweepOf(parameter, axis, o, SweepStart::kChained);
   const double total = static_cast<double>(axis.Count()) * o.RunsPerValue();
   double done = 0.0;
   std::mutex report;
