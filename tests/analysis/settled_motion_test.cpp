@@ -13,6 +13,7 @@
 
 #include "stickslip/model/pascal_2014/paper_examples.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "support/den_hartogs_mass.hpp"
 
 namespace stickslip {
 namespace {
@@ -66,6 +67,41 @@ TEST(SettledMotion, CountsOverTheWholeRecordWithoutAPeriod) {
   const Counted whole = CountOver(example.parameters, example.initial_state, example.phi, 1);
   EXPECT_EQ(motion.sticks_per_period, whole.sticks);
   EXPECT_EQ(motion.stops_per_period, whole.stops);
+}
+
+// Den Hartog's undamped mass (k = m = 1) from x = 1e6 at omega = 1.5: the free oscillation, at the
+// natural frequency 1, comes back to the same phase every 3 forcing periods (2 natural cycles), while
+// friction takes 2 F_k off its amplitude every half cycle (energy over a half cycle:
+// (A^2 - A'^2)/2 = F_k (A + A')), 8 F_k = 0.4 per 3 periods: each step below the relative tolerance
+// (1e-6 times 1e6), the drift over the record well above it. It is not a motion of period 3 (hostile
+// review D1: from x = 1e7 it was).
+TEST(SettledMotion, MotionWornDownByStepsBelowTheToleranceIsNotPeriodic) {
+  const double friction = 0.05;
+  SettleOptions options;
+  options.transient_periods = 0;
+  options.recorded_periods = 20;
+  options.relative_tolerance = true;
+  Eigen::VectorXd start(2);
+  start << 1e6, 0.0;
+  const DynamicLinearOscillator model = DenHartogsMass();
+  const DynamicLinearOscillator::Parameters p{1.5, friction, friction, 0.0};
+  const BasicSettledMotion<DynamicLinearOscillator> motion = SimulateSettled(model, p, start, 0.0, options);
+  ASSERT_TRUE(motion.Completed()) << motion.message;
+  EXPECT_EQ(motion.period, 0);
+  // The section is the worn-down free oscillation: amplitude about the slip's centre -F_k sign(v).
+  ASSERT_EQ(motion.section.size(), 20u);
+  const auto amplitude = [friction](const Eigen::VectorXd& x) {
+    return std::hypot(x(0) + std::copysign(friction, x(1)), x(1));
+  };
+  const double worn = amplitude(motion.section[0]) - amplitude(motion.section[18]);  // 12 natural cycles
+  EXPECT_NEAR(worn, 12 * 4 * friction, 1e-3 * worn);
+  EXPECT_LT(std::abs(amplitude(motion.section[3]) - amplitude(motion.section[0])), 1e-6 * 1e6);
+
+  // From near its steady orbit (Den Hartog's, amplitude 0.80) the free oscillation is worn out within
+  // the transient.
+  start << 1.0, 0.0;
+  options.transient_periods = 1000;
+  EXPECT_EQ(SimulateSettled(model, p, start, 0.0, options).period, 1);
 }
 
 }  // namespace

@@ -92,8 +92,33 @@ struct LeastSectionPeriod {
   double settling = 0.0;
 };
 
+// Whether a section that repeats after p periods step by step (every p-step difference within the
+// tolerance) still moves on steadily: for some phase of three steps or more, its last point lies
+// farther than the tolerance from its first and farther than half its steps times the largest step
+// (one way, not circling an orbit), and its steps do not shrink fast enough to end within the
+// tolerance (the geometric tail of its last step at the rate from its first). Such steps add up: a
+// large motion that friction wears down by a constant amount per cycle repeats step by step.
+template <typename StateVector>
+bool DriftsAcrossRecord(const std::vector<StateVector>& section, int p, double tolerance) {
+  const int n = static_cast<int>(section.size());
+  const double largest_step = StepMismatch(section, p, 0, n - p);
+  const auto apart = [&section](int j, int k) { return (section[j] - section[k]).template lpNorm<Eigen::Infinity>(); };
+  for (int k = 0; k < p; ++k) {
+    const int steps = (n - 1 - k) / p;
+    if (steps < 3) continue;
+    const int last = k + steps * p;
+    const double drift = apart(last, k);
+    if (!(drift > tolerance && drift > 0.5 * steps * largest_step)) continue;
+    const double first_step = apart(k + p, k), last_step = apart(last, last - p);
+    const double rate = last_step < first_step ? std::pow(last_step / first_step, 1.0 / (steps - 1)) : 1.0;
+    if (!(rate < 1.0 && last_step * rate / (1.0 - rate) <= tolerance)) return true;
+  }
+  return false;
+}
+
 // The period on the section (RepeatingPeriod), reduced to the least divisor d that the section is
-// contracting onto (ContractionOntoPeriod), with the distance still to go.
+// contracting onto (ContractionOntoPeriod), with the distance still to go; 0 where it drifts
+// (DriftsAcrossRecord).
 template <typename StateVector>
 LeastSectionPeriod LeastPeriodOnSection(const std::vector<StateVector>& section, double tolerance) {
   const int p = RepeatingPeriod(section, tolerance);
@@ -101,6 +126,7 @@ LeastSectionPeriod LeastPeriodOnSection(const std::vector<StateVector>& section,
     if (p % d != 0) continue;
     if (const std::optional<double> remaining = ContractionOntoPeriod(section, p, d)) return {d, *remaining};
   }
+  if (p > 0 && DriftsAcrossRecord(section, p, tolerance)) return {0, 0.0};
   return {p, 0.0};
 }
 

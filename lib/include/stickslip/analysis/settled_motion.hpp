@@ -51,7 +51,9 @@ struct BasicSettledMotion {
   // whole record when no period was found.
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
-  // Smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none. Reduced to
+  // Smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none, or if the
+  // section drifts steadily across the record by more than the tolerance (steps below it add up: a
+  // large motion that friction wears down by a constant amount per cycle). Reduced to
   // a divisor d of p when the section is contracting onto a period-d motion (a slowly converging
   // orbit whose multiplier is near a (p/d)-th root of unity returns nearer after p periods than
   // after d): the d-step differences shrink, and fit within twice the distance the p-step ones
