@@ -1,8 +1,13 @@
 #include "continue_flags.hpp"
 
+#include <optional>
+#include <tuple>
+#include <utility>
+
 #include "cli_common.hpp"
 #include "number_text.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_restart.hpp"
 
 namespace stickslip::cli {
 
@@ -54,7 +59,19 @@ void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
 void BuildOneOffRun(ContinueArgs* args) {
   RunFile& run = args->run;
   run.path = kOneOffRunPath;
-  SetRunFileStart(ToStartInput(args->start), &run);
+  // A [model]'s label: only its run and label here; the model and the orbit come with the run
+  // (MakeModelSetup), which refuses the start options only the paper's oscillator takes.
+  StartFlags start = args->start;
+  std::optional<std::pair<std::string, std::string>> model_point;
+  if (!start.point.empty()) {
+    auto point = RunAndLabel(start.point);
+    if (HoldsModelRun(start.results, point.first)) {
+      model_point = std::move(point);
+      start.point.clear();
+    }
+  }
+  SetRunFileStart(ToStartInput(start), &run);
+  if (model_point) std::tie(run.restart_run, run.restart_label) = *model_point;
   const auto comma = args->range.find(',');
   if (comma == std::string::npos) throw InvalidInput("range", "'" + args->range + "'", "MIN,MAX");
   run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX with MIN < MAX");

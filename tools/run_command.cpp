@@ -18,6 +18,7 @@
 #include "start_options.hpp"
 #include "stickslip/io/check.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 
@@ -26,40 +27,51 @@ namespace stickslip::cli {
 namespace {
 
 struct Executed {
-  OrbitBranch branch;
+  Branch branch;
   StoredRun stored;
   double seconds = 0.0;  // wall time of the continuation, reported on stdout (not in the files)
 };
 
-// Runs one run file in memory. A start that does not converge is a failed run: exit code 3,
-// nothing written.
-std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path& results) {
-  OrbitContinuationSetup setup = MakeSetup(run, results);
+// Continues `setup` (either model's) with a progress line and records the branch (`record`). A start
+// that does not converge is a failed run: exit code 3, nothing written.
+template <typename Setup, typename Record>
+std::optional<Executed> ContinueAndRecord(const RunFile& run, Setup setup, const Record& record) {
   ProgressLineOptions line_options;
   line_options.value_name = run.parameter;
   ProgressLine line(run.output, line_options);
   setup.options.progress = line.Callback();
   const auto started = std::chrono::steady_clock::now();
-  OrbitBranch branch = ContinueOrbit(setup);
+  auto branch = ContinueOrbit(setup);
   line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (branch.branch.end == BranchEnd::kStartFailed) {
     fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
     return std::nullopt;
   }
-  StoredRun stored = RecordRun(run, branch);
-  return Executed{std::move(branch), std::move(stored), seconds};
+  StoredRun stored = record(branch);
+  return Executed{std::move(branch.branch), std::move(stored), seconds};
+}
+
+// Runs one run file in memory: from a [model]'s label (MakeModelSetup), or the paper's oscillator.
+std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path& results) {
+  if (std::optional<ModelRunSetup> model = MakeModelSetup(run, results)) {
+    const StoredSummary identity{.run_file = model->run_file, .output = run.output, .parameter = run.parameter};
+    return ContinueAndRecord(run, std::move(model->setup), [&](const BasicOrbitBranch<DynamicLinearOscillator>& b) {
+      return RecordRun(model->file.model, identity, b);
+    });
+  }
+  return ContinueAndRecord(run, MakeSetup(run, results), [&](const OrbitBranch& b) { return RecordRun(run, b); });
 }
 
 std::string Report(const RunFile& run, const Executed& e) {
-  const OrbitBranch& b = e.branch;
+  const Branch& b = e.branch;
   std::string special;
-  for (const SpecialPoint& s : b.branch.special_points) {
-    if (s.test_function == "start" || s.test_function == ToString(b.branch.end)) continue;
+  for (const SpecialPoint& s : b.special_points) {
+    if (s.test_function == "start" || s.test_function == ToString(b.end)) continue;
     special += fmt::format(" {}({}={:.10g})", s.type, run.parameter, s.lambda);
   }
-  return fmt::format("{}: {} points in {:.3f} s; {}: {};{}", run.output, b.branch.points.size(), e.seconds,
-                     ToString(b.branch.end), b.branch.end_message, special.empty() ? " no special points" : special);
+  return fmt::format("{}: {} points in {:.3f} s; {}: {};{}", run.output, b.points.size(), e.seconds, ToString(b.end),
+                     b.end_message, special.empty() ? " no special points" : special);
 }
 
 // Writes the run's files and reports the run on stdout, and the files of the earlier run's directory
@@ -201,7 +213,7 @@ int RunCheck(const CheckArgs& args) {
     }
     std::optional<Executed> e = Execute(c.run, args.results);
     if (!e) return kExitNoConvergence;
-    if (!ReportDifferences(c.run.output, CompareWithStored(e->stored, *c.branch), e->branch.branch.special_points.size())) {
+    if (!ReportDifferences(c.run.output, CompareWithStored(e->stored, *c.branch), e->branch.special_points.size())) {
       code = kExitFailure;
     }
   }

@@ -14,20 +14,24 @@
 #include "number_text.hpp"
 #include "progress_line.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/run.hpp"
 #include "trace_run.hpp"
 
 namespace stickslip::cli {
 
-std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code) {
-  const OrbitContinuationSetup setup = MakeSetup(run, results);
+namespace {
+
+// Traces `setup` (either model's) with a progress line and records the trace (`record`).
+template <typename Setup, typename Record>
+std::optional<TraceRun> TraceAndRecord(const RunFile& run, const Setup& setup, const Record& record, int* exit_code) {
   TraceOptions options = *run.trace;
   ProgressLineOptions line_options;
   line_options.value_name = run.parameter;
   ProgressLine line(run.output, line_options);
   options.progress = line.Callback();
   const auto started = std::chrono::steady_clock::now();
-  TraceResult result = TraceOrbits(setup, options);
+  const auto result = TraceOrbits(setup, options);
   line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!result.HasBranches()) {
@@ -35,8 +39,25 @@ std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::
     *exit_code = result.NotAMotion() ? kExitNotAMotion : kExitNoConvergence;
     return std::nullopt;
   }
-  StoredTrace stored = RecordTrace(run, result);
-  return TraceRun{std::move(result), std::move(stored), seconds};
+  return TraceRun{record(result), seconds};
+}
+
+}  // namespace
+
+std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code) {
+  if (const std::optional<ModelRunSetup> model = MakeModelSetup(run, results)) {
+    const StoredSummary identity{.run_file = model->run_file, .output = run.output, .parameter = run.parameter};
+    return TraceAndRecord(
+        run, model->setup,
+        [&](const BasicTraceResult<DynamicLinearOscillator>& trace) {
+          StoredTrace stored = RecordTrace(model->file.model, identity, trace);
+          stored.natural_frequencies = model->file.slip_frequencies;
+          return stored;
+        },
+        exit_code);
+  }
+  return TraceAndRecord(
+      run, MakeSetup(run, results), [&](const TraceResult& trace) { return RecordTrace(run, trace); }, exit_code);
 }
 
 int WriteAndReportTrace(const StoredTrace& trace, double seconds, const std::filesystem::path& results) {

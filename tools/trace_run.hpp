@@ -11,12 +11,12 @@
 namespace stickslip::cli {
 
 struct TraceRun {
-  TraceResult result;
   StoredTrace stored;
   double seconds = 0.0;  // wall time, reported on stdout (not in the files)
 };
 
-// The trace of `run` (run.trace set). nullopt, with the reason on stderr and *exit_code set, when
+// The trace of `run` (run.trace set), from a [model]'s label (MakeModelSetup) or of the paper's
+// oscillator. nullopt, with the reason on stderr and *exit_code set, when
 // nothing was traced: kExitNotAMotion when the start is not a motion (and the trace does not allow
 // it), kExitNoConvergence when no branch started. Nothing to write then.
 std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code);

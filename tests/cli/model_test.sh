@@ -313,8 +313,49 @@ echo mine > "$work/traces/chain/NOTES.md"
   fail "a second find --model --trace --output did not keep the user's file: $(cat "$work/chain.txt")"
 "$bin" plot "$work/traces/chain" --output "$work/chain.png" > /dev/null && [ -s "$work/chain.png" ] && pass ||
   fail "stickslip plot of a [model]'s trace"
-expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid a run of the paper's oscillator" \
-  "$bin" continue --results "$work/traces/chain" --point branch-1:EP1 --parameter omega --range 0.3,0.9 --output z
+# A [model]'s label restarts continue and trace (issue 22: every label restarts), from the command line
+# and from a run file's [start.restart], and check re-runs such a run file. The branch in F_s from EP1
+# (omega = 0.6) passes F_s = 0.5 (a user value) at the orbit the motion from rest settles on there
+# (find --model --set F_s=0.5: a simulation and its own Newton solve, not the continuation).
+"$bin" continue --results "$work/traces/chain" --point branch-1:EP1 --parameter F_s --range 0.3,0.8 \
+  --direction both --user-value F_s=0.5 --output fs > "$work/fs.txt" 2>&1 &&
+  grep -q "^fs-up: .* UZ(F_s=0.5)" "$work/fs.txt" && grep -q "^fs-down: .*reached F_s = 0.3" "$work/fs.txt" && pass ||
+  fail "continue from a [model]'s label: $(cat "$work/fs.txt")"
+"$bin" find --model "$models/five-mass-chain.toml" --set F_s=0.5 --json > "$work/fs.json"
+/usr/bin/python3 - "$work/traces/chain/fs-up" "$work/fs.json" <<'PY' && pass || fail "the branch from a [model]'s label is not the found orbit"
+import csv, json, sys
+uz = [r for r in csv.DictReader(open(sys.argv[1] + "/special-points.csv")) if r["label"].startswith("UZ")]
+orbit = json.load(open(sys.argv[2]))["orbit"]
+assert len(uz) == 1 and orbit["signature"] == json.load(open(sys.argv[1] + "/summary.json"))["signature"], (uz, orbit)
+found = dict(orbit["start"], phi=orbit["phi"], d1=orbit["durations"][0], d2=orbit["durations"][1])
+for name, value in found.items():
+    if name in uz[0]:
+        assert abs(float(uz[0][name]) - value) <= 1e-9 * (1 + abs(value)), (name, uz[0][name], value)
+assert json.load(open(sys.argv[1] + "/summary.json"))["run_file"].endswith("five-mass-chain.toml")
+PY
+"$bin" trace --results "$work/traces/chain" --point fs-up:UZ2 --parameter omega --range 0.5,0.7 --output fs-omega \
+  > "$work/fs-omega.txt" 2>&1 && grep -q "^fs-omega: [0-9]* branches in" "$work/fs-omega.txt" &&
+  grep -q '"model": "linear-oscillator"' "$work/traces/chain/fs-omega/trace.json" && pass ||
+  fail "trace from a [model]'s label: $(cat "$work/fs-omega.txt")"
+printf 'output = "fs-file"\n[start.restart]\nrun = "branch-1"\nlabel = "EP1"\n[continuation]\nparameter = "F_s"\nrange = [0.3, 0.8]\n[trace]\n' \
+  > "$work/restart.toml"
+"$bin" run --results "$work/traces/chain" "$work/restart.toml" > /dev/null && \
+  "$bin" check --results "$work/traces/chain" "$work/restart.toml" > "$work/check.txt" && grep -q "fs-file/trace.json: ok" "$work/check.txt" &&
+  pass || fail "run and check of a run file restarting from a [model]'s label: $(cat "$work/check.txt")"
+restart=(continue --results "$work/traces/chain" --output z)
+for bad in "--set omega=0.5:set is invalid with a [model]'s label ('branch-1:EP1')" "--free phi:free is invalid with a [model]'s label" \
+  "--preset paper-4.1:preset is invalid with a [model]'s label" \
+  "--user-value omega=0.6:user-value names 'omega', which is not an unknown of the run"; do
+  expect 2 "${bad#*:}" "$bin" "${restart[@]}" --point branch-1:EP1 --parameter F_s --range 0.3,0.8 ${bad%%:*}
+done
+expect 2 "parameter = 'chi' is invalid: valid range omega, F_k, F_s, v_b" "$bin" "${restart[@]}" --point branch-1:EP1 \
+  --parameter chi --range 0.3,0.8
+expect 2 "range = [0.45, 0.6] excludes the start, F_s = 0.4" "$bin" "${restart[@]}" --point branch-1:EP1 --parameter F_s \
+  --range 0.45,0.6
+expect 2 "label 'XX1' is not in" "$bin" "${restart[@]}" --point branch-1:XX1 --parameter F_s --range 0.3,0.8
+[ ! -e "$work/traces/chain/z" ] && pass || fail "a refused restart wrote its output"
+expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid here a run of the paper's oscillator" \
+  "$bin" solve --results "$work/traces/chain" --point branch-1:EP1
 expect 2 "phi = 0.3 is invalid: the model has no forcing" "$bin" find --model "$models/belt.toml" --set phi=0.3
 expect 5 "the motion has not settled (nor is any k <= 8 forcing periods a period of it) (--transients 2 periods now: more simulates longer)" \
   "$bin" find --model "$models/five-mass-chain.toml" --transients 2
@@ -332,7 +373,7 @@ expect 2 "output = '' is invalid" "$bin" find --model "$models/belt.toml" --trac
   fail "find --model --set --trace --output: the run file is not the command line"
 "$bin" export --auto "$work/traces/chain/branch-1" > /dev/null && [ -s "$work/traces/chain/branch-1/s.branch-1" ] && pass ||
   fail "export --auto of a [model]'s run"
-expect 2 "was computed from the command line (--set): its s. file needs the model" \
+expect 2 "was computed from the command line (--set): its model is in no run file" \
   "$bin" export --auto "$work/traces/belt/branch-1"
 expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"

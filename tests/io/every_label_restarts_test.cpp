@@ -1,5 +1,6 @@
 // Every label any run wrote restarts (issue 22, defect 3): for each special point of every run
-// directory in results/ (runs, the branches of traces and atlases, the curves of maps), the start builder
+// directory in results/ (runs, the branches of traces and atlases, the curves of maps; a [model]'s
+// too, through MakeModelSetup as `continue --point` restarts it), the start builder
 // accepts its stored variables, Newton at the label's parameter converges from them to 1e-10, and
 // one continuation step from it is accepted one way or the other; where the label is a family's
 // end (u_s reached 0), the refusal says so. A fixed amount of work per label: one Newton solve
@@ -22,6 +23,7 @@
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/start_input.hpp"
 #include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/trace_files.hpp"
 #include "stickslip/orbits/model_orbit_solver.hpp"
 
@@ -100,7 +102,10 @@ OrbitBranch OneStep(const StartProblem& start, const LabelCase& c, int direction
 }
 
 // A point beyond the start was computed and kept: the step's end, or a special point located on it.
-bool Accepted(const OrbitBranch& b) { return b.branch.points.size() >= 2; }
+template <typename AnyBranch>
+bool Accepted(const AnyBranch& b) {
+  return b.branch.points.size() >= 2;
+}
 
 // Why a branch ended at its start: a margin zero there that the first step makes negative, or a
 // fold at the start where the branch runs against the asked direction on both sides.
@@ -113,15 +118,21 @@ bool SaysWhyItEndsAtTheStart(const Branch& b) {
 // A step is accepted one way or the other. Where neither way is admissible (a corner of the
 // admissible region: a point of a type boundary's curve where a second margin is zero too, as the
 // special points on a map's curves, or a type change at a fold), both ends say why, and past the
-// type changes (continue_past_type_changes) a step is accepted.
-void ExpectOneStep(const StartProblem& start, const LabelCase& c) {
-  const OrbitBranch up = OneStep(start, c, +1, false), down = OneStep(start, c, -1, false);
+// type changes (continue_past_type_changes) a step is accepted. `step(direction, past)` is the
+// branch of one step, of either model.
+template <typename Step>
+void ExpectOneStepOf(const Step& step) {
+  const auto up = step(+1, false), down = step(-1, false);
   if (Accepted(up) || Accepted(down)) return;
   EXPECT_TRUE(SaysWhyItEndsAtTheStart(up.branch)) << up.branch.end_message;
   EXPECT_TRUE(SaysWhyItEndsAtTheStart(down.branch)) << down.branch.end_message;
-  EXPECT_TRUE(Accepted(OneStep(start, c, +1, true)) || Accepted(OneStep(start, c, -1, true)))
+  EXPECT_TRUE(Accepted(step(+1, true)) || Accepted(step(-1, true)))
       << "no step accepted either way, even past the type changes: " << up.branch.end_message << "; "
       << down.branch.end_message;
+}
+
+void ExpectOneStep(const StartProblem& start, const LabelCase& c) {
+  ExpectOneStepOf([&](int direction, bool past) { return OneStep(start, c, direction, past); });
 }
 
 void ExpectRestarts(const LabelCase& c) {
@@ -149,32 +160,63 @@ void ExpectRestarts(const LabelCase& c) {
   ExpectOneStep(start, c);
 }
 
-// A label of a run file's [model] (its traces' branches, `find --model --trace --output`): no
-// front end restarts one yet, but its stored variables (OrbitOf, the columns' inverse) are the
-// model's orbit there: Newton at its parameters converges from them to 1e-10.
-void ExpectModelLabelSolves(const fs::path& run, const StoredRun& stored, const StoredSpecialPoint& s) {
+// A label of a run file's [model] (its traces' branches: `find --model --trace --output`, `atlas
+// --model`) restarts as `continue --point` and `trace --point` restart from it (MakeModelSetup; the
+// run file its summary names relative to the repository's root, where tools/run.sh ran): its stored
+// variables are the model's orbit there, Newton at its parameters converges from them to 1e-10, and
+// one continuation step in the run's parameter is accepted one way or the other.
+void ExpectModelLabelRestarts(const fs::path& run, const StoredRun& stored, const StoredSpecialPoint& s) {
   SCOPED_TRACE(fmt::format("{}:{}", run.string(), s.point.label));
-  const ModelFileStart file = ReadModelFileStart(kSource / stored.summary.run_file, {});
-  const BasicOrbit<DynamicLinearOscillator> orbit = OrbitOf(file.model, file.parameters, stored, s.point);
+  RunFile restart;
+  restart.output = "restarted";
+  restart.restart_run = run.filename().string();
+  restart.restart_label = s.point.label;
+  restart.parameter = stored.summary.parameter;
+  restart.range_min = -1e6;
+  restart.range_max = 1e6;
+  restart.max_amplitude = std::numeric_limits<double>::infinity();
+  const std::optional<ModelRunSetup> model = MakeModelSetup(restart, run.parent_path());
+  ASSERT_TRUE(model.has_value());
+  const BasicOrbitContinuationSetup<DynamicLinearOscillator>& setup = model->setup;
   OrbitSolverOptions solver;
   solver.newton.residual_tolerance = 1e-10;
   solver.newton.estimate_condition = false;
-  const OrbitVariableSet variables = VariableSetOf(file.model, orbit.signature);
-  const BasicOrbitSolution<DynamicLinearOscillator> solved =
-      SolveOrbit(file.model, orbit, FreeIndices(variables, UnknownsAtFixedParameters(variables)), false, solver);
+  const OrbitVariableSet variables = VariableSetOf(setup.model, setup.start.signature);
+  const BasicOrbitSolution<DynamicLinearOscillator> solved = SolveOrbit(
+      setup.model, setup.start, FreeIndices(variables, UnknownsAtFixedParameters(variables)), false, solver);
   EXPECT_TRUE(solved.summary.Converged()) << solved.summary.message;
   EXPECT_LE(solved.summary.residual_norms.back(), 1e-10);
   EXPECT_LE(solved.summary.residual_norms.front(), 1e-8);  // the stored orbit is one already
+  ExpectOneStepOf([&setup](int direction, bool past) {
+    BasicOrbitContinuationSetup<DynamicLinearOscillator> one = setup;
+    one.options.direction = direction;
+    one.options.max_points = 2;
+    one.options.continue_past_terminal = past;
+    return ContinueOrbit(one);
+  });
 }
+
+// The working directory for a scope: the run files results/ names are relative to the repository.
+class InDirectory {
+ public:
+  explicit InDirectory(const fs::path& directory) : previous_(fs::current_path()) { fs::current_path(directory); }
+  ~InDirectory() { fs::current_path(previous_); }
+  InDirectory(const InDirectory&) = delete;
+  InDirectory& operator=(const InDirectory&) = delete;
+
+ private:
+  fs::path previous_;
+};
 
 TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
   const std::vector<fs::path> runs = RunDirectories();
   ASSERT_GE(runs.size(), 70u);
+  const InDirectory at_root(kSource);
   std::size_t labels = 0, model_labels = 0;
   for (const fs::path& run : runs) {
     const StoredRun stored = ReadRunFiles(run);
     if (!stored.summary.model.empty()) {
-      for (const StoredSpecialPoint& s : stored.special_points) ExpectModelLabelSolves(run, stored, s);
+      for (const StoredSpecialPoint& s : stored.special_points) ExpectModelLabelRestarts(run, stored, s);
       model_labels += stored.special_points.size();
       continue;
     }

@@ -1,4 +1,5 @@
-// The trace for a model whose size comes with its data, compiled once for every front end.
+// The trace for a model whose size comes with its data, and its one branch (ContinueOrbit),
+// compiled once for every front end.
 #include "stickslip/branches/model_trace.hpp"
 
 #include "stickslip/model/linear_oscillator.hpp"
@@ -9,5 +10,9 @@ template BasicTraceResult<DynamicLinearOscillator> TraceOrbits(
     const BasicOrbitContinuationSetup<DynamicLinearOscillator>& start, const TraceOptions& options);
 template BasicOrbitContinuationSetup<DynamicLinearOscillator> AtLeastPeriod(
     BasicOrbitContinuationSetup<DynamicLinearOscillator> setup);
+// ContinueOrbit's pieces (orbit_continuation.hpp) for a [model], for a front end's one branch.
+template OrbitContinuationProblem MakeOrbitContinuation(const BasicOrbitContinuationSetup<DynamicLinearOscillator>&);
+template BasicOrbitBranch<DynamicLinearOscillator> ToOrbitBranch<DynamicLinearOscillator>(
+    const OrbitContinuationProblem&, Branch);
 
 }  // namespace stickslip

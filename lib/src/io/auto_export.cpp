@@ -14,6 +14,7 @@
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/verification.hpp"
@@ -100,17 +101,6 @@ SampledOrbit SampledOf(const Orbit& orbit, int samples) {
   return sampled;
 }
 
-// The [model] a run was computed for, from the run file its summary names.
-ModelFileStart ModelOfRun(const StoredRun& run) {
-  if (run.summary.run_file == kOneOffRunPath) {
-    throw InvalidInput::WithMessage(
-        "run", fmt::format("'{}' was computed from the command line (--set): its s. file needs the model, which only "
-                           "a run file names: valid a run whose summary.json names its [model]'s file",
-                           run.summary.output));
-  }
-  return ReadModelFileStart(run.summary.run_file, {});
-}
-
 // A [model]'s orbit by its closed forms (SampleOrbit), which must come back to its start after the
 // period: else the run file no longer describes the model of the run.
 SampledOrbit SampledOf(const ModelFileStart& file, const StoredRun& run, const StoredPoint& p, int samples) {
@@ -192,7 +182,7 @@ constexpr std::string_view kDiagnosticsDivider = "==============================
 AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
   const StoredRun run = ReadRunFiles(run_directory);
   const BranchColumns columns = ColumnsOf(run);
-  const std::optional<ModelFileStart> model = run.summary.model.empty() ? std::nullopt : std::optional(ModelOfRun(run));
+  const std::optional<ModelFileStart> model = run.summary.model.empty() ? std::nullopt : std::optional(ModelOfStoredRun(run));
   AutoFiles files;
   files.b = BranchHeader(run, columns);
   for (const StoredPoint& p : run.branch) {

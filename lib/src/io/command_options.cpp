@@ -56,14 +56,18 @@ InvalidInput AsOption(const InvalidInput& error) {
   return error;
 }
 
-RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::string_view run_and_label) {
+std::pair<std::string, std::string> RunAndLabel(std::string_view run_and_label) {
   const auto colon = run_and_label.find(':');
   if (colon == std::string_view::npos || colon == 0 || colon + 1 == run_and_label.size()) {
     throw InvalidInput::WithMessage(
         "restart", fmt::format("restart = '{}' is invalid: valid RUN:LABEL, a labelled point of results/RUN", run_and_label));
   }
-  return ReadRestartPoint(results_root, std::string(run_and_label.substr(0, colon)),
-                          std::string(run_and_label.substr(colon + 1)));
+  return {std::string(run_and_label.substr(0, colon)), std::string(run_and_label.substr(colon + 1))};
+}
+
+RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, std::string_view run_and_label) {
+  const auto [run, label] = RunAndLabel(run_and_label);
+  return ReadRestartPoint(results_root, run, label);
 }
 
 SimulationOptions SimulationOver(const Parameters& p, double periods, double samples_per_period, bool sampled) {

@@ -596,8 +596,8 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   const StoredRun stored = ReadRunFiles(results_root / run);
   if (!stored.summary.model.empty()) {
     throw InvalidInput::WithMessage(
-        "run", fmt::format("'{}' holds a run of a {} (a run file's [model]): valid a run of the paper's oscillator "
-                           "(a restart from a [model]'s label is not done in this version)",
+        "run", fmt::format("'{}' holds a run of a {} (a run file's [model]): valid here a run of the paper's "
+                           "oscillator (continue and trace restart from a [model]'s label)",
                            (results_root / run).string(), stored.summary.model));
   }
   std::vector<std::string> labels;

@@ -70,7 +70,8 @@ using OrbitBranch = BasicOrbitBranch<Pascal2014>;
 // not a held variable, max_amplitude is not > 0, resonance_approach not in [0, 1) or a condition
 // is given for a model other than the paper's. A branch ends as the engine ends it, or at a
 // resonance (max_amplitude, resonance_approach). `observer`, if given, sees the branch after every
-// step (a progress display, say). Compiled for the paper's model; for another model include
+// step (a progress display, say). Compiled for the paper's model (orbit_continuation.cpp) and a
+// [model]'s (DynamicLinearOscillator, model_trace.cpp); for another model include
 // branches/model_orbit_continuation.hpp.
 template <OscillatorModel Model>
 BasicOrbitBranch<Model> ContinueOrbit(const BasicOrbitContinuationSetup<Model>& setup,

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <string_view>
 
 #include <vector>
@@ -35,6 +36,9 @@ InvalidInput AsOption(const InvalidInput& error);
 // The path of a one-off run's RunFile, which its messages start with.
 inline constexpr std::string_view kOneOffRunPath = "(command line)";
 
+// "RUN:LABEL" split at its first colon. Throws InvalidInput naming "restart" when the text is not
+// RUN:LABEL.
+std::pair<std::string, std::string> RunAndLabel(std::string_view run_and_label);
 // A labelled point given as "RUN:LABEL", read from results_root/RUN for a restart. Throws
 // InvalidInput naming "restart" when the text is not RUN:LABEL, and as ReadRestartPoint
 // (io/start_input.hpp) when the point cannot be read.
