@@ -74,7 +74,7 @@ TEST(SettledMotion, CountsOverTheWholeRecordWithoutAPeriod) {
 // friction takes 2 F_k off its amplitude every half cycle (energy over a half cycle:
 // (A^2 - A'^2)/2 = F_k (A + A')), 8 F_k = 0.4 per 3 periods: each step below the relative tolerance
 // (1e-6 times 1e6), the drift over the record well above it. It is not a motion of period 3 (hostile
-// review D1: from x = 1e7 it was).
+// review D1: from x = 1e7 it was), nor, at omega = 1.6, of period 8.
 TEST(SettledMotion, MotionWornDownByStepsBelowTheToleranceIsNotPeriodic) {
   const double friction = 0.05;
   SettleOptions options;
@@ -96,6 +96,15 @@ TEST(SettledMotion, MotionWornDownByStepsBelowTheToleranceIsNotPeriodic) {
   const double worn = amplitude(motion.section[0]) - amplitude(motion.section[18]);  // 12 natural cycles
   EXPECT_NEAR(worn, 12 * 4 * friction, 1e-3 * worn);
   EXPECT_LT(std::abs(amplitude(motion.section[3]) - amplitude(motion.section[0])), 1e-6 * 1e6);
+
+  // At omega = 1.6 the free oscillation comes back every 8 periods (5 natural cycles), 20 F_k = 0.8
+  // worn off, below the tolerance: a record of 24 periods holds two such steps per phase.
+  options.recorded_periods = 24;
+  const BasicSettledMotion<DynamicLinearOscillator> slower =
+      SimulateSettled(model, {1.6, friction, friction, 0.0}, start, 0.0, options);
+  ASSERT_TRUE(slower.Completed()) << slower.message;
+  EXPECT_EQ(slower.period, 0);
+  EXPECT_NEAR(amplitude(slower.section[0]) - amplitude(slower.section[16]), 10 * 4 * friction, 1e-3);
 
   // From near its steady orbit (Den Hartog's, amplitude 0.80) the free oscillation is worn out within
   // the transient.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -63,6 +65,15 @@ double StepMismatch(const std::vector<StateVector>& section, int step, int from,
   return mismatch;
 }
 
+// The distance still to go after steps that shrink geometrically from `early` to `late` (each the
+// sum of `window` steps; q = (late/early)^exponent the rate per step): the tail
+// (late/window)(1 + q + q^2 ...); infinite where they do not shrink.
+double GeometricTail(double early, double late, double exponent, int window) {
+  if (!(late < early)) return std::numeric_limits<double>::infinity();
+  const double rate = std::pow(late / early, exponent);
+  return late / window / (1.0 - rate);
+}
+
 // How far a section that repeats after p periods to tolerance may still be from a motion of period
 // d (d divides p) that it contracts onto; nullopt when it shows no such contraction. A motion that
 // contracts slowly onto a period-d orbit whose multiplier is near a (p/d)-th root of unity returns
@@ -71,6 +82,7 @@ double StepMismatch(const std::vector<StateVector>& section, int step, int from,
 // last p), the distance still to go is at most late/(1 - q) (a geometric tail), and the d-step
 // differences, shrinking too, are at most twice that distance. A motion of least period p has
 // d-step differences that neither shrink nor fit that bound.
+inline constexpr double kContractionShown = 0.99;
 template <typename StateVector>
 std::optional<double> ContractionOntoPeriod(const std::vector<StateVector>& section, int p, int d) {
   const int n = static_cast<int>(section.size());
@@ -78,9 +90,10 @@ std::optional<double> ContractionOntoPeriod(const std::vector<StateVector>& sect
   if (span < p) return std::nullopt;
   const double early = StepMismatch(section, p, 0, p);
   const double late = StepMismatch(section, p, span, p);
-  if (!(late < early)) return std::nullopt;
-  const double rate = std::pow(late / early, static_cast<double>(p) / span);
-  const double remaining = late / (1.0 - rate);
+  // A contraction shows: its p-step differences shrink by 1 % at least across the record. Steps
+  // that hold their size (a motion worn down by a constant amount per cycle) are a drift.
+  if (!(late <= kContractionShown * early)) return std::nullopt;
+  const double remaining = GeometricTail(early, late, static_cast<double>(p) / span, 1);  // rate per p periods
   const double d_early = StepMismatch(section, d, 0, p);
   const double d_late = StepMismatch(section, d, n - p - d, p);
   if (!(d_late < d_early && d_late <= 2.0 * remaining)) return std::nullopt;
@@ -92,33 +105,40 @@ struct LeastSectionPeriod {
   double settling = 0.0;
 };
 
-// Whether a section that repeats after p periods step by step (every p-step difference within the
-// tolerance) still moves on steadily: for some phase of three steps or more, its last point lies
-// farther than the tolerance from its first and farther than half its steps times the largest step
-// (one way, not circling an orbit), and its steps do not shrink fast enough to end within the
-// tolerance (the geometric tail of its last step at the rate from its first). Such steps add up: a
-// large motion that friction wears down by a constant amount per cycle repeats step by step.
+
+// How far a section that repeats after p periods step by step (every p-step difference within the
+// tolerance) may still be from its period-p motion: 0 where no phase moves on across the record;
+// where one does (two steps or more, its last point farther than the tolerance from its first and
+// farther than half its path: one way, not circling an orbit), the geometric tail of its steps
+// (its late half against its early half) where that is no more than the way it moved over the
+// record; nullopt where it is more: a drift, not a settled motion. Steps below the tolerance add up:
+// a large motion that friction wears down by a constant amount per cycle repeats step by step.
 template <typename StateVector>
-bool DriftsAcrossRecord(const std::vector<StateVector>& section, int p, double tolerance) {
+std::optional<double> SettlingOntoPeriod(const std::vector<StateVector>& section, int p, double tolerance) {
   const int n = static_cast<int>(section.size());
-  const double largest_step = StepMismatch(section, p, 0, n - p);
   const auto apart = [&section](int j, int k) { return (section[j] - section[k]).template lpNorm<Eigen::Infinity>(); };
+  double settling = 0.0;
   for (int k = 0; k < p; ++k) {
     const int steps = (n - 1 - k) / p;
-    if (steps < 3) continue;
-    const int last = k + steps * p;
-    const double drift = apart(last, k);
-    if (!(drift > tolerance && drift > 0.5 * steps * largest_step)) continue;
-    const double first_step = apart(k + p, k), last_step = apart(last, last - p);
-    const double rate = last_step < first_step ? std::pow(last_step / first_step, 1.0 / (steps - 1)) : 1.0;
-    if (!(rate < 1.0 && last_step * rate / (1.0 - rate) <= tolerance)) return true;
+    if (steps < 2) continue;
+    std::vector<double> step(steps);
+    for (int i = 0; i < steps; ++i) step[i] = apart(k + (i + 1) * p, k + i * p);
+    const double drift = apart(k + steps * p, k);
+    const double path = std::accumulate(step.begin(), step.end(), 0.0);
+    if (!(drift > tolerance && drift > 0.5 * path)) continue;
+    const int half = steps / 2;
+    const double early = std::accumulate(step.begin(), step.begin() + half, 0.0);
+    const double late = std::accumulate(step.end() - half, step.end(), 0.0);
+    const double tail = GeometricTail(early, late, 1.0 / (steps - half), half);
+    if (!(tail <= drift)) return std::nullopt;
+    settling = std::max(settling, tail);
   }
-  return false;
+  return settling;
 }
 
 // The period on the section (RepeatingPeriod), reduced to the least divisor d that the section is
-// contracting onto (ContractionOntoPeriod), with the distance still to go; 0 where it drifts
-// (DriftsAcrossRecord).
+// contracting onto (ContractionOntoPeriod), with the distance still to go; where there is none, the
+// distance still to go to the period itself (SettlingOntoPeriod), and 0 where the section drifts.
 template <typename StateVector>
 LeastSectionPeriod LeastPeriodOnSection(const std::vector<StateVector>& section, double tolerance) {
   const int p = RepeatingPeriod(section, tolerance);
@@ -126,8 +146,9 @@ LeastSectionPeriod LeastPeriodOnSection(const std::vector<StateVector>& section,
     if (p % d != 0) continue;
     if (const std::optional<double> remaining = ContractionOntoPeriod(section, p, d)) return {d, *remaining};
   }
-  if (p > 0 && DriftsAcrossRecord(section, p, tolerance)) return {0, 0.0};
-  return {p, 0.0};
+  if (p == 0) return {0, 0.0};
+  const std::optional<double> settling = SettlingOntoPeriod(section, p, tolerance);
+  return settling ? LeastSectionPeriod{p, *settling} : LeastSectionPeriod{0, 0.0};
 }
 
 struct PerPeriod {

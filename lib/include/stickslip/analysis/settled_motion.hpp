@@ -52,14 +52,17 @@ struct BasicSettledMotion {
   double stops_per_period = 0.0;
   double sticks_per_period = 0.0;
   // Smallest p <= recorded/2 with section[k + p] == section[k] (to tolerance); 0 if none, or if the
-  // section drifts steadily across the record by more than the tolerance (steps below it add up: a
-  // large motion that friction wears down by a constant amount per cycle). Reduced to
+  // section drifts across the record by more than the tolerance (steps below it add up: a large
+  // motion that friction wears down by a constant amount per cycle) and not by steps shrinking
+  // geometrically towards an orbit no farther than it moved (judged where a phase holds two p-steps
+  // or more: p <= (recorded - 1)/2). Reduced to
   // a divisor d of p when the section is contracting onto a period-d motion (a slowly converging
   // orbit whose multiplier is near a (p/d)-th root of unity returns nearer after p periods than
   // after d): the d-step differences shrink, and fit within twice the distance the p-step ones
-  // say is still to go.
+  // say is still to go (the p-step differences shrinking by 1 % at least across the record).
   int period = 0;
-  // That distance still to go (absolute, |.|_inf), where the period was reduced; 0 otherwise.
+  // That distance still to go (absolute, |.|_inf), where the period was reduced or the section still
+  // contracts onto its period by more than the tolerance across the record; 0 otherwise.
   double settling = 0.0;
   // max |q_c(t)| of the contact's coordinate q_c (the paper's x2) over the recorded periods, exact as
   // orbits/orbit_measures.hpp's amplitude: over each recorded segment, the extrema of q_c on its
