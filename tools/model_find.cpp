@@ -15,7 +15,9 @@
 #include "progress_line.hpp"
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_trace.hpp"
 #include "stickslip/io/trace_files.hpp"
 #include "trace_run.hpp"
@@ -145,6 +147,31 @@ void RefuseOutputOverModel(const std::string& output, const std::string& model, 
   throw InvalidInput::WithMessage(field, fmt::format("{} = '{}' is invalid: it is the run file --model reads: valid "
                                                      "another file",
                                                      field, output));
+}
+
+int RunModelSolve(const std::filesystem::path& results, const std::string& point, const OrbitSolverOptions& solver,
+                  bool json) {
+  const auto [run, label] = RunAndLabel(point);
+  const ModelLabel at = [&] {
+    try {
+      return ReadModelLabel(results, run, label);
+    } catch (const InvalidInput& e) {
+      throw e.Renamed("point");
+    }
+  }();
+  const Model& model = at.file.model;
+  Found r;
+  r.guess = at.orbit;
+  r = SolvedAtFixedParameters(model, ModelFindOptions{.solver = solver}, std::move(r));
+  if (!r.solution->summary.Converged()) {
+    fmt::print(stderr, "error: {}: Newton did not converge from the stored orbit: {}\n", point,
+               r.solution->summary.BriefReport());
+    return kExitNoConvergence;
+  }
+  r = CheckedModelOrbit(model, std::move(r));
+  fmt::print("{}{}", json ? ModelFindJson(model, r) : Text(model, r), json ? "\n" : "");
+  if (r.status != FindOrbitStatus::kFound) fmt::print(stderr, "error: {}: {}\n", point, r.message);
+  return FindExitCode(r.status);
 }
 
 int RunModelFind(const ModelFindArgs& args) {

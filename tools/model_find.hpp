@@ -4,12 +4,16 @@
 // or as one JSON object.
 #pragma once
 
+#include <filesystem>
+
 #include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "stickslip/orbits/orbit_solver.hpp"
 
 #include "stickslip/named_values.hpp"
 
@@ -38,6 +42,14 @@ void RefuseWithModel(const CLI::App& cmd, std::initializer_list<const char*> opt
 // Throws InvalidInput naming `field` when `output` is the run file `model` itself (by any path),
 // which no output replaces, --force or not.
 void RefuseOutputOverModel(const std::string& output, const std::string& model, const char* field);
+
+// solve --point RUN:LABEL at a [model]'s label (io/model_restart.hpp): the label's orbit solved at
+// its parameters (`solver`: shooting and linear solver), checked and printed as find --model checks
+// and prints the orbit it finds (text or JSON). Exit codes as solve's: 0 a motion, verified; 3
+// Newton did not converge; 4 no motion (a margin <= 0) or not verified. Throws InvalidInput naming
+// "point" when the label cannot be read.
+int RunModelSolve(const std::filesystem::path& results, const std::string& point, const OrbitSolverOptions& solver,
+                  bool json);
 
 // The exit code as find's: 0 found and verified (and the trace ran to its ends), 3 Newton failed (or
 // a branch of the trace), 4 no motion or not verified, 5 no orbit type read off the motion (it never

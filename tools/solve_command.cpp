@@ -3,6 +3,8 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -12,9 +14,11 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "orbit_json.hpp"
+#include "model_find.hpp"
 #include "orbit_report.hpp"
 #include "start_options.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/paper_presets.hpp"
@@ -45,7 +49,33 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
   return out;
 }
 
+// A [model]'s label: its orbit solved and checked as find --model's (RunModelSolve); the options of
+// the paper's start refused.
+std::optional<int> SolveAtModelLabel(const SolveArgs& args, const OrbitSolverOptions& solver) {
+  if (args.start.point.empty() || !HoldsModelRun(args.start.results, RunAndLabel(args.start.point).first)) {
+    return std::nullopt;
+  }
+  const StartFlags& s = args.start;
+  for (const auto& [option, given] : {std::pair{"preset", !s.preset.empty()}, {"signature", !s.signature.empty()},
+                                      {"set", !s.set.empty()}, {"guess", !s.guess.empty()}, {"free", !s.free.empty()},
+                                      {"fix", !s.fix.empty()}, {"tie-u_r", s.tie_u_r},
+                                      {"paper-choice", args.paper_choice}, {"compare-paper", args.compare_paper}}) {
+    if (!given) continue;
+    throw InvalidInput::WithMessage(option, fmt::format("--{} is not taken at a [model]'s label ('{}'): the label gives "
+                                                        "the model, its orbit and its unknowns",
+                                                        option, s.point));
+  }
+  return RunModelSolve(s.results, s.point, solver, args.json);
+}
+
 int RunSolve(const SolveArgs& args) {
+  OrbitSolverOptions options;
+  options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
+  // A sparse solver means something only where multiple shooting may be chosen: given with single
+  // shooting it would be silently ignored, so the contradiction is refused.
+  CheckLinearSolverIsUsed(args.linear_solver, args.shooting);
+  options.sparse_solver = *LinearSolverFromString(args.linear_solver.empty() ? "klu" : args.linear_solver);
+  if (const std::optional<int> code = SolveAtModelLabel(args, options)) return *code;
   if (args.compare_paper && args.start.preset.empty()) {
     throw InvalidInput::WithMessage("compare-paper", "compare-paper needs --preset");
   }
@@ -53,13 +83,6 @@ int RunSolve(const SolveArgs& args) {
   input.paper_choice = args.paper_choice;
   const StartProblem start = BuildStartProblem(input);
   const PaperPreset* preset = FindPaperPreset(args.start.preset);
-
-  OrbitSolverOptions options;
-  options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
-  // A sparse solver means something only where multiple shooting may be chosen: given with single
-  // shooting it would be silently ignored, so the contradiction is refused.
-  CheckLinearSolverIsUsed(args.linear_solver, args.shooting);
-  options.sparse_solver = *LinearSolverFromString(args.linear_solver.empty() ? "klu" : args.linear_solver);
   const OrbitSolution solution = SolveOrbit(start.orbit, start.free, start.unknowns.tie_static_friction, options);
   const Orbit& orbit = solution.orbit;
   if (!solution.summary.Converged()) {

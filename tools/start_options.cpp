@@ -33,8 +33,8 @@ void AddStartOptions(CLI::App& cmd, StartFlags* flags, StartOptions which) {
                        : "start from a paper example's printed data and initial state: " + PaperExampleNames());
   cmd.add_option("--point", flags->point,
                  orbit ? "start from a labelled point of a continuation run under --results: its orbit type, data "
-                         "and orbit (RUN:LABEL, e.g. paper-5.1-omega-up:TR2); continue and trace: a [model]'s label too (its "
-                         "model from the run file its summary.json names)"
+                         "and orbit (RUN:LABEL, e.g. paper-5.1-omega-up:TR2), or a [model]'s (its model from the run file its "
+                         "summary.json names; then no other start option)"
                        : "start from a labelled point of a continuation run under --results instead of a preset: "
                          "its data, its orbit's initial state and phase (RUN:LABEL, e.g. paper-5.1-omega-up:TR2)")
       ->type_name("RUN:LABEL");

@@ -333,6 +333,11 @@ for name, value in found.items():
         assert abs(float(uz[0][name]) - value) <= 1e-9 * (1 + abs(value)), (name, uz[0][name], value)
 assert json.load(open(sys.argv[1] + "/summary.json"))["run_file"].endswith("five-mass-chain.toml")
 PY
+# A user value of any unknown: the phase phi, reached on the branch in F_s.
+"$bin" continue --results "$work/traces/chain" --point branch-1:EP1 --parameter F_s --range 0.3,0.8 \
+  --user-value phi=-0.43 --output uv > /dev/null &&
+  awk -F, 'NR > 1 && $2 ~ /^UZ/ { found = ($7 + 0.43 < 1e-12 && $7 + 0.43 > -1e-12) } END { exit !found }' \
+    "$work/traces/chain/uv/special-points.csv" && pass || fail "a user value of phi at a [model]'s label"
 "$bin" trace --results "$work/traces/chain" --point fs-up:UZ2 --parameter omega --range 0.5,0.7 --output fs-omega \
   > "$work/fs-omega.txt" 2>&1 && grep -q "^fs-omega: [0-9]* branches in" "$work/fs-omega.txt" &&
   grep -q '"model": "linear-oscillator"' "$work/traces/chain/fs-omega/trace.json" && pass ||
@@ -345,7 +350,8 @@ printf 'output = "fs-file"\n[start.restart]\nrun = "branch-1"\nlabel = "EP1"\n[c
 restart=(continue --results "$work/traces/chain" --output z)
 for bad in "--set omega=0.5:set is invalid with a [model]'s label ('branch-1:EP1')" "--free phi:free is invalid with a [model]'s label" \
   "--preset paper-4.1:preset is invalid with a [model]'s label" \
-  "--user-value omega=0.6:user-value names 'omega', which is not an unknown of the run"; do
+  "--user-value omega=0.6:user-value names 'omega', which is not an unknown of the run" \
+  "--fix phi=0.3:fix is invalid with a [model]'s label"; do
   expect 2 "${bad#*:}" "$bin" "${restart[@]}" --point branch-1:EP1 --parameter F_s --range 0.3,0.8 ${bad%%:*}
 done
 expect 2 "parameter = 'chi' is invalid: valid range omega, F_k, F_s, v_b" "$bin" "${restart[@]}" --point branch-1:EP1 \
@@ -354,8 +360,26 @@ expect 2 "range = [0.45, 0.6] excludes the start, F_s = 0.4" "$bin" "${restart[@
   --range 0.45,0.6
 expect 2 "label 'XX1' is not in" "$bin" "${restart[@]}" --point branch-1:XX1 --parameter F_s --range 0.3,0.8
 [ ! -e "$work/traces/chain/z" ] && pass || fail "a refused restart wrote its output"
+# solve at a [model]'s label: its orbit solved again (no Newton step needed) and checked as find
+# --model checks the orbit it finds; its JSON is find --model's, its orbit the stored one.
+"$bin" solve --results "$work/traces/chain" --point fs-up:UZ2 > "$work/solve.txt" 2>&1 &&
+  grep -q "^verification passed" "$work/solve.txt" && grep -q "^newton     converged after 0 iteration" "$work/solve.txt" &&
+  pass || fail "solve at a [model]'s label: $(cat "$work/solve.txt")"
+"$bin" solve --results "$work/traces/chain" --point fs-up:UZ2 --json > "$work/solve.json" &&
+  /usr/bin/python3 - "$work/traces/chain/fs-up" "$work/solve.json" <<'PY' && pass || fail "solve --json at a [model]'s label is not the stored orbit"
+import csv, json, sys
+uz = [r for r in csv.DictReader(open(sys.argv[1] + "/special-points.csv")) if r["label"] == "UZ2"][0]
+orbit = json.load(open(sys.argv[2]))["orbit"]  # as find --model --json prints it
+assert orbit["admissible"] and orbit["verification"]["passed"], orbit
+stored = dict(orbit["start"], phi=orbit["phi"], d1=orbit["durations"][0], d2=orbit["durations"][1])
+assert len([n for n in stored if n in uz]) == len(stored) - 1, (list(uz), list(stored))  # the contact's velocity: none
+for name, value in stored.items():
+    assert name not in uz or abs(float(uz[name]) - value) <= 1e-12 * (1 + abs(value)), (name, uz[name], value)
+PY
+expect 2 "--set is not taken at a [model]'s label ('branch-1:EP1')" "$bin" solve --results "$work/traces/chain" \
+  --point branch-1:EP1 --set omega=0.5
 expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid here a run of the paper's oscillator" \
-  "$bin" solve --results "$work/traces/chain" --point branch-1:EP1
+  "$bin" simulate --results "$work/traces/chain" --point branch-1:EP1
 expect 2 "phi = 0.3 is invalid: the model has no forcing" "$bin" find --model "$models/belt.toml" --set phi=0.3
 expect 5 "the motion has not settled (nor is any k <= 8 forcing periods a period of it) (--transients 2 periods now: more simulates longer)" \
   "$bin" find --model "$models/five-mass-chain.toml" --transients 2
@@ -365,6 +389,17 @@ sed 's|masses = \[1.0|masses = [1.5|' "$models/five-mass-chain.toml" > "$work/ch
 "$bin" find --model "$work/changed.toml" --trace 0.55,0.6 --output changed --results "$work/traces" > /dev/null &&
   sed -i 's|masses = \[1.5|masses = [1.0|' "$work/changed.toml" && pass || fail "find --model changed.toml --trace"
 expect 2 "is no periodic orbit of the model" "$bin" export --auto "$work/traces/changed/branch-1"
+expect 2 "is no periodic orbit of the model" "$bin" continue --results "$work/traces/changed" --point branch-1:EP1 \
+  --parameter omega --range 0.5,0.7 --output z
+# A stored run's relative run file is found from any working directory: above the results, where the
+# run was made (as tools/run.sh makes results/ at the repository's root).
+mkdir -p "$work/project/continuation-scripts" "$work/project/results" &&
+  cp -r "$models" "$work/project/continuation-scripts/" &&
+  cp -r "$root/results/models/five-mass-chain-omega-trace" "$work/project/results/" &&
+  (cd / && "$bin" continue --results "$work/project/results/five-mass-chain-omega-trace" --point branch-1:EP1 \
+    --parameter F_k --range 0.2,0.4 --output from-elsewhere > /dev/null) &&
+  [ -s "$work/project/results/five-mass-chain-omega-trace/from-elsewhere/branch.csv" ] && pass ||
+  fail "a restart from a [model]'s label outside the directory it was made in"
 expect 2 "output = '' is invalid" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --output "" --results "$work/out"
 # With --set the file is not the run's input: the command line is (as the paper's find writes it).
 "$bin" find --model "$models/belt.toml" --set F_s=2 --trace 0.1,0.3 --output belt --results "$work/traces" > /dev/null &&

@@ -162,7 +162,8 @@ void ExpectRestarts(const LabelCase& c) {
 
 // A label of a run file's [model] (its traces' branches: `find --model --trace --output`, `atlas
 // --model`) restarts as `continue --point` and `trace --point` restart from it (MakeModelSetup; the
-// run file its summary names relative to the repository's root, where tools/run.sh ran): its stored
+// run file its summary names relative to the repository's root above results/, where tools/run.sh
+// ran, found from any working directory): its stored
 // variables are the model's orbit there, Newton at its parameters converges from them to 1e-10, and
 // one continuation step in the run's parameter is accepted one way or the other.
 void ExpectModelLabelRestarts(const fs::path& run, const StoredRun& stored, const StoredSpecialPoint& s) {
@@ -196,22 +197,9 @@ void ExpectModelLabelRestarts(const fs::path& run, const StoredRun& stored, cons
   });
 }
 
-// The working directory for a scope: the run files results/ names are relative to the repository.
-class InDirectory {
- public:
-  explicit InDirectory(const fs::path& directory) : previous_(fs::current_path()) { fs::current_path(directory); }
-  ~InDirectory() { fs::current_path(previous_); }
-  InDirectory(const InDirectory&) = delete;
-  InDirectory& operator=(const InDirectory&) = delete;
-
- private:
-  fs::path previous_;
-};
-
 TEST(EveryLabel, RestartsOrSaysItIsTheFamilysEnd) {
   const std::vector<fs::path> runs = RunDirectories();
   ASSERT_GE(runs.size(), 70u);
-  const InDirectory at_root(kSource);
   std::size_t labels = 0, model_labels = 0;
   for (const fs::path& run : runs) {
     const StoredRun stored = ReadRunFiles(run);

@@ -101,21 +101,12 @@ SampledOrbit SampledOf(const Orbit& orbit, int samples) {
   return sampled;
 }
 
-// A [model]'s orbit by its closed forms (SampleOrbit), which must come back to its start after the
-// period: else the run file no longer describes the model of the run.
+// A [model]'s orbit by its closed forms (SampledStoredOrbit: it must come back to its start).
 SampledOrbit SampledOf(const ModelFileStart& file, const StoredRun& run, const StoredPoint& p, int samples) {
   const BasicOrbit<DynamicLinearOscillator> orbit = OrbitOf(file.model, file.parameters, run, p);
   SampledOrbit sampled;
   sampled.period = PeriodOf(file.model, orbit);
-  const std::vector<DynamicLinearOscillator::State> states = SampleOrbit(file.model, orbit, samples);
-  const double size = OrbitSize(file.model, orbit);
-  if (static_cast<int>(states.size()) != samples || !states.back().allFinite() ||
-      !((states.back() - orbit.start).lpNorm<Eigen::Infinity>() <= 1e-6 * size)) {
-    throw InvalidInput::WithMessage(
-        "run_file", fmt::format("'{}': the orbit of {} is no periodic orbit of the model '{}' describes now (was the file "
-                                "changed since the run?): valid the run file the run was made from",
-                                run.summary.output, p.label, run.summary.run_file));
-  }
+  const std::vector<DynamicLinearOscillator::State> states = SampledStoredOrbit(file, orbit, samples, run, p.label);
   for (const DynamicLinearOscillator::State& x : states) sampled.states.emplace_back(x.data(), x.data() + x.size());
   for (int k = 0; k < file.model.Description().ParameterCount(); ++k) {
     sampled.parameters.push_back(DynamicLinearOscillator::ParameterAt(orbit.parameters, k));
@@ -182,7 +173,7 @@ constexpr std::string_view kDiagnosticsDivider = "==============================
 AutoFiles ExportAuto(const std::filesystem::path& run_directory, int samples) {
   const StoredRun run = ReadRunFiles(run_directory);
   const BranchColumns columns = ColumnsOf(run);
-  const std::optional<ModelFileStart> model = run.summary.model.empty() ? std::nullopt : std::optional(ModelOfStoredRun(run));
+  const std::optional<ModelFileStart> model = run.summary.model.empty() ? std::nullopt : std::optional(ModelOfStoredRun(run, run_directory));
   AutoFiles files;
   files.b = BranchHeader(run, columns);
   for (const StoredPoint& p : run.branch) {

@@ -11,6 +11,7 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
 
@@ -30,25 +31,22 @@ std::vector<PaperOnlyKey> PaperOnlyKeys(const RunFile& run) {
   return {{"start.preset", !run.preset.empty()},
           {"start.signature", !run.signature.empty()},
           {"start.set", !run.set.empty()},
+          {"unknowns.fix", !run.fix.empty()},  // before guess: --fix NAME=VALUE gives a guess too
           {"start.guess", !run.guess.empty()},
           {"unknowns.free", !run.free.empty()},
-          {"unknowns.fix", !run.fix.empty()},
           {"unknowns.tie_u_r", run.tie_u_r},
           {"start.restart.switch_branch", run.restart_switch_branch},
           {"start.restart.boundary", !run.restart_boundary.empty()}};
 }
 
-const StoredSpecialPoint& LabelIn(const StoredRun& stored, const RunFile& run, const std::filesystem::path& directory) {
+const StoredSpecialPoint& LabelIn(const StoredRun& stored, const std::string& label, const std::filesystem::path& directory) {
   std::vector<std::string> labels;
   for (const StoredSpecialPoint& s : stored.special_points) {
-    if (s.point.label == run.restart_label) return s;
+    if (s.point.label == label) return s;
     labels.push_back(s.point.label);
   }
-  throw RunFileError(fmt::format("{}: key 'start.restart' = '{}:{}' cannot be used: label '{}' is not in '{}': valid "
-                                 "labels {}",
-                                 run.Location("start.restart"), run.restart_run, run.restart_label, run.restart_label,
-                                 (directory / "special-points.csv").string(), fmt::join(labels, ", ")),
-                     "start.restart");
+  throw InvalidInput::WithMessage("label", fmt::format("label '{}' is not in '{}': valid labels {}", label,
+                                                       (directory / "special-points.csv").string(), fmt::join(labels, ", ")));
 }
 
 }  // namespace
@@ -62,14 +60,57 @@ bool HoldsModelRun(const std::filesystem::path& results_root, const std::string&
   }
 }
 
-ModelFileStart ModelOfStoredRun(const StoredRun& run) {
+std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::path& run_directory) {
   if (run.summary.run_file == kOneOffRunPath) {
     throw InvalidInput::WithMessage(
         "run", fmt::format("'{}' was computed from the command line (--set): its model is in no run file: valid a run "
                            "whose summary.json names its [model]'s file",
                            run.summary.output));
   }
-  return ReadModelFileStart(run.summary.run_file, {});
+  const std::filesystem::path file = run.summary.run_file;
+  std::error_code error;
+  if (file.is_absolute() || std::filesystem::exists(file, error)) return file;
+  // A path relative to where the run was made: the working directory then, or a directory above
+  // the results (the project's root, where tools/run.sh writes results/).
+  for (std::filesystem::path above = std::filesystem::absolute(run_directory, error); !above.empty();
+       above = above.parent_path()) {
+    if (std::filesystem::exists(above / file, error)) return above / file;
+    if (above == above.root_path()) break;
+  }
+  return file;
+}
+
+ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory) {
+  return ReadModelFileStart(ModelFileOf(run, run_directory), {});
+}
+
+std::vector<DynamicLinearOscillator::State> SampledStoredOrbit(const ModelFileStart& file, const BasicOrbit<Model>& orbit,
+                                                               int samples, const StoredRun& run, const std::string& label) {
+  const std::vector<Model::State> states = SampleOrbit(file.model, orbit, samples);
+  const double size = OrbitSize(file.model, orbit);
+  if (static_cast<int>(states.size()) != samples || !states.back().allFinite() ||
+      !((states.back() - orbit.start).lpNorm<Eigen::Infinity>() <= 1e-6 * size)) {
+    throw InvalidInput::WithMessage(
+        "run_file", fmt::format("'{}': the orbit of {} is no periodic orbit of the model '{}' describes now (was the file "
+                                "changed since the run?): valid the run file the run was made from",
+                                run.summary.output, label, run.summary.run_file));
+  }
+  return states;
+}
+
+ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::string& run, const std::string& label) {
+  const std::filesystem::path directory = results_root / run;
+  try {
+    const StoredRun stored = ReadRunFiles(directory);
+    const StoredSpecialPoint& point = LabelIn(stored, label, directory);
+    ModelFileStart file = ModelOfStoredRun(stored, directory);
+    BasicOrbit<Model> orbit = OrbitOf(file.model, file.parameters, stored, point.point);
+    SampledStoredOrbit(file, orbit, 2, stored, label);
+    file.parameters = orbit.parameters;
+    return {std::move(file), stored.summary.run_file, std::move(orbit)};
+  } catch (const InvalidInput& e) {
+    throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' cannot be used: {}", run, label, e.what()));
+  }
 }
 
 std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root) {
@@ -79,29 +120,19 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   };
   for (const PaperOnlyKey& k : PaperOnlyKeys(run)) {
     if (k.given) throw fail(k.key, fmt::format("is invalid with a [model]'s label ('{}:{}'): the label gives the model, "
-                                               "its orbit and its unknowns (the orbit's at fixed parameters); the key "
-                                               "is the paper's oscillator's",
+                                               "its parameters and orbit, and the unknowns (the orbit's at fixed "
+                                               "parameters); vary a parameter by continuing in it",
                                                run.restart_run, run.restart_label));
   }
-  const std::filesystem::path directory = results_root / run.restart_run;
-  const StoredRun stored = ReadRunFiles(directory);
-  const StoredSpecialPoint& label = LabelIn(stored, run, directory);
-  ModelFileStart file = [&] {
+  ModelLabel at = [&] {
     try {
-      return ModelOfStoredRun(stored);
+      return ReadModelLabel(results_root, run.restart_run, run.restart_label);
     } catch (const InvalidInput& e) {
-      throw fail("start.restart", fmt::format("= '{}:{}' cannot be used: {}", run.restart_run, run.restart_label, e.what()));
+      throw fail("start.restart", e.Predicate());
     }
   }();
-  const Model& model = file.model;
-  BasicOrbit<Model> orbit = [&] {
-    try {
-      return OrbitOf(model, file.parameters, stored, label.point);
-    } catch (const InvalidInput& e) {
-      throw fail("start.restart", fmt::format("= '{}:{}' cannot be used: {}", run.restart_run, run.restart_label, e.what()));
-    }
-  }();
-  file.parameters = orbit.parameters;
+  const Model& model = at.file.model;
+  BasicOrbit<Model>& orbit = at.orbit;
   int k = 0;
   try {
     k = model.Description().VariedParameter("continuation.parameter", run.parameter, model.Autonomous());
@@ -115,24 +146,26 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   }
   // In the belt's speed an antisymmetric orbit is written over its whole period (as TraceModel).
   if (k == Model::kRestVelocityParameter && orbit.signature.antisymmetric()) orbit = Unfolded(orbit, 1);
-  BasicOrbitContinuationSetup<Model> setup{std::move(orbit), {}, run.parameter,
+  // The unknowns at fixed parameters; with an abnormal stop a friction level is released among them.
+  const OrbitVariableSet variables = VariableSetOf(model, orbit.signature);
+  const UnknownChoice unknowns = UnknownsAtFixedParameters(variables);
+  BasicOrbitContinuationSetup<Model> setup{std::move(orbit), unknowns, run.parameter,
                                            *ShootingChoiceFromString(run.shooting),  // checked by the reader
                                            *LinearSolverFromString(run.linear_solver), {}, {}, {}, {},
                                            run.max_amplitude, run.resonance_approach, model};
   SetContinuationOptions(run, &setup.options);
-  // User values of the continued parameter: the last of the unknowns, after the orbit's own.
-  const OrbitVariableSet variables = VariableSetOf(model, setup.start.signature);
-  const int position = static_cast<int>(FreeIndices(variables, UnknownsAtFixedParameters(variables)).size());
+  // User values address the unknowns: the free variables in their order, then the parameter.
+  std::vector<int> order = FreeIndices(variables, unknowns);
+  order.push_back(variables.layout.Parameter(k));
   for (const auto& [name, v] : run.user_values) {
-    if (name != run.parameter) {
-      throw fail("continuation.user_values_of",
-                 fmt::format("names '{}', which is not an unknown of the run: valid at a [model]'s label the continued "
-                             "parameter '{}'",
-                             name, run.parameter));
+    const std::optional<int> index = variables.layout.IndexOf(name);
+    const auto position = index ? std::find(order.begin(), order.end(), *index) : order.end();
+    if (position == order.end()) {
+      throw fail("continuation.user_values_of", fmt::format("names '{}', which is not an unknown of the run", name));
     }
-    setup.options.user_values.push_back({position, v, fmt::format("{}={}", name, v)});
+    setup.options.user_values.push_back({static_cast<int>(position - order.begin()), v, fmt::format("{}={}", name, v)});
   }
-  return ModelRunSetup{std::move(file), stored.summary.run_file, std::move(setup)};
+  return ModelRunSetup{std::move(at.file), std::move(at.run_file), std::move(setup)};
 }
 
 }  // namespace stickslip

@@ -597,7 +597,7 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   if (!stored.summary.model.empty()) {
     throw InvalidInput::WithMessage(
         "run", fmt::format("'{}' holds a run of a {} (a run file's [model]): valid here a run of the paper's "
-                           "oscillator (continue and trace restart from a [model]'s label)",
+                           "oscillator (solve, continue and trace take a [model]'s label)",
                            (results_root / run).string(), stored.summary.model));
   }
   std::vector<std::string> labels;

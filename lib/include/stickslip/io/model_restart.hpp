@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/model_find.hpp"
@@ -23,10 +24,33 @@ namespace stickslip {
 // where it holds none, or none that can be read: the paper's restart reports those.
 bool HoldsModelRun(const std::filesystem::path& results_root, const std::string& run);
 
-// The [model] a stored run was computed for, read from the run file its summary names (a path as
-// the run was given it, relative to the working directory). Throws InvalidInput naming "run" for a
-// run made from the command line with --set (no run file holds its model), and as ReadModelFileStart.
-ModelFileStart ModelOfStoredRun(const StoredRun& run);
+// The [model]'s run file a stored run (in run_directory) was computed for, as its summary names it:
+// absolute, or relative to the working directory, else to a directory above run_directory (the
+// project's root, where tools/run.sh writes results/). Throws InvalidInput naming "run" for a run
+// made from the command line with --set (no run file holds its model).
+std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::path& run_directory);
+// That file's model (ReadModelFileStart: throws as it does).
+ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory);
+
+// The stored orbit at `label` of `run` at `samples` equally spaced times over its period by the
+// model's closed forms (SampleOrbit), the last its start again. Throws InvalidInput naming
+// "run_file" where it does not come back to its start (to 1e-6 of its size): the file no longer
+// describes the run's model (changed since the run, or another file at the run's path).
+std::vector<DynamicLinearOscillator::State> SampledStoredOrbit(const ModelFileStart& file,
+                                                               const BasicOrbit<DynamicLinearOscillator>& orbit,
+                                                               int samples, const StoredRun& run, const std::string& label);
+
+struct ModelLabel {
+  ModelFileStart file;   // the model, its parameters the label's
+  std::string run_file;  // the model's run file, as the stored run's summary names it
+  BasicOrbit<DynamicLinearOscillator> orbit;
+};
+
+// The orbit at `label` of the stored [model]'s run results_root/<run> (OrbitOf), with its model
+// (ModelOfStoredRun). Throws InvalidInput naming "restart" ("restart = 'RUN:LABEL' cannot be used:
+// <why>") where the run, the label or the model cannot be read, the run's columns are not the
+// model's, or its orbit is no periodic orbit of the model (SampledStoredOrbit).
+ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::string& run, const std::string& label);
 
 struct ModelRunSetup {
   ModelFileStart file;   // the model (its run file's parameters replaced by the label's)

@@ -57,6 +57,8 @@ struct StoredSpecialPoint {
 // summary.json, apart from the counts of points and special points by type, which the writer
 // derives from the tables and the reader checks against them.
 struct StoredSummary {
+  // The run file the run was made from ("(command line)" for one made by flags); for a [model]'s
+  // run the file holding its [model], which its restarts and exports read the model from.
   std::string run_file;
   std::string stickslip_version;
   std::string output;       // the run's folder under the results root
