@@ -62,14 +62,8 @@ void BuildOneOffRun(ContinueArgs* args) {
   // A [model]'s label: only its run and label here; the model and the orbit come with the run
   // (MakeModelSetup), which refuses the start options only the paper's oscillator takes.
   StartFlags start = args->start;
-  std::optional<std::pair<std::string, std::string>> model_point;
-  if (!start.point.empty()) {
-    auto point = RunAndLabel(start.point);
-    if (HoldsModelRun(start.results, point.first)) {
-      model_point = std::move(point);
-      start.point.clear();
-    }
-  }
+  const auto model_point = ModelPointOf(start.results, start.point);
+  if (model_point) start.point.clear();
   SetRunFileStart(ToStartInput(start), &run);
   if (model_point) std::tie(run.restart_run, run.restart_label) = *model_point;
   const auto comma = args->range.find(',');

@@ -52,9 +52,7 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
 // A [model]'s label: its orbit solved and checked as find --model's (RunModelSolve); the options of
 // the paper's start refused.
 std::optional<int> SolveAtModelLabel(const SolveArgs& args, const OrbitSolverOptions& solver) {
-  if (args.start.point.empty() || !HoldsModelRun(args.start.results, RunAndLabel(args.start.point).first)) {
-    return std::nullopt;
-  }
+  if (!ModelPointOf(args.start.results, args.start.point)) return std::nullopt;
   const StartFlags& s = args.start;
   for (const auto& [option, given] : {std::pair{"preset", !s.preset.empty()}, {"signature", !s.signature.empty()},
                                       {"set", !s.set.empty()}, {"guess", !s.guess.empty()}, {"free", !s.free.empty()},

@@ -46,11 +46,10 @@ std::optional<TraceRun> TraceAndRecord(const RunFile& run, const Setup& setup, c
 
 std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code) {
   if (const std::optional<ModelRunSetup> model = MakeModelSetup(run, results)) {
-    const StoredSummary identity{.run_file = model->run_file, .output = run.output, .parameter = run.parameter};
     return TraceAndRecord(
         run, model->setup,
         [&](const BasicTraceResult<DynamicLinearOscillator>& trace) {
-          StoredTrace stored = RecordTrace(model->file.model, identity, trace);
+          StoredTrace stored = RecordTrace(model->file.model, model->Identity(run), trace);
           stored.natural_frequencies = model->file.slip_frequencies;
           return stored;
         },

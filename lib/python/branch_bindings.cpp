@@ -22,6 +22,7 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_sweep.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/io/run_file.hpp"
@@ -47,7 +48,14 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   RunFile& run = input.run;
   input.results = o["results"].cast<std::string>();
   run.path = kOneOffRunPath;
-  SetRunFileStart(ToStartInput(start), &run);
+  // A [model]'s label: only its run and label here, as on the command line (ModelPointOf).
+  py::dict paper_start(start);
+  const auto model_point = ModelPointOf(input.results, start.contains("point") && !start["point"].is_none()
+                                                            ? start["point"].cast<std::string>()
+                                                            : std::string());
+  if (model_point) paper_start.attr("pop")("point");
+  SetRunFileStart(ToStartInput(paper_start), &run);
+  if (model_point) std::tie(run.restart_run, run.restart_label) = *model_point;
   run.restart_switch_branch = KeywordTrueOrFalse(o["switch_branch"], "switch_branch");
   if (run.restart_switch_branch && run.restart_label.empty()) {
     throw InvalidInput("switch_branch", "True", "True with point='RUN:LABEL' at a PD or an SB; False");
@@ -143,6 +151,12 @@ ComputedRun ContinueSetup(const RunInput& input, OrbitContinuationSetup setup) {
 
 ComputedRun Continue(const RunInput& input) {
   OneBranch(input);
+  if (!input.run.restart_run.empty() && HoldsModelRun(input.results, input.run.restart_run)) {
+    throw InvalidInput::WithMessage(
+        "point", fmt::format("point = '{}:{}' is a [model]'s label: valid here the paper's oscillator's (trace() takes a "
+                             "[model]'s label; so does `stickslip continue`)",
+                             input.run.restart_run, input.run.restart_label));
+  }
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;  // a restart from a PD or an SB solves its point first
     return MakeSetup(input.run, input.results);

@@ -17,6 +17,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_trace.hpp"
 #include "stickslip/analysis/brute_force_map.hpp"
 #include "stickslip/branches/trace.hpp"
@@ -59,22 +60,13 @@ TraceOptions TraceOptionsOf(const py::dict& o) {
   return options;
 }
 
-// The trace of `input` with `options` (a dict of the keywords) or, for None, the run file's
-// [trace] table; the GIL is released while it runs, taken after every point to see Ctrl-C. A trace
-// whose first branch did not start raises ConvergenceError, as the command line exits 3; one whose
-// start is not a motion (and allow_inadmissible not set) raises ValueError, where it exits 4.
-StoredTrace Trace(RunInput input, const py::object& options) {
-  if (!options.is_none()) input.run.trace = TraceOptionsOf(options.cast<py::dict>());
-  if (!input.run.trace) {
-    throw RunFileError(fmt::format("{}: [trace] is missing: valid a run file with a [trace] table", input.run.path), "trace");
-  }
-  if (input.run.continue_past_type_changes) {
-    throw InvalidInput("continue_past_type_changes", "True", "False (a trace decides at every change of type)");
-  }
-  TraceResult result;
+// The trace of `setup` (either model's) with input.run's [trace] options, the GIL released; raises as
+// Trace says.
+template <typename Setup>
+auto Traced(const RunInput& input, const Setup& setup) {
+  decltype(TraceOrbits(setup, TraceOptions{})) result;
   {
     py::gil_scoped_release release;
-    const OrbitContinuationSetup setup = MakeSetup(input.run, input.results);
     TraceOptions trace = *input.run.trace;
     trace.progress = [](const Progress&) {
       const py::gil_scoped_acquire acquire;
@@ -89,7 +81,28 @@ StoredTrace Trace(RunInput input, const py::object& options) {
     summary["message"] = result.down.message;
     RaiseConvergenceError(fmt::format("{}: {}", input.run.path, result.down.message), summary);
   }
-  return RecordTrace(input.run, result);
+  return result;
+}
+
+// The trace of `input` with `options` (a dict of the keywords) or, for None, the run file's
+// [trace] table; the GIL is released while it runs, taken after every point to see Ctrl-C. A trace
+// whose first branch did not start raises ConvergenceError, as the command line exits 3; one whose
+// start is not a motion (and allow_inadmissible not set) raises ValueError, where it exits 4.
+StoredTrace Trace(RunInput input, const py::object& options) {
+  if (!options.is_none()) input.run.trace = TraceOptionsOf(options.cast<py::dict>());
+  if (!input.run.trace) {
+    throw RunFileError(fmt::format("{}: [trace] is missing: valid a run file with a [trace] table", input.run.path), "trace");
+  }
+  if (input.run.continue_past_type_changes) {
+    throw InvalidInput("continue_past_type_changes", "True", "False (a trace decides at every change of type)");
+  }
+  if (std::optional<ModelRunSetup> model = MakeModelSetup(input.run, input.results)) {
+    const BasicTraceResult<DynamicLinearOscillator> result = Traced(input, model->setup);
+    StoredTrace stored = RecordTrace(model->file.model, model->Identity(input.run), result);
+    stored.natural_frequencies = model->file.slip_frequencies;
+    return stored;
+  }
+  return RecordTrace(input.run, Traced(input, MakeSetup(input.run, input.results)));
 }
 
 std::vector<std::string> SaveTrace(const StoredTrace& trace, const std::string& directory) {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -358,6 +359,18 @@ TEST(ResultFiles, SummaryCountsMustMatchTheTables) {
   RunFiles files = StoredTexts(kRun);
   files.branch_csv = EditLine(files.branch_csv, 107, [](const std::string&) { return std::string(); });
   EXPECT_EQ(ParseError(files), "stored/summary.json: key 'points' = 106 differs from the 105 rows of branch.csv");
+}
+
+// Two rows with one label: a restart from it would take either (hostile review of the [model]
+// restarts: a copied TR2 row was restarted from silently).
+TEST(ResultFiles, LabelGivenTwiceIsAnError) {
+  RunFiles files = StoredTexts(kRun);
+  files.special_points_csv = EditLine(files.special_points_csv, 3, [](const std::string& l) {
+    return std::regex_replace(l, std::regex(",TR2,"), ",EP1,");
+  });
+  EXPECT_EQ(ParseError(files),
+            "stored/special-points.csv: key 'label' = 'EP1' (row 3) is invalid: an earlier row has it: valid each "
+            "label once");
 }
 
 TEST(ResultFiles, UnknownLabelListsTheValidOnes) {

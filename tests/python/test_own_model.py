@@ -79,6 +79,36 @@ def test_trace_is_the_command_lines_json_and_saves_its_files(tmp_path):
         stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", ds=0.1)
 
 
+def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orbit(tmp_path):
+    # The five-mass chain's trace in omega, saved; from its EP1 (omega = 0.6) a trace in F_s through
+    # F_s = 0.5 (a user value), whose orbit there the motion from rest settles on (find: a simulation
+    # and its own solve), and which `stickslip trace --point` writes byte for byte.
+    chain = stickslip.trace("omega", (0.55, 0.7), model=MODELS / "five-mass-chain.toml")
+    chain.save(tmp_path / "chain")
+    traced = stickslip.trace("F_s", (0.3, 0.8), point="branch-1:EP1", results=tmp_path / "chain", user_values=[0.5])
+    traced.save(tmp_path / "chain" / "python")
+    done = cli("trace", "--results", tmp_path / "chain", "--point", "branch-1:EP1", "--parameter", "F_s", "--range",
+               "0.3,0.8", "--user-value", "F_s=0.5", "--output", "cli")
+    assert done.returncode == 0, done.stderr
+    for name in ("trace.csv", "trace.json", "branch-2/branch.csv", "branch-2/special-points.csv"):
+        python, written = (tmp_path / "chain" / "python" / name).read_text(), (tmp_path / "chain" / "cli" / name).read_text()
+        assert python.replace('"python"', '"cli"') == written, name
+    found = stickslip.find(model=MODELS / "five-mass-chain.toml", set={"F_s": 0.5}).orbit
+    up = traced.branches[-1]
+    at = [i for i, label in enumerate(up["label"]) if label.startswith("UZ")]
+    assert len(at) == 1 and up.signature == found["signature"]
+    for name, value in found["start"].items():
+        if name != "v_m5_0":  # the contact's velocity, no variable
+            assert up[name][at[0]] == pytest.approx(value, abs=1e-9)
+    assert up["phi"][at[0]] == pytest.approx(found["phi"], abs=1e-9)
+    with pytest.raises(ValueError) as python:
+        stickslip.trace("F_s", (0.3, 0.8), point="branch-1:EP1", results=tmp_path / "chain", set={"omega": 0.5})
+    assert str(python.value) == cli_error("trace", "--results", tmp_path / "chain", "--point", "branch-1:EP1",
+                                          "--parameter", "F_s", "--range", "0.3,0.8", "--set", "omega=0.5", "--output", "x")
+    with pytest.raises(ValueError, match="is a \\[model\\]'s label"):
+        stickslip.continue_orbit(point="branch-1:EP1", results=tmp_path / "chain", parameter="F_s", range=(0.3, 0.8))
+
+
 def test_sweep_is_the_command_lines_file(tmp_path):
     swept = stickslip.sweep(range=(1.5, 2.5), model=MODELS / "den-hartog.toml", steps=2, transients=400, periods=8,
                             start="fixed", chains=1)

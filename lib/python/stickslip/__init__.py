@@ -415,7 +415,9 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
                     admissible 0) instead of refusing it (ValueError, as the command line exits 4)
     The other keywords are continue_orbit's but direction, continue_past_type_changes and
     switch_branch (the range bounds the whole trace; ds, max_points, ... apply to every branch):
-    start=found.orbit traces from an orbit find() found, as `stickslip find --trace` does.
+    start=found.orbit traces from an orbit find() found, as `stickslip find --trace` does;
+    point="RUN:LABEL" under results= from a label of any run, a [model]'s too (its model from the
+    run file its summary names; no other start keyword then), as `stickslip trace --point` does.
     Returns a Trace whatever its directions' ends (see trace.ends); raises ConvergenceError when no
     branch started, ValueError for bad input (the command line's message) and for a start that is
     not a motion without allow_inadmissible.

@@ -54,10 +54,18 @@ const StoredSpecialPoint& LabelIn(const StoredRun& stored, const std::string& la
 bool HoldsModelRun(const std::filesystem::path& results_root, const std::string& run) {
   if (!IsRunName(run)) return false;
   try {
-    return !ReadRunFiles(results_root / run).summary.model.empty();
+    return !ReadRunSummary(results_root / run).model.empty();
   } catch (const InvalidInput&) {
     return false;
   }
+}
+
+std::optional<std::pair<std::string, std::string>> ModelPointOf(const std::filesystem::path& results_root,
+                                                                std::string_view point) {
+  if (point.empty()) return std::nullopt;
+  auto run_and_label = RunAndLabel(point);
+  if (!HoldsModelRun(results_root, run_and_label.first)) return std::nullopt;
+  return run_and_label;
 }
 
 std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::path& run_directory) {
@@ -115,9 +123,7 @@ ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::
 
 std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root) {
   if (run.restart_run.empty() || !HoldsModelRun(results_root, run.restart_run)) return std::nullopt;
-  const auto fail = [&](const std::string& key, const std::string& what) {
-    return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
-  };
+  const auto fail = [&](const std::string& key, const std::string& what) { return KeyError(run, key, what); };
   for (const PaperOnlyKey& k : PaperOnlyKeys(run)) {
     if (k.given) throw fail(k.key, fmt::format("is invalid with a [model]'s label ('{}:{}'): the label gives the model, "
                                                "its parameters and orbit, and the unknowns (the orbit's at fixed "
@@ -139,11 +145,7 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   } catch (const InvalidInput& e) {
     throw fail("continuation.parameter", e.Predicate());
   }
-  const double value = Model::ParameterAt(orbit.parameters, k);
-  if (!(run.range_min <= value && value <= run.range_max)) {
-    throw fail("continuation.range", fmt::format("= [{}, {}] excludes the start, {} = {}", run.range_min,
-                                                 run.range_max, run.parameter, value));
-  }
+  CheckRangeHoldsStart(run, Model::ParameterAt(orbit.parameters, k));
   // In the belt's speed an antisymmetric orbit is written over its whole period (as TraceModel).
   if (k == Model::kRestVelocityParameter && orbit.signature.antisymmetric()) orbit = Unfolded(orbit, 1);
   // The unknowns at fixed parameters; with an abnormal stop a friction level is released among them.
@@ -157,14 +159,8 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   // User values address the unknowns: the free variables in their order, then the parameter.
   std::vector<int> order = FreeIndices(variables, unknowns);
   order.push_back(variables.layout.Parameter(k));
-  for (const auto& [name, v] : run.user_values) {
-    const std::optional<int> index = variables.layout.IndexOf(name);
-    const auto position = index ? std::find(order.begin(), order.end(), *index) : order.end();
-    if (position == order.end()) {
-      throw fail("continuation.user_values_of", fmt::format("names '{}', which is not an unknown of the run", name));
-    }
-    setup.options.user_values.push_back({static_cast<int>(position - order.begin()), v, fmt::format("{}={}", name, v)});
-  }
+  setup.options.user_values =
+      UserValuesOf(run, order, [&variables](const std::string& name) { return variables.layout.IndexOf(name); });
   return ModelRunSetup{std::move(at.file), std::move(at.run_file), std::move(setup)};
 }
 

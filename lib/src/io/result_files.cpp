@@ -498,6 +498,12 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
       throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
                                 "test_function, located");
     }
+    const auto same = [&point](const StoredSpecialPoint& s) { return s.point.label == point.label; };
+    if (std::any_of(run.special_points.begin(), run.special_points.end(), same)) {  // a restart would pick one
+      throw KeyError(directory / kSpecialPointsFile, "label",
+                     fmt::format("= '{}' (row {}) is invalid: an earlier row has it: valid each label once", point.label,
+                                 row + 2));
+    }
     const std::array<int, 3>& c = special_columns.special;
     run.special_points.push_back({std::move(point), special.Text(row, c[0]), special.Text(row, c[1]), special.Flag(row, c[2])});
   }
@@ -589,6 +595,10 @@ StoredRun ReadRunFiles(const fs::path& run_directory) {
   return ParseRunFiles(files, run_directory);
 }
 
+StoredSummary ReadRunSummary(const fs::path& run_directory) {
+  return ParseSummary(ReadTextFile(run_directory / kSummaryFile), run_directory / kSummaryFile).fields;
+}
+
 LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string& run, const std::string& label) {
   if (!IsRunName(run)) {
     throw InvalidInput::WithMessage("run", fmt::format("run '{}' is invalid: valid {}", run, kRunNameRule));
@@ -597,7 +607,8 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   if (!stored.summary.model.empty()) {
     throw InvalidInput::WithMessage(
         "run", fmt::format("'{}' holds a run of a {} (a run file's [model]): valid here a run of the paper's "
-                           "oscillator (solve, continue and trace take a [model]'s label)",
+                           "oscillator (the command line's solve, continue and trace, and Python's trace(), take a "
+                           "[model]'s label)",
                            (results_root / run).string(), stored.summary.model));
   }
   std::vector<std::string> labels;

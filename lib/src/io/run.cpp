@@ -27,10 +27,32 @@ void SetContinuationOptions(const RunFile& run, ContinuationOptions* options) {
   o.continue_past_terminal = run.continue_past_type_changes;
 }
 
+RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what) {
+  return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
+}
+
+void CheckRangeHoldsStart(const RunFile& run, double value) {
+  if (run.range_min <= value && value <= run.range_max) return;
+  throw KeyError(run, "continuation.range", fmt::format("= [{}, {}] excludes the start, {} = {}", run.range_min,
+                                                        run.range_max, run.parameter, value));
+}
+
+std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
+                                    const std::function<std::optional<int>(const std::string&)>& index_of) {
+  std::vector<UserValue> values;
+  for (const auto& [name, value] : run.user_values) {
+    const std::optional<int> index = index_of(name);
+    const auto position = index ? std::find(order.begin(), order.end(), *index) : order.end();
+    if (position == order.end()) {
+      throw KeyError(run, "continuation.user_values_of", fmt::format("names '{}', which is not an unknown of the run", name));
+    }
+    values.push_back({static_cast<int>(position - order.begin()), value, fmt::format("{}={}", name, value)});
+  }
+  return values;
+}
+
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root) {
-  auto fail = [&](const std::string& key, const std::string& what) -> RunFileError {
-    return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
-  };
+  auto fail = [&](const std::string& key, const std::string& what) { return KeyError(run, key, what); };
   const StartProblem start = [&] {
     try {
       return BuildStartProblem(StartInputOf(run, results_root));
@@ -42,11 +64,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   const std::vector<int>& free = start.free;
   const int parameter = *start.parameter;
   OrbitContinuationSetup setup{start.orbit, unknowns, run.parameter, ShootingChoice::kAuto, LinearSolverType::kKlu, {}, {}};
-  const double lambda = ov::Pack(start.orbit)(parameter);
-  if (lambda < run.range_min || lambda > run.range_max) {
-    throw fail("continuation.range", fmt::format("= [{}, {}] excludes the start, {} = {}", run.range_min,
-                                                 run.range_max, run.parameter, lambda));
-  }
+  CheckRangeHoldsStart(run, ov::Pack(start.orbit)(parameter));
   setup.shooting = *ShootingChoiceFromString(run.shooting);  // checked by the run-file reader
   setup.sparse_solver = *LinearSolverFromString(run.linear_solver);
   setup.max_amplitude = run.max_amplitude;
@@ -99,14 +117,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   const int n = setup.start.signature.size();
   std::vector<int> order = retyped ? FreeIndices(setup.start.signature, setup.unknowns) : free;
   order.push_back(retyped ? *ov::IndexOf(n, run.parameter) : parameter);
-  for (const auto& [name, value] : run.user_values) {
-    const std::optional<int> index = ov::IndexOf(n, name);
-    const auto position = index ? std::find(order.begin(), order.end(), *index) : order.end();
-    if (position == order.end()) {
-      throw fail("continuation.user_values_of", fmt::format("names '{}', which is not an unknown of the run", name));
-    }
-    o.user_values.push_back({static_cast<int>(position - order.begin()), value, fmt::format("{}={}", name, value)});
-  }
+  o.user_values = UserValuesOf(run, order, [n](const std::string& name) { return ov::IndexOf(n, name); });
   return setup;
 }
 

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "stickslip/branches/orbit_continuation.hpp"
@@ -23,6 +25,13 @@ namespace stickslip {
 // Whether results_root/<run> holds a stored run of a [model] (its summary.json names one). False
 // where it holds none, or none that can be read: the paper's restart reports those.
 bool HoldsModelRun(const std::filesystem::path& results_root, const std::string& run);
+
+// A one-off run's start point "RUN:LABEL" where it names a [model]'s run (HoldsModelRun): its run
+// and label, which the run's [start.restart] takes unread (MakeModelSetup reads them with the run);
+// nullopt for an empty point or any other, which the paper's start reads. Throws InvalidInput naming
+// "restart" for a text that is not RUN:LABEL.
+std::optional<std::pair<std::string, std::string>> ModelPointOf(const std::filesystem::path& results_root,
+                                                                std::string_view point);
 
 // The [model]'s run file a stored run (in run_directory) was computed for, as its summary names it:
 // absolute, or relative to the working directory, else to a directory above run_directory (the
@@ -56,6 +65,11 @@ struct ModelRunSetup {
   ModelFileStart file;   // the model (its run file's parameters replaced by the label's)
   std::string run_file;  // that file, as the stored run's summary names it
   BasicOrbitContinuationSetup<DynamicLinearOscillator> setup;
+  // The summary's identity of `run`'s results (RecordRun, RecordTrace): the model's run file, where
+  // its own restarts and exports read the model.
+  StoredSummary Identity(const RunFile& run) const {
+    return {.run_file = run_file, .output = run.output, .parameter = run.parameter};
+  }
 };
 
 // nullopt when run.restart_run is no [model]'s run (HoldsModelRun). Otherwise the setup at the

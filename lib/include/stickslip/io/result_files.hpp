@@ -57,6 +57,9 @@ std::vector<std::string> WriteRunFiles(const std::filesystem::path& results_root
 
 // Reads results_root/<run>/. Throws InvalidInput as ParseRunFiles, and if a file cannot be read.
 StoredRun ReadRunFiles(const std::filesystem::path& run_directory);
+// The summary alone of the run in run_directory (summary.json), as ReadRunFiles reads it. Throws
+// InvalidInput as it does.
+StoredSummary ReadRunSummary(const std::filesystem::path& run_directory);
 
 // The special point labelled `label` in results_root/<run>/, for a restart: the orbit's
 // variables by name (SolutionColumns) and the run's signature. Throws InvalidInput, also when

@@ -3,6 +3,10 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/io/run_file.hpp"
@@ -13,6 +17,19 @@ namespace stickslip {
 // the detections and continue_past_type_changes (user values are MakeSetup's: they address the
 // unknowns).
 void SetContinuationOptions(const RunFile& run, ContinuationOptions* options);
+
+// A complaint about one of the run's keys: "<file>:<line>:<column>: key '<key>' <what>".
+RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what);
+
+// Throws KeyError at continuation.range where the run's range does not hold the start's `value` of
+// the continued parameter.
+void CheckRangeHoldsStart(const RunFile& run, double value);
+
+// The run's user values as the engine takes them: each variable by its position among `order` (the
+// free variables in their order, then the continued parameter), found by name with `index_of`.
+// Throws KeyError at continuation.user_values_of for a name that is no unknown of the run.
+std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
+                                    const std::function<std::optional<int>(const std::string&)>& index_of);
 
 // The setup a run file describes. Throws RunFileError naming the file, line and key.
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root);
