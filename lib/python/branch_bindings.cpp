@@ -124,7 +124,7 @@ void RaiseIfStartFailed(const RunInput& input, const Branch& branch) {
 // needs them: result files do not keep the tangent).
 struct ComputedRun {
   RunInput input;
-  OrbitContinuationSetup setup;
+  std::optional<OrbitContinuationSetup> setup;  // the paper's; none for a [model]'s (no switching)
   std::vector<SpecialPoint> special_points;  // the engine's, one per row of stored.special_points
   StoredRun stored;
 };
@@ -135,27 +135,29 @@ ComputedRun Computed(const RunInput& input, OrbitContinuationSetup setup, const 
   return {input, std::move(setup), branch.branch.special_points, std::move(stored)};
 }
 
-// The continuation of `setup` with the GIL released. Between steps the GIL is taken for a moment to
-// see Ctrl-C (KeyboardInterrupt), which ends the continuation there.
+// The continuation of `setup` (either model's) with the GIL released. Between steps the GIL is taken
+// for a moment to see Ctrl-C (KeyboardInterrupt), which ends the continuation there.
+template <typename Setup>
+auto Continued(const Setup& setup) {
+  py::gil_scoped_release release;
+  return ContinueOrbit(setup, [](const Branch&) {
+    const py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  });
+}
+
 ComputedRun ContinueSetup(const RunInput& input, OrbitContinuationSetup setup) {
-  OrbitBranch branch;
-  {
-    py::gil_scoped_release release;
-    branch = ContinueOrbit(setup, [](const Branch&) {
-      const py::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    });
-  }
+  const OrbitBranch branch = Continued(setup);
   return Computed(input, std::move(setup), branch);
 }
 
 ComputedRun Continue(const RunInput& input) {
   OneBranch(input);
-  if (!input.run.restart_run.empty() && HoldsModelRun(input.results, input.run.restart_run)) {
-    throw InvalidInput::WithMessage(
-        "point", fmt::format("point = '{}:{}' is a [model]'s label: valid here the paper's oscillator's (trace() takes a "
-                             "[model]'s label; so does `stickslip continue`)",
-                             input.run.restart_run, input.run.restart_label));
+  if (const std::optional<ModelRunSetup> model = MakeModelSetup(input.run, input.results)) {
+    const BasicOrbitBranch<DynamicLinearOscillator> branch = Continued(model->setup);
+    RaiseIfStartFailed(input, branch.branch);
+    return {input, std::nullopt, branch.branch.special_points,
+            RecordRun(model->file.model, model->Identity(input.run), branch)};
   }
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;  // a restart from a PD or an SB solves its point first
@@ -169,6 +171,12 @@ ComputedRun Continue(const RunInput& input) {
 // ds_min, ds_max, max_points, output; None: from's). Recorded as a one-off run restarted at the
 // label with switch_branch, as `restart = { run, label, switch_branch = true }` describes it.
 ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, const py::dict& o) {
+  if (!from.setup) {
+    throw InvalidInput::WithMessage("label", fmt::format("label = '{}' is invalid: switching branches at a [model]'s "
+                                                         "bifurcation is not done in this version (trace() follows "
+                                                         "them: follow_bifurcations=)",
+                                                         label));
+  }
   const std::vector<StoredSpecialPoint>& rows = from.stored.special_points;
   const auto row = std::find_if(rows.begin(), rows.end(), [&](const StoredSpecialPoint& s) { return s.point.label == label; });
   if (row == rows.end()) {
@@ -196,7 +204,7 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
   CheckOneOffRun(run, fmt::format("{},{}", run.range_min, run.range_max));
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;
-    return BranchFromBifurcation(from.special_points[row - rows.begin()], from.setup, side).setup;
+    return BranchFromBifurcation(from.special_points[row - rows.begin()], *from.setup, side).setup;
   }();
   SetContinuationOptions(run, &setup.options);  // the direction is the side, as MakeSetup has it
   setup.options.user_values.clear();

@@ -376,6 +376,12 @@ assert len([n for n in stored if n in uz]) == len(stored) - 1, (list(uz), list(s
 for name, value in stored.items():
     assert name not in uz or abs(float(uz[name]) - value) <= 1e-12 * (1 + abs(value)), (name, uz[name], value)
 PY
+# A trace from a label where the type changes (GR4, with T0 and SK at the same point) switches there
+# on its up chain, as the trace that stored the label did, instead of taking its own start for a loop.
+"$bin" trace --results "$work/traces/chain" --point branch-2:GR4 --parameter omega --range 0.55,0.7 --output from-gr \
+  > "$work/gr.txt" 2>&1 && grep -q "^  up: parameter-bound: reached omega = 0.7" "$work/gr.txt" &&
+  grep -q "'slip+ / antisymmetric' up from switch at" "$work/gr.txt" && pass ||
+  fail "a trace from a [model]'s change of type: $(cat "$work/gr.txt")"
 expect 2 "--set is not taken at a [model]'s label ('branch-1:EP1')" "$bin" solve --results "$work/traces/chain" \
   --point branch-1:EP1 --set omega=0.5
 expect 2 "holds a run of a linear-oscillator (a run file's [model]): valid here a run of the paper's oscillator" \

@@ -105,8 +105,17 @@ def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orb
         stickslip.trace("F_s", (0.3, 0.8), point="branch-1:EP1", results=tmp_path / "chain", set={"omega": 0.5})
     assert str(python.value) == cli_error("trace", "--results", tmp_path / "chain", "--point", "branch-1:EP1",
                                           "--parameter", "F_s", "--range", "0.3,0.8", "--set", "omega=0.5", "--output", "x")
-    with pytest.raises(ValueError, match="is a \\[model\\]'s label"):
-        stickslip.continue_orbit(point="branch-1:EP1", results=tmp_path / "chain", parameter="F_s", range=(0.3, 0.8))
+    # continue_orbit from the label: the branch `stickslip continue --point` writes, byte for byte.
+    branch = stickslip.continue_orbit(point="branch-1:EP1", results=tmp_path / "chain", parameter="F_s",
+                                      range=(0.3, 0.8), output="up")
+    assert branch.save(tmp_path / "chain" / "up") == []
+    done = cli("continue", "--results", tmp_path / "chain", "--point", "branch-1:EP1", "--parameter", "F_s",
+               "--range", "0.3,0.8", "--output", "cli-up")
+    assert done.returncode == 0, done.stderr
+    for name in ("branch.csv", "special-points.csv"):
+        assert (tmp_path / "chain" / "up" / name).read_bytes() == (tmp_path / "chain" / "cli-up" / name).read_bytes()
+    with pytest.raises(ValueError, match="switching branches at a \\[model\\]'s bifurcation"):
+        branch.switch("EP1")
 
 
 def test_sweep_is_the_command_lines_file(tmp_path):

@@ -363,7 +363,9 @@ def continue_orbit(parameter, range, **keywords):
                 = 0), continued in `parameter` and this second parameter (the run file's
                 restart = { ..., boundary = "u_r" }); two_parameter() says it in its own words.
     start       an Orbit (solve()'s, or find().orbit): the start, with the orbit's own unknowns;
-                or the start keywords of solve() instead.
+                or the start keywords of solve() instead. point="RUN:LABEL" under results= may be
+                a [model]'s label too (its model from the run file its summary names; no other start
+                keyword, switch_branch or boundary then), as `stickslip continue --point` takes it.
     Returns a Branch; raises ConvergenceError if the start does not converge, ValueError for bad
     input (the command line's message).
     """

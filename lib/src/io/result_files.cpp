@@ -607,8 +607,8 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
   if (!stored.summary.model.empty()) {
     throw InvalidInput::WithMessage(
         "run", fmt::format("'{}' holds a run of a {} (a run file's [model]): valid here a run of the paper's "
-                           "oscillator (the command line's solve, continue and trace, and Python's trace(), take a "
-                           "[model]'s label)",
+                           "oscillator (the command line's solve, continue and trace, and Python's trace() and "
+                           "continue_orbit(), take a [model]'s label)",
                            (results_root / run).string(), stored.summary.model));
   }
   std::vector<std::string> labels;

@@ -184,6 +184,9 @@ class Tracer {
     const std::string signature = orbit.signature.ToString();
     for (const Visit<Model>& v : visits_) {
       if (v.direction == d && v.link == link) continue;  // this branch's own start
+      // The trace's start, where both directions' first branches begin: a first branch that ends
+      // there met a change of type at the start, no loop.
+      if (link == 0 && v.link == 0 && !v.end) continue;
       if (v.signature != signature) continue;
       if (!(std::abs(v.lambda - lambda) <= tolerance * (1.0 + std::abs(lambda)))) continue;
       if (OrbitDistance(model(), AsBasicOrbit(v.orbit), AsBasicOrbit(orbit)) <= tolerance) return v;
