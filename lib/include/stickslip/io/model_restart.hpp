@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "stickslip/branches/orbit_continuation.hpp"
-#include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_file_start.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/stored_run.hpp"
 
