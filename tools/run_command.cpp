@@ -55,9 +55,8 @@ std::optional<Executed> ContinueAndRecord(const RunFile& run, Setup setup, const
 // Runs one run file in memory: from a [model]'s label (MakeModelSetup), or the paper's oscillator.
 std::optional<Executed> Execute(const RunFile& run, const std::filesystem::path& results) {
   if (std::optional<ModelRunSetup> model = MakeModelSetup(run, results)) {
-    return ContinueAndRecord(run, model->setup, [&](const BasicOrbitBranch<DynamicLinearOscillator>& b) {
-      return RecordRun(model->file.model, model->Identity(run), b);
-    });
+    return ContinueAndRecord(run, model->setup,
+                             [&](const BasicOrbitBranch<DynamicLinearOscillator>& b) { return model->Recorded(run, b); });
   }
   return ContinueAndRecord(run, MakeSetup(run, results), [&](const OrbitBranch& b) { return RecordRun(run, b); });
 }

@@ -48,11 +48,7 @@ std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::
   if (const std::optional<ModelRunSetup> model = MakeModelSetup(run, results)) {
     return TraceAndRecord(
         run, model->setup,
-        [&](const BasicTraceResult<DynamicLinearOscillator>& trace) {
-          StoredTrace stored = RecordTrace(model->file.model, model->Identity(run), trace);
-          stored.natural_frequencies = model->file.slip_frequencies;
-          return stored;
-        },
+        [&](const BasicTraceResult<DynamicLinearOscillator>& trace) { return model->Recorded(run, trace); },
         exit_code);
   }
   return TraceAndRecord(

@@ -156,8 +156,7 @@ ComputedRun Continue(const RunInput& input) {
   if (const std::optional<ModelRunSetup> model = MakeModelSetup(input.run, input.results)) {
     const BasicOrbitBranch<DynamicLinearOscillator> branch = Continued(model->setup);
     RaiseIfStartFailed(input, branch.branch);
-    return {input, std::nullopt, branch.branch.special_points,
-            RecordRun(model->file.model, model->Identity(input.run), branch)};
+    return {input, std::nullopt, branch.branch.special_points, model->Recorded(input.run, branch)};
   }
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;  // a restart from a PD or an SB solves its point first

@@ -97,10 +97,7 @@ StoredTrace Trace(RunInput input, const py::object& options) {
     throw InvalidInput("continue_past_type_changes", "True", "False (a trace decides at every change of type)");
   }
   if (std::optional<ModelRunSetup> model = MakeModelSetup(input.run, input.results)) {
-    const BasicTraceResult<DynamicLinearOscillator> result = Traced(input, model->setup);
-    StoredTrace stored = RecordTrace(model->file.model, model->Identity(input.run), result);
-    stored.natural_frequencies = model->file.slip_frequencies;
-    return stored;
+    return model->Recorded(input.run, Traced(input, model->setup));
   }
   return RecordTrace(input.run, Traced(input, MakeSetup(input.run, input.results)));
 }

@@ -11,6 +11,7 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/trace_files.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
@@ -37,16 +38,6 @@ std::vector<PaperOnlyKey> PaperOnlyKeys(const RunFile& run) {
           {"unknowns.tie_u_r", run.tie_u_r},
           {"start.restart.switch_branch", run.restart_switch_branch},
           {"start.restart.boundary", !run.restart_boundary.empty()}};
-}
-
-const StoredSpecialPoint& LabelIn(const StoredRun& stored, const std::string& label, const std::filesystem::path& directory) {
-  std::vector<std::string> labels;
-  for (const StoredSpecialPoint& s : stored.special_points) {
-    if (s.point.label == label) return s;
-    labels.push_back(s.point.label);
-  }
-  throw InvalidInput::WithMessage("label", fmt::format("label '{}' is not in '{}': valid labels {}", label,
-                                                       (directory / "special-points.csv").string(), fmt::join(labels, ", ")));
 }
 
 }  // namespace
@@ -110,7 +101,7 @@ ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::
   const std::filesystem::path directory = results_root / run;
   try {
     const StoredRun stored = ReadRunFiles(directory);
-    const StoredSpecialPoint& point = LabelIn(stored, label, directory);
+    const StoredSpecialPoint& point = SpecialPointLabelled(stored, label, directory);
     ModelFileStart file = ModelOfStoredRun(stored, directory);
     BasicOrbit<Model> orbit = OrbitOf(file.model, file.parameters, stored, point.point);
     SampledStoredOrbit(file, orbit, 2, stored, label);
@@ -119,6 +110,21 @@ ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::
   } catch (const InvalidInput& e) {
     throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' cannot be used: {}", run, label, e.what()));
   }
+}
+
+BasicOrbit<DynamicLinearOscillator> ContinuableIn(BasicOrbit<DynamicLinearOscillator> orbit, int parameter) {
+  if (parameter == Model::kRestVelocityParameter && orbit.signature.antisymmetric()) return Unfolded(orbit, 1);
+  return orbit;
+}
+
+StoredRun ModelRunSetup::Recorded(const RunFile& run, const BasicOrbitBranch<DynamicLinearOscillator>& branch) const {
+  return RecordRun(file.model, Identity(run), branch);
+}
+
+StoredTrace ModelRunSetup::Recorded(const RunFile& run, const BasicTraceResult<DynamicLinearOscillator>& trace) const {
+  StoredTrace stored = RecordTrace(file.model, Identity(run), trace);
+  stored.natural_frequencies = file.slip_frequencies;
+  return stored;
 }
 
 std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root) {
@@ -146,8 +152,7 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
     throw fail("continuation.parameter", e.Predicate());
   }
   CheckRangeHoldsStart(run, Model::ParameterAt(orbit.parameters, k));
-  // In the belt's speed an antisymmetric orbit is written over its whole period (as TraceModel).
-  if (k == Model::kRestVelocityParameter && orbit.signature.antisymmetric()) orbit = Unfolded(orbit, 1);
+  orbit = ContinuableIn(std::move(orbit), k);
   // The unknowns at fixed parameters; with an abnormal stop a friction level is released among them.
   const OrbitVariableSet variables = VariableSetOf(model, orbit.signature);
   const UnknownChoice unknowns = UnknownsAtFixedParameters(variables);

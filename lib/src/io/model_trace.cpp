@@ -13,6 +13,7 @@
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
@@ -55,12 +56,15 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
   options.Validate();
   ModelTraceRun run{FindModelOrbitOf(start, transients, max_multiple, options.progress), std::nullopt};
   if (run.find.found.status != FindOrbitStatus::kFound) return run;
-  // In the belt's speed an antisymmetric orbit is written over its whole period (MakeOrbitContinuation).
-  const BasicOrbit<Model>& found = run.find.found.solution->orbit;
-  const bool unfold = k == Model::kRestVelocityParameter && found.signature.antisymmetric();
-  BasicOrbitContinuationSetup<Model> setup{unfold ? Unfolded(found, 1) : found, {}, parameter, ShootingChoice::kAuto,
-                                           LinearSolverType::kKlu, {}, {}, {}, {}, kDefaultMaxAmplitude,
-                                           kDefaultResonanceApproach, run.find.model};
+  BasicOrbitContinuationSetup<Model> setup{ContinuableIn(run.find.found.solution->orbit, k),
+                                           {},
+                                           parameter,
+                                           ShootingChoice::kAuto,
+                                           LinearSolverType::kKlu,
+                                           {}, {}, {}, {},
+                                           kDefaultMaxAmplitude,
+                                           kDefaultResonanceApproach,
+                                           run.find.model};
   setup.options.lambda_min = low;
   setup.options.lambda_max = high;
   run.trace = TraceOrbits(setup, options);

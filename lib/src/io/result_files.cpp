@@ -599,6 +599,18 @@ StoredSummary ReadRunSummary(const fs::path& run_directory) {
   return ParseSummary(ReadTextFile(run_directory / kSummaryFile), run_directory / kSummaryFile).fields;
 }
 
+const StoredSpecialPoint& SpecialPointLabelled(const StoredRun& run, const std::string& label,
+                                               const fs::path& run_directory) {
+  std::vector<std::string> labels;
+  for (const StoredSpecialPoint& s : run.special_points) {
+    if (s.point.label == label) return s;
+    labels.push_back(s.point.label);
+  }
+  throw InvalidInput::WithMessage(
+      "label", fmt::format("label '{}' is not in '{}': valid labels {}", label,
+                           (run_directory / kSpecialPointsFile).string(), fmt::join(labels, ", ")));
+}
+
 LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string& run, const std::string& label) {
   if (!IsRunName(run)) {
     throw InvalidInput::WithMessage("run", fmt::format("run '{}' is invalid: valid {}", run, kRunNameRule));
@@ -611,14 +623,8 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
                            "continue_orbit(), take a [model]'s label)",
                            (results_root / run).string(), stored.summary.model));
   }
-  std::vector<std::string> labels;
-  for (const StoredSpecialPoint& s : stored.special_points) {
-    if (s.point.label == label) return {stored.summary.signature, s.point.solution, s.test_function};
-    labels.push_back(s.point.label);
-  }
-  throw InvalidInput::WithMessage(
-      "label", fmt::format("label '{}' is not in '{}': valid labels {}", label,
-                           (results_root / run / kSpecialPointsFile).string(), fmt::join(labels, ", ")));
+  const StoredSpecialPoint& s = SpecialPointLabelled(stored, label, results_root / run);
+  return {stored.summary.signature, s.point.solution, s.test_function};
 }
 
 }  // namespace stickslip

@@ -16,9 +16,11 @@
 #include <vector>
 
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/branches/trace.hpp"
 #include "stickslip/io/model_file_start.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/stored_run.hpp"
+#include "stickslip/io/trace_files.hpp"
 
 namespace stickslip {
 
@@ -65,12 +67,21 @@ struct ModelRunSetup {
   ModelFileStart file;   // the model (its run file's parameters replaced by the label's)
   std::string run_file;  // that file, as the stored run's summary names it
   BasicOrbitContinuationSetup<DynamicLinearOscillator> setup;
-  // The summary's identity of `run`'s results (RecordRun, RecordTrace): the model's run file, where
-  // its own restarts and exports read the model.
+  // The summary's identity of `run`'s results: the model's run file, where its own restarts and
+  // exports read the model.
   StoredSummary Identity(const RunFile& run) const {
     return {.run_file = run_file, .output = run.output, .parameter = run.parameter};
   }
+  // `run`'s branch or trace from this setup, recorded as every front end writes it (RecordRun,
+  // RecordTrace with the model's slip frequencies, which a figure over omega marks).
+  StoredRun Recorded(const RunFile& run, const BasicOrbitBranch<DynamicLinearOscillator>& branch) const;
+  StoredTrace Recorded(const RunFile& run, const BasicTraceResult<DynamicLinearOscillator>& trace) const;
 };
+
+// `orbit` written so that it can be continued in the model's parameter `parameter`: an antisymmetric
+// orbit over its whole period where that is the surface's speed (the mirror of a stick on a moving
+// surface moves the other way: CheckSymmetryHolds); otherwise as it is.
+BasicOrbit<DynamicLinearOscillator> ContinuableIn(BasicOrbit<DynamicLinearOscillator> orbit, int parameter);
 
 // nullopt when run.restart_run is no [model]'s run (HoldsModelRun). Otherwise the setup at the
 // label, in run.parameter (any of the model's parameters its forcing lets vary) over run.range with

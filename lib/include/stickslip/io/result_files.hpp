@@ -72,4 +72,9 @@ struct LabelledPoint {
 LabelledPoint ReadLabelledPoint(const std::filesystem::path& results_root, const std::string& run,
                                 const std::string& label);
 
+// The special point of `run` (read from run_directory) labelled `label`. Throws InvalidInput naming
+// "label" with the labels it has.
+const StoredSpecialPoint& SpecialPointLabelled(const StoredRun& run, const std::string& label,
+                                               const std::filesystem::path& run_directory);
+
 }  // namespace stickslip
