@@ -4,12 +4,9 @@ namespace stickslip {
 
 template class BasicPeriodicityEquations<LinearOscillator<1>>;
 template class BasicPeriodicityEquations<LinearOscillator<2>>;
-template class BasicPeriodicityEquations<DynamicLinearOscillator>;
 template class BasicOrbitSystem<LinearOscillator<1>>;
 template class BasicOrbitSystem<LinearOscillator<2>>;
-template class BasicOrbitSystem<DynamicLinearOscillator>;
 template class ModelOrbitProblem<LinearOscillator<1>>;
 template class ModelOrbitProblem<LinearOscillator<2>>;
-template class ModelOrbitProblem<DynamicLinearOscillator>;
 
 }  // namespace stickslip

@@ -31,7 +31,7 @@
 #include "stickslip/analysis/model_orbit_finder.hpp"
 #include "stickslip/branches/branch_membership.hpp"
 #include "stickslip/branches/trace.hpp"
-#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/orbits/linear_oscillator_problem.hpp"
 #include "stickslip/progress.hpp"
 
 namespace stickslip {

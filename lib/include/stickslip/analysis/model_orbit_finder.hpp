@@ -24,7 +24,7 @@
 #include "stickslip/analysis/orbit_finder.hpp"  // FindOrbitStatus
 #include "stickslip/analysis/settled_orbit.hpp"
 #include "stickslip/model/exact_simulator.hpp"
-#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/orbits/linear_oscillator_problem.hpp"
 #include "stickslip/model/odeint_simulation.hpp"
 #include "stickslip/orbits/least_period.hpp"
 #include "stickslip/orbits/margins.hpp"

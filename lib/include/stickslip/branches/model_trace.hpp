@@ -17,7 +17,7 @@
 #include "stickslip/branches/model_type_switch.hpp"
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
-#include "stickslip/model/linear_oscillator.hpp"
+#include "stickslip/orbits/linear_oscillator_problem.hpp"
 #include "stickslip/orbits/least_period.hpp"
 #include "stickslip/orbits/margins.hpp"
 

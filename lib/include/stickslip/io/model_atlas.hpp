@@ -15,7 +15,7 @@
 #include "stickslip/analysis/model_atlas.hpp"
 #include "stickslip/io/atlas_files.hpp"
 #include "stickslip/io/command_options.hpp"
-#include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_file_start.hpp"
 #include "stickslip/named_values.hpp"
 
 namespace stickslip {

@@ -14,7 +14,7 @@
 #include "stickslip/analysis/model_brute_force_map.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
-#include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_file_start.hpp"
 
 namespace stickslip {
 

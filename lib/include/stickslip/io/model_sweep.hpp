@@ -15,7 +15,7 @@
 
 #include "stickslip/analysis/sweep.hpp"
 #include "stickslip/io/command_options.hpp"
-#include "stickslip/io/model_find.hpp"
+#include "stickslip/io/model_file_start.hpp"
 #include "stickslip/progress.hpp"
 
 namespace stickslip {
