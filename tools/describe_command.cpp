@@ -29,7 +29,7 @@ std::string OscillationsText(const std::vector<FreeOscillation>& modes) {
 std::string Forcing(const ModelSummary& m) {
   std::vector<std::string> forced;
   for (Eigen::Index j = 0; j < m.data.forcing.size(); ++j) {
-    if (m.data.forcing(j) != 0.0) forced.push_back(fmt::format("{} {:.6g} N", m.description.coordinates[j], m.data.forcing(j)));
+    if (m.data.forcing(j) != 0.0) forced.push_back(fmt::format("{} {:.6g} {}", m.description.coordinates[j], m.data.forcing(j), m.description.units.force));
   }
   return forced.empty() ? "none: autonomous (self-excited on a belt, v_b != 0)"
                         : fmt::format("{} times cos(omega t + phi)", fmt::join(forced, ", "));
@@ -52,7 +52,7 @@ std::string Text(const ModelSummary& m) {
                                                                   : "- (not given)";
     out += fmt::format("  {:<6} {:>14} {:<6} {}; {}\n", p.name, value, p.unit, p.meaning, p.range);
   }
-  out += fmt::format("free oscillations (rad/s, damping ratio)\n  slip:{}\n  stick ({} held):{}\n",
+  out += fmt::format("free oscillations ({}, damping ratio)\n  slip:{}\n  stick ({} held):{}\n", d.units.Frequency(),
                      OscillationsText(m.slip), d.coordinates.back(), OscillationsText(m.stick));
   out += fmt::format("start state {}\n", fmt::join(d.initial_state, " "));
   return out;
@@ -70,12 +70,13 @@ Command AddDescribeCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "describe",
       "Describe the oscillator of a run file's [model] table (a chain of masses, springs and dampers, or Matrix Market "
-      "matrices; see the README): its coordinates, contact and forcing, each parameter with its unit (SI), valid "
-      "range and the file's value, the free oscillations of its slip and of its stick (frequency in rad/s, damping "
-      "ratio) and its start-state names. Exit 2, with the file, line and key, for a [model] that is not valid.");
+      "matrices; see the README): its coordinates, contact and forcing, each parameter with its unit (SI, or the "
+      "[model]'s units), valid range and the file's value, the free oscillations of its slip and of its stick "
+      "(frequency in rad per time unit, damping ratio) and its start-state names. Exit 2, with the file, line and key, for a [model] that is not valid.");
   cmd->add_option("file", args->file, "a run file with a [model] table")->required();
   cmd->add_flag("--json", args->json,
-                "print one JSON object: model, kind, coordinates, contact, forcing (N per coordinate), friction_slope, "
+                "print one JSON object: model, kind, coordinates, contact, forcing (force per coordinate), friction_slope, units "
+                "(length, time, force), "
                 "parameters (name, meaning, unit, minimum, maximum, range, value or null), free_oscillations (slip, "
                 "stick: frequency, damping_ratio, oscillates) and start_state");
   return {cmd, [args] {

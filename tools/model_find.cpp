@@ -53,10 +53,10 @@ std::string Text(const Model& model, const Found& r) {
     const CoordinateRange& c = r.measures->coordinates[j];
     out += fmt::format("  {:<8} amplitude {:.10g}  peak-to-peak {:.10g}\n", d.coordinates[j], c.Amplitude(), c.PeakToPeak());
   }
-  out += fmt::format("  stick fraction {:.6g}, stops {}, sticks {}\n  friction work {:.10g} J per period, equivalent viscous "
-                     "damping {:.6g} N s/m\n",
+  out += fmt::format("  stick fraction {:.6g}, stops {}, sticks {}\n  friction work {:.10g} {} per period, equivalent viscous "
+                     "damping {:.6g} {}\n",
                      r.measures->stick_fraction, r.measures->stops, r.measures->sticks, r.measures->friction_work,
-                     r.measures->equivalent_damping);
+                     d.units.Energy(), r.measures->equivalent_damping, d.units.ViscousDamping());
   out += fmt::format("verification {}\n{}", r.verification->Passed() ? "passed" : "FAILED", r.verification->Report());
   return out;
 }

@@ -154,6 +154,11 @@ class Result:
     def columns(self):
         return []
 
+    def units(self):
+        """A [model]'s units {length, time, force}, or None: the paper's (scaled) model, or a file that
+        does not say (a sweep's or a map-sweep's CSV)."""
+        return None
+
 
 def _second_parameter(rows, parameter):
     """The parameter other than `parameter` that varies along a branch (a curve in two
@@ -198,6 +203,11 @@ class Branch(Result):
     def from_texts(cls, name, branch_csv, special_csv, summary_json):
         return cls(name, json.loads(summary_json), _rows(branch_csv), _rows(special_csv))
 
+    def units(self):
+        if self.summary.get("model") is None:
+            return None
+        return self.summary.get("units", SI_UNITS)  # runs made before units could be declared: SI
+
     def columns(self):
         return list(self.rows[0])
 
@@ -217,6 +227,9 @@ class Trace(Result):
         for _, b in self.branches:
             seen.update(dict.fromkeys(b.columns()))
         return list(seen)
+
+    def units(self):
+        return common_units([b for _, b in self.branches])
 
 
 class Sweep(Result):
@@ -272,6 +285,9 @@ class Atlas(Result):
         for t in self.traces:
             seen.update(dict.fromkeys(t.columns()))
         return list(seen)
+
+    def units(self):
+        return common_units(self.traces)
 
 
 def _rows(text):
@@ -449,8 +465,41 @@ def symbol(name):
     return SYMBOLS.get(name, name)
 
 
-def quantity_label(name):
-    """An axis label for a column, in words."""
+SI_UNITS = {"length": "m", "time": "s", "force": "N"}
+
+
+def common_units(results):
+    """The units the results share, or None (none, or not the same); sweeps and map-sweeps, whose
+    CSV files do not say, take those of the runs they are drawn with."""
+    units = [r.units() for r in results if r.kind not in ("sweep", "map-sweep")]
+    return units[0] if units and all(u == units[0] for u in units) else None
+
+
+def unit_of(name, units):
+    """A column's unit from a [model]'s units (Result.units), or None: scaled, or not known."""
+    if not units:
+        return None
+    length, time, force = units["length"], units["time"], units["force"]
+    by_name = {"omega": f"rad/{time}", "F_k": force, "F_s": force, "v_b": f"{length}/{time}", "phi": "rad",
+               "friction-work": "J" if units == SI_UNITS else f"{force} {length}",
+               "equivalent-damping": f"{force} {time}/{length}"}
+    if name in by_name:
+        return by_name[name]
+    if name.startswith(("amplitude:", "peak-to-peak:")):
+        return length
+    if name[:1] == "d" and name[1:].isdigit():
+        return time
+    return None
+
+
+def quantity_label(name, units=None):
+    """An axis label for a column, in words, with its unit where `units` (Result.units) give it."""
+    unit = unit_of(name, units)
+    label = _quantity_words(name)
+    return f"{label} ({unit})" if unit else label
+
+
+def _quantity_words(name):
     words = {"omega": r"forcing frequency $\omega$", "chi": r"stiffness ratio $\chi$", "eta": r"mass ratio $\eta$",
              "u_s": r"sliding friction level $u_s$", "u_r": r"static friction level $u_r$", "phi": r"forcing phase $\varphi$",
              "x10": r"$x_1(0)$", "x20": r"$x_2(0)$", "v10": r"$\dot x_1(0)$", "stick-fraction": "fraction of the period stuck",
@@ -1070,8 +1119,8 @@ def _response_figure(results, options, plt):
         ax.set_xlim(options.xlim)
     if options.ylim:
         ax.set_ylim(options.ylim)
-    ax.set_xlabel(quantity_label(x))
-    ax.set_ylabel(quantity_label(y))
+    ax.set_xlabel(quantity_label(x, common_units(results)))
+    ax.set_ylabel(quantity_label(y, common_units(results)))
     ax.grid(alpha=0.3, which="major")
     pairs = set()
     for r in results:
@@ -1166,8 +1215,8 @@ def _atlas_figure(atlas, options, plt):
         ax.set_xlim(low - 0.02 * (high - low), high + 0.02 * (high - low))
     if options.ylim:
         ax.set_ylim(options.ylim)
-    strip.set_xlabel(quantity_label(x))
-    ax.set_ylabel(quantity_label(y))
+    strip.set_xlabel(quantity_label(x, atlas.units()))
+    ax.set_ylabel(quantity_label(y, atlas.units()))
     ax.grid(alpha=0.3, which="major")
     pairs = {(float(row["chi"]), float(row["eta"])) for b in _branches(atlas) for row in b.rows if "chi" in row}
     if options.natural_frequencies and pairs and len(pairs) <= 2 and "omega" in (x, y):
@@ -1340,9 +1389,10 @@ def diagram(result, y="x20", stable=None, size=DEFAULT_SIZES["diagram"]):
     if durations:
         bottom.legend(handles=[Line2D([], [], color=f"C{k + 1}", lw=1.5, label=f"segment {d[1:]}")
                                for k, d in enumerate(durations)], fontsize=pt(7), loc="best", ncol=min(len(durations), 4))
-    top.set_ylabel(quantity_label(y))
-    bottom.set_ylabel("segment durations")
-    bottom.set_xlabel(quantity_label(branch.parameter))
+    units = branch.units()
+    top.set_ylabel(quantity_label(y, units))
+    bottom.set_ylabel(f"segment durations ({units['time']})" if units else "segment durations")
+    bottom.set_xlabel(quantity_label(branch.parameter, units))
     top.grid(alpha=0.3)
     bottom.grid(alpha=0.3)
     return fig, top, bottom, canvas
@@ -1565,8 +1615,8 @@ def _plane_figure(results, options, plt):
             ax.set_ylim(options.ylim)
         ax.set_xscale(options.xscale)
         ax.set_yscale(options.yscale)
-        ax.set_xlabel(quantity_label(first))
-        ax.set_ylabel(quantity_label(second))
+        ax.set_xlabel(quantity_label(first, common_units(curves)))
+        ax.set_ylabel(quantity_label(second, common_units(curves)))
     pairs = set(otm.chi_eta) if otm else set()
     for c in curves:
         pairs |= {(float(r["chi"]), float(r["eta"])) for r in c.rows}

@@ -145,6 +145,28 @@ for s in ("1e-7", "1e7"):
     scale = max(abs(v) for v in one["start"].values())
     assert all(abs(o["start"][k] / float(s) - v) <= 1e-8 * scale for k, v in one["start"].items()), (s, o["start"])
 PY
+# Declared units label every output, the numbers unchanged: describe's parameters and free
+# oscillations, find's measures, and a trace's summaries (which figures read); the same orbit as SI.
+{ cat "$models/five-mass-chain.toml"; echo 'units = { length = "mm", time = "ms", force = "kN" }'; } > "$work/mm.toml"
+"$bin" describe "$work/mm.toml" > "$work/mm.txt" 2>&1 && grep -q "omega .* rad/ms .*forcing frequency" "$work/mm.txt" &&
+  grep -q "^  v_b .* mm/ms " "$work/mm.txt" && grep -q "^free oscillations (rad/ms, damping ratio)" "$work/mm.txt" &&
+  grep -q "^forcing    m1 1 kN" "$work/mm.txt" && pass || fail "describe: the declared units: $(cat "$work/mm.txt")"
+"$bin" describe "$work/mm.toml" --json | /usr/bin/python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+assert d["units"] == {"length": "mm", "time": "ms", "force": "kN"}, d["units"]
+assert [p["unit"] for p in d["parameters"]] == ["rad/ms", "kN", "kN", "mm/ms"], d["parameters"]' && pass ||
+  fail "describe --json: the declared units"
+"$bin" find --model "$work/mm.toml" > "$work/mm-find.txt" 2>&1 && grep -q "J per period" "$work/five.txt" &&
+  grep -q "kN mm per period, equivalent viscous damping .* kN ms/mm" "$work/mm-find.txt" &&
+  [ "$(grep -v '^  friction work' "$work/mm-find.txt")" = "$(grep -v '^  friction work' "$work/five.txt")" ] && pass ||
+  fail "find --model: the declared units: $(diff "$work/five.txt" "$work/mm-find.txt")"
+"$bin" find --model "$work/mm.toml" --trace 0.55,0.65 --output mm-trace --results "$work" > /dev/null 2>&1
+/usr/bin/python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["units"] == {"length": "mm", "time": "ms", "force": "kN"}, s' "$work/mm-trace/branch-1/summary.json" && pass ||
+  fail "find --model --trace: the summary lacks the declared units"
 sed 's|m1|b|g; s|contact = "b"|contact = "b"\nnames = ["b"]|' "$models/den-hartog.toml" > "$work/b.toml"
 expect 2 "parameter = 'v_b' is invalid" "$bin" sweep --model "$work/b.toml" --parameter v_b --from 0.1 --to 0.3 --output "$work/x.csv"
 sed 's|m1|k|g; s|contact = "k"|contact = "k"\nnames = ["k"]|' "$models/belt.toml" > "$work/k.toml"

@@ -199,6 +199,47 @@ class PlotKinds(unittest.TestCase):
                 self.assertNotIn(word, fig._suptitle.get_text())
             plt.close(fig)
 
+    def test_axis_labels_carry_a_models_units(self):
+        # A [model]'s runs in SI (their summaries from before units could be declared say none), in
+        # the units a copy's summaries declare, and the paper's scaled model without any.
+        model_trace = os.path.join(RESULTS, "models", "five-mass-chain-omega-trace")
+        fig = sp.figure([model_trace])
+        self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$ (rad/s)")
+        self.assertTrue(fig.axes[0].get_ylabel().endswith("over a period (m)"), fig.axes[0].get_ylabel())
+        plt.close(fig)
+        declared = os.path.join(self.work, "declared-units-trace")
+        shutil.copytree(model_trace, declared)
+        for branch in ("branch-1", "branch-2"):
+            path = os.path.join(declared, branch, "summary.json")
+            with open(path) as f:
+                summary = json.load(f)
+            summary["units"] = {"length": "mm", "time": "ms", "force": "kN"}
+            with open(path, "w") as f:
+                json.dump(summary, f, indent=2)
+        fig = sp.figure([os.path.join(declared, "branch-1")], y="friction-work")
+        self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$ (rad/ms)")
+        self.assertEqual(fig.axes[0].get_ylabel(), "energy dissipated by friction per period (kN mm)")
+        plt.close(fig)
+        fig = sp.diagram(sp.load(os.path.join(declared, "branch-1")), y="equivalent-damping")[0]
+        self.assertEqual(fig.axes[0].get_ylabel(), "equivalent viscous damping (kN ms/mm)")
+        self.assertEqual(fig.axes[1].get_xlabel(), r"forcing frequency $\omega$ (rad/ms)")
+        self.assertEqual(fig.axes[1].get_ylabel(), "segment durations (ms)")
+        plt.close(fig)
+        # Branches of one trace in two units: no unit is common, none is shown.
+        fig = sp.figure([declared])
+        self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$")
+        plt.close(fig)
+        fig = sp.figure([os.path.join(RESULTS, "atlases", "five-mass-chain-omega")])
+        self.assertIn("(rad/s)", [ax.get_xlabel() for ax in fig.axes][-1])
+        plt.close(fig)
+        fig = sp.figure([self.small.trace, self.small.sweep])
+        self.assertNotIn("(", fig.axes[0].get_xlabel() + fig.axes[0].get_ylabel())
+        plt.close(fig)
+        # A sweep's CSV does not say its units: drawn with a [model]'s trace, it takes the trace's.
+        fig = sp.figure([model_trace, os.path.join(RESULTS, "models", "five-mass-chain-omega-sweep.csv")])
+        self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$ (rad/s)")
+        plt.close(fig)
+
     def test_natural_frequencies_solve_eq_56(self):
         import numpy
         for chi, eta in ((0.3, 4.0), (0.22, 4.2), (0.7, 1.1)):

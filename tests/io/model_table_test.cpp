@@ -149,6 +149,17 @@ TEST(ModelTable, RefusesEveryTableThatIsNoModelNamingTheKey) {
       {"F_k = 0.3, F_s = 0.4", "F_s = 0.4", "model.parameters.F_k", "is missing"},
       {"omega = 1.5,", "Omega = 1.5,", "model.parameters.Omega", "omega, F_k, F_s, v_b"},
       {"omega = 1.5,", "", "model.parameters.omega", "is missing"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = \"mm\"", "model.units", "must be a table"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { mass = \"kg\" }", "model.units.mass", "unknown"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { length = 1.0 }", "model.units.length",
+       "must be a string"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { time = \"\" }", "model.units.time",
+       "1 to 16 characters"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { force = \"$N$\" }", "model.units.force", "'$'"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { length = \"m\\nm\" }", "model.units.length",
+       "control characters"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { length = \"micrometres-longer\" }",
+       "model.units.length", "1 to 16 characters"},
   };
   for (const BadTable& c : cases) {
     std::string text = kThreeMasses;
@@ -166,6 +177,37 @@ TEST(ModelTable, RefusesEveryTableThatIsNoModelNamingTheKey) {
       EXPECT_EQ(std::string(e.what()).rfind("bad.toml:", 0), 0u) << "not placed in the file: " << e.what();
     }
   }
+}
+
+// Units label the numbers (they are not converted): each parameter's derived from them, SI for those
+// left out; declared SI is the model without a declaration, fingerprint and all, and other units
+// make another model.
+TEST(ModelTable, DeclaredUnitsNameEveryParameterAndSiIsTheDefault) {
+  const auto with = [](const std::string& units) {
+    return ModelOf(ParseModelTable(kThreeMasses + units, "three.toml"));
+  };
+  const auto units_of = [](const DynamicLinearOscillator& model) {
+    std::vector<std::string> out;
+    for (const ParameterDescription& p : model.Description().parameters) out.push_back(p.unit);
+    return out;
+  };
+  const DynamicLinearOscillator si = with("");
+  EXPECT_EQ(units_of(si), (std::vector<std::string>{"rad/s", "N", "N", "m/s"}));
+  const DynamicLinearOscillator declared_si = with("units = { length = \"m\", time = \"s\", force = \"N\" }\n");
+  const DynamicLinearOscillator small = with("units = { length = \"mm\", time = \"ms\", force = \"kN\" }\n");
+  EXPECT_EQ(units_of(small), (std::vector<std::string>{"rad/ms", "kN", "kN", "mm/ms"}));
+  EXPECT_EQ(small.Description().units.Energy(), "kN mm");
+  EXPECT_EQ(small.Description().units.ViscousDamping(), "kN ms/mm");
+  EXPECT_EQ(si.Description().units.Energy(), "J");
+  EXPECT_EQ(units_of(with("units = { time = \"min\" }\n")), (std::vector<std::string>{"rad/min", "N", "N", "m/min"}));
+  const auto fingerprint = [](const DynamicLinearOscillator& model) {
+    Fingerprint hash;
+    model.Data().AddTo(hash);
+    return hash.Value();
+  };
+  EXPECT_EQ(fingerprint(declared_si), fingerprint(si));
+  EXPECT_NE(fingerprint(small), fingerprint(si));
+  EXPECT_EQ(small.Data().units, (ModelUnits{"mm", "ms", "kN"}));
 }
 
 TEST(ModelTable, IsNotTakenByTheRunCommandsWhichSayWhereItIs) {

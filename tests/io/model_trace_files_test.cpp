@@ -65,6 +65,37 @@ TEST_F(BeltTraceFiles, ReadBackToTheSameBytes) {
   }
 }
 
+// A [model]'s runs carry its units in summary.json (labels of the numbers, for figures); a summary
+// written before units could be declared has none and reads as SI; units no model may declare are
+// refused naming the file.
+TEST_F(BeltTraceFiles, SummariesCarryTheModelsUnitsAndOlderOnesReadAsSi) {
+  const RunFiles si = FormatRunFiles(stored_.runs.front());
+  EXPECT_NE(si.summary_json.find("\"units\": {\n    \"length\": \"m\",\n    \"time\": \"s\",\n    \"force\": \"N\"\n  }"),
+            std::string::npos)
+      << si.summary_json;
+  const auto with_units = [&](const std::string& units) {
+    RunFiles files = si;
+    const std::size_t at = files.summary_json.find("  \"units\"");
+    files.summary_json.replace(at, files.summary_json.find("},\n", at) + 3 - at, units);
+    return files;
+  };
+  EXPECT_EQ(ParseRunFiles(with_units(""), "belt").summary.units, SiUnits());
+  const RunFiles small = with_units("  \"units\": {\"length\": \"mm\", \"time\": \"ms\", \"force\": \"kN\"},\n");
+  const StoredRun read = ParseRunFiles(small, "belt");
+  EXPECT_EQ(read.summary.units, (ModelUnits{"mm", "ms", "kN"}));
+  EXPECT_EQ(FormatRunFiles(read).summary_json, FormatRunFiles(ParseRunFiles(FormatRunFiles(read), "belt")).summary_json);
+  for (const std::string& bad : {"  \"units\": {\"length\": \"\", \"time\": \"s\", \"force\": \"N\"},\n",
+                                 "  \"units\": {\"length\": \"m\", \"time\": \"s\"},\n", "  \"units\": \"SI\",\n"}) {
+    try {
+      ParseRunFiles(with_units(bad), "belt");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InvalidInput& e) {
+      EXPECT_TRUE(std::string(e.what()).starts_with("belt/summary.json: ")) << e.what();
+      EXPECT_TRUE(e.field().starts_with("units")) << e.field();
+    }
+  }
+}
+
 // Autonomous: the period is the cycle's time, T_stick + T_slip, not a forcing period (omega,
 // which plays no part, is no column); the stick is entered at x = (2 F_k - F_s)/k.
 TEST_F(BeltTraceFiles, HoldTheClosedFormCycleOfEveryPoint) {

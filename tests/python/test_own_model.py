@@ -18,6 +18,7 @@ def test_describe_is_the_command_lines_json():
     assert described["coordinates"] == ["m1", "m2", "m3", "m4", "m5"] and described["contact"] == "m5"
     units = {p["name"]: p["unit"] for p in described["parameters"]}
     assert units == {"omega": "rad/s", "F_k": "N", "F_s": "N", "v_b": "m/s"}
+    assert described["units"] == {"length": "m", "time": "s", "force": "N"}
 
 
 @pytest.mark.parametrize("v_b", [0.2, 0.9])

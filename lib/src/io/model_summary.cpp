@@ -51,6 +51,7 @@ std::string ModelSummaryJson(const ModelSummary& m) {
                  {"contact", d.coordinates.back()},
                  {"forcing", forcing},
                  {"friction_slope", m.data.friction_slope},
+                 {"units", {{"length", d.units.length}, {"time", d.units.time}, {"force", d.units.force}}},
                  {"parameters", parameters},
                  {"autonomous", m.Autonomous()},
                  {"free_oscillations", {{"slip", OscillationsJson(m.slip)}, {"stick", OscillationsJson(m.stick)}}},

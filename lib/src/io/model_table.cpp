@@ -122,6 +122,18 @@ void ReadMatrices(TableReader& model, ModelTable* table) {
   model.String("contact", &m.contact, true);
 }
 
+// units = { length = "mm", time = "ms", force = "N" }: each optional, SI where left out.
+void ReadUnits(TableReader& model, std::string_view path, Locations* locations, ModelUnits* units) {
+  const toml::node* node = model.Get("units");
+  if (!node) return;
+  if (!node->is_table()) model.Fail(*node, "units", "must be a table: units = { length = \"mm\", time = \"s\", force = \"N\" }");
+  TableReader u(*node->as_table(), "model.units.", path, locations);
+  u.String("length", &units->length);
+  u.String("time", &units->time);
+  u.String("force", &units->force);
+  u.RejectUnknown();
+}
+
 }  // namespace
 
 ModelTable ParseModelTable(std::string_view content, std::string_view path) {
@@ -147,6 +159,7 @@ ModelTable ParseModelTable(std::string_view content, std::string_view path) {
     model.Fail(*model.Get("kind"), "kind", fmt::format("= '{}' is invalid: valid \"chain\" or \"matrices\"", table.kind));
   }
   model.Number("friction_slope", &table.friction_slope);
+  ReadUnits(model, path, locations, &table.units);
   model.Values("parameters", &table.parameters);
   model.Values("start", &table.start);
   model.RejectUnknown();
@@ -283,6 +296,7 @@ LinearOscillatorData ModelDataOf(const ModelTable& table) {
   return AtModelKeys(table, [&] {
     LinearOscillatorData data = table.kind == "chain" ? ChainData(table.chain) : MatrixData(table);
     data.friction_slope = table.friction_slope;
+    data.units = table.units;
     ModesOf(data);  // checks what the matrices must be
     return data;
   });

@@ -75,6 +75,10 @@ constexpr const char* kPointsKey = "points";
 // existed (and of every run of the paper's model since) read as they were written.
 constexpr const char* kModelKey = "model";
 constexpr const char* kSpecialPointsKey = "special_points";
+// A [model]'s units (absent from the runs made before units could be declared: SI).
+constexpr const char* kUnitsKey = "units";
+constexpr std::array<std::pair<const char*, std::string ModelUnits::*>, 3> kUnitKeys = {
+    {{"length", &ModelUnits::length}, {"time", &ModelUnits::time}, {"force", &ModelUnits::force}}};
 
 std::map<std::string, std::size_t> CountsByType(const std::vector<StoredSpecialPoint>& special_points) {
   std::map<std::string, std::size_t> counts;
@@ -109,6 +113,9 @@ std::string FormatSummary(const StoredRun& run) {
   Json json = Json::object();
   for (const TextKey& k : kLeadingKeys) json[k.key] = run.summary.*k.field;
   if (!run.summary.model.empty()) json[kModelKey] = run.summary.model;
+  if (!run.summary.units.Scaled()) {
+    for (const auto& [key, unit] : kUnitKeys) json[kUnitsKey][key] = run.summary.units.*unit;
+  }
   json[kPointsKey] = run.branch.size();
   json[kSpecialPointsKey] = Json::object();
   for (const auto& [type, count] : CountsByType(run.special_points)) json[kSpecialPointsKey][type] = count;
@@ -133,10 +140,34 @@ std::size_t Count(const Json& value, const fs::path& file, const std::string& ke
   return value.get<std::size_t>();
 }
 
+// A [model] run's units: SI where summary.json has none (written before they could be declared).
+ModelUnits UnitsOf(const Json& json, const fs::path& file) {
+  const auto units = json.find(kUnitsKey);
+  if (units == json.end()) return SiUnits();
+  const std::string valid = "valid an object of strings: length, time, force";
+  if (!units->is_object() || units->size() != kUnitKeys.size()) {
+    throw KeyError(file, kUnitsKey, fmt::format("= {} is invalid: {}", units->dump(), valid));
+  }
+  ModelUnits out;
+  for (const auto& [key, unit] : kUnitKeys) {
+    const auto value = units->find(key);
+    if (value == units->end() || !value->is_string()) {
+      throw KeyError(file, kUnitsKey, fmt::format("= {} is invalid: {}", units->dump(), valid));
+    }
+    out.*unit = value->get<std::string>();
+  }
+  try {
+    CheckUnits(out);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput::WithMessage(e.field(), fmt::format("{}: {}", file.string(), e.what()));
+  }
+  return out;
+}
+
 Summary ParseSummary(const std::string& text, const fs::path& file) {
   const Json json = detail::ParseJsonObject(text, file);
   Summary summary;
-  std::vector<std::string> known = {kModelKey, kPointsKey, kSpecialPointsKey};
+  std::vector<std::string> known = {kModelKey, kUnitsKey, kPointsKey, kSpecialPointsKey};
   auto required = [&](const std::string& key) -> const Json& {
     const auto it = json.find(key);
     if (it == json.end()) throw KeyError(file, key, "is missing");
@@ -156,6 +187,7 @@ Summary ParseSummary(const std::string& text, const fs::path& file) {
                                                   model->dump(), kLinearOscillatorModel));
     }
     summary.fields.model = model->get<std::string>();
+    summary.fields.units = UnitsOf(json, file);
   }
   summary.points = Count(required(kPointsKey), file, kPointsKey);
   const Json& special = required(kSpecialPointsKey);

@@ -199,6 +199,7 @@ StoredRun RecordRun(const Model& model, const StoredSummary& identity, const Bas
   StoredRun stored;
   stored.summary = identity;
   stored.summary.model = std::is_same_v<Model, Pascal2014> ? "" : kLinearOscillatorModel;
+  stored.summary.units = model.Description().units;
   stored.summary.stickslip_version = Version();
   stored.summary.signature = b.orbits.front().signature.ToString();
   stored.summary.shooting = ToString(b.shooting);

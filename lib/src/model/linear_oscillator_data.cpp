@@ -192,6 +192,7 @@ LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {
                        fmt::format("-{0:g} <= friction_slope <= {0:g} (force per unit slip speed)", kMaxForce));
   }
   CheckCoordinateNames(data.coordinates, n, "coordinates");
+  CheckUnits(data.units);
   // In a slip F = -F_k sign(s) - alpha s: alpha damps the contact's coordinate; a stick holds it.
   Eigen::MatrixXd slip_damping = damping;
   slip_damping(n - 1, n - 1) += data.friction_slope;
@@ -218,14 +219,15 @@ ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, cons
   }
   lowest *= 1e-3;
   highest *= 1e3;
+  d.units = data.units;
   d.parameters = {
-      {"omega", "forcing frequency", "rad/s", lowest, highest,
+      {"omega", "forcing frequency", d.units.Frequency(), lowest, highest,
        fmt::format("{:.6g} <= omega <= {:.6g}, away from the natural frequencies", lowest, highest)},
-      {"F_k", "kinetic friction force", "N", std::numeric_limits<double>::min(), kMaxForce,
+      {"F_k", "kinetic friction force", d.units.force, std::numeric_limits<double>::min(), kMaxForce,
        fmt::format("0 < F_k <= {:g}", kMaxForce)},
-      {"F_s", "static friction force", "N", std::numeric_limits<double>::min(), kMaxForce,
+      {"F_s", "static friction force", d.units.force, std::numeric_limits<double>::min(), kMaxForce,
        fmt::format("F_k <= F_s <= {:g}", kMaxForce)},
-      {"v_b", "the surface's (belt's) speed", "m/s", -kMaxSpeed, kMaxSpeed,
+      {"v_b", "the surface's (belt's) speed", d.units.Speed(), -kMaxSpeed, kMaxSpeed,
        fmt::format("-{0:g} <= v_b <= {0:g}", kMaxSpeed)}};
   d.coordinates = data.coordinates;
   for (Eigen::Index j = static_cast<Eigen::Index>(d.coordinates.size()); j < n; ++j) d.coordinates.push_back(fmt::format("x{}", j + 1));
@@ -249,6 +251,10 @@ void LinearOscillatorData::AddTo(Fingerprint& hash) const {
   hash.Add(coordinates.size());
   for (const std::string& coordinate : coordinates) hash.AddText(coordinate);
   hash.AddText(name);
+  // Units other than SI only: the fingerprints of runs made before units could be declared stand.
+  if (units != SiUnits()) {
+    for (const std::string* unit : {&units.length, &units.time, &units.force}) hash.AddText(*unit);
+  }
 }
 
 }  // namespace stickslip

@@ -15,6 +15,8 @@
 //   friction_slope = 0.0                               # N s/m: a slip's kinetic level F_k + alpha |s| (optional)
 //   parameters = { omega = 0.8, F_k = 0.3, F_s = 0.4, v_b = 0.0 }   # rad/s, N, N, m/s
 //   start = { m3_0 = 0.5, phi = 0.3 }                  # m, m/s, rad: where the motion starts (optional: rest)
+//   units = { length = "m", time = "s", force = "N" }  # optional, each: what the numbers are in
+//                                                      # (labels of files and figures; SI by default)
 //
 //   [model]
 //   kind = "matrices"                                  # files relative to the run file's folder
@@ -61,6 +63,7 @@ struct ModelTable {
   Chain chain;           // kind "chain"
   ModelMatrixFiles matrices;  // kind "matrices"
   double friction_slope = 0.0;
+  ModelUnits units = SiUnits();
   NamedValues parameters;  // as written, in the file's order
   NamedValues start;       // as written: start-state components by name (x1_0, v1_0, ...) and phi
 };

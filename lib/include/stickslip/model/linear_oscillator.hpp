@@ -170,7 +170,8 @@ class LinearOscillator {
   const ModelDescription& Description() const { return description_; }
   // The data it was built from (C zero where none was given): what a run's fingerprint hashes.
   LinearOscillatorData Data() const {
-    return {mass_, damping_, stiffness_, forcing_, friction_slope_, description_.coordinates, description_.name};
+    return {mass_,          damping_,          stiffness_,       forcing_,
+            friction_slope_, description_.coordinates, description_.name, description_.units};
   }
   // The number n of coordinates and the state's size 2n (compile-time constants at a fixed size).
   int Coordinates() const {

@@ -7,8 +7,8 @@
 // and of the oscillator with q_n held (a stick). With damping the eigenvalues are complex and every
 // coordinate in a mode is a sum of exponentially weighted sinusoids (numerics/exponential_sum.hpp);
 // without, the rates are 0. C may be any matrix (non-symmetric in brake models); M symmetric
-// positive definite; K symmetric positive definite in this step (a singular K, a rigid-body mode,
-// needs polynomial terms). A belt and autonomous orbits come next (the general-oscillator issue).
+// positive definite; K symmetric positive definite (a singular K, a rigid-body mode, needs
+// polynomial terms).
 #pragma once
 
 #include <string>
@@ -36,6 +36,7 @@ struct LinearOscillatorData {
   double friction_slope = 0.0;
   std::vector<std::string> coordinates;  // their names; empty: x1 ... xn
   std::string name = "linear-oscillator";
+  ModelUnits units = SiUnits();  // what its numbers are in: labels, the numbers are not converted
 
   // Every field into a run's fingerprint (the shards of one brute-force map share it).
   void AddTo(Fingerprint& hash) const;
@@ -77,10 +78,12 @@ void CheckCoordinateNames(const std::vector<std::string>& names, Eigen::Index n,
 // is not square, symmetric and positive definite with finite entries, C is not n x n and finite,
 // the sizes disagree, n is not 1 ... 50, a mode's system is not finite (scales too far apart) or
 // its eigenvectors reproduce the matrix exponential worse than 1e-9 (nearly dependent ones, as
-// near critical damping), or the names are not as CheckCoordinateNames asks.
+// near critical damping), the names are not as CheckCoordinateNames asks, or the units not as
+// CheckUnits asks.
 LinearOscillatorModes ModesOf(const LinearOscillatorData& data);
 
-// The parameters (omega in rad/s, F_k and F_s in N, v_b in m/s: SI by default) with their ranges, the
+// The parameters (omega in rad per time unit, F_k and F_s in force units, v_b in length per time unit,
+// by the data's units) with their ranges, the
 // coordinates and the initial-state names by the coordinates' names: q_0 for each position; for each
 // velocity the name with its leading x made v (x1: v1_0), or v_ before any other (left: v_left_0).
 ModelDescription DescribeLinearOscillator(const LinearOscillatorData& data, const LinearOscillatorModes& modes);

@@ -35,6 +35,30 @@ struct ContactWords {
   const char* abnormal_grazing = "grazing-sliding (u_r = u_s)";  // a bifurcation's name
 };
 
+// The units of a model's numbers: of its lengths (the coordinates), times and forces, every other
+// unit derived from them. All empty for a scaled model (the paper's: every quantity dimensionless).
+struct ModelUnits;
+ModelUnits SiUnits();
+
+struct ModelUnits {
+  std::string length, time, force;
+
+  bool Scaled() const { return length.empty(); }
+  std::string Frequency() const { return "rad/" + time; }
+  std::string Speed() const { return length + "/" + time; }
+  std::string Energy() const { return *this == SiUnits() ? "J" : force + " " + length; }
+  std::string ViscousDamping() const { return force + " " + time + "/" + length; }
+  bool operator==(const ModelUnits&) const = default;
+};
+
+// A model's default units: SI.
+inline ModelUnits SiUnits() { return {"m", "s", "N"}; }
+
+// Throws InvalidInput naming units.length, units.time or units.force unless each is 1 to
+// kMaxUnitBytes bytes of text with no control character and no '$' (figures' math markup).
+inline constexpr std::size_t kMaxUnitBytes = 16;
+void CheckUnits(const ModelUnits& units);
+
 struct ModelDescription {
   std::string name;  // "pascal-2014"
   // In the order of the model's parameter derivatives (the columns of every d/dparameters).
@@ -49,6 +73,7 @@ struct ModelDescription {
   // orbit's origin, a stop: orbits/orbit_layout.hpp).
   std::vector<std::string> initial_state;
   ContactWords contact;
+  ModelUnits units;  // empty: scaled
 
   int ParameterCount() const { return static_cast<int>(parameters.size()); }
   std::optional<int> ParameterIndex(std::string_view name) const;
