@@ -17,7 +17,6 @@
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
-#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_trace.hpp"
 #include "stickslip/io/trace_files.hpp"
 #include "trace_run.hpp"
@@ -151,25 +150,18 @@ void RefuseOutputOverModel(const std::string& output, const std::string& model, 
 
 int RunModelSolve(const std::filesystem::path& results, const std::string& point, const OrbitSolverOptions& solver,
                   bool json) {
-  const auto [run, label] = RunAndLabel(point);
-  const ModelLabel at = [&] {
-    try {
-      return ReadModelLabel(results, run, label);
-    } catch (const InvalidInput& e) {
-      throw e.Renamed("point");
-    }
-  }();
-  const Model& model = at.file.model;
-  Found r;
-  r.guess = at.orbit;
-  r = SolvedAtFixedParameters(model, ModelFindOptions{.solver = solver}, std::move(r));
+  const ModelFindRun solved = SolveAtModelLabel(results, point, solver);
+  const Found& r = solved.found;
+  if (!r.solution) {  // not solvable at fixed parameters (an abnormal stop)
+    fmt::print(stderr, "error: {}: {}\n", point, r.message);
+    return FindExitCode(r.status);
+  }
   if (!r.solution->summary.Converged()) {
     fmt::print(stderr, "error: {}: Newton did not converge from the stored orbit: {}\n", point,
                r.solution->summary.BriefReport());
     return kExitNoConvergence;
   }
-  r = CheckedModelOrbit(model, std::move(r));
-  fmt::print("{}{}", json ? ModelFindJson(model, r) : Text(model, r), json ? "\n" : "");
+  fmt::print("{}{}", json ? ModelFindJson(solved.model, r) : Text(solved.model, r), json ? "\n" : "");
   if (r.status != FindOrbitStatus::kFound) fmt::print(stderr, "error: {}: {}\n", point, r.message);
   return FindExitCode(r.status);
 }

@@ -17,6 +17,7 @@
 #include "stickslip/analysis/orbit_finder.hpp"
 #include "stickslip/io/model_find.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_summary.hpp"
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
@@ -205,17 +206,23 @@ struct SolvedOrbit {
   int family_dimension = 0;  // OrbitSolution's
 };
 
-SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std::string& linear_solver) {
-  const StartProblem problem = BuildStartProblem(ToStartInput(start));
+// solve()'s shooting and linear_solver (an empty one is one not given: klu where multiple shooting
+// is used).
+OrbitSolverOptions SolverOptionsOf(const std::string& shooting, const std::string& linear_solver) {
   OrbitSolverOptions options;
   const std::optional<ShootingChoice> choice = ShootingChoiceFromString(shooting);
   if (!choice) throw InvalidInput("shooting", "'" + shooting + "'", "auto, single, multiple");
   options.shooting = *choice;
-  // An empty linear_solver is one not given (klu where multiple shooting is used).
   CheckLinearSolverIsUsed(linear_solver, shooting);
   const std::optional<LinearSolverType> solver = LinearSolverFromString(linear_solver.empty() ? "klu" : linear_solver);
   if (!solver) throw InvalidInput("linear-solver", "'" + linear_solver + "'", "klu, umfpack, dense");
   options.sparse_solver = *solver;
+  return options;
+}
+
+SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std::string& linear_solver) {
+  const StartProblem problem = BuildStartProblem(ToStartInput(start));
+  const OrbitSolverOptions options = SolverOptionsOf(shooting, linear_solver);
   std::vector<std::string> unknowns;
   for (int index : problem.free) unknowns.push_back(ov::Name(problem.orbit.signature.size(), index));
   std::optional<SolvedOrbit> solved;
@@ -595,6 +602,30 @@ void BindOrbits(py::module_& m) {
   m.def("_simulate_model", &SimulateModel, py::arg("model"), py::arg("set"), py::arg("periods"), py::arg("method"),
         py::arg("samples_per_period"));
   m.def("_solve", &Solve, py::arg("start"), py::arg("shooting"), py::arg("linear_solver"));
+  // solve(point=) at a [model]'s label: whether it is one, and the orbit solved there (as
+  // `stickslip solve --point --json` prints it), ConvergenceError where Newton does not converge.
+  m.def("_holds_model_point", [](const std::string& results, const std::string& point) {
+    return HoldsModelRun(results, RunAndLabel(point).first);
+  }, py::arg("results"), py::arg("point"));
+  m.def(
+      "_solve_model_label",
+      [](const std::string& results, const std::string& point, const std::string& shooting,
+         const std::string& linear_solver) {
+        const OrbitSolverOptions options = SolverOptionsOf(shooting, linear_solver);
+        std::optional<ModelFindRun> solved;
+        {
+          py::gil_scoped_release release;
+          solved = SolveAtModelLabel(results, point, options);
+        }
+        const auto& found = solved->found;
+        if (found.solution && !found.solution->summary.Converged()) {
+          RaiseConvergenceError(fmt::format("{}: Newton did not converge from the stored orbit: {}", point,
+                                            found.solution->summary.BriefReport()),
+                                SummaryDict(found.solution->summary));
+        }
+        return ModelFindJson(solved->model, found);
+      },
+      py::arg("results"), py::arg("point"), py::arg("shooting"), py::arg("linear_solver"));
   m.def(
       "_find",
       [](const py::dict& start, double transients, double max_multiple, double tolerance, double confirmations) {

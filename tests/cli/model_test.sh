@@ -167,6 +167,14 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 assert s["units"] == {"length": "mm", "time": "ms", "force": "kN"}, s' "$work/mm-trace/branch-1/summary.json" && pass ||
   fail "find --model --trace: the summary lacks the declared units"
+"$bin" find --model "$work/mm.toml" --json | /usr/bin/python3 -c '
+import json, sys
+assert json.load(sys.stdin)["orbit"]["units"] == {"length": "mm", "time": "ms", "force": "kN"}' && pass ||
+  fail "find --model --json: the orbit lacks the declared units"
+# The run file's units changed since the run: a restart would relabel every number; refused.
+sed -i 's|length = "mm"|length = "cm"|' "$work/mm.toml"
+expect 2 "the run's numbers are in mm, ms, kN (length, time, force) but" \
+  "$bin" solve --point branch-1:EP1 --results "$work/mm-trace"
 sed 's|m1|b|g; s|contact = "b"|contact = "b"\nnames = ["b"]|' "$models/den-hartog.toml" > "$work/b.toml"
 expect 2 "parameter = 'v_b' is invalid" "$bin" sweep --model "$work/b.toml" --parameter v_b --from 0.1 --to 0.3 --output "$work/x.csv"
 sed 's|m1|k|g; s|contact = "k"|contact = "k"\nnames = ["k"]|' "$models/belt.toml" > "$work/k.toml"

@@ -154,12 +154,17 @@ TEST(ModelTable, RefusesEveryTableThatIsNoModelNamingTheKey) {
       {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { length = 1.0 }", "model.units.length",
        "must be a string"},
       {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { time = \"\" }", "model.units.time",
-       "1 to 16 characters"},
+       "1 to 16 bytes"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { time = \"  \" }", "model.units.time", "not blank"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { force = \"k\\u0085N\" }", "model.units.force",
+       "control characters"},
+      {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { force = \"\\u202eN\" }", "model.units.force",
+       "control characters"},
       {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { force = \"$N$\" }", "model.units.force", "'$'"},
       {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { length = \"m\\nm\" }", "model.units.length",
        "control characters"},
       {"friction_slope = -0.1", "friction_slope = -0.1\nunits = { length = \"micrometres-longer\" }",
-       "model.units.length", "1 to 16 characters"},
+       "model.units.length", "1 to 16 bytes"},
   };
   for (const BadTable& c : cases) {
     std::string text = kThreeMasses;

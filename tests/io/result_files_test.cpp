@@ -355,6 +355,14 @@ TEST(ResultFiles, WrongTypeOfSummaryValueIsAnError) {
   EXPECT_EQ(ParseError(files), R"(stored/summary.json: key 'points' = "106" is invalid: valid a count (an integer >= 0))");
 }
 
+// Units are a [model]'s: the paper's model is scaled (hostile review: a paper run's summary given
+// units was read and the units ignored).
+TEST(ResultFiles, UnitsInAPaperRunsSummaryAreAnError) {
+  RunFiles files = StoredTexts(kRun);
+  files.summary_json = EditLine(files.summary_json, 8, [](const std::string& l) { return R"(  "units": {"length": "m"},)" "\n" + l; });
+  EXPECT_EQ(ParseError(files), "stored/summary.json: key 'units' is invalid: valid only in a [model]'s run (the paper's model is scaled)");
+}
+
 TEST(ResultFiles, SummaryCountsMustMatchTheTables) {
   RunFiles files = StoredTexts(kRun);
   files.branch_csv = EditLine(files.branch_csv, 107, [](const std::string&) { return std::string(); });

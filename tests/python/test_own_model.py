@@ -117,6 +117,16 @@ def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orb
         assert (tmp_path / "chain" / "up" / name).read_bytes() == (tmp_path / "chain" / "cli-up" / name).read_bytes()
     with pytest.raises(ValueError, match="switching branches at a \\[model\\]'s bifurcation"):
         branch.switch("EP1")
+    # solve at the UZ label (F_s = 0.5): the orbit the motion from rest settles on (find's), and what
+    # `stickslip solve --point --json` prints; a start keyword beside it is refused.
+    uz = (tmp_path / "chain" / "python", f"branch-{len(traced.branches)}:{up['label'][at[0]]}")
+    solved = stickslip.solve(point=uz[1], results=uz[0])
+    assert solved.found and solved.signature == found["signature"]
+    for name, value in found["start"].items():
+        assert solved.orbit["start"][name] == pytest.approx(value, abs=1e-9), name
+    assert solved.orbit == cli_json("solve", "--results", uz[0], "--point", uz[1], "--json")["orbit"]
+    with pytest.raises(ValueError, match="free is invalid with a \\[model\\]'s point"):
+        stickslip.solve(point=uz[1], results=uz[0], free="F_s")
 
 
 def test_sweep_is_the_command_lines_file(tmp_path):

@@ -194,8 +194,21 @@ def solve(parameters=None, signature=None, *, preset=None, point=None, results="
                 where multiple shooting is used (refused with shooting="single", where it is not)
     Returns an Orbit. Raises ConvergenceError if Newton does not converge. A converged orbit that is
     not a motion (a margin <= 0, orbit.admissible False) or fails its verification is returned: the
-    command line exits 4 for it.
+    command line exits 4 for it. point="RUN:LABEL" under results= may be a [model]'s label (no other
+    start keyword then): its orbit solved again at the label's parameters, as a ModelFound (as
+    find(model=) returns it; `stickslip solve --point` prints the same).
     """
+    if point is not None and _core._holds_model_point(str(_checked(results, "results", "path")),
+                                                      _optional_text(point, "point", "a str, a stored point 'RUN:LABEL'")):
+        given = [name for name, value in (("parameters", parameters), ("signature", signature), ("preset", preset),
+                                          ("set", set), ("guess", guess), ("free", free), ("fix", fix),
+                                          ("tie_u_r", tie_u_r or None), ("paper_choice", paper_choice or None))
+                 if value is not None]
+        if given:
+            raise ValueError(f"{given[0]} is invalid with a [model]'s point: valid left out (the label gives the "
+                             "model, its parameters and the orbit)")
+        return ModelFound(**_json.loads(_core._solve_model_label(str(results), point, _checked(shooting, "shooting", "text"),
+                                                                 _optional_text(linear_solver, "linear_solver"))))
     start = _start(parameters, preset=preset, point=point, results=results, set=set, signature=signature,
                    guess=guess, free=free, fix=fix, tie_u_r=tie_u_r, paper_choice=paper_choice)
     return _core._solve(start, _checked(shooting, "shooting", "text"), _optional_text(linear_solver, "linear_solver"))
@@ -227,7 +240,7 @@ class Found:
 class ModelFound:
     """What stickslip.find(model=...) found for an oscillator of your own: `status` and `message` as
     Found's, the orbit type read off the motion (`signature`, a str, or None), and the solved `orbit`
-    when Newton converged: a dict with the keys of `stickslip find --model --json` (signature,
+    when Newton converged: a dict with the keys of `stickslip find --model --json` (signature, units,
     parameters, period, phi, start by the model's names (x1_0, v1_0 for x1; m1_0, v_m1_0 for m1), durations, margins,
     admissible, multipliers, stable, measures per coordinate, verification)."""
     status: str

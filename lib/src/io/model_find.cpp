@@ -15,6 +15,8 @@
 #include <fmt/ranges.h>
 
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/io/command_options.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_table.hpp"
 
 namespace stickslip {
@@ -42,6 +44,24 @@ ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int m
   options.phi0 = start.phi;
   options.progress = std::move(progress);
   return {model, p, FindModelOrbit(model, p, start.state, options), start.slip_frequencies};
+}
+
+ModelFindRun SolveAtModelLabel(const std::filesystem::path& results_root, const std::string& point,
+                               const OrbitSolverOptions& solver) {
+  ModelLabel at = [&] {
+    try {
+      const auto [run, label] = RunAndLabel(point);
+      return ReadModelLabel(results_root, run, label);
+    } catch (const InvalidInput& e) {
+      throw e.Renamed("point");
+    }
+  }();
+  const DynamicLinearOscillator& model = at.file.model;
+  ModelFindResult<DynamicLinearOscillator> found;
+  found.guess = at.orbit;
+  found = SolvedAtFixedParameters(model, ModelFindOptions{.solver = solver}, std::move(found));
+  if (found.solution && found.solution->summary.Converged()) found = CheckedModelOrbit(model, std::move(found));
+  return {model, at.file.parameters, std::move(found), at.file.slip_frequencies};
 }
 
 }  // namespace stickslip

@@ -48,7 +48,8 @@ std::string ModelFindJson(const DynamicLinearOscillator& model, const ModelFindR
            {"signature", r.guess ? Json(r.guess->signature.ToString()) : Json(nullptr)}, {"orbit", nullptr}};
   if (!r.solution || !r.solution->summary.Converged()) return out.dump();
   const BasicOrbit<Model>& o = r.solution->orbit;
-  Json orbit{{"signature", o.signature.ToString()}};
+  Json orbit{{"signature", o.signature.ToString()},
+             {"units", {{"length", d.units.length}, {"time", d.units.time}, {"force", d.units.force}}}};
   for (int k = 0; k < d.ParameterCount(); ++k) orbit["parameters"][d.parameters[k].name] = Model::ParameterAt(o.parameters, k);
   orbit["period"] = PeriodOf(model, o);
   orbit["phi"] = o.phi;

@@ -80,7 +80,18 @@ std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::p
 }
 
 ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory) {
-  return ReadModelFileStart(ModelFileOf(run, run_directory), {});
+  ModelFileStart file = ReadModelFileStart(ModelFileOf(run, run_directory), {});
+  // The numbers are the same in any units: a run file whose units changed since the run would
+  // relabel every number the restart writes.
+  const ModelUnits& now = file.model.Description().units;
+  if (now != run.summary.units) {
+    const auto text = [](const ModelUnits& u) { return fmt::format("{}, {}, {}", u.length, u.time, u.force); };
+    throw InvalidInput::WithMessage(
+        "run_file", fmt::format("'{}': the run's numbers are in {} (length, time, force) but '{}' declares {} now: valid "
+                                "the run file the run was made from",
+                                run.summary.output, text(run.summary.units), run.summary.run_file, text(now)));
+  }
+  return file;
 }
 
 std::vector<DynamicLinearOscillator::State> SampledStoredOrbit(const ModelFileStart& file, const BasicOrbit<Model>& orbit,

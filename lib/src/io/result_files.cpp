@@ -188,6 +188,8 @@ Summary ParseSummary(const std::string& text, const fs::path& file) {
     }
     summary.fields.model = model->get<std::string>();
     summary.fields.units = UnitsOf(json, file);
+  } else if (json.contains(kUnitsKey)) {
+    throw KeyError(file, kUnitsKey, "is invalid: valid only in a [model]'s run (the paper's model is scaled)");
   }
   summary.points = Count(required(kPointsKey), file, kPointsKey);
   const Json& special = required(kSpecialPointsKey);

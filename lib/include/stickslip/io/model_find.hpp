@@ -39,4 +39,12 @@ struct ModelFindRun {
 ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int max_multiple,
                               ProgressCallback progress = {});
 
+// The orbit at the label `point` ("RUN:LABEL") of a stored [model]'s run under results_root, solved
+// again at the label's parameters from its stored variables (start, phase, durations unknown) and,
+// where Newton converges, checked as find checks an orbit: what `solve --point` and Python's
+// solve(point=) give. Throws InvalidInput naming "point" where the run, the label or its model
+// cannot be read (ReadModelLabel).
+ModelFindRun SolveAtModelLabel(const std::filesystem::path& results_root, const std::string& point,
+                               const OrbitSolverOptions& solver);
+
 }  // namespace stickslip

@@ -55,7 +55,8 @@ struct ModelUnits {
 inline ModelUnits SiUnits() { return {"m", "s", "N"}; }
 
 // Throws InvalidInput naming units.length, units.time or units.force unless each is 1 to
-// kMaxUnitBytes bytes of text with no control character and no '$' (figures' math markup).
+// kMaxUnitBytes bytes of UTF-8, not blank, with no control character (nor a line separator or
+// direction mark) and no '$' (figures' math markup).
 inline constexpr std::size_t kMaxUnitBytes = 16;
 void CheckUnits(const ModelUnits& units);
 
