@@ -172,7 +172,7 @@ Command AddAtlasCommand(CLI::App& app) {
                   "(relative) of a natural frequency of the undamped slip that it approaches (0: never)");
   cmd->add_option("--model", args->model,
                   "the atlas of the oscillator in this run file's [model] (see describe) instead of the paper's, in "
-                  "its own units (SI): --parameter one of the model's (omega, F_k, F_s, v_b), --set its parameters, "
+                  "its own units (SI unless its units say otherwise): --parameter one of the model's (omega, F_k, F_s, v_b), --set its parameters, "
                   "start state (x1_0, v1_0, ...) and phi; at every grid value the brute force runs from rest, from the "
                   "start's state and --starts - 1 states scattered in the box |x - x0| <= --scatter around it, and "
                   "from the neighbouring value's end both ways, read at forcing phase phi; --tolerance is relative to "

@@ -91,6 +91,10 @@ done
   --output five-mass-chain-omega-trace
 "$bin" find --model continuation-scripts/models/belt-damped.toml --trace 0.1,1.0 --results results/models \
   --output belt-damped-v_b-trace
+# The README's quick start: two masses in SI units (section 4.1's data) traced over omega, and drawn.
+"$bin" find --model continuation-scripts/models/two-masses.toml --trace 30,69 --results results/models \
+  --output two-masses-omega-trace
+"$bin" plot results/models/two-masses-omega-trace --output results/figures/two-masses-omega-trace-frequency-response.png
 # The five-mass chain's brute-force diagram over the same decade, from rest and a start scattered around
 # it, up and back down: its resonances, and the permanent sticks below omega = 0.4; and its figure with
 # the trace's branches over it.

@@ -294,7 +294,7 @@ Command AddSimulateCommand(CLI::App& app) {
                 "\"state\": [x1, x2, x1', x2']}]} instead of the table");
   cmd->add_option("--model", args->model,
                   "simulate the oscillator in this run file's [model] (see describe) instead of the paper's, in its "
-                  "own units (SI): from the file's start (rest unless it gives one) and --set's parameters, start "
+                  "own units (SI unless its units say otherwise): from the file's start (rest unless it gives one) and --set's parameters, start "
                   "state (x1_0, v1_0, ...) and phi; the table, --json and the CSV (t, the model's state columns, mode) "
                   "name its coordinates. Without forcing --periods and --transients count periods of its slowest free "
                   "oscillation 2 pi/omega_1")

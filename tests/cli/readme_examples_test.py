@@ -1,5 +1,7 @@
 #!/usr/bin/python3
-"""The quick start of README.md runs as written: each ```sh block of its "Quick start" section is
+"""The quick start of README.md runs as written: each ```toml block whose first line is `# NAME`
+is written to NAME (and must be the [model] of continuation-scripts/models/NAME, whose figure the
+text shows), and each ```sh block of its "Quick start" section is
 run (line continuations joined, `stickslip` replaced by the program under test) in a fresh
 directory, and every line of the output block that follows it in the text must be in what the
 commands printed (a line ending in "..." as a prefix; a line "..." stands for lines left out;
@@ -44,6 +46,13 @@ quick = section("## Quick start")
 ran = 0
 with tempfile.TemporaryDirectory() as work:
     for lang, body, expected in blocks(quick):
+        if lang == "toml" and body.startswith("# "):
+            name, model = body.split("\n", 1)[0][2:].strip(), body.split("\n", 1)[1]
+            with open(os.path.join(work, name), "w") as f:
+                f.write(model)
+            shipped = open(os.path.join(root, "continuation-scripts", "models", name)).read()
+            if shipped[shipped.index("[model]"):] != model:
+                failures.append(f"the quick start's {name} is not continuation-scripts/models/{name}'s [model]")
         if lang != "sh":
             continue
         printed = []
