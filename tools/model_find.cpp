@@ -35,27 +35,34 @@ std::string Text(const Model& model, const Found& r) {
   for (int k = model.Autonomous() ? 1 : 0; k < d.ParameterCount(); ++k) {  // omega plays no part without forcing
     out += fmt::format(" {}={}", d.parameters[k].name, Model::ParameterAt(o.parameters, k));
   }
-  out += fmt::format("\nnewton     {}\nperiod     {:.12g}{}\nstart     ", r.solution->summary.BriefReport(),
-                     PeriodOf(model, o), model.Autonomous() ? "" : fmt::format("  phi = {:.12g}", o.phi));
+  out += fmt::format("\nnewton     {}\nperiod     {:.12g} {}{}\nstart     ", r.solution->summary.BriefReport(),
+                     PeriodOf(model, o), d.units.time, model.Autonomous() ? "" : fmt::format("  phi = {:.12g}", o.phi));
   for (int k = 0; k < model.StateSize(); ++k) out += fmt::format(" {}={:.10g}", d.initial_state[k], o.start(k));
   out += "\n";
   for (std::size_t i = 0; i < o.durations.size(); ++i) {
-    out += fmt::format("  d{} = {:<22} {}\n", i + 1, o.durations[i], ToString(o.signature.segments()[i]));
+    out += fmt::format("  d{} = {:<24} {}\n", i + 1, fmt::format("{} {}", o.durations[i], d.units.time),
+                       ToString(o.signature.segments()[i]));
   }
   const Margin smallest = SmallestMargin(r.margins);
   out += fmt::format("smallest margin {} = {:.6g}: {}\n", smallest.Name(), smallest.value,
                      smallest.value > 0 ? "admissible" : "NOT a motion of the system");
   out += fmt::format("floquet multipliers{}:", r.stability->one_sided ? " (one-sided)" : "");
   for (const std::complex<double>& mu : r.stability->multipliers) out += fmt::format(" {:.6g}", std::abs(mu));
-  out += fmt::format(" (moduli)\nstability  {}\nmeasures over one period\n", r.stability->stable ? "stable" : "unstable");
+  out += fmt::format(" (moduli)\nstability  {}\nmeasures over one period (lengths in {})\n",
+                     r.stability->stable ? "stable" : "unstable", d.units.length);
   for (std::size_t j = 0; j < d.coordinates.size(); ++j) {
     const CoordinateRange& c = r.measures->coordinates[j];
     out += fmt::format("  {:<8} amplitude {:.10g}  peak-to-peak {:.10g}\n", d.coordinates[j], c.Amplitude(), c.PeakToPeak());
   }
-  out += fmt::format("  stick fraction {:.6g}, stops {}, sticks {}\n  friction work {:.10g} {} per period, equivalent viscous "
-                     "damping {:.6g} {}\n",
-                     r.measures->stick_fraction, r.measures->stops, r.measures->sticks, r.measures->friction_work,
-                     d.units.Energy(), r.measures->equivalent_damping, d.units.ViscousDamping());
+  out += fmt::format("  stick fraction {:.6g}, stops {}, sticks {}\n", r.measures->stick_fraction, r.measures->stops,
+                     r.measures->sticks);
+  // With a friction slope the kinetic level varies along a slip: the work (int (F_k + alpha |s|) |s| dt)
+  // is not computed, and the files hold nan.
+  out += std::isnan(r.measures->friction_work)
+             ? "  friction work and equivalent viscous damping: not computed with a friction slope\n"
+             : fmt::format("  friction work {:.10g} {} per period, equivalent viscous damping {:.6g} {}\n",
+                           r.measures->friction_work, d.units.Energy(), r.measures->equivalent_damping,
+                           d.units.ViscousDamping());
   out += fmt::format("verification {}\n{}", r.verification->Passed() ? "passed" : "FAILED", r.verification->Report());
   return out;
 }
@@ -152,10 +159,6 @@ int RunModelSolve(const std::filesystem::path& results, const std::string& point
                   bool json) {
   const ModelFindRun solved = SolveAtModelLabel(results, point, solver);
   const Found& r = solved.found;
-  if (!r.solution) {  // not solvable at fixed parameters (an abnormal stop)
-    fmt::print(stderr, "error: {}: {}\n", point, r.message);
-    return FindExitCode(r.status);
-  }
   if (!r.solution->summary.Converged()) {
     fmt::print(stderr, "error: {}: Newton did not converge from the stored orbit: {}\n", point,
                r.solution->summary.BriefReport());

@@ -51,7 +51,7 @@ std::string PaperComparison(const PaperPreset& preset, const Orbit& o, const std
 
 // A [model]'s label: its orbit solved and checked as find --model's (RunModelSolve); the options of
 // the paper's start refused.
-std::optional<int> SolveAtModelLabel(const SolveArgs& args, const OrbitSolverOptions& solver) {
+std::optional<int> SolveIfModelLabel(const SolveArgs& args, const OrbitSolverOptions& solver) {
   if (!ModelPointOf(args.start.results, args.start.point)) return std::nullopt;
   const StartFlags& s = args.start;
   for (const auto& [option, given] : {std::pair{"preset", !s.preset.empty()}, {"signature", !s.signature.empty()},
@@ -67,13 +67,8 @@ std::optional<int> SolveAtModelLabel(const SolveArgs& args, const OrbitSolverOpt
 }
 
 int RunSolve(const SolveArgs& args) {
-  OrbitSolverOptions options;
-  options.shooting = *ShootingChoiceFromString(args.shooting);  // CLI11 checked the choice
-  // A sparse solver means something only where multiple shooting may be chosen: given with single
-  // shooting it would be silently ignored, so the contradiction is refused.
-  CheckLinearSolverIsUsed(args.linear_solver, args.shooting);
-  options.sparse_solver = *LinearSolverFromString(args.linear_solver.empty() ? "klu" : args.linear_solver);
-  if (const std::optional<int> code = SolveAtModelLabel(args, options)) return *code;
+  const OrbitSolverOptions options = SolverOptionsOf(args.shooting, args.linear_solver);
+  if (const std::optional<int> code = SolveIfModelLabel(args, options)) return *code;
   if (args.compare_paper && args.start.preset.empty()) {
     throw InvalidInput::WithMessage("compare-paper", "compare-paper needs --preset");
   }

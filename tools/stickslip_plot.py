@@ -1041,6 +1041,10 @@ def figure(results, options=None, **keywords):
     if not results:
         raise BadInput("inputs", "''", "at least one result")
     layout = _layout(results)
+    stated = {", ".join(u[k] for k in ("length", "time", "force")) if u else "scaled"
+              for u in (r.units() for r in results if r.kind not in ("sweep", "map-sweep"))}
+    if len(stated) > 1:  # the axes can name none: say why
+        print(f"note: the inputs are in different units ({'; '.join(sorted(stated))}): the axes name none", file=sys.stderr)
     _FONT_SCALE[0] = font_scale(options.size or DEFAULT_SIZES["response"]) if options.size else 1.0
     try:
         with plt.rc_context({"font.size": pt(10)}):

@@ -206,20 +206,6 @@ struct SolvedOrbit {
   int family_dimension = 0;  // OrbitSolution's
 };
 
-// solve()'s shooting and linear_solver (an empty one is one not given: klu where multiple shooting
-// is used).
-OrbitSolverOptions SolverOptionsOf(const std::string& shooting, const std::string& linear_solver) {
-  OrbitSolverOptions options;
-  const std::optional<ShootingChoice> choice = ShootingChoiceFromString(shooting);
-  if (!choice) throw InvalidInput("shooting", "'" + shooting + "'", "auto, single, multiple");
-  options.shooting = *choice;
-  CheckLinearSolverIsUsed(linear_solver, shooting);
-  const std::optional<LinearSolverType> solver = LinearSolverFromString(linear_solver.empty() ? "klu" : linear_solver);
-  if (!solver) throw InvalidInput("linear-solver", "'" + linear_solver + "'", "klu, umfpack, dense");
-  options.sparse_solver = *solver;
-  return options;
-}
-
 SolvedOrbit Solve(const py::dict& start, const std::string& shooting, const std::string& linear_solver) {
   const StartProblem problem = BuildStartProblem(ToStartInput(start));
   const OrbitSolverOptions options = SolverOptionsOf(shooting, linear_solver);
@@ -618,7 +604,7 @@ void BindOrbits(py::module_& m) {
           solved = SolveAtModelLabel(results, point, options);
         }
         const auto& found = solved->found;
-        if (found.solution && !found.solution->summary.Converged()) {
+        if (!found.solution->summary.Converged()) {
           RaiseConvergenceError(fmt::format("{}: Newton did not converge from the stored orbit: {}", point,
                                             found.solution->summary.BriefReport()),
                                 SummaryDict(found.solution->summary));

@@ -235,6 +235,15 @@ class PlotKinds(unittest.TestCase):
         fig = sp.figure([self.small.trace, self.small.sweep])
         self.assertNotIn("(", fig.axes[0].get_xlabel() + fig.axes[0].get_ylabel())
         plt.close(fig)
+        # Runs in different units overlaid: the axes name none, and a note says why.
+        import contextlib
+        import io
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            fig = sp.figure([model_trace, os.path.join(declared, "branch-1")])
+        self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$")
+        self.assertEqual(err.getvalue(), "note: the inputs are in different units (m, s, N; mm, ms, kN): the axes name none\n")
+        plt.close(fig)
         # A sweep's CSV does not say its units: drawn with a [model]'s trace, it takes the trace's.
         fig = sp.figure([model_trace, os.path.join(RESULTS, "models", "five-mass-chain-omega-sweep.csv")])
         self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$ (rad/s)")

@@ -50,8 +50,9 @@ with tempfile.TemporaryDirectory() as work:
             name, model = body.split("\n", 1)[0][2:].strip(), body.split("\n", 1)[1]
             with open(os.path.join(work, name), "w") as f:
                 f.write(model)
-            shipped = open(os.path.join(root, "continuation-scripts", "models", name)).read()
-            if shipped[shipped.index("[model]"):] != model:
+            shipped_path = os.path.join(root, "continuation-scripts", "models", name)
+            shipped = open(shipped_path).read() if os.path.isfile(shipped_path) else ""
+            if "[model]" not in shipped or shipped[shipped.index("[model]"):] != model:
                 failures.append(f"the quick start's {name} is not continuation-scripts/models/{name}'s [model]")
         if lang != "sh":
             continue

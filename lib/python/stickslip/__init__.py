@@ -255,8 +255,9 @@ class ModelFound:
 
 def describe(path):
     """The oscillator of a run file's [model] table, as `stickslip describe --json`: a dict with its
-    model, kind, coordinates, contact, forcing, friction_slope, parameters (name, meaning, unit,
-    minimum, maximum, range, value), autonomous, free_oscillations (slip, stick) and start_state."""
+    model, kind, coordinates, contact, forcing, friction_slope, units (length, time, force),
+    parameters (name, meaning, unit, minimum, maximum, range, value), autonomous, free_oscillations
+    (slip, stick) and start_state."""
     return _json.loads(_core._describe_model(_checked(path, "path", "path")))
 
 

@@ -14,6 +14,7 @@
 
 #include "stickslip/io/start_input.hpp"
 #include "stickslip/model/transient.hpp"
+#include "stickslip/numerics/linear_solver.hpp"
 
 namespace stickslip {
 
@@ -120,6 +121,18 @@ void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view sh
       "linear-solver", fmt::format("linear-solver = '{}' is invalid with --shooting single: valid with --shooting "
                                    "multiple or auto (single shooting solves its dense system directly)",
                                    linear_solver));
+}
+
+OrbitSolverOptions SolverOptionsOf(std::string_view shooting, std::string_view linear_solver) {
+  OrbitSolverOptions options;
+  const std::optional<ShootingChoice> choice = ShootingChoiceFromString(shooting);
+  if (!choice) throw InvalidInput("shooting", fmt::format("'{}'", shooting), "auto, single, multiple");
+  options.shooting = *choice;
+  CheckLinearSolverIsUsed(linear_solver, shooting);
+  const std::optional<LinearSolverType> solver = LinearSolverFromString(linear_solver.empty() ? "klu" : linear_solver);
+  if (!solver) throw InvalidInput("linear-solver", fmt::format("'{}'", linear_solver), "klu, umfpack, dense");
+  options.sparse_solver = *solver;
+  return options;
 }
 
 namespace {

@@ -60,7 +60,14 @@ ModelFindRun SolveAtModelLabel(const std::filesystem::path& results_root, const 
   ModelFindResult<DynamicLinearOscillator> found;
   found.guess = at.orbit;
   found = SolvedAtFixedParameters(model, ModelFindOptions{.solver = solver}, std::move(found));
-  if (found.solution && found.solution->summary.Converged()) found = CheckedModelOrbit(model, std::move(found));
+  if (!found.solution) {  // an abnormal stop: solved only with a friction level released
+    throw InvalidInput::WithMessage(
+        "point", fmt::format("point = '{}' cannot be solved at its parameters: its orbit '{}' has an abnormal stop (a stop "
+                             "without reversal or stick), solved only with a friction level released: valid another "
+                             "label (continue --point and trace --point take this one)",
+                             point, at.orbit.signature.ToString()));
+  }
+  if (found.solution->summary.Converged()) found = CheckedModelOrbit(model, std::move(found));
   return {model, at.file.parameters, std::move(found), at.file.slip_frequencies};
 }
 

@@ -48,8 +48,8 @@ std::string ModelFindJson(const DynamicLinearOscillator& model, const ModelFindR
            {"signature", r.guess ? Json(r.guess->signature.ToString()) : Json(nullptr)}, {"orbit", nullptr}};
   if (!r.solution || !r.solution->summary.Converged()) return out.dump();
   const BasicOrbit<Model>& o = r.solution->orbit;
-  Json orbit{{"signature", o.signature.ToString()},
-             {"units", {{"length", d.units.length}, {"time", d.units.time}, {"force", d.units.force}}}};
+  Json orbit{{"signature", o.signature.ToString()}};
+  for (const auto& [name, unit] : ModelUnits::kNamed) orbit["units"][name] = d.units.*unit;
   for (int k = 0; k < d.ParameterCount(); ++k) orbit["parameters"][d.parameters[k].name] = Model::ParameterAt(o.parameters, k);
   orbit["period"] = PeriodOf(model, o);
   orbit["phi"] = o.phi;

@@ -80,19 +80,24 @@ std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::p
 }
 
 ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory) {
-  ModelFileStart file = ReadModelFileStart(ModelFileOf(run, run_directory), {});
-  // The numbers are the same in any units: a run file whose units changed since the run would
-  // relabel every number the restart writes.
-  const ModelUnits& now = file.model.Description().units;
-  if (now != run.summary.units) {
-    const auto text = [](const ModelUnits& u) { return fmt::format("{}, {}, {}", u.length, u.time, u.force); };
-    throw InvalidInput::WithMessage(
-        "run_file", fmt::format("'{}': the run's numbers are in {} (length, time, force) but '{}' declares {} now: valid "
-                                "the run file the run was made from",
-                                run.summary.output, text(run.summary.units), run.summary.run_file, text(now)));
-  }
-  return file;
+  return ReadModelFileStart(ModelFileOf(run, run_directory), {});
 }
+
+namespace {
+
+// A restart writes the stored numbers again under the run file's units: refused where they are no
+// longer the run's, which would relabel every number (the numbers are the same in any units).
+void CheckUnitsUnchanged(const StoredRun& run, const ModelFileStart& file) {
+  const ModelUnits& now = file.model.Description().units;
+  if (now == run.summary.units) return;
+  const auto text = [](const ModelUnits& u) { return fmt::format("{}, {}, {}", u.length, u.time, u.force); };
+  throw InvalidInput::WithMessage(
+      "run_file", fmt::format("'{}': the run's numbers are in {} (length, time, force) but '{}' declares {} now: valid "
+                              "the run file the run was made from",
+                              run.summary.output, text(run.summary.units), run.summary.run_file, text(now)));
+}
+
+}  // namespace
 
 std::vector<DynamicLinearOscillator::State> SampledStoredOrbit(const ModelFileStart& file, const BasicOrbit<Model>& orbit,
                                                                int samples, const StoredRun& run, const std::string& label) {
@@ -114,6 +119,7 @@ ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::
     const StoredRun stored = ReadRunFiles(directory);
     const StoredSpecialPoint& point = SpecialPointLabelled(stored, label, directory);
     ModelFileStart file = ModelOfStoredRun(stored, directory);
+    CheckUnitsUnchanged(stored, file);
     BasicOrbit<Model> orbit = OrbitOf(file.model, file.parameters, stored, point.point);
     SampledStoredOrbit(file, orbit, 2, stored, label);
     file.parameters = orbit.parameters;

@@ -45,17 +45,18 @@ std::string ModelSummaryJson(const ModelSummary& m) {
   }
   Json forcing = Json::object();
   for (Eigen::Index j = 0; j < m.data.forcing.size(); ++j) forcing[d.coordinates[j]] = m.data.forcing(j);
-  const Json out{{"model", d.name},
+  Json out{{"model", d.name},
                  {"kind", m.table.kind},
                  {"coordinates", d.coordinates},
                  {"contact", d.coordinates.back()},
                  {"forcing", forcing},
                  {"friction_slope", m.data.friction_slope},
-                 {"units", {{"length", d.units.length}, {"time", d.units.time}, {"force", d.units.force}}},
+                 {"units", Json::object()},
                  {"parameters", parameters},
                  {"autonomous", m.Autonomous()},
                  {"free_oscillations", {{"slip", OscillationsJson(m.slip)}, {"stick", OscillationsJson(m.stick)}}},
                  {"start_state", d.initial_state}};
+  for (const auto& [name, unit] : ModelUnits::kNamed) out["units"][name] = d.units.*unit;
   return out.dump();
 }
 

@@ -77,8 +77,6 @@ constexpr const char* kModelKey = "model";
 constexpr const char* kSpecialPointsKey = "special_points";
 // A [model]'s units (absent from the runs made before units could be declared: SI).
 constexpr const char* kUnitsKey = "units";
-constexpr std::array<std::pair<const char*, std::string ModelUnits::*>, 3> kUnitKeys = {
-    {{"length", &ModelUnits::length}, {"time", &ModelUnits::time}, {"force", &ModelUnits::force}}};
 
 std::map<std::string, std::size_t> CountsByType(const std::vector<StoredSpecialPoint>& special_points) {
   std::map<std::string, std::size_t> counts;
@@ -114,7 +112,7 @@ std::string FormatSummary(const StoredRun& run) {
   for (const TextKey& k : kLeadingKeys) json[k.key] = run.summary.*k.field;
   if (!run.summary.model.empty()) json[kModelKey] = run.summary.model;
   if (!run.summary.units.Scaled()) {
-    for (const auto& [key, unit] : kUnitKeys) json[kUnitsKey][key] = run.summary.units.*unit;
+    for (const auto& [key, unit] : ModelUnits::kNamed) json[kUnitsKey][key] = run.summary.units.*unit;
   }
   json[kPointsKey] = run.branch.size();
   json[kSpecialPointsKey] = Json::object();
@@ -145,11 +143,11 @@ ModelUnits UnitsOf(const Json& json, const fs::path& file) {
   const auto units = json.find(kUnitsKey);
   if (units == json.end()) return SiUnits();
   const std::string valid = "valid an object of strings: length, time, force";
-  if (!units->is_object() || units->size() != kUnitKeys.size()) {
+  if (!units->is_object() || units->size() != ModelUnits::kNamed.size()) {
     throw KeyError(file, kUnitsKey, fmt::format("= {} is invalid: {}", units->dump(), valid));
   }
   ModelUnits out;
-  for (const auto& [key, unit] : kUnitKeys) {
+  for (const auto& [key, unit] : ModelUnits::kNamed) {
     const auto value = units->find(key);
     if (value == units->end() || !value->is_string()) {
       throw KeyError(file, kUnitsKey, fmt::format("= {} is invalid: {}", units->dump(), valid));

@@ -253,7 +253,7 @@ void LinearOscillatorData::AddTo(Fingerprint& hash) const {
   hash.AddText(name);
   // Units other than SI only: the fingerprints of runs made before units could be declared stand.
   if (units != SiUnits()) {
-    for (const std::string* unit : {&units.length, &units.time, &units.force}) hash.AddText(*unit);
+    for (const auto& [name, unit] : ModelUnits::kNamed) hash.AddText(units.*unit);
   }
 }
 

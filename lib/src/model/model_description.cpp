@@ -49,15 +49,19 @@ bool HoldsControlCharacter(std::string_view text) {
 }  // namespace
 
 void CheckUnits(const ModelUnits& units) {
-  for (const auto& [field, unit] : {std::pair{"units.length", &units.length}, std::pair{"units.time", &units.time},
-                                    std::pair{"units.force", &units.force}}) {
-    const bool blank = unit->find_first_not_of(' ') == std::string::npos;
-    if (blank || unit->size() > kMaxUnitBytes || HoldsControlCharacter(*unit) || unit->find('$') != std::string::npos) {
-      throw InvalidInput(field, fmt::format("'{}'", *unit),
-                         fmt::format("a unit's name of 1 to {} bytes (UTF-8), not blank, without control characters "
-                                     "or '$' (\"mm\", \"ms\", \"kN\")",
-                                     kMaxUnitBytes));
-    }
+  for (const auto& [name, member] : ModelUnits::kNamed) {
+    const std::string& unit = units.*member;
+    const auto spaced = [&](std::string_view end) { return unit.starts_with(end) || unit.ends_with(end); };
+    const char* wrong = unit.empty() || unit.size() > kMaxUnitBytes                 ? "it has {} bytes (UTF-8)"
+                        : spaced(" ") || spaced("\u00a0")                          ? "it has a space at an end"
+                        : HoldsControlCharacter(unit)                               ? "it has a control character"
+                        : unit.find('$') != std::string::npos                       ? "it has a '$' (figures' math markup)"
+                                                                                    : nullptr;
+    if (!wrong) continue;
+    throw InvalidInput(std::string("units.") + name, fmt::format("'{}'", unit),
+                       fmt::format("a unit's name of 1 to {} bytes without spaces at its ends, control characters or "
+                                   "'$' (\"mm\", \"ms\", \"kN\"): {}",
+                                   kMaxUnitBytes, fmt::format(fmt::runtime(wrong), unit.size())));
   }
 }
 

@@ -25,6 +25,7 @@
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/model/pascal_2014/parameters.hpp"
 #include "stickslip/model/simulation.hpp"
+#include "stickslip/orbits/orbit_solver.hpp"
 #include "stickslip/orbits/start_problem.hpp"
 
 namespace stickslip {
@@ -81,6 +82,11 @@ void CheckOneOffRun(const RunFile& run, std::string_view range_text);
 // shooting solves its dense system directly. Throws InvalidInput naming "linear-solver"; the
 // command line's --linear-solver and Python's linear_solver= alike.
 void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view shooting);
+
+// solve's options from its shooting ("auto", "single", "multiple") and linear solver ("klu",
+// "umfpack", "dense"; empty: not given, klu where multiple shooting is used), as the command line
+// and Python give them. Throws InvalidInput naming "shooting" or "linear-solver".
+OrbitSolverOptions SolverOptionsOf(std::string_view shooting, std::string_view linear_solver);
 
 // sweep: the options as given, numbers not yet checked to be whole or in range. The defaults are
 // the command line's and Python's.

@@ -43,7 +43,8 @@ ModelFindRun FindModelOrbitOf(const ModelFileStart& start, int transients, int m
 // again at the label's parameters from its stored variables (start, phase, durations unknown) and,
 // where Newton converges, checked as find checks an orbit: what `solve --point` and Python's
 // solve(point=) give. Throws InvalidInput naming "point" where the run, the label or its model
-// cannot be read (ReadModelLabel).
+// cannot be read (ReadModelLabel), or where the orbit has an abnormal stop (solved only with a
+// friction level released, as continuations from it do).
 ModelFindRun SolveAtModelLabel(const std::filesystem::path& results_root, const std::string& point,
                                const OrbitSolverOptions& solver);
 

@@ -60,7 +60,8 @@ struct ModelLabel {
 // The orbit at `label` of the stored [model]'s run results_root/<run> (OrbitOf), with its model
 // (ModelOfStoredRun). Throws InvalidInput naming "restart" ("restart = 'RUN:LABEL' cannot be used:
 // <why>") where the run, the label or the model cannot be read, the run's columns are not the
-// model's, or its orbit is no periodic orbit of the model (SampledStoredOrbit).
+// model's, or its orbit is no periodic orbit of the model (SampledStoredOrbit), or the run file's
+// units are no longer the run's.
 ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::string& run, const std::string& label);
 
 struct ModelRunSetup {

@@ -68,7 +68,8 @@ struct StoredSummary {
   // The oscillator: "" for the paper's (summary.json then has no "model" key, as before models
   // existed), kLinearOscillatorModel for a run file's [model].
   std::string model;
-  ModelUnits units;         // a [model]'s (SI in the runs made before they could be declared)
+  ModelUnits units;         // a [model]'s (SI in its runs made before they could be declared); empty
+                            // for the paper's (scaled)
   std::string termination;  // why the branch ended: "max-points", "terminal-event", ...
   std::string message;
 };

@@ -5,9 +5,11 @@
 // labels of a problem from its constructor.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace stickslip {
@@ -37,17 +39,21 @@ struct ContactWords {
 
 // The units of a model's numbers: of its lengths (the coordinates), times and forces, every other
 // unit derived from them. All empty for a scaled model (the paper's: every quantity dimensionless).
-struct ModelUnits;
-ModelUnits SiUnits();
-
 struct ModelUnits {
   std::string length, time, force;
 
+  // Each unit by its name, as run files and summaries name them.
+  static constexpr std::array<std::pair<const char*, std::string ModelUnits::*>, 3> kNamed = {
+      {{"length", &ModelUnits::length}, {"time", &ModelUnits::time}, {"force", &ModelUnits::force}}};
+
   bool Scaled() const { return length.empty(); }
-  std::string Frequency() const { return "rad/" + time; }
-  std::string Speed() const { return length + "/" + time; }
-  std::string Energy() const { return *this == SiUnits() ? "J" : force + " " + length; }
-  std::string ViscousDamping() const { return force + " " + time + "/" + length; }
+  // The derived units; "" for a scaled model.
+  std::string Frequency() const { return Scaled() ? "" : "rad/" + time; }
+  std::string Speed() const { return Scaled() ? "" : length + "/" + time; }
+  std::string Energy() const {
+    return Scaled() ? "" : length == "m" && force == "N" ? "J" : force + " " + length;
+  }
+  std::string ViscousDamping() const { return Scaled() ? "" : force + " " + time + "/" + length; }
   bool operator==(const ModelUnits&) const = default;
 };
 
@@ -55,8 +61,8 @@ struct ModelUnits {
 inline ModelUnits SiUnits() { return {"m", "s", "N"}; }
 
 // Throws InvalidInput naming units.length, units.time or units.force unless each is 1 to
-// kMaxUnitBytes bytes of UTF-8, not blank, with no control character (nor a line separator or
-// direction mark) and no '$' (figures' math markup).
+// kMaxUnitBytes bytes of UTF-8 with no space at either end, no control character (nor a line
+// separator or direction mark) and no '$' (figures' math markup); a message per rule.
 inline constexpr std::size_t kMaxUnitBytes = 16;
 void CheckUnits(const ModelUnits& units);
 
