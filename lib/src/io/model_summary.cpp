@@ -45,18 +45,19 @@ std::string ModelSummaryJson(const ModelSummary& m) {
   }
   Json forcing = Json::object();
   for (Eigen::Index j = 0; j < m.data.forcing.size(); ++j) forcing[d.coordinates[j]] = m.data.forcing(j);
-  Json out{{"model", d.name},
+  Json units = Json::object();
+  for (const auto& [name, unit] : ModelUnits::kNamed) units[name] = d.units.*unit;
+  const Json out{{"model", d.name},
                  {"kind", m.table.kind},
                  {"coordinates", d.coordinates},
                  {"contact", d.coordinates.back()},
                  {"forcing", forcing},
                  {"friction_slope", m.data.friction_slope},
-                 {"units", Json::object()},
+                 {"units", units},
                  {"parameters", parameters},
                  {"autonomous", m.Autonomous()},
                  {"free_oscillations", {{"slip", OscillationsJson(m.slip)}, {"stick", OscillationsJson(m.stick)}}},
                  {"start_state", d.initial_state}};
-  for (const auto& [name, unit] : ModelUnits::kNamed) out["units"][name] = d.units.*unit;
   return out.dump();
 }
 

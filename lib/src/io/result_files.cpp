@@ -142,16 +142,15 @@ std::size_t Count(const Json& value, const fs::path& file, const std::string& ke
 ModelUnits UnitsOf(const Json& json, const fs::path& file) {
   const auto units = json.find(kUnitsKey);
   if (units == json.end()) return SiUnits();
-  const std::string valid = "valid an object of strings: length, time, force";
-  if (!units->is_object() || units->size() != ModelUnits::kNamed.size()) {
-    throw KeyError(file, kUnitsKey, fmt::format("= {} is invalid: {}", units->dump(), valid));
-  }
+  const auto invalid = [&] {
+    return KeyError(file, kUnitsKey,
+                    fmt::format("= {} is invalid: valid an object of strings: length, time, force", units->dump()));
+  };
+  if (!units->is_object() || units->size() != ModelUnits::kNamed.size()) throw invalid();
   ModelUnits out;
   for (const auto& [key, unit] : ModelUnits::kNamed) {
     const auto value = units->find(key);
-    if (value == units->end() || !value->is_string()) {
-      throw KeyError(file, kUnitsKey, fmt::format("= {} is invalid: {}", units->dump(), valid));
-    }
+    if (value == units->end() || !value->is_string()) throw invalid();
     out.*unit = value->get<std::string>();
   }
   try {
