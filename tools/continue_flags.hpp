@@ -24,6 +24,10 @@ struct ContinueArgs {
   bool linear_solver_given = false;  // refused with --shooting single, where it would be ignored
 };
 
+// --ds, --ds-min, --ds-max and --max-points (a branch's steps, the run file's keys of those names)
+// into `run`; `scope` ends each option's help (" of each branch, with --trace").
+void AddStepFlags(CLI::App& cmd, RunFile* run, const std::string& scope);
+
 // The start options, --parameter, --range, --ds, --ds-min, --ds-max, --max-points, --user-value,
 // --shooting, --linear-solver, --detect-folds, --detect-branch-points, --output and --results.
 void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args);

@@ -16,6 +16,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "continue_flags.hpp"
 #include "found_run.hpp"
 #include "model_find.hpp"
 #include "stickslip/io/model_find.hpp"
@@ -51,7 +52,17 @@ struct FindArgs {
   bool force = false;
   std::string model;  // --model FILE: a user's oscillator (model_find.hpp)
   std::string trace_parameter;  // --trace-parameter, with --model
+  RunFile steps;  // --ds, --ds-min, --ds-max, --max-points: each branch's, with --trace
 };
+
+// The step options, taken with --trace only (checked as continue checks them).
+void CheckStepOptions(const FindArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"--ds", "--ds-min", "--ds-max", "--max-points"}) {
+    if (cmd.count(option) == 0 || !args.trace.empty()) continue;
+    throw InvalidInput::WithMessage(option + 2, fmt::format("{} is taken with --trace only (the steps of its branches)", option));
+  }
+  CheckSteps(args.steps);
+}
 
 // The solve command line of a start (StartInputOf): signature, set, guess, free, tie.
 std::string SolveCommandLine(const StartInput& start) {
@@ -130,12 +141,12 @@ std::string RunFileOutput(const FindArgs& args) {
 int WriteAndTrace(const FindArgs& args, const FindOutputs& outputs, const StartInput& solved, double omega) {
   if (args.write_run_given) {
     const OmegaRange range = outputs.range ? *outputs.range : outputs.trace ? *outputs.trace : RangeAround(omega);
-    const RunFile run = FoundRun(solved, range, RunFileOutput(args), args.run_kind == "trace");
+    const RunFile run = FoundRun(solved, range, RunFileOutput(args), args.run_kind == "trace", args.steps);
     WriteFileAtomically(args.write_run, RunFileText(run));
     if (!args.json) fmt::print("run file   {} (stickslip run {})\n", args.write_run, args.write_run);
   }
   if (!outputs.trace) return kExitOk;
-  const RunFile run = FoundRun(solved, *outputs.trace, args.output, true);
+  const RunFile run = FoundRun(solved, *outputs.trace, args.output, true, args.steps);
   int code = kExitOk;
   const std::optional<TraceRun> trace = ExecuteTrace(run, args.start.results, &code);
   return trace ? WriteAndReportTrace(trace->stored, trace->seconds, args.start.results) : code;
@@ -214,7 +225,7 @@ int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
   RefuseWithModel(cmd,
                   {"--preset", "--point", "--tolerance", "--confirmations", "--write-run", "--as", "--range", "--force"},
                   "valid with --model are --set, --transients, --max-multiple, --trace, --trace-parameter, --output, "
-                  "--results and --json");
+                  "--results, --ds, --ds-min, --ds-max, --max-points and --json");
   if (cmd.count("--output") != 0 && args.output.empty()) {
     throw InvalidInput("output", "''", std::string(kRunNameRule));
   }
@@ -222,7 +233,7 @@ int RunModelFindOf(const FindArgs& args, const CLI::App& cmd) {
     throw InvalidInput("results", "'" + args.start.results + "'", "with --output (where the trace is written)");
   }
   return RunModelFind({args.model, args.start.set, args.transients, args.max_multiple, args.json, args.trace,
-                       args.trace_parameter, args.output, args.start.results});
+                       args.trace_parameter, args.output, args.start.results, args.steps});
 }
 
 }  // namespace
@@ -299,15 +310,17 @@ Command AddFindCommand(CLI::App& app) {
                   "--transients periods (forcing periods; without forcing, periods of its slowest free oscillation), "
                   "its last period (the least of 1 to --max-multiple forcing periods that is one) read from a stop "
                   "(without forcing: between its last two sticks), solved and verified; takes --set NAME=VALUE over "
-                  "the file's parameters, --transients, --max-multiple, --trace, --trace-parameter, --output, --results and "
-                  "--json only")
+                  "the file's parameters, --transients, --max-multiple, --trace, --trace-parameter, --output, --results, "
+                  "the steps (--ds, --ds-min, --ds-max, --max-points) and --json only")
       ->type_name("FILE");
   cmd->add_option("--trace-parameter", args->trace_parameter,
                   "with --model and --trace: the parameter traced (omega, F_k, F_s or v_b; default omega, or v_b "
                   "without forcing); the trace is printed (the branches, and with --json every point), and written with "
                   "--output")
       ->type_name("NAME");
+  AddStepFlags(*cmd, &args->steps, ", of each branch (with --trace)");
   return {cmd, [args, cmd] {
+            CheckStepOptions(*args, *cmd);
             if (cmd->count("--model") != 0) return RunModelFindOf(*args, *cmd);
             if (cmd->count("--trace-parameter") != 0) {
               throw InvalidInput("trace-parameter", "'" + args->trace_parameter + "'", "with --model (the paper's "

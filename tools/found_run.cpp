@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -75,8 +76,12 @@ OmegaRange RangeAround(double omega) {
   return {std::stod(Rounded(std::max(kMinOmega, 0.9 * omega))), std::stod(Rounded(std::min(kMaxOmega, 1.1 * omega)))};
 }
 
-RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace) {
+RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const RunFile& steps) {
   RunFile run;
+  run.ds = steps.ds;
+  run.ds_min = steps.ds_min;
+  run.ds_max = steps.ds_max;
+  run.max_points = steps.max_points;
   run.path = kOneOffRunPath;
   run.output = output;
   SetRunFileStart(start, &run);
@@ -98,6 +103,13 @@ std::string RunFileText(const RunFile& run) {
                       run.trace ? "" : ", direction", Quoted(run.parameter));
   if (!run.trace) text += fmt::format("direction = \"{}\"\n", run.direction > 0 ? "up" : "down");
   text += fmt::format("range = [{}, {}]\n", ExactNumber(run.range_min), ExactNumber(run.range_max));
+  const RunFile defaults;
+  using Step = std::tuple<const char*, double, double>;  // the key, its value, its default
+  for (const auto& [key, value, default_value] : {Step{"ds", run.ds, defaults.ds}, Step{"ds_min", run.ds_min, defaults.ds_min},
+                                                  Step{"ds_max", run.ds_max, defaults.ds_max}}) {
+    if (value != default_value) text += fmt::format("{} = {}\n", key, ExactNumber(value));
+  }
+  if (run.max_points != defaults.max_points) text += fmt::format("max_points = {}\n", run.max_points);
   if (run.trace) text += "[trace]                                # both ways from the start, with the trace's defaults\n";
   return text;
 }

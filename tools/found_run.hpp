@@ -29,10 +29,11 @@ OmegaRange ParseOmegaRange(const char* field, const std::string& text);
 OmegaRange RangeAround(double omega);
 
 // The run from `start` in omega over `range`, into results/<output>/: a trace when `trace`, else
-// one branch upwards.
-RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace);
+// one branch upwards; with the steps of `steps` (its ds, ds_min, ds_max and max_points).
+RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const RunFile& steps);
 
-// `run` (a FoundRun) as the text of a run file, after kFoundRunFileMarker.
+// `run` (a FoundRun) as the text of a run file, after kFoundRunFileMarker; its steps where they
+// are not the defaults.
 std::string RunFileText(const RunFile& run);
 
 // A number as TOML and a command line take it back exactly: the shortest round-trip form, with

@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "stickslip/io/run_file.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
 
 #include "stickslip/named_values.hpp"
@@ -29,6 +30,7 @@ struct ModelFindArgs {
   std::string trace_parameter;   // the traced parameter; empty: omega, or v_b without forcing
   std::string output;            // with --trace: the trace's directory under `results`; empty: printed only
   std::string results = "results";
+  RunFile steps;                 // each branch's ds, ds_min, ds_max and max_points, with --trace
 };
 
 // --set NAME=VALUE ... (parameters, start-state components by name, phi) as named values, each a finite number (the model's reader checks the names

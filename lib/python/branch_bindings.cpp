@@ -171,10 +171,11 @@ ComputedRun Continue(const RunInput& input) {
 // label with switch_branch, as `restart = { run, label, switch_branch = true }` describes it.
 ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, const py::dict& o) {
   if (!from.setup) {
-    throw InvalidInput::WithMessage("label", fmt::format("label = '{}' is invalid: switching branches at a [model]'s "
-                                                         "bifurcation is not done in this version (trace() follows "
-                                                         "them: follow_bifurcations=)",
-                                                         label));
+    throw InvalidInput::WithMessage("label", fmt::format("label = '{}' is invalid: a [model]'s branch switches from its "
+                                                         "saved label: save() it, then continue_orbit(point='RUN:{}', "
+                                                         "switch_branch=True, results=...) (or trace() with "
+                                                         "follow_bifurcations=)",
+                                                         label, label));
   }
   const std::vector<StoredSpecialPoint>& rows = from.stored.special_points;
   const auto row = std::find_if(rows.begin(), rows.end(), [&](const StoredSpecialPoint& s) { return s.point.label == label; });
@@ -194,12 +195,7 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
   const auto given = [&](const char* key) { return o.contains(key) && !o[key].is_none(); };
   if (given("output")) run.output = o["output"].cast<std::string>();
   if (given("range")) std::tie(run.range_min, run.range_max) = o["range"].cast<std::pair<double, double>>();
-  if (given("ds")) run.ds = o["ds"].cast<double>();
-  if (given("ds_min")) run.ds_min = o["ds_min"].cast<double>();
-  if (given("ds_max")) run.ds_max = o["ds_max"].cast<double>();
-  if (given("max_points")) {
-    run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
-  }
+  run = WithSteps(std::move(run), o);
   CheckOneOffRun(run, fmt::format("{},{}", run.range_min, run.range_max));
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;
@@ -430,6 +426,18 @@ void BindSweep(py::module_& m) {
 }
 
 }  // namespace
+
+RunFile WithSteps(RunFile run, const py::dict& o) {
+  const auto given = [&](const char* key) { return o.contains(key) && !o[key].is_none(); };
+  if (given("ds")) run.ds = o["ds"].cast<double>();
+  if (given("ds_min")) run.ds_min = o["ds_min"].cast<double>();
+  if (given("ds_max")) run.ds_max = o["ds_max"].cast<double>();
+  if (given("max_points")) {
+    run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
+  }
+  CheckSteps(run);
+  return run;
+}
 
 int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
   const auto refuse = [&] { return InvalidInput(field, std::string(py::repr(value)), std::string(valid)); };

@@ -179,16 +179,19 @@ void BindTrace(py::module_& m) {
   m.def(
       "_trace_model",
       [](const std::string& path, const NamedValues& set, double transients, const std::string& parameter, double low,
-         double high, const py::dict& options) {
+         double high, const py::dict& options, const py::dict& steps) {
         const int periods = WholeNumber("transients", transients, kMinModelTransients, kMaxModelTransients);
         TraceOptions trace = TraceOptionsOf(options);
+        ContinuationOptions branches;
+        SetContinuationOptions(WithSteps(RunFile{}, steps), &branches);
         py::gil_scoped_release release;
         trace.progress = [](const Progress&) {
           const py::gil_scoped_acquire acquire;
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         };
         const ModelTraceRun run =
-            TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple, parameter, low, high, trace);
+            TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple, parameter, low, high, trace,
+                       branches);
         std::optional<StoredTrace> stored;
         if (run.trace && run.trace->HasBranches()) {
           stored = StoredModelTrace(run, path, set, "trace");
@@ -196,7 +199,7 @@ void BindTrace(py::module_& m) {
         return std::make_pair(ModelTraceJson(run), std::move(stored));
       },
       py::arg("path"), py::arg("set"), py::arg("transients"), py::arg("parameter"), py::arg("low"), py::arg("high"),
-      py::arg("options"));
+      py::arg("options"), py::arg("steps"));
   m.def("_trace_defaults", [] {
     const TraceOptions o;
     py::dict d;

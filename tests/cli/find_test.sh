@@ -49,6 +49,29 @@ for f in trace.csv branch-1/branch.csv branch-2/branch.csv; do
   cmp -s "$work/found/t41/$f" "$work/from-file/t41/$f" || fail "the run file's trace differs in $f"
 done
 
+# The steps of the trace's branches, as continue and trace take them (--ds, --ds-min, --ds-max,
+# --max-points): find --trace with them is trace by hand with them, file for file; the run file it
+# writes keeps those not at their defaults, and its run gives the same trace. Without --trace, or out
+# of range, they are refused before the work.
+"$bin" find --preset paper-4.1 --trace "$range" --max-points 6 --ds-max 0.02 --results "$work/found" --output steps \
+  --write-run "$work/steps.toml" --as trace > /dev/null 2> "$work/steps.err" || fail "find --trace with steps exits $?: $(cat "$work/steps.err")"
+eval "\"\$bin\" trace $solve_flags --parameter omega --range $range --max-points 6 --ds-max 0.02 --results \"\$work/by-hand\" --output steps" \
+  > /dev/null 2>&1 || fail "trace by hand with the steps exits $?"
+diff -r "$work/found/steps" "$work/by-hand/steps" > "$work/diff.txt" || fail "find --trace with steps differs from trace with them: $(head -5 "$work/diff.txt")"
+cmp -s "$work/found/steps/trace.csv" "$work/found/t41/trace.csv" && fail "--max-points 6 --ds-max 0.02 changed nothing in the trace"
+grep -q "^ds_max = 0.02$" "$work/steps.toml" && grep -q "^max_points = 6$" "$work/steps.toml" && ! grep -q "^ds = " "$work/steps.toml" ||
+  fail "the run file does not keep the steps given (only): $(cat "$work/steps.toml")"
+"$bin" run --results "$work/from-file" "$work/steps.toml" > /dev/null 2>&1 || fail "stickslip run of the run file with steps exits $?"
+cmp -s "$work/found/steps/trace.csv" "$work/from-file/steps/trace.csv" || fail "the run file's steps give another trace"
+for refused in "--max-points 6|max-points is taken with --trace only" "--ds 0.001|ds is taken with --trace only" \
+  "--trace $range --output s2 --ds 0.5|ds = 0.5 is invalid: valid range 0 < ds-min (1e-08) <= ds <= ds-max (0.05)" \
+  "--trace $range --output s2 --max-points 0|max-points = 0 is invalid"; do
+  "$bin" find --preset paper-4.1 ${refused%%|*} --results "$work/refused" > "$work/r.out" 2> "$work/r.err"
+  code=$?
+  [ "$code" -eq 2 ] && [ "$(wc -l < "$work/r.err")" -eq 1 ] && grep -qF "${refused#*|}" "$work/r.err" && [ ! -s "$work/r.out" ] &&
+    [ ! -e "$work/refused" ] || fail "find ${refused%%|*}: exit $code, $(cat "$work/r.err")"
+done
+
 # A run file inside the trace's own directory is refused before the work, even with --force: the trace
 # replaces that directory whole (before: a run file at branch-1/branch.csv was reported written and
 # then replaced, and one at trace.json replaced the trace's, which then refused to write, exit 2

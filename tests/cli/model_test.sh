@@ -343,6 +343,52 @@ assert len(natural) == 5 and all(abs(f - 2 * math.sin((2 * k - 1) * math.pi / 22
 summary = json.load(open(sys.argv[1] + "/branch-1/summary.json"))
 assert summary["model"] == "linear-oscillator" and json.load(open(sys.argv[1] + "/trace.json"))["model"] == "linear-oscillator"
 PY
+# The steps of its branches, as trace takes them: --max-points caps every branch's points (the chain's
+# first branch ends there), and a smaller --ds-max takes more points over the same branch.
+"$bin" find --model "$models/five-mass-chain.toml" --trace 0.55,0.7 --max-points 5 --json > "$work/steps.json" 2>&1 ||
+  fail "find --model --trace --max-points 5 exits $?: $(tail -2 "$work/steps.json")"
+"$bin" find --model "$models/five-mass-chain.toml" --trace 0.55,0.7 --ds-max 0.01 --json > "$work/fine.json" 2>&1 ||
+  fail "find --model --trace --ds-max 0.01 exits $?: $(tail -2 "$work/fine.json")"
+/usr/bin/python3 - "$work/steps.json" "$work/fine.json" "$work/chain.json" <<'PY' && pass || fail "find --model --trace ignores its steps"
+import json, sys
+capped, fine, default = (json.load(open(path)) for path in sys.argv[1:4])
+branches = [b for d in ("down", "up") for b in capped[d]["branches"]]
+assert all(len(b["points"]) <= 5 for b in branches), [len(b["points"]) for b in branches]
+assert any(b["end"] == "max-points" for b in branches), [b["end"] for b in branches]
+first = lambda t: t["up"]["branches"][0]["points"]
+assert len(first(fine)) > len(first(default)), (len(first(fine)), len(first(default)))
+PY
+expect 2 "max-points is taken with --trace only" "$bin" find --model "$models/belt.toml" --max-points 5
+
+# A [model]'s label restarts on the branch that leaves it (switch_branch = true): the five-mass
+# chain's antisymmetric period-3 orbit breaks its symmetry at SB2 (omega = 0.37506); the branch from
+# there is of the whole period's type, and its orbits are motions both simulators verify (solve at its
+# TR2). At a label that is no crossing, and with multiple shooting, it is refused naming the key.
+sed 's/omega = 0.6,/omega = 0.38,/' "$models/five-mass-chain.toml" > "$work/chain38.toml"
+"$bin" find --model "$work/chain38.toml" --trace 0.374,0.38 --output sb --results "$work/switch" > /dev/null 2>&1 &&
+  grep -q "^26,SB2,0.37505" "$work/switch/sb/branch-1/special-points.csv" && pass ||
+  fail "the chain's trace from omega = 0.38 has no SB2: $(cut -d, -f1-3 "$work/switch/sb/branch-1/special-points.csv")"
+printf '%s\n' 'output = "sb-switched"' '[start]' 'restart = { run = "branch-1", label = "SB2", switch_branch = true }' \
+  '[continuation]' 'parameter = "omega"' 'direction = "down"' 'range = [0.37, 0.38]' > "$work/switch.toml"
+"$bin" run --results "$work/switch/sb" "$work/switch.toml" > "$work/switch.txt" 2>&1 &&
+  grep -qF '"signature": "stick slip+ stick slip+ stick slip- stick slip- / period 3"' "$work/switch/sb/sb-switched/summary.json" &&
+  grep -q "^14,TR2," "$work/switch/sb/sb-switched/special-points.csv" && pass ||
+  fail "no branch of the whole period's type leaves SB2: $(cat "$work/switch.txt")"
+"$bin" solve --results "$work/switch/sb" --point sb-switched:TR2 --json > "$work/tr2.json" 2>&1 &&
+  /usr/bin/python3 -c '
+import json, sys
+o = json.load(open(sys.argv[1]))["orbit"]
+assert o["signature"] == "stick slip+ stick slip+ stick slip- stick slip- / period 3", o["signature"]
+assert o["verification"]["passed"] and o["admissible"], o["verification"]' "$work/tr2.json" && pass ||
+  fail "the switched branch's TR2 is no verified motion: $(tail -3 "$work/tr2.json")"
+sed 's/label = "SB2"/label = "EP1"/' "$work/switch.toml" > "$work/switch-ep.toml"
+expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (a EP): valid at a period doubling (PD) or a symmetry breaking (SB)" \
+  "$bin" run --results "$work/switch/sb" "$work/switch-ep.toml"
+printf 'shooting = "multiple"\n' >> "$work/switch.toml"
+expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" \
+  "$bin" run --results "$work/switch/sb" "$work/switch.toml"
+expect 2 "ds = 0.1 is invalid: valid range 0 < ds-min (1e-08) <= ds <= ds-max (0.05)" "$bin" find --model "$models/belt.toml" --trace 0.1,0.3 --ds 0.1
+
 echo mine > "$work/traces/chain/NOTES.md"
 "$bin" find --model "$models/five-mass-chain.toml" --trace 0.55,0.7 --output chain --results "$work/traces" > "$work/chain.txt" &&
   grep -q "kept 1 other file(s) of .*: NOTES.md" "$work/chain.txt" && [ "$(cat "$work/traces/chain/NOTES.md")" = mine ] && pass ||

@@ -177,6 +177,29 @@ TEST(BeltStickSlip, FrictionFallingWithSpeedGrowsSteadySlidingIntoTheSolvedCycle
   EXPECT_NEAR(v(2), stick, 1e-7);
   EXPECT_NEAR(v(3), slip, 1e-7);
   EXPECT_GT(SmallestMargin(AdmissibilityMargins(model, OrbitOf(v))).value, 0.0);
+  // Friction's work over the cycle, int (F_k + alpha |s|) |s| dt, against the power Odeint's
+  // motion dissipates, by the trapezoidal rule on one simulated cycle (the power is continuous,
+  // zero in the stick; its kink where the slip ends costs O(h^2)).
+  BasicSimulationOptions<Belt::State> cycle;
+  cycle.duration = v(2) + v(3);
+  cycle.sample_step = cycle.duration / 200000;
+  const auto sampled = SimulateOdeint(model, p, Belt::State(v(0), p.v_b), 0.0, cycle);
+  ASSERT_TRUE(sampled.Completed()) << sampled.message;
+  const auto power = [&](const Belt::State& x) {
+    const double s = x(1) - p.v_b;
+    return (p.F_k + data.friction_slope * std::abs(s)) * std::abs(s);
+  };
+  double work = 0.0;
+  for (std::size_t i = 1; i < sampled.samples.size(); ++i) {
+    const auto &before = sampled.samples[i - 1], &after = sampled.samples[i];
+    work += 0.5 * (power(before.state) + power(after.state)) * (after.t - before.t);
+  }
+  ASSERT_NEAR(sampled.samples.back().t, cycle.duration, 1e-9);
+  const double measured = Measure(model, OrbitOf(v)).friction_work;
+  EXPECT_NEAR(measured, work, 1e-8 * work);
+  // The slope's share is no rounding: without it the work is F_k times the distance slid relative
+  // to the belt, v_b times the cycle (the mass ends where it began).
+  EXPECT_GT(std::abs(measured - p.F_k * p.v_b * (v(2) + v(3))), 1e-3 * work);
   RecordProperty("cycle_stick_slip", fmt::format("{:.10g} {:.10g}", v(2), v(3)));
   RecordProperty("odeint_difference", fmt::format("{:.2g}", std::max(std::abs(v(2) - stick), std::abs(v(3) - slip))));
 }

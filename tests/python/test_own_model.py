@@ -76,8 +76,47 @@ def test_trace_is_the_command_lines_json_and_saves_its_files(tmp_path):
     loaded = stickslip.Trace.load(tmp_path / "python" / "belt")
     assert len(loaded.files()["trace.csv"].splitlines()) == 1 + sum(
         len(b["points"]) for d in ("down", "up") for b in traced[d]["branches"])
-    with pytest.raises(TypeError, match="ds"):
+    # .trace is the same trace as a Trace (named "trace" until saved), which plot() draws.
+    assert traced.trace.files()["trace.csv"] == loaded.files()["trace.csv"]
+    assert traced.plot().axes
+    with pytest.raises(TypeError, match="shooting"):
+        stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", shooting="single")
+
+
+def test_a_models_label_switches_branch_as_a_run_file_does(tmp_path):
+    # The five-mass chain's antisymmetric period-3 orbit breaks its symmetry at SB2 (omega = 0.37506):
+    # continue_orbit(switch_branch=True) from the saved label is the run file's restart with
+    # switch_branch = true, byte for byte, on the whole period's type.
+    chain = tmp_path / "chain38.toml"
+    chain.write_text((MODELS / "five-mass-chain.toml").read_text().replace("omega = 0.6,", "omega = 0.38,"))
+    stickslip.trace("omega", (0.374, 0.38), model=chain).save(tmp_path / "sb")
+    branch = stickslip.continue_orbit(point="branch-1:SB2", results=tmp_path / "sb", switch_branch=True,
+                                      parameter="omega", range=(0.37, 0.38), direction="down", output="switched")
+    assert branch.signature == "stick slip+ stick slip+ stick slip- stick slip- / period 3"
+    branch.save(tmp_path / "sb" / "python")
+    (tmp_path / "switch.toml").write_text('output = "switched"\n[start]\nrestart = { run = "branch-1", label = "SB2", '
+                                          'switch_branch = true }\n[continuation]\nparameter = "omega"\n'
+                                          'direction = "down"\nrange = [0.37, 0.38]\n')
+    done = cli("run", "--results", tmp_path / "sb", tmp_path / "switch.toml")
+    assert done.returncode == 0, done.stderr
+    for name in ("branch.csv", "special-points.csv"):
+        assert (tmp_path / "sb" / "python" / name).read_bytes() == (tmp_path / "sb" / "switched" / name).read_bytes()
+
+
+def test_trace_takes_the_steps_of_its_branches_as_the_command_line():
+    # max_points and ds_max as find --model --trace's --max-points and --ds-max: the same JSON, and
+    # every branch within its points; bad steps raise the command line's message.
+    traced = stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", max_points=4, ds_max=0.02)
+    import json
+    assert traced == json.loads(cli("find", "--model", MODELS / "belt-damped.toml", "--trace", "0.1,1.0", "--max-points",
+                                    4, "--ds-max", 0.02, "--json").stdout)
+    branches = [b for d in ("down", "up") for b in traced[d]["branches"]]
+    assert all(len(b["points"]) <= 4 for b in branches) and any(b["end"] == "max-points" for b in branches)
+    with pytest.raises(ValueError) as python:
         stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", ds=0.1)
+    assert str(python.value) == cli_error("find", "--model", MODELS / "belt-damped.toml", "--trace", "0.1,1.0", "--ds", 0.1)
+    with pytest.raises(ValueError, match="max-points"):
+        stickslip.trace("v_b", (0.1, 1.0), model=MODELS / "belt-damped.toml", max_points=0)
 
 
 def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orbit(tmp_path):
@@ -115,7 +154,7 @@ def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orb
     assert done.returncode == 0, done.stderr
     for name in ("branch.csv", "special-points.csv"):
         assert (tmp_path / "chain" / "up" / name).read_bytes() == (tmp_path / "chain" / "cli-up" / name).read_bytes()
-    with pytest.raises(ValueError, match="switching branches at a \\[model\\]'s bifurcation"):
+    with pytest.raises(ValueError, match="a \\[model\\]'s branch switches from its saved label"):
         branch.switch("EP1")
     # solve at the UZ label (F_s = 0.5): the orbit the motion from rest settles on (find's), and what
     # `stickslip solve --point --json` prints; a start keyword beside it is refused.

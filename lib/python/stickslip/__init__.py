@@ -287,19 +287,27 @@ def _refuse_paper_start(parameters, state, phi, preset, point, results, others=(
 
 
 
-def _trace_model(parameter, range, options, *, model, set=None, transients=1000, **others):
+def _trace_model(parameter, range, options, *, model, set=None, transients=1000, ds=None, ds_min=None, ds_max=None,
+                 max_points=None, **others):
     if others:
         raise TypeError(f"trace() got an unexpected keyword argument '{next(iter(others))}' with model= (it takes "
-                        "set= and transients=)")
+                        "set=, transients=, ds=, ds_min=, ds_max= and max_points=)")
     low, high = _pair(range, "range")
+    given = {"ds": (ds, "number"), "ds_min": (ds_min, "number"), "ds_max": (ds_max, "number"),
+             "max_points": (max_points, "count")}
+    steps = {key: None if value is None else _checked(value, key, kind) for key, (value, kind) in given.items()}
     text, stored = _core._trace_model(_checked(model, "model", "path"), _model_set(set),
                                       _checked(transients, "transients", "number"),
-                                      _checked(parameter, "parameter", "text"), low, high, options)
+                                      _checked(parameter, "parameter", "text"), low, high, options, steps)
     return ModelTrace(_json.loads(text), stored)
 
 
 class ModelTrace(dict):
-    """trace(model=...)'s result: the JSON of `stickslip find --model --trace --json` as a dict."""
+    """trace(model=...)'s result: the JSON of `stickslip find --model --trace --json` as a dict:
+    "parameter", "start" (the orbit found, as find(model=) gives it), "completed" (True when both
+    directions ran to their ends, whatever those were; False when a branch failed or none started),
+    "down" and "up" (each its "end", "message" and "branches", every point's columns by name).
+    .trace is the same trace as a Trace (plot(), to_pandas(), files()); None where no branch started."""
 
     def __init__(self, printed, stored):
         super().__init__(printed)
@@ -308,6 +316,17 @@ class ModelTrace(dict):
     def __reduce__(self):
         # A copy or a pickle is the dict: the stored trace it would save is a C++ object.
         return (dict, (dict(self),))
+
+    @property
+    def trace(self):
+        """The trace as a Trace, as Trace.load reads it back after save(); None where no branch started."""
+        return None if self._stored is None else Trace(self._stored)
+
+    def plot(self, **options):
+        """The trace's response as Trace.plot draws it (its keywords); ValueError where no branch started."""
+        if self._stored is None:
+            raise ValueError("the trace has no branch to plot (no branch started)")
+        return Trace(self._stored).plot(**options)
 
     def save(self, directory):
         """Writes the trace's files into `directory` as `stickslip find --model --trace --output`
@@ -441,10 +460,11 @@ def trace(parameter, range, *, max_branches=_TRACE_DEFAULTS["max_branches"],
     model=path (with set= a dict over the file's parameters and transients=, as find(model=...)):
     an oscillator of your own traced in one of its parameters (omega, F_k, F_s, v_b) from the orbit
     its motion from rest settles on, as `stickslip find --model path --trace LO,HI --trace-parameter
-    NAME --json`; returns that JSON as a dict, a ModelTrace (start: the orbit found; down, up: their
-    end, message and branches, each with every point's columns by name), whose save(directory)
-    writes the files --output writes (stickslip.Trace.load reads them back). Of continue_orbit's
-    keywords none is taken with it.
+    NAME --json`; returns that JSON as a dict, a ModelTrace (start: the orbit found; completed; down,
+    up: their end, message and branches, each with every point's columns by name), whose
+    save(directory) writes the files --output writes (stickslip.Trace.load reads them back), whose
+    plot() draws it and whose .trace is it as a Trace. Of continue_orbit's keywords only the steps
+    of every branch are taken with it: ds, ds_min, ds_max and max_points.
     """
     options = {"max_branches": _checked(max_branches, "max_branches", "count"),
                "max_amplitude": _checked(max_amplitude, "max_amplitude", "number"),

@@ -98,14 +98,18 @@ int ContinuationDirection(std::string_view direction) {
   throw InvalidInput("direction", fmt::format("'{}'", direction), "up, down");
 }
 
-void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
-  if (!(run.range_min < run.range_max)) {
-    throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX with MIN < MAX");
-  }
+void CheckSteps(const RunFile& run) {
   if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
     throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
   }
   WholeNumber("max-points", run.max_points, 1, kMaxRunPoints);
+}
+
+void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
+  if (!(run.range_min < run.range_max)) {
+    throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX with MIN < MAX");
+  }
+  CheckSteps(run);
   if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
     throw InvalidInput("max-amplitude", run.max_amplitude, "a finite max-amplitude > 0");
   }

@@ -7,10 +7,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "stickslip/branches/model_bifurcation_branches.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/switched_restart.hpp"
 #include "stickslip/io/trace_files.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit_solver.hpp"
@@ -36,7 +38,6 @@ std::vector<PaperOnlyKey> PaperOnlyKeys(const RunFile& run) {
           {"start.guess", !run.guess.empty()},
           {"unknowns.free", !run.free.empty()},
           {"unknowns.tie_u_r", run.tie_u_r},
-          {"start.restart.switch_branch", run.restart_switch_branch},
           {"start.restart.boundary", !run.restart_boundary.empty()}};
 }
 
@@ -178,11 +179,14 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
                                            *LinearSolverFromString(run.linear_solver), {}, {}, {}, {},
                                            run.max_amplitude, run.resonance_approach, model};
   SetContinuationOptions(run, &setup.options);
-  // User values address the unknowns: the free variables in their order, then the parameter.
-  std::vector<int> order = FreeIndices(variables, unknowns);
-  order.push_back(variables.layout.Parameter(k));
+  if (run.restart_switch_branch) setup = SwitchedAtLabel(run, setup);
+  // User values address the unknowns: the free variables in their order, then the parameter (of the
+  // branch that leaves the point, where the switch changed its type).
+  const OrbitVariableSet continued = VariableSetOf(model, setup.start.signature);
+  std::vector<int> order = FreeIndices(continued, setup.unknowns);
+  order.push_back(continued.layout.Parameter(k));
   setup.options.user_values =
-      UserValuesOf(run, order, [&variables](const std::string& name) { return variables.layout.IndexOf(name); });
+      UserValuesOf(run, order, [&continued](const std::string& name) { return continued.layout.IndexOf(name); });
   return ModelRunSetup{std::move(at.file), std::move(at.run_file), std::move(setup)};
 }
 

@@ -45,7 +45,7 @@ Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std
 }  // namespace
 
 ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
-                         double low, double high, TraceOptions options) {
+                         double low, double high, TraceOptions options, const ContinuationOptions& branches) {
   // The parameter and the range before the work.
   const int k = start.model.Description().VariedParameter("parameter", parameter, start.model.Autonomous());
   const double value = Model::ParameterAt(start.parameters, k);
@@ -54,6 +54,11 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
                        fmt::format("finite LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
   }
   options.Validate();
+  ContinuationOptions continuation = branches;  // checked before the work, with the trace's range
+  continuation.lambda_min = low;
+  continuation.lambda_max = high;
+  continuation.parameter_index = 0;  // the setup's (OrbitContinuationSetup)
+  continuation.Validate();
   ModelTraceRun run{FindModelOrbitOf(start, transients, max_multiple, options.progress), std::nullopt};
   if (run.find.found.status != FindOrbitStatus::kFound) return run;
   BasicOrbitContinuationSetup<Model> setup{ContinuableIn(run.find.found.solution->orbit, k),
@@ -61,12 +66,11 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
                                            parameter,
                                            ShootingChoice::kAuto,
                                            LinearSolverType::kKlu,
-                                           {}, {}, {}, {},
+                                           continuation,
+                                           {}, {}, {},
                                            kDefaultMaxAmplitude,
                                            kDefaultResonanceApproach,
                                            run.find.model};
-  setup.options.lambda_min = low;
-  setup.options.lambda_max = high;
   run.trace = TraceOrbits(setup, options);
   return run;
 }

@@ -8,6 +8,7 @@
 #include "stickslip/branches/boundary_curve.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/start_input.hpp"
+#include "stickslip/io/switched_restart.hpp"
 
 namespace stickslip {
 
@@ -74,29 +75,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   if (run.restart_switch_branch && !run.restart_boundary.empty()) {
     throw fail("start.restart.boundary", "cannot go with switch_branch: give one of them");
   }
-  if (run.restart_switch_branch) {
-    if (setup.shooting == ShootingChoice::kMultiple) {
-      throw fail("continuation.shooting", "= \"multiple\" is invalid with start.restart.switch_branch: valid \"auto\" "
-                                          "or \"single\" (the branch that leaves a bifurcation is solved by single shooting)");
-    }
-    // The label's letters are its type (LP2: LP).
-    const std::string& label = run.restart_label;
-    const std::string type = label.substr(0, label.find_first_of("0123456789"));
-    try {
-      const BifurcationBranchStart start = BranchFromBifurcation(type, setup, run.direction);
-      // The tests see 1e-16 .. 1e-7 at located points; far above, the stored point is no crossing.
-      if (!(start.singularity <= 1e-6)) {
-        throw InvalidInput("special point", fmt::format("{}", start.singularity),
-                           "a crossing of branches: the Jacobian's smallest singular value, relative, <= 1e-6");
-      }
-      setup = start.setup;
-    } catch (const InvalidInput& e) {
-      throw fail("start.restart.switch_branch",
-                 e.valid_range().empty()
-                     ? fmt::format("= true is invalid at '{}': {}", label, e.Predicate())
-                     : fmt::format("= true is invalid at '{}' (a {}): valid at {}", label, type, e.valid_range()));
-    }
-  }
+  if (run.restart_switch_branch) setup = SwitchedAtLabel(run, setup);
   if (!run.restart_boundary.empty()) {
     // A type change is its margin's (the test function), the others their type (LP2: LP).
     const std::string& label = run.restart_label;

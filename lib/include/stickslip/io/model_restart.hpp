@@ -86,10 +86,11 @@ BasicOrbit<DynamicLinearOscillator> ContinuableIn(BasicOrbit<DynamicLinearOscill
 
 // nullopt when run.restart_run is no [model]'s run (HoldsModelRun). Otherwise the setup at the
 // label, in run.parameter (any of the model's parameters its forcing lets vary) over run.range with
-// run's continuation keys. Throws RunFileError at the key: start.restart (no such label, the model's
-// run file missing or no longer the run's model), continuation.parameter, continuation.range (not
-// holding the label's value), and for the keys only the paper's model takes (start.set, start.guess,
-// unknowns.*, continuation.user_values_of, start.restart.switch_branch, start.restart.boundary).
+// run's continuation keys; with start.restart.switch_branch the branch that leaves the label (a PD
+// or an SB: switched_restart.hpp). Throws RunFileError at the key: start.restart (no such label, the
+// model's run file missing or no longer the run's model), continuation.parameter, continuation.range
+// (not holding the label's value), as SwitchedAtLabel does, and for the keys only the paper's model
+// takes (start.set, start.guess, unknowns.*, start.restart.boundary).
 std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root);
 
 }  // namespace stickslip

@@ -364,11 +364,8 @@ class LinearOscillator {
   }
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.F_s; }
-  // The kinetic level; with a friction slope it varies along a slip, and the friction work (which
-  // would need int alpha s^2 dt) is not computed: nan.
-  double KineticForce(const Parameters& p) const {
-    return friction_slope_ == 0.0 ? p.F_k : std::numeric_limits<double>::quiet_NaN();
-  }
+  double KineticForce(const Parameters& p) const { return p.F_k; }
+  double FrictionSlope() const { return friction_slope_; }
   bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.F_s - p.F_k) <= 1e-12 * p.F_s; }
   Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {
     return CoulombModeAtRest(StickForce(x, phase, p), p.F_s, [&] { return StickForceRate(x, phase, p); });

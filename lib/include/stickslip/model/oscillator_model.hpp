@@ -121,8 +121,10 @@ concept OscillatorModel =
       { model.StickForce(x, phase, p) } -> std::same_as<double>;
       { model.StickForceRate(x, phase, p) } -> std::same_as<double>;
       { model.StaticThreshold(p) } -> std::same_as<double>;
-      // The kinetic friction force in a slip, in the units of the stick force.
+      // The friction force in a slip, in the units of the stick force: F_k + alpha |s| opposing the
+      // slip speed s, the kinetic level F_k and its slope alpha (0: Coulomb's constant level).
       { model.KineticForce(p) } -> std::same_as<double>;
+      { model.FrictionSlope() } -> std::same_as<double>;
       { model.AbnormalStopsPossible(p) } -> std::same_as<bool>;
       { model.ModeFromRest(x, phase, p) } -> std::same_as<Mode>;
       // Along a motion, for the root finder.

@@ -111,6 +111,7 @@ struct Pascal2014 {
   template <typename T>
   T StaticThreshold(const ParametersT<T>& p) const { return p.eta * p.u_r; }  // eq. (4)
   double KineticForce(const Parameters& p) const { return p.eta * p.u_s; }  // eq. (2)
+  double FrictionSlope() const { return 0.0; }
   // u_r = u_s (eq. 25, ERRATA): a slip may touch rest and go on.
   bool AbnormalStopsPossible(const Parameters& p) const { return std::abs(p.u_r - p.u_s) <= 1e-12 * p.u_r; }
   Mode ModeFromRest(const State& x, double phase, const Parameters& p) const {

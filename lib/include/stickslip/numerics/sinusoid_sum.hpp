@@ -39,6 +39,9 @@ class SinusoidSum {
   double Scale() const;
   // Every coefficient and frequency finite.
   bool IsFinite() const;
+  double constant() const { return constant_; }
+  double slope() const { return slope_; }
+  const std::vector<Sinusoid>& terms() const { return terms_; }
 
  private:
   double constant_ = 0.0;

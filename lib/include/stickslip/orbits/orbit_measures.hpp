@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "stickslip/model/oscillator_model.hpp"
+#include "stickslip/numerics/integral_of_square.hpp"
 #include "stickslip/numerics/sinusoid_sum.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
@@ -58,9 +59,10 @@ struct BasicOrbitMeasures {
   double stick_fraction = 0.0;
   int stops = 0;
   int sticks = 0;
-  // Per period: F_k times the distance the contact slides relative to its surface (in each slip
-  // s keeps its sign, so that distance is |the contact coordinate's change - v_b d|), in the
-  // model's units of force times length.
+  // Per period: int (F_k + alpha |s|) |s| dt over the slips, in the model's units of force times
+  // length: F_k times the distance the contact slides relative to its surface (in each slip s keeps
+  // its sign, so that distance is |the contact coordinate's change - v_b d|), plus alpha int s^2 dt
+  // (integral_of_square.hpp) where the friction has a slope alpha. NaN where that overflows.
   double friction_work = 0.0;
   // The viscous coefficient c that dissipates as much on the contact's coordinate moving as
   // X cos(w t) (X half its peak-to-peak, w = 2 pi / period): c = W / (pi w X^2).
@@ -83,10 +85,12 @@ BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   m.coordinates.resize(model.Description().coordinates.size());
   const int contact = ContactCoordinate(model);
   const double rest_velocity = RestVelocity<Model>(orbit.parameters, 0.0);
-  double stick_time = 0.0, slid = 0.0;
+  const double slope = model.FrictionSlope();
+  double stick_time = 0.0, slid = 0.0, squared_speed = 0.0;  // int s^2 dt over the slips
   WalkSegments(model, orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double, Model>& s) {
     const bool stick = s.spec.mode == Mode::kStick;
     if (!stick) slid += std::abs(s.end(contact) - s.start(contact) - rest_velocity * s.duration);
+    if (!stick && slope != 0.0) squared_speed += IntegralOfSquare(model.ContactVelocityAlong(s.motion), s.duration);
     for (std::size_t i = 0; i < m.coordinates.size(); ++i) {
       const int k = static_cast<int>(i);
       if (stick && model.HeldInStick(k)) {
@@ -107,7 +111,8 @@ BasicOrbitMeasures Measure(const Model& model, const BasicOrbit<Model>& orbit) {
   const double covered = period * orbit.signature.CoveredFraction();
   m.stick_fraction = stick_time / covered;
   for (Mode mode : orbit.signature.FullPeriod()) ++(mode == Mode::kStick ? m.sticks : m.stops);
-  m.friction_work = model.KineticForce(orbit.parameters) * slid / orbit.signature.CoveredFraction();
+  m.friction_work = (model.KineticForce(orbit.parameters) * slid + slope * squared_speed) /
+                    orbit.signature.CoveredFraction();
   const double amplitude = 0.5 * m.coordinates[contact].PeakToPeak();
   m.equivalent_damping = amplitude > 0.0 ? m.friction_work / (std::numbers::pi * (2.0 * std::numbers::pi / period) * amplitude * amplitude)
                                          : std::numeric_limits<double>::quiet_NaN();
