@@ -21,18 +21,18 @@ bool ParseSwitch(const char* field, const std::string& text) {
 
 }  // namespace
 
-void AddStepFlags(CLI::App& cmd, RunFile* run, const std::string& scope) {
-  AddNumberOption(cmd, "--ds", &run->ds, "0 < ds-min <= ds <= ds-max", "initial arclength step (> 0)" + scope);
-  AddNumberOption(cmd, "--ds-min", &run->ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)" + scope);
-  AddNumberOption(cmd, "--ds-max", &run->ds_max, "0 < ds-min <= ds <= ds-max", "largest step" + scope);
-  AddCountOption(cmd, "--max-points", &run->max_points, 1, kMaxRunPoints, "accepted points (1 to 1e6)" + scope);
+void AddStepFlags(CLI::App& cmd, BranchSteps* steps, const std::string& scope) {
+  AddNumberOption(cmd, "--ds", &steps->ds, "0 < ds-min <= ds <= ds-max", "initial arclength step (> 0)" + scope);
+  AddNumberOption(cmd, "--ds-min", &steps->ds_min, "0 < ds-min <= ds <= ds-max", "smallest step (> 0)" + scope);
+  AddNumberOption(cmd, "--ds-max", &steps->ds_max, "0 < ds-min <= ds <= ds-max", "largest step" + scope);
+  AddCountOption(cmd, "--max-points", &steps->max_points, 1, kMaxRunPoints, "accepted points (1 to 1e6)" + scope);
 }
 
 void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
   AddStartOptions(cmd, &args->start, StartOptions::kOrbit);
   cmd.add_option("--parameter", args->run.parameter, "continued variable (omega, u_r, u_s, chi, eta, ...)")->required();
   cmd.add_option("--range", args->range, "MIN,MAX of the parameter")->type_name("MIN,MAX")->required();
-  AddStepFlags(cmd, &args->run, "");
+  AddStepFlags(cmd, &args->run.steps, "");
   AddNumberOption(cmd, "--resonance-approach", &args->run.resonance_approach, "0 <= resonance-approach < 1",
                   "a branch of orbits that never stick ends as a resonance at its first point within this "
                   "(relative) of a natural frequency of the undamped slip that it approaches (0: never)");

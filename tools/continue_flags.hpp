@@ -25,8 +25,9 @@ struct ContinueArgs {
 };
 
 // --ds, --ds-min, --ds-max and --max-points (a branch's steps, the run file's keys of those names)
-// into `run`; `scope` ends each option's help (" of each branch, with --trace").
-void AddStepFlags(CLI::App& cmd, RunFile* run, const std::string& scope);
+// into `steps`; `scope` ends each option's help (find's ", of each branch (with --trace or
+// --write-run)").
+void AddStepFlags(CLI::App& cmd, BranchSteps* steps, const std::string& scope);
 
 // The start options, --parameter, --range, --ds, --ds-min, --ds-max, --max-points, --user-value,
 // --shooting, --linear-solver, --detect-folds, --detect-branch-points, --output and --results.

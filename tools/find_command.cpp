@@ -52,14 +52,17 @@ struct FindArgs {
   bool force = false;
   std::string model;  // --model FILE: a user's oscillator (model_find.hpp)
   std::string trace_parameter;  // --trace-parameter, with --model
-  RunFile steps;  // --ds, --ds-min, --ds-max, --max-points: each branch's, with --trace
+  BranchSteps steps;  // --ds, --ds-min, --ds-max, --max-points: each branch's, with --trace or --write-run
 };
 
-// The step options, taken with --trace only (checked as continue checks them).
+// The step options, taken where find runs branches or writes a run file that does (checked as
+// continue checks them).
 void CheckStepOptions(const FindArgs& args, const CLI::App& cmd) {
+  const bool branches = !args.trace.empty() || (args.write_run_given && cmd.count("--model") == 0);
   for (const char* option : {"--ds", "--ds-min", "--ds-max", "--max-points"}) {
-    if (cmd.count(option) == 0 || !args.trace.empty()) continue;
-    throw InvalidInput::WithMessage(option + 2, fmt::format("{} is taken with --trace only (the steps of its branches)", option));
+    if (cmd.count(option) == 0 || branches) continue;
+    throw InvalidInput(option + 2, cmd.get_option(option)->as<std::string>(),
+                       "with --trace or --write-run (the steps of their branches)");
   }
   CheckSteps(args.steps);
 }
@@ -318,7 +321,7 @@ Command AddFindCommand(CLI::App& app) {
                   "without forcing); the trace is printed (the branches, and with --json every point), and written with "
                   "--output")
       ->type_name("NAME");
-  AddStepFlags(*cmd, &args->steps, ", of each branch (with --trace)");
+  AddStepFlags(*cmd, &args->steps, ", of each branch (with --trace or --write-run)");
   return {cmd, [args, cmd] {
             CheckStepOptions(*args, *cmd);
             if (cmd->count("--model") != 0) return RunModelFindOf(*args, *cmd);

@@ -76,12 +76,9 @@ OmegaRange RangeAround(double omega) {
   return {std::stod(Rounded(std::max(kMinOmega, 0.9 * omega))), std::stod(Rounded(std::min(kMaxOmega, 1.1 * omega)))};
 }
 
-RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const RunFile& steps) {
+RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const BranchSteps& steps) {
   RunFile run;
-  run.ds = steps.ds;
-  run.ds_min = steps.ds_min;
-  run.ds_max = steps.ds_max;
-  run.max_points = steps.max_points;
+  run.steps = steps;
   run.path = kOneOffRunPath;
   run.output = output;
   SetRunFileStart(start, &run);
@@ -103,13 +100,14 @@ std::string RunFileText(const RunFile& run) {
                       run.trace ? "" : ", direction", Quoted(run.parameter));
   if (!run.trace) text += fmt::format("direction = \"{}\"\n", run.direction > 0 ? "up" : "down");
   text += fmt::format("range = [{}, {}]\n", ExactNumber(run.range_min), ExactNumber(run.range_max));
-  const RunFile defaults;
+  const BranchSteps& steps = run.steps;
+  const BranchSteps defaults;
   using Step = std::tuple<const char*, double, double>;  // the key, its value, its default
-  for (const auto& [key, value, default_value] : {Step{"ds", run.ds, defaults.ds}, Step{"ds_min", run.ds_min, defaults.ds_min},
-                                                  Step{"ds_max", run.ds_max, defaults.ds_max}}) {
+  for (const auto& [key, value, default_value] : {Step{"ds", steps.ds, defaults.ds}, Step{"ds_min", steps.ds_min, defaults.ds_min},
+                                                  Step{"ds_max", steps.ds_max, defaults.ds_max}}) {
     if (value != default_value) text += fmt::format("{} = {}\n", key, ExactNumber(value));
   }
-  if (run.max_points != defaults.max_points) text += fmt::format("max_points = {}\n", run.max_points);
+  if (steps.max_points != defaults.max_points) text += fmt::format("max_points = {}\n", steps.max_points);
   if (run.trace) text += "[trace]                                # both ways from the start, with the trace's defaults\n";
   return text;
 }

@@ -29,8 +29,8 @@ OmegaRange ParseOmegaRange(const char* field, const std::string& text);
 OmegaRange RangeAround(double omega);
 
 // The run from `start` in omega over `range`, into results/<output>/: a trace when `trace`, else
-// one branch upwards; with the steps of `steps` (its ds, ds_min, ds_max and max_points).
-RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const RunFile& steps);
+// one branch upwards; its branches stepping as `steps`.
+RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const BranchSteps& steps);
 
 // `run` (a FoundRun) as the text of a run file, after kFoundRunFileMarker; its steps where they
 // are not the defaults.

@@ -18,7 +18,6 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_find.hpp"
 #include "stickslip/io/model_trace.hpp"
-#include "stickslip/io/run.hpp"
 #include "stickslip/io/trace_files.hpp"
 #include "trace_run.hpp"
 
@@ -58,7 +57,7 @@ std::string Text(const Model& model, const Found& r) {
   out += fmt::format("  stick fraction {:.6g}, stops {}, sticks {}\n", r.measures->stick_fraction, r.measures->stops,
                      r.measures->sticks);
   out += std::isnan(r.measures->friction_work)
-             ? "  friction work and equivalent viscous damping: not defined (nan)\n"
+             ? "  friction work and equivalent viscous damping: not computed (nan: the closed form overflows)\n"
              : fmt::format("  friction work {:.10g} {} per period, equivalent viscous damping {:.6g} {}\n",
                            r.measures->friction_work, d.units.Energy(), r.measures->equivalent_damping,
                            d.units.ViscousDamping());
@@ -117,10 +116,8 @@ ModelTraceRun FindAndTrace(const ModelFindArgs& args, ProgressLine& line) {
                                                               : "omega";
   TraceOptions options;
   options.progress = line.Callback();
-  ContinuationOptions branches;
-  SetContinuationOptions(args.steps, &branches);
   try {
-    return TraceModel(start, transients, max_multiple, parameter, low, high, options, branches);
+    return TraceModel(start, transients, max_multiple, parameter, low, high, options, args.steps);
   } catch (const InvalidInput& e) {  // the library's names, as the options name them
     if (e.field() == "range") throw e.Renamed("trace");
     if (e.field() == "parameter") throw e.Renamed("trace-parameter");

@@ -30,7 +30,7 @@ struct ModelFindArgs {
   std::string trace_parameter;   // the traced parameter; empty: omega, or v_b without forcing
   std::string output;            // with --trace: the trace's directory under `results`; empty: printed only
   std::string results = "results";
-  RunFile steps;                 // each branch's ds, ds_min, ds_max and max_points, with --trace
+  BranchSteps steps;             // each branch's, with --trace
 };
 
 // --set NAME=VALUE ... (parameters, start-state components by name, phi) as named values, each a finite number (the model's reader checks the names

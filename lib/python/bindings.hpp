@@ -44,9 +44,9 @@ std::pair<std::filesystem::path, std::string> SplitRunDirectory(const std::strin
 int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid);
 bool KeywordTrueOrFalse(const py::handle& value, const std::string& field);
 
-// `run` with the steps given in `o` (its keys ds, ds_min, ds_max and max_points, where not None),
-// checked as a run given by its keys (CheckSteps; InvalidInput naming "ds" or "max-points").
-RunFile WithSteps(RunFile run, const py::dict& o);
+// `steps` with those given in `o` (its keys ds, ds_min, ds_max and max_points, where not None), not
+// yet checked (CheckSteps, or CheckOneOffRun with the rest of a run).
+BranchSteps StepsOf(const py::dict& o, BranchSteps steps);
 
 // Raises stickslip.ConvergenceError(message) with its `summary` attribute set (a dict).
 [[noreturn]] void RaiseConvergenceError(const std::string& message, py::dict summary);

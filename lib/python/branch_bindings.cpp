@@ -71,12 +71,9 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   const auto range = o["range"].cast<std::pair<double, double>>();
   run.range_min = range.first;
   run.range_max = range.second;
-  run.ds = o["ds"].cast<double>();
-  run.ds_min = o["ds_min"].cast<double>();
-  run.ds_max = o["ds_max"].cast<double>();
+  run.steps = StepsOf(o, run.steps);
   run.max_amplitude = o["max_amplitude"].cast<double>();
   run.resonance_approach = o["resonance_approach"].cast<double>();
-  run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
@@ -171,11 +168,10 @@ ComputedRun Continue(const RunInput& input) {
 // label with switch_branch, as `restart = { run, label, switch_branch = true }` describes it.
 ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, const py::dict& o) {
   if (!from.setup) {
-    throw InvalidInput::WithMessage("label", fmt::format("label = '{}' is invalid: a [model]'s branch switches from its "
-                                                         "saved label: save() it, then continue_orbit(point='RUN:{}', "
-                                                         "switch_branch=True, results=...) (or trace() with "
-                                                         "follow_bifurcations=)",
-                                                         label, label));
+    throw InvalidInput("label", "'" + label + "'",
+                       fmt::format("a label of a saved branch for a [model]'s: save() it, then continue_orbit(point="
+                                   "'RUN:{}', switch_branch=True, results=...) (or trace() with follow_bifurcations=)",
+                                   label));
   }
   const std::vector<StoredSpecialPoint>& rows = from.stored.special_points;
   const auto row = std::find_if(rows.begin(), rows.end(), [&](const StoredSpecialPoint& s) { return s.point.label == label; });
@@ -195,7 +191,7 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
   const auto given = [&](const char* key) { return o.contains(key) && !o[key].is_none(); };
   if (given("output")) run.output = o["output"].cast<std::string>();
   if (given("range")) std::tie(run.range_min, run.range_max) = o["range"].cast<std::pair<double, double>>();
-  run = WithSteps(std::move(run), o);
+  run.steps = StepsOf(o, run.steps);
   CheckOneOffRun(run, fmt::format("{},{}", run.range_min, run.range_max));
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;
@@ -427,16 +423,15 @@ void BindSweep(py::module_& m) {
 
 }  // namespace
 
-RunFile WithSteps(RunFile run, const py::dict& o) {
+BranchSteps StepsOf(const py::dict& o, BranchSteps steps) {
   const auto given = [&](const char* key) { return o.contains(key) && !o[key].is_none(); };
-  if (given("ds")) run.ds = o["ds"].cast<double>();
-  if (given("ds_min")) run.ds_min = o["ds_min"].cast<double>();
-  if (given("ds_max")) run.ds_max = o["ds_max"].cast<double>();
+  if (given("ds")) steps.ds = o["ds"].cast<double>();
+  if (given("ds_min")) steps.ds_min = o["ds_min"].cast<double>();
+  if (given("ds_max")) steps.ds_max = o["ds_max"].cast<double>();
   if (given("max_points")) {
-    run.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
+    steps.max_points = KeywordWholeNumber(o["max_points"], "max-points", WholeNumberRange("max-points", 1, kMaxRunPoints));
   }
-  CheckSteps(run);
-  return run;
+  return steps;
 }
 
 int KeywordWholeNumber(const py::handle& value, const std::string& field, std::string_view valid) {
@@ -481,10 +476,10 @@ void BindBranches(py::module_& m) {
   m.def("_continuation_defaults", [] {
     const RunFile run;
     py::dict d;
-    d["ds"] = run.ds;
-    d["ds_min"] = run.ds_min;
-    d["ds_max"] = run.ds_max;
-    d["max_points"] = run.max_points;
+    d["ds"] = run.steps.ds;
+    d["ds_min"] = run.steps.ds_min;
+    d["ds_max"] = run.steps.ds_max;
+    d["max_points"] = run.steps.max_points;
     d["shooting"] = run.shooting;
     d["linear_solver"] = run.linear_solver;
     d["detect_folds"] = run.detect_folds;

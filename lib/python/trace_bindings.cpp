@@ -180,10 +180,10 @@ void BindTrace(py::module_& m) {
       "_trace_model",
       [](const std::string& path, const NamedValues& set, double transients, const std::string& parameter, double low,
          double high, const py::dict& options, const py::dict& steps) {
+        const BranchSteps branch_steps = StepsOf(steps, {});
+        CheckSteps(branch_steps);  // first, as the command line checks them
         const int periods = WholeNumber("transients", transients, kMinModelTransients, kMaxModelTransients);
         TraceOptions trace = TraceOptionsOf(options);
-        ContinuationOptions branches;
-        SetContinuationOptions(WithSteps(RunFile{}, steps), &branches);
         py::gil_scoped_release release;
         trace.progress = [](const Progress&) {
           const py::gil_scoped_acquire acquire;
@@ -191,7 +191,7 @@ void BindTrace(py::module_& m) {
         };
         const ModelTraceRun run =
             TraceModel(ReadModelFileStart(path, set), periods, FindOrbitOptions{}.max_multiple, parameter, low, high, trace,
-                       branches);
+                       branch_steps);
         std::optional<StoredTrace> stored;
         if (run.trace && run.trace->HasBranches()) {
           stored = StoredModelTrace(run, path, set, "trace");

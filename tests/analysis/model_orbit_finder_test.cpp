@@ -74,6 +74,14 @@ TEST(ModelOrbitFinder, ReportsAPermanentStickAndAMotionNotSettledAsNoOrbit) {
   EXPECT_EQ(stuck.status, FindOrbitStatus::kNoOrbitType);
   EXPECT_NE(stuck.message.find("permanent stick"), std::string::npos) << stuck.message;
   EXPECT_FALSE(stuck.solution.has_value());
+  // With F_s = 1000 the contact never leaves the stick it starts in (the held chain forced by 1 N off
+  // its free frequencies needs a force of order 1): said so, without advice to simulate longer.
+  const ModelFindResult<Model> held = FromRest(chain, {0.3, 0.3, 1000.0, 0.0}, 300 * 2.0 * std::numbers::pi / 0.3);
+  EXPECT_EQ(held.status, FindOrbitStatus::kNoOrbitType);
+  EXPECT_NE(held.message.find("never left the stick it began in, over the whole simulation (300 forcing periods)"),
+            std::string::npos)
+      << held.message;
+  EXPECT_FALSE(LongerMayFind(held)) << held.message;
   const ModelFindResult<Model> resonant =
       FromRest(DenHartogsMass(), {1.001, 0.25, 0.25, 0.0}, 60 * 2.0 * std::numbers::pi / 1.001);
   EXPECT_EQ(resonant.status, FindOrbitStatus::kNoOrbitType);

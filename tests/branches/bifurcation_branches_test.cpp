@@ -30,9 +30,9 @@ OrbitContinuationSetup Section52AboveItsPeriodDoubling() {
   run.direction = -1;
   run.range_min = 0.72;
   run.range_max = 0.739;
-  run.ds = 5e-4;
-  run.ds_max = 2e-3;
-  run.max_points = 200;
+  run.steps.ds = 5e-4;
+  run.steps.ds_max = 2e-3;
+  run.steps.max_points = 200;
   return MakeSetup(run, "results");
 }
 

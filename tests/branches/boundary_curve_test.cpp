@@ -39,9 +39,9 @@ OrbitContinuationSetup CurveFrom(const std::string& run, const std::string& labe
   RunFile file = RestartInOmega(run, label);
   file.restart_boundary = "u_r";
   file.direction = direction;
-  file.ds = 0.005;
-  file.ds_max = 0.02;
-  file.max_points = 400;
+  file.steps.ds = 0.005;
+  file.steps.ds_max = 0.02;
+  file.steps.max_points = 400;
   file.user_values = user_values;
   return MakeSetup(file, Results());
 }
@@ -386,9 +386,9 @@ TEST(BoundaryCurve, EndsAtAResonanceOfTheForcing) {
   file.restart_boundary = "u_r";
   file.direction = 1;
   file.range_max = 0.8;  // beyond omega1: only the resonance ends the curve
-  file.ds = 0.01;
-  file.ds_max = 5.0;  // u_r grows 1e5 times faster than omega near the end
-  file.max_points = 1000;
+  file.steps.ds = 0.01;
+  file.steps.ds_max = 5.0;  // u_r grows 1e5 times faster than omega near the end
+  file.steps.max_points = 1000;
   OrbitContinuationSetup setup = MakeSetup(file, Results());
   // The amplitude's bound, not the approach to omega1 (which ends the run file's curve at 1 %):
   // the modal shape shows only near omega1.

@@ -51,8 +51,8 @@ done
 
 # The steps of the trace's branches, as continue and trace take them (--ds, --ds-min, --ds-max,
 # --max-points): find --trace with them is trace by hand with them, file for file; the run file it
-# writes keeps those not at their defaults, and its run gives the same trace. Without --trace, or out
-# of range, they are refused before the work.
+# writes keeps those not at their defaults (with --write-run alone too), and its run gives the same
+# trace. Without --trace or --write-run, or out of range, they are refused before the work.
 "$bin" find --preset paper-4.1 --trace "$range" --max-points 6 --ds-max 0.02 --results "$work/found" --output steps \
   --write-run "$work/steps.toml" --as trace > /dev/null 2> "$work/steps.err" || fail "find --trace with steps exits $?: $(cat "$work/steps.err")"
 eval "\"\$bin\" trace $solve_flags --parameter omega --range $range --max-points 6 --ds-max 0.02 --results \"\$work/by-hand\" --output steps" \
@@ -63,8 +63,13 @@ grep -q "^ds_max = 0.02$" "$work/steps.toml" && grep -q "^max_points = 6$" "$wor
   fail "the run file does not keep the steps given (only): $(cat "$work/steps.toml")"
 "$bin" run --results "$work/from-file" "$work/steps.toml" > /dev/null 2>&1 || fail "stickslip run of the run file with steps exits $?"
 cmp -s "$work/found/steps/trace.csv" "$work/from-file/steps/trace.csv" || fail "the run file's steps give another trace"
-for refused in "--max-points 6|max-points is taken with --trace only" "--ds 0.001|ds is taken with --trace only" \
+"$bin" find --preset paper-4.1 --write-run "$work/alone.toml" --ds 0.002 > /dev/null 2>&1 && grep -q "^ds = 0.002$" "$work/alone.toml" ||
+  fail "find --write-run --ds 0.002 did not write the step: $(cat "$work/alone.toml")"
+for refused in "--max-points 6|max-points = 6 is invalid: valid range with --trace or --write-run" \
+  "--ds 0.001|ds = 0.001 is invalid: valid range with --trace or --write-run" \
   "--trace $range --output s2 --ds 0.5|ds = 0.5 is invalid: valid range 0 < ds-min (1e-08) <= ds <= ds-max (0.05)" \
+  "--trace $range --output s2 --ds-min 0|ds-min = 0 is invalid: valid range ds-min > 0" \
+  "--trace $range --output s2 --ds-max 1e-9|ds-max = 1e-09 is invalid: valid range ds-max >= ds-min (1e-08)" \
   "--trace $range --output s2 --max-points 0|max-points = 0 is invalid"; do
   "$bin" find --preset paper-4.1 ${refused%%|*} --results "$work/refused" > "$work/r.out" 2> "$work/r.err"
   code=$?

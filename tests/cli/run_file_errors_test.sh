@@ -106,7 +106,7 @@ restart = { run = "paper-5.2-omega-to-pd", label = "PD2", switch_branch = true }
 parameter = "omega"
 direction = "up"
 range = [0.6, 0.8]'
-expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (a EP): valid at a period doubling (PD) or a symmetry breaking (SB)" "${switched/PD2/EP1}"
+expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (type EP): valid at a period doubling (PD) or a symmetry breaking (SB)" "${switched/PD2/EP1}"
 expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" "$switched
 shooting = \"multiple\""
 expect 2 "key 'start.restart.switch_branch' = 1 is invalid: valid true or false (a boolean; its type is integer)" "${switched/switch_branch = true/switch_branch = 1}"

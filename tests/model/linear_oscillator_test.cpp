@@ -223,8 +223,10 @@ TEST(LinearOscillator, FrictionFallingWithSlipSpeedIsNegativeDampingOfTheSlip) {
     }
     const Eigen::Vector2d later = model.Flow(Mode::kSlipNegative, start, 0.0, 2.0 * std::numbers::pi / w_d, p);
     EXPECT_EQ(std::abs(later(0) - steady) > std::abs(start(0) - steady), c + alpha < 0.0) << "alpha = " << alpha;
-    // The slip is damped (by alpha): no undamped slip frequency.
+    // The slip is damped (by alpha): no undamped slip frequency. The friction's levels as given.
     EXPECT_TRUE(model.UndampedSlipFrequencies(p).empty());
+    EXPECT_EQ(model.KineticForce(p), p.F_k);
+    EXPECT_EQ(model.FrictionSlope(), alpha);
   }
   LinearOscillatorData bad;
   bad.mass = bad.stiffness = Eigen::MatrixXd::Ones(1, 1);
@@ -346,6 +348,18 @@ TEST(LinearOscillator, RejectsDataThatIsNotAnOscillatorNamingTheField) {
   bad = TwoMasses();
   bad.mass = Eigen::Matrix3d::Identity();
   ExpectRejected(bad, "mass");  // three coordinates for a model of two
+  // A slip critically damped by the friction slope alone (one mass, m = k = 1, alpha = 2 sqrt(k m)):
+  // the refusal names the slope, not the dampers the model does not have.
+  LinearOscillatorData one;
+  one.mass = one.stiffness = Eigen::MatrixXd::Ones(1, 1);
+  one.forcing = Eigen::VectorXd::Ones(1);
+  one.friction_slope = 2.0;
+  try {
+    const LinearOscillator<1> model(one);
+    ADD_FAILURE() << "a critically damped slip accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("friction_slope", 0), 0u) << e.what();
+  }
 }
 
 TEST(LinearOscillator, RefusesAForcingFrequencyOnANaturalFrequencyOfASlipOrAStick) {

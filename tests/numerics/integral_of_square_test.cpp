@@ -1,11 +1,14 @@
 #include "stickslip/numerics/integral_of_square.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "stickslip/invalid_input.hpp"
 
 namespace stickslip {
 namespace {
@@ -43,9 +46,9 @@ TEST(IntegralOfSquare, AgreesWithTheTextbookIntegrals) {
   EXPECT_EQ(IntegralOfSquare(ExponentialSum::OfSinusoids(5.0, 1.0, {{2.0, 1.0, 3.0}}), 0.0), 0.0);
 }
 
-// Random sums of damped, growing and undamped terms with polynomial factors, over short and long
-// durations, against Simpson's rule on the sum's own values: the closed form to 1e-11 of the
-// terms' scale, whichever of its two branches (series or recursion) each pair takes.
+// Random sums of damped, growing and undamped terms with drifts (t factors), over short and long
+// durations, against Simpson's rule on the sum's own values: the closed form to 1e-12 of the
+// terms' scale, whichever of its three branches (either series, or the recursion) each pair takes.
 TEST(IntegralOfSquare, AgreesWithQuadratureOfTheSumsValues) {
   std::mt19937 random(20261130);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -61,13 +64,40 @@ TEST(IntegralOfSquare, AgreesWithQuadratureOfTheSumsValues) {
     const ExponentialSum f(terms);
     for (const double d : {1e-6, 0.3, 4.0}) {
       const Quadrature q = Simpson(f, d, 20000);
-      EXPECT_NEAR(IntegralOfSquare(f, d), q.integral, 1e-11 * q.scale) << "trial " << trial << ", d = " << d;
+      EXPECT_NEAR(IntegralOfSquare(f, d), q.integral, 1e-12 * q.scale) << "trial " << trial << ", d = " << d;
     }
   }
 }
 
-TEST(IntegralOfSquare, IsNotFiniteWhereTheExponentialOverflows) {
+// Near critical damping a slip's speed is a difference of two nearly equal exponentials with large
+// coefficients: (e^{-t} - e^{-(1 + delta) t}) / delta, about t e^{-t}. Its square's integral against
+// Simpson's rule on the same function written without the cancellation, -e^{-t} expm1(-delta t) /
+// delta: to twice the rounding of f's own values, eps / delta relative, with a margin of 10 (the
+// pairwise closed form alone would lose about eps / delta^2: 2e-4 at delta = 1e-6).
+TEST(IntegralOfSquare, KeepsItsDigitsWhereTheTermsCancelNearCriticalDamping) {
+  for (const double delta : {1e-3, 1e-6}) {
+    const ExponentialSum f({{0, -1.0, {0.0, 1.0 / delta, 0.0}}, {0, -(1.0 + delta), {0.0, -1.0 / delta, 0.0}}});
+    const double d = 6.0;
+    constexpr int kIntervals = 20000;
+    double reference = 0.0;
+    for (int i = 0; i <= kIntervals; ++i) {
+      const double t = d * i / kIntervals, weight = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      const double value = -std::exp(-t) * std::expm1(-delta * t) / delta;
+      reference += weight * value * value * d / kIntervals / 3.0;
+    }
+    const double rounding = std::numeric_limits<double>::epsilon() / delta;
+    EXPECT_NEAR(IntegralOfSquare(f, d), reference, 20.0 * rounding * reference) << "delta = " << delta;
+  }
+}
+
+TEST(IntegralOfSquare, IsNotFiniteWhereTheExponentialOverflowsAndRefusesWhatItDoesNotCover) {
   EXPECT_FALSE(std::isfinite(IntegralOfSquare(ExponentialSum({{0, 500.0, {1.0, 1.0, 0.0}}}), 2.0)));
+  // A term that is zero everywhere stays zero where its exponential overflows: b sin(0 t) = 0.
+  EXPECT_EQ(IntegralOfSquare(ExponentialSum({{0, 500.0, {0.0, 0.0, 1.0}}, {0, 0.0, {0.0, 1.0, 0.0}}}), 2.0), 2.0);
+  EXPECT_THROW(IntegralOfSquare(ExponentialSum({{2, -1.0, {0.0, 1.0, 0.0}}}), 1.0), InvalidInput);  // t^2: no drift
+  for (const double d : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW(IntegralOfSquare(ExponentialSum::OfSinusoids(1.0, 0.0, {}), d), InvalidInput) << d;
+  }
 }
 
 }  // namespace

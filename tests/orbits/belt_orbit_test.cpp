@@ -137,71 +137,91 @@ TEST(BeltStickSlip, OdeintSeesEveryStickShorterThanItsSteps) {
 
 // Kinetic friction falling with the slip speed, F_k + alpha |s| with c + alpha < 0, makes steady
 // sliding (x* = (F_k + alpha v_b)/k) unstable: Odeint, started next to it, grows into a stick-slip
-// cycle. Its last cycle, from the simulated events, is the autonomous orbit 'stick slip-' the
-// periodicity equations solve from it (Newton), to the simulator's event tolerance.
-TEST(BeltStickSlip, FrictionFallingWithSpeedGrowsSteadySlidingIntoTheSolvedCycle) {
+// cycle. Its last cycle, from the simulated events (a stick entry, the stick's exit, the next
+// entry), and the autonomous orbit 'stick slip-' the periodicity equations solve from it (Newton).
+struct FallingFrictionCycle {
   LinearOscillatorData data;
-  data.mass = data.stiffness = Eigen::MatrixXd::Ones(1, 1);
-  data.damping = Eigen::MatrixXd::Constant(1, 1, 0.05);
-  data.forcing = Eigen::VectorXd::Zero(1);
-  data.friction_slope = -0.3;
-  const Belt model(data);
-  const Belt::Parameters p{1.0, 1.0, 1.5, 0.3};
-  const double steady = (p.F_k + data.friction_slope * p.v_b) / 1.0;
+  Belt::Parameters p{1.0, 1.0, 1.5, 0.3};
+  std::vector<BasicEvent<Belt::State>> odeint;  // entry, exit, next entry
+  Eigen::VectorXd solved;                                  // the orbit's variables; empty: failed
+};
+FallingFrictionCycle GrownFromSteadySliding() {
+  FallingFrictionCycle c;
+  c.data.mass = c.data.stiffness = Eigen::MatrixXd::Ones(1, 1);
+  c.data.damping = Eigen::MatrixXd::Constant(1, 1, 0.05);
+  c.data.forcing = Eigen::VectorXd::Zero(1);
+  c.data.friction_slope = -0.3;
+  const Belt model(c.data);
+  const double steady = (c.p.F_k + c.data.friction_slope * c.p.v_b) / 1.0;
   BasicSimulationOptions<Belt::State> options;
   options.duration = 200.0;
-  const auto odeint = SimulateOdeint(model, p, Belt::State(steady + 1e-3, 0.0), 0.0, options);
-  ASSERT_TRUE(odeint.Completed()) << odeint.message;
+  const auto odeint = SimulateOdeint(model, c.p, Belt::State(steady + 1e-3, 0.0), 0.0, options);
   std::vector<std::size_t> entries;  // events into a stick
   for (std::size_t i = 0; i < odeint.events.size(); ++i) {
     if (odeint.events[i].mode_after == Mode::kStick) entries.push_back(i);
   }
-  ASSERT_GE(entries.size(), 3u) << "steady sliding did not grow into stick-slip";
-  // The last whole cycle: a stick entry, the stick's exit, the next entry.
-  const auto& entry = odeint.events[entries[entries.size() - 2]];
-  const auto& exit = odeint.events[entries[entries.size() - 2] + 1];
-  const auto& next = odeint.events[entries.back()];
-  ASSERT_EQ(exit.mode_after, Mode::kSlipNegative);
-  ASSERT_EQ(entries.back(), entries[entries.size() - 2] + 2) << "one slip per cycle";
-  const double stick = exit.t - entry.t, slip = next.t - exit.t;
-
+  if (!odeint.Completed() || entries.size() < 3) return c;
+  const std::size_t entry = entries[entries.size() - 2];
+  c.odeint = {odeint.events[entry], odeint.events[entry + 1], odeint.events[entries.back()]};
   const Equations equations(model, Signature::Parse("stick slip-"), Shooting::kSingle);
   Eigen::VectorXd guess(8);
-  guess << entry.state(0), 0.0, stick, slip, p.omega, p.F_k, p.F_s, p.v_b;
+  guess << c.odeint[0].state(0), 0.0, c.odeint[1].t - c.odeint[0].t, c.odeint[2].t - c.odeint[1].t, c.p.omega, c.p.F_k,
+      c.p.F_s, c.p.v_b;
   const BasicOrbitSystem<Belt> system(equations, guess, {0, 1, 2, 3}, false);
   const NewtonResult solved = SolveNewton(system, system.Unknowns(guess));
-  ASSERT_TRUE(solved.summary.Converged()) << solved.summary.message;
-  const Eigen::VectorXd v = system.Variables(solved.solution);
-  EXPECT_NEAR(v(0), entry.state(0), 1e-7);
-  EXPECT_NEAR(v(0), next.state(0), 1e-7);
+  if (solved.summary.Converged()) c.solved = system.Variables(solved.solution);
+  return c;
+}
+
+TEST(BeltStickSlip, FrictionFallingWithSpeedGrowsSteadySlidingIntoTheSolvedCycle) {
+  const FallingFrictionCycle c = GrownFromSteadySliding();
+  ASSERT_EQ(c.odeint.size(), 3u) << "steady sliding did not grow into stick-slip";
+  ASSERT_EQ(c.odeint[1].mode_after, Mode::kSlipNegative);
+  ASSERT_EQ(c.odeint[2].mode_after, Mode::kStick) << "one slip per cycle";
+  ASSERT_EQ(c.solved.size(), 8) << "Newton did not converge from the simulated cycle";
+  const Eigen::VectorXd& v = c.solved;
+  const double stick = c.odeint[1].t - c.odeint[0].t, slip = c.odeint[2].t - c.odeint[1].t;
+  EXPECT_NEAR(v(0), c.odeint[0].state(0), 1e-7);
+  EXPECT_NEAR(v(0), c.odeint[2].state(0), 1e-7);
   EXPECT_NEAR(v(2), stick, 1e-7);
   EXPECT_NEAR(v(3), slip, 1e-7);
-  EXPECT_GT(SmallestMargin(AdmissibilityMargins(model, OrbitOf(v))).value, 0.0);
-  // Friction's work over the cycle, int (F_k + alpha |s|) |s| dt, against the power Odeint's
-  // motion dissipates, by the trapezoidal rule on one simulated cycle (the power is continuous,
-  // zero in the stick; its kink where the slip ends costs O(h^2)).
+  EXPECT_GT(SmallestMargin(AdmissibilityMargins(Belt(c.data), OrbitOf(v))).value, 0.0);
+  RecordProperty("cycle_stick_slip", fmt::format("{:.10g} {:.10g}", v(2), v(3)));
+  RecordProperty("odeint_difference", fmt::format("{:.2g}", std::max(std::abs(v(2) - stick), std::abs(v(3) - slip))));
+}
+
+// Friction's work over that cycle against the power the friction force does on Odeint's motion,
+// -F s with F the model's slip force (VectorField's, which the closed forms do not use), by the
+// trapezoidal rule on one simulated cycle (the power is continuous, zero in the stick; its kink
+// where the slip ends costs O(h^2)). The slope's share is no rounding: without it the work would
+// be F_k times the distance slid relative to the belt, v_b times the cycle.
+TEST(BeltStickSlip, FrictionWorkWithASlopeIsWhatTheSimulatedCycleDissipates) {
+  const FallingFrictionCycle c = GrownFromSteadySliding();
+  ASSERT_EQ(c.solved.size(), 8) << "no solved cycle";
+  const Belt model(c.data);
+  const Eigen::VectorXd& v = c.solved;
   BasicSimulationOptions<Belt::State> cycle;
   cycle.duration = v(2) + v(3);
   cycle.sample_step = cycle.duration / 200000;
-  const auto sampled = SimulateOdeint(model, p, Belt::State(v(0), p.v_b), 0.0, cycle);
+  const auto sampled = SimulateOdeint(model, c.p, Belt::State(v(0), c.p.v_b), 0.0, cycle);
   ASSERT_TRUE(sampled.Completed()) << sampled.message;
+  ASSERT_NEAR(sampled.samples.back().t, cycle.duration, 1e-9);
   const auto power = [&](const Belt::State& x) {
-    const double s = x(1) - p.v_b;
-    return (p.F_k + data.friction_slope * std::abs(s)) * std::abs(s);
+    const double s = x(1) - c.p.v_b;
+    if (s == 0.0) return 0.0;  // the stick: no slip, no work
+    // m x'' = -k x - c x' + F: F from the slip's acceleration.
+    const double force = model.VectorField(s > 0.0 ? Mode::kSlipPositive : Mode::kSlipNegative, x, 0.0, c.p)(1) +
+                         c.data.stiffness(0, 0) * x(0) + c.data.damping(0, 0) * x(1);
+    return -force * s;
   };
   double work = 0.0;
   for (std::size_t i = 1; i < sampled.samples.size(); ++i) {
     const auto &before = sampled.samples[i - 1], &after = sampled.samples[i];
     work += 0.5 * (power(before.state) + power(after.state)) * (after.t - before.t);
   }
-  ASSERT_NEAR(sampled.samples.back().t, cycle.duration, 1e-9);
   const double measured = Measure(model, OrbitOf(v)).friction_work;
   EXPECT_NEAR(measured, work, 1e-8 * work);
-  // The slope's share is no rounding: without it the work is F_k times the distance slid relative
-  // to the belt, v_b times the cycle (the mass ends where it began).
-  EXPECT_GT(std::abs(measured - p.F_k * p.v_b * (v(2) + v(3))), 1e-3 * work);
-  RecordProperty("cycle_stick_slip", fmt::format("{:.10g} {:.10g}", v(2), v(3)));
-  RecordProperty("odeint_difference", fmt::format("{:.2g}", std::max(std::abs(v(2) - stick), std::abs(v(3) - slip))));
+  EXPECT_GT(std::abs(measured - c.p.F_k * c.p.v_b * (v(2) + v(3))), 1e-3 * work);
 }
 
 }  // namespace

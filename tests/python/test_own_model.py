@@ -93,6 +93,8 @@ def test_a_models_label_switches_branch_as_a_run_file_does(tmp_path):
     branch = stickslip.continue_orbit(point="branch-1:SB2", results=tmp_path / "sb", switch_branch=True,
                                       parameter="omega", range=(0.37, 0.38), direction="down", output="switched")
     assert branch.signature == "stick slip+ stick slip+ stick slip- stick slip- / period 3"
+    # Off the antisymmetric family: the contact's peak-to-peak is no longer twice its amplitude.
+    assert abs(2 * branch["amplitude:m5"][-1] - branch["peak-to-peak:m5"][-1]) > 0.05 * branch["amplitude:m5"][-1]
     branch.save(tmp_path / "sb" / "python")
     (tmp_path / "switch.toml").write_text('output = "switched"\n[start]\nrestart = { run = "branch-1", label = "SB2", '
                                           'switch_branch = true }\n[continuation]\nparameter = "omega"\n'
@@ -154,7 +156,7 @@ def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orb
     assert done.returncode == 0, done.stderr
     for name in ("branch.csv", "special-points.csv"):
         assert (tmp_path / "chain" / "up" / name).read_bytes() == (tmp_path / "chain" / "cli-up" / name).read_bytes()
-    with pytest.raises(ValueError, match="a \\[model\\]'s branch switches from its saved label"):
+    with pytest.raises(ValueError, match="valid range a label of a saved branch for a \\[model\\]'s"):
         branch.switch("EP1")
     # solve at the UZ label (F_s = 0.5): the orbit the motion from rest settles on (find's), and what
     # `stickslip solve --point --json` prints; a start keyword beside it is refused.

@@ -79,7 +79,7 @@ def test_bad_switches_raise_value_error(tmp_path):
     with pytest.raises(ValueError, match=r"^switch_branch = 1 is invalid: valid range True or False$"):
         stickslip.continue_orbit("omega", (0.6, 0.8), results=tmp_path, point="to-pd:PD2", switch_branch=1)
     # At a label that is no PD or SB, as the run file's key says it.
-    with pytest.raises(ValueError, match=r"switch_branch' = true is invalid at 'EP1' \(a EP\): valid at a period "
+    with pytest.raises(ValueError, match=r"switch_branch' = true is invalid at 'EP1' \(type EP\): valid at a period "
                                          r"doubling \(PD\) or a symmetry breaking \(SB\)"):
         stickslip.continue_orbit("omega", (0.6, 0.8), results=tmp_path, point="to-pd:EP1", switch_branch=True)
 

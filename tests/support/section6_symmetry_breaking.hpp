@@ -23,9 +23,9 @@ inline OrbitContinuationSetup Section6AboveItsSymmetryBreaking() {
   run.direction = -1;
   run.range_min = 0.54;
   run.range_max = 0.56;
-  run.ds = 0.01;
-  run.ds_max = 0.02;
-  run.max_points = 30;
+  run.steps.ds = 0.01;
+  run.steps.ds_max = 0.02;
+  run.steps.max_points = 30;
   run.continue_past_type_changes = true;
   return MakeSetup(run, "results");
 }

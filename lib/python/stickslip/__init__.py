@@ -44,7 +44,7 @@ from ._stickslip import __version__
 from ._branch import Branch, Continuation
 from ._trace import Trace
 from ._atlas import Atlas
-from ._inputs import InvalidArgument, _checked, _one_off_run, _optional_text, _pair, _start
+from ._inputs import InvalidArgument, _checked, _one_off_run, _optional_text, _pair, _start, _steps
 from . import plotting
 
 __all__ = [
@@ -293,9 +293,7 @@ def _trace_model(parameter, range, options, *, model, set=None, transients=1000,
         raise TypeError(f"trace() got an unexpected keyword argument '{next(iter(others))}' with model= (it takes "
                         "set=, transients=, ds=, ds_min=, ds_max= and max_points=)")
     low, high = _pair(range, "range")
-    given = {"ds": (ds, "number"), "ds_min": (ds_min, "number"), "ds_max": (ds_max, "number"),
-             "max_points": (max_points, "count")}
-    steps = {key: None if value is None else _checked(value, key, kind) for key, (value, kind) in given.items()}
+    steps = _steps(ds, ds_min, ds_max, max_points)
     text, stored = _core._trace_model(_checked(model, "model", "path"), _model_set(set),
                                       _checked(transients, "transients", "number"),
                                       _checked(parameter, "parameter", "text"), low, high, options, steps)

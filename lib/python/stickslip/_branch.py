@@ -8,7 +8,7 @@ import io as _io
 import numpy as _np
 
 from . import _stickslip as _core
-from ._inputs import _checked, _one_off_run, _pair
+from ._inputs import _checked, _one_off_run, _pair, _steps
 
 _TEXT_COLUMNS = ("label", "type", "test_function")
 _INTEGER_COLUMNS = ("pt", "stable", "admissible", "stops", "sticks", "newton_iterations", "located")
@@ -148,9 +148,8 @@ class Branch(_Table):
         if self._computed is None:
             raise ValueError(f"switch = {label!r} is invalid: valid on a branch computed in this process "
                              "(a loaded branch: continue_orbit(point='RUN:LABEL', switch_branch=True) at a PD or an SB)")
-        kinds = {"output": "text", "ds": "number", "ds_min": "number", "ds_max": "number", "max_points": "count"}
-        given = {"output": output, "ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
-        options = {key: None if value is None else _checked(value, key, kinds[key]) for key, value in given.items()}
+        options = _steps(ds, ds_min, ds_max, max_points)
+        options["output"] = None if output is None else _checked(output, "output", "text")
         options["range"] = None if range is None else _pair(range, "range")
         if _checked(side, "side", "index", "+1 or -1") not in (1, -1):
             raise ValueError(f"side = {side!r} is invalid: valid range +1 or -1")

@@ -158,6 +158,16 @@ def _orbit_start(orbit, results, others):
                   fix=[name for name in always if name not in unknowns], tie_u_r=orbit.tie_u_r)
 
 
+# A branch's steps, the keywords of every function that runs branches, by kind (_checked).
+_STEP_KINDS = {"ds": "number", "ds_min": "number", "ds_max": "number", "max_points": "count"}
+
+
+def _steps(ds=None, ds_min=None, ds_max=None, max_points=None):
+    """The steps given (None: the library's default), each checked for its kind."""
+    given = {"ds": ds, "ds_min": ds_min, "ds_max": ds_max, "max_points": max_points}
+    return {key: None if value is None else _checked(value, key, _STEP_KINDS[key]) for key, value in given.items()}
+
+
 def _one_off_run(parameter, range, *, direction="up", output="python", start=None, parameters=None, signature=None,
                  preset=None, point=None, switch_branch=False, boundary=None, results="results", set=None, guess=None,
                  free=None, fix=None, tie_u_r=False, ds=None,
@@ -169,9 +179,9 @@ def _one_off_run(parameter, range, *, direction="up", output="python", start=Non
              "linear_solver": linear_solver, "detect_folds": detect_folds,
              "detect_branch_points": detect_branch_points, "continue_past_type_changes": continue_past_type_changes,
              "max_amplitude": max_amplitude, "resonance_approach": resonance_approach}
-    kinds = {"ds": "number", "ds_min": "number", "ds_max": "number", "max_points": "count", "shooting": "text",
-             "linear_solver": "text", "detect_folds": "flag", "detect_branch_points": "flag",
-             "continue_past_type_changes": "flag", "max_amplitude": "number", "resonance_approach": "number"}
+    kinds = {**_STEP_KINDS, "shooting": "text", "linear_solver": "text", "detect_folds": "flag",
+             "detect_branch_points": "flag", "continue_past_type_changes": "flag", "max_amplitude": "number",
+             "resonance_approach": "number"}
     options = {key: (_DEFAULTS[key] if value is None else _checked(value, key, kinds[key]))
                for key, value in given.items()}
     options.update({

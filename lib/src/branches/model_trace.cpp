@@ -14,5 +14,10 @@ template BasicOrbitContinuationSetup<DynamicLinearOscillator> AtLeastPeriod(
 template OrbitContinuationProblem MakeOrbitContinuation(const BasicOrbitContinuationSetup<DynamicLinearOscillator>&);
 template BasicOrbitBranch<DynamicLinearOscillator> ToOrbitBranch<DynamicLinearOscillator>(
     const OrbitContinuationProblem&, Branch);
+// The branch leaving a bifurcation, for the trace's and a restart's (io/switched_restart.hpp).
+template BasicBifurcationBranchStart<DynamicLinearOscillator> BranchFromBifurcation(
+    const SpecialPoint&, const BasicOrbitContinuationSetup<DynamicLinearOscillator>&, int);
+template BasicBifurcationBranchStart<DynamicLinearOscillator> BranchFromBifurcation(
+    const std::string&, const BasicOrbitContinuationSetup<DynamicLinearOscillator>&, int);
 
 }  // namespace stickslip

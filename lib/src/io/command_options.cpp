@@ -98,18 +98,23 @@ int ContinuationDirection(std::string_view direction) {
   throw InvalidInput("direction", fmt::format("'{}'", direction), "up, down");
 }
 
-void CheckSteps(const RunFile& run) {
-  if (!(run.ds_min > 0 && run.ds_min <= run.ds && run.ds <= run.ds_max)) {
-    throw InvalidInput("ds", run.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", run.ds_min, run.ds_max));
+void CheckSteps(const BranchSteps& steps) {
+  // The bound that is wrong whatever ds is, by its own name; then ds between them.
+  if (!(steps.ds_min > 0)) throw InvalidInput("ds-min", steps.ds_min, "ds-min > 0");
+  if (!(steps.ds_max >= steps.ds_min)) {
+    throw InvalidInput("ds-max", steps.ds_max, fmt::format("ds-max >= ds-min ({})", steps.ds_min));
   }
-  WholeNumber("max-points", run.max_points, 1, kMaxRunPoints);
+  if (!(steps.ds_min <= steps.ds && steps.ds <= steps.ds_max)) {
+    throw InvalidInput("ds", steps.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", steps.ds_min, steps.ds_max));
+  }
+  WholeNumber("max-points", steps.max_points, 1, kMaxRunPoints);
 }
 
 void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
   if (!(run.range_min < run.range_max)) {
     throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX with MIN < MAX");
   }
-  CheckSteps(run);
+  CheckSteps(run.steps);
   if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
     throw InvalidInput("max-amplitude", run.max_amplitude, "a finite max-amplitude > 0");
   }

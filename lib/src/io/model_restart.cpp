@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "stickslip/branches/model_bifurcation_branches.hpp"
+#include "stickslip/branches/model_trace.hpp"  // BranchFromBifurcation of a [model], compiled there
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/result_files.hpp"

@@ -13,6 +13,8 @@
 #include "stickslip/branches/model_trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/command_options.hpp"
+#include "stickslip/io/run.hpp"
+#include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/model_orbit_json.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
@@ -45,7 +47,7 @@ Json BranchJson(const BasicTraceLink<Model>& link, const Model& model, const std
 }  // namespace
 
 ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
-                         double low, double high, TraceOptions options, const ContinuationOptions& branches) {
+                         double low, double high, TraceOptions options, const BranchSteps& steps) {
   // The parameter and the range before the work.
   const int k = start.model.Description().VariedParameter("parameter", parameter, start.model.Autonomous());
   const double value = Model::ParameterAt(start.parameters, k);
@@ -54,11 +56,10 @@ ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_mu
                        fmt::format("finite LO < HI with LO <= {} = {} <= HI, the start's", parameter, value));
   }
   options.Validate();
-  ContinuationOptions continuation = branches;  // checked before the work, with the trace's range
+  CheckSteps(steps);
+  ContinuationOptions continuation = WithSteps({}, steps);
   continuation.lambda_min = low;
   continuation.lambda_max = high;
-  continuation.parameter_index = 0;  // the setup's (OrbitContinuationSetup)
-  continuation.Validate();
   ModelTraceRun run{FindModelOrbitOf(start, transients, max_multiple, options.progress), std::nullopt};
   if (run.find.found.status != FindOrbitStatus::kFound) return run;
   BasicOrbitContinuationSetup<Model> setup{ContinuableIn(run.find.found.solution->orbit, k),

@@ -14,15 +14,20 @@ namespace stickslip {
 
 namespace ov = orbit_variables;
 
+ContinuationOptions WithSteps(ContinuationOptions options, const BranchSteps& steps) {
+  options.step.ds = steps.ds;
+  options.step.ds_min = steps.ds_min;
+  options.step.ds_max = steps.ds_max;
+  options.max_points = steps.max_points;
+  return options;
+}
+
 void SetContinuationOptions(const RunFile& run, ContinuationOptions* options) {
   ContinuationOptions& o = *options;
   o.direction = run.direction;
   o.lambda_min = run.range_min;
   o.lambda_max = run.range_max;
-  o.step.ds = run.ds;
-  o.step.ds_min = run.ds_min;
-  o.step.ds_max = run.ds_max;
-  o.max_points = run.max_points;
+  o = WithSteps(std::move(o), run.steps);
   o.detect_folds = run.detect_folds;
   o.detect_branch_points = run.detect_branch_points;
   o.continue_past_terminal = run.continue_past_type_changes;

@@ -126,10 +126,10 @@ void ReadParameterAndRange(TableReader& c, bool trace, RunFile* run) {
 }
 
 void ReadContinuationKeys(TableReader& c, std::string_view path, RunFile* run) {
-  c.Number("ds", &run->ds);
-  c.Number("ds_min", &run->ds_min);
-  c.Number("ds_max", &run->ds_max);
-  c.Integer("max_points", &run->max_points);
+  c.Number("ds", &run->steps.ds);
+  c.Number("ds_min", &run->steps.ds_min);
+  c.Number("ds_max", &run->steps.ds_max);
+  c.Integer("max_points", &run->steps.max_points);
   c.String("shooting", &run->shooting);
   c.String("linear_solver", &run->linear_solver);
   c.Boolean("detect_folds", &run->detect_folds);
@@ -169,12 +169,12 @@ void CheckSteps(TableReader& c, const toml::table& continuation, std::string_vie
   auto check_positive = [&](std::string_view key, double v) {
     if (!(v > 0.0)) c.Fail(*c.Get(key), key, fmt::format("= {} is invalid: valid range > 0", v));
   };
-  if (c.Get("ds")) check_positive("ds", run.ds);
-  if (c.Get("ds_min")) check_positive("ds_min", run.ds_min);
-  if (c.Get("ds_max")) check_positive("ds_max", run.ds_max);
-  if (!(run.ds_min <= run.ds && run.ds <= run.ds_max)) {
+  if (c.Get("ds")) check_positive("ds", run.steps.ds);
+  if (c.Get("ds_min")) check_positive("ds_min", run.steps.ds_min);
+  if (c.Get("ds_max")) check_positive("ds_max", run.steps.ds_max);
+  if (!(run.steps.ds_min <= run.steps.ds && run.steps.ds <= run.steps.ds_max)) {
     throw RunFileError(fmt::format("{}: keys 'continuation.ds_min' <= 'continuation.ds' <= 'continuation.ds_max' "
-                                   "must hold: got {} <= {} <= {}", Where(path, continuation), run.ds_min, run.ds, run.ds_max));
+                                   "must hold: got {} <= {} <= {}", Where(path, continuation), run.steps.ds_min, run.steps.ds, run.steps.ds_max));
   }
 }
 

@@ -70,7 +70,9 @@ void CheckModalAccuracy(const FirstOrderBasis& basis, bool solved, const char* f
 
 // The first-order system of M q'' + C q' + K q = input on the coordinates `free` (the others held):
 // A = [[0, I], [-M^-1 K, -M^-1 C]] on (q_free, q_free'), with its eigenvectors.
-FirstOrderBasis BasisOf(const LinearOscillatorData& data, const Eigen::MatrixXd& damping, Eigen::Index free) {
+// `damping_field` names what damps it (in refusals): the damping, or the friction slope that adds to a slip's.
+FirstOrderBasis BasisOf(const LinearOscillatorData& data, const Eigen::MatrixXd& damping, Eigen::Index free,
+                        const char* damping_field) {
   const Eigen::Index n = data.mass.rows(), d = 2 * free;
   FirstOrderBasis basis;
   for (Eigen::Index j = 0; j < free; ++j) basis.components.push_back(static_cast<int>(j));
@@ -104,7 +106,7 @@ FirstOrderBasis BasisOf(const LinearOscillatorData& data, const Eigen::MatrixXd&
   basis.eigenvalues = solver.eigenvalues();
   basis.shapes = solver.eigenvectors();
   basis.projector = basis.shapes.inverse();
-  CheckModalAccuracy(basis, solver.info() == Eigen::Success, damping.isZero() ? "stiffness" : "damping", free == n);
+  CheckModalAccuracy(basis, solver.info() == Eigen::Success, damping.isZero() ? "stiffness" : damping_field, free == n);
   return basis;
 }
 
@@ -196,7 +198,9 @@ LinearOscillatorModes ModesOf(const LinearOscillatorData& data) {
   // In a slip F = -F_k sign(s) - alpha s: alpha damps the contact's coordinate; a stick holds it.
   Eigen::MatrixXd slip_damping = damping;
   slip_damping(n - 1, n - 1) += data.friction_slope;
-  LinearOscillatorModes modes{BasisOf(data, slip_damping, n), BasisOf(data, damping, n - 1), {}, 0.0};
+  // A slip's damping is the friction slope's where C adds nothing to the contact's coordinate.
+  const char* slip_field = data.friction_slope != 0.0 && damping.col(n - 1).isZero() ? "friction_slope" : "damping";
+  LinearOscillatorModes modes{BasisOf(data, slip_damping, n, slip_field), BasisOf(data, damping, n - 1, "damping"), {}, 0.0};
   const Eigen::MatrixXd mass_inverse = data.mass.llt().solve(Eigen::MatrixXd::Identity(n, n));
   const double contact_compliance = mass_inverse(n - 1, n - 1);
   modes.holding.resize(2 * n);

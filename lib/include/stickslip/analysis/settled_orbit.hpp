@@ -104,11 +104,13 @@ namespace settled_orbit_detail {
 
 // The last `record` of a simulation of `duration` from x0 (times from its start, `phi0` the phase
 // there), the time before it in chunks of `record` that keep only their end state, so that memory
-// and any one simulation's events stay bounded by the record's.
+// and any one simulation's events stay bounded by the record's; and whether the contact never left
+// the stick it began in (each chunk one stick).
 template <OscillatorModel Model>
 struct Record {
   BasicSimulationResult<Model> result;
   double phi0 = 0.0;
+  bool stuck_throughout = false;
 };
 template <OscillatorModel Model>
 Record<Model> SimulateRecord(const Model& model, const typename Model::Parameters& p, const typename Model::State& x0,
@@ -127,15 +129,22 @@ Record<Model> SimulateRecord(const Model& model, const typename Model::Parameter
     }
     return SimulateExact(model, p, x, phi0 + omega * t, options);
   };
+  const auto one_stick = [](const BasicSimulationResult<Model>& r) {
+    return r.segments.size() == 1 && r.segments.front().mode == Mode::kStick;
+  };
+  bool stuck = true;
   // Bounded: at most duration / record chunks.
   for (double transient = duration - record; t < transient;) {
     const double length = std::min(record, transient - t);
     BasicSimulationResult<Model> chunk = simulate(length);
-    if (!chunk.Completed() || chunk.segments.empty()) return {std::move(chunk), 0.0};
+    if (!chunk.Completed() || chunk.segments.empty()) return {std::move(chunk), 0.0, false};
+    stuck = stuck && one_stick(chunk);
     x = chunk.segments.back().end;
     t = length >= transient - t ? transient : t + length;
   }
-  return {simulate(record), phi0 + omega * t};
+  BasicSimulationResult<Model> last = simulate(record);
+  stuck = stuck && one_stick(last);
+  return {std::move(last), phi0 + omega * t, stuck};
 }
 
 // The orbit over `period` from segment `first` (a settled period, NotSettled), written over its half
@@ -212,6 +221,14 @@ SettledOrbitGuess<Model> SettledOrbitGuessOf(const Model& model, const typename 
   const BasicSimulationResult<Model>& r = recorded.result;
   if (!r.Completed() || r.segments.empty()) return {std::nullopt, "the simulation stopped early: " + r.message};
   const auto& segments = r.segments;
+  if (recorded.stuck_throughout) {
+    return {std::nullopt, fmt::format("the contact never left the stick it began in, over the whole simulation ({:.6g} "
+                                      "{}): the friction force it needs stayed below the static level (a permanent "
+                                      "stick: no orbit type); a larger forcing, a smaller static level or another "
+                                      "start sets it moving",
+                                      model.Autonomous() ? duration : duration * model.ForcingFrequency(p) / (2.0 * std::numbers::pi),
+                                      model.Autonomous() ? model.Description().units.time : "forcing periods")};
+  }
   if (segments.back().mode == Mode::kStick && segments.back().t_start <= record / 2) {
     return {std::nullopt, fmt::format("the contact stays stuck over the last {:.6g} of the {:.6g} read: a permanent "
                                       "stick (no orbit type), or a stick longer than that (simulate longer)",

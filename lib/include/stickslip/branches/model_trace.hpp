@@ -449,5 +449,9 @@ extern template BasicTraceResult<DynamicLinearOscillator> TraceOrbits(
     const BasicOrbitContinuationSetup<DynamicLinearOscillator>& start, const TraceOptions& options);
 extern template BasicOrbitContinuationSetup<DynamicLinearOscillator> AtLeastPeriod(
     BasicOrbitContinuationSetup<DynamicLinearOscillator> setup);
+extern template BasicBifurcationBranchStart<DynamicLinearOscillator> BranchFromBifurcation(
+    const SpecialPoint&, const BasicOrbitContinuationSetup<DynamicLinearOscillator>&, int);
+extern template BasicBifurcationBranchStart<DynamicLinearOscillator> BranchFromBifurcation(
+    const std::string&, const BasicOrbitContinuationSetup<DynamicLinearOscillator>&, int);
 
 }  // namespace stickslip

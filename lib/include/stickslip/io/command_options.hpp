@@ -72,10 +72,10 @@ void SetRunFileStart(const StartInput& input, RunFile* run);
 // "up" -> +1, "down" -> -1. Throws InvalidInput naming "direction".
 int ContinuationDirection(std::string_view direction);
 
-// A branch's steps as a run given by its keys has them: 0 < ds_min <= ds <= ds_max and 1 <=
-// max_points <= 1e6 (run.ds, run.ds_min, run.ds_max, run.max_points). Throws InvalidInput naming
-// "ds" or "max-points".
-void CheckSteps(const RunFile& run);
+// A branch's steps given as options (continue's, trace's and find --trace's --ds, --ds-min, --ds-max
+// and --max-points; Python's keywords): 0 < ds_min <= ds <= ds_max and 1 <= max_points <= 1e6.
+// Throws InvalidInput naming "ds-min" (not > 0), "ds-max" (below ds-min), "ds" or "max-points".
+void CheckSteps(const BranchSteps& steps);
 
 // What the run-file reader checks at its keys, for a run given by its keys: range_min <
 // range_max (`range_text` is the range as the user wrote it, "MIN,MAX"), 0 < ds_min <= ds <=

@@ -21,12 +21,12 @@ struct ModelTraceRun {
   std::optional<BasicTraceResult<DynamicLinearOscillator>> trace;  // where the find found an orbit
 };
 
-// `branches`: every branch's continuation options (its steps and max_points; the range is
-// [low, high], the direction each chain's). Throws InvalidInput (naming "parameter" for a name that
-// is not one of the model's parameters, or omega without forcing; "range" for low >= high or one
-// that does not hold the start's value) before any work, and as FindModelOrbitOf and TraceOrbits do.
+// `steps`: every branch's. Throws InvalidInput (naming "parameter" for a name that is not one of the
+// model's parameters, or omega without forcing; "range" for low >= high or one that does not hold
+// the start's value; as CheckSteps for the steps) before any work, and as FindModelOrbitOf and
+// TraceOrbits do.
 ModelTraceRun TraceModel(const ModelFileStart& start, int transients, int max_multiple, const std::string& parameter,
-                         double low, double high, TraceOptions options = {}, const ContinuationOptions& branches = {});
+                         double low, double high, TraceOptions options = {}, const BranchSteps& steps = {});
 
 // The stored form of run.trace (set) as every front end writes it (RecordTrace, trace_files.hpp):
 // its run file `run_file`, or "(command line)" where `set` changed what the file gives; and the

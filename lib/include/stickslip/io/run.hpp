@@ -13,6 +13,9 @@
 
 namespace stickslip {
 
+// `options` stepping as `steps` says (the engine's step controls and max_points).
+ContinuationOptions WithSteps(ContinuationOptions options, const BranchSteps& steps);
+
 // The run file's [continuation] keys as the engine's options: direction, range, steps, max_points,
 // the detections and continue_past_type_changes (user values are MakeSetup's: they address the
 // unknowns).

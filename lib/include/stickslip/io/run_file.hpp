@@ -54,6 +54,17 @@ class RunFileError : public InvalidInput {
       : InvalidInput(WithMessage(std::move(key), std::move(message))) {}
 };
 
+// A branch's steps: the [continuation] keys ds, ds_min, ds_max and max_points (the options of
+// those names of continue, trace and find --trace; Python's keywords). Keys left out take the
+// engine's defaults, stated once in its option structs.
+struct BranchSteps {
+  double ds = StepSizeOptions{}.ds;
+  double ds_min = StepSizeOptions{}.ds_min;
+  double ds_max = StepSizeOptions{}.ds_max;
+  int max_points = ContinuationOptions{}.max_points;  // 1 to kMaxRunPoints
+  bool operator==(const BranchSteps&) const = default;
+};
+
 struct RunFile {
   std::string path;
   // "path:line:column" of every key present, by its dotted name ("start.preset").
@@ -85,11 +96,7 @@ struct RunFile {
   int direction = 1;
   double range_min = 0.0;
   double range_max = 0.0;
-  // Keys left out take the engine's defaults, stated once in its option structs.
-  double ds = StepSizeOptions{}.ds;
-  double ds_min = StepSizeOptions{}.ds_min;
-  double ds_max = StepSizeOptions{}.ds_max;
-  int max_points = ContinuationOptions{}.max_points;  // 1 to kMaxRunPoints
+  BranchSteps steps;
   std::string shooting = "auto";
   std::string linear_solver = "klu";
   bool detect_folds = ContinuationOptions{}.detect_folds;

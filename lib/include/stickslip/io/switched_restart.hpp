@@ -1,8 +1,8 @@
 // A restart's `switch_branch = true` (a run file's [start] restart, Python's Branch.switch) for any
 // model: the branch that leaves the labelled PD or SB (branches/bifurcation_branches.hpp) on the
 // run's side, from the setup at the label. The paper's model's run (run.cpp) and a [model]'s label
-// (model_restart.cpp) take it from here. Another model's instantiation includes
-// branches/model_bifurcation_branches.hpp first.
+// (model_restart.cpp) take it from here; a [model]'s BranchFromBifurcation is compiled once
+// (branches/model_trace.hpp).
 #pragma once
 
 #include <string>
@@ -40,7 +40,7 @@ BasicOrbitContinuationSetup<Model> SwitchedAtLabel(const RunFile& run, const Bas
     throw KeyError(run, "start.restart.switch_branch",
                    e.valid_range().empty()
                        ? fmt::format("= true is invalid at '{}': {}", label, e.Predicate())
-                       : fmt::format("= true is invalid at '{}' (a {}): valid at {}", label, type, e.valid_range()));
+                       : fmt::format("= true is invalid at '{}' (type {}): valid at {}", label, type, e.valid_range()));
   }
 }
 
