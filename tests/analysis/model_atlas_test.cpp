@@ -72,19 +72,19 @@ TEST(ModelAtlas, FindsThePapersBifurcationsInOtherPhysicalUnits) {
   const auto expected = SpecialPointsOf(reference.Branches(), 1.0);
   ASSERT_FALSE(found.empty());
   // Every special point the model's atlas locates, the paper's locates too (in omega / Omega).
-  for (const auto& [type, omega] : found) {
+  for (const auto& point : found) {
     const bool matched = std::any_of(expected.begin(), expected.end(), [&](const auto& e) {
-      return e.first == type && std::abs(e.second - omega) <= 1e-8;
+      return e.first == point.first && std::abs(e.second - point.second) <= 1e-8;
     });
-    EXPECT_TRUE(matched) << type << " at omega = " << omega;
+    EXPECT_TRUE(matched) << point.first << " at omega = " << point.second;
   }
   // And the other way: every special point of the paper's atlas (whose mirror-image traces the
   // model's atlas replaces by its scattered starts).
-  for (const auto& [type, omega] : expected) {
+  for (const auto& point : expected) {
     const bool matched = std::any_of(found.begin(), found.end(), [&](const auto& f) {
-      return f.first == type && std::abs(f.second - omega) <= 1e-8;
+      return f.first == point.first && std::abs(f.second - point.second) <= 1e-8;
     });
-    EXPECT_TRUE(matched) << "the paper's " << type << " at omega = " << omega;
+    EXPECT_TRUE(matched) << "the paper's " << point.first << " at omega = " << point.second;
   }
   // The fold of the period-3 family (0.6011956) and the grazing where its stick vanishes (0.5999775).
   for (const char* type : {"LP", "GR"}) {

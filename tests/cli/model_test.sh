@@ -388,9 +388,21 @@ o = json.load(open(sys.argv[1]))["orbit"]
 assert o["signature"] == "stick slip+ stick slip+ stick slip- stick slip- / period 3", o["signature"]
 assert o["verification"]["passed"] and o["admissible"], o["verification"]' "$work/tr2.json" && pass ||
   fail "the switched branch's TR2 is no verified motion: $(tail -3 "$work/tr2.json")"
+# The other side (direction = "up") is the other half of the pitchfork, the mirror images, whose
+# halves are swapped: d1 - d5 of the opposite sign at every point (both directions gave one half).
+sed 's/"sb-switched"/"sb-other"/; s/"down"/"up"/' "$work/switch.toml" > "$work/switch-other.toml"
+"$bin" run --results "$work/switch/sb" "$work/switch-other.toml" > /dev/null 2>&1 && /usr/bin/python3 -c '
+import csv, sys
+one, other = ([float(r["d1"]) - float(r["d5"]) for r in csv.DictReader(open(p))] for p in sys.argv[1:3])
+assert min(len(one), len(other)) > 5 and all(a * b < 0 for a, b in zip(one, other)), (one[:3], other[:3])' \
+  "$work/switch/sb/sb-switched/branch.csv" "$work/switch/sb/sb-other/branch.csv" && pass ||
+  fail "switch_branch's two directions are not the two mirror halves at SB2"
 sed 's/label = "SB2"/label = "EP1"/' "$work/switch.toml" > "$work/switch-ep.toml"
 expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (type EP): valid at a period doubling (PD) or a symmetry breaking (SB)" \
   "$bin" run --results "$work/switch/sb" "$work/switch-ep.toml"
+sed 's/parameter = "omega"/parameter = "v_b"/; s/range = \[0.37, 0.38\]/range = [0.0, 0.1]/' "$work/switch.toml" > "$work/switch-vb.toml"
+expect 2 "key 'continuation.parameter' = \"v_b\" is invalid with start.restart.switch_branch at 'SB2': a moving surface breaks" \
+  "$bin" run --results "$work/switch/sb" "$work/switch-vb.toml"
 printf 'shooting = "multiple"\n' >> "$work/switch.toml"
 expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" \
   "$bin" run --results "$work/switch/sb" "$work/switch.toml"
@@ -507,6 +519,9 @@ expect 2 "was computed from the command line (--set): its model is in no run fil
   "$bin" export --auto "$work/traces/belt/branch-1"
 expect 2 "cannot read the run file" "$bin" describe "$work/none.toml"
 expect 2 "key 'model' is missing" "$bin" describe "$root/continuation-scripts/paper-5.1-omega-up.toml"
+sed 's/^\[model\]/[modle]/' "$models/belt.toml" > "$work/modle.toml"
+expect 2 "key 'model' is missing: give a [model] table (kind = \"chain\" or \"matrices\") ('modle' at " \
+  "$bin" describe "$work/modle.toml"
 expect 2 "\`stickslip describe\` and \`stickslip find --model\` take a [model]" \
   "$bin" run --results "$work/out" "$models/belt.toml"
 # A [model]'s atlas: M. Pascal's two masses written as a chain reproduce the paper's own atlas's

@@ -35,6 +35,9 @@ expect 2 "r.toml:4:9: key 'start.prest' is unknown: did you mean 'start.preset'"
 prest = 1}"
 expect 2 "r.toml:6:13: key 'continuation.direction' must be a string" "${good/direction = \"up\"/direction = 1}"
 expect 2 "key 'start.preset' or 'start.signature': give exactly one" "${good/preset = \"paper-5.1\"/}"
+expect 2 "key 'start.signatur' is unknown: did you mean 'start.signature'" "${good/preset = \"paper-5.1\"/signatur = \"slip+\"}"
+expect 2 "key 'tarce' is unknown: did you mean 'trace'" "${good/direction = \"up\"/}
+[tarce]"
 expect 2 "key 'start' is missing" 'output = "t"
 [continuation]
 parameter = "omega"

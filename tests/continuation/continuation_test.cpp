@@ -219,6 +219,22 @@ TEST(PseudoArclength, EndsExactlyOnTheBoundWhateverTheStepSize) {
   }
 }
 
+// A step clipped onto the bound lands short of it by the corrector's second-order error (here
+// ~4e-3, near the circle's fold); the steps after it reach the bound although ds_min exceeds what
+// is left (before, the step after the clip grew from the clipped length, fell below ds_min and the
+// branch ended 'the corrector failed' with no failure).
+TEST(PseudoArclength, ReachesTheBoundWhenWhatIsLeftIsBelowTheSmallestStep) {
+  const Circle circle;
+  ContinuationOptions o = Options(0.25);
+  o.step.ds_min = o.step.ds_max = 0.25;
+  o.lambda_max = 0.9;
+  o.detect_folds = false;
+  const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  EXPECT_EQ(b.end, BranchEnd::kParameterBound) << b.end_message;
+  EXPECT_EQ(b.points.back().lambda, 0.9);
+  EXPECT_NEAR(b.points.back().u(0), std::sqrt(1.0 - 0.81), 1e-12);
+}
+
 TEST(PseudoArclength, EndsWhereAnotherUnknownReachesItsBoundLocatedOnTheBranch) {
   // Round the circle x^2 + lambda^2 = 1 from (1, 0) up: x falls to 0.5 at lambda = sqrt(3)/2.
   const Circle circle;
@@ -254,15 +270,19 @@ TEST(PseudoArclength, EndsAtOnceWhenItStartsOnTheBoundItHeadsFor) {
   EXPECT_EQ(b.points.size(), 1u);
 }
 
-TEST(StepSizeController, GrowsAfterFastStepsHalvesOnFailureAndRespectsDsMax) {
+// A slow corrector that converged shrinks the step, but not below ds_min (below it the branch
+// would end as if the corrector had failed); after a failed one it may (the caller ends the branch).
+TEST(StepSizeController, GrowsAfterFastStepsShrinksAfterSlowOnesToDsMinHalvesOnFailureAndRespectsDsMax) {
   StepSizeOptions options;
   options.ds = 0.1;
+  options.ds_min = 0.04;
   options.ds_max = 0.2;
   const auto c = StepSizeController::Create(options);
   EXPECT_DOUBLE_EQ(c->OnAccepted(0.1, 2), 0.15);
   EXPECT_DOUBLE_EQ(c->OnAccepted(0.15, 1), 0.2);
-  EXPECT_LT(c->OnAccepted(0.1, 6), 0.1);
-  EXPECT_DOUBLE_EQ(c->OnRejected(0.1), 0.05);
+  EXPECT_DOUBLE_EQ(c->OnAccepted(0.1, 6), 0.05);
+  EXPECT_DOUBLE_EQ(c->OnAccepted(0.05, 12), 0.04);
+  EXPECT_DOUBLE_EQ(c->OnRejected(0.05), 0.025);
 }
 
 // Test functions of (x, lambda) with their declared properties, and the radius of the point as

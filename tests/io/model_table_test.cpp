@@ -134,6 +134,11 @@ TEST(ModelTable, RefusesEveryTableThatIsNoModelNamingTheKey) {
       {"masses = [1.0, 2.0, 3.0]", "masses = [1.0, -2.0, 3.0]", "model.masses[1]", "> 0"},
       {"masses = [1.0, 2.0, 3.0]", "masses = [1.0, 2.0]", "model.names", "valid one per mass, 2"},
       {"friction_slope = -0.1", "friction_slop = -0.1", "model.friction_slop", "did you mean 'model.friction_slope'"},
+      // A misspelt required key is named beside the one missing.
+      {"masses = [1.0, 2.0, 3.0]", "maases = [1.0, 2.0, 3.0]", "model.masses", "('model.maases' at bad.toml:"},
+      {"contact = \"middle\"", "contakt = \"middle\"", "model.contact", "('model.contakt' at bad.toml:"},
+      {"{ between = [\"left\", \"ground\"], k = 10.0 }", "{ between = [\"left\", \"ground\"], kk = 10.0 }",
+       "model.springs[0].k", "('model.springs[0].kk' at bad.toml:"},
       {"{ between = [\"left\", \"ground\"], k = 10.0 }", "{ between = [\"left\", \"left\"], k = 10.0 }",
        "model.springs[0].between", "two different ends"},
       {"{ between = [\"left\", \"ground\"], k = 10.0 }", "{ between = [\"left\", \"ground\"], k = -10.0 }",

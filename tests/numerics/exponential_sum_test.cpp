@@ -216,6 +216,16 @@ TEST(ExponentialSumZeros, StopsAtTheSubIntervalBound) {
   EXPECT_NEAR(search.zeros.front().t, kPi / 2, 1e-12);
 }
 
+TEST(ExponentialSum, LeavesOutASineOfZeroFrequencyWhereItsExponentialOverflows) {
+  // b sin(0 t) e^{800 t} is zero at every time; at t = 1 its exponential overflows, and
+  // 0 * inf would make f(1) = cos(t) NaN.
+  const ExponentialSum f({{0, 0.0, {1.0, 1.0, 0.0}}, {0, 800.0, {0.0, 0.0, 2.0}}});
+  EXPECT_DOUBLE_EQ(f(1.0), std::cos(1.0));
+  EXPECT_DOUBLE_EQ(f.JetAt(1.0).slope, -std::sin(1.0));
+  EXPECT_DOUBLE_EQ(f.DerivativeBound(0, 1.0, 1.0), 1.0);
+  EXPECT_DOUBLE_EQ(f.Derivative()(1.0), -std::sin(1.0));
+}
+
 TEST(ExponentialSum, RejectsANegativePower) {
   EXPECT_THROW(ExponentialSum({{-1, 0.0, {1.0, 1.0, 0.0}}}), InvalidInput);
 }

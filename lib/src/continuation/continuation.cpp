@@ -81,6 +81,7 @@ struct Continuation::State {
   double ds = 0.0;          // the next step to try
   detail::Sample next;      // the step's corrected point, not yet accepted
   double next_ds = 0.0;     // ... at this arclength from the last
+  double asked_ds = 0.0;    // ... by a step of this length, before a clip onto a bound
   bool on_bound = false;    // ... put exactly on a parameter bound
   bool closes_loop = false;  // ... the start again: the branch is closed
   // For ClosedLoopOptions: the start as the branch left it (its tangent oriented by the first
@@ -241,6 +242,7 @@ bool Continuation::PredictAndCorrect() {
                                                                     detail::Attempt::kStep)) {
       st.next = std::move(*next);
       st.next_ds = clipped ? to_bound : ds;
+      st.asked_ds = ds;
       // The corrector keeps lambda on the bound only to second order in the step; where it lands
       // within rounding of it, the point is put on it, and the bound event records it. If that
       // fails, the branch still ends on the corrected point.
@@ -374,7 +376,9 @@ bool Continuation::Accept() {
     return End(BranchEnd::kParameterBound,
                fmt::format("reached {} = {:.10g}", st.options.parameter_name, st.Lambda(st.next.u)));
   }
-  st.ds = st.step_size->OnAccepted(st.next_ds, st.next.iterations);
+  // A clip onto a bound is no sign of difficulty: the next step grows from the asked one, so that
+  // a clipped step that lands short of the bound is not followed by one below ds_min.
+  st.ds = st.step_size->OnAccepted(st.asked_ds, st.next.iterations);
   st.last = std::move(st.next);
   if (static_cast<int>(branch_.points.size()) >= st.options.max_points) {
     return End(BranchEnd::kMaxPoints, "max_points reached");

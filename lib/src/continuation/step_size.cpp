@@ -19,7 +19,9 @@ class IterationCountController final : public StepSizeController {
         iterations <= options_.target_iterations
             ? options_.growth
             : std::max(options_.slowest_shrink, static_cast<double>(options_.target_iterations) / iterations);
-    return std::min(ds * factor, options_.ds_max);
+    // Never below ds_min after a step that converged: the branch ends there only for a corrector
+    // that failed (OnRejected), with its failure.
+    return std::clamp(ds * factor, options_.ds_min, options_.ds_max);
   }
   double OnRejected(double ds) override { return options_.rejection_shrink * ds; }
 

@@ -170,6 +170,15 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
     throw fail("continuation.parameter", e.Predicate());
   }
   CheckRangeHoldsStart(run, Model::ParameterAt(orbit.parameters, k));
+  // A moving surface breaks the half-period symmetry whose breaking an SB is: in v_b the pitchfork
+  // unfolds, and no second branch crosses the label's.
+  if (run.restart_switch_branch && k == Model::kRestVelocityParameter && run.restart_label.rfind("SB", 0) == 0) {
+    throw fail("continuation.parameter",
+               fmt::format("= \"{}\" is invalid with start.restart.switch_branch at '{}': a moving surface breaks the "
+                           "symmetry that an SB breaks, so no other branch crosses there in {}: valid another of the "
+                           "model's parameters",
+                           run.parameter, run.restart_label, run.parameter));
+  }
   orbit = ContinuableIn(std::move(orbit), k);
   // The unknowns at fixed parameters; with an abnormal stop a friction level is released among them.
   const OrbitVariableSet variables = VariableSetOf(model, orbit.signature);

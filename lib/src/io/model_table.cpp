@@ -140,8 +140,8 @@ ModelTable ParseModelTable(std::string_view content, std::string_view path) {
   const toml::table root = ParseToml(content, path);
   const toml::node* node = root.get("model");
   if (node == nullptr) {
-    throw RunFileError(fmt::format("{}: key 'model' is missing: give a [model] table (kind = \"chain\" or \"matrices\")", path),
-                       "model");
+    std::map<std::string, std::string> locations;
+    TableReader(root, "", path, &locations).Missing("model", "give a [model] table (kind = \"chain\" or \"matrices\")");
   }
   ModelTable table;
   Locations* locations = &table.locations;

@@ -85,11 +85,11 @@ void ReadStart(const toml::table& start, const toml::table& root, std::string_vi
   s.Values("set", &run->set);
   s.Values("guess", &run->guess);
   if (const toml::table* restart = s.Table("restart", false)) ReadRestart(*restart, root, path, run);
+  s.RejectUnknown();  // first: a misspelt 'signature' is named as such, not as a start not given
   if (run->preset.empty() == run->signature.empty() && run->restart_run.empty()) {
     throw RunFileError(fmt::format("{}: key 'start.preset' or 'start.signature': give exactly one of them",
                                    Where(path, start)));
   }
-  s.RejectUnknown();
 }
 
 void ReadUnknowns(const toml::table& unknowns, std::string_view path, RunFile* run) {
@@ -254,13 +254,15 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   if (!IsRunName(run.output)) {
     top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));
   }
-  ReadStart(*top.Table("start", true), root, path, &run);
-  if (const toml::table* unknowns = top.Table("unknowns", false)) ReadUnknowns(*unknowns, path, &run);
+  const toml::table* start = top.Table("start", true);
+  const toml::table* unknowns = top.Table("unknowns", false);
   const toml::table* continuation = top.Table("continuation", true);
   const toml::table* trace = top.Table("trace", false);
+  top.RejectUnknown();  // first: a misspelt [trace] is named as such, not by what a trace lets out
+  ReadStart(*start, root, path, &run);
+  if (unknowns != nullptr) ReadUnknowns(*unknowns, path, &run);
   ReadContinuation(*continuation, trace != nullptr, path, &run);
   if (trace != nullptr) run.trace = ReadTrace(*trace, path, &run);
-  top.RejectUnknown();
   return run;
 }
 

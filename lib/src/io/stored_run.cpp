@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <map>
 #include <numbers>
-#include <ranges>
 #include <stdexcept>
 #include <type_traits>
 
@@ -61,9 +60,11 @@ BasicOrbit<Model> OrbitOf(const Model& model, const typename Model::Parameters& 
     const std::string name = layout.Name(index);
     const auto listed = std::find_if(point.solution.begin(), point.solution.end(), [&](const auto& v) { return v.first == name; });
     if (listed == point.solution.end()) {
+      std::vector<std::string> variables;
+      for (const auto& column : SolutionColumns(model, orbit)) variables.push_back(column.first);
       throw InvalidInput::WithMessage(
           "run", fmt::format("'{}' has no column '{}': valid a run of this model (its variables {})", run.summary.output,
-                             name, fmt::join(SolutionColumns(model, orbit) | std::views::keys, ", ")));
+                             name, fmt::join(variables, ", ")));
     }
     const double value = listed->second;
     if (index < layout.StartVariables()) {

@@ -62,8 +62,21 @@ class TableReader {
   [[noreturn]] void Fail(const toml::node& node, std::string_view key, std::string_view what) const {
     throw RunFileError(fmt::format("{}: key '{}{}' {}", Where(path_, node), prefix_, key, what), prefix_ + std::string(key));
   }
+  // A required key that is absent. The table's nearest key within two edits of it (and not read as
+  // itself) is named as the likely misspelling; a valid key read after this one would be too, and
+  // a question mark says so (no table's keys are that close to its required ones today).
   [[noreturn]] void Missing(std::string_view key, std::string_view what) const {
-    throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}", Where(path_, table_), prefix_, key, what),
+    std::string hint;
+    std::size_t best = 3;
+    for (const auto& [name, value] : table_) {
+      const std::string written(name.str());
+      const std::size_t d = Distance(written, std::string(key));
+      if (!known_.count(written) && d < best) {
+        best = d;
+        hint = fmt::format(" ('{}{}' at {}: a misspelling?)", prefix_, written, Where(path_, value));
+      }
+    }
+    throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}{}", Where(path_, table_), prefix_, key, what, hint),
                        prefix_ + std::string(key));
   }
 

@@ -9,9 +9,9 @@
 
 namespace stickslip {
 
-std::optional<int> ModelDescription::ParameterIndex(std::string_view name) const {
+std::optional<int> ModelDescription::ParameterIndex(std::string_view wanted) const {
   for (int k = 0; k < ParameterCount(); ++k) {
-    if (parameters[k].name == name) return k;
+    if (parameters[k].name == wanted) return k;
   }
   return std::nullopt;
 }

@@ -22,10 +22,6 @@ double Power(double x, int k) {
   return power;
 }
 
-// A term without coefficients is left out everywhere: 0 * e^{sigma t} must not become NaN where
-// the exponential overflows.
-bool Vanishes(const Sinusoid& s) { return s.cos_coefficient == 0.0 && s.sin_coefficient == 0.0; }
-
 // c e^{(sigma + i nu) t} with c = a - i b, whose real part is e^{sigma t} (a cos(nu t) + b sin(nu t)).
 Complex Oscillation(const ExponentialTerm& term, double t) {
   const Sinusoid& s = term.sinusoid;
@@ -78,7 +74,7 @@ std::optional<SinusoidSum> AsSinusoidSum(const ExponentialSum& f) {
   double constant = 0.0, slope = 0.0;
   std::vector<Sinusoid> sinusoids;
   for (const ExponentialTerm& e : f.terms()) {
-    if (Vanishes(e.sinusoid)) continue;
+    if (Vanishes(e)) continue;
     if (e.rate != 0.0) return std::nullopt;
     if (e.sinusoid.frequency == 0.0 && e.power <= 1) {
       (e.power == 0 ? constant : slope) += e.sinusoid.cos_coefficient;
@@ -110,7 +106,7 @@ ExponentialSum ExponentialSum::OfSinusoids(double constant, double slope, const 
 double ExponentialSum::operator()(double t) const {
   double value = 0.0;
   for (const ExponentialTerm& term : terms_) {
-    if (Vanishes(term.sinusoid)) continue;
+    if (Vanishes(term)) continue;
     value += Power(t, term.power) * Oscillation(term, t).real();
   }
   return value;
@@ -119,7 +115,7 @@ double ExponentialSum::operator()(double t) const {
 ExponentialSum::Jet ExponentialSum::JetAt(double t) const {
   Jet jet{0.0, 0.0, 0.0};
   for (const ExponentialTerm& term : terms_) {
-    if (Vanishes(term.sinusoid)) continue;
+    if (Vanishes(term)) continue;
     // For w = c e^{lambda t}: (t^m w)' = (m t^{m-1} + lambda t^m) w and
     // (t^m w)'' = (m(m-1) t^{m-2} + 2 lambda m t^{m-1} + lambda^2 t^m) w.
     const int m = term.power;
@@ -153,7 +149,7 @@ ExponentialSum ExponentialSum::Derivative() const {
   terms.reserve(2 * terms_.size());
   for (const ExponentialTerm& e : terms_) {
     const Sinusoid& s = e.sinusoid;
-    if (Vanishes(s)) continue;
+    if (Vanishes(e)) continue;
     if (e.power >= 1) {
       const double m = e.power;
       terms.push_back({e.power - 1, e.rate, {s.frequency, m * s.cos_coefficient, m * s.sin_coefficient}});
@@ -167,7 +163,7 @@ ExponentialSum ExponentialSum::Derivative() const {
 double ExponentialSum::DerivativeBound(int order, double l, double r) const {
   double bound = 0.0;
   for (const ExponentialTerm& term : terms_) {
-    if (!Vanishes(term.sinusoid)) bound += TermBound(term, order, l, r);
+    if (!Vanishes(term)) bound += TermBound(term, order, l, r);
   }
   return bound;
 }

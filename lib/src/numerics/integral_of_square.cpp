@@ -44,17 +44,13 @@ Complex PowerExponentialIntegral(int m, Complex lambda, double d) {
   return std::pow(d, m + 1) * UnitIntegral(m, lambda * d);
 }
 
-// A term that is zero everywhere: 0 e^{lambda t} must not become NaN where the exponential
-// overflows.
-bool Vanishes(const Sinusoid& s) { return s.cos_coefficient == 0.0 && (s.sin_coefficient == 0.0 || s.frequency == 0.0); }
-
 // int_0^d f^2 dt from f's values, by 20-point Gauss-Legendre on panels where every term turns by at
 // most a radian (|lambda| h <= 1), on which it is exact to rounding; NaN beyond kMaxPanels.
 constexpr double kMaxPanels = 1e5;
 double QuadratureOfSquare(const ExponentialSum& f, double d) {
   double reach = 0.0;  // the largest |lambda|
   for (const ExponentialTerm& term : f.terms()) {
-    if (!Vanishes(term.sinusoid)) reach = std::max(reach, std::abs(Complex(term.rate, term.sinusoid.frequency)));
+    if (!Vanishes(term)) reach = std::max(reach, std::abs(Complex(term.rate, term.sinusoid.frequency)));
   }
   const double panels = std::ceil(reach * d) + 1.0;
   if (!(panels <= kMaxPanels)) return std::numeric_limits<double>::quiet_NaN();
@@ -82,11 +78,11 @@ double IntegralOfSquare(const ExponentialSum& f, double d) {
   double sum = 0.0, scale = 0.0;  // scale: int (sum_k |c_k| t^{m_k} e^{sigma_k t})^2 dt, the rounding's
   for (std::size_t j = 0; j < terms.size(); ++j) {
     const Sinusoid& a = terms[j].sinusoid;
-    if (Vanishes(a)) continue;
+    if (Vanishes(terms[j])) continue;
     const Complex cj(a.cos_coefficient, -a.sin_coefficient), lj(terms[j].rate, a.frequency);
     for (std::size_t k = j; k < terms.size(); ++k) {
       const Sinusoid& b = terms[k].sinusoid;
-      if (Vanishes(b)) continue;
+      if (Vanishes(terms[k])) continue;
       const Complex ck(b.cos_coefficient, -b.sin_coefficient), lk(terms[k].rate, b.frequency);
       const int m = terms[j].power + terms[k].power;
       const double pair = 0.5 * (cj * ck * PowerExponentialIntegral(m, lj + lk, d) +

@@ -20,9 +20,10 @@ const char* ToString(NewtonTermination t) {
 }
 
 std::string NewtonSummary::BriefReport() const {
-  return fmt::format("{} after {} iteration(s), residual {:.3e}, condition {:.3e}{}{}",
-                     ToString(termination), iterations,
-                     residual_norms.empty() ? 0.0 : residual_norms.back(), condition_number,
+  // A condition number is >= 1 where it was estimated; 0 is "not estimated" and is left out.
+  return fmt::format("{} after {} iteration(s), residual {:.3e}{}{}{}", ToString(termination), iterations,
+                     residual_norms.empty() ? 0.0 : residual_norms.back(),
+                     condition_number > 0.0 ? fmt::format(", condition {:.3e}", condition_number) : "",
                      message.empty() ? "" : ": ", message);
 }
 

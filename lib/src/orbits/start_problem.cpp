@@ -90,7 +90,7 @@ Values Assemble(const StartInput& input, const PaperPreset* preset, int n) {
   }
   for (const auto& [key, value] : input.set) {
     const std::span<const SetKey> set_keys = SetKeys();
-    if (std::none_of(set_keys.begin(), set_keys.end(), [&](const SetKey& k) { return k.key == key; })) {
+    if (std::none_of(set_keys.begin(), set_keys.end(), [&wanted = key](const SetKey& k) { return k.key == wanted; })) {
       std::vector<std::string_view> keys;
       for (const SetKey& k : set_keys) keys.push_back(k.key);
       throw InvalidInput("set", fmt::format("'{}'", key), fmt::format("keys {}", fmt::join(keys, ", ")));

@@ -76,6 +76,9 @@ BasicBifurcationBranchStart<Model> BranchFromBifurcation(const std::string& type
   BasicOrbitContinuationSetup<Model> on_point = setup;
   on_point.options.max_points = 1;
   on_point.options.start_direction.resize(0);
+  // The known tangent towards increasing lambda, whatever the setup's direction: the second
+  // direction's sign follows the known tangent's, so that only `side` picks the half.
+  on_point.options.direction = 1;
   const OrbitContinuationProblem problem = MakeOrbitContinuation(on_point);
   const Branch branch = Continuation(*problem.system, nullptr, problem.options, problem.start).Run();
   if (branch.points.empty()) {

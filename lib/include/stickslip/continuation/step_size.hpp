@@ -23,14 +23,15 @@ class StepSizeController {
  public:
   virtual ~StepSizeController() = default;
   virtual double Initial() const = 0;
-  // The next step after an accepted step whose corrector took `iterations` iterations.
+  // The next step after an accepted step asked as `ds` (before a clip onto a parameter bound) whose
+  // corrector took `iterations` iterations.
   virtual double OnAccepted(double ds, int iterations) = 0;
   // The step to retry with after a failed corrector (may fall below ds_min: the caller stops).
   virtual double OnRejected(double ds) = 0;
 
   // The default policy: grow by up to `growth` when the corrector needed at most
   // target_iterations, shrink in proportion beyond (down to slowest_shrink), shrink by
-  // rejection_shrink on failure; bounded by ds_max.
+  // rejection_shrink on failure; bounded by ds_max, and by ds_min after an accepted step.
   static std::unique_ptr<StepSizeController> Create(const StepSizeOptions& options);
 };
 

@@ -30,6 +30,13 @@ struct ExponentialTerm {
   Sinusoid sinusoid;
 };
 
+// A term that is zero at every time (no coefficients, or b sin(0 t)): left out wherever a term is
+// evaluated, so that 0 e^{sigma t} never becomes NaN where the exponential overflows.
+inline bool Vanishes(const ExponentialTerm& term) {
+  const Sinusoid& s = term.sinusoid;
+  return s.cos_coefficient == 0.0 && (s.sin_coefficient == 0.0 || s.frequency == 0.0);
+}
+
 class ExponentialSum {
  public:
   ExponentialSum() = default;
