@@ -235,6 +235,25 @@ TEST(PseudoArclength, ReachesTheBoundWhenWhatIsLeftIsBelowTheSmallestStep) {
   EXPECT_NEAR(b.points.back().u(0), std::sqrt(1.0 - 0.81), 1e-12);
 }
 
+// Up the circle from lambda = -0.8 the slope dlambda/ds grows, so that a step the tangent does not
+// clip can cross the bound; the located crossing is put on it too (before, a few ulps past it).
+TEST(PseudoArclength, EndsExactlyOnTheBoundWhereAStepCrossesIt) {
+  const Circle circle;
+  for (double ds : {0.07, 0.1, 0.13, 0.17, 0.2}) {
+    for (double bound : {-0.5, -0.3, -0.1}) {
+      ContinuationOptions o = Options(ds);
+      o.step.ds_max = ds;
+      o.lambda_max = bound;
+      o.detect_folds = false;
+      const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(0.6, -0.8)).Run();
+      EXPECT_EQ(b.end, BranchEnd::kParameterBound) << b.end_message;
+      EXPECT_EQ(b.points.back().lambda, bound) << "ds = " << ds;
+      EXPECT_NEAR(b.points.back().u(0), std::sqrt(1.0 - bound * bound), 1e-12);
+      for (const BranchPoint& p : b.points) EXPECT_LE(p.lambda, bound) << "ds = " << ds;
+    }
+  }
+}
+
 TEST(PseudoArclength, EndsWhereAnotherUnknownReachesItsBoundLocatedOnTheBranch) {
   // Round the circle x^2 + lambda^2 = 1 from (1, 0) up: x falls to 0.5 at lambda = sqrt(3)/2.
   const Circle circle;

@@ -332,6 +332,21 @@ void Continuation::Report() const {
                        "points", branch_.points.back().lambda});
 }
 
+namespace {
+
+// A step that crosses a bound of the parameter locates it only to the location's tolerance (a few
+// ulps past it, outside the range): the point is put on it, as a clipped step's end is, where the
+// corrector at the fixed bound converges.
+detail::Sample OnParameterBound(const ContinuationOptions& o, detail::ArclengthCorrector& corrector,
+                                const detail::Sample& last, const detail::Event& event, const detail::Sample& located) {
+  if (!event.bound || event.bound_index != o.parameter_index) return located;
+  const double bound = event.name == "lambda_max" ? o.lambda_max : o.lambda_min;
+  std::optional<detail::Sample> exact = corrector.OnBound(last, located, bound);
+  return exact ? std::move(*exact) : located;
+}
+
+}  // namespace
+
 bool Continuation::RecordEvents() {
   State& st = *state_;
   const EventLocationOptions& location = st.options.location;
@@ -345,12 +360,13 @@ bool Continuation::RecordEvents() {
     std::optional<std::pair<BranchEnd, std::string>> ending;
     for (const detail::Located& l : point) {
       const detail::Event& e = *l.event;
-      branch_.points.push_back(MakePoint(l.sample, st.Lambda(l.sample.u), 0.0, e.type));
+      const detail::Sample sample = OnParameterBound(st.options, st.corrector, st.last, e, l.sample);
+      branch_.points.push_back(MakePoint(sample, st.Lambda(sample.u), 0.0, e.type));
       MarkLastPoint(&branch_, e.type, e.name, l.value, l.located, l.bracket);
       if (ending) continue;
       if (e.bound) {
         ending.emplace(BranchEnd::kParameterBound,
-                       fmt::format("reached {} = {:.10g}", e.bound_name, l.sample.u(e.bound_index)));
+                       fmt::format("reached {} = {:.10g}", e.bound_name, sample.u(e.bound_index)));
       } else if (e.terminal && l.value_before > 0.0) {
         // A terminal function ends the branch only when it leaves its positive side.
         ending.emplace(BranchEnd::kTerminalEvent,
