@@ -66,16 +66,14 @@ class TableReader {
   // itself) is named as the likely misspelling; a valid key read after this one would be too, and
   // a question mark says so (no table's keys are that close to its required ones today).
   [[noreturn]] void Missing(std::string_view key, std::string_view what) const {
-    std::string hint;
-    std::size_t best = 3;
+    std::vector<std::string> unread;
     for (const auto& [name, value] : table_) {
-      const std::string written(name.str());
-      const std::size_t d = Distance(written, std::string(key));
-      if (!known_.count(written) && d < best) {
-        best = d;
-        hint = fmt::format(" ('{}{}' at {}: a misspelling?)", prefix_, written, Where(path_, value));
-      }
+      if (!known_.count(std::string(name.str()))) unread.emplace_back(name.str());
     }
+    const std::string written = Nearest(std::string(key), unread);
+    const std::string hint =
+        written.empty() ? ""
+                        : fmt::format(" ('{}{}' at {}: a misspelling?)", prefix_, written, Where(path_, *table_.get(written)));
     throw RunFileError(fmt::format("{}: key '{}{}' is missing: {}{}", Where(path_, table_), prefix_, key, what, hint),
                        prefix_ + std::string(key));
   }
@@ -165,18 +163,24 @@ class TableReader {
     for (const auto& [key, value] : table_) {
       const std::string name(key.str());
       if (known_.count(name)) continue;
-      std::string suggestion;
-      std::size_t best = 3;
-      for (const std::string& k : known_) {
-        const std::size_t d = Distance(name, k);
-        if (d < best) best = d, suggestion = k;
-      }
+      const std::string suggestion = Nearest(name, known_);
       Fail(value, name, suggestion.empty() ? std::string("is unknown")
                                            : fmt::format("is unknown: did you mean '{}{}'?", prefix_, suggestion));
     }
   }
 
  private:
+  // The one of `candidates` nearest to `name` within two edits (the first of equals), or "".
+  template <typename Names>
+  static std::string Nearest(const std::string& name, const Names& candidates) {
+    std::string nearest;
+    std::size_t best = 3;
+    for (const std::string& candidate : candidates) {
+      const std::size_t d = Distance(name, candidate);
+      if (d < best) best = d, nearest = candidate;
+    }
+    return nearest;
+  }
   static std::size_t Distance(const std::string& a, const std::string& b) {
     std::vector<std::size_t> row(b.size() + 1);
     for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
