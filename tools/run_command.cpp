@@ -33,7 +33,8 @@ struct Executed {
 };
 
 // Continues `setup` (either model's) with a progress line and records the branch (`record`). A start
-// that does not converge is a failed run: exit code 3, nothing written.
+// that does not converge is a failed run: exit code 3, nothing written; one outside the range is
+// refused (exit 2, nothing written).
 template <typename Setup, typename Record>
 std::optional<Executed> ContinueAndRecord(const RunFile& run, Setup setup, const Record& record) {
   ProgressLineOptions line_options;
@@ -48,6 +49,7 @@ std::optional<Executed> ContinueAndRecord(const RunFile& run, Setup setup, const
     fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
     return std::nullopt;
   }
+  CheckRangeHoldsStart(run, branch.branch.points.front().lambda);
   StoredRun stored = record(branch);
   return Executed{std::move(branch.branch), std::move(stored), seconds};
 }
@@ -74,13 +76,17 @@ std::string Report(const RunFile& run, const Executed& e) {
 
 // Writes the run's files and reports the run on stdout, and the files of the earlier run's directory
 // that were kept (an export's b.<run> and s.<run>, files of the user's), so that none goes unseen.
-void WriteAndReport(const RunFile& run, const Executed& e, const std::filesystem::path& results) {
+// Returns the run's exit code: kExitNoConvergence where the corrector failed before the branch's
+// end (its points are written, as a trace's failed branch's are, and the code says so as the
+// trace's does), kExitOk otherwise.
+int WriteAndReport(const RunFile& run, const Executed& e, const std::filesystem::path& results) {
   const std::vector<std::string> kept = WriteRunFiles(results, e.stored);
   fmt::print("{}\n", Report(run, e));
   if (!kept.empty()) {
     fmt::print("{}: kept {} other file(s) of {}: {}\n", run.output, kept.size(), (results / run.output).string(),
                fmt::join(kept, ", "));
   }
+  return e.branch.end == BranchEnd::kStepTooSmall ? kExitNoConvergence : kExitOk;
 }
 
 // CheckOutputDirectory, with a refused output placed at the run file's key 'output'.
@@ -132,7 +138,8 @@ int RunRuns(const RunArgs& args) {
       code = kExitNoConvergence;
       continue;
     }
-    WriteAndReport(run, *e, args.results);
+    const int written = WriteAndReport(run, *e, args.results);
+    if (code == kExitOk) code = written;
   }
   return code;
 }
@@ -235,6 +242,7 @@ int RunContinue(ContinueArgs args) {
   // Every output is checked before anything is computed.
   const std::vector<std::pair<int, std::string>> directions = Directions(args);
   for (const auto& [direction, output] : directions) CheckOutputDirectory(args.start.results, output);
+  int code = kExitOk;
   for (const auto& [direction, output] : directions) {
     run.direction = direction;
     run.output = output;
@@ -245,9 +253,10 @@ int RunContinue(ContinueArgs args) {
       throw AsOption(error);
     }
     if (!e) return kExitNoConvergence;
-    WriteAndReport(run, *e, args.start.results);
+    const int written = WriteAndReport(run, *e, args.start.results);
+    if (code == kExitOk) code = written;
   }
-  return kExitOk;
+  return code;
 }
 
 }  // namespace

@@ -107,9 +107,13 @@ const RunInput& OneBranch(const RunInput& input) {
   return input;
 }
 
-// A start that did not converge ends nothing: it raises, as the command line exits 3.
+// A start that did not converge ends nothing: it raises, as the command line exits 3. A first point
+// outside the range (a switched branch's, ds from its label) raises the run file's error.
 void RaiseIfStartFailed(const RunInput& input, const Branch& branch) {
-  if (branch.end != BranchEnd::kStartFailed) return;
+  if (branch.end != BranchEnd::kStartFailed) {
+    CheckRangeHoldsStart(input.run, branch.points.front().lambda);
+    return;
+  }
   py::dict summary;
   summary["termination"] = ToString(branch.end);
   summary["message"] = branch.end_message;

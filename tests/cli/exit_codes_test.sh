@@ -74,6 +74,14 @@ TOML
 expect 3 "does not converge" "$bin" run --results "$work/out" "$work/far.toml"
 sed '/^direction = /d; s/^range = .*/&\n[trace]/' "$work/far.toml" > "$work/far-trace.toml"
 expect 3 "did not start" "$bin" run --results "$work/out" "$work/far-trace.toml"
+# A branch whose corrector fails before its end (steps of at least 1.9 in u_r from 1.4041): its
+# points are written and the code is 3, for continue and run as for a trace's failed branch.
+steps=(--preset paper-6 --parameter u_r --direction down --range 0.5,3 --ds 2 --ds-min 1.9 --ds-max 2 --results "$r")
+code 3 "continue whose corrector failed" "$bin" continue "${steps[@]}" --output failed
+grep -q '"termination": "step-too-small"' "$r/failed/summary.json" && pass || fail "the failed branch is not written"
+printf '%s\n' 'output = "failed-run"' '[start]' 'preset = "paper-6"' '[continuation]' 'parameter = "u_r"' \
+  'direction = "down"' 'range = [0.5, 3]' 'ds = 2' 'ds_min = 1.9' 'ds_max = 2' > "$work/failed.toml"
+code 3 "run whose corrector failed" "$bin" run --results "$r" "$work/failed.toml"
 
 # ---- 4: not a motion. Section 5.2's printed data solve to an orbit whose stick ends early
 # (G:3 < 0): solve prints it and exits 4; a trace from it is refused the same way, with nothing

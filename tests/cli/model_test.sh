@@ -69,6 +69,12 @@ PY
   fail "find --model five-mass-chain.toml --trace in v_b exits $?: $(tail -3 "$work/vb.txt")"
 [ "$(grep -c "^  'stick slip+ stick slip-' .* parameter-bound$" "$work/vb.txt")" -eq 2 ] && pass ||
   fail "the five-mass chain in v_b is not traced over its whole period: $(grep "^  '" "$work/vb.txt")"
+# ... and in its kinetic level, F_s = 0.4 held: upwards the trace stops where F_k meets F_s, short of
+# the range asked for, and its end says why.
+"$bin" find --model "$models/five-mass-chain.toml" --trace 0.1,0.5 --trace-parameter F_k > "$work/fk.txt" 2>&1 &&
+  grep -qx "  up: parameter-bound: reached F_k = 0.4 (F_k <= F_s = 0.4)" "$work/fk.txt" &&
+  grep -qx "  down: parameter-bound: reached F_k = 0.1" "$work/fk.txt" && pass ||
+  fail "the trace in F_k does not say that F_s ended it: $(grep "^  [a-z]*:" "$work/fk.txt")"
 
 # A damped mass on a belt with equal levels slides steadily: no orbit type (exit 5), nothing printed on stdout.
 cat > "$work/slide.toml" <<'TOML'
@@ -401,8 +407,17 @@ sed 's/label = "SB2"/label = "EP1"/' "$work/switch.toml" > "$work/switch-ep.toml
 expect 2 "key 'start.restart.switch_branch' = true is invalid at 'EP1' (type EP): valid at a period doubling (PD) or a symmetry breaking (SB)" \
   "$bin" run --results "$work/switch/sb" "$work/switch-ep.toml"
 sed 's/parameter = "omega"/parameter = "v_b"/; s/range = \[0.37, 0.38\]/range = [0.0, 0.1]/' "$work/switch.toml" > "$work/switch-vb.toml"
-expect 2 "key 'continuation.parameter' = \"v_b\" is invalid with start.restart.switch_branch at 'SB2': a moving surface breaks" \
+expect 2 "so no other branch crosses there in v_b: valid omega, F_k, F_s" \
   "$bin" run --results "$work/switch/sb" "$work/switch-vb.toml"
+# SB2 lies on F_k = 0.3: both halves of the branch leaving it start below, outside a range [0.3, 0.4]
+# that holds the label. Refused, naming the side, and nothing written (a one-point run was).
+for side in down up; do
+  sed "s/\"sb-switched\"/\"sb-fk\"/; s/parameter = \"omega\"/parameter = \"F_k\"/; s/range = \[0.37, 0.38\]/range = [0.3, 0.4]/; s/\"down\"/\"$side\"/" \
+    "$work/switch.toml" > "$work/switch-fk.toml"
+  expect 2 "key 'continuation.range' = [0.3, 0.4] excludes the start of the branch that leaves 'SB2' going $side, F_k = 0.29999" \
+    "$bin" run --results "$work/switch/sb" "$work/switch-fk.toml"
+  [ ! -e "$work/switch/sb/sb-fk" ] && pass || fail "the refused switch in F_k going $side wrote its run"
+done
 printf 'shooting = "multiple"\n' >> "$work/switch.toml"
 expect 2 "key 'continuation.shooting' = \"multiple\" is invalid with start.restart.switch_branch" \
   "$bin" run --results "$work/switch/sb" "$work/switch.toml"

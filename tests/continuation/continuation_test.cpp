@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 namespace stickslip {
@@ -144,6 +145,27 @@ TEST(PseudoArclength, LocatesUserValuesAndEndsAtTheParameterBound) {
   EXPECT_EQ(b.end, BranchEnd::kParameterBound);
   EXPECT_NEAR(b.points.back().lambda, 0.5, 1e-10);
   EXPECT_EQ(b.points.back().label, "EP");
+}
+
+TEST(PseudoArclength, EndMessageAtABoundGivesTheBoundsReason) {
+  const Cubic cubic;
+  ContinuationOptions o = Options();
+  o.parameter_name = "F_k";
+  o.lambda_max = 0.5;
+  o.lambda_max_reason = "F_k <= F_s = 0.5";
+  const Branch b = Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kParameterBound);
+  EXPECT_EQ(b.end_message, "reached F_k = 0.5 (F_k <= F_s = 0.5)");
+  // Without a reason, the bound is the range asked for: nothing more is said.
+  o.lambda_max_reason.clear();
+  EXPECT_EQ(Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run().end_message, "reached F_k = 0.5");
+  // A start on the bound heading out of the range: the lower bound's reason, not the upper's.
+  o.lambda_min = 0.0;
+  o.lambda_min_reason = "its valid range: F_k >= 0";
+  o.lambda_max_reason = "F_k <= F_s = 0.5";
+  o.direction = -1;
+  EXPECT_EQ(Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run().end_message,
+            "at the bound F_k = 0 (its valid range: F_k >= 0)");
 }
 
 // A fold of curvature 100: lambda = -50 x^2. Long steps overshoot it and fail, short ones pass.
@@ -483,6 +505,19 @@ TEST(Continuation, CanBeSteppedOnePointAtATime) {
   }
   EXPECT_EQ(c.branch().end, BranchEnd::kMaxPoints);
   EXPECT_EQ(static_cast<int>(c.branch().points.size()), 10);
+}
+
+TEST(Continuation, MaxPointsEndNamesTheLimitAndWhereItStopped) {
+  const Circle circle;
+  ContinuationOptions o = Options();
+  o.max_points = 3;
+  o.parameter_name = "omega";
+  const Branch b = Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run();
+  ASSERT_EQ(b.end, BranchEnd::kMaxPoints);
+  EXPECT_EQ(b.end_message, fmt::format("max_points = 3 reached at omega = {:.10g}", b.points.back().lambda));
+  o.max_points = 1;
+  EXPECT_EQ(Continuation(circle, nullptr, o, Eigen::Vector2d(1.0, 0.0)).Run().end_message,
+            "max_points = 1 reached at omega = 0");
 }
 
 // The InvalidInput that `f` throws, if any.

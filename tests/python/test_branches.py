@@ -232,3 +232,11 @@ def test_the_end_names_the_parameter_and_its_rounded_value():
                                                   ("u_r", (0.2, 0.3), "down", "reached u_r = 0.2")):
         branch = stickslip.continue_orbit(parameter, bounds, preset="paper-4.1", direction=direction)
         assert branch.termination == "parameter-bound" and branch.message == message, branch.message
+
+
+def test_an_end_short_of_the_range_says_which_physical_bound_ended_it():
+    # Section 4.1's data have u_s = 0.1: the static level u_r, continued downwards with u_s held,
+    # stops where it meets it (eq. 4), short of the range's 0.01, and the message says why.
+    branch = stickslip.continue_orbit("u_r", (0.01, 0.3), preset="paper-4.1", direction="down")
+    assert branch.termination == "parameter-bound"
+    assert branch.message == "reached u_r = 0.1 (u_r >= u_s = 0.1)", branch.message

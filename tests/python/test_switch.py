@@ -128,3 +128,13 @@ def test_a_type_boundary_needs_a_stored_change_of_type(keywords, message):
     with pytest.raises(ValueError) as error:
         stickslip.continue_orbit("omega", (0.3, 0.69), boundary="u_r", results=RESULTS, **keywords)
     assert message in str(error.value)
+
+
+def test_a_switch_whose_first_point_leaves_the_range_raises_naming_the_range_and_the_side():
+    # The period-2 branch leaves PD2 upwards in omega: a range that ends on the PD holds the label
+    # but not the new branch's first point. Nothing is continued from outside the range.
+    to_pd = stickslip.continue_orbit("omega", (0.6, 0.739), max_points=12, **TO_PD)
+    pd = to_pd.special_point("PD2")["omega"]
+    with pytest.raises(ValueError, match=r"^range = \[0.6, .*\] excludes the start of the branch that leaves 'PD2' "
+                                         r"going up, omega = 0\.73"):
+        to_pd.switch("PD2", side=1, range=(0.6, pd), ds=0.005, ds_max=0.02)

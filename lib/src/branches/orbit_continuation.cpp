@@ -26,20 +26,35 @@ namespace {
 // kinetic level reaching zero ends the family by the sliding-friction margin, a domain boundary.
 void KeepInPhysicalRanges(const OrbitContinuationParts& parts, ContinuationOptions* options) {
   const OrbitLayout& layout = parts.variables.layout;
+  // A bound narrower than the range asked for takes its reason, which the end message there gives.
+  const auto raise_min = [options](double bound, const std::string& reason) {
+    if (!(bound > options->lambda_min)) return;
+    options->lambda_min = bound;
+    options->lambda_min_reason = reason;
+  };
+  const auto lower_max = [options](double bound, const std::string& reason) {
+    if (!(bound < options->lambda_max)) return;
+    options->lambda_max = bound;
+    options->lambda_max_reason = reason;
+  };
   const std::vector<ParameterDescription>& ranges = parts.system->description().parameters;
   for (std::size_t k = 0; k < ranges.size(); ++k) {
     if (parts.parameter != layout.Parameter(static_cast<int>(k))) continue;
-    options->lambda_min = std::max(options->lambda_min, ranges[k].minimum);
-    options->lambda_max = std::min(options->lambda_max, ranges[k].maximum);
+    raise_min(ranges[k].minimum, "its valid range: " + ranges[k].range);
+    lower_max(ranges[k].maximum, "its valid range: " + ranges[k].range);
   }
   const int kinetic = parts.variables.kinetic_level, static_level = parts.variables.static_level;
   const bool held_kinetic = std::find(parts.free.begin(), parts.free.end(), kinetic) == parts.free.end();
   const bool held_static =
       std::find(parts.free.begin(), parts.free.end(), static_level) == parts.free.end() && !parts.tie_static_friction;
+  const std::string kinetic_name = layout.Name(kinetic), static_name = layout.Name(static_level);
   if (parts.parameter == static_level && held_kinetic) {
-    options->lambda_min = std::max(options->lambda_min, parts.start(kinetic));
+    raise_min(parts.start(kinetic), fmt::format("{} >= {} = {:.10g}", static_name, kinetic_name, parts.start(kinetic)));
   }
-  if (parts.parameter == kinetic && held_static) options->lambda_max = std::min(options->lambda_max, parts.start(static_level));
+  if (parts.parameter == kinetic && held_static) {
+    lower_max(parts.start(static_level),
+              fmt::format("{} <= {} = {:.10g}", kinetic_name, static_name, parts.start(static_level)));
+  }
 }
 
 // The condition's equations in the unknowns of the paper's model's periodicity equations.

@@ -176,6 +176,16 @@ bool EndsOnALocatedEndPoint(const Branch& b) {
   return s.type == "EP" && s.test_function != "start" && s.point == static_cast<int>(b.points.size()) - 1;
 }
 
+// " (F_k <= F_s = 0.4)": the reason of the upper or lower parameter bound, where there is one.
+std::string BoundReason(const ContinuationOptions& o, bool upper) {
+  const std::string& reason = upper ? o.lambda_max_reason : o.lambda_min_reason;
+  return reason.empty() ? "" : " (" + reason + ")";
+}
+
+std::string MaxPointsReached(const ContinuationOptions& o, double lambda) {
+  return fmt::format("max_points = {} reached at {} = {:.10g}", o.max_points, o.parameter_name, lambda);
+}
+
 }  // namespace
 
 bool Continuation::End(BranchEnd why, std::string message) {
@@ -211,7 +221,7 @@ bool Continuation::Start() {
   if (st.Lambda(st.last.u) < o.lambda_min || st.Lambda(st.last.u) > o.lambda_max) {
     return End(BranchEnd::kParameterBound, "the start lies outside the parameter range");
   }
-  if (o.max_points <= 1) return End(BranchEnd::kMaxPoints, "max_points reached");
+  if (o.max_points <= 1) return End(BranchEnd::kMaxPoints, MaxPointsReached(o, st.Lambda(st.last.u)));
   return true;
 }
 
@@ -234,7 +244,8 @@ bool Continuation::PredictAndCorrect() {
     // Standing on the bound and heading out of the range (a start on a range end): done.
     if (rate != 0.0 && to_bound <= 0.0) {
       return End(BranchEnd::kParameterBound,
-                 fmt::format("at the bound {} = {:.10g}", o.parameter_name, st.Lambda(st.last.u)));
+                 fmt::format("at the bound {} = {:.10g}{}", o.parameter_name, st.Lambda(st.last.u),
+                             BoundReason(o, rate > 0.0)));
     }
     // Only a finite bound can be reached (and tolerance times an infinite bound is no test).
     const bool clipped = rate != 0.0 && std::isfinite(bound) && to_bound <= ds;
@@ -365,8 +376,10 @@ bool Continuation::RecordEvents() {
       MarkLastPoint(&branch_, e.type, e.name, l.value, l.located, l.bracket);
       if (ending) continue;
       if (e.bound) {
+        const bool lambda = e.bound_index == st.options.parameter_index;
         ending.emplace(BranchEnd::kParameterBound,
-                       fmt::format("reached {} = {:.10g}", e.bound_name, sample.u(e.bound_index)));
+                       fmt::format("reached {} = {:.10g}{}", e.bound_name, sample.u(e.bound_index),
+                                   lambda ? BoundReason(st.options, e.name == "lambda_max") : ""));
       } else if (e.terminal && l.value_before > 0.0) {
         // A terminal function ends the branch only when it leaves its positive side.
         ending.emplace(BranchEnd::kTerminalEvent,
@@ -389,15 +402,17 @@ bool Continuation::Accept() {
                            st.options.parameter_name, st.Lambda(st.next.u), branch_.points.size() - 1));
   }
   if (st.on_bound) {
-    return End(BranchEnd::kParameterBound,
-               fmt::format("reached {} = {:.10g}", st.options.parameter_name, st.Lambda(st.next.u)));
+    const double lambda = st.Lambda(st.next.u);
+    const bool upper = std::abs(lambda - st.options.lambda_max) <= std::abs(lambda - st.options.lambda_min);
+    return End(BranchEnd::kParameterBound, fmt::format("reached {} = {:.10g}{}", st.options.parameter_name, lambda,
+                                                       BoundReason(st.options, upper)));
   }
   // A clip onto a bound is no sign of difficulty: the next step grows from the asked one, so that
   // a clipped step that lands short of the bound is not followed by one below ds_min.
   st.ds = st.step_size->OnAccepted(st.asked_ds, st.next.iterations);
   st.last = std::move(st.next);
   if (static_cast<int>(branch_.points.size()) >= st.options.max_points) {
-    return End(BranchEnd::kMaxPoints, "max_points reached");
+    return End(BranchEnd::kMaxPoints, MaxPointsReached(st.options, st.Lambda(st.last.u)));
   }
   return true;
 }

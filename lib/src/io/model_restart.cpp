@@ -1,6 +1,7 @@
 #include "stickslip/io/model_restart.hpp"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -173,11 +174,15 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   // A moving surface breaks the half-period symmetry whose breaking an SB is: in v_b the pitchfork
   // unfolds, and no second branch crosses the label's.
   if (run.restart_switch_branch && k == Model::kRestVelocityParameter && run.restart_label.rfind("SB", 0) == 0) {
+    const ModelDescription& description = model.Description();
+    std::vector<std::string> others;
+    for (int i = model.Autonomous() ? 1 : 0; i < description.ParameterCount(); ++i) {
+      if (i != k) others.push_back(description.parameters[i].name);
+    }
     throw fail("continuation.parameter",
                fmt::format("= \"{}\" is invalid with start.restart.switch_branch at '{}': a moving surface breaks the "
-                           "symmetry that an SB breaks, so no other branch crosses there in {}: valid another of the "
-                           "model's parameters",
-                           run.parameter, run.restart_label, run.parameter));
+                           "symmetry that an SB breaks, so no other branch crosses there in {}: valid {}",
+                           run.parameter, run.restart_label, run.parameter, fmt::join(others, ", ")));
   }
   orbit = ContinuableIn(std::move(orbit), k);
   // The unknowns at fixed parameters; with an abnormal stop a friction level is released among them.

@@ -39,8 +39,14 @@ RunFileError KeyError(const RunFile& run, const std::string& key, const std::str
 
 void CheckRangeHoldsStart(const RunFile& run, double value) {
   if (run.range_min <= value && value <= run.range_max) return;
-  throw KeyError(run, "continuation.range", fmt::format("= [{}, {}] excludes the start, {} = {}", run.range_min,
-                                                        run.range_max, run.parameter, value));
+  // A switched branch's start is its first point, ds along it from the label: on a label at a
+  // bound, a range that holds the label may not hold it.
+  const std::string start = run.restart_switch_branch
+                                ? fmt::format("the start of the branch that leaves '{}' going {}", run.restart_label,
+                                              run.direction > 0 ? "up" : "down")
+                                : "the start";
+  throw KeyError(run, "continuation.range", fmt::format("= [{}, {}] excludes {}, {} = {}", run.range_min,
+                                                        run.range_max, start, run.parameter, value));
 }
 
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,

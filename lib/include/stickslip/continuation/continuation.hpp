@@ -97,6 +97,10 @@ struct ContinuationOptions {
   std::string parameter_name = "lambda";
   double lambda_min = -std::numeric_limits<double>::infinity();  // the branch ends at these
   double lambda_max = std::numeric_limits<double>::infinity();   // bounds (located, EP)
+  // Why a bound lies where it does, where it is not the range asked for ("F_k <= F_s = 0.4"):
+  // the end message at that bound says it ("reached F_k = 0.4 (F_k <= F_s = 0.4)").
+  std::string lambda_min_reason;
+  std::string lambda_max_reason;
   int max_points = 2000;     // accepted points, the start included
   StepSizeOptions step;
   NewtonOptions corrector = [] {

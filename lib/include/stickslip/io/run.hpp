@@ -25,7 +25,8 @@ void SetContinuationOptions(const RunFile& run, ContinuationOptions* options);
 RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what);
 
 // Throws KeyError at continuation.range where the run's range does not hold the start's `value` of
-// the continued parameter.
+// the continued parameter: the start's before the continuation, the first point's after it (a
+// switched branch's first point lies ds along it from the label).
 void CheckRangeHoldsStart(const RunFile& run, double value);
 
 // The run's user values as the engine takes them: each variable by its position among `order` (the
