@@ -49,7 +49,7 @@ std::optional<Executed> ContinueAndRecord(const RunFile& run, Setup setup, const
     fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
     return std::nullopt;
   }
-  CheckRangeHoldsStart(run, branch.branch.points.front().lambda);
+  CheckRangeHoldsFirstPoint(run, branch.branch);
   StoredRun stored = record(branch);
   return Executed{std::move(branch.branch), std::move(stored), seconds};
 }
@@ -76,18 +76,19 @@ std::string Report(const RunFile& run, const Executed& e) {
 
 // Writes the run's files and reports the run on stdout, and the files of the earlier run's directory
 // that were kept (an export's b.<run> and s.<run>, files of the user's), so that none goes unseen.
-// Returns the run's exit code: kExitNoConvergence where the corrector failed before the branch's
-// end (its points are written, as a trace's failed branch's are, and the code says so as the
-// trace's does), kExitOk otherwise.
-int WriteAndReport(const RunFile& run, const Executed& e, const std::filesystem::path& results) {
+void WriteAndReport(const RunFile& run, const Executed& e, const std::filesystem::path& results) {
   const std::vector<std::string> kept = WriteRunFiles(results, e.stored);
   fmt::print("{}\n", Report(run, e));
   if (!kept.empty()) {
     fmt::print("{}: kept {} other file(s) of {}: {}\n", run.output, kept.size(), (results / run.output).string(),
                fmt::join(kept, ", "));
   }
-  return e.branch.end == BranchEnd::kStepTooSmall ? kExitNoConvergence : kExitOk;
 }
+
+// A written run's exit code: kExitNoConvergence where the corrector failed before the branch's end
+// (its points are written, as a trace's failed branch's are, and the code says so as the trace's
+// does), kExitOk otherwise.
+int ExitCodeOf(const Branch& branch) { return branch.end == BranchEnd::kStepTooSmall ? kExitNoConvergence : kExitOk; }
 
 // CheckOutputDirectory, with a refused output placed at the run file's key 'output'.
 void CheckRunOutput(const RunFile& run, const std::filesystem::path& results) {
@@ -138,8 +139,8 @@ int RunRuns(const RunArgs& args) {
       code = kExitNoConvergence;
       continue;
     }
-    const int written = WriteAndReport(run, *e, args.results);
-    if (code == kExitOk) code = written;
+    WriteAndReport(run, *e, args.results);
+    if (code == kExitOk) code = ExitCodeOf(e->branch);
   }
   return code;
 }
@@ -253,8 +254,8 @@ int RunContinue(ContinueArgs args) {
       throw AsOption(error);
     }
     if (!e) return kExitNoConvergence;
-    const int written = WriteAndReport(run, *e, args.start.results);
-    if (code == kExitOk) code = written;
+    WriteAndReport(run, *e, args.start.results);
+    if (code == kExitOk) code = ExitCodeOf(e->branch);
   }
   return code;
 }

@@ -107,11 +107,12 @@ const RunInput& OneBranch(const RunInput& input) {
   return input;
 }
 
-// A start that did not converge ends nothing: it raises, as the command line exits 3. A first point
-// outside the range (a switched branch's, ds from its label) raises the run file's error.
-void RaiseIfStartFailed(const RunInput& input, const Branch& branch) {
+// A branch that did not start ends nothing: a start that did not converge raises ConvergenceError,
+// as the command line exits 3; a first point outside the range (a switched branch's, ds from its
+// label) raises the run file's error (ValueError), as the command line refuses it.
+void RaiseUnlessStarted(const RunInput& input, const Branch& branch) {
   if (branch.end != BranchEnd::kStartFailed) {
-    CheckRangeHoldsStart(input.run, branch.points.front().lambda);
+    CheckRangeHoldsFirstPoint(input.run, branch);
     return;
   }
   py::dict summary;
@@ -131,7 +132,7 @@ struct ComputedRun {
 };
 
 ComputedRun Computed(const RunInput& input, OrbitContinuationSetup setup, const OrbitBranch& branch) {
-  RaiseIfStartFailed(input, branch.branch);
+  RaiseUnlessStarted(input, branch.branch);
   StoredRun stored = RecordRun(input.run, branch);
   return {input, std::move(setup), branch.branch.special_points, std::move(stored)};
 }
@@ -156,7 +157,7 @@ ComputedRun Continue(const RunInput& input) {
   OneBranch(input);
   if (const std::optional<ModelRunSetup> model = MakeModelSetup(input.run, input.results)) {
     const BasicOrbitBranch<DynamicLinearOscillator> branch = Continued(model->setup);
-    RaiseIfStartFailed(input, branch.branch);
+    RaiseUnlessStarted(input, branch.branch);
     return {input, std::nullopt, branch.branch.special_points, model->Recorded(input.run, branch)};
   }
   OrbitContinuationSetup setup = [&] {
@@ -240,14 +241,15 @@ class Stepper {
 
   bool Step() {
     bool more = false;
-    std::optional<Branch> failed;
+    std::optional<Branch> started;  // after the first step: the start, seen as RaiseUnlessStarted sees it
     {
       py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(mutex_);  // one step at a time, whatever the threads
       more = continuation_->Step();
-      if (!more && continuation_->branch().end == BranchEnd::kStartFailed) failed = continuation_->branch();
+      const Branch& branch = continuation_->branch();
+      if (branch.points.size() <= 1) started = branch;
     }
-    if (failed) RaiseIfStartFailed(input_, *failed);
+    if (started) RaiseUnlessStarted(input_, *started);
     return more;
   }
 

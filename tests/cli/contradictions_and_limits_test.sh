@@ -88,16 +88,20 @@ expect 2 "key 'output' = 'one-output' is invalid: valid an output no other run f
 
 # ---- Item 9: the documented maxima are reached.
 # 1e6 forcing periods of section 4.1's orbit (two stops a period): 2e6 events, under the
-# default --max-events 1e7; the CSV of 1e6 periods x 1 sample is streamed to the file.
+# default --max-events 1e7; the CSV of 1e6 periods x 1 sample is streamed to the file. The
+# sanitized build (about 8 times slower) runs the same code on 1e5 periods: the maximum is the
+# plain build's to reach.
+periods=1000000
+[ "${STICKSLIP_SANITIZED:-0}" = 1 ] && periods=100000
 start=$(date +%s)
-if "$bin" simulate --preset paper-4.1 --periods 1e6 --samples-per-period 1 --csv "$work/out/long.csv" > "$work/stdout" 2> "$work/stderr"; then
+if "$bin" simulate --preset paper-4.1 --periods $periods --samples-per-period 1 --csv "$work/out/long.csv" > "$work/stdout" 2> "$work/stderr"; then
   rows=$(($(wc -l < "$work/out/long.csv") - 1))
-  [ "$rows" -eq 1000001 ] && pass || fail "simulate --periods 1e6 wrote $rows samples, want 1000001"
-  tail -1 "$work/stdout" | grep -q "^2000000 event(s)" && pass || fail "simulate --periods 1e6: $(tail -1 "$work/stdout")"
+  [ "$rows" -eq $((periods + 1)) ] && pass || fail "simulate --periods $periods wrote $rows samples, want $((periods + 1))"
+  tail -1 "$work/stdout" | grep -q "^$((2 * periods)) event(s)" && pass || fail "simulate --periods $periods: $(tail -1 "$work/stdout")"
 else
-  fail "simulate --periods 1e6 failed: $(cat "$work/stderr")"
+  fail "simulate --periods $periods failed: $(cat "$work/stderr")"
 fi
-echo "simulate --periods 1e6: $(( $(date +%s) - start )) s"
+echo "simulate --periods $periods: $(( $(date +%s) - start )) s"
 rm -f "$work/out/long.csv"
 # --max-events reached: exit 1, a message naming it; the CSV up to there is still written whole.
 "$bin" simulate --preset paper-4.1 --periods 100 --max-events 5 --csv "$work/out/cut.csv" > "$work/stdout" 2> "$work/stderr"

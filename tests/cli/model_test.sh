@@ -414,7 +414,7 @@ expect 2 "so no other branch crosses there in v_b: valid omega, F_k, F_s" \
 for side in down up; do
   sed "s/\"sb-switched\"/\"sb-fk\"/; s/parameter = \"omega\"/parameter = \"F_k\"/; s/range = \[0.37, 0.38\]/range = [0.3, 0.4]/; s/\"down\"/\"$side\"/" \
     "$work/switch.toml" > "$work/switch-fk.toml"
-  expect 2 "key 'continuation.range' = [0.3, 0.4] excludes the start of the branch that leaves 'SB2' going $side, F_k = 0.29999" \
+  expect 2 "key 'continuation.range' = [0.3, 0.4] excludes the first point of the branch that leaves 'SB2' (direction = \"$side\"), F_k = 0.29999" \
     "$bin" run --results "$work/switch/sb" "$work/switch-fk.toml"
   [ ! -e "$work/switch/sb/sb-fk" ] && pass || fail "the refused switch in F_k going $side wrote its run"
 done

@@ -142,7 +142,8 @@ class Branch(_Table):
         side        +1 or -1: the two halves of the new branch (at a PD the same orbits shifted by
                     one period, at an SB mirror images; at a BP the two ways along it)
         range, ds, ds_min, ds_max, max_points, output: as continue_orbit's; left out, this branch's.
-        Returns a Branch; raises ValueError for a label that is not a BP, PD or SB of this branch,
+        Returns a Branch; raises ValueError for a label that is not a BP, PD or SB of this branch
+        and where the new branch's first point (ds along it from the label) lies outside `range`,
         ConvergenceError if the new branch does not start.
         """
         if self._computed is None:

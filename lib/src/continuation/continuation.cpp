@@ -83,6 +83,7 @@ struct Continuation::State {
   double next_ds = 0.0;     // ... at this arclength from the last
   double asked_ds = 0.0;    // ... by a step of this length, before a clip onto a bound
   bool on_bound = false;    // ... put exactly on a parameter bound
+  bool on_upper = false;    // ... lambda_max (else lambda_min)
   bool closes_loop = false;  // ... the start again: the branch is closed
   // For ClosedLoopOptions: the start as the branch left it (its tangent oriented by the first
   // step), the farthest any point lay from it, and the longest step so far.
@@ -182,6 +183,12 @@ std::string BoundReason(const ContinuationOptions& o, bool upper) {
   return reason.empty() ? "" : " (" + reason + ")";
 }
 
+// "reached omega = 0.69": a bound's end message (10 digits: a located bound of another unknown
+// lies within rounding of it), with the parameter bound's reason.
+std::string BoundReached(const std::string& name, double value, const std::string& reason = "") {
+  return fmt::format("reached {} = {:.10g}{}", name, value, reason);
+}
+
 std::string MaxPointsReached(const ContinuationOptions& o, double lambda) {
   return fmt::format("max_points = {} reached at {} = {:.10g}", o.max_points, o.parameter_name, lambda);
 }
@@ -258,6 +265,7 @@ bool Continuation::PredictAndCorrect() {
       // within rounding of it, the point is put on it, and the bound event records it. If that
       // fails, the branch still ends on the corrected point.
       st.on_bound = clipped && std::abs(st.Lambda(st.next.u) - bound) <= o.bound_tolerance * (1.0 + std::abs(bound));
+      st.on_upper = rate > 0.0;
       if (st.on_bound) {
         if (std::optional<detail::Sample> exact = st.corrector.OnBound(st.last, st.next, bound)) {
           st.next = std::move(*exact);
@@ -376,10 +384,10 @@ bool Continuation::RecordEvents() {
       MarkLastPoint(&branch_, e.type, e.name, l.value, l.located, l.bracket);
       if (ending) continue;
       if (e.bound) {
-        const bool lambda = e.bound_index == st.options.parameter_index;
+        const bool on_parameter = e.bound_index == st.options.parameter_index;
         ending.emplace(BranchEnd::kParameterBound,
-                       fmt::format("reached {} = {:.10g}{}", e.bound_name, sample.u(e.bound_index),
-                                   lambda ? BoundReason(st.options, e.name == "lambda_max") : ""));
+                       BoundReached(e.bound_name, sample.u(e.bound_index),
+                                    on_parameter ? BoundReason(st.options, e.name == "lambda_max") : ""));
       } else if (e.terminal && l.value_before > 0.0) {
         // A terminal function ends the branch only when it leaves its positive side.
         ending.emplace(BranchEnd::kTerminalEvent,
@@ -402,10 +410,8 @@ bool Continuation::Accept() {
                            st.options.parameter_name, st.Lambda(st.next.u), branch_.points.size() - 1));
   }
   if (st.on_bound) {
-    const double lambda = st.Lambda(st.next.u);
-    const bool upper = std::abs(lambda - st.options.lambda_max) <= std::abs(lambda - st.options.lambda_min);
-    return End(BranchEnd::kParameterBound, fmt::format("reached {} = {:.10g}{}", st.options.parameter_name, lambda,
-                                                       BoundReason(st.options, upper)));
+    return End(BranchEnd::kParameterBound, BoundReached(st.options.parameter_name, st.Lambda(st.next.u),
+                                                        BoundReason(st.options, st.on_upper)));
   }
   // A clip onto a bound is no sign of difficulty: the next step grows from the asked one, so that
   // a clipped step that lands short of the bound is not followed by one below ds_min.

@@ -37,16 +37,28 @@ RunFileError KeyError(const RunFile& run, const std::string& key, const std::str
   return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
 }
 
-void CheckRangeHoldsStart(const RunFile& run, double value) {
+namespace {
+
+void CheckRangeHolds(const RunFile& run, double value, const std::string& what) {
   if (run.range_min <= value && value <= run.range_max) return;
-  // A switched branch's start is its first point, ds along it from the label: on a label at a
-  // bound, a range that holds the label may not hold it.
-  const std::string start = run.restart_switch_branch
-                                ? fmt::format("the start of the branch that leaves '{}' going {}", run.restart_label,
-                                              run.direction > 0 ? "up" : "down")
-                                : "the start";
   throw KeyError(run, "continuation.range", fmt::format("= [{}, {}] excludes {}, {} = {}", run.range_min,
-                                                        run.range_max, start, run.parameter, value));
+                                                        run.range_max, what, run.parameter, value));
+}
+
+}  // namespace
+
+void CheckRangeHoldsStart(const RunFile& run, double value) { CheckRangeHolds(run, value, "the start"); }
+
+void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch) {
+  if (branch.points.empty()) return;
+  // A switched branch's first point lies ds along it from the label: on a label at a bound, a
+  // range that holds the label may not hold it. Both halves of a pitchfork may leave it alike, so
+  // the side is named by its key, not as a way in the parameter.
+  CheckRangeHolds(run, branch.points.front().lambda,
+                  run.restart_switch_branch
+                      ? fmt::format("the first point of the branch that leaves '{}' (direction = \"{}\")",
+                                    run.restart_label, run.direction > 0 ? "up" : "down")
+                      : std::string("the first point"));
 }
 
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,

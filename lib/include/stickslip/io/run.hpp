@@ -25,9 +25,12 @@ void SetContinuationOptions(const RunFile& run, ContinuationOptions* options);
 RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what);
 
 // Throws KeyError at continuation.range where the run's range does not hold the start's `value` of
-// the continued parameter: the start's before the continuation, the first point's after it (a
-// switched branch's first point lies ds along it from the label).
+// the continued parameter.
 void CheckRangeHoldsStart(const RunFile& run, double value);
+
+// The same for the branch's first point, after the continuation: a switched branch's lies ds
+// along it from the label, which CheckRangeHoldsStart saw.
+void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch);
 
 // The run's user values as the engine takes them: each variable by its position among `order` (the
 // free variables in their order, then the continued parameter), found by name with `index_of`.
