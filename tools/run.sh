@@ -95,6 +95,11 @@ done
 "$bin" find --model continuation-scripts/models/two-masses.toml --trace 30,69 --results results/models \
   --output two-masses-omega-trace
 "$bin" plot results/models/two-masses-omega-trace --output results/figures/two-masses-omega-trace-frequency-response.png
+# Its crossing-sliding boundary in (omega, F_s) from the trace's SK2 (continuation-scripts/curves/): the
+# paper's paper-4.1-sk-boundary in SI units, continued through the general model.
+"$bin" run --results results/models/two-masses-omega-trace continuation-scripts/curves/two-masses-sk-boundary.toml
+"$bin" plot results/models/two-masses-omega-trace/two-masses-sk-boundary \
+  --output results/figures/two-masses-sk-boundary.png
 # The five-mass chain's brute-force diagram over the same decade, from rest and a start scattered around
 # it, up and back down: its resonances, and the permanent sticks below omega = 0.4; and its figure with
 # the trace's branches over it.

@@ -162,13 +162,16 @@ class Result:
 
 def _second_parameter(rows, parameter):
     """The parameter other than `parameter` that varies along a branch (a curve in two
-    parameters), or None. u_r held equal to u_s (a tie) is not a second parameter."""
+    parameters), or None. One held equal to `parameter` (a tie) is not a second parameter. The parameters
+    are the columns between `label` and `phi` (the paper's chi .. u_r, a [model]'s omega, F_k, ...)."""
     if not rows:
         return None
-    for p in PARAMETERS:
+    columns = list(rows[0])
+    names = columns[columns.index("label") + 1:columns.index("phi")] if "label" in columns and "phi" in columns else PARAMETERS
+    for p in names:
         if p == parameter or p not in rows[0] or len({r[p] for r in rows}) < 2:
             continue
-        if {p, parameter} == {"u_s", "u_r"} and all(r["u_s"] == r["u_r"] for r in rows):
+        if all(r[p] == r[parameter] for r in rows):  # tied to it (u_r = u_s, F_s = F_k)
             continue
         return p
     return None

@@ -18,6 +18,7 @@
 #include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
+#include "stickslip/branches/model_boundary_curve.hpp"
 #include "stickslip/branches/model_orbit_continuation.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/model/exact_simulator.hpp"
@@ -87,6 +88,68 @@ TEST_P(DenHartogBranchInFriction, FollowsTheClosedFormAmplitudeAndEndsWhereTheTu
 }
 
 INSTANTIATE_TEST_SUITE_P(FrequencyRatios, DenHartogBranchInFriction, testing::Values(0.8, 1.5, 2.5));
+
+// The level beta* is largest where d beta*/dr = 0: golden-section search on the closed form.
+std::pair<double, double> LargestStickingLevel() {
+  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+  double a = 0.6, b = 1.2;
+  for (int k = 0; k < 200 && b - a > 1e-12; ++k) {
+    const double c = b - golden * (b - a), d = a + golden * (b - a);
+    if (StickingLevel(c) > StickingLevel(d)) {
+      b = d;
+    } else {
+      a = c;
+    }
+  }
+  return {(a + b) / 2, StickingLevel((a + b) / 2)};
+}
+
+// The type boundary where the turning points start to stick, continued in two parameters through
+// the general model (BoundaryCurve: the located SK's margin = 0 with omega released): every point
+// of the curve is Den Hartog's beta*(r), with his amplitude there, and the curve's own fold in F_k
+// is the largest beta*, where d beta*/dr = 0.
+TEST(DenHartogStickBoundary, IsTheClosedFormLevelOverTheFrequencyRatio) {
+  BasicOrbitContinuationSetup<DenHartogOscillator> branch_setup = DenHartogSetup(0.8, 0.05, "F_k");
+  branch_setup.unknowns.tie_static_friction = true;
+  branch_setup.options.lambda_max = 2.0;
+  const BasicOrbitBranch<DenHartogOscillator> branch = ContinueOrbit(branch_setup);
+  const auto stick = std::find_if(branch.branch.special_points.begin(), branch.branch.special_points.end(),
+                                  [](const SpecialPoint& p) { return p.type == "SK"; });
+  ASSERT_NE(stick, branch.branch.special_points.end()) << branch.branch.end_message;
+  const BasicCurveStart<DenHartogOscillator> start{branch.orbits[stick->point], stick->test_function, "F_k",
+                                                   branch_setup.unknowns};
+  BasicOrbitContinuationSetup<DenHartogOscillator> curve_setup = BoundaryCurve(start, branch_setup, "omega");
+  curve_setup.options.lambda_min = 0.45;  // r = 0.561, before the degenerate r = 1/2
+  curve_setup.options.max_points = 120;
+  curve_setup.options.step.ds_max = 0.05;
+  for (int direction : {-1, 1}) {
+    SCOPED_TRACE(direction);
+    curve_setup.options.direction = direction;
+    const BasicOrbitBranch<DenHartogOscillator> curve = ContinueOrbit(curve_setup);
+    ASSERT_GT(curve.orbits.size(), 20u) << curve.branch.end_message;
+    double worst = 0.0, r_min = INFINITY, r_max = 0.0;
+    for (const BasicOrbit<DenHartogOscillator>& orbit : curve.orbits) {
+      const double r = orbit.parameters.omega, beta = orbit.parameters.F_k;
+      EXPECT_NEAR(beta, StickingLevel(r), 1e-12) << "r = " << r;
+      EXPECT_NEAR(orbit.start(0), DenHartogOrbit(r, beta).amplitude, 1e-8) << "r = " << r;
+      worst = std::max(worst, std::abs(beta - StickingLevel(r)));
+      r_min = std::min(r_min, r), r_max = std::max(r_max, r);
+    }
+    RecordProperty(direction < 0 ? "worst_level_difference_down" : "worst_level_difference_up", fmt::format("{:.3g}", worst));
+    if (direction < 0) {
+      EXPECT_EQ(curve.branch.end, BranchEnd::kParameterBound) << curve.branch.end_message;
+      EXPECT_LT(r_min, 0.57) << "beta* = 0.45 near r = 0.561";
+      continue;
+    }
+    EXPECT_GT(r_max, 1.5) << "the curve passes r = 1 (beta* = pi/4 there) and goes on";
+    const auto fold = std::find_if(curve.branch.special_points.begin(), curve.branch.special_points.end(),
+                                   [](const SpecialPoint& p) { return p.type == "LP"; });
+    ASSERT_NE(fold, curve.branch.special_points.end());
+    const auto [r_star, beta_star] = LargestStickingLevel();
+    EXPECT_NEAR(fold->lambda, beta_star, 1e-9);
+    EXPECT_NEAR(curve.orbits[fold->point].parameters.omega, r_star, 1e-5);
+  }
+}
 
 // The columns are the model's: its one coordinate's (x) amplitude and peak-to-peak, two multipliers.
 // Den Hartog's orbit, undamped and never sticking, has no bounded amplitude at r = 1 (X grows as

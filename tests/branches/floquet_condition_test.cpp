@@ -18,6 +18,7 @@
 #include "stickslip/orbits/margins.hpp"
 #include "stickslip/orbits/stability.hpp"
 #include "support/period_map.hpp"
+#include "support/problem_at.hpp"
 #include "support/section6_symmetry_breaking.hpp"
 #include "support/solved_presets.hpp"
 
@@ -42,9 +43,14 @@ CurveStart Located(const std::string& run, const std::string& type) {
   throw std::runtime_error(type + " not located on " + run + ": " + branch.branch.end_message);
 }
 
+// The condition of `type` made at `orbit`.
+std::shared_ptr<const OrbitCondition> FloquetAt(std::string_view type, const Orbit& orbit, double max_singularity = 1e-4) {
+  return FloquetCondition(type, ProblemAt(orbit), ov::Pack(orbit), max_singularity);
+}
+
 double Residual(const OrbitCondition& c, const Orbit& o) {
   Eigen::VectorXd r;
-  c.Evaluate(o, Eigen::VectorXd(), &r, nullptr, nullptr);
+  c.Evaluate(ProblemAt(o), ov::Pack(o), Eigen::VectorXd(), &r, nullptr, nullptr);
   return r(0);
 }
 
@@ -52,7 +58,7 @@ void ExpectCentralDifferences(const OrbitCondition& c, const Orbit& o) {
   Eigen::VectorXd r;
   Eigen::MatrixXd d;
   Eigen::MatrixXd d_extra;
-  c.Evaluate(o, Eigen::VectorXd(), &r, &d, &d_extra);
+  c.Evaluate(ProblemAt(o), ov::Pack(o), Eigen::VectorXd(), &r, &d, &d_extra);
   const Eigen::VectorXd v = ov::Pack(o);
   ASSERT_EQ(d.cols(), v.size());
   EXPECT_EQ(d_extra.cols(), 0);
@@ -67,19 +73,19 @@ void ExpectCentralDifferences(const OrbitCondition& c, const Orbit& o) {
 }
 
 TEST(FloquetCondition, DerivativeIsTheCentralDifferenceOfTheTestFunction) {
-  for (const char* type : {"LP", "PD"}) ExpectCentralDifferences(*FloquetCondition(type, SolvedPreset("paper-5.1"), 1.0), SolvedPreset("paper-5.1"));
-  for (const char* type : {"LP", "SB"}) ExpectCentralDifferences(*FloquetCondition(type, SolvedPreset("paper-6"), 1.0), SolvedPreset("paper-6"));
+  for (const char* type : {"LP", "PD"}) ExpectCentralDifferences(*FloquetAt(type, SolvedPreset("paper-5.1"), 1.0), SolvedPreset("paper-5.1"));
+  for (const char* type : {"LP", "SB"}) ExpectCentralDifferences(*FloquetAt(type, SolvedPreset("paper-6"), 1.0), SolvedPreset("paper-6"));
   const CurveStart tr = Located("paper-5.1-omega-up", "TR");
-  ExpectCentralDifferences(*FloquetCondition("TR", tr.orbit), tr.orbit);
+  ExpectCentralDifferences(*FloquetAt("TR", tr.orbit), tr.orbit);
 }
 
 TEST(FloquetCondition, RefusesPointsAndTypesWithoutACurve) {
   const Orbit section5 = SolvedPreset("paper-5.1");
   const Orbit section6 = SolvedPreset("paper-6");
-  EXPECT_THROW(FloquetCondition("LP", section5), InvalidInput);  // no multiplier near +1 there
-  EXPECT_THROW(FloquetCondition("SB", section5, 1.0), InvalidInput);  // not antisymmetric
-  EXPECT_THROW(FloquetCondition("PD", section6, 1.0), InvalidInput);  // antisymmetric: SB instead
-  EXPECT_THROW(FloquetCondition("GR", section5, 1.0), InvalidInput);
+  EXPECT_THROW(FloquetAt("LP", section5), InvalidInput);  // no multiplier near +1 there
+  EXPECT_THROW(FloquetAt("SB", section5, 1.0), InvalidInput);  // not antisymmetric
+  EXPECT_THROW(FloquetAt("PD", section6, 1.0), InvalidInput);  // antisymmetric: SB instead
+  EXPECT_THROW(FloquetAt("GR", section5, 1.0), InvalidInput);
   const CurveStart lp = Located("paper-5.1-omega-up", "LP");
   const OrbitContinuationSetup setup = RunFileSetup("paper-5.1-omega-up");
   EXPECT_THROW(BoundaryCurve(lp, setup, "omega"), InvalidInput);  // the continued one

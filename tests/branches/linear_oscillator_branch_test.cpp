@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "stickslip/analysis/model_orbit_finder.hpp"
+#include "stickslip/branches/model_boundary_curve.hpp"
 #include "stickslip/branches/model_orbit_continuation.hpp"
 #include "stickslip/orbits/signature_edits.hpp"
 #include "support/belt_cycle.hpp"
@@ -78,6 +79,74 @@ TEST_P(PaperBranchThroughTheGeneralModel, HasTheSameSpecialPointsAtTheSameScaled
 
 INSTANTIATE_TEST_SUITE_P(PaperPresets, PaperBranchThroughTheGeneralModel,
                          testing::Values("paper-4.1", "paper-5.1", "paper-6"), PresetTestName);
+
+// A curve in two parameters from the first special point of `type` on a branch in omega, with
+// `second` released and user values at the scaled frequencies `omegas` (times `scale`).
+template <OscillatorModel Model>
+BasicOrbitBranch<Model> CurveFrom(const BasicOrbitContinuationSetup<Model>& setup, const char* type, const char* second,
+                                  const std::vector<double>& omegas, double scale) {
+  const BasicOrbitBranch<Model> branch = ContinueOrbit(setup);
+  const auto special = std::find_if(branch.branch.special_points.begin(), branch.branch.special_points.end(),
+                                    [&](const SpecialPoint& s) { return s.type == type && s.located; });
+  if (special == branch.branch.special_points.end()) throw std::runtime_error(std::string("no ") + type);
+  const std::string condition = CurveCondition(type, special->test_function);
+  const BasicCurveStart<Model> start{branch.orbits[special->point], condition, "omega", setup.unknowns};
+  BasicOrbitContinuationSetup<Model> curve = BoundaryCurve(start, setup, second);
+  const OrbitVariableSet variables = VariableSetOf(curve.model, AsBasicOrbit(start.orbit).signature);
+  const int omega = static_cast<int>(FreeIndices(variables, curve.unknowns).size());
+  curve.options.direction = omegas.front() * scale < special->lambda ? -1 : 1;
+  curve.options.max_points = 2000;
+  curve.options.step.ds = 0.002 * scale;
+  curve.options.step.ds_max = 0.01 * scale;
+  for (double w : omegas) curve.options.user_values.push_back({omega, w * scale, fmt::format("omega={}", w)});
+  // From the start to a little past the last user value.
+  curve.options.lambda_min = std::min(special->lambda, omegas.back() * scale * 0.999);
+  curve.options.lambda_max = std::max(special->lambda, omegas.back() * scale * 1.001);
+  return ContinueOrbit(curve);
+}
+
+// The same two-parameter curves through the paper's model and the general one in physical units:
+// the section 4.1 boundary where the nonsticking orbit's stops start to stick (its reversal margin
+// = 0, in (omega, u_r) and (omega, F_s)) and the section 5.1 fold curve (a multiplier +1). At the
+// same scaled frequencies (user values) the static levels and orbits agree after the paper's
+// scaling: the margin and Floquet conditions of both closed forms, through the model-free curve
+// layer.
+TEST(PaperCurvesThroughTheGeneralModel, AgreeAtTheSameScaledFrequencies) {
+  struct Case {
+    const char* preset;
+    int direction;
+    const char* type;
+    std::vector<double> omegas;
+  };
+  double worst = 0.0;
+  for (const Case& c : {Case{"paper-4.1", -1, "SK", {0.58, 0.55, 0.5}}, Case{"paper-5.1", 1, "LP", {0.58, 0.575, 0.57}}}) {
+    SCOPED_TRACE(c.preset);
+    const Orbit paper = SolvedPreset(c.preset);
+    const PhysicalTwoMasses physical;
+    const double scale = physical.Omega(paper.parameters), length = physical.Length(paper.parameters);
+    const double force = paper.parameters.eta * physical.f0;
+    const OrbitBranch a = CurveFrom(OmegaBranch<Pascal2014>(paper, {}, c.direction, 1.0), c.type, "u_r", c.omegas, 1.0);
+    const BasicOrbitBranch<LinearOscillator<2>> b = CurveFrom(
+        OmegaBranch<LinearOscillator<2>>(InPhysicalUnits(paper, physical), LinearOscillator<2>(physical.Data(paper.parameters)),
+                                         c.direction, scale),
+        c.type, "F_s", c.omegas, scale);
+    std::vector<const SpecialPoint*> uz_a, uz_b;
+    for (const SpecialPoint& s : a.branch.special_points) if (s.type == "UZ") uz_a.push_back(&s);
+    for (const SpecialPoint& s : b.branch.special_points) if (s.type == "UZ") uz_b.push_back(&s);
+    ASSERT_EQ(uz_a.size(), c.omegas.size()) << a.branch.end_message;
+    ASSERT_EQ(uz_b.size(), c.omegas.size()) << b.branch.end_message;
+    for (std::size_t k = 0; k < uz_a.size(); ++k) {
+      const Orbit& o = a.orbits[uz_a[k]->point];
+      const BasicOrbit<LinearOscillator<2>>& g = b.orbits[uz_b[k]->point];
+      EXPECT_NEAR(g.parameters.omega / scale, o.parameters.omega, 1e-12);
+      EXPECT_NEAR(g.parameters.F_s / force, o.parameters.u_r, 1e-11) << "omega = " << o.parameters.omega;
+      EXPECT_NEAR(g.start(0) / length, o.x10, 1e-7);
+      EXPECT_NEAR(g.durations.front() * scale, o.durations.front(), 1e-7);
+      worst = std::max(worst, std::abs(g.parameters.F_s / force - o.parameters.u_r));
+    }
+  }
+  RecordProperty("worst_static_level_difference", fmt::format("{:.3g}", worst));
+}
 
 // A mass on a belt with viscous damping (m = k = 1, c = 0.1, no forcing: autonomous, the period
 // the durations' sum) and F_s = 1.5 > F_k = 1: its stick-slip cycle, continued in the belt's speed

@@ -18,6 +18,7 @@
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run.hpp"
 #include "stickslip/orbits/margin_gradients.hpp"
+#include "support/problem_at.hpp"
 #include "support/random_orbits.hpp"
 #include "support/restart_in_omega.hpp"
 #include "support/solved_presets.hpp"
@@ -34,8 +35,13 @@ struct Residual {
 };
 Residual Evaluate(const MarginCondition& c, const Orbit& orbit, const Eigen::VectorXd& extra) {
   Residual r;
-  c.Evaluate(orbit, extra, &r.value, &r.d_variables, &r.d_extra);
+  c.Evaluate(ProblemAt(orbit), ov::Pack(orbit), extra, &r.value, &r.d_variables, &r.d_extra);
   return r;
+}
+
+// The condition on `margin` made at `orbit`.
+MarginCondition ConditionAt(const Orbit& orbit, std::string_view margin) {
+  return MarginCondition(ProblemAt(orbit), ov::Pack(orbit), margin);
 }
 
 // Checks the condition's derivatives at (orbit, extra) against central differences of its
@@ -83,14 +89,14 @@ std::set<std::string> ExpectEveryConditionMatchesDifferences(const Orbit& orbit)
     // condition refuses its interior minimum as if it were (below).
     std::optional<MarginCondition> made;
     try {
-      made.emplace(orbit, m.Name());
+      made.emplace(ProblemAt(orbit), ov::Pack(orbit), m.Name());
     } catch (const InvalidInput& e) {
       if (std::string(e.what()).find("no maximum separates it from the exit") != std::string::npos) continue;
       throw;
     }
     const MarginCondition& c = *made;
     SCOPED_TRACE(c.Name());
-    const Eigen::VectorXd tau_star = c.ExtraUnknowns(orbit);
+    const Eigen::VectorXd tau_star = c.ExtraUnknowns(ProblemAt(orbit), ov::Pack(orbit));
     if (c.Interior()) {
       // At the root finder's minimum the residuals are the margin and a zero slope ...
       const Residual at_minimum = Evaluate(c, orbit, tau_star);
@@ -141,25 +147,25 @@ std::string Refusal(Make&& make) {
 TEST(MarginCondition, RefusesMarginsWhoseZeroIsNoRegularCurve) {
   const Orbit nonsticking = SolvedPreset("paper-4.1");  // slip- / antisymmetric
   // A slip's duration: pointed to the margin of the end before it (the mirror's reversal).
-  EXPECT_EQ(Refusal([&] { MarginCondition(nonsticking, "duration:1"); }),
+  EXPECT_EQ(Refusal([&] { ConditionAt(nonsticking, "duration:1"); }),
             "condition = margin:duration:1 is invalid: valid range a margin whose zero is a regular curve: not a "
             "slip's duration (at zero length its end condition x2' = 0 holds identically); a slip shrinks to nothing "
             "only where the acceleration at its start does, at the zero of the margin of the end before it: use "
             "margin:reversal:1");
-  EXPECT_NE(Refusal([&] { MarginCondition(nonsticking, "sliding-friction"); }).find("u_s = 0 ends the physical family"),
+  EXPECT_NE(Refusal([&] { ConditionAt(nonsticking, "sliding-friction"); }).find("u_s = 0 ends the physical family"),
             std::string::npos);
-  EXPECT_NE(Refusal([&] { MarginCondition(nonsticking, "G:1"); })
+  EXPECT_NE(Refusal([&] { ConditionAt(nonsticking, "G:1"); })
                 .find("valid range a margin of slip- / antisymmetric: margin:duration:1, margin:velocity:1"),
             std::string::npos);
   // The §4.1 slip has no interior minimum of its velocity at the paper's data.
   ASSERT_TRUE(std::isinf(AdmissibilityMargins(nonsticking)[1].value));
-  EXPECT_NE(Refusal([&] { MarginCondition(nonsticking, "velocity:1"); }).find("no interior minimum"),
+  EXPECT_NE(Refusal([&] { ConditionAt(nonsticking, "velocity:1"); }).find("no interior minimum"),
             std::string::npos);
   // §5.1 (slip- slip+ stick slip+): the slip after the stick is pointed to the stick's exit slope.
-  EXPECT_NE(Refusal([&] { MarginCondition(SolvedPreset("paper-5.1"), "duration:4"); }).find("use margin:exit-slope:3"),
+  EXPECT_NE(Refusal([&] { ConditionAt(SolvedPreset("paper-5.1"), "duration:4"); }).find("use margin:exit-slope:3"),
             std::string::npos);
   // A stick's duration is a boundary (T0).
-  EXPECT_EQ(Refusal([&] { MarginCondition(SolvedPreset("paper-5.1"), "duration:3"); }), "");
+  EXPECT_EQ(Refusal([&] { ConditionAt(SolvedPreset("paper-5.1"), "duration:3"); }), "");
 }
 
 // The setup a run file restarting at branch:label of results/<trace> in omega makes.
@@ -213,14 +219,14 @@ TEST(MarginCondition, RefusesAnInteriorMinimumOfTheExitConstraintThatIsTheStickE
     EXPECT_LT(RelativeSmallestSingularValue("paper-5.1-omega-trace", branch, "GR2", "G:3"), 1e-7);
     // ... and refused, pointed to the regular condition of the same boundary.
     const OrbitContinuationSetup at = TraceRestart("paper-5.1-omega-trace", branch, "GR2");
-    const std::string refusal = Refusal([&] { MarginCondition(at.start, "G:3"); });
+    const std::string refusal = Refusal([&] { ConditionAt(at.start, "G:3"); });
     EXPECT_NE(refusal.find("no maximum separates it from the exit"), std::string::npos) << refusal;
     EXPECT_NE(refusal.find("use margin:exit-slope:3"), std::string::npos) << refusal;
   }
   // A grazing of G inside the §6 stick, apart from its exit (exit-slope:2 = 10.8 there): regular,
   // and accepted.
   EXPECT_GT(RelativeSmallestSingularValue("paper-6-omega-trace", "branch-2", "GR4", "G:2"), 1e-4);
-  EXPECT_EQ(Refusal([&] { MarginCondition(TraceRestart("paper-6-omega-trace", "branch-2", "GR4").start, "G:2"); }), "");
+  EXPECT_EQ(Refusal([&] { ConditionAt(TraceRestart("paper-6-omega-trace", "branch-2", "GR4").start, "G:2"); }), "");
 }
 
 }  // namespace

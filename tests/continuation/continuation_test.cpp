@@ -419,6 +419,41 @@ TEST(Monitor, ASignChangeThroughAPoleWhereTheCorrectorFailsIsNoSpecialPoint) {
   EXPECT_GT(zero[0].lambda, 0.5);
 }
 
+// x = lambda, a margin that is +inf ("none yet") until its interior minimum appears at lambda =
+// 0.5 and then 0.7 - lambda: a step from lambda = 0.1 to 0.9 goes from +inf to -0.2, a change
+// located at the zero, 0.7; one that jumps from +inf to -1 at 0.5 is located at the jump. From
+// -inf, or from NaN ("not defined"), a step is no change.
+struct Line : ScalarProblem {
+  double F(double x, double l) const override { return x - l; }
+  double Fx(double, double) const override { return 1.0; }
+  double Fl(double, double) const override { return -1.0; }
+};
+
+TEST(Monitor, AStepFromPlusInfinityToANegativeValueIsAChangeLocatedWhereTheValueCrossesZero) {
+  const Line line;
+  const auto born = [](double value_after) {
+    return [value_after](double, double l) { return l < 0.5 ? INFINITY : value_after - l; };
+  };
+  FunctionMonitor monitor({{{.name = "born", .type = "BO"}, born(0.7)},
+                           {{.name = "jump", .type = "JU"}, born(-0.5)},
+                           {{.name = "from-minus", .type = "FM"}, [](double, double l) { return l < 0.5 ? -INFINITY : l; }},
+                           {{.name = "undefined", .type = "UN"}, [](double, double l) { return l < 0.5 ? NAN : 0.7 - l; }}});
+  ContinuationOptions o = Options(0.8 * std::sqrt(2.0));  // one step, lambda 0.1 to 0.9
+  o.step.ds_max = o.step.ds;
+  o.lambda_max = 1.0;
+  o.detect_folds = false;
+  o.detect_branch_points = false;
+  const Branch b = Continuation(line, &monitor, o, Eigen::Vector2d(0.1, 0.1)).Run();
+  const std::vector<SpecialPoint> zero = OfType(b, "BO"), jump = OfType(b, "JU");
+  ASSERT_EQ(zero.size(), 1u);
+  EXPECT_TRUE(zero[0].located);
+  EXPECT_NEAR(zero[0].lambda, 0.7, 1e-9);
+  ASSERT_EQ(jump.size(), 1u);
+  EXPECT_NEAR(jump[0].lambda, 0.5, 1e-6);
+  EXPECT_TRUE(OfType(b, "FM").empty());
+  EXPECT_TRUE(OfType(b, "UN").empty());
+}
+
 TEST(Monitor, ATerminalFunctionEndsTheBranchWhereItLeavesItsPositiveSide) {
   const Cubic cubic;
   FunctionMonitor monitor({{{.name = "below-half", .type = "BH", .terminal = true, .positive_side = "lower"},

@@ -7,7 +7,7 @@ import math
 import pytest
 
 import stickslip
-from conftest import SOURCE, cli, cli_error, cli_json
+from conftest import RESULTS, SOURCE, cli, cli_error, cli_json
 
 MODELS = SOURCE / "continuation-scripts" / "models"
 
@@ -168,6 +168,23 @@ def test_trace_from_a_models_label_is_the_command_lines_and_passes_the_found_orb
     assert solved.orbit == cli_json("solve", "--results", uz[0], "--point", uz[1], "--json")["orbit"]
     with pytest.raises(ValueError, match="free is invalid with a \\[model\\]'s point"):
         stickslip.solve(point=uz[1], results=uz[0], free="F_s")
+
+
+def test_a_models_type_boundary_is_the_run_files_curve_byte_for_byte():
+    # continuation-scripts/curves/two-masses-sk-boundary.toml from SK2 of the two masses' trace.
+    branch = stickslip.two_parameter("omega", "F_s", (30.0, 60.1), point="branch-1:SK2",
+                                     results=RESULTS / "models" / "two-masses-omega-trace", direction="down", ds=0.2,
+                                     ds_max=0.5, max_points=400, output="two-masses-sk-boundary")
+    stored = RESULTS / "models" / "two-masses-omega-trace" / "two-masses-sk-boundary"
+    files = branch.files()
+    assert files["branch.csv"] == (stored / "branch.csv").read_text()
+    assert files["special-points.csv"] == (stored / "special-points.csv").read_text()
+    assert all(abs(branch["margin:reversal:1"]) < 1e-9)  # the force at the stops held at the static level
+    assert branch["F_s"][-1] < branch["F_s"][0]
+    with pytest.raises(ValueError) as error:
+        stickslip.two_parameter("omega", "chi", (30.0, 60.1), point="branch-1:SK2",
+                                results=RESULTS / "models" / "two-masses-omega-trace")
+    assert "key 'start.restart.boundary' = 'chi' is invalid: valid range omega, F_k, F_s, v_b" in str(error.value)
 
 
 def test_sweep_is_the_command_lines_file(tmp_path):

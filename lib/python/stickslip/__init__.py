@@ -396,7 +396,7 @@ def continue_orbit(parameter, range, **keywords):
     start       an Orbit (solve()'s, or find().orbit): the start, with the orbit's own unknowns;
                 or the start keywords of solve() instead. point="RUN:LABEL" under results= may be
                 a [model]'s label too (its model from the run file its summary names; no other start
-                keyword, switch_branch or boundary then), as `stickslip continue --point` takes it.
+                keyword then), as `stickslip continue --point` takes it.
     Returns a Branch; raises ConvergenceError if the start does not converge, ValueError for bad
     input (the command line's message).
     """
@@ -410,12 +410,14 @@ def two_parameter(parameter, second, range, *, point, **keywords):
     """The type boundary at a stored change of type, continued in two parameters: from
     point="RUN:LABEL" at a located type change (SK, T0, GR, NS: its margin, e.g. reversal:1,
     G:3, velocity:2), the orbit of the located type with that margin held at zero (for an
-    interior extremum, velocity or G/G1 inside the stick, also its time), `second` (chi, eta,
-    u_s, u_r, omega: not `parameter`) released, continued in `parameter` over `range` =
+    interior extremum, velocity or G/G1 inside the stick, also its time), `second` (a parameter
+    of the model: chi, eta, u_s, u_r, omega for the paper's, omega, F_k, F_s, v_b for a [model];
+    not `parameter`) released, continued in `parameter` over `range` =
     (min, max). The other keywords are continue_orbit's. Returns a Branch whose points lie on the
     boundary (the curve in the plane of the two is branch[parameter], branch[second]); it ends
-    where a second margin reaches zero (a codimension-two point) or at the range. Refused: a
-    slip's duration and sliding-friction (no regular curve).
+    where a second margin reaches zero (a codimension-two point), at the range, or where `second`
+    leaves its valid range (a static level at the held kinetic one). Refused: a slip's duration
+    and sliding-friction (no regular curve).
     """
     return continue_orbit(parameter, range, point=point, boundary=second, **keywords)
 

@@ -1,48 +1,52 @@
 #include "stickslip/branches/boundary_curve.hpp"
+#include "stickslip/branches/model_boundary_curve.hpp"
 
 #include <algorithm>
-#include <memory>
-#include <optional>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stickslip/branches/floquet_condition.hpp"
 #include "stickslip/branches/margin_condition.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/linear_oscillator_problem.hpp"
 
 namespace stickslip {
 
-namespace ov = orbit_variables;
+std::string CurveCondition(const std::string& type, const std::string& test_function) {
+  return test_function.starts_with(orbit_columns::kMarginPrefix) ? test_function : type;
+}
 
-OrbitContinuationSetup BoundaryCurve(const CurveStart& start, const OrbitContinuationSetup& branch_setup,
-                                     std::string_view second) {
-  const int n = start.orbit.signature.size();
-  const std::optional<int> second_index = ov::IndexOf(n, second);
-  const std::vector<std::string>& released = start.unknowns.release;
-  if (!second_index || *second_index < ov::FirstParameter(n) || second == start.parameter ||
-      std::find(released.begin(), released.end(), second) != released.end() ||
-      (second == "u_r" && start.unknowns.tie_static_friction)) {
-    throw InvalidInput("second", std::string(second),
-                       fmt::format("a parameter other than the continued {}, not released already: chi, eta, omega, u_s, u_r",
-                                   start.parameter));
-  }
-  OrbitContinuationSetup setup = branch_setup;
+std::shared_ptr<const OrbitCondition> MakeCurveCondition(std::string_view condition, const OrbitProblem& problem,
+                                                         const Eigen::VectorXd& u) {
   // A type boundary is its margin's zero (margin_condition.hpp); LP, PD, SB, TR a multiplier's
   // condition (floquet_condition.hpp).
   const std::string_view prefix = orbit_columns::kMarginPrefix;
-  if (start.condition.starts_with(prefix)) {
-    setup.condition = std::make_shared<MarginCondition>(start.orbit, start.condition.substr(prefix.size()));
-  } else {
-    setup.condition = FloquetCondition(start.condition, start.orbit);
-  }
-  setup.start = start.orbit;
-  setup.unknowns = start.unknowns;
-  setup.unknowns.release.emplace_back(second);
-  setup.unknowns.condition_equations = setup.condition->EquationCount() - setup.condition->ExtraUnknownCount();
-  setup.parameter = start.parameter;
-  // The curve ends where a second margin reaches zero: a codimension-two point.
-  setup.options.continue_past_terminal = false;
-  return setup;
+  if (condition.starts_with(prefix)) return std::make_shared<MarginCondition>(problem, u, condition.substr(prefix.size()));
+  return FloquetCondition(condition, problem, u);
 }
+
+void CheckSecondParameter(const OrbitLayout& layout, int static_level, int unvaried, const UnknownChoice& unknowns,
+                          std::string_view parameter, std::string_view second) {
+  const std::optional<int> index = layout.IndexOf(second);
+  const std::vector<std::string>& released = unknowns.release;
+  std::vector<std::string> names;
+  for (int k = layout.Parameter(0); k < layout.Count(); ++k) {
+    if (k != unvaried) names.push_back(layout.Name(k));
+  }
+  if (!index || *index < layout.Parameter(0) || *index == unvaried || second == parameter ||
+      std::find(released.begin(), released.end(), second) != released.end() ||
+      (*index == static_level && unknowns.tie_static_friction)) {
+    throw InvalidInput("second", std::string(second),
+                       fmt::format("a parameter other than the continued {}, not released already: {}", parameter,
+                                   fmt::join(names, ", ")));
+  }
+}
+
+template OrbitContinuationSetup BoundaryCurve(const CurveStart&, const OrbitContinuationSetup&, std::string_view);
+template BasicOrbitContinuationSetup<DynamicLinearOscillator> BoundaryCurve(
+    const BasicCurveStart<DynamicLinearOscillator>&, const BasicOrbitContinuationSetup<DynamicLinearOscillator>&,
+    std::string_view);
 
 }  // namespace stickslip

@@ -44,10 +44,10 @@ struct TestMatrix {
   std::vector<Eigen::MatrixXd> d_a;
 };
 
-TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
-  const MonodromyGradient g = MonodromyGradients(orbit);
+TestMatrix TestMatrixOf(Kind kind, const OrbitProblem& problem, const Eigen::VectorXd& u) {
+  const DynamicMonodromyGradient g = problem.MonodromyGradients(u);
   TestMatrix t;
-  using Matrix = MonodromyGradient::Matrix;
+  using Matrix = DynamicMonodromyGradient::Matrix;
   const Matrix identity = Matrix::Identity(g.period.rows(), g.period.cols());
   switch (kind) {
     case Kind::kFold:
@@ -72,18 +72,18 @@ TestMatrix TestMatrixOf(Kind kind, const Orbit& orbit) {
 }
 
 // p'(mu) at mu = +-1 for p(mu) = det(mu I - M): the trace of the adjugate of mu I - M, the sum of
-// its principal minors of order size - 1.
-// The paper's model's monodromy (4 x 4: the conditions are of its orbits).
-double Slope(const OrbitStability& s, double mu) {
-  constexpr int S = Pascal2014::kStateSize;
-  using Matrix = Eigen::Matrix<double, S, S>;
-  const Matrix a = mu * Matrix::Identity() - Matrix(s.monodromy);
+// its principal minors of order size - 1. At the paper's model's size (4) the minors are fixed-size
+// 3 x 3 (Eigen's closed-form determinant, as its results were computed); any other size by LU.
+template <int S>
+double PrincipalMinorSum(const Eigen::Matrix<double, S, S>& a) {
+  const int size = static_cast<int>(a.rows());
+  constexpr int kMinor = S == Eigen::Dynamic ? Eigen::Dynamic : S - 1;
   double sum = 0.0;
-  for (int k = 0; k < S; ++k) {
-    Eigen::Matrix<double, S - 1, S - 1> minor;
-    for (int i = 0, r = 0; i < S; ++i) {
+  for (int k = 0; k < size; ++k) {
+    Eigen::Matrix<double, kMinor, kMinor> minor(size - 1, size - 1);
+    for (int i = 0, r = 0; i < size; ++i) {
       if (i == k) continue;
-      for (int j = 0, c = 0; j < S; ++j) {
+      for (int j = 0, c = 0; j < size; ++j) {
         if (j != k) minor(r, c++) = a(i, j);
       }
       ++r;
@@ -93,6 +93,13 @@ double Slope(const OrbitStability& s, double mu) {
   return sum;
 }
 
+double Slope(const OrbitStability& s, double mu) {
+  const Eigen::Index size = s.monodromy.rows();
+  const Eigen::MatrixXd a = mu * Eigen::MatrixXd::Identity(size, size) - s.monodromy;
+  if (size == Pascal2014::kStateSize) return PrincipalMinorSum<Pascal2014::kStateSize>(a);
+  return PrincipalMinorSum<Eigen::Dynamic>(a);
+}
+
 class Floquet final : public OrbitCondition {
  public:
   Floquet(Kind kind, std::string name, Eigen::VectorXd b, Eigen::VectorXd c)
@@ -100,10 +107,10 @@ class Floquet final : public OrbitCondition {
 
   std::string Name() const override { return name_; }
 
-  void Evaluate(const Orbit& orbit, const Eigen::VectorXd& extra, Eigen::VectorXd* residual,
-                Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const override {
+  void Evaluate(const OrbitProblem& problem, const Eigen::VectorXd& u, const Eigen::VectorXd& extra,
+                Eigen::VectorXd* residual, Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const override {
     (void)extra;
-    const TestMatrix t = TestMatrixOf(kind_, orbit);
+    const TestMatrix t = TestMatrixOf(kind_, problem, u);
     const int m = static_cast<int>(t.a.rows());
     Eigen::MatrixXd bordered(m + 1, m + 1);
     bordered << t.a, b_, c_.transpose(), 0.0;
@@ -156,12 +163,12 @@ class Floquet final : public OrbitCondition {
 };
 
 // The product mu_i mu_j (i < j) nearest 1 is that of a complex pair.
-bool TorusPairNearUnitCircle(const Orbit& orbit) {
-  const Stability s = StabilityOf(orbit);
+bool TorusPairNearUnitCircle(const OrbitStability& s) {
+  const int size = static_cast<int>(s.multipliers.size());
   double nearest = INFINITY;
   bool complex_pair = false;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j) {
+  for (int i = 0; i < size; ++i) {
+    for (int j = i + 1; j < size; ++j) {
       const double distance = std::abs(s.multipliers[i] * s.multipliers[j] - 1.0);
       if (distance < nearest) {
         nearest = distance;
@@ -175,9 +182,9 @@ bool TorusPairNearUnitCircle(const Orbit& orbit) {
 
 }  // namespace
 
-std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, const Orbit& start,
-                                                       double max_singularity) {
-  const bool antisymmetric = start.signature.antisymmetric();
+std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, const OrbitProblem& problem,
+                                                       const Eigen::VectorXd& u, double max_singularity) {
+  const bool antisymmetric = problem.signature().antisymmetric();
   Kind kind = Kind::kFold;
   if (type == "LP") {
     kind = Kind::kFold;
@@ -193,7 +200,7 @@ std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, co
                                        "or a margin's column"
                                      : "LP, PD or TR for an orbit that is not antisymmetric, or a margin's column");
   }
-  const TestMatrix t = TestMatrixOf(kind, start);
+  const TestMatrix t = TestMatrixOf(kind, problem, u);
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(t.a, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& sigma = svd.singularValues();
   const double singularity = sigma(sigma.size() - 1) / sigma(0);
@@ -202,7 +209,7 @@ std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, co
                        fmt::format("a point where it is <= {:g}: a located {}{}", max_singularity, type,
                                    kind == Kind::kFold ? " (a fold where a margin is zero is nonsmooth, the margin's curve)" : ""));
   }
-  if (kind == Kind::kTorus && !TorusPairNearUnitCircle(start)) {
+  if (kind == Kind::kTorus && !TorusPairNearUnitCircle(problem.Stability(u))) {
     throw InvalidInput("condition", "TR at a point whose product mu_i mu_j nearest 1 is of real multipliers (a neutral saddle)",
                        "a point with a complex pair on the unit circle");
   }

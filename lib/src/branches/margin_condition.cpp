@@ -8,7 +8,8 @@
 #include "stickslip/branches/orbit_monitor.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/margin_gradients.hpp"
-#include "stickslip/orbits/segment_walk.hpp"
+#include "stickslip/orbits/orbit_layout.hpp"
+#include "stickslip/orbits/segment_plan.hpp"
 
 namespace stickslip {
 
@@ -17,16 +18,6 @@ namespace {
 constexpr const char* kRegular = "a margin whose zero is a regular curve";
 
 std::string Column(const std::string& name) { return std::string(orbit_columns::kMarginPrefix) + name; }
-
-// The start time of listed segment `segment`, as the margins' walk forms it (margins.cpp), so
-// that a margin attained at the segment's start has exactly this time.
-double SegmentStart(const Orbit& orbit, int segment) {
-  double t0 = 0.0;
-  WalkSegments(orbit, Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double>& s) {
-    if (s.spec.listed == segment) t0 = s.t0;
-  });
-  return t0;
-}
 
 const Margin* Named(const std::vector<Margin>& margins, std::string_view name) {
   const auto it = std::find_if(margins.begin(), margins.end(), [&](const Margin& m) { return m.Name() == name; });
@@ -45,42 +36,45 @@ const Margin* EndBefore(const std::vector<Margin>& margins, int segment, int cou
 
 }  // namespace
 
-MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
+MarginCondition::MarginCondition(const OrbitProblem& problem, const Eigen::VectorXd& u, std::string_view margin) {
   const std::string value = Column(std::string(margin));
-  const std::vector<Margin> margins = AdmissibilityMargins(start);
+  const Signature& signature = problem.signature();
+  const std::vector<Margin> margins = problem.Margins(u);
   const Margin* found = Named(margins, margin);
   if (!found) {
     std::vector<std::string> names;
     for (const Margin& m : margins) names.push_back(Column(m.Name()));
     throw InvalidInput("condition", value,
-                       fmt::format("a margin of {}: {}", start.signature.ToString(), fmt::join(names, ", ")));
+                       fmt::format("a margin of {}: {}", signature.ToString(), fmt::join(names, ", ")));
   }
   margin_ = *found;
   index_ = static_cast<int>(found - margins.data());
-  const int n = start.signature.size();
+  const int n = signature.size();
   const int i = margin_.segment;
-  const bool stick = i >= 0 && start.signature.segments()[i] == Mode::kStick;
+  const bool stick = i >= 0 && signature.segments()[i] == Mode::kStick;
   // A stick ends into slip- (its G1 reaches zero) or into slip+ (its G does).
-  const bool into_negative = stick && SegmentPlan(start.signature, Extent::kListed)[i].end == SegmentEndKind::kExitToNegative;
+  const bool into_negative = stick && SegmentPlan(signature, Extent::kListed)[i].end == SegmentEndKind::kExitToNegative;
   if (margin_.kind == MarginKind::kFrictionLevel) {
     throw InvalidInput("condition", value,
-                       fmt::format("{}: not sliding-friction (u_s = 0 ends the physical family; it is no boundary "
+                       fmt::format("{}: not sliding-friction ({} ends the physical family; it is no boundary "
                                    "between orbit types)",
-                                   kRegular));
+                                   kRegular, problem.description().contact.no_friction));
   }
   if (margin_.kind == MarginKind::kDuration && !stick) {
     const Margin* before = EndBefore(margins, i, n);
     throw InvalidInput("condition", value,
-                       fmt::format("{}: not a slip's duration (at zero length its end condition x2' = 0 holds "
+                       fmt::format("{}: not a slip's duration (at zero length its end condition {} = 0 holds "
                                    "identically); a slip shrinks to nothing only where the acceleration at its start "
                                    "does, at the zero of the margin of the end before it: use {}",
-                                   kRegular, before ? Column(before->Name()) : "none (no end before it)"));
+                                   kRegular, problem.description().contact.velocity,
+                                   before ? Column(before->Name()) : "none (no end before it)"));
   }
   if (margin_.kind == MarginKind::kSlipVelocity) {
     interior_ = true;
   } else if (margin_.kind == MarginKind::kStickConstraint) {
-    const double t0 = SegmentStart(start, i);
-    interior_ = margin_.t != t0 && margin_.t != t0 + start.durations[i];
+    const double t0 = problem.SegmentStart(u, i);
+    const Eigen::VectorXd variables = problem.Variables(u.head(problem.UnknownCount()));
+    interior_ = margin_.t != t0 && margin_.t != t0 + variables(OrbitLayout(problem.description(), n).Duration(i));
   }
   if (interior_ && !std::isfinite(margin_.value)) {
     throw InvalidInput("condition", value,
@@ -118,7 +112,7 @@ MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
     const Margin* g = Named(margins, "G:" + next);
     const Margin* g1 = Named(margins, "G1:" + next);
     if (g && g1) also(g->value <= g1->value ? g : g1);
-  } else if (margin_.kind == MarginKind::kStickConstraint && !interior_ && margin_.t == SegmentStart(start, i)) {
+  } else if (margin_.kind == MarginKind::kStickConstraint && !interior_ && margin_.t == problem.SegmentStart(u, i)) {
     also(EndBefore(margins, i, n));
   } else if (margin_.kind == MarginKind::kStopSlope || margin_.kind == MarginKind::kExitSlope) {
     // A tangential stop or stick exit: the saltation matrix there divides by the slope, and the
@@ -131,22 +125,22 @@ MarginCondition::MarginCondition(const Orbit& start, std::string_view margin) {
 
 std::string MarginCondition::Name() const { return Column(margin_.Name()); }
 
-Eigen::VectorXd MarginCondition::ExtraUnknowns(const Orbit& orbit) const {
+Eigen::VectorXd MarginCondition::ExtraUnknowns(const OrbitProblem& problem, const Eigen::VectorXd& u) const {
   if (!interior_) return Eigen::VectorXd();
-  const Margin m = AdmissibilityMargins(orbit)[static_cast<std::size_t>(index_)];
-  return Eigen::VectorXd::Constant(1, m.t - SegmentStart(orbit, margin_.segment));
+  const Margin m = problem.Margins(u)[static_cast<std::size_t>(index_)];
+  return Eigen::VectorXd::Constant(1, m.t - problem.SegmentStart(u, margin_.segment));
 }
 
-void MarginCondition::Evaluate(const Orbit& orbit, const Eigen::VectorXd& extra, Eigen::VectorXd* residual,
-                               Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const {
+void MarginCondition::Evaluate(const OrbitProblem& problem, const Eigen::VectorXd& u, const Eigen::VectorXd& extra,
+                               Eigen::VectorXd* residual, Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const {
   if (!interior_) {
-    const MarginGradient g = MarginGradients(orbit)[static_cast<std::size_t>(index_)];
+    const MarginGradient g = problem.MarginGradients(u)[static_cast<std::size_t>(index_)];
     *residual = Eigen::VectorXd::Constant(1, g.value);
     if (d_variables) *d_variables = g.d_value;
     if (d_extra) d_extra->resize(1, 0);
     return;
   }
-  const MarginGradient g = MarginGradientAt(orbit, margin_, extra(0));
+  const MarginGradient g = problem.MarginGradientAt(u, margin_, extra(0));
   residual->resize(2);
   *residual << g.value, g.slope;
   if (d_variables) {

@@ -57,7 +57,33 @@ void KeepInPhysicalRanges(const OrbitContinuationParts& parts, ContinuationOptio
   }
 }
 
-// The condition's equations in the unknowns of the paper's model's periodicity equations.
+// A curve's released parameters end it at their valid ranges, and where the friction levels meet
+// while one of them is held (EP): past them no orbit is a motion. A released kinetic level ends
+// it at its zero, by the sliding-friction margin (a domain boundary), not at its range's minimum.
+void BoundReleasedParameters(const OrbitContinuationParts& parts, ContinuationOptions* options) {
+  const OrbitLayout& layout = parts.variables.layout;
+  const std::vector<ParameterDescription>& ranges = parts.system->description().parameters;
+  const int kinetic = parts.variables.kinetic_level, static_level = parts.variables.static_level;
+  const auto held = [&parts](int variable) {
+    return variable != parts.parameter && std::find(parts.free.begin(), parts.free.end(), variable) == parts.free.end();
+  };
+  for (std::size_t i = 0; i < parts.free.size(); ++i) {
+    const int variable = parts.free[i];
+    for (std::size_t k = 0; k < ranges.size(); ++k) {
+      if (variable != layout.Parameter(static_cast<int>(k))) continue;
+      UnknownBound bound{.index = static_cast<int>(i), .min = ranges[k].minimum, .max = ranges[k].maximum,
+                         .name = ranges[k].name};
+      if (variable == kinetic) {
+        bound.min = -std::numeric_limits<double>::infinity();
+        if (held(static_level) && !parts.tie_static_friction) bound.max = std::min(bound.max, parts.start(static_level));
+      }
+      if (variable == static_level && held(kinetic)) bound.min = std::max(bound.min, parts.start(kinetic));
+      if (std::isfinite(bound.min) || std::isfinite(bound.max)) options->unknown_bounds.push_back(std::move(bound));
+    }
+  }
+}
+
+// The condition's equations in the unknowns of the periodicity equations.
 class ConditionEquations final : public ExtraEquations {
  public:
   ConditionEquations(const OrbitProblem& system, std::shared_ptr<const OrbitCondition> condition)
@@ -67,7 +93,7 @@ class ConditionEquations final : public ExtraEquations {
   void Evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& e, Eigen::VectorXd* residual, Eigen::MatrixXd* d_u,
                 Eigen::MatrixXd* d_e) const override {
     Eigen::MatrixXd d_variables;
-    condition_->Evaluate(ToOrbit(system_, u), e, residual, d_u ? &d_variables : nullptr, d_e);
+    condition_->Evaluate(system_, u, e, residual, d_u ? &d_variables : nullptr, d_e);
     if (d_u) *d_u = system_.ToUnknowns(d_variables);
   }
 
@@ -106,6 +132,7 @@ OrbitContinuationProblem AssembleOrbitContinuation(OrbitContinuationParts parts)
   problem.options.parameter_index = static_cast<int>(parts.free.size());
   problem.options.parameter_name = parts.parameter_name;
   KeepInPhysicalRanges(parts, &problem.options);
+  if (parts.condition) BoundReleasedParameters(parts, &problem.options);
   if (parts.system->shooting() == Shooting::kMultiple &&
       problem.options.corrector.linear_solver == LinearSolverType::kDenseLu) {
     problem.options.corrector.linear_solver = parts.sparse_solver;

@@ -160,10 +160,6 @@ void OrbitTypeMapOptions::Validate() const {
   if (!(same_orbit >= 0.0 && same_orbit <= 1.0)) throw InvalidInput("same_orbit", same_orbit, "0 <= same_orbit <= 1");
 }
 
-std::string CurveCondition(const std::string& type, const std::string& test_function) {
-  return test_function.starts_with(orbit_columns::kMarginPrefix) ? test_function : type;
-}
-
 std::string MapRegion::Label() const {
   std::vector<std::string> parts;
   for (const MapOrbit& o : orbits) {

@@ -14,6 +14,32 @@ namespace {
 // Thrown inside location when the corrector fails at a trial arclength.
 struct CorrectorFailure {};
 
+// Narrows [*lo, *hi] by bisection while g is +inf ("none yet") at *lo, so that an interpolating
+// solver may take over: the bracket then has finite values of opposite signs at both ends, or (g
+// jumping from +inf straight to a negative value) is narrower than the tolerance at the jump, or
+// has met a zero (*lo = *hi, *gb = 0).
+template <typename G>
+void BisectPastInfinity(G g_at, const EventLocationOptions& options, double* ga, double* gb, double* lo, double* hi) {
+  while (std::isinf(*ga) && *hi - *lo > options.tolerance) {
+    const double mid = 0.5 * (*lo + *hi);
+    if (mid <= *lo || mid >= *hi) return;  // no double between them
+    const double g_mid = g_at(mid);
+    if (std::isnan(g_mid)) throw CorrectorFailure{};
+    if (g_mid == 0.0) {
+      *lo = *hi = mid;
+      *gb = 0.0;
+      return;
+    }
+    if (g_mid > 0.0) {
+      *lo = mid;
+      *ga = g_mid;
+    } else {
+      *hi = mid;
+      *gb = g_mid;
+    }
+  }
+}
+
 // Narrows [*lo, *hi] = [0, ds] onto the zero; throws CorrectorFailure, leaving the bracket
 // reached so far.
 template <typename G>
@@ -32,7 +58,11 @@ void Bracket(const Event& event, G g_at, double ga, double gb, const EventLocati
         *hi = mid;
       }
     }
-  } else if (gb != 0.0) {
+    return;
+  }
+  if (gb == 0.0) return;  // the zero is at b
+  if (std::isinf(ga)) BisectPastInfinity(g_at, options, &ga, &gb, lo, hi);
+  if (std::isfinite(ga) && gb != 0.0) {
     std::uintmax_t iterations = static_cast<std::uintmax_t>(options.max_iterations);
     const double tol = options.tolerance;
     std::tie(*lo, *hi) = boost::math::tools::toms748_solve(

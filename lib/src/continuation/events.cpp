@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace stickslip::detail {
 
@@ -50,7 +51,10 @@ std::vector<Event> MakeEvents(const ContinuationOptions& o, const std::vector<Te
 }
 
 bool ChangesSign(const Event& event, double ga, double gb) {
-  if (!std::isfinite(ga) || !std::isfinite(gb) || ga * gb > 0.0 || ga == 0.0) return false;
+  // +inf is "none yet" (a margin's interior minimum that does not exist); from there only a
+  // negative value is a change. Any other infinity is no sign change (a pole's side, say).
+  if (std::isinf(ga) || std::isinf(gb)) return ga == std::numeric_limits<double>::infinity() && gb < 0.0;
+  if (std::isnan(ga) || std::isnan(gb) || ga * gb > 0.0 || ga == 0.0) return false;
   return std::max(std::abs(ga), std::abs(gb)) >= event.noise;
 }
 

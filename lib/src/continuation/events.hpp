@@ -29,7 +29,7 @@ struct Event {
 std::vector<Event> MakeEvents(const ContinuationOptions& options, const std::vector<TestFunctionInfo>& monitored);
 
 // Whether g changes sign from ga (at the last accepted point) to gb (at the next): both finite,
-// not both zero and not both within noise. A zero at the last accepted point was counted at the
+// not both zero and not both within noise; or from +inf ("none yet") to a finite negative value. A zero at the last accepted point was counted at the
 // step that reached it.
 bool ChangesSign(const Event& event, double ga, double gb);
 

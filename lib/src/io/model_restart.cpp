@@ -38,8 +38,7 @@ std::vector<PaperOnlyKey> PaperOnlyKeys(const RunFile& run) {
           {"unknowns.fix", !run.fix.empty()},  // before guess: --fix NAME=VALUE gives a guess too
           {"start.guess", !run.guess.empty()},
           {"unknowns.free", !run.free.empty()},
-          {"unknowns.tie_u_r", run.tie_u_r},
-          {"start.restart.boundary", !run.restart_boundary.empty()}};
+          {"unknowns.tie_u_r", run.tie_u_r}};
 }
 
 }  // namespace
@@ -125,7 +124,7 @@ ModelLabel ReadModelLabel(const std::filesystem::path& results_root, const std::
     BasicOrbit<Model> orbit = OrbitOf(file.model, file.parameters, stored, point.point);
     SampledStoredOrbit(file, orbit, 2, stored, label);
     file.parameters = orbit.parameters;
-    return {std::move(file), stored.summary.run_file, std::move(orbit)};
+    return {std::move(file), stored.summary.run_file, std::move(orbit), point};
   } catch (const InvalidInput& e) {
     throw InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' cannot be used: {}", run, label, e.what()));
   }
@@ -146,54 +145,96 @@ StoredTrace ModelRunSetup::Recorded(const RunFile& run, const BasicTraceResult<D
   return stored;
 }
 
-std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root) {
-  if (run.restart_run.empty() || !HoldsModelRun(results_root, run.restart_run)) return std::nullopt;
-  const auto fail = [&](const std::string& key, const std::string& what) { return KeyError(run, key, what); };
-  for (const PaperOnlyKey& k : PaperOnlyKeys(run)) {
-    if (k.given) throw fail(k.key, fmt::format("is invalid with a [model]'s label ('{}:{}'): the label gives the model, "
-                                               "its parameters and orbit, and the unknowns (the orbit's at fixed "
-                                               "parameters); vary a parameter by continuing in it",
-                                               run.restart_run, run.restart_label));
-  }
-  ModelLabel at = [&] {
-    try {
-      return ReadModelLabel(results_root, run.restart_run, run.restart_label);
-    } catch (const InvalidInput& e) {
-      throw fail("start.restart", e.Predicate());
-    }
-  }();
-  const Model& model = at.file.model;
-  BasicOrbit<Model>& orbit = at.orbit;
-  int k = 0;
+namespace {
+
+// The index of the model's parameter `name` given at `key` (the continued one, or a curve's
+// second): one the model varies. Throws KeyError at `key` with the valid names.
+int VariedParameterOf(const RunFile& run, const DynamicLinearOscillator& model, const std::string& key,
+                      const std::string& name) {
   try {
-    k = model.Description().VariedParameter("continuation.parameter", run.parameter, model.Autonomous());
+    return model.Description().VariedParameter(key, name, model.Autonomous());
   } catch (const InvalidInput& e) {
-    throw fail("continuation.parameter", e.Predicate());
+    throw KeyError(run, key, e.Predicate());
   }
-  CheckRangeHoldsStart(run, Model::ParameterAt(orbit.parameters, k));
-  // A moving surface breaks the half-period symmetry whose breaking an SB is: in v_b the pitchfork
-  // unfolds, and no second branch crosses the label's.
-  if (run.restart_switch_branch && k == Model::kRestVelocityParameter && run.restart_label.rfind("SB", 0) == 0) {
-    const ModelDescription& description = model.Description();
-    std::vector<std::string> others;
-    for (int i = model.Autonomous() ? 1 : 0; i < description.ParameterCount(); ++i) {
-      if (i != k) others.push_back(description.parameters[i].name);
+}
+
+// A moving surface breaks the half-period symmetry whose breaking an SB is: in v_b the pitchfork
+// unfolds, and no second branch crosses the label's.
+void RefuseSwitchInBeltSpeed(const RunFile& run, const DynamicLinearOscillator& model, int k) {
+  if (k != Model::kRestVelocityParameter || run.restart_label.rfind("SB", 0) != 0) return;
+  const ModelDescription& description = model.Description();
+  std::vector<std::string> others;
+  for (int i = model.Autonomous() ? 1 : 0; i < description.ParameterCount(); ++i) {
+    if (i != k) others.push_back(description.parameters[i].name);
+  }
+  throw KeyError(run, "continuation.parameter",
+                 fmt::format("= \"{}\" is invalid with start.restart.switch_branch at '{}': a moving surface breaks the "
+                             "symmetry that an SB breaks, so no other branch crosses there in {}: valid {}",
+                             run.parameter, run.restart_label, run.parameter, fmt::join(others, ", ")));
+}
+
+// An antisymmetric orbit is a motion only on a fixed surface: a curve with the belt's speed
+// continued or released would need it written over its whole period, whose mirror margins (zero
+// at the start) the curve's condition does not hold. Throws KeyError at start.restart.boundary.
+void CheckCurveKeepsTheSurfaceFixed(const RunFile& run, const DynamicLinearOscillator& model,
+                                    const BasicOrbit<Model>& orbit, int k) {
+  const int second = VariedParameterOf(run, model, "start.restart.boundary", run.restart_boundary);
+  const int speed = Model::kRestVelocityParameter;
+  if (!orbit.signature.antisymmetric() || (k != speed && second != speed)) return;
+  throw KeyError(run, "start.restart.boundary",
+                 fmt::format("= '{}' is invalid with continuation.parameter = \"{}\" at '{}': the orbit '{}' is a motion "
+                             "only where {} = 0 (the mirror of a stick on a moving surface moves the other way): valid "
+                             "a curve in two parameters other than {}",
+                             run.restart_boundary, run.parameter, run.restart_label, orbit.signature.ToString(),
+                             model.Description().parameters[speed].name, model.Description().parameters[speed].name));
+}
+
+// The label a run file's [start.restart] names in a [model]'s run, with its model. Throws KeyError
+// at a key only the paper's start builder reads, and at start.restart where the label cannot be
+// read (ReadModelLabel).
+ModelLabel LabelOfRestart(const RunFile& run, const std::filesystem::path& results_root) {
+  for (const PaperOnlyKey& k : PaperOnlyKeys(run)) {
+    if (k.given) {
+      throw KeyError(run, k.key, fmt::format("is invalid with a [model]'s label ('{}:{}'): the label gives the model, its "
+                                             "parameters and orbit, and the unknowns (the orbit's at fixed parameters); "
+                                             "vary a parameter by continuing in it",
+                                             run.restart_run, run.restart_label));
     }
-    throw fail("continuation.parameter",
-               fmt::format("= \"{}\" is invalid with start.restart.switch_branch at '{}': a moving surface breaks the "
-                           "symmetry that an SB breaks, so no other branch crosses there in {}: valid {}",
-                           run.parameter, run.restart_label, run.parameter, fmt::join(others, ", ")));
   }
-  orbit = ContinuableIn(std::move(orbit), k);
-  // The unknowns at fixed parameters; with an abnormal stop a friction level is released among them.
-  const OrbitVariableSet variables = VariableSetOf(model, orbit.signature);
-  const UnknownChoice unknowns = UnknownsAtFixedParameters(variables);
+  try {
+    return ReadModelLabel(results_root, run.restart_run, run.restart_label);
+  } catch (const InvalidInput& e) {
+    throw KeyError(run, "start.restart", e.Predicate());
+  }
+}
+
+// The branch from `orbit` at fixed parameters in the run's parameter, with its steps and options
+// (the unknowns the orbit's; with an abnormal stop a friction level is released among them).
+BasicOrbitContinuationSetup<Model> BranchOfRestart(const RunFile& run, const Model& model, BasicOrbit<Model> orbit) {
+  const UnknownChoice unknowns = UnknownsAtFixedParameters(VariableSetOf(model, orbit.signature));
   BasicOrbitContinuationSetup<Model> setup{std::move(orbit), unknowns, run.parameter,
                                            *ShootingChoiceFromString(run.shooting),  // checked by the reader
                                            *LinearSolverFromString(run.linear_solver), {}, {}, {}, {},
                                            run.max_amplitude, run.resonance_approach, model};
   SetContinuationOptions(run, &setup.options);
+  return setup;
+}
+
+}  // namespace
+
+std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root) {
+  if (run.restart_run.empty() || !HoldsModelRun(results_root, run.restart_run)) return std::nullopt;
+  ModelLabel at = LabelOfRestart(run, results_root);
+  const Model& model = at.file.model;
+  const int k = VariedParameterOf(run, model, "continuation.parameter", run.parameter);
+  CheckRangeHoldsStart(run, Model::ParameterAt(at.orbit.parameters, k));
+  if (run.restart_switch_branch) RefuseSwitchInBeltSpeed(run, model, k);
+  CheckOneRestartKind(run);
+  const bool curve = !run.restart_boundary.empty();
+  if (curve) CheckCurveKeepsTheSurfaceFixed(run, model, at.orbit, k);
+  BasicOrbitContinuationSetup<Model> setup = BranchOfRestart(run, model, ContinuableIn(std::move(at.orbit), k));
   if (run.restart_switch_branch) setup = SwitchedAtLabel(run, setup);
+  if (curve) setup = CurveOfRestart(run, at.special.type, at.special.test_function, setup);
   // User values address the unknowns: the free variables in their order, then the parameter (of the
   // branch that leaves the point, where the switch changed its type).
   const OrbitVariableSet continued = VariableSetOf(model, setup.start.signature);

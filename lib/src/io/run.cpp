@@ -75,6 +75,12 @@ std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& 
   return values;
 }
 
+void CheckOneRestartKind(const RunFile& run) {
+  if (run.restart_switch_branch && !run.restart_boundary.empty()) {
+    throw KeyError(run, "start.restart.boundary", "cannot go with switch_branch: give one of them");
+  }
+}
+
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root) {
   auto fail = [&](const std::string& key, const std::string& what) { return KeyError(run, key, what); };
   const StartProblem start = [&] {
@@ -95,23 +101,13 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   setup.resonance_approach = run.resonance_approach;
   ContinuationOptions& o = setup.options;
   SetContinuationOptions(run, &o);
-  if (run.restart_switch_branch && !run.restart_boundary.empty()) {
-    throw fail("start.restart.boundary", "cannot go with switch_branch: give one of them");
-  }
+  CheckOneRestartKind(run);
   if (run.restart_switch_branch) setup = SwitchedAtLabel(run, setup);
   if (!run.restart_boundary.empty()) {
-    // A type change is its margin's (the test function), the others their type (LP2: LP).
+    // The label's type is its letters (LP2: LP).
     const std::string& label = run.restart_label;
     const std::string test = ReadLabelledPoint(results_root, run.restart_run, label).test_function;
-    const std::string condition =
-        test.starts_with(orbit_columns::kMarginPrefix) ? test : label.substr(0, label.find_first_of("0123456789"));
-    const CurveStart start{.orbit = setup.start, .condition = condition, .parameter = run.parameter, .unknowns = setup.unknowns};
-    try {
-      setup = BoundaryCurve(start, setup, run.restart_boundary);
-    } catch (const InvalidInput& e) {
-      throw fail("start.restart.boundary", fmt::format("= '{}' is invalid at '{}' ({}): {} {}", run.restart_boundary,
-                                                       label, condition, e.field(), e.Predicate()));
-    }
+    setup = CurveOfRestart(run, label.substr(0, label.find_first_of("0123456789")), test, setup);
   }
   // User values address unknowns: the free variables in their order, then the parameter (of the
   // branch that leaves the point, or of the boundary, where the start's type changed).

@@ -26,12 +26,12 @@
 
 namespace stickslip {
 
-// The condition of `type` ("LP", "PD", "SB", "TR") with its borders from `start`, an orbit at (or
-// near) such a point. Throws InvalidInput naming "condition" for another type, a PD or SB where
+// The condition of `type` ("LP", "PD", "SB", "TR") with its borders from the orbit of `problem` at
+// `u`, at (or near) such a point. Throws InvalidInput naming "condition" for another type, a PD or SB where
 // it is not of codimension one, or a start where A is not near singular (its smallest singular
 // value, relative to the largest, above `max_singularity`) or, for TR, where no complex pair lies
 // near the unit circle.
-std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, const Orbit& start,
-                                                       double max_singularity = 1e-4);
+std::shared_ptr<const OrbitCondition> FloquetCondition(std::string_view type, const OrbitProblem& problem,
+                                                       const Eigen::VectorXd& u, double max_singularity = 1e-4);
 
 }  // namespace stickslip

@@ -55,19 +55,19 @@ namespace stickslip {
 
 class MarginCondition final : public OrbitCondition {
  public:
-  // `margin` is the margin's name ("G:3", as Margin::Name() gives it), `start` an orbit of the
-  // type near or on the boundary (where the interior minimum is chosen and its time read). Throws
-  // InvalidInput naming "condition" (the value "margin:<name>") for the refusals above.
-  MarginCondition(const Orbit& start, std::string_view margin);
+  // `margin` is the margin's name ("G:3", as Margin::Name() gives it), the orbit of `problem` at
+  // `u` one of the type near or on the boundary (where the interior minimum is chosen and its time
+  // read). Throws InvalidInput naming "condition" (the value "margin:<name>") for the refusals above.
+  MarginCondition(const OrbitProblem& problem, const Eigen::VectorXd& u, std::string_view margin);
 
   std::string Name() const override;  // "margin:G:3", the monitor's column
   int ExtraUnknownCount() const override { return interior_ ? 1 : 0; }
-  // The interior minimum's time in its segment at `orbit` (found by AdmissibilityMargins' root
+  // The interior minimum's time in its segment at the orbit (found by AdmissibilityMargins' root
   // finder); nothing for an end margin.
-  Eigen::VectorXd ExtraUnknowns(const Orbit& orbit) const override;
+  Eigen::VectorXd ExtraUnknowns(const OrbitProblem& problem, const Eigen::VectorXd& u) const override;
   // End margin: {margin}. Interior: {f(tau), f_tau(tau)}, extra = {tau}.
-  void Evaluate(const Orbit& orbit, const Eigen::VectorXd& extra, Eigen::VectorXd* residual,
-                Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const override;
+  void Evaluate(const OrbitProblem& problem, const Eigen::VectorXd& u, const Eigen::VectorXd& extra,
+                Eigen::VectorXd* residual, Eigen::MatrixXd* d_variables, Eigen::MatrixXd* d_extra) const override;
   std::vector<std::string> Defining() const override { return defining_; }
 
   bool Interior() const { return interior_; }

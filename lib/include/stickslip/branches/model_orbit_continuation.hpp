@@ -59,13 +59,8 @@ OrbitContinuationProblem MakeOrbitContinuation(const BasicOrbitContinuationSetup
   parts.start = VariablesOf(equations, setup.start);
   parts.system = std::make_unique<ModelOrbitProblem<Model>>(
       BasicOrbitSystem<Model>(equations, parts.start, std::move(unknowns), parts.tie_static_friction));
-  if constexpr (std::is_same_v<Model, Pascal2014>) {
-    parts.condition = setup.condition;
-    if (setup.condition) parts.condition_start = setup.condition->ExtraUnknowns(setup.start);
-  } else if (setup.condition) {
-    throw InvalidInput::WithMessage("condition", "condition: curves in two parameters are continued for the paper's "
-                                                 "model only");
-  }
+  parts.condition = setup.condition;
+  if (setup.condition) parts.condition_start = setup.condition->ExtraUnknowns(*parts.system, parts.system->Unknowns(parts.start));
   parts.parameter_name = setup.parameter;
   parts.options = setup.options;
   parts.sparse_solver = setup.sparse_solver;

@@ -43,7 +43,7 @@ struct BasicOrbitContinuationSetup {
   std::vector<std::string> unwatched;
   // With a condition, the branch is a curve in two parameters (branches/boundary_curve.hpp): the
   // periodicity equations and the condition's, in the unknowns and the condition's own; the
-  // condition's defining test functions are not watched. The paper's model only.
+  // condition's defining test functions are not watched.
   std::shared_ptr<const OrbitCondition> condition;
   // A resonance ends the branch at its first point whose amplitude passes this (> 0; infinity:
   // never): BranchEnd::kStopped, the message beginning "resonance:".
@@ -66,9 +66,8 @@ struct BasicOrbitBranch {
 using OrbitBranch = BasicOrbitBranch<Pascal2014>;
 
 // Throws InvalidInput naming "free", "fix", "unknowns", "parameter", "max_amplitude",
-// "resonance_approach" or "condition" if the choice of unknowns is not square, the parameter is
-// not a held variable, max_amplitude is not > 0, resonance_approach not in [0, 1) or a condition
-// is given for a model other than the paper's. A branch ends as the engine ends it, or at a
+// "resonance_approach" if the choice of unknowns is not square, the parameter is not a held
+// variable, max_amplitude is not > 0 or resonance_approach not in [0, 1). A branch ends as the engine ends it, or at a
 // resonance (max_amplitude, resonance_approach). `observer`, if given, sees the branch after every
 // step (a progress display, say). Compiled for the paper's model (orbit_continuation.cpp) and a
 // [model]'s (DynamicLinearOscillator, model_trace.cpp); for another model include
@@ -109,7 +108,7 @@ struct OrbitContinuationParts {
   ContinuationOptions options;
   LinearSolverType sparse_solver = LinearSolverType::kKlu;
   std::vector<std::string> unwatched;
-  std::shared_ptr<const OrbitCondition> condition;  // the paper's model's
+  std::shared_ptr<const OrbitCondition> condition;
   Eigen::VectorXd condition_start;                  // the condition's own unknowns at the start
 };
 OrbitContinuationProblem AssembleOrbitContinuation(OrbitContinuationParts parts);

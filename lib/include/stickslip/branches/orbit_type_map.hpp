@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/branches/boundary_curve.hpp"
 #include "stickslip/branches/orbit_continuation.hpp"
 #include "stickslip/progress.hpp"
 
@@ -170,9 +171,5 @@ struct MapOrbitsAt {
 // is found (above).
 MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& rectangle, double first, double second,
                      const OrbitTypeMapOptions& options);
-
-// The condition BoundaryCurve continues for a special point: its margin for a type change (the
-// test function "margin:..."), else its type ("LP", "PD", ...).
-std::string CurveCondition(const std::string& type, const std::string& test_function);
 
 }  // namespace stickslip

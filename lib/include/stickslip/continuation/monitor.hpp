@@ -36,7 +36,9 @@ class Monitor {
   // At a branch point u (all unknowns, the continuation parameter included): the test
   // functions, in TestFunctions' order, and the recorded values where `recorded` is not null
   // (the engine asks for them at the points it keeps, not at the trial points of locating an
-  // event). Non-finite test values mean "not defined here" and are never taken for a sign change.
+  // event). A NaN test value means "not defined here" and is never taken for a sign change; an
+  // infinite one is far on its side ("none yet": a margin's interior minimum that does not exist),
+  // and a step from +inf to a negative value is a sign change, located where the value is finite.
   virtual void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* tests, Eigen::VectorXd* recorded) const = 0;
 };
 

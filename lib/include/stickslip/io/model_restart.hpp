@@ -55,6 +55,7 @@ struct ModelLabel {
   ModelFileStart file;   // the model, its parameters the label's
   std::string run_file;  // the model's run file, as the stored run's summary names it
   BasicOrbit<DynamicLinearOscillator> orbit;
+  StoredSpecialPoint special;  // the label's special point: its type and test function
 };
 
 // The orbit at `label` of the stored [model]'s run results_root/<run> (OrbitOf), with its model
@@ -87,10 +88,12 @@ BasicOrbit<DynamicLinearOscillator> ContinuableIn(BasicOrbit<DynamicLinearOscill
 // nullopt when run.restart_run is no [model]'s run (HoldsModelRun). Otherwise the setup at the
 // label, in run.parameter (any of the model's parameters its forcing lets vary) over run.range with
 // run's continuation keys; with start.restart.switch_branch the branch that leaves the label (a PD
-// or an SB: switched_restart.hpp). Throws RunFileError at the key: start.restart (no such label, the
-// model's run file missing or no longer the run's model), continuation.parameter, continuation.range
-// (not holding the label's value), as SwitchedAtLabel does, and for the keys only the paper's model
-// takes (start.set, start.guess, unknowns.*, start.restart.boundary).
+// or an SB: switched_restart.hpp); with start.restart.boundary the curve in two parameters through
+// it (CurveOfRestart). Throws RunFileError at the key: start.restart (no such label, the model's run
+// file missing or no longer the run's model), continuation.parameter, continuation.range (not
+// holding the label's value), as SwitchedAtLabel and CurveOfRestart do, start.restart.boundary (no
+// parameter the model varies; the belt's speed in a curve of an antisymmetric orbit), and for the
+// keys only the paper's model takes (start.set, start.guess, unknowns.*).
 std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::filesystem::path& results_root);
 
 }  // namespace stickslip

@@ -8,7 +8,11 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "stickslip/branches/boundary_curve.hpp"
 #include "stickslip/branches/orbit_continuation.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip {
@@ -37,6 +41,27 @@ void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch);
 // Throws KeyError at continuation.user_values_of for a name that is no unknown of the run.
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
                                     const std::function<std::optional<int>(const std::string&)>& index_of);
+
+// Throws KeyError at start.restart.boundary where the restart asks for both a curve and a switch.
+void CheckOneRestartKind(const RunFile& run);
+
+// The curve in two parameters the restart asks for (start.restart.boundary) through its label, a
+// special point of `type` whose test function is `test_function`, from `setup` (the branch's at
+// the label): the run's parameter continued, the boundary released (BoundaryCurve). Throws
+// KeyError at start.restart.boundary where BoundaryCurve refuses it, with its reason.
+template <OscillatorModel Model>
+BasicOrbitContinuationSetup<Model> CurveOfRestart(const RunFile& run, const std::string& type,
+                                                  const std::string& test_function,
+                                                  const BasicOrbitContinuationSetup<Model>& setup) {
+  const std::string condition = CurveCondition(type, test_function);
+  try {
+    return BoundaryCurve(BasicCurveStart<Model>{setup.start, condition, run.parameter, setup.unknowns}, setup,
+                         run.restart_boundary);
+  } catch (const InvalidInput& e) {
+    throw KeyError(run, "start.restart.boundary", fmt::format("= '{}' is invalid at '{}' ({}): {} {}", run.restart_boundary,
+                                                              run.restart_label, condition, e.field(), e.Predicate()));
+  }
+}
 
 // The setup a run file describes. Throws RunFileError naming the file, line and key.
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root);

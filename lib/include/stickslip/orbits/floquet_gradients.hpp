@@ -30,6 +30,16 @@ struct BasicMonodromyGradient {
 };
 using MonodromyGradient = BasicMonodromyGradient<Pascal2014::kStateSize>;
 
+// The same at run-time size, as the model-free layers take it (orbits/orbit_problem.hpp).
+template <int kStateSize>
+BasicMonodromyGradient<Eigen::Dynamic> ToDynamic(const BasicMonodromyGradient<kStateSize>& g) {
+  if constexpr (kStateSize == Eigen::Dynamic) {
+    return g;
+  } else {
+    return {g.period, {g.d_period.begin(), g.d_period.end()}, g.listed, {g.d_listed.begin(), g.d_listed.end()}};
+  }
+}
+
 namespace floquet_gradients {
 
 // Derivatives held on the stack up to this many directions (15 listed segments of the paper's

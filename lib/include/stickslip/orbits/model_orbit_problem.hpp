@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "stickslip/orbits/floquet_gradients.hpp"
+#include "stickslip/orbits/margin_gradients.hpp"
 #include "stickslip/orbits/orbit_problem.hpp"
 #include "stickslip/orbits/orbit_system.hpp"
 
@@ -81,6 +83,36 @@ class ModelOrbitProblem final : public OrbitProblem {
   }
   int ContactCoordinate() const override { return stickslip::ContactCoordinate(model()); }
 
+  // The paper's model's gradients are compiled once (margin_gradients.cpp, floquet_gradients.cpp).
+  std::vector<MarginGradient> MarginGradients(const Eigen::VectorXd& u) const override {
+    if constexpr (std::is_same_v<Model, Pascal2014>) {
+      return stickslip::MarginGradients(ToOrbit(*this, u));
+    } else {
+      return stickslip::MarginGradients(model(), OrbitAt(u));
+    }
+  }
+  MarginGradient MarginGradientAt(const Eigen::VectorXd& u, const Margin& margin, double tau) const override {
+    if constexpr (std::is_same_v<Model, Pascal2014>) {
+      return stickslip::MarginGradientAt(ToOrbit(*this, u), margin, tau);
+    } else {
+      return stickslip::MarginGradientAt(model(), OrbitAt(u), margin, tau);
+    }
+  }
+  DynamicMonodromyGradient MonodromyGradients(const Eigen::VectorXd& u) const override {
+    if constexpr (std::is_same_v<Model, Pascal2014>) {
+      return ToDynamic(stickslip::MonodromyGradients(ToOrbit(*this, u)));
+    } else {
+      return ToDynamic(stickslip::MonodromyGradients(model(), OrbitAt(u)));
+    }
+  }
+  double SegmentStart(const Eigen::VectorXd& u, int segment) const override {
+    double t0 = 0.0;
+    WalkSegments(model(), OrbitAt(u), Extent::kListed, PhaseRule::kFromOrigin, [&](const SegmentVisit<double, Model>& s) {
+      if (s.spec.listed == segment) t0 = s.t0;
+    });
+    return t0;
+  }
+
   // The orbit at the unknowns u (a curve's own unknowns may follow them), and as the layers above
   // take it (for the paper's model its Orbit).
   BasicOrbit<Model> OrbitAt(const Eigen::VectorXd& u) const {
@@ -108,5 +140,11 @@ const ModelOrbitProblem<Model>& ModelProblemOf(const OrbitProblem& problem) {
   if (!system) throw std::logic_error("ModelProblemOf: the orbit problem is of another model");
   return *system;
 }
+
+// The paper's model's, compiled once (paper_orbit_problem.cpp) instead of in every file that
+// continues or solves its orbits.
+extern template class BasicPeriodicityEquations<Pascal2014>;
+extern template class BasicOrbitSystem<Pascal2014>;
+extern template class ModelOrbitProblem<Pascal2014>;
 
 }  // namespace stickslip

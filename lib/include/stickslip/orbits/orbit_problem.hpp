@@ -26,6 +26,11 @@
 
 namespace stickslip {
 
+struct MarginGradient;  // orbits/margin_gradients.hpp
+template <int kStateSize>
+struct BasicMonodromyGradient;  // orbits/floquet_gradients.hpp
+using DynamicMonodromyGradient = BasicMonodromyGradient<Eigen::Dynamic>;
+
 class OrbitProblem : public NonlinearSystem {
  public:
   virtual const ModelDescription& description() const = 0;
@@ -48,6 +53,16 @@ class OrbitProblem : public NonlinearSystem {
   virtual std::optional<SlipResonance> NearestSlipResonance(const Eigen::VectorXd& u) const = 0;
   // The coordinate the contact holds in a stick (orbit_measures.hpp).
   virtual int ContactCoordinate() const = 0;
+
+  // What a curve's defining condition asks (branches/orbit_condition.hpp), with derivatives by
+  // the full variables (FullCount() columns): the margins' exact gradients (margin_gradients.hpp,
+  // one per margin of Margins(u)), an interior margin's function at the time tau elapsed in its
+  // segment, the monodromy matrices' (floquet_gradients.hpp), and the time from the origin at
+  // which listed segment `segment` starts, as the margins' walk forms it.
+  virtual std::vector<MarginGradient> MarginGradients(const Eigen::VectorXd& u) const = 0;
+  virtual MarginGradient MarginGradientAt(const Eigen::VectorXd& u, const Margin& margin, double tau) const = 0;
+  virtual DynamicMonodromyGradient MonodromyGradients(const Eigen::VectorXd& u) const = 0;
+  virtual double SegmentStart(const Eigen::VectorXd& u, int segment) const = 0;
 };
 
 // The paper's model's orbit (orbit.hpp) at the unknowns u of its problem (a curve's own unknowns
