@@ -3,6 +3,7 @@
 #include <cmath>
 #include <complex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/LU>
@@ -45,18 +46,18 @@ struct TestMatrix {
 };
 
 TestMatrix TestMatrixOf(Kind kind, const OrbitProblem& problem, const Eigen::VectorXd& u) {
-  const DynamicMonodromyGradient g = problem.MonodromyGradients(u);
+  DynamicMonodromyGradient g = problem.MonodromyGradients(u);
   TestMatrix t;
   using Matrix = DynamicMonodromyGradient::Matrix;
   const Matrix identity = Matrix::Identity(g.period.rows(), g.period.cols());
   switch (kind) {
     case Kind::kFold:
       t.a = g.period - identity;
-      t.d_a.assign(g.d_period.begin(), g.d_period.end());
+      t.d_a = std::move(g.d_period);
       break;
     case Kind::kFlip:
       t.a = g.period + identity;
-      t.d_a.assign(g.d_period.begin(), g.d_period.end());
+      t.d_a = std::move(g.d_period);
       break;
     case Kind::kSymmetry:
       t.a = identity - g.listed;
