@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
       "M. Pascal, Nonlinear Dyn. 77 (2014) 267-276, and a linear oscillator of your own with a Coulomb contact "
       "(a run file's [model]: describe, find --model).\n"
       "Exit codes: 0 success (a trace that ran to its ends, whatever they were), 1 failure, 2 bad input (nothing "
-      "written), 3 no convergence, 4 solve, find: the solution is not a motion of the system (a margin <= 0) or "
+      "written), 3 no convergence (a start; a branch whose corrector failed before its end: the points reached "
+      "are written), 4 solve, find: the solution is not a motion of the system (a margin <= 0) or "
       "failed its verification; trace: its start is not a motion (nothing written), 5 find: the motion is not "
       "periodic within k <= --max-multiple forcing periods (or has no stop or stick exit).",
       "stickslip");
