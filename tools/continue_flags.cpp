@@ -72,8 +72,8 @@ void BuildOneOffRun(ContinueArgs* args) {
   if (model_point) std::tie(run.restart_run, run.restart_label) = *model_point;
   const auto comma = args->range.find(',');
   if (comma == std::string::npos) throw InvalidInput("range", "'" + args->range + "'", "MIN,MAX");
-  run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX with MIN < MAX");
-  run.range_max = ParseNumber("range", args->range.substr(comma + 1), "MIN,MAX with MIN < MAX");
+  run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX finite with MIN < MAX");
+  run.range_max = ParseNumber("range", args->range.substr(comma + 1), "MIN,MAX finite with MIN < MAX");
   CheckOneOffRun(run, args->range);
   CheckLinearSolverIsUsed(args->linear_solver_given ? run.linear_solver : "", run.shooting);
   for (const std::string& text : args->user_values) {

@@ -122,7 +122,8 @@ BRANCH_ENDS = {
     "parameter-bound": "reached {p} = {v}", "terminal-event": "changes orbit type at {p} = {v}",
     "stopped": "stopped at {p} = {v}", "max-points": "stopped at the point limit, {p} = {v}",
     "step-too-small": "step size fell below its minimum at {p} = {v}", "closed-loop": "closed a loop",
-    "start-failed": "did not start", "fold-at-start": "a fold at its start"}
+    "start-failed": "did not start", "start-outside-range": "starts outside its range",
+    "fold-at-start": "a fold at its start"}
 
 
 class BadInput(ValueError):

@@ -166,6 +166,17 @@ TEST(PseudoArclength, EndMessageAtABoundGivesTheBoundsReason) {
   o.direction = -1;
   EXPECT_EQ(Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run().end_message,
             "at the bound F_k = 0 (its valid range: F_k >= 0)");
+  // A start past a bound is an end of its own, which the front ends refuse, with the bound's
+  // reason (or the bound, where it is the range asked for).
+  o.lambda_min = 0.1;
+  o.lambda_min_reason = "its valid range: F_k >= 0.1";
+  const Branch outside = Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run();
+  EXPECT_EQ(outside.end, BranchEnd::kStartOutsideRange);
+  EXPECT_EQ(outside.points.size(), 1u);
+  EXPECT_EQ(outside.end_message, "the start, F_k = 0, lies outside the parameter range (its valid range: F_k >= 0.1)");
+  o.lambda_min_reason.clear();
+  EXPECT_EQ(Continuation(cubic, nullptr, o, Eigen::Vector2d(0.0, 0.0)).Run().end_message,
+            "the start, F_k = 0, lies outside the parameter range (F_k >= 0.1)");
 }
 
 // A fold of curvature 100: lambda = -50 x^2. Long steps overshoot it and fail, short ones pass.

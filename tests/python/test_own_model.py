@@ -185,6 +185,15 @@ def test_a_models_type_boundary_is_the_run_files_curve_byte_for_byte():
         stickslip.two_parameter("omega", "chi", (30.0, 60.1), point="branch-1:SK2",
                                 results=RESULTS / "models" / "two-masses-omega-trace")
     assert "key 'start.restart.boundary' = 'chi' is invalid: valid range omega, F_k, F_s, v_b" in str(error.value)
+    for second in ("", None):
+        with pytest.raises(ValueError) as error:
+            stickslip.two_parameter("omega", second, (30.0, 60.1), point="branch-1:SK2",
+                                    results=RESULTS / "models" / "two-masses-omega-trace")
+        assert "second = " in str(error.value) and "is invalid" in str(error.value)
+    with pytest.raises(ValueError) as error:  # as the command line's --range
+        stickslip.two_parameter("omega", "F_s", (30.0, float("inf")), point="branch-1:SK2",
+                                results=RESULTS / "models" / "two-masses-omega-trace")
+    assert "MIN,MAX finite with MIN < MAX" in str(error.value)
 
 
 def test_sweep_is_the_command_lines_file(tmp_path):

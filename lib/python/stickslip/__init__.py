@@ -419,6 +419,8 @@ def two_parameter(parameter, second, range, *, point, **keywords):
     leaves its valid range (a static level at the held kinetic one). Refused: a slip's duration
     and sliding-friction (no regular curve).
     """
+    if not isinstance(second, str) or not second:
+        raise ValueError(f"second = {second!r} is invalid: valid the name of a parameter of the model, not `parameter`")
     return continue_orbit(parameter, range, point=point, boundary=second, **keywords)
 
 _TRACE_DEFAULTS = _core._trace_defaults()

@@ -33,14 +33,17 @@ void CheckSecondParameter(const OrbitLayout& layout, int static_level, int unvar
   const std::vector<std::string>& released = unknowns.release;
   std::vector<std::string> names;
   for (int k = layout.Parameter(0); k < layout.Count(); ++k) {
-    if (k != unvaried) names.push_back(layout.Name(k));
+    const std::string name = layout.Name(k);
+    const bool taken = name == parameter || std::find(released.begin(), released.end(), name) != released.end() ||
+                       (k == static_level && unknowns.tie_static_friction);
+    if (k != unvaried && !taken) names.push_back(name);
   }
   if (!index || *index < layout.Parameter(0) || *index == unvaried || second == parameter ||
       std::find(released.begin(), released.end(), second) != released.end() ||
       (*index == static_level && unknowns.tie_static_friction)) {
     throw InvalidInput("second", std::string(second),
-                       fmt::format("a parameter other than the continued {}, not released already: {}", parameter,
-                                   fmt::join(names, ", ")));
+                       fmt::format("a parameter the model varies, not the continued {} nor one released already: {}",
+                                   parameter, fmt::join(names, ", ")));
   }
 }
 

@@ -19,7 +19,8 @@ bool IsFamilyEnd(const SpecialPoint* s) {
 
 TraceEnd LinkEndOf(BranchEnd end) {
   switch (end) {
-    case BranchEnd::kParameterBound: return TraceEnd::kParameterBound;
+    case BranchEnd::kParameterBound:
+    case BranchEnd::kStartOutsideRange: return TraceEnd::kParameterBound;
     case BranchEnd::kClosedLoop: return TraceEnd::kLoop;
     case BranchEnd::kStopped: return TraceEnd::kResonance;
     case BranchEnd::kMaxPoints: return TraceEnd::kMaxPoints;

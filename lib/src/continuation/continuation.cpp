@@ -20,6 +20,7 @@ const char* ToString(BranchEnd end) {
     case BranchEnd::kStepTooSmall: return "step-too-small";
     case BranchEnd::kTerminalEvent: return "terminal-event";
     case BranchEnd::kStartFailed: return "start-failed";
+    case BranchEnd::kStartOutsideRange: return "start-outside-range";
     case BranchEnd::kFoldAtStart: return "fold-at-start";
     case BranchEnd::kStopped: return "stopped";
     case BranchEnd::kClosedLoop: break;
@@ -225,8 +226,13 @@ bool Continuation::Start() {
   }
   MarkLastPoint(&branch_, "EP", "start");
   Report();
-  if (st.Lambda(st.last.u) < o.lambda_min || st.Lambda(st.last.u) > o.lambda_max) {
-    return End(BranchEnd::kParameterBound, "the start lies outside the parameter range");
+  const double lambda = st.Lambda(st.last.u);
+  if (lambda < o.lambda_min || lambda > o.lambda_max) {
+    const bool below = lambda < o.lambda_min;
+    const std::string& reason = below ? o.lambda_min_reason : o.lambda_max_reason;
+    const std::string bound = fmt::format("{} {} {:.10g}", o.parameter_name, below ? ">=" : "<=", below ? o.lambda_min : o.lambda_max);
+    return End(BranchEnd::kStartOutsideRange, fmt::format("the start, {} = {:.10g}, lies outside the parameter range ({})",
+                                                          o.parameter_name, lambda, reason.empty() ? bound : reason));
   }
   if (o.max_points <= 1) return End(BranchEnd::kMaxPoints, MaxPointsReached(o, st.Lambda(st.last.u)));
   return true;

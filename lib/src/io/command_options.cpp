@@ -111,8 +111,8 @@ void CheckSteps(const BranchSteps& steps) {
 }
 
 void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
-  if (!(run.range_min < run.range_max)) {
-    throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX with MIN < MAX");
+  if (!(std::isfinite(run.range_min) && std::isfinite(run.range_max) && run.range_min < run.range_max)) {
+    throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX finite with MIN < MAX");
   }
   CheckSteps(run.steps);
   if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {

@@ -59,6 +59,15 @@ void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch) {
                       ? fmt::format("the first point of the branch that leaves '{}' (direction = \"{}\")",
                                     run.restart_label, run.direction > 0 ? "up" : "down")
                       : std::string("the first point"));
+  // Inside the range asked for but past a bound of the physics (a friction level at the other,
+  // a parameter's valid range), which the engine narrows the range to.
+  if (branch.end == BranchEnd::kStartOutsideRange) {
+    throw KeyError(run, run.restart_switch_branch ? "start.restart.switch_branch" : "continuation.range",
+                   run.restart_switch_branch
+                       ? fmt::format("= true is invalid at '{}' (direction = \"{}\"): {}", run.restart_label,
+                                     run.direction > 0 ? "up" : "down", branch.end_message)
+                       : fmt::format("is invalid: {}", branch.end_message));
+  }
 }
 
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
@@ -76,8 +85,16 @@ std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& 
 }
 
 void CheckOneRestartKind(const RunFile& run) {
-  if (run.restart_switch_branch && !run.restart_boundary.empty()) {
+  if (run.restart_boundary.empty()) return;
+  if (run.restart_switch_branch) {
     throw KeyError(run, "start.restart.boundary", "cannot go with switch_branch: give one of them");
+  }
+  // A curve ends where a second margin reaches zero: a codimension-two point, not a change of type
+  // to continue past.
+  if (run.continue_past_type_changes) {
+    throw KeyError(run, "continuation.continue_past_type_changes",
+                   "= true is invalid with start.restart.boundary: valid false (a curve in two parameters ends at the "
+                   "codimension-two point where a second margin reaches zero)");
   }
 }
 

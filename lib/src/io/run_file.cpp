@@ -68,6 +68,9 @@ void ReadRestart(const toml::table& restart, const toml::table& root, std::strin
   r.String("label", &run->restart_label, true);
   r.Boolean("switch_branch", &run->restart_switch_branch);
   r.String("boundary", &run->restart_boundary);
+  if (r.Get("boundary") && run->restart_boundary.empty()) {
+    r.Fail(*r.Get("boundary"), "boundary", "= '' is invalid: valid the name of a second parameter to release");
+  }
   // The branch that leaves a bifurcation leaves it on the side `direction` names; a trace has
   // none (both ways from its start would go out along one side and back along the other).
   if (run->restart_switch_branch && root.contains("trace")) {

@@ -151,6 +151,7 @@ enum class BranchEnd {
   kStepTooSmall,
   kTerminalEvent,
   kStartFailed,
+  kStartOutsideRange,  // the start lies outside [lambda_min, lambda_max]: a branch of one point
   kFoldAtStart,  // the start is a fold and the branch runs only against the asked direction
   kClosedLoop,   // the branch came back to its start (ClosedLoopOptions): a closed branch
   kStopped,      // ended by its caller between two steps (a trace at a resonance: branches/trace.hpp)

@@ -33,7 +33,10 @@ RunFileError KeyError(const RunFile& run, const std::string& key, const std::str
 void CheckRangeHoldsStart(const RunFile& run, double value);
 
 // The same for the branch's first point, after the continuation: a switched branch's lies ds
-// along it from the label, which CheckRangeHoldsStart saw.
+// along it from the label, which CheckRangeHoldsStart saw. Also where the first point lies inside
+// the run's range but past a bound of the physics (BranchEnd::kStartOutsideRange: a friction level
+// past the other, held one; a parameter's valid range): KeyError at start.restart.switch_branch for
+// a switched branch, else at continuation.range, with the engine's message.
 void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch);
 
 // The run's user values as the engine takes them: each variable by its position among `order` (the
@@ -42,7 +45,8 @@ void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch);
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
                                     const std::function<std::optional<int>(const std::string&)>& index_of);
 
-// Throws KeyError at start.restart.boundary where the restart asks for both a curve and a switch.
+// Throws KeyError at start.restart.boundary where the restart asks for both a curve and a switch,
+// and at continuation.continue_past_type_changes where a curve is asked to continue past one.
 void CheckOneRestartKind(const RunFile& run);
 
 // The curve in two parameters the restart asks for (start.restart.boundary) through its label, a
