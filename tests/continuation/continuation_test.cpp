@@ -428,6 +428,8 @@ TEST(Monitor, ASignChangeThroughAPoleWhereTheCorrectorFailsIsNoSpecialPoint) {
   ASSERT_EQ(zero.size(), 1u);
   EXPECT_FALSE(zero[0].located);  // recorded at the end of the step across the hole
   EXPECT_GT(zero[0].lambda, 0.5);
+  // That point is on the branch once, not again as the step's end.
+  for (std::size_t k = 1; k < b.points.size(); ++k) EXPECT_NE(b.points[k].u, b.points[k - 1].u) << "point " << k;
 }
 
 // x = lambda, a margin that is +inf ("none yet") until its interior minimum appears at lambda =

@@ -407,7 +407,11 @@ bool Continuation::RecordEvents() {
 
 bool Continuation::Accept() {
   State& st = *state_;
-  branch_.points.push_back(MakePoint(st.next, st.Lambda(st.next.u), st.next_ds, ""));
+  // An event recorded at the step's end (not located inside the step) put this point on the branch
+  // already: once is enough.
+  if (branch_.points.empty() || branch_.points.back().u != st.next.u) {
+    branch_.points.push_back(MakePoint(st.next, st.Lambda(st.next.u), st.next_ds, ""));
+  }
   st.farthest = std::max(st.farthest, (st.next.u - st.start_u).norm());
   Report();
   if (st.closes_loop) {
