@@ -29,18 +29,15 @@ std::shared_ptr<const OrbitCondition> MakeCurveCondition(std::string_view condit
 
 void CheckSecondParameter(const OrbitLayout& layout, int static_level, int unvaried, const UnknownChoice& unknowns,
                           std::string_view parameter, std::string_view second) {
-  const std::optional<int> index = layout.IndexOf(second);
   const std::vector<std::string>& released = unknowns.release;
-  std::vector<std::string> names;
+  std::vector<std::string> names;  // the valid ones
   for (int k = layout.Parameter(0); k < layout.Count(); ++k) {
     const std::string name = layout.Name(k);
     const bool taken = name == parameter || std::find(released.begin(), released.end(), name) != released.end() ||
                        (k == static_level && unknowns.tie_static_friction);
     if (k != unvaried && !taken) names.push_back(name);
   }
-  if (!index || *index < layout.Parameter(0) || *index == unvaried || second == parameter ||
-      std::find(released.begin(), released.end(), second) != released.end() ||
-      (*index == static_level && unknowns.tie_static_friction)) {
+  if (std::find(names.begin(), names.end(), second) == names.end()) {
     throw InvalidInput("second", std::string(second),
                        fmt::format("a parameter the model varies, not the continued {} nor one released already: {}",
                                    parameter, fmt::join(names, ", ")));

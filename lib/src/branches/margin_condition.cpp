@@ -69,10 +69,11 @@ MarginCondition::MarginCondition(const OrbitProblem& problem, const Eigen::Vecto
                                    kRegular, problem.description().contact.velocity,
                                    before ? Column(before->Name()) : "none (no end before it)"));
   }
+  // A stick's start time, where its constraint's minimum may lie.
+  const double t0 = margin_.kind == MarginKind::kStickConstraint ? problem.SegmentStart(u, i) : 0.0;
   if (margin_.kind == MarginKind::kSlipVelocity) {
     interior_ = true;
   } else if (margin_.kind == MarginKind::kStickConstraint) {
-    const double t0 = problem.SegmentStart(u, i);
     const Eigen::VectorXd variables = problem.Variables(u.head(problem.UnknownCount()));
     interior_ = margin_.t != t0 && margin_.t != t0 + variables(OrbitLayout(problem.description(), n).Duration(i));
   }
@@ -112,7 +113,7 @@ MarginCondition::MarginCondition(const OrbitProblem& problem, const Eigen::Vecto
     const Margin* g = Named(margins, "G:" + next);
     const Margin* g1 = Named(margins, "G1:" + next);
     if (g && g1) also(g->value <= g1->value ? g : g1);
-  } else if (margin_.kind == MarginKind::kStickConstraint && !interior_ && margin_.t == problem.SegmentStart(u, i)) {
+  } else if (margin_.kind == MarginKind::kStickConstraint && !interior_ && margin_.t == t0) {
     also(EndBefore(margins, i, n));
   } else if (margin_.kind == MarginKind::kStopSlope || margin_.kind == MarginKind::kExitSlope) {
     // A tangential stop or stick exit: the saltation matrix there divides by the slope, and the

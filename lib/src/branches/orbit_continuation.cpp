@@ -20,65 +20,76 @@ namespace stickslip {
 
 namespace {
 
-// The continued parameter's range stops at its valid range (the model's description), and the
-// static friction level at or above the kinetic one (eq. 4 for the paper's model) bounds a
-// continuation in either while the other is held: bounds located exactly (EP). A released
-// kinetic level reaching zero ends the family by the sliding-friction margin, a domain boundary.
-void KeepInPhysicalRanges(const OrbitContinuationParts& parts, ContinuationOptions* options) {
+// The bounds of the physics on a varied variable (the continued parameter, or a curve's released
+// one): its valid range (the model's description), and the static friction level at or above the
+// kinetic one (eq. 4 for the paper's model) while the other is held. Each with its reason, which
+// the end message there gives; of two bounds on a side the narrower holds.
+struct PhysicalBounds {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  std::string min_reason, max_reason;
+};
+
+PhysicalBounds PhysicalBoundsOf(const OrbitContinuationParts& parts, int variable) {
   const OrbitLayout& layout = parts.variables.layout;
-  // A bound narrower than the range asked for takes its reason, which the end message there gives.
-  const auto raise_min = [options](double bound, const std::string& reason) {
-    if (!(bound > options->lambda_min)) return;
-    options->lambda_min = bound;
-    options->lambda_min_reason = reason;
+  PhysicalBounds b;
+  const auto raise_min = [&b](double bound, std::string reason) {
+    if (!(bound > b.min)) return;
+    b.min = bound;
+    b.min_reason = std::move(reason);
   };
-  const auto lower_max = [options](double bound, const std::string& reason) {
-    if (!(bound < options->lambda_max)) return;
-    options->lambda_max = bound;
-    options->lambda_max_reason = reason;
+  const auto lower_max = [&b](double bound, std::string reason) {
+    if (!(bound < b.max)) return;
+    b.max = bound;
+    b.max_reason = std::move(reason);
   };
   const std::vector<ParameterDescription>& ranges = parts.system->description().parameters;
   for (std::size_t k = 0; k < ranges.size(); ++k) {
-    if (parts.parameter != layout.Parameter(static_cast<int>(k))) continue;
+    if (variable != layout.Parameter(static_cast<int>(k))) continue;
     raise_min(ranges[k].minimum, "its valid range: " + ranges[k].range);
     lower_max(ranges[k].maximum, "its valid range: " + ranges[k].range);
   }
   const int kinetic = parts.variables.kinetic_level, static_level = parts.variables.static_level;
-  const bool held_kinetic = std::find(parts.free.begin(), parts.free.end(), kinetic) == parts.free.end();
-  const bool held_static =
-      std::find(parts.free.begin(), parts.free.end(), static_level) == parts.free.end() && !parts.tie_static_friction;
+  const auto held = [&parts](int v) {
+    return v != parts.parameter && std::find(parts.free.begin(), parts.free.end(), v) == parts.free.end();
+  };
   const std::string kinetic_name = layout.Name(kinetic), static_name = layout.Name(static_level);
-  if (parts.parameter == static_level && held_kinetic) {
+  if (variable == static_level && held(kinetic)) {
     raise_min(parts.start(kinetic), fmt::format("{} >= {} = {:.10g}", static_name, kinetic_name, parts.start(kinetic)));
   }
-  if (parts.parameter == kinetic && held_static) {
+  if (variable == kinetic && held(static_level) && !parts.tie_static_friction) {
     lower_max(parts.start(static_level),
               fmt::format("{} <= {} = {:.10g}", kinetic_name, static_name, parts.start(static_level)));
   }
+  return b;
 }
 
-// A curve's released parameters end it at their valid ranges, and where the friction levels meet
-// while one of them is held (EP): past them no orbit is a motion. A released kinetic level ends
-// it at its zero, by the sliding-friction margin (a domain boundary), not at its range's minimum.
+// The continued parameter's range stops at its bounds of the physics: located exactly (EP), where
+// narrower than the range asked for with their reasons. A released kinetic level reaching zero ends
+// the family by the sliding-friction margin, a domain boundary.
+void KeepInPhysicalRanges(const OrbitContinuationParts& parts, ContinuationOptions* options) {
+  const PhysicalBounds b = PhysicalBoundsOf(parts, parts.parameter);
+  if (b.min > options->lambda_min) {
+    options->lambda_min = b.min;
+    options->lambda_min_reason = b.min_reason;
+  }
+  if (b.max < options->lambda_max) {
+    options->lambda_max = b.max;
+    options->lambda_max_reason = b.max_reason;
+  }
+}
+
+// A curve's released parameters end it at their bounds of the physics (EP): past them no orbit is
+// a motion. A released kinetic level ends it at its zero, by the sliding-friction margin (a domain
+// boundary), not at its range's minimum.
 void BoundReleasedParameters(const OrbitContinuationParts& parts, ContinuationOptions* options) {
-  const OrbitLayout& layout = parts.variables.layout;
-  const std::vector<ParameterDescription>& ranges = parts.system->description().parameters;
-  const int kinetic = parts.variables.kinetic_level, static_level = parts.variables.static_level;
-  const auto held = [&parts](int variable) {
-    return variable != parts.parameter && std::find(parts.free.begin(), parts.free.end(), variable) == parts.free.end();
-  };
   for (std::size_t i = 0; i < parts.free.size(); ++i) {
     const int variable = parts.free[i];
-    for (std::size_t k = 0; k < ranges.size(); ++k) {
-      if (variable != layout.Parameter(static_cast<int>(k))) continue;
-      UnknownBound bound{.index = static_cast<int>(i), .min = ranges[k].minimum, .max = ranges[k].maximum,
-                         .name = ranges[k].name};
-      if (variable == kinetic) {
-        bound.min = -std::numeric_limits<double>::infinity();
-        if (held(static_level) && !parts.tie_static_friction) bound.max = std::min(bound.max, parts.start(static_level));
-      }
-      if (variable == static_level && held(kinetic)) bound.min = std::max(bound.min, parts.start(kinetic));
-      if (std::isfinite(bound.min) || std::isfinite(bound.max)) options->unknown_bounds.push_back(std::move(bound));
+    PhysicalBounds b = PhysicalBoundsOf(parts, variable);
+    if (variable == parts.variables.kinetic_level) b.min = -std::numeric_limits<double>::infinity();
+    if (std::isfinite(b.min) || std::isfinite(b.max)) {
+      options->unknown_bounds.push_back({.index = static_cast<int>(i), .min = b.min, .max = b.max,
+                                         .name = parts.variables.layout.Name(variable)});
     }
   }
 }
