@@ -67,20 +67,26 @@ void CheckCorners(const MapRectangle& r, const Parameters& base) {
   }
 }
 
-int RunMap(const MapArgs& args, const CLI::App& cmd) {
-  for (const char* option : {"trace", "second", "second-from", "second-to", "output"}) {
-    if (cmd.count(fmt::format("--{}", option)) == 0) {
-      throw InvalidInput(option, "(not given)", fmt::format("--{} is required", option));
+// A [model]'s corners: each with the trace's other parameters valid for the model.
+void CheckCorners(const MapRectangle& r, const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base) {
+  const ModelDescription& d = model.Description();
+  const int first = *d.ParameterIndex(r.first), second = *d.ParameterIndex(r.second);
+  for (double a : {r.first_min, r.first_max}) {
+    for (double b : {r.second_min, r.second_max}) {
+      DynamicLinearOscillator::Parameters p = base;
+      DynamicLinearOscillator::ParameterAt(p, first) = a;
+      DynamicLinearOscillator::ParameterAt(p, second) = b;
+      if (const std::optional<InvalidInput> error = model.Validate(p)) {
+        const bool is_first = error->field() == r.first;
+        throw InvalidInput(is_first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
+                           is_first ? a : b, fmt::format("a valid {}: {}", error->field(), error->valid_range()));
+      }
     }
   }
-  if (!IsTraceDirectory(args.trace)) throw InvalidInput("trace", "'" + args.trace + "'", "a trace's directory (stickslip trace: trace.json)");
-  CheckOrbitTypeMapDirectory(args.output);
-  const StoredTrace trace = ReadTraceFiles(args.trace);
-  if (!ParameterFromString(trace.parameter) || trace.runs.empty() || trace.runs.front().branch.empty()) {
-    throw InvalidInput("trace", "'" + args.trace + "'",
-                       fmt::format("a trace with points in a parameter: chi, eta, omega, u_s, u_r (it has {} in '{}')",
-                                   trace.points.size(), trace.parameter));
-  }
+}
+
+// The rectangle: the trace's parameter over its range (or --first-from/--first-to), the second's as given.
+MapRectangle RectangleOf(const MapArgs& args, const CLI::App& cmd, const StoredTrace& trace) {
   MapRectangle r{.first = trace.parameter, .second = args.second, .second_min = args.second_from, .second_max = args.second_to};
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const StoredTracePoint& p : trace.points) {
@@ -89,47 +95,38 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   }
   r.first_min = cmd.count("--first-from") ? args.first_from : lo;
   r.first_max = cmd.count("--first-to") ? args.first_to : hi;
-  const std::optional<ParameterId> second = ParameterFromString(args.second);
-  if (!second || args.second == trace.parameter) {
-    throw InvalidInput("second", "'" + args.second + "'", fmt::format("a parameter other than the trace's {}: chi, eta, omega, u_s, u_r", trace.parameter));
-  }
+  return r;
+}
+
+void CheckOrder(const MapRectangle& r) {
   if (!(r.first_min < r.first_max)) throw InvalidInput("first-from", r.first_min, fmt::format("< first-to ({})", r.first_max));
   if (!(r.second_min < r.second_max)) throw InvalidInput("second-from", r.second_min, fmt::format("< second-to ({})", r.second_max));
-  CheckCorners(r, OrbitOf(trace.runs.front(), trace.runs.front().branch.front()).parameters);
-  std::optional<BruteForceMap> brute;
-  if (cmd.count("--brute-force") > 0) {  // "" too: no file
-    brute = ReadBruteForceMapCsv(ReadWholeFile(args.brute_force, "brute-force", "a map file of stickslip map-sweep"), args.brute_force);
-    try {
-      CheckComparable(*brute, r);
-    } catch (const InvalidInput& e) {
-      throw InvalidInput("brute-force", fmt::format("'{}' ({})", args.brute_force, e.value()), e.valid_range());
-    }
-  }
-  std::optional<RunFile> run;
+}
+
+// The run file the trace was made from, for its unknowns and step sizes; none where it cannot be
+// read (noted once the map is computed: bad input found on the way stays the one line on stderr).
+std::optional<RunFile> TraceRunFile(const StoredTrace& trace) {
   try {
-    run = ReadRunFile(trace.run_file);
+    return ReadRunFile(trace.run_file);
   } catch (const std::exception&) {
-    // Noted once the map is computed: bad input found on the way stays the one line on stderr.
+    return std::nullopt;
   }
-  OrbitTypeMapOptions options;
-  options.raster = args.raster;
-  options.min_region = args.min_region;
-  ProgressLine line("map");
-  options.progress = line.Callback();
-  const auto started = std::chrono::steady_clock::now();
-  const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
-  const OrbitTypeMap map = BuildOrbitTypeMap(input, r, options);
-  line.Clear();
-  if (!run) fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", trace.run_file);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::optional<MapComparison> comparison;
-  if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);
-  const OrbitTypeMapFiles files = FormatOrbitTypeMapFiles(map, args.trace, comparison ? &*comparison : nullptr, args.brute_force);
-  const std::vector<std::string> kept = WriteOrbitTypeMapFiles(args.output, map, files);
+}
+
+// The map's report, for either model: its counts, the regions' labels, the comparison's, and the
+// curves that failed (exit 3: the map is written all the same).
+template <OscillatorModel Model>
+int Report(const MapArgs& args, const BasicOrbitTypeMap<Model>& map, const OrbitTypeMapFiles& files, double seconds,
+           const MapComparison* comparison, const std::string& unread_run_file) {
+  const MapRectangle& r = map.rectangle;
+  const std::vector<std::string> kept = WriteOrbitTypeMapFiles(args.output, files);
+  if (!unread_run_file.empty()) {
+    fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", unread_run_file);
+  }
   fmt::print("map {} x {} from {}: {} curve(s), {} start(s) skipped, {} region(s) in {:.2f} s; written to {}\n", r.first, r.second,
              args.trace, map.curves.size(), map.skipped.size(), map.regions.size(), seconds, args.output);
   if (!kept.empty()) fmt::print("{}: kept {} other file(s): {}\n", args.output, kept.size(), fmt::join(kept, ", "));
-  for (const MapRegion& region : map.regions) {
+  for (const BasicMapRegion<Model>& region : map.regions) {
     fmt::print("  region {} ({} cells) at ({}, {}) = ({:.6g}, {:.6g}): {}\n", region.id, region.cells, r.first, r.second, region.first,
                region.second, region.Label());
   }
@@ -142,13 +139,94 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
   // A curve whose start did not converge, or whose step fell below ds_min, is a failure of the
   // computation (the map is written all the same); its end elsewhere is the curve's.
   int failed = 0;
-  for (const MapCurve& c : map.curves) {
+  for (const BasicMapCurve<Model>& c : map.curves) {
     const BranchEnd end = c.branch.branch.end;
     if (end != BranchEnd::kStartFailed && end != BranchEnd::kStepTooSmall) continue;
     ++failed;
     fmt::print(stderr, "curve {} ({} from {}): {}: {}\n", c.id, c.kind, c.from, ToString(end), c.branch.branch.end_message);
   }
   return failed > 0 ? kExitNoConvergence : kExitOk;
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point started) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+// A [model]'s trace: its parameters by the model's names, in its units.
+int RunModelMap(const MapArgs& args, const CLI::App& cmd, const StoredTrace& trace) {
+  if (cmd.count("--brute-force") > 0) {
+    throw InvalidInput("brute-force", "'" + args.brute_force + "'",
+                       "no comparison for a [model]'s trace yet (the paper's model's maps only): leave it out");
+  }
+  const std::optional<RunFile> run = TraceRunFile(trace);
+  const BasicMapTrace<DynamicLinearOscillator> input = ModelMapTraceOf(trace, args.trace, run ? &*run : nullptr, args.second);
+  const ModelDescription& d = input.model.Description();
+  const int first = d.VariedParameter("trace", trace.parameter, input.model.Autonomous());
+  const int second = d.VariedParameter("second", args.second, input.model.Autonomous());
+  if (second == first) throw InvalidInput("second", "'" + args.second + "'", fmt::format("a parameter other than the trace's {}", trace.parameter));
+  const MapRectangle r = RectangleOf(args, cmd, trace);
+  CheckOrder(r);
+  if (input.branches.empty()) throw InvalidInput("trace", "'" + args.trace + "'", "a trace with points");
+  CheckCorners(r, input.model, input.branches.front().orbits.front().parameters);
+  OrbitTypeMapOptions options{.raster = args.raster, .min_region = args.min_region};
+  ProgressLine line("map");
+  options.progress = line.Callback();
+  const auto started = std::chrono::steady_clock::now();
+  const BasicOrbitTypeMap<DynamicLinearOscillator> map = BuildOrbitTypeMap(input, r, options);
+  line.Clear();
+  const double seconds = SecondsSince(started);
+  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr,
+                run ? "" : trace.run_file);
+}
+
+int RunMap(const MapArgs& args, const CLI::App& cmd) {
+  for (const char* option : {"trace", "second", "second-from", "second-to", "output"}) {
+    if (cmd.count(fmt::format("--{}", option)) == 0) {
+      throw InvalidInput(option, "(not given)", fmt::format("--{} is required", option));
+    }
+  }
+  if (!IsTraceDirectory(args.trace)) throw InvalidInput("trace", "'" + args.trace + "'", "a trace's directory (stickslip trace: trace.json)");
+  CheckOrbitTypeMapDirectory(args.output);
+  const StoredTrace trace = ReadTraceFiles(args.trace);
+  if (trace.runs.empty() || trace.runs.front().branch.empty()) {
+    throw InvalidInput("trace", "'" + args.trace + "'", fmt::format("a trace with points (it has {})", trace.points.size()));
+  }
+  if (!trace.model.empty()) return RunModelMap(args, cmd, trace);
+  if (!ParameterFromString(trace.parameter)) {
+    throw InvalidInput("trace", "'" + args.trace + "'",
+                       fmt::format("a trace in a parameter: chi, eta, omega, u_s, u_r (it has '{}')", trace.parameter));
+  }
+  const MapRectangle r = RectangleOf(args, cmd, trace);
+  const std::optional<ParameterId> second = ParameterFromString(args.second);
+  if (!second || args.second == trace.parameter) {
+    throw InvalidInput("second", "'" + args.second + "'", fmt::format("a parameter other than the trace's {}: chi, eta, omega, u_s, u_r", trace.parameter));
+  }
+  CheckOrder(r);
+  CheckCorners(r, OrbitOf(trace.runs.front(), trace.runs.front().branch.front()).parameters);
+  std::optional<BruteForceMap> brute;
+  if (cmd.count("--brute-force") > 0) {  // "" too: no file
+    brute = ReadBruteForceMapCsv(ReadWholeFile(args.brute_force, "brute-force", "a map file of stickslip map-sweep"), args.brute_force);
+    try {
+      CheckComparable(*brute, r);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("brute-force", fmt::format("'{}' ({})", args.brute_force, e.value()), e.valid_range());
+    }
+  }
+  const std::optional<RunFile> run = TraceRunFile(trace);
+  OrbitTypeMapOptions options;
+  options.raster = args.raster;
+  options.min_region = args.min_region;
+  ProgressLine line("map");
+  options.progress = line.Callback();
+  const auto started = std::chrono::steady_clock::now();
+  const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
+  const OrbitTypeMap map = BuildOrbitTypeMap(input, r, options);
+  line.Clear();
+  const double seconds = SecondsSince(started);
+  std::optional<MapComparison> comparison;
+  if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);
+  const OrbitTypeMapFiles files = FormatOrbitTypeMapFiles(map, args.trace, comparison ? &*comparison : nullptr, args.brute_force);
+  return Report(args, map, files, seconds, comparison ? &*comparison : nullptr, run ? "" : trace.run_file);
 }
 
 }  // namespace
@@ -163,13 +241,17 @@ Command AddMapCommand(CLI::App& app) {
       "cut by them into regions, and in each region every orbit of the trace at one interior point (admissible "
       "or not, stable or not). With --brute-force, the comparison with a map of stickslip map-sweep over the same "
       "parameters. Writes --output/: curves.csv, curve-<k>/ (each curve as a run: restart from its labels with "
-      "--results OUTPUT), regions.json, comparison.md. Parameters are the paper's scaled ones. Exit 0 when written; "
+      "--results OUTPUT), regions.json, comparison.md. Parameters are the trace's model's: the paper's scaled ones, or a "
+      "[model]'s by its names in its units (its curves' runs name its run file; no --brute-force yet). Exit 0 when written; "
       "2 for bad input (nothing written); 3 when a curve's start did not converge or its step fell below ds_min "
       "(the map is written, the curve named on stderr).");
   cmd->add_option("--trace", args->trace, "the trace's directory (results/<trace>/, with trace.json)");
-  cmd->add_option("--second", args->second, "the second parameter: chi, eta, omega, u_s or u_r, not the trace's");
+  cmd->add_option("--second", args->second,
+                  "the second parameter, not the trace's: chi, eta, omega, u_s or u_r for the paper's model; a [model]'s "
+                  "omega (with forcing), F_k, F_s or v_b");
   AddNumberOption(*cmd, "--second-from", &args->second_from, "the parameter's valid range, < second-to",
-                  "the second parameter's lower bound (scaled; its valid range: chi in (0, 1), eta > 0, ...)");
+                  "the second parameter's lower bound (the paper's scaled, a [model]'s in its units; its valid "
+                  "range: chi in (0, 1), eta > 0, F_s >= F_k, ...)");
   AddNumberOption(*cmd, "--second-to", &args->second_to, "the parameter's valid range", "its upper bound");
   AddNumberOption(*cmd, "--first-from", &args->first_from, "the parameter's valid range, < first-to",
                   "the trace's parameter's lower bound (default: the trace's smallest value)");

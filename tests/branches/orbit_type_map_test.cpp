@@ -1,16 +1,22 @@
 // The geometry of orbit-type maps on known arrangements of curves (CutIntoRegions), the options'
-// and the rectangle's validation, and the bound the regions' content is continued under.
+// and the rectangle's validation, the bound the regions' content is continued under, and a map of
+// a user's model (Den Hartog's oscillator) against its closed form.
 #include "stickslip/branches/orbit_type_map.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "stickslip/branches/trace.hpp"
 #include "stickslip/invalid_input.hpp"
 #include "stickslip/io/orbit_type_map_files.hpp"
 #include "stickslip/io/run_file.hpp"
 #include "stickslip/io/trace_files.hpp"
+#include "support/den_hartog_oscillator.hpp"
+#include "support/den_hartog_orbit.hpp"
 
 namespace stickslip {
 namespace {
@@ -93,14 +99,14 @@ TEST(OrbitTypeMapOptions, RejectOutOfRangeValuesNamingTheField) {
   MapRectangle r = kUnit;
   r.second_max = 1e300 * 1e300;
   try {
-    r.Validate();
+    r.Validate(Pascal2014{}.Description(), false);
     FAIL();
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.field(), "second_min");
   }
   r = kUnit;
   r.second = "omega";
-  EXPECT_THROW(r.Validate(), InvalidInput);
+  EXPECT_THROW(r.Validate(Pascal2014{}.Description(), false), InvalidInput);
 }
 
 // The map continues the trace's orbits with the trace's bound on the amplitude (a resonance ends a
@@ -130,6 +136,78 @@ TEST(OrbitsAt, ContinuesTheTracesOrbitsUnderTheTracesMaxAmplitude) {
   EXPECT_TRUE(region.Label().starts_with("unknown: no periodic motion found")) << region.Label();
   region.failures.clear();
   EXPECT_EQ(region.Label(), "no periodic motion");
+}
+
+// A trace's branches and special points as the map's input, each branch's unknowns its type's at
+// fixed parameters: what io/orbit_type_map_files.hpp reads back from a stored trace.
+BasicMapTrace<DynamicLinearOscillator> MapTraceOfTrace(const DynamicLinearOscillator& model,
+                                                       const BasicTraceResult<DynamicLinearOscillator>& trace) {
+  BasicMapTrace<DynamicLinearOscillator> map{.parameter = trace.parameter, .options = {}, .shooting = ShootingChoice::kAuto,
+                                             .max_amplitude = kDefaultMaxAmplitude, .branches = {}, .model = model};
+  for (const BasicTraceDirection<DynamicLinearOscillator>* chain : {&trace.down, &trace.up}) {
+    for (const BasicTraceLink<DynamicLinearOscillator>& link : chain->links) {
+      const auto& orbits = link.branch.orbits;
+      BasicMapTraceBranch<DynamicLinearOscillator> b{fmt::format("branch-{}", map.branches.size() + 1),
+                                                     UnknownsAtFixedParameters(VariableSetOf(model, orbits.front().signature)),
+                                                     orbits, {}};
+      for (const SpecialPoint& p : link.branch.branch.special_points) {
+        b.special.push_back({b.name, p.type, p.type, p.test_function, orbits[p.point]});
+      }
+      map.branches.push_back(std::move(b));
+    }
+  }
+  return map;
+}
+
+// Den Hartog's oscillator (k = m = 1, forcing amplitude 1) with the kinetic level beta = 0.2 and
+// the static level F_s free: its non-sticking orbit does not depend on F_s, and its turning points
+// stick where the force that holds the mass there, r^2 X(r, beta) (Den Hartog's amplitude X; the
+// relation his beta* = |V| / sqrt(U^2 + 1/r^4) solves for F_s = beta), is at most F_s. The map in
+// (omega, F_s) from a trace in omega at F_s = 0.5 must cut the rectangle along F_s = r^2 X(r, 0.2)
+// alone, the non-sticking orbit stable below that curve and not admissible above it.
+TEST(ModelOrbitTypeMap, CutsDenHartogsRectangleAlongTheClosedFormStickBoundary) {
+  const double beta = 0.2, r0 = 0.7;
+  const DynamicLinearOscillator model(DenHartogData());
+  const DenHartogOrbit start(r0, beta);
+  Eigen::VectorXd state(2);
+  state << start.amplitude, 0.0;
+  BasicOrbitContinuationSetup<DynamicLinearOscillator> setup{
+      {Signature::Parse("slip- / antisymmetric"), {r0, beta, 0.5, 0.0}, state, start.phi, {start.Period() / 2}},
+      {}, "omega", ShootingChoice::kAuto, LinearSolverType::kKlu, {}, {}, {}, {}, kDefaultMaxAmplitude,
+      kDefaultResonanceApproach, model};
+  setup.unknowns = UnknownsAtFixedParameters(VariableSetOf(model, setup.start.signature));
+  setup.options.lambda_min = 0.55;  // away from the degenerate r = 1/2
+  setup.options.lambda_max = 0.8;
+  const BasicMapTrace<DynamicLinearOscillator> trace = MapTraceOfTrace(model, TraceOrbits(setup));
+  const MapRectangle rectangle{.first = "omega", .second = "F_s", .first_min = 0.55, .first_max = 0.8, .second_min = 0.25,
+                               .second_max = 0.8};
+  const BasicOrbitTypeMap<DynamicLinearOscillator> map = BuildOrbitTypeMap(trace, rectangle);
+  ASSERT_FALSE(map.curves.empty());
+  double worst = 0.0;
+  for (const BasicMapCurve<DynamicLinearOscillator>& curve : map.curves) {
+    ASSERT_GT(curve.first.size(), 5u) << curve.kind << ": " << curve.branch.branch.end_message;
+    for (std::size_t k = 0; k < curve.first.size(); ++k) {
+      const double r = curve.first[k];
+      const double holding = r * r * DenHartogOrbit(r, beta).amplitude;
+      EXPECT_NEAR(curve.second[k], holding, 1e-9) << curve.kind << " at r = " << r;
+      worst = std::max(worst, std::abs(curve.second[k] - holding));
+    }
+  }
+  RecordProperty("worst_boundary_difference", fmt::format("{:.3g}", worst));
+  ASSERT_EQ(map.regions.size(), 2u);
+  for (const BasicMapRegion<DynamicLinearOscillator>& region : map.regions) {
+    const double holding = region.first * region.first * DenHartogOrbit(region.first, beta).amplitude;
+    const bool sticks = region.second > holding;
+    const auto non_sticking = std::find_if(region.orbits.begin(), region.orbits.end(), [](const auto& o) {
+      return o.orbit.signature.size() == 1;  // a slip from stop to stop: no stick
+    });
+    ASSERT_NE(non_sticking, region.orbits.end()) << region.Label();
+    EXPECT_EQ(non_sticking->admissible, !sticks) << region.Label();
+    if (!sticks) {
+      EXPECT_TRUE(non_sticking->stable) << region.Label();
+      EXPECT_NEAR(non_sticking->orbit.start.cwiseAbs().maxCoeff(), DenHartogOrbit(region.first, beta).amplitude, 1e-9);
+    }
+  }
 }
 
 TEST(CurveCondition, IsTheMarginOfATypeChangeAndTheTypeOtherwise) {

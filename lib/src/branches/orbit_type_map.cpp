@@ -15,16 +15,31 @@
 
 namespace stickslip {
 
-namespace ov = orbit_variables;
 
 namespace {
 
-double ValueOf(const Orbit& orbit, const std::string& name) {
-  return orbit.parameters[*ParameterFromString(name)];
+// The value of the parameter named `name` (one the model varies, MapRectangle::Validate).
+template <OscillatorModel Model>
+double ValueOf(const Model& model, const OrbitOfModel<Model>& orbit, const std::string& name) {
+  if constexpr (std::is_same_v<Model, Pascal2014>) {
+    return orbit.parameters[*ParameterFromString(name)];
+  } else {
+    return Model::ParameterAt(orbit.parameters, *model.Description().ParameterIndex(name));
+  }
+}
+
+template <OscillatorModel Model>
+double Distance(const Model& model, const OrbitOfModel<Model>& a, const OrbitOfModel<Model>& b) {
+  if constexpr (std::is_same_v<Model, Pascal2014>) {
+    return OrbitDistance(a, b);
+  } else {
+    return OrbitDistance(model, a, b);
+  }
 }
 
 // A column's value at a point, by name; NaN where the branch has no such column.
-double Column(const OrbitBranch& branch, std::size_t point, std::string_view name) {
+template <OscillatorModel Model>
+double Column(const BasicOrbitBranch<Model>& branch, std::size_t point, std::string_view name) {
   for (const PointColumn& c : branch.columns) {
     if (c.name != name) continue;
     const BranchPoint& p = branch.branch.points[point];
@@ -34,7 +49,8 @@ double Column(const OrbitBranch& branch, std::size_t point, std::string_view nam
 }
 
 // Every margin positive (or undefined) but the ones in `defining`.
-bool AdmissibleApartFrom(const OrbitBranch& branch, std::size_t point, const std::vector<std::string>& defining) {
+template <OscillatorModel Model>
+bool AdmissibleApartFrom(const BasicOrbitBranch<Model>& branch, std::size_t point, const std::vector<std::string>& defining) {
   for (const PointColumn& c : branch.columns) {
     if (!c.name.starts_with(orbit_columns::kMarginPrefix)) continue;
     if (std::find(defining.begin(), defining.end(), c.name) != defining.end()) continue;
@@ -45,24 +61,28 @@ bool AdmissibleApartFrom(const OrbitBranch& branch, std::size_t point, const std
 }
 
 // The position of `name` among the continued unknowns of `setup` (its free variables, in order).
-int UnknownPosition(const OrbitContinuationSetup& setup, const std::string& name) {
-  const std::vector<int> free = FreeIndices(setup.start.signature, setup.unknowns);
-  const int index = *ov::IndexOf(setup.start.signature.size(), name);
+template <OscillatorModel Model>
+int UnknownPosition(const BasicOrbitContinuationSetup<Model>& setup, const std::string& name) {
+  const OrbitVariableSet variables = VariableSetOf(setup.model, setup.start.signature);
+  const std::vector<int> free = FreeIndices(variables, setup.unknowns);
+  const int index = *variables.layout.IndexOf(name);
   return static_cast<int>(std::find(free.begin(), free.end(), index) - free.begin());
 }
 
 // A continuation from `orbit` in `parameter` with the trace's options.
-OrbitContinuationSetup SetupAt(const MapTrace& trace, const Orbit& orbit, const UnknownChoice& unknowns,
-                               const std::string& parameter) {
-  OrbitContinuationSetup setup{orbit, unknowns, parameter, trace.shooting, LinearSolverType::kKlu, trace.options, {}, {}, {}};
-  setup.max_amplitude = trace.max_amplitude;
-  return setup;
+template <OscillatorModel Model>
+BasicOrbitContinuationSetup<Model> SetupAt(const BasicMapTrace<Model>& trace, const OrbitOfModel<Model>& orbit,
+                                           const UnknownChoice& unknowns, const std::string& parameter) {
+  return BasicOrbitContinuationSetup<Model>{orbit,         unknowns, parameter,           trace.shooting,
+                                            LinearSolverType::kKlu, trace.options, {}, {}, {},
+                                            trace.max_amplitude,    kDefaultResonanceApproach, trace.model};
 }
 
 // The progress steps of the curves: two per special point of the trace (both ways).
-int StartSteps(const MapTrace& trace) {
+template <OscillatorModel Model>
+int StartSteps(const BasicMapTrace<Model>& trace) {
   int total = 0;
-  for (const MapTraceBranch& b : trace.branches) total += 2 * static_cast<int>(b.special.size());
+  for (const BasicMapTraceBranch<Model>& b : trace.branches) total += 2 * static_cast<int>(b.special.size());
   return total;
 }
 
@@ -71,15 +91,17 @@ void Report(const OrbitTypeMapOptions& options, double done, double total, const
 }
 
 // The branch of a continuation to a target value of its parameter, or why it did not get there.
+template <OscillatorModel Model>
 struct Reached {
-  std::optional<OrbitBranch> branch;  // ending exactly on the target
+  std::optional<BasicOrbitBranch<Model>> branch;  // ending exactly on the target
   std::string why;
 };
 
 // The branch of `setup` from its start to `target` of its parameter, ending exactly there (the
 // range's bound).
-Reached ContinueTo(OrbitContinuationSetup setup, double target, int max_points) {
-  const double from = ValueOf(setup.start, setup.parameter);
+template <OscillatorModel Model>
+Reached<Model> ContinueTo(BasicOrbitContinuationSetup<Model> setup, double target, int max_points) {
+  const double from = ValueOf(setup.model, setup.start, setup.parameter);
   if (from == target) {
     setup.options.max_points = 1;
     setup.options.lambda_min = -std::numeric_limits<double>::infinity();
@@ -96,7 +118,7 @@ Reached ContinueTo(OrbitContinuationSetup setup, double target, int max_points) 
   setup.options.detect_folds = false;
   setup.options.detect_branch_points = false;
   setup.options.progress = {};
-  OrbitBranch branch = ContinueOrbit(setup);
+  BasicOrbitBranch<Model> branch = ContinueOrbit(setup);
   // The engine puts the last point on the bound to rounding (ContinuationOptions::bound_tolerance).
   if (branch.branch.points.empty() ||
       !(std::abs(branch.branch.points.back().lambda - target) <= 1e-12 * (1.0 + std::abs(target)))) {
@@ -108,14 +130,15 @@ Reached ContinueTo(OrbitContinuationSetup setup, double target, int max_points) 
 
 // The trace must pass through the rectangle, at a value of the second parameter it holds: the
 // curves start at its special points there, the regions' orbits are continued from its points.
-void CheckTraceInRectangle(const MapTrace& trace, const MapRectangle& r) {
+template <OscillatorModel Model>
+void CheckTraceInRectangle(const BasicMapTrace<Model>& trace, const MapRectangle& r) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   std::optional<double> held;
-  for (const MapTraceBranch& b : trace.branches) {
-    for (const Orbit& o : b.orbits) {
-      lo = std::min(lo, ValueOf(o, r.first));
-      hi = std::max(hi, ValueOf(o, r.first));
-      const double second = ValueOf(o, r.second);
+  for (const BasicMapTraceBranch<Model>& b : trace.branches) {
+    for (const OrbitOfModel<Model>& o : b.orbits) {
+      lo = std::min(lo, ValueOf(trace.model, o, r.first));
+      hi = std::max(hi, ValueOf(trace.model, o, r.first));
+      const double second = ValueOf(trace.model, o, r.second);
       if (!held) held = second;
       if (second != *held) {
         throw InvalidInput("second", r.second, fmt::format("a parameter the trace holds (its {} runs from {} to {} on {})",
@@ -134,11 +157,14 @@ void CheckTraceInRectangle(const MapTrace& trace, const MapRectangle& r) {
 
 }  // namespace
 
-void MapRectangle::Validate() const {
-  const std::optional<ParameterId> a = ParameterFromString(first);
-  if (!a) throw InvalidInput("first", first, "a parameter: chi, eta, omega, u_s, u_r");
-  const std::optional<ParameterId> b = ParameterFromString(second);
-  if (!b || *b == *a) throw InvalidInput("second", second, fmt::format("a parameter other than {}: chi, eta, omega, u_s, u_r", first));
+void MapRectangle::Validate(const ModelDescription& model, bool autonomous) const {
+  model.VariedParameter("first", first, autonomous);
+  if (second == first) throw InvalidInput("second", "'" + second + "'", fmt::format("a parameter other than {}", first));
+  model.VariedParameter("second", second, autonomous);
+  ValidateBounds();
+}
+
+void MapRectangle::ValidateBounds() const {
   if (!(std::isfinite(first_min) && std::isfinite(first_max) && first_min < first_max)) {
     throw InvalidInput("first_min", first_min, fmt::format("finite, < first_max ({})", first_max));
   }
@@ -160,9 +186,10 @@ void OrbitTypeMapOptions::Validate() const {
   if (!(same_orbit >= 0.0 && same_orbit <= 1.0)) throw InvalidInput("same_orbit", same_orbit, "0 <= same_orbit <= 1");
 }
 
-std::string MapRegion::Label() const {
+template <OscillatorModel Model>
+std::string BasicMapRegion<Model>::Label() const {
   std::vector<std::string> parts;
-  for (const MapOrbit& o : orbits) {
+  for (const BasicMapOrbit<Model>& o : orbits) {
     if (o.admissible) parts.push_back(fmt::format("{} ({})", o.signature, o.stable ? "stable" : "unstable"));
   }
   std::sort(parts.begin(), parts.end());
@@ -175,15 +202,17 @@ std::string MapRegion::Label() const {
   return fmt::format("{}", fmt::join(parts, "; ")) + incomplete;
 }
 
-std::vector<std::string> MapRegion::StableTypes() const {
+template <OscillatorModel Model>
+std::vector<std::string> BasicMapRegion<Model>::StableTypes() const {
   std::set<std::string> types;
-  for (const MapOrbit& o : orbits) {
+  for (const BasicMapOrbit<Model>& o : orbits) {
     if (o.admissible && o.stable) types.insert(o.signature);
   }
   return {types.begin(), types.end()};
 }
 
-int OrbitTypeMap::RegionAt(double first, double second) const {
+template <OscillatorModel Model>
+int BasicOrbitTypeMap<Model>::RegionAt(double first, double second) const {
   const MapRectangle& r = rectangle;
   const int n = options.raster;
   const double u = (first - r.first_min) / (r.first_max - r.first_min);
@@ -194,11 +223,14 @@ int OrbitTypeMap::RegionAt(double first, double second) const {
   return cells[static_cast<std::size_t>(j) * n + i];
 }
 
-OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std::vector<std::pair<double, double>>>& polylines,
-                            const OrbitTypeMapOptions& options) {
-  rectangle.Validate();
+template <OscillatorModel Model>
+BasicOrbitTypeMap<Model> CutIntoRegions(const MapRectangle& rectangle,
+                                        const std::vector<std::vector<std::pair<double, double>>>& polylines,
+                                        const OrbitTypeMapOptions& options) {
+  using Map = BasicOrbitTypeMap<Model>;
+  rectangle.ValidateBounds();
   options.Validate();
-  OrbitTypeMap map;
+  Map map;
   map.rectangle = rectangle;
   map.options = options;
   map.options.progress = {};
@@ -208,7 +240,7 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
   const double w = rectangle.first_max - rectangle.first_min, h = rectangle.second_max - rectangle.second_min;
   const auto mark = [&](double u, double v) {
     if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return;
-    cells[at(std::min(n - 1, static_cast<int>(u * n)), std::min(n - 1, static_cast<int>(v * n)))] = OrbitTypeMap::kCut;
+    cells[at(std::min(n - 1, static_cast<int>(u * n)), std::min(n - 1, static_cast<int>(v * n)))] = Map::kCut;
   };
   for (const auto& line : polylines) {
     for (std::size_t k = 0; k < line.size(); ++k) {
@@ -230,7 +262,7 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
   std::vector<int> distance(cells.size());
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      distance[at(i, j)] = cells[at(i, j)] == OrbitTypeMap::kCut ? 0 : std::min({i + 1, j + 1, n - i, n - j});
+      distance[at(i, j)] = cells[at(i, j)] == Map::kCut ? 0 : std::min({i + 1, j + 1, n - i, n - j});
     }
   }
   for (int pass = 0; pass < 2; ++pass) {
@@ -250,7 +282,7 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
   std::vector<int> component(cells.size(), -1);
   std::vector<std::vector<int>> members;
   for (int start = 0; start < n * n; ++start) {
-    if (cells[start] == OrbitTypeMap::kCut || component[start] >= 0) continue;
+    if (cells[start] == Map::kCut || component[start] >= 0) continue;
     const int c = static_cast<int>(members.size());
     members.emplace_back();
     std::deque<int> queue{start};
@@ -264,20 +296,20 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
         const int ii = i + di, jj = j + dj;
         if (ii < 0 || jj < 0 || ii >= n || jj >= n) continue;
         const int next = static_cast<int>(at(ii, jj));
-        if (cells[next] == OrbitTypeMap::kCut || component[next] >= 0) continue;
+        if (cells[next] == Map::kCut || component[next] >= 0) continue;
         component[next] = c;
         queue.push_back(next);
       }
     }
   }
-  map.cells.assign(cells.size(), OrbitTypeMap::kCut);
+  map.cells.assign(cells.size(), Map::kCut);
   const double smallest = options.min_region * n * n;
   for (const std::vector<int>& cs : members) {
     if (static_cast<double>(cs.size()) < smallest || cs.empty()) {
-      for (int index : cs) map.cells[index] = OrbitTypeMap::kSliver;
+      for (int index : cs) map.cells[index] = Map::kSliver;
       continue;
     }
-    MapRegion region;
+    BasicMapRegion<Model> region;
     region.id = static_cast<int>(map.regions.size()) + 1;
     region.cells = static_cast<int>(cs.size());
     int best = *std::min_element(cs.begin(), cs.end());
@@ -296,41 +328,45 @@ OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std
 namespace {
 
 // The curves through the trace's special points (both ways each), and the points refused.
+template <OscillatorModel Model>
 struct ContinuedCurves {
-  std::vector<MapCurve> curves;
+  std::vector<BasicMapCurve<Model>> curves;
   std::vector<MapSkippedStart> skipped;
 };
-ContinuedCurves ContinueCurves(const MapTrace& trace, const MapRectangle& r, const OrbitTypeMapOptions& options) {
-  ContinuedCurves continued;
-  std::vector<std::pair<std::string, Orbit>> started;  // (condition, orbit): a point met twice is one start
+template <OscillatorModel Model>
+ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const MapRectangle& r,
+                                      const OrbitTypeMapOptions& options) {
+  ContinuedCurves<Model> continued;
+  std::vector<std::pair<std::string, OrbitOfModel<Model>>> started;  // (condition, orbit): a point met twice is one start
   const int total = StartSteps(trace);
   int done = 0;
-  for (const MapTraceBranch& b : trace.branches) {
-    for (const MapStartPoint& p : b.special) {
+  for (const BasicMapTraceBranch<Model>& b : trace.branches) {
+    for (const BasicMapStartPoint<Model>& p : b.special) {
       done += 2;
       if (p.type == "EP" || p.type == "UZ") continue;  // the ends of a branch, user values: no condition
       const std::string from = fmt::format("{}:{}", b.name, p.label);
       const std::string condition = CurveCondition(p.type, p.test_function);
       const bool again = std::any_of(started.begin(), started.end(), [&](const auto& s) {
-        return s.first == condition && OrbitDistance(s.second, p.orbit) <= options.same_orbit;
+        return s.first == condition && Distance(trace.model, s.second, p.orbit) <= options.same_orbit;
       });
       if (again) continue;
       started.emplace_back(condition, p.orbit);
-      const double second = ValueOf(p.orbit, r.second), first = ValueOf(p.orbit, r.first);
+      const double second = ValueOf(trace.model, p.orbit, r.second), first = ValueOf(trace.model, p.orbit, r.first);
       if (!(second >= r.second_min && second <= r.second_max && first >= r.first_min && first <= r.first_max)) {
         continued.skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {}, {} = {})", r.first, first, r.second, second)});
         continue;
       }
-      const OrbitContinuationSetup branch_setup = SetupAt(trace, p.orbit, b.unknowns, trace.parameter);
-      std::optional<OrbitContinuationSetup> made;
+      const BasicOrbitContinuationSetup<Model> branch_setup = SetupAt(trace, p.orbit, b.unknowns, trace.parameter);
+      std::optional<BasicOrbitContinuationSetup<Model>> made;
       try {
-        made = BoundaryCurve({.orbit = p.orbit, .condition = condition, .parameter = trace.parameter, .unknowns = b.unknowns},
-                              branch_setup, r.second);
+        made = BoundaryCurve(BasicCurveStart<Model>{.orbit = p.orbit, .condition = condition, .parameter = trace.parameter,
+                                                    .unknowns = b.unknowns},
+                             branch_setup, r.second);
       } catch (const InvalidInput& e) {
         continued.skipped.push_back({from, condition, e.what()});
         continue;
       }
-      OrbitContinuationSetup& curve = *made;
+      BasicOrbitContinuationSetup<Model>& curve = *made;
       std::vector<std::string> defining = curve.unwatched;
       if (curve.condition) {
         const std::vector<std::string> more = curve.condition->Defining();
@@ -349,7 +385,7 @@ ContinuedCurves ContinueCurves(const MapTrace& trace, const MapRectangle& r, con
           break;
         }
         o.direction = direction;
-        MapCurve c;
+        BasicMapCurve<Model> c;
         c.id = static_cast<int>(continued.curves.size()) + 1;
         c.kind = condition;
         c.from = from;
@@ -358,8 +394,8 @@ ContinuedCurves ContinueCurves(const MapTrace& trace, const MapRectangle& r, con
         for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
           c.admissible.push_back(AdmissibleApartFrom(c.branch, k, defining));
           c.stable.push_back(Column(c.branch, k, orbit_columns::kStable) == 1.0);
-          c.first.push_back(ValueOf(c.branch.orbits[k], r.first));
-          c.second.push_back(ValueOf(c.branch.orbits[k], r.second));
+          c.first.push_back(ValueOf(trace.model, c.branch.orbits[k], r.first));
+          c.second.push_back(ValueOf(trace.model, c.branch.orbits[k], r.second));
         }
         continued.curves.push_back(std::move(c));
       }
@@ -369,19 +405,32 @@ ContinuedCurves ContinueCurves(const MapTrace& trace, const MapRectangle& r, con
   return continued;
 }
 
+// The points of `branch` the content at first = a is continued from: of each pair of consecutive
+// points whose first parameter straddles a, the nearer one.
+template <OscillatorModel Model>
+std::vector<std::size_t> ContentStarts(const Model& model, const BasicMapTraceBranch<Model>& branch, const std::string& first,
+                                       double a) {
+  std::vector<std::size_t> starts;
+  for (std::size_t k = 0; k + 1 < branch.orbits.size(); ++k) {
+    const double p = ValueOf(model, branch.orbits[k], first), q = ValueOf(model, branch.orbits[k + 1], first);
+    if (!((p - a) * (q - a) <= 0.0) || p == q) continue;
+    starts.push_back(std::abs(p - a) <= std::abs(q - a) ? k : k + 1);
+  }
+  return starts;
+}
+
 }  // namespace
 
-MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, double b, const OrbitTypeMapOptions& options) {
-  MapOrbitsAt found;
-  std::vector<MapOrbit>& orbits = found.orbits;
-  for (const MapTraceBranch& branch : trace.branches) {
-    for (std::size_t k = 0; k + 1 < branch.orbits.size(); ++k) {
-      const double p = ValueOf(branch.orbits[k], r.first), q = ValueOf(branch.orbits[k + 1], r.first);
-      if (!((p - a) * (q - a) <= 0.0) || p == q) continue;
-      const std::size_t nearer = std::abs(p - a) <= std::abs(q - a) ? k : k + 1;
+template <OscillatorModel Model>
+BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRectangle& r, double a, double b,
+                                 const OrbitTypeMapOptions& options) {
+  BasicMapOrbitsAt<Model> found;
+  std::vector<BasicMapOrbit<Model>>& orbits = found.orbits;
+  for (const BasicMapTraceBranch<Model>& branch : trace.branches) {
+    for (const std::size_t nearer : ContentStarts(trace.model, branch, r.first, a)) {
       const std::string from = fmt::format("{} pt {}", branch.name, nearer + 1);
-      OrbitContinuationSetup setup = SetupAt(trace, branch.orbits[nearer], branch.unknowns, r.first);
-      Reached reached = ContinueTo(setup, a, options.max_content_points);
+      BasicOrbitContinuationSetup<Model> setup = SetupAt(trace, branch.orbits[nearer], branch.unknowns, r.first);
+      Reached<Model> reached = ContinueTo(setup, a, options.max_content_points);
       if (reached.branch) {
         setup.start = reached.branch->orbits.back();
         setup.parameter = r.second;
@@ -391,15 +440,15 @@ MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, dou
         found.failures.push_back(fmt::format("{}: {}", from, reached.why));
         continue;
       }
-      const OrbitBranch& there = *reached.branch;
+      const BasicOrbitBranch<Model>& there = *reached.branch;
       const std::size_t last = there.orbits.size() - 1;
-      MapOrbit orbit{.signature = there.orbits[last].signature.ToString(),
-                     .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
-                     .stable = Column(there, last, orbit_columns::kStable) == 1.0,
-                     .from = from,
-                     .orbit = there.orbits[last]};
-      const bool known = std::any_of(orbits.begin(), orbits.end(), [&](const MapOrbit& o) {
-        return o.signature == orbit.signature && OrbitDistance(o.orbit, orbit.orbit) <= options.same_orbit;
+      BasicMapOrbit<Model> orbit{.signature = there.orbits[last].signature.ToString(),
+                                 .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
+                                 .stable = Column(there, last, orbit_columns::kStable) == 1.0,
+                                 .from = from,
+                                 .orbit = there.orbits[last]};
+      const bool known = std::any_of(orbits.begin(), orbits.end(), [&](const BasicMapOrbit<Model>& o) {
+        return o.signature == orbit.signature && Distance(trace.model, o.orbit, orbit.orbit) <= options.same_orbit;
       });
       if (!known) orbits.push_back(std::move(orbit));
     }
@@ -407,26 +456,28 @@ MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& r, double a, dou
   return found;
 }
 
-OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options) {
-  rectangle.Validate();
+template <OscillatorModel Model>
+BasicOrbitTypeMap<Model> BuildOrbitTypeMap(const BasicMapTrace<Model>& trace, const MapRectangle& rectangle,
+                                           const OrbitTypeMapOptions& options) {
+  rectangle.Validate(trace.model.Description(), trace.model.Autonomous());
   options.Validate();
   if (rectangle.first != trace.parameter) {
     throw InvalidInput("first", rectangle.first, fmt::format("the trace's parameter, {}", trace.parameter));
   }
   CheckTraceInRectangle(trace, rectangle);
-  ContinuedCurves curves = ContinueCurves(trace, rectangle, options);
+  ContinuedCurves<Model> curves = ContinueCurves(trace, rectangle, options);
   std::vector<std::vector<std::pair<double, double>>> polylines;
-  for (const MapCurve& c : curves.curves) {
+  for (const BasicMapCurve<Model>& c : curves.curves) {
     std::vector<std::pair<double, double>> line;
     for (std::size_t k = 0; k < c.first.size(); ++k) line.emplace_back(c.first[k], c.second[k]);
     polylines.push_back(std::move(line));
   }
-  OrbitTypeMap map = CutIntoRegions(rectangle, polylines, options);
+  BasicOrbitTypeMap<Model> map = CutIntoRegions<Model>(rectangle, polylines, options);
   map.curves = std::move(curves.curves);
   map.skipped = std::move(curves.skipped);
   for (std::size_t k = 0; k < map.regions.size(); ++k) {
-    MapRegion& region = map.regions[k];
-    MapOrbitsAt content = OrbitsAt(trace, rectangle, region.first, region.second, options);
+    BasicMapRegion<Model>& region = map.regions[k];
+    BasicMapOrbitsAt<Model> content = OrbitsAt(trace, rectangle, region.first, region.second, options);
     region.orbits = std::move(content.orbits);
     region.failures = std::move(content.failures);
     const double starts = StartSteps(trace);
@@ -434,5 +485,21 @@ OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectan
   }
   return map;
 }
+
+template struct BasicMapRegion<Pascal2014>;
+template struct BasicOrbitTypeMap<Pascal2014>;
+template BasicOrbitTypeMap<Pascal2014> CutIntoRegions(const MapRectangle&, const std::vector<std::vector<std::pair<double, double>>>&,
+                                            const OrbitTypeMapOptions&);
+template BasicOrbitTypeMap<Pascal2014> BuildOrbitTypeMap(const BasicMapTrace<Pascal2014>&, const MapRectangle&, const OrbitTypeMapOptions&);
+template BasicMapOrbitsAt<Pascal2014> OrbitsAt(const BasicMapTrace<Pascal2014>&, const MapRectangle&, double, double,
+                                     const OrbitTypeMapOptions&);
+
+template struct BasicMapRegion<DynamicLinearOscillator>;
+template struct BasicOrbitTypeMap<DynamicLinearOscillator>;
+template BasicOrbitTypeMap<DynamicLinearOscillator> CutIntoRegions(const MapRectangle&, const std::vector<std::vector<std::pair<double, double>>>&,
+                                            const OrbitTypeMapOptions&);
+template BasicOrbitTypeMap<DynamicLinearOscillator> BuildOrbitTypeMap(const BasicMapTrace<DynamicLinearOscillator>&, const MapRectangle&, const OrbitTypeMapOptions&);
+template BasicMapOrbitsAt<DynamicLinearOscillator> OrbitsAt(const BasicMapTrace<DynamicLinearOscillator>&, const MapRectangle&, double, double,
+                                     const OrbitTypeMapOptions&);
 
 }  // namespace stickslip

@@ -12,6 +12,8 @@
 #include "stickslip/io/atomic_file.hpp"
 #include "stickslip/io/result_files.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/model_file_start.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/start_input.hpp"
 #include "stickslip/io/stored_run.hpp"
 
@@ -29,9 +31,12 @@ constexpr const char* kComparisonMd = "comparison.md";
 // The keys a map's regions.json has (FormatRegionsJson), by which a directory holds a map.
 constexpr const char* kRegionsKeys[] = {"trace", "first", "second", "rectangle", "raster", "regions", "curves", "cells"};
 
-std::string CurveDirectory(const MapCurve& c) { return fmt::format("curve-{}", c.id); }
+template <OscillatorModel Model>
+std::string CurveDirectory(const BasicMapCurve<Model>& c) {
+  return fmt::format("curve-{}", c.id);
+}
 
-// The run file a curve's directory records: its name and parameter.
+// The run file a paper's curve's directory records: its name and parameter.
 RunFile CurveRun(const MapCurve& c, const OrbitTypeMap& map) {
   RunFile run;
   run.path = fmt::format("stickslip map ({} from {}, {} = [{}, {}])", c.kind, c.from, map.rectangle.second,
@@ -41,29 +46,39 @@ RunFile CurveRun(const MapCurve& c, const OrbitTypeMap& map) {
   return run;
 }
 
-// The orbit variables curves.csv lists before the durations, in the layout's indices of an
-// n-segment orbit: the model's parameters, phi, then the start state.
-std::vector<int> OrbitColumns(int n) {
-  std::vector<int> columns;
-  for (int i = ov::FirstParameter(n); i < ov::Count(n); ++i) columns.push_back(i);
-  columns.push_back(ov::kPhi);
-  for (int i = 0; i < ov::kPhi; ++i) columns.push_back(i);
-  return columns;
+// An orbit's variables as its model's files name and order them (SolutionColumns), its durations
+// d1..dn apart: the model's parameters, phi, the start state.
+struct OrbitColumns {
+  NamedValues variables;
+  std::vector<double> durations;
+};
+template <OscillatorModel Model>
+OrbitColumns ColumnsOf(const Model& model, const BasicOrbit<Model>& orbit) {
+  NamedValues all = SolutionColumns(model, orbit);
+  const std::size_t n = orbit.durations.size();
+  return {NamedValues(all.begin(), all.end() - static_cast<std::ptrdiff_t>(n)), orbit.durations};
+}
+template <OscillatorModel Model>
+std::vector<std::string> ColumnNames(const Model& model) {
+  const BasicOrbit<Model> orbit{Signature({Mode::kSlipNegative, Mode::kSlipPositive}), {}, Model::State::Zero(model.StateSize()), 0.0,
+                                {0.0, 0.0}};
+  std::vector<std::string> names;
+  for (const auto& [name, value] : ColumnsOf(model, orbit).variables) names.push_back(name);
+  return names;
 }
 
-std::string FormatCurvesCsv(const OrbitTypeMap& map) {
+template <OscillatorModel Model>
+std::string FormatCurvesCsv(const Model& model, const BasicOrbitTypeMap<Model>& map) {
   const MapRectangle& r = map.rectangle;
-  std::vector<std::string> names;
-  for (int i : OrbitColumns(0)) names.push_back(ov::Name(0, i));
+  const std::vector<std::string> names = ColumnNames(model);
   std::string out = fmt::format("curve,kind,from,direction,signature,pt,label,{},{},stable,admissible,{},durations\n",
                                 r.first, r.second, fmt::join(names, ","));
-  for (const MapCurve& c : map.curves) {
+  for (const BasicMapCurve<Model>& c : map.curves) {
     const std::vector<std::string> labels = PointLabels(c.branch.branch);
     for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
-      const Orbit& o = c.branch.orbits[k];
-      const Eigen::VectorXd variables = ov::Pack(o);
+      const OrbitOfModel<Model>& o = c.branch.orbits[k];
       std::vector<double> values;
-      for (int i : OrbitColumns(o.signature.size())) values.push_back(variables(i));
+      for (const auto& [name, value] : ColumnsOf(model, AsBasicOrbit(o)).variables) values.push_back(value);
       out += fmt::format("{},{},{},{},{},{},{},{},{},{:d},{:d},{},{}\n", c.id, c.kind, c.from, c.direction,
                          o.signature.ToString(), k + 1, labels[k], c.first[k], c.second[k], static_cast<int>(c.stable[k]),
                          static_cast<int>(c.admissible[k]), fmt::join(values, ","), fmt::join(o.durations, ";"));
@@ -72,18 +87,21 @@ std::string FormatCurvesCsv(const OrbitTypeMap& map) {
   return out;
 }
 
-// phi first, then the start state by the layout's names, as the keys have always come.
-Json OrbitJson(const MapOrbit& o) {
+// phi first, then the start state by the model's names, as the keys have always come.
+template <OscillatorModel Model>
+Json OrbitJson(const Model& model, const BasicMapOrbit<Model>& o) {
   Json out{{"signature", o.signature}, {"admissible", o.admissible}, {"stable", o.stable}, {"from", o.from},
            {"phi", o.orbit.phi}};
-  const Eigen::VectorXd variables = ov::Pack(o.orbit);
-  for (int i = 0; i < ov::kPhi; ++i) out[ov::Name(o.orbit.signature.size(), i)] = variables(i);
+  const NamedValues variables = ColumnsOf(model, AsBasicOrbit(o.orbit)).variables;
+  const auto phi = std::find_if(variables.begin(), variables.end(), [](const auto& v) { return v.first == "phi"; });
+  for (auto v = phi + 1; v != variables.end(); ++v) out[v->first] = v->second;
   out["durations"] = o.orbit.durations;
   return out;
 }
 
-std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,
-                              const std::string& brute_force) {
+template <OscillatorModel Model>
+std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>& map, const std::string& trace,
+                              const MapComparison* comparison, const std::string& brute_force) {
   const MapRectangle& r = map.rectangle;
   const int n = map.options.raster;
   Json rows = Json::array();
@@ -96,9 +114,9 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace,
     rows.push_back(row);
   }
   Json regions = Json::array();
-  for (const MapRegion& region : map.regions) {
+  for (const BasicMapRegion<Model>& region : map.regions) {
     Json orbits = Json::array();
-    for (const MapOrbit& o : region.orbits) orbits.push_back(OrbitJson(o));
+    for (const BasicMapOrbit<Model>& o : region.orbits) orbits.push_back(OrbitJson(model, o));
     regions.push_back(Json{{"id", region.id},
                            {"cells", region.cells},
                            {r.first, region.first},
@@ -110,7 +128,7 @@ std::string FormatRegionsJson(const OrbitTypeMap& map, const std::string& trace,
                            {"failures", region.failures}});
   }
   Json curves = Json::array();
-  for (const MapCurve& c : map.curves) {
+  for (const BasicMapCurve<Model>& c : map.curves) {
     Json special = Json::array();
     const std::vector<std::string> labels = SpecialPointLabels(c.branch.branch);  // as curve-<k>/special-points.csv
     for (std::size_t k = 0; k < labels.size(); ++k) {
@@ -213,6 +231,43 @@ MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
   return map;
 }
 
+BasicMapTrace<DynamicLinearOscillator> ModelMapTraceOf(const StoredTrace& trace, const fs::path& trace_directory,
+                                                       const RunFile* run, const std::string& second) {
+  using Model = DynamicLinearOscillator;
+  const ModelFileStart file = ModelOfStoredRun(trace.runs.front(), trace_directory);
+  const ModelDescription& description = file.model.Description();
+  const std::optional<int> first_index = description.ParameterIndex(trace.parameter);
+  const std::optional<int> second_index = description.ParameterIndex(second);
+  // An antisymmetric orbit is a motion only on a fixed surface: over a belt's speed it is written
+  // over its whole period (ContinuableIn), as the trace in that speed wrote it.
+  const auto unfolded = [&](BasicOrbit<Model> orbit) {
+    for (const std::optional<int>& k : {first_index, second_index}) {
+      if (k) orbit = ContinuableIn(std::move(orbit), *k);
+    }
+    return orbit;
+  };
+  BasicMapTrace<Model> map{.parameter = trace.parameter, .options = {}, .shooting = ShootingChoice::kAuto,
+                           .max_amplitude = kDefaultMaxAmplitude, .branches = {}, .model = file.model};
+  if (run) SetContinuationOptions(*run, &map.options);
+  if (run && run->trace) map.max_amplitude = run->trace->max_amplitude;
+  for (std::size_t k = 0; k < trace.branches.size(); ++k) {
+    const StoredRun& stored = trace.runs[k];
+    const auto orbit = [&](const StoredPoint& p) { return unfolded(OrbitOf(file.model, file.parameters, stored, p)); };
+    BasicMapTraceBranch<Model> b{.name = trace.branches[k].name, .unknowns = {}, .orbits = {}, .special = {}};
+    for (const StoredPoint& p : stored.branch) b.orbits.push_back(orbit(p));
+    if (b.orbits.empty()) continue;
+    b.unknowns = UnknownsAtFixedParameters(VariableSetOf(file.model, b.orbits.front().signature));
+    for (const StoredSpecialPoint& s : stored.special_points) {
+      b.special.push_back({trace.branches[k].name, s.point.label, s.type, s.test_function, orbit(s.point)});
+    }
+    map.branches.push_back(std::move(b));
+  }
+  if (!map.branches.empty()) {
+    SampledStoredOrbit(file, map.branches.front().orbits.front(), 2, trace.runs.front(), "its first point");
+  }
+  return map;
+}
+
 std::vector<std::string> TraceTypes(const StoredTrace& trace) {
   std::set<std::string> types;
   for (const StoredTraceBranch& b : trace.branches) types.insert(b.signature);
@@ -221,8 +276,21 @@ std::vector<std::string> TraceTypes(const StoredTrace& trace) {
 
 OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::string& trace, const MapComparison* comparison,
                                           const std::string& brute_force) {
-  return {FormatCurvesCsv(map), FormatRegionsJson(map, trace, comparison, brute_force),
-          comparison ? FormatComparisonMd(map, *comparison, trace, brute_force) : std::string()};
+  const Pascal2014 model;
+  OrbitTypeMapFiles files{FormatCurvesCsv(model, map), FormatRegionsJson(model, map, trace, comparison, brute_force),
+                          comparison ? FormatComparisonMd(map, *comparison, trace, brute_force) : std::string(), {}};
+  for (const MapCurve& c : map.curves) files.curves.push_back(RecordRun(CurveRun(c, map), c.branch));
+  return files;
+}
+
+OrbitTypeMapFiles FormatOrbitTypeMapFiles(const DynamicLinearOscillator& model, const std::string& run_file,
+                                          const BasicOrbitTypeMap<DynamicLinearOscillator>& map, const std::string& trace) {
+  OrbitTypeMapFiles files{FormatCurvesCsv(model, map), FormatRegionsJson(model, map, trace, nullptr, ""), "", {}};
+  for (const BasicMapCurve<DynamicLinearOscillator>& c : map.curves) {
+    const StoredSummary identity{.run_file = run_file, .output = CurveDirectory(c), .parameter = map.rectangle.first};
+    files.curves.push_back(RecordRun(model, identity, c.branch));
+  }
+  return files;
 }
 
 void CheckOrbitTypeMapDirectory(const fs::path& directory) {
@@ -254,7 +322,7 @@ void CheckOrbitTypeMapDirectory(const fs::path& directory) {
   if (CanCreateFileIn(directory)) throw InvalidInput("output", shown, "a map's directory that can be written");
 }
 
-std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files) {
+std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const OrbitTypeMapFiles& files) {
   CheckOrbitTypeMapDirectory(directory);
   const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
   std::error_code error;
@@ -272,7 +340,7 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const
   return detail::ReplaceDirectory(
       parent, directory.filename().string(),
       [&](const fs::path& target) {
-        for (const MapCurve& c : map.curves) WriteRunFiles(target, RecordRun(CurveRun(c, map), c.branch));
+        for (const StoredRun& curve : files.curves) WriteRunFiles(target, curve);
         WriteFileAtomically(target / kCurvesCsv, files.curves_csv);
         WriteFileAtomically(target / kRegionsJson, files.regions_json);
         if (!files.comparison_md.empty()) WriteFileAtomically(target / kComparisonMd, files.comparison_md);

@@ -20,7 +20,9 @@
 //            OrbitDistance <= same_orbit) are one. A region's label: its admissible orbit types,
 //            each stable or unstable.
 // Every loop is bounded: the curves by max_curves and max_curve_points, the content by the trace's
-// points and max_content_points per continuation, the raster by raster^2.
+// points and max_content_points per continuation, the raster by raster^2. For any model: the
+// paper's (MapTrace, OrbitTypeMap) and a [model]'s (BasicMapTrace<DynamicLinearOscillator>), whose
+// trace holds the model.
 //
 //   MapTrace trace = ...;  // io/orbit_type_map_files.hpp: MapTraceOf(ReadTraceFiles(dir))
 //   const OrbitTypeMap map = BuildOrbitTypeMap(trace, {"omega", "u_r", 0.5, 0.6, 0.3, 0.6}, {});
@@ -37,40 +39,50 @@
 namespace stickslip {
 
 // A special point of a trace's branch, where a curve may start.
-struct MapStartPoint {
+template <OscillatorModel Model>
+struct BasicMapStartPoint {
   std::string branch;         // the trace branch's name, "branch-4"
   std::string label;          // its label there, "SK3"
   std::string type;           // "SK", "LP", "TR", ...
   std::string test_function;  // "margin:reversal:1", "tangent:lambda", "floquet:torus", ...
-  Orbit orbit;
+  OrbitOfModel<Model> orbit;
 };
 
 // A branch of the trace: its orbits (every point, in order) and special points.
-struct MapTraceBranch {
+template <OscillatorModel Model>
+struct BasicMapTraceBranch {
   std::string name;
   UnknownChoice unknowns;  // the branch's unknowns (its parameter held)
-  std::vector<Orbit> orbits;
-  std::vector<MapStartPoint> special;
+  std::vector<OrbitOfModel<Model>> orbits;
+  std::vector<BasicMapStartPoint<Model>> special;
 };
 
-struct MapTrace {
+template <OscillatorModel Model>
+struct BasicMapTrace {
   std::string parameter;  // the trace's continued parameter: the map's first
   // The continuation options (ds, ds_min, ds_max, ...) and shooting of every curve and content
   // continuation; the range, direction, max_points and user values are the map's.
   ContinuationOptions options;
   ShootingChoice shooting = ShootingChoice::kAuto;
   double max_amplitude = kDefaultMaxAmplitude;  // the trace's: a resonance ends a curve or a content continuation
-  std::vector<MapTraceBranch> branches;
+  std::vector<BasicMapTraceBranch<Model>> branches;
+  Model model{};  // last, so that the paper's traces need not name it
 };
+using MapStartPoint = BasicMapStartPoint<Pascal2014>;
+using MapTraceBranch = BasicMapTraceBranch<Pascal2014>;
+using MapTrace = BasicMapTrace<Pascal2014>;
 
 struct MapRectangle {
   std::string first;   // the trace's parameter
-  std::string second;  // another parameter: chi, eta, omega, u_s, u_r
+  std::string second;  // another parameter the model varies: chi, eta, omega, u_s, u_r for the paper's
   double first_min = 0.0, first_max = 0.0;
   double second_min = 0.0, second_max = 0.0;
-  // Throws InvalidInput naming "first_min" ("second_min") unless min < max, both finite, and
-  // "second" for a second parameter that is no parameter or the first.
-  void Validate() const;
+  // Throws InvalidInput naming "first_min" ("second_min") unless min < max, both finite, "first"
+  // for a first parameter the model does not vary (ModelDescription::VariedParameter: an
+  // autonomous model's forcing frequency is none) and "second" for a second one that is not or is
+  // the first.
+  void Validate(const ModelDescription& model, bool autonomous) const;
+  void ValidateBounds() const;  // the bounds alone
 };
 
 struct OrbitTypeMapOptions {
@@ -89,12 +101,13 @@ struct OrbitTypeMapOptions {
 };
 
 // A curve of codimension-one points in the rectangle, from one start, one way of the first parameter.
-struct MapCurve {
+template <OscillatorModel Model>
+struct BasicMapCurve {
   int id = 0;              // 1, 2, ... in the order computed
   std::string kind;        // its condition: "LP", "PD", "margin:reversal:1", ...
   std::string from;        // the start: "branch-4:SK3"
   int direction = 1;       // the first parameter's way at the start
-  OrbitBranch branch;      // the curve as any branch (its special points: LP, codimension-two, EP)
+  BasicOrbitBranch<Model> branch;  // the curve as any branch (its special points: LP, codimension-two, EP)
   // Per point: admissible apart from the conditions that define the curve (its unwatched columns),
   // and stable.
   std::vector<bool> admissible;
@@ -110,21 +123,23 @@ struct MapSkippedStart {
 };
 
 // An orbit found at a region's interior point.
-struct MapOrbit {
+template <OscillatorModel Model>
+struct BasicMapOrbit {
   std::string signature;
   bool admissible = false;
   bool stable = false;
   std::string from;  // "branch-3 pt 12": the trace point it was continued from
-  Orbit orbit;
+  OrbitOfModel<Model> orbit;
 };
 
-struct MapRegion {
+template <OscillatorModel Model>
+struct BasicMapRegion {
   int id = 0;           // 1, 2, ... in raster order of their first cell
   int cells = 0;        // raster cells
   double first = 0.0;   // the interior point
   double second = 0.0;
   int clearance = 0;    // its distance from the nearest cut cell or edge, in cells
-  std::vector<MapOrbit> orbits;  // every orbit found there, deduplicated, in the order found
+  std::vector<BasicMapOrbit<Model>> orbits;  // every orbit found there, deduplicated, in the order found
   std::vector<std::string> failures;  // continuations that did not reach the point (where, why)
   // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no periodic
   // motion"; with failures, how many continuations did not reach the point ("unknown: ..." if none did).
@@ -133,12 +148,13 @@ struct MapRegion {
   std::vector<std::string> StableTypes() const;
 };
 
-struct OrbitTypeMap {
+template <OscillatorModel Model>
+struct BasicOrbitTypeMap {
   MapRectangle rectangle;
   OrbitTypeMapOptions options;  // progress cleared
-  std::vector<MapCurve> curves;
+  std::vector<BasicMapCurve<Model>> curves;
   std::vector<MapSkippedStart> skipped;
-  std::vector<MapRegion> regions;
+  std::vector<BasicMapRegion<Model>> regions;
   // Per raster cell (row-major: cell (i, j) at j * raster + i, i along the first parameter): its
   // region's index in `regions`, kCut where a curve passes, kSliver in a dropped component.
   std::vector<int> cells;
@@ -149,27 +165,59 @@ struct OrbitTypeMap {
   int RegionAt(double first, double second) const;
 };
 
+// Every orbit of the trace at a point of the rectangle, and the continuations that did not get there.
+template <OscillatorModel Model>
+struct BasicMapOrbitsAt {
+  std::vector<BasicMapOrbit<Model>> orbits;  // deduplicated, in the order found
+  std::vector<std::string> failures;         // "branch-3 pt 12: why"
+};
+
+using MapCurve = BasicMapCurve<Pascal2014>;
+using MapOrbit = BasicMapOrbit<Pascal2014>;
+using MapRegion = BasicMapRegion<Pascal2014>;
+using OrbitTypeMap = BasicOrbitTypeMap<Pascal2014>;
+using MapOrbitsAt = BasicMapOrbitsAt<Pascal2014>;
+
 // The regions of the rectangle cut by `polylines` (each a list of (first, second) points): the
 // raster, the components, the interior points; no content. The pure geometry of BuildOrbitTypeMap,
-// apart for testing on known arrangements.
-OrbitTypeMap CutIntoRegions(const MapRectangle& rectangle, const std::vector<std::vector<std::pair<double, double>>>& polylines,
-                            const OrbitTypeMapOptions& options);
+// apart for testing on known arrangements. Throws InvalidInput as MapRectangle::Validate, for the
+// bounds only, and OrbitTypeMapOptions::Validate.
+template <OscillatorModel Model = Pascal2014>
+BasicOrbitTypeMap<Model> CutIntoRegions(const MapRectangle& rectangle,
+                                        const std::vector<std::vector<std::pair<double, double>>>& polylines,
+                                        const OrbitTypeMapOptions& options);
 
 // The map. Throws InvalidInput for an invalid rectangle or options, naming "first" when the
 // rectangle's first parameter is not the trace's, "second" when the trace does not hold the second
 // one fixed, and the bound (first_min, ...) that leaves the trace outside the rectangle (its value
 // of the second parameter, or its whole range of the first).
-OrbitTypeMap BuildOrbitTypeMap(const MapTrace& trace, const MapRectangle& rectangle, const OrbitTypeMapOptions& options = {});
-
-// Every orbit of the trace at a point of the rectangle, and the continuations that did not get there.
-struct MapOrbitsAt {
-  std::vector<MapOrbit> orbits;       // deduplicated, in the order found
-  std::vector<std::string> failures;  // "branch-3 pt 12: why"
-};
+template <OscillatorModel Model>
+BasicOrbitTypeMap<Model> BuildOrbitTypeMap(const BasicMapTrace<Model>& trace, const MapRectangle& rectangle,
+                                           const OrbitTypeMapOptions& options = {});
 
 // Every orbit of the trace at (first, second) of the rectangle's parameters, as a region's content
 // is found (above).
-MapOrbitsAt OrbitsAt(const MapTrace& trace, const MapRectangle& rectangle, double first, double second,
-                     const OrbitTypeMapOptions& options);
+template <OscillatorModel Model>
+BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRectangle& rectangle, double first,
+                                 double second, const OrbitTypeMapOptions& options);
+
+// Compiled for the paper's model and a [model]'s (orbit_type_map.cpp).
+extern template struct BasicMapRegion<Pascal2014>;
+extern template struct BasicOrbitTypeMap<Pascal2014>;
+extern template BasicOrbitTypeMap<Pascal2014> CutIntoRegions(const MapRectangle&, const std::vector<std::vector<std::pair<double, double>>>&,
+                                                   const OrbitTypeMapOptions&);
+extern template BasicOrbitTypeMap<Pascal2014> BuildOrbitTypeMap(const BasicMapTrace<Pascal2014>&, const MapRectangle&,
+                                                      const OrbitTypeMapOptions&);
+extern template BasicMapOrbitsAt<Pascal2014> OrbitsAt(const BasicMapTrace<Pascal2014>&, const MapRectangle&, double, double,
+                                            const OrbitTypeMapOptions&);
+
+extern template struct BasicMapRegion<DynamicLinearOscillator>;
+extern template struct BasicOrbitTypeMap<DynamicLinearOscillator>;
+extern template BasicOrbitTypeMap<DynamicLinearOscillator> CutIntoRegions(const MapRectangle&, const std::vector<std::vector<std::pair<double, double>>>&,
+                                                   const OrbitTypeMapOptions&);
+extern template BasicOrbitTypeMap<DynamicLinearOscillator> BuildOrbitTypeMap(const BasicMapTrace<DynamicLinearOscillator>&, const MapRectangle&,
+                                                      const OrbitTypeMapOptions&);
+extern template BasicMapOrbitsAt<DynamicLinearOscillator> OrbitsAt(const BasicMapTrace<DynamicLinearOscillator>&, const MapRectangle&, double, double,
+                                            const OrbitTypeMapOptions&);
 
 }  // namespace stickslip

@@ -4,8 +4,9 @@
 //                  "margin:reversal:1"), from (the trace's special point), direction, signature,
 //                  pt, label, the first and second parameters, stable, admissible (apart from the
 //                  curve's defining conditions), then the orbit's variables as branch files have
-//                  them (chi, eta, omega, u_s, u_r, phi, x10, x20, v10) and durations (d1..dn,
-//                  ';'-joined: curves of different types have different counts)
+//                  them (the paper's chi, eta, omega, u_s, u_r, phi, x10, x20, v10; a [model]'s
+//                  parameters, phi and start state by its names) and durations (d1..dn, ';'-joined:
+//                  curves of different types have different counts)
 //   curve-<k>/     each curve as an ordinary run directory (result_files.hpp), its special points
 //                  (the codimension-two points, folds, ends) labelled: a run file restarts from
 //                  them with results root results/maps/<name> and restart.run = "curve-<k>"
@@ -26,6 +27,7 @@
 #include "stickslip/analysis/map_comparison.hpp"
 #include "stickslip/branches/orbit_type_map.hpp"
 #include "stickslip/io/run_file.hpp"
+#include "stickslip/io/stored_run.hpp"
 #include "stickslip/io/trace_files.hpp"
 
 namespace stickslip {
@@ -36,24 +38,40 @@ namespace stickslip {
 // shooting and flow are the defaults.
 MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run);
 
+// A [model]'s trace as the map's input: its model read from the run file the trace names (relative
+// to the working directory or a directory above `trace_directory`), every branch's points and
+// special points, each branch's unknowns its orbits' at fixed parameters, its step sizes and
+// max_amplitude `run`'s (nullptr: the defaults). Where the trace's parameter or `second` is the
+// belt's speed, antisymmetric orbits are written over their whole period. Throws InvalidInput
+// naming "run" (the model's file cannot be read: a trace made from the command line) or "run_file"
+// (its model's units or equations changed since the trace: its first orbit is no longer periodic).
+BasicMapTrace<DynamicLinearOscillator> ModelMapTraceOf(const StoredTrace& trace,
+                                                       const std::filesystem::path& trace_directory, const RunFile* run,
+                                                       const std::string& second);
+
 // The types of the trace's branches (their signatures), for the comparison.
 std::vector<std::string> TraceTypes(const StoredTrace& trace);
 
 struct OrbitTypeMapFiles {
   std::string curves_csv;
   std::string regions_json;
-  std::string comparison_md;  // empty without a comparison
+  std::string comparison_md;      // empty without a comparison
+  std::vector<StoredRun> curves;  // curve-<k>/, each as a run's files
 };
 // `trace` names the trace directory in the files; `brute_force` the brute-force map file.
 OrbitTypeMapFiles FormatOrbitTypeMapFiles(const OrbitTypeMap& map, const std::string& trace,
                                           const MapComparison* comparison, const std::string& brute_force);
+// A [model]'s, in its units: its curves' runs name `run_file`, the run file of its [model], which
+// their restarts read the model from. Its columns are the model's (SolutionColumns).
+OrbitTypeMapFiles FormatOrbitTypeMapFiles(const DynamicLinearOscillator& model, const std::string& run_file,
+                                          const BasicOrbitTypeMap<DynamicLinearOscillator>& map, const std::string& trace);
 
 // Writes `directory` whole (the files above and curve-<k>/), into a temporary directory first that
 // then replaces the old one. Every other entry of the old directory (a file of the user's, a run
 // restarted from a curve) moves into the new one; their names are returned, sorted. Throws
 // InvalidInput naming "output" where `directory` exists and is not a map's directory (no
 // regions.json), or cannot be written.
-std::vector<std::string> WriteOrbitTypeMapFiles(const std::filesystem::path& directory, const OrbitTypeMap& map, const OrbitTypeMapFiles& files);
+std::vector<std::string> WriteOrbitTypeMapFiles(const std::filesystem::path& directory, const OrbitTypeMapFiles& files);
 
 // Throws InvalidInput naming "output" where `directory` could not be written by
 // WriteOrbitTypeMapFiles: its name is no run name (IsRunName: one component, no control
