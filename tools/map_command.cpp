@@ -175,8 +175,8 @@ int RunModelMap(const MapArgs& args, const CLI::App& cmd, const StoredTrace& tra
   const BasicOrbitTypeMap<DynamicLinearOscillator> map = BuildOrbitTypeMap(input, r, options);
   line.Clear();
   const double seconds = SecondsSince(started);
-  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr,
-                run ? "" : trace.run_file);
+  // A trace of find --model names the [model]'s file, no run file: its steps were the defaults too.
+  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr, "");
 }
 
 int RunMap(const MapArgs& args, const CLI::App& cmd) {

@@ -27,12 +27,13 @@ def main(results):
         kind_text = ", ".join(f"{k} {n}" for k, n in sorted(kinds.items())) or "none"
         regions = "; ".join(f'{x["id"]}: {" + ".join(f"`{t}`" for t in x["stable_types"]) or "none"}' for x in m["regions"])
         c = m.get("comparison") or {}
+        # A map without a brute-force map to compare with (a [model]'s, for now) has no agreement.
+        agreement = f'{c["agreement"]:.3f}' if c else "–"
         lines.append(
             f'| {name} | {os.path.basename(m["trace"].rstrip("/"))} | {m["first"]} ∈ [{r["first_min"]}, {r["first_max"]}], '
             f'{m["second"]} ∈ [{r["second_min"]}, {r["second_max"]}] | {len(m["curves"])} ({kind_text}) | {len(m["skipped"])} | {regions} | '
             f'{c.get("compared", "–")} of {c.get("cells", "–")} | {c.get("agreeing", "–")} ({c.get("agreeing_stable", "–")}) | '
-            f'{c["agreement"]:.3f} | {c.get("disagreements", "–")} ({c.get("explained", "–")}) |' if c else
-            f'| {name} | | | | | | | | | |')
+            f'{agreement} | {c.get("disagreements", "–")} ({c.get("explained", "–")}) |')
     splice_readme.write_table(results, "orbit-type-maps", lines)
 
 

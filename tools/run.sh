@@ -100,6 +100,11 @@ done
 "$bin" run --results results/models/two-masses-omega-trace continuation-scripts/curves/two-masses-sk-boundary.toml
 "$bin" plot results/models/two-masses-omega-trace/two-masses-sk-boundary \
   --output results/figures/two-masses-sk-boundary.png
+# Its orbit-type map in (omega, F_s) from the trace (stickslip map): section 4.1's regions in SI units,
+# cut by the torus, grazing and crossing-sliding curves through the trace's special points.
+"$bin" map --trace results/models/two-masses-omega-trace --second F_s --second-from 7.5 --second-to 20 \
+  --output results/maps/two-masses-omega-F_s
+"$bin" plot results/maps/two-masses-omega-F_s --output results/figures/two-masses-omega-F_s-map.png
 # The five-mass chain's brute-force diagram over the same decade, from rest and a start scattered around
 # it, up and back down: its resonances, and the permanent sticks below omega = 0.4; and its figure with
 # the trace's branches over it.

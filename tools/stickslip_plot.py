@@ -37,7 +37,8 @@ Options (the same names on the command line and, with underscores, as keywords):
               "" for none.
   legend      "right" (beside the axes, the default), "inside" (where it covers least) or "none".
   natural_frequencies  mark omega1 and omega2 where x (or a map's axis) is omega (default on):
-              a dotted line inside the axes, else a legend line giving their values.
+              a dotted line inside the axes, else a legend line giving their values. The paper's
+              from its chi and eta (eq. 56); a [model]'s as its trace (trace.json) lists them.
 
 Command line (what `stickslip plot` runs; it checks the inputs' names and the output file first):
   /usr/bin/python3 stickslip_plot.py --output FILE.{png,pdf,svg} [--x COL] [--y COL]
@@ -208,9 +209,7 @@ class Branch(Result):
         return cls(name, json.loads(summary_json), _rows(branch_csv), _rows(special_csv))
 
     def units(self):
-        if self.summary.get("model") is None:
-            return None
-        return self.summary.get("units", SI_UNITS)  # runs made before units could be declared: SI
+        return summary_units(self.summary)
 
     def columns(self):
         return list(self.rows[0])
@@ -263,17 +262,22 @@ class MapSweep(Result):
 
 
 class OrbitTypeMap(Result):
-    """An orbit-type map (regions.json, curves.csv)."""
+    """An orbit-type map (regions.json, curves.csv); `summaries`: its curves' summary.json (curve-<k>/),
+    which say whose model it is and in what units."""
     kind = "orbit-type-map"
 
-    def __init__(self, name, regions, curves, chi_eta):
+    def __init__(self, name, regions, curves, chi_eta, summaries=()):
         self.name, self.regions, self.curves, self.chi_eta = name, regions, curves, chi_eta
+        self.summaries = list(summaries)
         self.first, self.second = regions["first"], regions["second"]
         self.parameter = self.first
         self.path = ""
 
     def columns(self):
         return [self.first, self.second]
+
+    def units(self):
+        return shared_units(summary_units(s) for s in self.summaries)
 
 
 class Atlas(Result):
@@ -329,24 +333,40 @@ def _read_atlas(directory):
 
 
 def _read_curves(path):
-    """curves.csv of an orbit-type map (its parameters' columns come twice: read by position)."""
+    """curves.csv of an orbit-type map (its parameters' columns come twice: read by position) and
+    the paper's (chi, eta) along its curves, which give the natural frequencies; a [model]'s map
+    has its own parameters' columns instead, and no (chi, eta)."""
     curves, chi_eta = {}, set()
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader)
+        paper = "chi" in header and "eta" in header
         for row in reader:
             c = curves.setdefault(int(row[0]), dict(x=[], y=[], adm=[], kind=row[1]))
             c["x"].append(float(row[7]))
             c["y"].append(float(row[8]))
             c["adm"].append(row[10] == "1")
-            chi_eta.add((float(row[header.index("chi")]), float(row[header.index("eta")])))
+            if paper:
+                chi_eta.add((float(row[header.index("chi")]), float(row[header.index("eta")])))
     return curves, chi_eta
+
+
+def _read_curve_summaries(directory, regions):
+    """The summary.json of each of the map's curves whose directory is there (a map copied without
+    them draws in the paper's scaled quantities: nothing says otherwise)."""
+    summaries = []
+    for c in regions.get("curves", []):
+        path = os.path.join(directory, c.get("directory", f"curve-{c['id']}"), "summary.json")
+        if os.path.isfile(path):
+            summaries.append(json.loads(_read(path)))
+    return summaries
 
 
 def _read_orbit_type_map(directory):
     regions = json.loads(_read(os.path.join(directory, "regions.json")))
     curves, chi_eta = _read_curves(os.path.join(directory, "curves.csv"))
-    result = OrbitTypeMap(os.path.basename(os.path.normpath(directory)), regions, curves, chi_eta)
+    result = OrbitTypeMap(os.path.basename(os.path.normpath(directory)), regions, curves, chi_eta,
+                          _read_curve_summaries(directory, regions))
     result.path = os.path.abspath(directory)
     return result
 
@@ -472,11 +492,24 @@ def symbol(name):
 SI_UNITS = {"length": "m", "time": "s", "force": "N"}
 
 
+def summary_units(summary):
+    """A run's units by its summary.json: a [model]'s ("model" present) as declared, SI for runs
+    made before units could be declared; None for the paper's scaled model (no "model")."""
+    if summary.get("model") is None:
+        return None
+    return summary.get("units", SI_UNITS)
+
+
+def shared_units(units):
+    """The units every one of `units` is in, or None (none, or not the same)."""
+    units = list(units)
+    return units[0] if units and all(u == units[0] for u in units) else None
+
+
 def common_units(results):
     """The units the results share, or None (none, or not the same); sweeps and map-sweeps, whose
     CSV files do not say, take those of the runs they are drawn with."""
-    units = [r.units() for r in results if r.kind not in ("sweep", "map-sweep")]
-    return units[0] if units and all(u == units[0] for u in units) else None
+    return shared_units(r.units() for r in results if r.kind not in ("sweep", "map-sweep"))
 
 
 def unit_of(name, units):
@@ -1489,18 +1522,36 @@ def _map_special_points(otm):
             for q in places.values()]
 
 
-def _trace_start(otm):
-    """Where the map's trace starts: its first point, the trace found as the map recorded it
-    (relative to the current directory, or to the map directory's ancestors)."""
+def _trace_directory(otm):
+    """The map's trace as the map recorded it (relative to the directory it was made in: the
+    current one, or one of the map directory's ancestors), or None where it is not found."""
     trace = otm.regions.get("trace") or ""
+    if not trace:
+        return None
     candidates = [trace] + [os.path.join(os.path.dirname(otm.path) + "/.." * k, trace) for k in range(4)]
-    trace = next((c for c in candidates if os.path.isdir(c)), trace)
+    return next((c for c in candidates if os.path.isdir(c)), None)
+
+
+def _trace_start(otm):
+    """Where the map's trace starts: its first point, or None where the trace is not found."""
+    trace = _trace_directory(otm)
     try:
         with open(os.path.join(trace, "branch-1", "branch.csv"), newline="") as f:
             row = next(csv.DictReader(f))
         return float(row[otm.first]), float(row[otm.second])
     except (OSError, StopIteration, KeyError, TypeError):
         return None
+
+
+def _trace_frequencies(otm):
+    """A [model]'s slip natural frequencies as its map's trace lists them (trace.json), or () where
+    the trace is not found or lists none (the paper's: its (chi, eta) give them)."""
+    trace = _trace_directory(otm)
+    try:
+        with open(os.path.join(trace, "trace.json")) as f:
+            return tuple(float(value) for value in json.load(f).get("natural_frequencies", ()))
+    except (OSError, TypeError, ValueError, AttributeError):
+        return ()
 
 
 def _plane_figure(results, options, plt):
@@ -1561,9 +1612,11 @@ def _plane_figure(results, options, plt):
         for r in otm.regions["regions"]:
             ax.annotate(str(r["id"]), (r[first], r[second]), fontsize=pt(7), ha="center", va="center", color="0.3")
         start = _trace_start(otm)
+        # The paper's maps are traced from its example; a [model]'s from the user's own start.
+        started = "the trace's start" + (" (the paper's example)" if otm.chi_eta else "")
         for c in canvases:
             if start:
-                c.mark("", *start, "*", "gold", 12, "the trace's start (the paper's example)")
+                c.mark("", *start, "*", "gold", 12, started)
         canvas.extra += [Line2D([], [], ls="", marker="s", ms=9, color=shade[t], label=f"stable: {t}") for t in types]
         ax.set_title(f"{'(a) ' if ms else ''}stable orbit types, from the orbit-type map {_escaped(otm.name)}", fontsize=pt(9))
         if ms:
@@ -1623,14 +1676,19 @@ def _plane_figure(results, options, plt):
             ax.set_ylim(options.ylim)
         ax.set_xscale(options.xscale)
         ax.set_yscale(options.yscale)
-        ax.set_xlabel(quantity_label(first, common_units(curves)))
-        ax.set_ylabel(quantity_label(second, common_units(curves)))
+        ax.set_xlabel(quantity_label(first, common_units(results)))
+        ax.set_ylabel(quantity_label(second, common_units(results)))
     pairs = set(otm.chi_eta) if otm else set()
     for c in curves:
-        pairs |= {(float(r["chi"]), float(r["eta"])) for r in c.rows}
+        pairs |= {(float(r["chi"]), float(r["eta"])) for r in c.rows if "chi" in r}
     if options.natural_frequencies and pairs and len(pairs) <= 2 and "omega" in (first, second):
         for canvas in canvases:
             mark_natural_frequencies(canvas, pairs, "x" if first == "omega" else "y")
+    # A [model]'s, as its trace's figure marks them: its trace lists them.
+    frequencies = _trace_frequencies(otm) if otm and not pairs and "omega" in (first, second) else ()
+    if options.natural_frequencies and frequencies:
+        for canvas in canvases:
+            mark_model_frequencies(canvas, frequencies, "x" if first == "omega" else "y")
     if curves:
         title += " with " + ", ".join(_escaped(c.name) for c in curves)
     # Per-panel legends would repeat; one legend beside the last panel.

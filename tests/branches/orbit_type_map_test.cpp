@@ -133,9 +133,9 @@ TEST(OrbitsAt, ContinuesTheTracesOrbitsUnderTheTracesMaxAmplitude) {
   for (const std::string& f : bounded.failures) EXPECT_NE(f.find("resonance: the amplitude"), std::string::npos) << f;
   MapRegion region;
   region.failures = bounded.failures;
-  EXPECT_TRUE(region.Label().starts_with("unknown: no periodic motion found")) << region.Label();
+  EXPECT_TRUE(region.Label().starts_with("unknown: no motion of the trace's types found")) << region.Label();
   region.failures.clear();
-  EXPECT_EQ(region.Label(), "no periodic motion");
+  EXPECT_EQ(region.Label(), "no motion of the trace's types");
 }
 
 // A trace's branches and special points as the map's input, each branch's unknowns its type's at
@@ -164,7 +164,8 @@ BasicMapTrace<DynamicLinearOscillator> MapTraceOfTrace(const DynamicLinearOscill
 // stick where the force that holds the mass there, r^2 X(r, beta) (Den Hartog's amplitude X; the
 // relation his beta* = |V| / sqrt(U^2 + 1/r^4) solves for F_s = beta), is at most F_s. The map in
 // (omega, F_s) from a trace in omega at F_s = 0.5 must cut the rectangle along F_s = r^2 X(r, 0.2)
-// alone, the non-sticking orbit stable below that curve and not admissible above it.
+// alone, the non-sticking orbit stable below that curve and not admissible above it, a sticking one
+// a motion above it only.
 TEST(ModelOrbitTypeMap, CutsDenHartogsRectangleAlongTheClosedFormStickBoundary) {
   const double beta = 0.2, r0 = 0.7;
   const DynamicLinearOscillator model(DenHartogData());
@@ -207,6 +208,14 @@ TEST(ModelOrbitTypeMap, CutsDenHartogsRectangleAlongTheClosedFormStickBoundary) 
       EXPECT_TRUE(non_sticking->stable) << region.Label();
       EXPECT_NEAR(non_sticking->orbit.start.cwiseAbs().maxCoeff(), DenHartogOrbit(region.first, beta).amplitude, 1e-9);
     }
+    // The trace's sticking branch ends at the boundary, short of the region above it in omega: its
+    // end is continued there, and its orbit is a motion above the curve only.
+    const bool sticking_motion = std::any_of(region.orbits.begin(), region.orbits.end(), [](const auto& o) {
+      const std::vector<Mode>& modes = o.orbit.signature.segments();
+      return o.admissible && std::find(modes.begin(), modes.end(), Mode::kStick) != modes.end();
+    });
+    EXPECT_EQ(sticking_motion, sticks) << region.Label();
+    EXPECT_TRUE(region.failures.empty()) << region.failures.front();
   }
 }
 

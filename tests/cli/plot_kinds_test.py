@@ -2,12 +2,13 @@
 """The figures of tools/stickslip_plot.py (what `stickslip plot` and stickslip.plotting draw), on
 small results made from the stored ones:
 - every kind (branch, curve in two parameters, trace, trace with a branch followed at a
-  bifurcation, sweep, brute-force map, orbit-type map, overlays) renders to PNG, PDF and SVG, the
-  file of the extension's format, at the size and dpi asked;
+  bifurcation, sweep, brute-force map, orbit-type map, a [model]'s orbit-type map, overlays)
+  renders to PNG, PDF and SVG, the file of the extension's format, at the size and dpi asked;
 - no two texts of a figure overprint: the labels placed on points, the natural frequencies' labels,
   the title, the axis and tick labels and the legend's entries (boxes from matplotlib's renderer);
 - axes are linear unless asked (no switching), limits and quantities as asked, the natural
-  frequencies (eq. 56) where they belong, titles in words (no internal end codes);
+  frequencies (eq. 56; a [model]'s from its trace) where they belong, a [model]'s units on the
+  axes, titles in words (no internal end codes);
 - each special point's legend entry by its code: a curve's resonances R1 to R4 and its fold-flip
   LPPD as such, never as a change of orbit type;
 - every invalid option: exit 2, one line naming the option, the value and the valid range, nothing
@@ -50,6 +51,55 @@ def head_of_csv(source, target, keep):
                 writer.writerow(row)
 
 
+def write_model_map(work, name, units=None, trace="model-trace"):
+    """A small orbit-type map of a [model] (Den Hartog's one mass, over (omega, F_s)), written as
+    `stickslip map` writes one: regions.json on a 4 x 4 raster, curves.csv with the model's own
+    parameters' columns (no chi, eta), curve-1/summary.json naming the model and, when given, its
+    units; beside it its trace, whose trace.json lists the slip's natural frequency, 1 (inside the
+    map's omega range). Returns the map's directory."""
+    directory = os.path.join(work, name)
+    os.makedirs(os.path.join(directory, "curve-1"))
+    os.makedirs(os.path.join(work, "model-trace", "branch-1"), exist_ok=True)
+    with open(os.path.join(work, "model-trace", "trace.json"), "w") as f:
+        json.dump({"parameter": "omega", "signature": "slip+ / antisymmetric", "model": "linear-oscillator",
+                   "natural_frequencies": [1.0], "directions": [], "branches": []}, f, indent=2)
+    with open(os.path.join(work, "model-trace", "branch-1", "branch.csv"), "w") as f:
+        f.write("pt,label,omega,F_k,F_s,v_b\n1,EP1,0.9,0.2,0.35,0\n")
+    # The boundary F_s = omega - 0.5: the non-sticking orbit below it, a sticking one above.
+    curve = [(0.8, 0.3), (1.0, 0.5), (1.1, 0.6)]
+    with open(os.path.join(directory, "curves.csv"), "w") as f:
+        f.write("curve,kind,from,direction,signature,pt,label,omega,F_s,stable,admissible,omega,F_k,F_s,v_b,phi,m1_0,"
+                "durations\n")
+        for k, (omega, static) in enumerate(curve, 1):
+            f.write(f"1,margin:reversal:1,branch-1:SK2,1,slip+ / antisymmetric,{k},{'EP' + str(k) if k != 2 else ''},"
+                    f"{omega},{static},1,1,{omega},0.2,{static},0,-3.0,-1.5,5.4\n")
+    summary = {"run_file": "den-hartog.toml", "output": "curve-1", "signature": "slip+ / antisymmetric",
+               "parameter": "omega", "shooting": "single", "model": "linear-oscillator", "points": 3,
+               "termination": "parameter-bound", "message": "reached F_s = 0.6"}
+    if units:
+        summary["units"] = units
+    with open(os.path.join(directory, "curve-1", "summary.json"), "w") as f:
+        json.dump(summary, f, indent=2)
+    cells = ["1 1 1 1", "1 1 1 1", "2 1 1 1", "2 2 1 1"]  # rows of F_s, lowest first; columns of omega
+    regions = {"trace": trace, "first": "omega", "second": "F_s",
+               "rectangle": {"first_min": 0.8, "first_max": 1.2, "second_min": 0.2, "second_max": 0.6},
+               "raster": 4, "min_region": 0.002,
+               "regions": [{"id": 1, "cells": 13, "omega": 1.05, "F_s": 0.35, "label": "slip+ / antisymmetric (stable)",
+                            "stable_types": ["slip+ / antisymmetric"], "orbits": [], "failures": []},
+                           {"id": 2, "cells": 3, "omega": 0.85, "F_s": 0.55,
+                            "label": "slip+ stick / antisymmetric (stable)",
+                            "stable_types": ["slip+ stick / antisymmetric"], "orbits": [], "failures": []}],
+               "curves": [{"id": 1, "kind": "margin:reversal:1", "from": "branch-1:SK2", "direction": 1,
+                           "directory": "curve-1", "points": 3, "end": "parameter-bound",
+                           "message": "reached F_s = 0.6",
+                           "special_points": [{"label": "EP1", "type": "EP", "test_function": "start", "omega": 0.8,
+                                               "F_s": 0.3}]}],
+               "skipped": 0, "comparison": None, "cells": cells}
+    with open(os.path.join(directory, "regions.json"), "w") as f:
+        json.dump(regions, f, indent=2)
+    return directory
+
+
 class Small:
     """Small results in a temporary directory, one per kind."""
 
@@ -77,12 +127,14 @@ class Small:
                     lambda r: int(r["i"]) % 3 == 0)
         self.orbit_type_map = os.path.join(RESULTS, "maps", "paper-6-omega-u_r")
         self.orbit_type_map_51 = os.path.join(RESULTS, "maps", "paper-5.1-omega-u_r")
+        self.model_map = write_model_map(work, "model-map", units={"length": "mm", "time": "ms", "force": "kN"})
 
     def kinds(self):
         """(name, inputs, options) of every kind and overlay."""
         return [("branch", [self.branch], []), ("curve", [self.curve], []), ("trace", [self.trace], []),
                 ("trace-followed", [self.followed], []), ("sweep", [self.sweep], []),
                 ("map-sweep", [self.map_sweep], []), ("orbit-type-map", [self.orbit_type_map], []),
+                ("model-orbit-type-map", [self.model_map], []),
                 ("branches-and-sweep", [self.branch, os.path.join(RESULTS, "paper-5.1-omega-down"), self.sweep], []),
                 ("map-with-brute-force-and-curve", [self.orbit_type_map_51, self.curve], []),
                 ("orbit-type-map-and-map-sweep", [self.orbit_type_map, self.map_sweep], []),
@@ -247,6 +299,36 @@ class PlotKinds(unittest.TestCase):
         # A sweep's CSV does not say its units: drawn with a [model]'s trace, it takes the trace's.
         fig = sp.figure([model_trace, os.path.join(RESULTS, "models", "five-mass-chain-omega-sweep.csv")])
         self.assertEqual(fig.axes[0].get_xlabel(), r"forcing frequency $\omega$ (rad/s)")
+        plt.close(fig)
+
+    def test_a_models_orbit_type_map(self):
+        # Its curves.csv has the model's columns (no chi, eta); its curves' summaries give the units
+        # (SI where they name the model but no units; none for the paper's scaled model).
+        fig = sp.figure([self.small.model_map])
+        ax = fig.axes[0]
+        self.assertEqual(ax.get_xlabel(), r"forcing frequency $\omega$ (rad/ms)")
+        self.assertEqual(ax.get_ylabel(), r"static friction force $F_s$ (kN)")
+        # The slip's natural frequency from the trace's trace.json, as a [model]'s trace figure marks it.
+        self.assertTrue(any(line.get_linestyle() == ":" and line.get_xdata()[0] == 1.0 for line in ax.get_lines()))
+        self.assertIn(r"$\omega_1$", [t.get_text() for t in ax.texts])
+        legend = [t.get_text() for t in ax.get_legend().get_texts()]
+        self.assertIn("natural frequency of the slip (undamped)", legend)
+        self.assertIn("the trace's start", legend)
+        plt.close(fig)
+        si = write_model_map(self.work, "model-map-si")
+        self.assertEqual(sp.load(si).units(), sp.SI_UNITS)
+        fig = sp.figure([si])
+        self.assertEqual((fig.axes[0].get_xlabel(), fig.axes[0].get_ylabel()),
+                         (r"forcing frequency $\omega$ (rad/s)", r"static friction force $F_s$ (N)"))
+        plt.close(fig)
+        self.assertIsNone(sp.load(self.small.orbit_type_map).units())
+        # Its trace not found: drawn without the natural frequencies, without a word.
+        lost = write_model_map(self.work, "model-map-without-trace", trace="no-such-trace")
+        output = os.path.join(self.work, "model-map-without-trace.png")
+        done = run("--output", output, lost)
+        self.assertEqual((done.returncode, done.stderr), (0, ""))
+        fig = sp.figure([lost])
+        self.assertFalse(any(line.get_linestyle() == ":" for line in fig.axes[0].get_lines()))
         plt.close(fig)
 
     def test_natural_frequencies_solve_eq_56(self):

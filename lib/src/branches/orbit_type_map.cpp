@@ -198,7 +198,8 @@ std::string BasicMapRegion<Model>::Label() const {
   // region is not called motionless for want of a solve.
   const std::string incomplete =
       failures.empty() ? "" : fmt::format(" ({} continuation(s) of the trace's orbits did not reach it)", failures.size());
-  if (parts.empty()) return failures.empty() ? "no periodic motion" : "unknown: no periodic motion found" + incomplete;
+  // The map knows the trace's types only: another motion may well be there (a brute force tells).
+  if (parts.empty()) return failures.empty() ? "no motion of the trace's types" : "unknown: no motion of the trace's types found" + incomplete;
   return fmt::format("{}", fmt::join(parts, "; ")) + incomplete;
 }
 
@@ -405,16 +406,29 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
   return continued;
 }
 
+// A point of a branch the content at first = a is continued from.
+struct ContentStart {
+  std::size_t point = 0;
+  bool straddles = true;  // the branch passes a there: its continuation must reach the point
+};
+
 // The points of `branch` the content at first = a is continued from: of each pair of consecutive
-// points whose first parameter straddles a, the nearer one.
+// points whose first parameter straddles a, the nearer one; on a branch that does not reach a (a
+// type that ends short of it in the first parameter, whose orbits may be motions there at another
+// value of the second), its end nearer a, whose continuation may well end on the way.
 template <OscillatorModel Model>
-std::vector<std::size_t> ContentStarts(const Model& model, const BasicMapTraceBranch<Model>& branch, const std::string& first,
-                                       double a) {
-  std::vector<std::size_t> starts;
+std::vector<ContentStart> ContentStarts(const Model& model, const BasicMapTraceBranch<Model>& branch,
+                                        const std::string& first, double a) {
+  std::vector<ContentStart> starts;
   for (std::size_t k = 0; k + 1 < branch.orbits.size(); ++k) {
     const double p = ValueOf(model, branch.orbits[k], first), q = ValueOf(model, branch.orbits[k + 1], first);
     if (!((p - a) * (q - a) <= 0.0) || p == q) continue;
-    starts.push_back(std::abs(p - a) <= std::abs(q - a) ? k : k + 1);
+    starts.push_back({std::abs(p - a) <= std::abs(q - a) ? k : k + 1});
+  }
+  if (starts.empty() && !branch.orbits.empty()) {
+    const std::size_t last = branch.orbits.size() - 1;
+    const double p = ValueOf(model, branch.orbits.front(), first), q = ValueOf(model, branch.orbits[last], first);
+    starts.push_back({std::abs(p - a) <= std::abs(q - a) ? 0 : last, false});
   }
   return starts;
 }
@@ -424,34 +438,38 @@ std::vector<std::size_t> ContentStarts(const Model& model, const BasicMapTraceBr
 template <OscillatorModel Model>
 BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRectangle& r, double a, double b,
                                  const OrbitTypeMapOptions& options) {
-  BasicMapOrbitsAt<Model> found;
-  std::vector<BasicMapOrbit<Model>>& orbits = found.orbits;
+  // The branches that pass a first, then the others' ends: an orbit found twice keeps the first
+  // finding, the one continued the shorter way.
+  std::vector<std::pair<const BasicMapTraceBranch<Model>*, ContentStart>> starts;
   for (const BasicMapTraceBranch<Model>& branch : trace.branches) {
-    for (const std::size_t nearer : ContentStarts(trace.model, branch, r.first, a)) {
-      const std::string from = fmt::format("{} pt {}", branch.name, nearer + 1);
-      BasicOrbitContinuationSetup<Model> setup = SetupAt(trace, branch.orbits[nearer], branch.unknowns, r.first);
-      Reached<Model> reached = ContinueTo(setup, a, options.max_content_points);
-      if (reached.branch) {
-        setup.start = reached.branch->orbits.back();
-        setup.parameter = r.second;
-        reached = ContinueTo(setup, b, options.max_content_points);
-      }
-      if (!reached.branch) {
-        found.failures.push_back(fmt::format("{}: {}", from, reached.why));
-        continue;
-      }
-      const BasicOrbitBranch<Model>& there = *reached.branch;
-      const std::size_t last = there.orbits.size() - 1;
-      BasicMapOrbit<Model> orbit{.signature = there.orbits[last].signature.ToString(),
-                                 .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
-                                 .stable = Column(there, last, orbit_columns::kStable) == 1.0,
-                                 .from = from,
-                                 .orbit = there.orbits[last]};
-      const bool known = std::any_of(orbits.begin(), orbits.end(), [&](const BasicMapOrbit<Model>& o) {
-        return o.signature == orbit.signature && Distance(trace.model, o.orbit, orbit.orbit) <= options.same_orbit;
-      });
-      if (!known) orbits.push_back(std::move(orbit));
+    for (const ContentStart& start : ContentStarts(trace.model, branch, r.first, a)) starts.emplace_back(&branch, start);
+  }
+  std::stable_partition(starts.begin(), starts.end(), [](const auto& s) { return s.second.straddles; });
+  BasicMapOrbitsAt<Model> found;
+  for (const auto& [branch, start] : starts) {
+    const std::string from = fmt::format("{} pt {}", branch->name, start.point + 1);
+    BasicOrbitContinuationSetup<Model> setup = SetupAt(trace, branch->orbits[start.point], branch->unknowns, r.first);
+    Reached<Model> reached = ContinueTo(setup, a, options.max_content_points);
+    if (reached.branch) {
+      setup.start = reached.branch->orbits.back();
+      setup.parameter = r.second;
+      reached = ContinueTo(setup, b, options.max_content_points);
     }
+    if (!reached.branch) {
+      if (start.straddles) found.failures.push_back(fmt::format("{}: {}", from, reached.why));
+      continue;
+    }
+    const BasicOrbitBranch<Model>& there = *reached.branch;
+    const std::size_t last = there.orbits.size() - 1;
+    BasicMapOrbit<Model> orbit{.signature = there.orbits[last].signature.ToString(),
+                               .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
+                               .stable = Column(there, last, orbit_columns::kStable) == 1.0,
+                               .from = from,
+                               .orbit = there.orbits[last]};
+    const bool known = std::any_of(found.orbits.begin(), found.orbits.end(), [&](const BasicMapOrbit<Model>& o) {
+      return o.signature == orbit.signature && Distance(trace.model, o.orbit, orbit.orbit) <= options.same_orbit;
+    });
+    if (!known) found.orbits.push_back(std::move(orbit));
   }
   return found;
 }

@@ -13,7 +13,9 @@
 //            interior point is the centre of its cell farthest (chessboard distance) from every cut
 //            cell and from the rectangle's edges.
 //   content  at each interior point (a, b), every orbit of the trace there: on each branch, at
-//            each pair of consecutive points whose first parameter straddles a, the nearer one is
+//            each pair of consecutive points whose first parameter straddles a, the nearer one (on
+//            a branch that does not pass a, its end nearer a, after the others; where that one
+//            does not get there it is no failure: its type may end on the way) is
 //            continued in the first parameter to a, then in the second to b (each continuation
 //            ends on its bound, exactly at the value; past changes of type, so the orbit may come
 //            out not admissible: no motion of that type there); orbits found twice (same type,
@@ -141,8 +143,9 @@ struct BasicMapRegion {
   int clearance = 0;    // its distance from the nearest cut cell or edge, in cells
   std::vector<BasicMapOrbit<Model>> orbits;  // every orbit found there, deduplicated, in the order found
   std::vector<std::string> failures;  // continuations that did not reach the point (where, why)
-  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no periodic
-  // motion"; with failures, how many continuations did not reach the point ("unknown: ..." if none did).
+  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no motion of
+  // the trace's types" (another may be there); with failures, how many continuations did not reach
+  // the point ("unknown: ..." if none did).
   std::string Label() const;
   // The admissible stable orbits' types, sorted.
   std::vector<std::string> StableTypes() const;
