@@ -47,42 +47,47 @@ std::string ReadWholeFile(const std::string& path, const std::string& field, con
   return text.str();
 }
 
-// Each corner of the rectangle, with the trace's other data, must be valid model data. A violation
-// is blamed on the bound given: u_s's range given u_r where u_r >= u_s fails for u_s given.
-void CheckCorners(const MapRectangle& r, const Parameters& base) {
-  const ParameterId first = *ParameterFromString(r.first), second = *ParameterFromString(r.second);
+// Each corner of the rectangle, with the trace's other data, must be valid model data: `error_at(a,
+// b)` is the model's refusal of the corner (first = a, second = b), if any. A violation is blamed on
+// the bound given: u_s's range given u_r where u_r >= u_s fails for u_s given; a held parameter's
+// range (F_s >= F_k, F_s held, F_k the second) on the bound that leaves it.
+template <typename CornerError>
+void CheckCorners(const MapRectangle& r, const CornerError& error_at) {
   for (double a : {r.first_min, r.first_max}) {
     for (double b : {r.second_min, r.second_max}) {
-      Parameters p = base;
-      p[first] = a;
-      p[second] = b;
-      std::optional<InvalidInput> error = Validate(p, second);
-      if (error && error->field() != r.second) error = Validate(p, first);
-      if (error) {
-        const bool is_first = error->field() == r.first;
-        throw InvalidInput(is_first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
-                           is_first ? a : b, fmt::format("a valid {}: {}", error->field(), error->valid_range()));
-      }
+      const std::optional<InvalidInput> error = error_at(a, b);
+      if (!error) continue;
+      const bool is_first = error->field() == r.first;
+      const bool axis = is_first || error->field() == r.second;
+      throw InvalidInput(is_first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
+                         is_first ? a : b,
+                         fmt::format("{} {}: {}", axis ? "a valid" : "one with which the trace's", error->field(),
+                                     axis ? error->valid_range() : error->valid_range() + " holds"));
     }
   }
 }
 
-// A [model]'s corners: each with the trace's other parameters valid for the model.
+void CheckCorners(const MapRectangle& r, const Parameters& base) {
+  const ParameterId first = *ParameterFromString(r.first), second = *ParameterFromString(r.second);
+  CheckCorners(r, [&](double a, double b) {
+    Parameters p = base;
+    p[first] = a;
+    p[second] = b;
+    std::optional<InvalidInput> error = Validate(p, second);
+    if (error && error->field() != r.second) error = Validate(p, first);
+    return error;
+  });
+}
+
 void CheckCorners(const MapRectangle& r, const DynamicLinearOscillator& model, const DynamicLinearOscillator::Parameters& base) {
   const ModelDescription& d = model.Description();
   const int first = *d.ParameterIndex(r.first), second = *d.ParameterIndex(r.second);
-  for (double a : {r.first_min, r.first_max}) {
-    for (double b : {r.second_min, r.second_max}) {
-      DynamicLinearOscillator::Parameters p = base;
-      DynamicLinearOscillator::ParameterAt(p, first) = a;
-      DynamicLinearOscillator::ParameterAt(p, second) = b;
-      if (const std::optional<InvalidInput> error = model.Validate(p)) {
-        const bool is_first = error->field() == r.first;
-        throw InvalidInput(is_first ? (a == r.first_min ? "first-from" : "first-to") : (b == r.second_min ? "second-from" : "second-to"),
-                           is_first ? a : b, fmt::format("a valid {}: {}", error->field(), error->valid_range()));
-      }
-    }
-  }
+  CheckCorners(r, [&](double a, double b) {
+    DynamicLinearOscillator::Parameters p = base;
+    DynamicLinearOscillator::ParameterAt(p, first) = a;
+    DynamicLinearOscillator::ParameterAt(p, second) = b;
+    return model.Validate(p);
+  });
 }
 
 // The rectangle: the trace's parameter over its range (or --first-from/--first-to), the second's as given.
@@ -141,6 +146,10 @@ int Report(const MapArgs& args, const BasicOrbitTypeMap<Model>& map, const Orbit
   int failed = 0;
   for (const BasicMapCurve<Model>& c : map.curves) {
     const BranchEnd end = c.branch.branch.end;
+    if (end == BranchEnd::kMaxPoints) {  // inside the rectangle: the regions on its sides may be joined
+      fmt::print(stderr, "note: curve {} ({} from {}) stopped after {} points (max_curve_points) inside the rectangle\n",
+                 c.id, c.kind, c.from, c.branch.orbits.size());
+    }
     if (end != BranchEnd::kStartFailed && end != BranchEnd::kStepTooSmall) continue;
     ++failed;
     fmt::print(stderr, "curve {} ({} from {}): {}: {}\n", c.id, c.kind, c.from, ToString(end), c.branch.branch.end_message);
@@ -148,35 +157,64 @@ int Report(const MapArgs& args, const BasicOrbitTypeMap<Model>& map, const Orbit
   return failed > 0 ? kExitNoConvergence : kExitOk;
 }
 
-double SecondsSince(std::chrono::steady_clock::time_point started) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+// The map with the command's raster and progress line, and the seconds it took.
+template <OscillatorModel Model>
+std::pair<BasicOrbitTypeMap<Model>, double> BuildShowingProgress(const BasicMapTrace<Model>& input, const MapRectangle& r,
+                                                                 const MapArgs& args) {
+  OrbitTypeMapOptions options;
+  options.raster = args.raster;
+  options.min_region = args.min_region;
+  ProgressLine line("map");
+  options.progress = line.Callback();
+  const auto started = std::chrono::steady_clock::now();
+  BasicOrbitTypeMap<Model> map = BuildOrbitTypeMap(input, r, options);
+  line.Clear();
+  return {std::move(map), std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()};
+}
+
+// An antisymmetric orbit is a motion only on a fixed surface (its mirror half slips the other way
+// on a moving one): a map in the belt's speed from a trace of them is refused, as a curve in it is.
+void CheckSurfaceStaysFixed(const BasicMapTrace<DynamicLinearOscillator>& trace, const std::string& second) {
+  const ModelDescription& d = trace.model.Description();
+  if (d.ParameterIndex(second) != DynamicLinearOscillator::kRestVelocityParameter) return;
+  for (const BasicMapTraceBranch<DynamicLinearOscillator>& b : trace.branches) {
+    if (!b.orbits.front().signature.antisymmetric()) continue;
+    throw InvalidInput("second", "'" + second + "'",
+                       fmt::format("a parameter other than {0}: the trace's {1} holds the antisymmetric '{2}', a motion "
+                                   "only where {0} = 0 (trace it written over its whole period, or in {0})",
+                                   second, b.name, b.orbits.front().signature.ToString()));
+  }
 }
 
 // A [model]'s trace: its parameters by the model's names, in its units.
 int RunModelMap(const MapArgs& args, const CLI::App& cmd, const StoredTrace& trace) {
   if (cmd.count("--brute-force") > 0) {
     throw InvalidInput("brute-force", "'" + args.brute_force + "'",
-                       "no comparison for a [model]'s trace yet (the paper's model's maps only): leave it out");
+                       "none for a [model]'s trace (its brute-force maps record amplitudes, not orbit types): leave it out");
   }
   const std::optional<RunFile> run = TraceRunFile(trace);
-  const BasicMapTrace<DynamicLinearOscillator> input = ModelMapTraceOf(trace, args.trace, run ? &*run : nullptr, args.second);
-  const ModelDescription& d = input.model.Description();
-  const int first = d.VariedParameter("trace", trace.parameter, input.model.Autonomous());
-  const int second = d.VariedParameter("second", args.second, input.model.Autonomous());
-  if (second == first) throw InvalidInput("second", "'" + args.second + "'", fmt::format("a parameter other than the trace's {}", trace.parameter));
+  BasicMapTrace<DynamicLinearOscillator> input = [&] {
+    try {
+      return ModelMapTraceOf(trace, args.trace, run ? &*run : nullptr);
+    } catch (const InvalidInput& e) {  // its model's file: gone, changed, or none (a trace of --set)
+      throw InvalidInput::WithMessage("trace", fmt::format("trace = '{}' cannot be mapped: {}", args.trace, e.what()));
+    }
+  }();
   const MapRectangle r = RectangleOf(args, cmd, trace);
   CheckOrder(r);
-  if (input.branches.empty()) throw InvalidInput("trace", "'" + args.trace + "'", "a trace with points");
+  try {
+    r.Validate(input.model.Description(), input.model.Autonomous());
+  } catch (const InvalidInput& e) {
+    if (e.field() == "first") throw e.Renamed("trace");
+    throw;
+  }
+  CheckSurfaceStaysFixed(input, args.second);
   CheckCorners(r, input.model, input.branches.front().orbits.front().parameters);
-  OrbitTypeMapOptions options{.raster = args.raster, .min_region = args.min_region};
-  ProgressLine line("map");
-  options.progress = line.Callback();
-  const auto started = std::chrono::steady_clock::now();
-  const BasicOrbitTypeMap<DynamicLinearOscillator> map = BuildOrbitTypeMap(input, r, options);
-  line.Clear();
-  const double seconds = SecondsSince(started);
-  // A trace of find --model names the [model]'s file, no run file: its steps were the defaults too.
-  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr, "");
+  const auto [map, seconds] = BuildShowingProgress(input, r, args);
+  // A trace of find --model names the [model]'s file, which holds no continuation steps: they are
+  // the defaults here, whatever find's --ds were.
+  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr,
+                run ? "" : trace.run_file);
 }
 
 int RunMap(const MapArgs& args, const CLI::App& cmd) {
@@ -213,16 +251,8 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
     }
   }
   const std::optional<RunFile> run = TraceRunFile(trace);
-  OrbitTypeMapOptions options;
-  options.raster = args.raster;
-  options.min_region = args.min_region;
-  ProgressLine line("map");
-  options.progress = line.Callback();
-  const auto started = std::chrono::steady_clock::now();
   const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
-  const OrbitTypeMap map = BuildOrbitTypeMap(input, r, options);
-  line.Clear();
-  const double seconds = SecondsSince(started);
+  const auto [map, seconds] = BuildShowingProgress(input, r, args);
   std::optional<MapComparison> comparison;
   if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);
   const OrbitTypeMapFiles files = FormatOrbitTypeMapFiles(map, args.trace, comparison ? &*comparison : nullptr, args.brute_force);

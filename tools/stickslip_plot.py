@@ -1554,6 +1554,53 @@ def _trace_frequencies(otm):
         return ()
 
 
+# How a region that is not uniform is drawn: a grey diagonal hatch over its cells (its fill, from
+# the types at its interior point, as any region's), and the legend's word for it.
+NOT_UNIFORM_HATCH = dict(hatch="//", edgecolor="0.55", facecolor="none", lw=0)
+NOT_UNIFORM_LEGEND = "not uniform: a boundary is missing"
+
+
+def _not_uniform_regions(otm):
+    """The map's regions that are not uniform: a point of the trace inside differs from the orbits
+    found at the region's interior point ("differing" > 0; a map written before the key existed
+    has none; anything but a number counts as none)."""
+    return [r for r in otm.regions["regions"] if isinstance(r.get("differing"), (int, float)) and r["differing"] > 0]
+
+
+def _hatch_regions(ax, otm, extent):
+    """Hatches the cells of each region of the map that is not uniform (one patch per region, the
+    runs of its cells row by row); the legend's handle, or None where every region is uniform."""
+    from matplotlib.patches import Patch, PathPatch
+    from matplotlib.path import Path
+    hatched = {r["id"] for r in _not_uniform_regions(otm)}
+    if not hatched:
+        return None
+    n = otm.regions["raster"]
+    dx, dy = (extent[1] - extent[0]) / n, (extent[3] - extent[2]) / n
+    runs = {rid: [] for rid in hatched}
+    for j, row in enumerate(otm.regions["cells"]):
+        ids = [int(v) for v in row.split()] + [0]
+        start = None
+        for i, rid in enumerate(ids):
+            if start is not None and rid != ids[start]:
+                runs[ids[start]].append((start, i, j))
+                start = None
+            if start is None and rid in hatched:
+                start = i
+    for rid in sorted(runs):
+        if not runs[rid]:
+            continue
+        vertices, codes = [], []
+        for i0, i1, j in runs[rid]:
+            x0, x1 = extent[0] + i0 * dx, extent[0] + i1 * dx
+            y0, y1 = extent[2] + j * dy, extent[2] + (j + 1) * dy
+            vertices += [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]
+            codes += [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY]
+        ax.add_patch(PathPatch(Path(vertices, codes), zorder=1, gid=f"not-uniform-region-{rid}", **NOT_UNIFORM_HATCH))
+    return Patch(hatch=NOT_UNIFORM_HATCH["hatch"], edgecolor=NOT_UNIFORM_HATCH["edgecolor"], facecolor="white",
+                 lw=0.6, label=NOT_UNIFORM_LEGEND)
+
+
 def _plane_figure(results, options, plt):
     import numpy as np
     from matplotlib.lines import Line2D
@@ -1599,6 +1646,7 @@ def _plane_figure(results, options, plt):
                     image[j, i] = (0.85, 0.85, 0.85)
         ax, canvas = axes[0], canvases[0]
         ax.imshow(image, origin="lower", extent=extent, aspect="auto", interpolation="nearest")
+        not_uniform = _hatch_regions(ax, otm, extent)
         kinds = sorted({c["kind"] for c in otm.curves.values()})
         strong = plt.get_cmap("tab10").colors
         colours = {k: strong[m % len(strong)] for m, k in enumerate(kinds)}
@@ -1609,8 +1657,11 @@ def _plane_figure(results, options, plt):
             canvas.mark(text, x, y, "o", "white", 5, "codimension-two point")
             if len(canvas.labels) > count:  # the short form: the types met there only
                 canvas.labels[-1] = canvas.labels[-1] + (text.split(" (")[0],)
+        hatched = {r["id"] for r in _not_uniform_regions(otm)}
         for r in otm.regions["regions"]:
-            ax.annotate(str(r["id"]), (r[first], r[second]), fontsize=pt(7), ha="center", va="center", color="0.3")
+            # A hatched region's number on white, where the hatch would cross it.
+            behind = dict(bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none")) if r["id"] in hatched else {}
+            ax.annotate(str(r["id"]), (r[first], r[second]), fontsize=pt(7), ha="center", va="center", color="0.3", **behind)
         start = _trace_start(otm)
         # The paper's maps are traced from its example; a [model]'s from the user's own start.
         started = "the trace's start" + (" (the paper's example)" if otm.chi_eta else "")
@@ -1618,6 +1669,8 @@ def _plane_figure(results, options, plt):
             if start:
                 c.mark("", *start, "*", "gold", 12, started)
         canvas.extra += [Line2D([], [], ls="", marker="s", ms=9, color=shade[t], label=f"stable: {t}") for t in types]
+        if not_uniform:
+            canvas.extra.append(not_uniform)
         ax.set_title(f"{'(a) ' if ms else ''}stable orbit types, from the orbit-type map {_escaped(otm.name)}", fontsize=pt(9))
         if ms:
             ax = axes[1]

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include "stickslip/branches/trace.hpp"
@@ -138,6 +140,14 @@ TEST(OrbitsAt, ContinuesTheTracesOrbitsUnderTheTracesMaxAmplitude) {
   EXPECT_EQ(region.Label(), "no motion of the trace's types");
 }
 
+// A branch's recorded column `name` at point `p`.
+double Recorded(const BasicOrbitBranch<DynamicLinearOscillator>& branch, const BranchPoint& p, std::string_view name) {
+  for (const PointColumn& c : branch.columns) {
+    if (c.name == name) return c.monitored ? p.tests(c.index) : p.recorded(c.index);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 // A trace's branches and special points as the map's input, each branch's unknowns its type's at
 // fixed parameters: what io/orbit_type_map_files.hpp reads back from a stored trace.
 BasicMapTrace<DynamicLinearOscillator> MapTraceOfTrace(const DynamicLinearOscillator& model,
@@ -152,6 +162,10 @@ BasicMapTrace<DynamicLinearOscillator> MapTraceOfTrace(const DynamicLinearOscill
                                                      orbits, {}};
       for (const SpecialPoint& p : link.branch.branch.special_points) {
         b.special.push_back({b.name, p.type, p.type, p.test_function, orbits[p.point]});
+      }
+      for (const BranchPoint& p : link.branch.branch.points) {
+        b.admissible.push_back(Recorded(link.branch, p, orbit_columns::kAdmissible) == 1.0);
+        b.stable.push_back(Recorded(link.branch, p, orbit_columns::kStable) == 1.0);
       }
       map.branches.push_back(std::move(b));
     }
@@ -216,6 +230,7 @@ TEST(ModelOrbitTypeMap, CutsDenHartogsRectangleAlongTheClosedFormStickBoundary) 
     });
     EXPECT_EQ(sticking_motion, sticks) << region.Label();
     EXPECT_TRUE(region.failures.empty()) << region.failures.front();
+    EXPECT_EQ(region.differing, 0) << region.Label() << ": " << fmt::format("{}", fmt::join(region.elsewhere, "; "));
   }
 }
 

@@ -11,6 +11,9 @@ small results made from the stored ones:
   axes, titles in words (no internal end codes);
 - each special point's legend entry by its code: a curve's resonances R1 to R4 and its fold-flip
   LPPD as such, never as a change of orbit type;
+- an orbit-type map's region that is not uniform ("differing" > 0 in regions.json: a boundary is
+  missing) hatched over its cells, its fill as before, and named in the legend; a map whose regions
+  all have differing 0 draws as one written before the key existed (no key), byte for byte;
 - every invalid option: exit 2, one line naming the option, the value and the valid range, nothing
   written; without matplotlib exit 3, nothing written.
 
@@ -51,12 +54,14 @@ def head_of_csv(source, target, keep):
                 writer.writerow(row)
 
 
-def write_model_map(work, name, units=None, trace="model-trace"):
+def write_model_map(work, name, units=None, trace="model-trace", differing=None):
     """A small orbit-type map of a [model] (Den Hartog's one mass, over (omega, F_s)), written as
     `stickslip map` writes one: regions.json on a 4 x 4 raster, curves.csv with the model's own
     parameters' columns (no chi, eta), curve-1/summary.json naming the model and, when given, its
     units; beside it its trace, whose trace.json lists the slip's natural frequency, 1 (inside the
-    map's omega range). Returns the map's directory."""
+    map's omega range). Without `differing` its regions have no "differing" key (a map written
+    before it existed); with it, region 1 has differing 0 and region 2 (its cells (0, 2), (0, 3)
+    and (1, 3), column and row) `differing` (> 0: not uniform). Returns the map's directory."""
     directory = os.path.join(work, name)
     os.makedirs(os.path.join(directory, "curve-1"))
     os.makedirs(os.path.join(work, "model-trace", "branch-1"), exist_ok=True)
@@ -95,6 +100,14 @@ def write_model_map(work, name, units=None, trace="model-trace"):
                            "special_points": [{"label": "EP1", "type": "EP", "test_function": "start", "omega": 0.8,
                                                "F_s": 0.3}]}],
                "skipped": 0, "comparison": None, "cells": cells}
+    if differing is not None:
+        first, second = regions["regions"]
+        first.update(differing=0, elsewhere=[])
+        second.update(differing=differing, elsewhere=[
+            f"branch-1 pt {k} at (omega, F_s) = (0.8{k}, 0.55): slip+ / antisymmetric (stable)"
+            for k in range(1, min(differing, 5) + 1)])
+        if differing > 0:
+            second["label"] = f"not uniform: slip+ stick / antisymmetric (stable), {differing} place(s) differ"
     with open(os.path.join(directory, "regions.json"), "w") as f:
         json.dump(regions, f, indent=2)
     return directory
@@ -128,6 +141,8 @@ class Small:
         self.orbit_type_map = os.path.join(RESULTS, "maps", "paper-6-omega-u_r")
         self.orbit_type_map_51 = os.path.join(RESULTS, "maps", "paper-5.1-omega-u_r")
         self.model_map = write_model_map(work, "model-map", units={"length": "mm", "time": "ms", "force": "kN"})
+        # Its region 2 not uniform (a boundary the map lacks crosses it).
+        self.not_uniform_map = write_model_map(work, "not-uniform-map", differing=3)
 
     def kinds(self):
         """(name, inputs, options) of every kind and overlay."""
@@ -135,6 +150,7 @@ class Small:
                 ("trace-followed", [self.followed], []), ("sweep", [self.sweep], []),
                 ("map-sweep", [self.map_sweep], []), ("orbit-type-map", [self.orbit_type_map], []),
                 ("model-orbit-type-map", [self.model_map], []),
+                ("not-uniform-orbit-type-map", [self.not_uniform_map], []),
                 ("branches-and-sweep", [self.branch, os.path.join(RESULTS, "paper-5.1-omega-down"), self.sweep], []),
                 ("map-with-brute-force-and-curve", [self.orbit_type_map_51, self.curve], []),
                 ("orbit-type-map-and-map-sweep", [self.orbit_type_map, self.map_sweep], []),
@@ -330,6 +346,55 @@ class PlotKinds(unittest.TestCase):
         fig = sp.figure([lost])
         self.assertFalse(any(line.get_linestyle() == ":" for line in fig.axes[0].get_lines()))
         plt.close(fig)
+
+    def test_a_region_not_uniform_is_hatched(self):
+        # Region 2 (differing 3) hatched over its cells and nothing else: one patch with a hatch,
+        # covering its three cells (0.1 x 0.1 each, from (0.8, 0.2)) and none of region 1's.
+        not_uniform = "not uniform: a boundary is missing"
+
+        def hatched_patches(fig):
+            return [p for p in fig.axes[0].patches if p.get_hatch()]
+
+        fig = sp.figure([self.small.not_uniform_map])
+        hatched = hatched_patches(fig)
+        self.assertEqual(len(hatched), 1)
+        path = hatched[0].get_path().transformed(hatched[0].get_patch_transform())
+        for x, y, inside in ((0.85, 0.45, True), (0.85, 0.55, True), (0.95, 0.55, True), (0.95, 0.45, False),
+                             (1.05, 0.55, False), (0.85, 0.35, False), (1.15, 0.25, False)):
+            self.assertEqual(path.contains_point((x, y)), inside, (x, y))
+        # Its fill as before (the cells' colour under the hatch: the patch has no face).
+        self.assertEqual(hatched[0].get_facecolor()[3], 0.0)
+        legend = fig.axes[0].get_legend()
+        texts = [t.get_text() for t in legend.get_texts()]
+        self.assertEqual(texts.count(not_uniform), 1, texts)
+        handles = getattr(legend, "legend_handles", None) or legend.legendHandles
+        self.assertTrue(handles[texts.index(not_uniform)].get_hatch())
+        plt.close(fig)
+        # Drawn with a brute-force map beside it: the legend (beside the last panel) still names it.
+        fig = sp.figure([self.small.orbit_type_map, self.small.map_sweep])
+        regions = sp.load(self.small.orbit_type_map).regions["regions"]
+        expected = sum(1 for r in regions if r.get("differing", 0) > 0)
+        self.assertEqual(len(hatched_patches(fig)), expected)
+        self.assertEqual([t.get_text() for t in fig.axes[-1].get_legend().get_texts()].count(not_uniform),
+                         1 if expected else 0)
+        plt.close(fig)
+        # Maps without "differing" keys, and with every region's 0: drawn, nothing hatched, no entry.
+        for path in (self.small.model_map, write_model_map(self.work, "uniform-map", differing=0)):
+            fig = sp.figure([path])
+            self.assertEqual(hatched_patches(fig), [])
+            self.assertNotIn(not_uniform, [t.get_text() for t in fig.axes[0].get_legend().get_texts()])
+            plt.close(fig)
+        # Byte for byte the same figure: the same map (its name is in the title) with and without
+        # the keys, all 0.
+        pictures = []
+        for directory, differing in (("without-keys", None), ("all-zero", 0)):
+            path = write_model_map(os.path.join(self.work, directory), "map", differing=differing)
+            output = os.path.join(self.work, directory, "map.png")
+            done = run("--output", output, path)
+            self.assertEqual((done.returncode, done.stderr), (0, ""))
+            with open(output, "rb") as f:
+                pictures.append(f.read())
+        self.assertEqual(pictures[0], pictures[1])
 
     def test_natural_frequencies_solve_eq_56(self):
         import numpy

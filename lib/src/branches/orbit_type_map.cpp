@@ -1,6 +1,7 @@
 #include "stickslip/branches/orbit_type_map.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -12,6 +13,7 @@
 #include "stickslip/branches/boundary_curve.hpp"
 #include "stickslip/branches/type_switch.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/orbits/verification.hpp"
 
 namespace stickslip {
 
@@ -28,12 +30,17 @@ double ValueOf(const Model& model, const OrbitOfModel<Model>& orbit, const std::
   }
 }
 
+// How far two orbits are apart (OrbitDistance): the paper's scaled variables as they are, a
+// [model]'s start state relative to the orbit's size and its period relative (its numbers are in
+// its units: a micrometre apart may be the whole orbit), its phase in radians.
 template <OscillatorModel Model>
 double Distance(const Model& model, const OrbitOfModel<Model>& a, const OrbitOfModel<Model>& b) {
   if constexpr (std::is_same_v<Model, Pascal2014>) {
     return OrbitDistance(a, b);
   } else {
-    return OrbitDistance(model, a, b);
+    const double period = PeriodOf(model, a);
+    return std::max({(a.start - b.start).template lpNorm<Eigen::Infinity>() / OrbitSize(model, a), std::abs(a.phi - b.phi),
+                     std::abs(PeriodOf(model, b) - period) / period});
   }
 }
 
@@ -95,6 +102,7 @@ template <OscillatorModel Model>
 struct Reached {
   std::optional<BasicOrbitBranch<Model>> branch;  // ending exactly on the target
   std::string why;
+  bool turned_back = false;  // not there: it ended back on its start's value (its family folds on the way)
 };
 
 // The branch of `setup` from its start to `target` of its parameter, ending exactly there (the
@@ -118,12 +126,22 @@ Reached<Model> ContinueTo(BasicOrbitContinuationSetup<Model> setup, double targe
   setup.options.detect_folds = false;
   setup.options.detect_branch_points = false;
   setup.options.progress = {};
-  BasicOrbitBranch<Model> branch = ContinueOrbit(setup);
+  BasicOrbitBranch<Model> branch;
+  try {
+    branch = ContinueOrbit(setup);
+  } catch (const InvalidInput& e) {  // a start the continuation refuses: a failure of this one only
+    return {std::nullopt, fmt::format("{} from {} to {}: {}", setup.parameter, from, target, e.what())};
+  }
   // The engine puts the last point on the bound to rounding (ContinuationOptions::bound_tolerance).
-  if (branch.branch.points.empty() ||
-      !(std::abs(branch.branch.points.back().lambda - target) <= 1e-12 * (1.0 + std::abs(target)))) {
-    return {std::nullopt, fmt::format("{} from {} to {}: {} ({})", setup.parameter, from, target,
-                                      ToString(branch.branch.end), branch.branch.end_message)};
+  const auto ends_on = [&branch](double value) {
+    return !branch.branch.points.empty() &&
+           std::abs(branch.branch.points.back().lambda - value) <= 1e-12 * (1.0 + std::abs(value));
+  };
+  if (!ends_on(target)) {
+    return {std::nullopt,
+            fmt::format("{} from {} to {}: {} ({})", setup.parameter, from, target, ToString(branch.branch.end),
+                        branch.branch.end_message),
+            ends_on(from)};
   }
   return {std::move(branch), {}};
 }
@@ -164,13 +182,20 @@ void MapRectangle::Validate(const ModelDescription& model, bool autonomous) cons
   ValidateBounds();
 }
 
+// A side narrower than this, relative to its values, is below what the curves' ends are located to.
+constexpr double kNarrowestSide = 1e-8;
+
 void MapRectangle::ValidateBounds() const {
-  if (!(std::isfinite(first_min) && std::isfinite(first_max) && first_min < first_max)) {
-    throw InvalidInput("first_min", first_min, fmt::format("finite, < first_max ({})", first_max));
-  }
-  if (!(std::isfinite(second_min) && std::isfinite(second_max) && second_min < second_max)) {
-    throw InvalidInput("second_min", second_min, fmt::format("finite, < second_max ({})", second_max));
-  }
+  const auto check = [](const char* field, double min, double max, const char* max_name) {
+    if (!(std::isfinite(min) && std::isfinite(max) && min < max)) {
+      throw InvalidInput(field, min, fmt::format("finite, < {} ({})", max_name, max));
+    }
+    if (!(max - min > kNarrowestSide * std::max(std::abs(min), std::abs(max)))) {
+      throw InvalidInput(field, min, fmt::format("< {} ({}) by more than {:g} of their size", max_name, max, kNarrowestSide));
+    }
+  };
+  check("first_min", first_min, first_max, "first_max");
+  check("second_min", second_min, second_max, "second_max");
 }
 
 void OrbitTypeMapOptions::Validate() const {
@@ -199,8 +224,14 @@ std::string BasicMapRegion<Model>::Label() const {
   const std::string incomplete =
       failures.empty() ? "" : fmt::format(" ({} continuation(s) of the trace's orbits did not reach it)", failures.size());
   // The map knows the trace's types only: another motion may well be there (a brute force tells).
-  if (parts.empty()) return failures.empty() ? "no motion of the trace's types" : "unknown: no motion of the trace's types found" + incomplete;
-  return fmt::format("{}", fmt::join(parts, "; ")) + incomplete;
+  std::string label;
+  if (parts.empty()) {
+    label = failures.empty() ? "no motion of the trace's types" : "unknown: no motion of the trace's types found" + incomplete;
+  } else {
+    label = fmt::format("{}", fmt::join(parts, "; ")) + incomplete;
+  }
+  if (differing == 0) return label;
+  return fmt::format("not uniform: {} at its interior point, {} place(s) differ", label, differing);
 }
 
 template <OscillatorModel Model>
@@ -353,8 +384,8 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
       if (again) continue;
       started.emplace_back(condition, p.orbit);
       const double second = ValueOf(trace.model, p.orbit, r.second), first = ValueOf(trace.model, p.orbit, r.first);
-      if (!(second >= r.second_min && second <= r.second_max && first >= r.first_min && first <= r.first_max)) {
-        continued.skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {}, {} = {})", r.first, first, r.second, second)});
+      if (!(second >= r.second_min && second <= r.second_max)) {
+        continued.skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {})", r.second, second)});
         continue;
       }
       const BasicOrbitContinuationSetup<Model> branch_setup = SetupAt(trace, p.orbit, b.unknowns, trace.parameter);
@@ -374,8 +405,9 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
         defining.insert(defining.end(), more.begin(), more.end());
       }
       ContinuationOptions& o = curve.options;
-      o.lambda_min = r.first_min;
-      o.lambda_max = r.first_max;
+      // A start left or right of the rectangle is continued from there: its curve may cross it.
+      o.lambda_min = std::min(r.first_min, first);
+      o.lambda_max = std::max(r.first_max, first);
       o.max_points = options.max_curve_points;
       o.user_values.clear();
       o.progress = {};
@@ -391,7 +423,12 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
         c.kind = condition;
         c.from = from;
         c.direction = direction;
-        c.branch = ContinueOrbit(curve);
+        try {
+          c.branch = ContinueOrbit(curve);
+        } catch (const InvalidInput& e) {  // a curve the continuation refuses gives none, the map goes on
+          continued.skipped.push_back({from, condition, e.what()});
+          break;
+        }
         for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
           c.admissible.push_back(AdmissibleApartFrom(c.branch, k, defining));
           c.stable.push_back(Column(c.branch, k, orbit_columns::kStable) == 1.0);
@@ -435,44 +472,134 @@ std::vector<ContentStart> ContentStarts(const Model& model, const BasicMapTraceB
 
 }  // namespace
 
+namespace {
+
+// The orbit at the end of `there` among `orbits`, unless one of its type is there already (within
+// `same_orbit`: the same motion found from another trace point).
+template <OscillatorModel Model>
+void AddOrbit(const Model& model, const BasicOrbitBranch<Model>& there, const std::string& from, double same_orbit,
+              std::vector<BasicMapOrbit<Model>>& orbits) {
+  const std::size_t last = there.orbits.size() - 1;
+  BasicMapOrbit<Model> orbit{.signature = there.orbits[last].signature.ToString(),
+                             .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
+                             .stable = Column(there, last, orbit_columns::kStable) == 1.0,
+                             .from = from,
+                             .orbit = there.orbits[last]};
+  const bool known = std::any_of(orbits.begin(), orbits.end(), [&](const BasicMapOrbit<Model>& o) {
+    return o.signature == orbit.signature && Distance(model, o.orbit, orbit.orbit) <= same_orbit;
+  });
+  if (!known) orbits.push_back(std::move(orbit));
+}
+
+// The branch of `setup` from its start to (a, b): in the first parameter, then in the second; with
+// `second_first`, the other way round (where the first way meets a fold of the orbit's family on the
+// trace's line, the second may pass beside it).
+template <OscillatorModel Model>
+Reached<Model> ContinueToPoint(BasicOrbitContinuationSetup<Model> setup, const MapRectangle& r, double a, double b,
+                               bool second_first, int max_points) {
+  const std::pair<const std::string*, double> first{&r.first, a}, second{&r.second, b};
+  Reached<Model> reached;
+  for (const auto& [name, target] : second_first ? std::array{second, first} : std::array{first, second}) {
+    setup.parameter = *name;
+    reached = ContinueTo(setup, target, max_points);
+    if (!reached.branch) return reached;
+    setup.start = reached.branch->orbits.back();
+  }
+  return reached;
+}
+
+}  // namespace
+
 template <OscillatorModel Model>
 BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRectangle& r, double a, double b,
                                  const OrbitTypeMapOptions& options) {
   // The branches that pass a first, then the others' ends: an orbit found twice keeps the first
-  // finding, the one continued the shorter way.
+  // finding, the one continued the shorter way; every start the first way, then every start the
+  // second way.
   std::vector<std::pair<const BasicMapTraceBranch<Model>*, ContentStart>> starts;
   for (const BasicMapTraceBranch<Model>& branch : trace.branches) {
     for (const ContentStart& start : ContentStarts(trace.model, branch, r.first, a)) starts.emplace_back(&branch, start);
   }
   std::stable_partition(starts.begin(), starts.end(), [](const auto& s) { return s.second.straddles; });
   BasicMapOrbitsAt<Model> found;
-  for (const auto& [branch, start] : starts) {
-    const std::string from = fmt::format("{} pt {}", branch->name, start.point + 1);
-    BasicOrbitContinuationSetup<Model> setup = SetupAt(trace, branch->orbits[start.point], branch->unknowns, r.first);
-    Reached<Model> reached = ContinueTo(setup, a, options.max_content_points);
-    if (reached.branch) {
-      setup.start = reached.branch->orbits.back();
-      setup.parameter = r.second;
-      reached = ContinueTo(setup, b, options.max_content_points);
+  std::vector<bool> there(starts.size(), false);
+  std::vector<std::optional<Reached<Model>>> failed(starts.size());  // the first way's failure, while the second fails too
+  for (bool second_first : {false, true}) {
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      const auto& [branch, start] = starts[k];
+      if (there[k]) continue;  // got there the first way
+      Reached<Model> reached = ContinueToPoint(SetupAt(trace, branch->orbits[start.point], branch->unknowns, r.first), r,
+                                               a, b, second_first, options.max_content_points);
+      if (!reached.branch) {
+        // A branch's end continued towards a point its type never reaches turns back: no failure.
+        if (!second_first && (start.straddles || !reached.turned_back)) failed[k] = std::move(reached);
+        continue;
+      }
+      there[k] = true;
+      failed[k].reset();
+      const std::string from = fmt::format("{} pt {}", branch->name, start.point + 1);
+      AddOrbit(trace.model, *reached.branch, from, options.same_orbit, found.orbits);
     }
-    if (!reached.branch) {
-      if (start.straddles) found.failures.push_back(fmt::format("{}: {}", from, reached.why));
-      continue;
-    }
-    const BasicOrbitBranch<Model>& there = *reached.branch;
-    const std::size_t last = there.orbits.size() - 1;
-    BasicMapOrbit<Model> orbit{.signature = there.orbits[last].signature.ToString(),
-                               .admissible = Column(there, last, orbit_columns::kAdmissible) == 1.0,
-                               .stable = Column(there, last, orbit_columns::kStable) == 1.0,
-                               .from = from,
-                               .orbit = there.orbits[last]};
-    const bool known = std::any_of(found.orbits.begin(), found.orbits.end(), [&](const BasicMapOrbit<Model>& o) {
-      return o.signature == orbit.signature && Distance(trace.model, o.orbit, orbit.orbit) <= options.same_orbit;
-    });
-    if (!known) found.orbits.push_back(std::move(orbit));
+  }
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    if (!failed[k]) continue;
+    const auto& [branch, start] = starts[k];
+    found.failures.push_back(
+        fmt::format("{} pt {}{}: {}", branch->name, start.point + 1, start.straddles ? "" : " (its end)", failed[k]->why));
   }
   return found;
 }
+
+namespace {
+
+// The admissible orbits' types with their stability, "slip- stick (stable)": what a region's
+// content and the trace's points are compared by.
+template <OscillatorModel Model>
+std::set<std::string> AdmissibleTypes(const std::vector<BasicMapOrbit<Model>>& orbits) {
+  std::set<std::string> types;
+  for (const BasicMapOrbit<Model>& o : orbits) {
+    if (o.admissible) types.insert(fmt::format("{} ({})", o.signature, o.stable ? "stable" : "unstable"));
+  }
+  return types;
+}
+
+// Whether a continuation from `branch` to the region's interior point failed: its orbits' absence
+// there says nothing.
+template <OscillatorModel Model>
+bool FailedFrom(const BasicMapRegion<Model>& region, const std::string& branch) {
+  const auto from = [&](const std::string& failure) { return failure.starts_with(branch + " pt "); };
+  return std::any_of(region.failures.begin(), region.failures.end(), from);
+}
+
+template <OscillatorModel Model>
+void NoteDiffering(BasicMapRegion<Model>& region, std::string where) {
+  constexpr std::size_t kListed = 5;
+  ++region.differing;
+  if (region.elsewhere.size() < kListed) region.elsewhere.push_back(std::move(where));
+}
+
+// Each admissible point of the trace inside a region must be among the region's admissible orbits
+// (but where its branch's continuation to the interior point failed).
+template <OscillatorModel Model>
+void CompareTracePoints(const BasicMapTrace<Model>& trace, BasicOrbitTypeMap<Model>& map) {
+  const MapRectangle& r = map.rectangle;
+  for (const BasicMapTraceBranch<Model>& b : trace.branches) {
+    if (b.admissible.size() != b.orbits.size() || b.stable.size() != b.orbits.size()) continue;
+    for (std::size_t k = 0; k < b.orbits.size(); ++k) {
+      const double first = ValueOf(trace.model, b.orbits[k], r.first), second = ValueOf(trace.model, b.orbits[k], r.second);
+      const int index = map.RegionAt(first, second);
+      if (index < 0 || !b.admissible[k]) continue;
+      BasicMapRegion<Model>& region = map.regions[static_cast<std::size_t>(index)];
+      if (FailedFrom(region, b.name)) continue;
+      const std::string type = fmt::format("{} ({})", b.orbits[k].signature.ToString(), b.stable[k] ? "stable" : "unstable");
+      if (AdmissibleTypes(region.orbits).contains(type)) continue;
+      NoteDiffering(region, fmt::format("{} pt {} at ({}, {}) = ({:.6g}, {:.6g}): {}", b.name, k + 1, r.first, r.second, first,
+                                        second, type));
+    }
+  }
+}
+
+}  // namespace
 
 template <OscillatorModel Model>
 BasicOrbitTypeMap<Model> BuildOrbitTypeMap(const BasicMapTrace<Model>& trace, const MapRectangle& rectangle,
@@ -501,6 +628,7 @@ BasicOrbitTypeMap<Model> BuildOrbitTypeMap(const BasicMapTrace<Model>& trace, co
     const double starts = StartSteps(trace);
     Report(options, starts + static_cast<double>(k + 1), starts + static_cast<double>(map.regions.size()), "steps");
   }
+  CompareTracePoints(trace, map);
   return map;
 }
 

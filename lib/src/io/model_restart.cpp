@@ -69,9 +69,10 @@ std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::p
   }
   const std::filesystem::path file = run.summary.run_file;
   std::error_code error;
-  if (file.is_absolute() || std::filesystem::exists(file, error)) return file;
-  // A path relative to where the run was made: the working directory then, or a directory above
-  // the results (the project's root, where tools/run.sh writes results/).
+  if (file.is_absolute()) return file;
+  // A path relative to where the run was made: a directory above the results (the project's root,
+  // where tools/run.sh writes results/), nearest first, else the working directory. Those above
+  // come first: a file of the same name where the command runs now may be another model's.
   for (std::filesystem::path above = std::filesystem::absolute(run_directory, error); !above.empty();
        above = above.parent_path()) {
     if (std::filesystem::exists(above / file, error)) return above / file;
@@ -80,14 +81,8 @@ std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::p
   return file;
 }
 
-ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory) {
-  return ReadModelFileStart(ModelFileOf(run, run_directory), {});
-}
-
-namespace {
-
-// A restart writes the stored numbers again under the run file's units: refused where they are no
-// longer the run's, which would relabel every number (the numbers are the same in any units).
+// What reads a stored run writes its numbers again under the run file's units: refused where they
+// are no longer the run's, which would relabel every number (the numbers are the same in any units).
 void CheckUnitsUnchanged(const StoredRun& run, const ModelFileStart& file) {
   const ModelUnits& now = file.model.Description().units;
   if (now == run.summary.units) return;
@@ -98,7 +93,9 @@ void CheckUnitsUnchanged(const StoredRun& run, const ModelFileStart& file) {
                               run.summary.output, text(run.summary.units), run.summary.run_file, text(now)));
 }
 
-}  // namespace
+ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory) {
+  return ReadModelFileStart(ModelFileOf(run, run_directory), {});
+}
 
 std::vector<DynamicLinearOscillator::State> SampledStoredOrbit(const ModelFileStart& file, const BasicOrbit<Model>& orbit,
                                                                int samples, const StoredRun& run, const std::string& label) {

@@ -125,7 +125,9 @@ std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>
                            {"label", region.Label()},
                            {"stable_types", region.StableTypes()},
                            {"orbits", orbits},
-                           {"failures", region.failures}});
+                           {"failures", region.failures},
+                           {"differing", region.differing},
+                           {"elsewhere", region.elsewhere}});
   }
   Json curves = Json::array();
   for (const BasicMapCurve<Model>& c : map.curves) {
@@ -206,11 +208,37 @@ std::string FormatComparisonMd(const OrbitTypeMap& map, const MapComparison& c, 
 
 }  // namespace
 
-MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
-  MapTrace map;
+namespace {
+
+// The trace's branches with their points (admissible, stable) and special points into `map`, each
+// orbit by `orbit_of(stored run, point)`, each branch's unknowns by `unknowns_of(its first orbit)`;
+// its steps and max_amplitude `run`'s (nullptr: the defaults).
+template <OscillatorModel Model, typename OrbitOf, typename UnknownsOf>
+void AddTrace(const StoredTrace& trace, const RunFile* run, const OrbitOf& orbit_of, const UnknownsOf& unknowns_of,
+              BasicMapTrace<Model>& map) {
   map.parameter = trace.parameter;
   if (run) SetContinuationOptions(*run, &map.options);
   if (run && run->trace) map.max_amplitude = run->trace->max_amplitude;
+  for (std::size_t k = 0; k < trace.branches.size(); ++k) {
+    const StoredRun& stored = trace.runs[k];
+    BasicMapTraceBranch<Model> b{.name = trace.branches[k].name, .unknowns = {}, .orbits = {}, .special = {}};
+    for (const StoredPoint& p : stored.branch) {
+      b.orbits.push_back(orbit_of(stored, p));
+      b.admissible.push_back(p.admissible);
+      b.stable.push_back(p.stable);
+    }
+    if (b.orbits.empty()) continue;
+    b.unknowns = unknowns_of(b.orbits.front());
+    for (const StoredSpecialPoint& s : stored.special_points) {
+      b.special.push_back({b.name, s.point.label, s.type, s.test_function, orbit_of(stored, s.point)});
+    }
+    map.branches.push_back(std::move(b));
+  }
+}
+
+}  // namespace
+
+MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
   // The trace's unknowns as its start had them: a preset's (paper-4.2 releases u_s, tied to u_r),
   // then the run file's. Its restart point gives values only, so it is not read.
   UnknownChoice unknowns;
@@ -219,49 +247,25 @@ MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run) {
     choice.restart_run.clear();
     unknowns = StartUnknowns(StartInputOf(choice, {}));
   }
-  for (std::size_t k = 0; k < trace.branches.size(); ++k) {
-    const StoredRun& stored = trace.runs[k];
-    MapTraceBranch b{.name = trace.branches[k].name, .unknowns = unknowns, .orbits = {}, .special = {}};
-    for (const StoredPoint& p : stored.branch) b.orbits.push_back(OrbitOf(stored, p));
-    for (const StoredSpecialPoint& s : stored.special_points) {
-      b.special.push_back({trace.branches[k].name, s.point.label, s.type, s.test_function, OrbitOf(stored, s.point)});
-    }
-    map.branches.push_back(std::move(b));
-  }
+  MapTrace map;
+  AddTrace(
+      trace, run, [](const StoredRun& stored, const StoredPoint& p) { return OrbitOf(stored, p); },
+      [&unknowns](const Orbit&) { return unknowns; }, map);
   return map;
 }
 
 BasicMapTrace<DynamicLinearOscillator> ModelMapTraceOf(const StoredTrace& trace, const fs::path& trace_directory,
-                                                       const RunFile* run, const std::string& second) {
+                                                       const RunFile* run) {
   using Model = DynamicLinearOscillator;
   const ModelFileStart file = ModelOfStoredRun(trace.runs.front(), trace_directory);
-  const ModelDescription& description = file.model.Description();
-  const std::optional<int> first_index = description.ParameterIndex(trace.parameter);
-  const std::optional<int> second_index = description.ParameterIndex(second);
-  // An antisymmetric orbit is a motion only on a fixed surface: over a belt's speed it is written
-  // over its whole period (ContinuableIn), as the trace in that speed wrote it.
-  const auto unfolded = [&](BasicOrbit<Model> orbit) {
-    for (const std::optional<int>& k : {first_index, second_index}) {
-      if (k) orbit = ContinuableIn(std::move(orbit), *k);
-    }
-    return orbit;
-  };
-  BasicMapTrace<Model> map{.parameter = trace.parameter, .options = {}, .shooting = ShootingChoice::kAuto,
+  CheckUnitsUnchanged(trace.runs.front(), file);
+  BasicMapTrace<Model> map{.parameter = {}, .options = {}, .shooting = ShootingChoice::kAuto,
                            .max_amplitude = kDefaultMaxAmplitude, .branches = {}, .model = file.model};
-  if (run) SetContinuationOptions(*run, &map.options);
-  if (run && run->trace) map.max_amplitude = run->trace->max_amplitude;
-  for (std::size_t k = 0; k < trace.branches.size(); ++k) {
-    const StoredRun& stored = trace.runs[k];
-    const auto orbit = [&](const StoredPoint& p) { return unfolded(OrbitOf(file.model, file.parameters, stored, p)); };
-    BasicMapTraceBranch<Model> b{.name = trace.branches[k].name, .unknowns = {}, .orbits = {}, .special = {}};
-    for (const StoredPoint& p : stored.branch) b.orbits.push_back(orbit(p));
-    if (b.orbits.empty()) continue;
-    b.unknowns = UnknownsAtFixedParameters(VariableSetOf(file.model, b.orbits.front().signature));
-    for (const StoredSpecialPoint& s : stored.special_points) {
-      b.special.push_back({trace.branches[k].name, s.point.label, s.type, s.test_function, orbit(s.point)});
-    }
-    map.branches.push_back(std::move(b));
-  }
+  AddTrace(
+      trace, run,
+      [&file](const StoredRun& stored, const StoredPoint& p) { return OrbitOf(file.model, file.parameters, stored, p); },
+      [&file](const BasicOrbit<Model>& o) { return UnknownsAtFixedParameters(VariableSetOf(file.model, o.signature)); },
+      map);
   if (!map.branches.empty()) {
     SampledStoredOrbit(file, map.branches.front().orbits.front(), 2, trace.runs.front(), "its first point");
   }
@@ -322,6 +326,21 @@ void CheckOrbitTypeMapDirectory(const fs::path& directory) {
   if (CanCreateFileIn(directory)) throw InvalidInput("output", shown, "a map's directory that can be written");
 }
 
+namespace {
+
+// Whether the map in `directory` (if any) was compared with a brute-force map (its regions.json's
+// comparison not null): then its comparison.md is its own.
+bool HadComparison(const fs::path& directory) {
+  try {
+    const Json json = detail::ParseJsonObject(detail::ReadTextFile(directory / kRegionsJson), directory / kRegionsJson);
+    return json.contains("comparison") && !json["comparison"].is_null();
+  } catch (const InvalidInput&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const OrbitTypeMapFiles& files) {
   CheckOrbitTypeMapDirectory(directory);
   const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
@@ -331,12 +350,17 @@ std::vector<std::string> WriteOrbitTypeMapFiles(const fs::path& directory, const
   // The curves' directories are curve-<k>; "curve-3-continued" or "curve-notes.md" is the user's.
   // In them, their run files; anything else there is the user's too. Of the old directory's curves
   // only those its regions.json lists are the map's: a "curve-9" it does not list is kept whole.
-  const auto own_file = [](std::string_view name) { return name == kCurvesCsv || name == kRegionsJson || name == kComparisonMd; };
-  const detail::OwnedEntry ours =
-      detail::EntriesWithRuns(own_file, [](std::string_view name) { return detail::IsNumberedName(name, "curve-", false); });
+  // A comparison.md is the old map's only where it had a comparison: else it is the user's.
+  const auto own_file = [](bool comparison) {
+    return [comparison](std::string_view name) {
+      return name == kCurvesCsv || name == kRegionsJson || (comparison && name == kComparisonMd);
+    };
+  };
+  const detail::OwnedEntry ours = detail::EntriesWithRuns(
+      own_file(!files.comparison_md.empty()), [](std::string_view name) { return detail::IsNumberedName(name, "curve-", false); });
   const std::set<std::string> listed = detail::ListedNames(directory / kRegionsJson, {"directory"});
-  const detail::OwnedEntry ours_before =
-      detail::EntriesWithRuns(own_file, [&listed](std::string_view name) { return listed.contains(std::string(name)); });
+  const detail::OwnedEntry ours_before = detail::EntriesWithRuns(
+      own_file(HadComparison(directory)), [&listed](std::string_view name) { return listed.contains(std::string(name)); });
   return detail::ReplaceDirectory(
       parent, directory.filename().string(),
       [&](const fs::path& target) {

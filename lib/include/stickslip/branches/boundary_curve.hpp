@@ -52,7 +52,7 @@ void CheckSecondParameter(const OrbitLayout& layout, int static_level, int unvar
 // The setup whose ContinueOrbit follows the curve through `start` in the plane of its parameter and
 // `second` (a parameter the model varies, released), with the options, shooting and flow of
 // `branch_setup`, for any model. Throws InvalidInput naming "condition" for a point whose
-// condition this gives no curve of, and "second" for a second parameter that is the continued one,
+// condition this gives no curve of (an LP of an orbit without forcing among them), and "second" for a second parameter that is the continued one,
 // already released, or no parameter the model varies. Compiled for the paper's model and a
 // [model]'s (boundary_curve.cpp); for another model include branches/model_boundary_curve.hpp.
 template <OscillatorModel Model>

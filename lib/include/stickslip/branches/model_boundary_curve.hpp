@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "stickslip/branches/boundary_curve.hpp"
+#include "stickslip/invalid_input.hpp"
 #include "stickslip/orbits/any_orbit.hpp"
 #include "stickslip/orbits/model_orbit_problem.hpp"
 
@@ -23,6 +24,13 @@ BasicOrbitContinuationSetup<Model> BoundaryCurve(const BasicCurveStart<Model>& s
   const OrbitVariableSet variables = VariableSetOf(model, orbit.signature);
   const int unvaried = model.Autonomous() ? variables.layout.Parameter(Model::kForcingFrequencyParameter) : -1;
   CheckSecondParameter(variables.layout, variables.static_level, unvaried, start.unknowns, start.parameter, second);
+  // An autonomous orbit's monodromy always has the multiplier 1 (a shift along the orbit in time):
+  // M - I is singular along the whole family, and its condition would hold at every orbit.
+  if (model.Autonomous() && start.condition == "LP") {
+    throw InvalidInput("condition", "LP of an orbit without forcing",
+                       "a type change's margin, PD, SB or TR (its fold is no multiplier +1: one always is, the "
+                       "shift along the orbit in time)");
+  }
   // The condition asks the orbit through a problem at the start with no unknowns: what it keeps
   // depends on the model and the signature only, not on the curve's unknowns.
   const BasicPeriodicityEquations<Model> equations(model, orbit.signature, Shooting::kSingle,

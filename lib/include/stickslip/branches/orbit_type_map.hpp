@@ -2,8 +2,9 @@
 // (branches/trace.hpp) in its parameter (the map's first) and a second parameter:
 //   curves   through every special point of the trace's branches that BoundaryCurve gives a curve
 //            of (a type change by its margin; LP, PD, SB, TR), continued both ways of the first
-//            parameter across the rectangle: each ends where the released second parameter leaves
-//            it (an UnknownBound, located), at a bound of the first, or at a codimension-two point
+//            parameter across the rectangle (from a start left or right of it too: its curve may
+//            cross it): each ends where the released second parameter leaves it (an UnknownBound,
+//            located), at a bound of the first (or the start's, beyond), or at a codimension-two point
 //            (a second margin leaving its positive side: another type boundary met); the folds of
 //            a curve are its LP. Points BoundaryCurve refuses are listed with its reason.
 //   regions  the rectangle cut by the curves: the curves' polylines rasterized on a raster x raster
@@ -14,13 +15,17 @@
 //            cell and from the rectangle's edges.
 //   content  at each interior point (a, b), every orbit of the trace there: on each branch, at
 //            each pair of consecutive points whose first parameter straddles a, the nearer one (on
-//            a branch that does not pass a, its end nearer a, after the others; where that one
-//            does not get there it is no failure: its type may end on the way) is
+//            a branch that does not pass a, its end nearer a, after the others: where that one
+//            turns back on the way, its type's family folding, it is no failure) is
 //            continued in the first parameter to a, then in the second to b (each continuation
 //            ends on its bound, exactly at the value; past changes of type, so the orbit may come
 //            out not admissible: no motion of that type there); orbits found twice (same type,
-//            OrbitDistance <= same_orbit) are one. A region's label: its admissible orbit types,
-//            each stable or unstable.
+//            OrbitDistance <= same_orbit; a [model]'s state and period relative) are one. A
+//            region's label: its admissible orbit types, each stable or unstable.
+//   uniform  each admissible point of the trace in a region among the region's admissible orbits
+//            (type and stability): where not, a curve is missing (one
+//            that ends inside the rectangle joins the regions on its sides) and the region says
+//            it is not uniform, with the places that differ.
 // Every loop is bounded: the curves by max_curves and max_curve_points, the content by the trace's
 // points and max_content_points per continuation, the raster by raster^2. For any model: the
 // paper's (MapTrace, OrbitTypeMap) and a [model]'s (BasicMapTrace<DynamicLinearOscillator>), whose
@@ -57,6 +62,9 @@ struct BasicMapTraceBranch {
   UnknownChoice unknowns;  // the branch's unknowns (its parameter held)
   std::vector<OrbitOfModel<Model>> orbits;
   std::vector<BasicMapStartPoint<Model>> special;
+  // Per orbit, as the trace found them (empty: not known; the regions are then not checked against
+  // the trace's points).
+  std::vector<bool> admissible, stable;
 };
 
 template <OscillatorModel Model>
@@ -79,7 +87,8 @@ struct MapRectangle {
   std::string second;  // another parameter the model varies: chi, eta, omega, u_s, u_r for the paper's
   double first_min = 0.0, first_max = 0.0;
   double second_min = 0.0, second_max = 0.0;
-  // Throws InvalidInput naming "first_min" ("second_min") unless min < max, both finite, "first"
+  // Throws InvalidInput naming "first_min" ("second_min") unless min < max by more than 1e-8 of
+  // their size (narrower, the curves' ends are not located inside), both finite, "first"
   // for a first parameter the model does not vary (ModelDescription::VariedParameter: an
   // autonomous model's forcing frequency is none) and "second" for a second one that is not or is
   // the first.
@@ -93,7 +102,9 @@ struct OrbitTypeMapOptions {
   int max_curves = 200;       // curves (each direction one) at most (1 to 10000)
   int max_curve_points = 600;    // points per curve (2 to 100000)
   int max_content_points = 400;  // points per continuation to an interior point (2 to 100000)
-  double same_orbit = 1e-6;   // two orbits of one type within this (OrbitDistance) are one (0 to 1)
+  // Two orbits of one type within this (OrbitDistance; a [model]'s state relative to its size, its
+  // period relative) are one (0 to 1).
+  double same_orbit = 1e-6;
   // Called after each start of curves (two steps: both ways) and each region's content (one step),
   // unit "steps", done increasing; the total is known once the regions are (before: the curves'
   // steps + 1). Empty: no reports.
@@ -143,9 +154,17 @@ struct BasicMapRegion {
   int clearance = 0;    // its distance from the nearest cut cell or edge, in cells
   std::vector<BasicMapOrbit<Model>> orbits;  // every orbit found there, deduplicated, in the order found
   std::vector<std::string> failures;  // continuations that did not reach the point (where, why)
+  // Points of the trace in the region whose orbit (admissible, its type and stability) is not
+  // among the region's admissible orbits (those whose branch's continuation to the interior point
+  // failed aside): a curve the map lacks (one ending inside the rectangle leaves the regions on its
+  // sides joined), the region is not uniform. `differing` counts them, `elsewhere` says where (the
+  // first five).
+  int differing = 0;
+  std::vector<std::string> elsewhere;
   // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no motion of
   // the trace's types" (another may be there); with failures, how many continuations did not reach
-  // the point ("unknown: ..." if none did).
+  // the point ("unknown: ..." if none did); "not uniform: ... at its interior point, N place(s)
+  // differ" where places differ.
   std::string Label() const;
   // The admissible stable orbits' types, sorted.
   std::vector<std::string> StableTypes() const;

@@ -36,12 +36,15 @@ std::optional<std::pair<std::string, std::string>> ModelPointOf(const std::files
                                                                 std::string_view point);
 
 // The [model]'s run file a stored run (in run_directory) was computed for, as its summary names it:
-// absolute, or relative to the working directory, else to a directory above run_directory (the
-// project's root, where tools/run.sh writes results/). Throws InvalidInput naming "run" for a run
+// absolute, or relative to a directory above run_directory (the project's root, where tools/run.sh
+// writes results/; the nearest that holds it), else to the working directory. Throws InvalidInput naming "run" for a run
 // made from the command line with --set (no run file holds its model).
 std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::path& run_directory);
 // That file's model (ReadModelFileStart: throws as it does).
 ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory);
+// Throws InvalidInput naming "run_file" where `file` declares other units than `run`'s: what
+// writes the run's numbers again under them (a restart, a map) would relabel every number.
+void CheckUnitsUnchanged(const StoredRun& run, const ModelFileStart& file);
 
 // The stored orbit at `label` of `run` at `samples` equally spaced times over its period by the
 // model's closed forms (SampleOrbit), the last its start again. Throws InvalidInput naming

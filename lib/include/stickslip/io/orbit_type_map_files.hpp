@@ -41,13 +41,12 @@ MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run);
 // A [model]'s trace as the map's input: its model read from the run file the trace names (relative
 // to the working directory or a directory above `trace_directory`), every branch's points and
 // special points, each branch's unknowns its orbits' at fixed parameters, its step sizes and
-// max_amplitude `run`'s (nullptr: the defaults). Where the trace's parameter or `second` is the
-// belt's speed, antisymmetric orbits are written over their whole period. Throws InvalidInput
-// naming "run" (the model's file cannot be read: a trace made from the command line) or "run_file"
-// (its model's units or equations changed since the trace: its first orbit is no longer periodic).
+// max_amplitude `run`'s (nullptr: the defaults). Throws InvalidInput naming "run" (no file holds the
+// model: a trace made from the command line) or "run_file" (the file cannot be read, or declares
+// other units than the trace's, or its model changed since: the trace's first orbit is no longer
+// periodic).
 BasicMapTrace<DynamicLinearOscillator> ModelMapTraceOf(const StoredTrace& trace,
-                                                       const std::filesystem::path& trace_directory, const RunFile* run,
-                                                       const std::string& second);
+                                                       const std::filesystem::path& trace_directory, const RunFile* run);
 
 // The types of the trace's branches (their signatures), for the comparison.
 std::vector<std::string> TraceTypes(const StoredTrace& trace);
