@@ -18,6 +18,7 @@
 #include "stickslip/analysis/map_comparison.hpp"
 #include "stickslip/io/map_file.hpp"
 #include "stickslip/io/orbit_type_map_files.hpp"
+#include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/run_file.hpp"
 
 namespace stickslip::cli {
@@ -108,11 +109,12 @@ void CheckOrder(const MapRectangle& r) {
   if (!(r.second_min < r.second_max)) throw InvalidInput("second-from", r.second_min, fmt::format("< second-to ({})", r.second_max));
 }
 
-// The run file the trace was made from, for its unknowns and step sizes; none where it cannot be
-// read (noted once the map is computed: bad input found on the way stays the one line on stderr).
-std::optional<RunFile> TraceRunFile(const StoredTrace& trace) {
+// The run file the trace was made from (`path`), for its unknowns and step sizes; none where it
+// cannot be read (noted once the map is computed: bad input found on the way stays the one line on
+// stderr).
+std::optional<RunFile> TraceRunFile(const std::filesystem::path& path) {
   try {
-    return ReadRunFile(trace.run_file);
+    return ReadRunFile(path);
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -122,12 +124,10 @@ std::optional<RunFile> TraceRunFile(const StoredTrace& trace) {
 // curves that failed (exit 3: the map is written all the same).
 template <OscillatorModel Model>
 int Report(const MapArgs& args, const BasicOrbitTypeMap<Model>& map, const OrbitTypeMapFiles& files, double seconds,
-           const MapComparison* comparison, const std::string& unread_run_file) {
+           const MapComparison* comparison, const std::string& note) {
   const MapRectangle& r = map.rectangle;
   const std::vector<std::string> kept = WriteOrbitTypeMapFiles(args.output, files);
-  if (!unread_run_file.empty()) {
-    fmt::print(stderr, "note: the trace's run file '{}' cannot be read: default unknowns and step sizes\n", unread_run_file);
-  }
+  if (!note.empty()) fmt::print(stderr, "note: {}\n", note);
   fmt::print("map {} x {} from {}: {} curve(s), {} start(s) skipped, {} region(s) in {:.2f} s; written to {}\n", r.first, r.second,
              args.trace, map.curves.size(), map.skipped.size(), map.regions.size(), seconds, args.output);
   if (!kept.empty()) fmt::print("{}: kept {} other file(s): {}\n", args.output, kept.size(), fmt::join(kept, ", "));
@@ -192,9 +192,12 @@ int RunModelMap(const MapArgs& args, const CLI::App& cmd, const StoredTrace& tra
     throw InvalidInput("brute-force", "'" + args.brute_force + "'",
                        "none for a [model]'s trace (its brute-force maps record amplitudes, not orbit types): leave it out");
   }
-  const std::optional<RunFile> run = TraceRunFile(trace);
+  // The [model]'s file, found as restarts find it: a run file with [continuation] too, or (a trace
+  // of find --model) the model's alone.
+  std::optional<RunFile> run;
   BasicMapTrace<DynamicLinearOscillator> input = [&] {
     try {
+      run = TraceRunFile(ModelFileOf(trace.runs.front(), args.trace));
       return ModelMapTraceOf(trace, args.trace, run ? &*run : nullptr);
     } catch (const InvalidInput& e) {  // its model's file: gone, changed, or none (a trace of --set)
       throw InvalidInput::WithMessage("trace", fmt::format("trace = '{}' cannot be mapped: {}", args.trace, e.what()));
@@ -211,10 +214,10 @@ int RunModelMap(const MapArgs& args, const CLI::App& cmd, const StoredTrace& tra
   CheckSurfaceStaysFixed(input, args.second);
   CheckCorners(r, input.model, input.branches.front().orbits.front().parameters);
   const auto [map, seconds] = BuildShowingProgress(input, r, args);
-  // A trace of find --model names the [model]'s file, which holds no continuation steps: they are
-  // the defaults here, whatever find's --ds were.
-  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr,
-                run ? "" : trace.run_file);
+  const std::string note =
+      run ? "" : fmt::format("'{}' holds no continuation steps (a trace of find --model?): the map continues with the "
+                             "default steps, whatever the trace's were", trace.run_file);
+  return Report(args, map, FormatOrbitTypeMapFiles(input.model, trace.run_file, map, args.trace), seconds, nullptr, note);
 }
 
 int RunMap(const MapArgs& args, const CLI::App& cmd) {
@@ -250,13 +253,15 @@ int RunMap(const MapArgs& args, const CLI::App& cmd) {
       throw InvalidInput("brute-force", fmt::format("'{}' ({})", args.brute_force, e.value()), e.valid_range());
     }
   }
-  const std::optional<RunFile> run = TraceRunFile(trace);
+  const std::optional<RunFile> run = TraceRunFile(trace.run_file);
   const MapTrace input = MapTraceOf(trace, run ? &*run : nullptr);
   const auto [map, seconds] = BuildShowingProgress(input, r, args);
   std::optional<MapComparison> comparison;
   if (brute) comparison = CompareWithBruteForce(map, &input, TraceTypes(trace), *brute);
   const OrbitTypeMapFiles files = FormatOrbitTypeMapFiles(map, args.trace, comparison ? &*comparison : nullptr, args.brute_force);
-  return Report(args, map, files, seconds, comparison ? &*comparison : nullptr, run ? "" : trace.run_file);
+  const std::string note =
+      run ? "" : fmt::format("the trace's run file '{}' cannot be read: default unknowns and step sizes", trace.run_file);
+  return Report(args, map, files, seconds, comparison ? &*comparison : nullptr, note);
 }
 
 }  // namespace

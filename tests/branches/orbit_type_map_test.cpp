@@ -135,9 +135,9 @@ TEST(OrbitsAt, ContinuesTheTracesOrbitsUnderTheTracesMaxAmplitude) {
   for (const std::string& f : bounded.failures) EXPECT_NE(f.find("resonance: the amplitude"), std::string::npos) << f;
   MapRegion region;
   region.failures = bounded.failures;
-  EXPECT_TRUE(region.Label().starts_with("unknown: no motion of the trace's types found")) << region.Label();
+  EXPECT_TRUE(region.Label().starts_with("unknown: none of the trace's orbits found")) << region.Label();
   region.failures.clear();
-  EXPECT_EQ(region.Label(), "no motion of the trace's types");
+  EXPECT_EQ(region.Label(), "none of the trace's orbits");
 }
 
 // A branch's recorded column `name` at point `p`.

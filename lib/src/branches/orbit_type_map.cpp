@@ -141,7 +141,7 @@ Reached<Model> ContinueTo(BasicOrbitContinuationSetup<Model> setup, double targe
     return {std::nullopt,
             fmt::format("{} from {} to {}: {} ({})", setup.parameter, from, target, ToString(branch.branch.end),
                         branch.branch.end_message),
-            ends_on(from)};
+            branch.branch.end == BranchEnd::kParameterBound && branch.branch.points.size() > 1 && ends_on(from)};
   }
   return {std::move(branch), {}};
 }
@@ -223,10 +223,11 @@ std::string BasicMapRegion<Model>::Label() const {
   // region is not called motionless for want of a solve.
   const std::string incomplete =
       failures.empty() ? "" : fmt::format(" ({} continuation(s) of the trace's orbits did not reach it)", failures.size());
-  // The map knows the trace's types only: another motion may well be there (a brute force tells).
+  // The map knows the trace's orbits only: another motion may well be there, of another type or of
+  // another family of the same type (a brute force tells).
   std::string label;
   if (parts.empty()) {
-    label = failures.empty() ? "no motion of the trace's types" : "unknown: no motion of the trace's types found" + incomplete;
+    label = failures.empty() ? "none of the trace's orbits" : "unknown: none of the trace's orbits found" + incomplete;
   } else {
     label = fmt::format("{}", fmt::join(parts, "; ")) + incomplete;
   }
@@ -359,6 +360,19 @@ BasicOrbitTypeMap<Model> CutIntoRegions(const MapRectangle& rectangle,
 
 namespace {
 
+// Per point of the curve `c` (its branch continued): admissible apart from the conditions that
+// define it, stable, and its two parameters.
+template <OscillatorModel Model>
+void DescribePoints(const Model& model, const MapRectangle& r, const std::vector<std::string>& defining,
+                    BasicMapCurve<Model>& c) {
+  for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
+    c.admissible.push_back(AdmissibleApartFrom(c.branch, k, defining));
+    c.stable.push_back(Column(c.branch, k, orbit_columns::kStable) == 1.0);
+    c.first.push_back(ValueOf(model, c.branch.orbits[k], r.first));
+    c.second.push_back(ValueOf(model, c.branch.orbits[k], r.second));
+  }
+}
+
 // The curves through the trace's special points (both ways each), and the points refused.
 template <OscillatorModel Model>
 struct ContinuedCurves {
@@ -418,23 +432,15 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
           break;
         }
         o.direction = direction;
-        BasicMapCurve<Model> c;
-        c.id = static_cast<int>(continued.curves.size()) + 1;
-        c.kind = condition;
-        c.from = from;
-        c.direction = direction;
+        BasicMapCurve<Model> c{.id = static_cast<int>(continued.curves.size()) + 1, .kind = condition, .from = from,
+                               .direction = direction};
         try {
           c.branch = ContinueOrbit(curve);
         } catch (const InvalidInput& e) {  // a curve the continuation refuses gives none, the map goes on
           continued.skipped.push_back({from, condition, e.what()});
           break;
         }
-        for (std::size_t k = 0; k < c.branch.orbits.size(); ++k) {
-          c.admissible.push_back(AdmissibleApartFrom(c.branch, k, defining));
-          c.stable.push_back(Column(c.branch, k, orbit_columns::kStable) == 1.0);
-          c.first.push_back(ValueOf(trace.model, c.branch.orbits[k], r.first));
-          c.second.push_back(ValueOf(trace.model, c.branch.orbits[k], r.second));
-        }
+        DescribePoints(trace.model, r, defining, c);
         continued.curves.push_back(std::move(c));
       }
       Report(options, done, total + 1.0, "steps");
@@ -522,8 +528,8 @@ BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRec
   }
   std::stable_partition(starts.begin(), starts.end(), [](const auto& s) { return s.second.straddles; });
   BasicMapOrbitsAt<Model> found;
-  std::vector<bool> there(starts.size(), false);
-  std::vector<std::optional<Reached<Model>>> failed(starts.size());  // the first way's failure, while the second fails too
+  std::vector<bool> there(starts.size(), false), folds(starts.size(), false);
+  std::vector<std::optional<Reached<Model>>> failed(starts.size());  // the first way's failure
   for (bool second_first : {false, true}) {
     for (std::size_t k = 0; k < starts.size(); ++k) {
       const auto& [branch, start] = starts[k];
@@ -531,18 +537,19 @@ BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRec
       Reached<Model> reached = ContinueToPoint(SetupAt(trace, branch->orbits[start.point], branch->unknowns, r.first), r,
                                                a, b, second_first, options.max_content_points);
       if (!reached.branch) {
-        // A branch's end continued towards a point its type never reaches turns back: no failure.
-        if (!second_first && (start.straddles || !reached.turned_back)) failed[k] = std::move(reached);
+        // One that turns back (its family folds on the way) found that the family does not reach
+        // the point that way: no failure of the computation.
+        folds[k] = folds[k] || reached.turned_back;
+        if (!second_first) failed[k] = std::move(reached);
         continue;
       }
       there[k] = true;
-      failed[k].reset();
       const std::string from = fmt::format("{} pt {}", branch->name, start.point + 1);
       AddOrbit(trace.model, *reached.branch, from, options.same_orbit, found.orbits);
     }
   }
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    if (!failed[k]) continue;
+    if (there[k] || folds[k] || !failed[k]) continue;
     const auto& [branch, start] = starts[k];
     found.failures.push_back(
         fmt::format("{} pt {}{}: {}", branch->name, start.point + 1, start.straddles ? "" : " (its end)", failed[k]->why));

@@ -15,11 +15,11 @@
 //            cell and from the rectangle's edges.
 //   content  at each interior point (a, b), every orbit of the trace there: on each branch, at
 //            each pair of consecutive points whose first parameter straddles a, the nearer one (on
-//            a branch that does not pass a, its end nearer a, after the others: where that one
-//            turns back on the way, its type's family folding, it is no failure) is
-//            continued in the first parameter to a, then in the second to b (each continuation
-//            ends on its bound, exactly at the value; past changes of type, so the orbit may come
-//            out not admissible: no motion of that type there); orbits found twice (same type,
+//            a branch that does not pass a, its end nearer a, after the others) is continued in the
+//            first parameter to a, then in the second to b, and where that fails the other way
+//            round (each continuation ends on its bound, exactly at the value; past changes of type,
+//            so the orbit may come out not admissible: no motion of that type there; one that turns
+//            back, its family folding on the way, is no failure); orbits found twice (same type,
 //            OrbitDistance <= same_orbit; a [model]'s state and period relative) are one. A
 //            region's label: its admissible orbit types, each stable or unstable.
 //   uniform  each admissible point of the trace in a region among the region's admissible orbits
@@ -161,8 +161,8 @@ struct BasicMapRegion {
   // first five).
   int differing = 0;
   std::vector<std::string> elsewhere;
-  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "no motion of
-  // the trace's types" (another may be there); with failures, how many continuations did not reach
+  // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "none of the
+  // trace's orbits" (another motion may be there, of their types too); with failures, how many continuations did not reach
   // the point ("unknown: ..." if none did); "not uniform: ... at its interior point, N place(s)
   // differ" where places differ.
   std::string Label() const;
