@@ -159,7 +159,7 @@ BasicMapTrace<DynamicLinearOscillator> MapTraceOfTrace(const DynamicLinearOscill
       const auto& orbits = link.branch.orbits;
       BasicMapTraceBranch<DynamicLinearOscillator> b{fmt::format("branch-{}", map.branches.size() + 1),
                                                      UnknownsAtFixedParameters(VariableSetOf(model, orbits.front().signature)),
-                                                     orbits, {}};
+                                                     orbits, {}, {}, {}};
       for (const SpecialPoint& p : link.branch.branch.special_points) {
         b.special.push_back({b.name, p.type, p.type, p.test_function, orbits[p.point]});
       }

@@ -432,8 +432,11 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
           break;
         }
         o.direction = direction;
-        BasicMapCurve<Model> c{.id = static_cast<int>(continued.curves.size()) + 1, .kind = condition, .from = from,
-                               .direction = direction};
+        BasicMapCurve<Model> c;
+        c.id = static_cast<int>(continued.curves.size()) + 1;
+        c.kind = condition;
+        c.from = from;
+        c.direction = direction;
         try {
           c.branch = ContinueOrbit(curve);
         } catch (const InvalidInput& e) {  // a curve the continuation refuses gives none, the map goes on

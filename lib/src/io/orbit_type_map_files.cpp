@@ -221,7 +221,8 @@ void AddTrace(const StoredTrace& trace, const RunFile* run, const OrbitOf& orbit
   if (run && run->trace) map.max_amplitude = run->trace->max_amplitude;
   for (std::size_t k = 0; k < trace.branches.size(); ++k) {
     const StoredRun& stored = trace.runs[k];
-    BasicMapTraceBranch<Model> b{.name = trace.branches[k].name, .unknowns = {}, .orbits = {}, .special = {}};
+    BasicMapTraceBranch<Model> b;
+    b.name = trace.branches[k].name;
     for (const StoredPoint& p : stored.branch) {
       b.orbits.push_back(orbit_of(stored, p));
       b.admissible.push_back(p.admissible);
@@ -291,7 +292,10 @@ OrbitTypeMapFiles FormatOrbitTypeMapFiles(const DynamicLinearOscillator& model, 
                                           const BasicOrbitTypeMap<DynamicLinearOscillator>& map, const std::string& trace) {
   OrbitTypeMapFiles files{FormatCurvesCsv(model, map), FormatRegionsJson(model, map, trace, nullptr, ""), "", {}};
   for (const BasicMapCurve<DynamicLinearOscillator>& c : map.curves) {
-    const StoredSummary identity{.run_file = run_file, .output = CurveDirectory(c), .parameter = map.rectangle.first};
+    StoredSummary identity;
+    identity.run_file = run_file;
+    identity.output = CurveDirectory(c);
+    identity.parameter = map.rectangle.first;
     files.curves.push_back(RecordRun(model, identity, c.branch));
   }
   return files;
