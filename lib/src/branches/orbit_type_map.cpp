@@ -17,7 +17,6 @@
 
 namespace stickslip {
 
-
 namespace {
 
 // The value of the parameter named `name` (one the model varies, MapRectangle::Validate).
@@ -211,14 +210,29 @@ void OrbitTypeMapOptions::Validate() const {
   if (!(same_orbit >= 0.0 && same_orbit <= 1.0)) throw InvalidInput("same_orbit", same_orbit, "0 <= same_orbit <= 1");
 }
 
+namespace {
+
+// "slip- stick (stable)": an orbit's type with its stability, as labels list it.
+std::string TypeWithStability(const std::string& signature, bool stable) {
+  return fmt::format("{} ({})", signature, stable ? "stable" : "unstable");
+}
+
+// The admissible orbits' types with their stability, sorted: a region's label, and what the trace's
+// points are compared with.
+template <OscillatorModel Model>
+std::set<std::string> AdmissibleTypes(const std::vector<BasicMapOrbit<Model>>& orbits) {
+  std::set<std::string> types;
+  for (const BasicMapOrbit<Model>& o : orbits) {
+    if (o.admissible) types.insert(TypeWithStability(o.signature, o.stable));
+  }
+  return types;
+}
+
+}  // namespace
+
 template <OscillatorModel Model>
 std::string BasicMapRegion<Model>::Label() const {
-  std::vector<std::string> parts;
-  for (const BasicMapOrbit<Model>& o : orbits) {
-    if (o.admissible) parts.push_back(fmt::format("{} ({})", o.signature, o.stable ? "stable" : "unstable"));
-  }
-  std::sort(parts.begin(), parts.end());
-  parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+  const std::set<std::string> parts = AdmissibleTypes(orbits);
   // A continuation of the trace's orbits that failed leaves the content incomplete: said, so that a
   // region is not called motionless for want of a solve.
   const std::string incomplete =
@@ -397,11 +411,8 @@ ContinuedCurves<Model> ContinueCurves(const BasicMapTrace<Model>& trace, const M
       });
       if (again) continue;
       started.emplace_back(condition, p.orbit);
-      const double second = ValueOf(trace.model, p.orbit, r.second), first = ValueOf(trace.model, p.orbit, r.first);
-      if (!(second >= r.second_min && second <= r.second_max)) {
-        continued.skipped.push_back({from, condition, fmt::format("outside the rectangle ({} = {})", r.second, second)});
-        continue;
-      }
+      // (Its second parameter is the trace's, inside the rectangle: CheckTraceInRectangle.)
+      const double first = ValueOf(trace.model, p.orbit, r.first);
       const BasicOrbitContinuationSetup<Model> branch_setup = SetupAt(trace, p.orbit, b.unknowns, trace.parameter);
       std::optional<BasicOrbitContinuationSetup<Model>> made;
       try {
@@ -562,17 +573,6 @@ BasicMapOrbitsAt<Model> OrbitsAt(const BasicMapTrace<Model>& trace, const MapRec
 
 namespace {
 
-// The admissible orbits' types with their stability, "slip- stick (stable)": what a region's
-// content and the trace's points are compared by.
-template <OscillatorModel Model>
-std::set<std::string> AdmissibleTypes(const std::vector<BasicMapOrbit<Model>>& orbits) {
-  std::set<std::string> types;
-  for (const BasicMapOrbit<Model>& o : orbits) {
-    if (o.admissible) types.insert(fmt::format("{} ({})", o.signature, o.stable ? "stable" : "unstable"));
-  }
-  return types;
-}
-
 // Whether a continuation from `branch` to the region's interior point failed: its orbits' absence
 // there says nothing.
 template <OscillatorModel Model>
@@ -593,6 +593,8 @@ void NoteDiffering(BasicMapRegion<Model>& region, std::string where) {
 template <OscillatorModel Model>
 void CompareTracePoints(const BasicMapTrace<Model>& trace, BasicOrbitTypeMap<Model>& map) {
   const MapRectangle& r = map.rectangle;
+  std::vector<std::set<std::string>> types;
+  for (const BasicMapRegion<Model>& region : map.regions) types.push_back(AdmissibleTypes(region.orbits));
   for (const BasicMapTraceBranch<Model>& b : trace.branches) {
     if (b.admissible.size() != b.orbits.size() || b.stable.size() != b.orbits.size()) continue;
     for (std::size_t k = 0; k < b.orbits.size(); ++k) {
@@ -601,8 +603,8 @@ void CompareTracePoints(const BasicMapTrace<Model>& trace, BasicOrbitTypeMap<Mod
       if (index < 0 || !b.admissible[k]) continue;
       BasicMapRegion<Model>& region = map.regions[static_cast<std::size_t>(index)];
       if (FailedFrom(region, b.name)) continue;
-      const std::string type = fmt::format("{} ({})", b.orbits[k].signature.ToString(), b.stable[k] ? "stable" : "unstable");
-      if (AdmissibleTypes(region.orbits).contains(type)) continue;
+      const std::string type = TypeWithStability(b.orbits[k].signature.ToString(), b.stable[k]);
+      if (types[static_cast<std::size_t>(index)].contains(type)) continue;
       NoteDiffering(region, fmt::format("{} pt {} at ({}, {}) = ({:.6g}, {:.6g}): {}", b.name, k + 1, r.first, r.second, first,
                                         second, type));
     }

@@ -23,9 +23,9 @@
 //            OrbitDistance <= same_orbit; a [model]'s state and period relative) are one. A
 //            region's label: its admissible orbit types, each stable or unstable.
 //   uniform  each admissible point of the trace in a region among the region's admissible orbits
-//            (type and stability): where not, a curve is missing (one
-//            that ends inside the rectangle joins the regions on its sides) and the region says
-//            it is not uniform, with the places that differ.
+//            (type and stability): where not, a curve is missing (one that ends inside the
+//            rectangle joins the regions on its sides) and the region says it is not uniform, with
+//            the places that differ.
 // Every loop is bounded: the curves by max_curves and max_curve_points, the content by the trace's
 // points and max_content_points per continuation, the raster by raster^2. For any model: the
 // paper's (MapTrace, OrbitTypeMap) and a [model]'s (BasicMapTrace<DynamicLinearOscillator>), whose
@@ -162,9 +162,9 @@ struct BasicMapRegion {
   int differing = 0;
   std::vector<std::string> elsewhere;
   // "slip- stick (stable); slip- slip+ stick slip+ (unstable)": the admissible orbits; "none of the
-  // trace's orbits" (another motion may be there, of their types too); with failures, how many continuations did not reach
-  // the point ("unknown: ..." if none did); "not uniform: ... at its interior point, N place(s)
-  // differ" where places differ.
+  // trace's orbits" (another motion may be there, of their types too); with failures, how many
+  // continuations did not reach the point ("unknown: ..." if none did); "not uniform: ... at its
+  // interior point, N place(s) differ" where places differ.
   std::string Label() const;
   // The admissible stable orbits' types, sorted.
   std::vector<std::string> StableTypes() const;

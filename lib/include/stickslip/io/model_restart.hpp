@@ -37,8 +37,8 @@ std::optional<std::pair<std::string, std::string>> ModelPointOf(const std::files
 
 // The [model]'s run file a stored run (in run_directory) was computed for, as its summary names it:
 // absolute, or relative to a directory above run_directory (the project's root, where tools/run.sh
-// writes results/; the nearest that holds it), else to the working directory. Throws InvalidInput naming "run" for a run
-// made from the command line with --set (no run file holds its model).
+// writes results/; the nearest that holds it), else to the working directory. Throws InvalidInput
+// naming "run" for a run made from the command line with --set (no run file holds its model).
 std::filesystem::path ModelFileOf(const StoredRun& run, const std::filesystem::path& run_directory);
 // That file's model (ReadModelFileStart: throws as it does).
 ModelFileStart ModelOfStoredRun(const StoredRun& run, const std::filesystem::path& run_directory);

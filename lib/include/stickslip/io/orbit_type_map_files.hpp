@@ -38,8 +38,8 @@ namespace stickslip {
 // shooting and flow are the defaults.
 MapTrace MapTraceOf(const StoredTrace& trace, const RunFile* run);
 
-// A [model]'s trace as the map's input: its model read from the run file the trace names (relative
-// to the working directory or a directory above `trace_directory`), every branch's points and
+// A [model]'s trace as the map's input: its model read from the run file the trace names (found as
+// ModelFileOf finds it, from `trace_directory`), every branch's points and
 // special points, each branch's unknowns its orbits' at fixed parameters, its step sizes and
 // max_amplitude `run`'s (nullptr: the defaults). Throws InvalidInput naming "run" (no file holds the
 // model: a trace made from the command line) or "run_file" (the file cannot be read, or declares
