@@ -329,7 +329,7 @@ TEST(ExponentialSumZeros, AgreesWithTheSinusoidSumFinderOnPureSinusoids) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> coefficient(-1.0, 1.0), frequency(0.1, 5.0), length(1.0, 30.0);
   for (int n = 0; n < 200; ++n) {
-    std::vector<Sinusoid> sinusoids(1 + rng() % 3);
+    SinusoidTerms sinusoids(1 + rng() % 3);
     for (Sinusoid& s : sinusoids) s = {frequency(rng), coefficient(rng), coefficient(rng)};
     const double constant = coefficient(rng), slope = n % 2 == 0 ? 0.0 : 0.05 * coefficient(rng);
     const SinusoidSum f(constant, slope, sinusoids);

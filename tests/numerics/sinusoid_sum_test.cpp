@@ -1,5 +1,6 @@
 #include "stickslip/numerics/sinusoid_sum.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -212,6 +213,21 @@ TEST(SinusoidSum, DerivativeMatchesFiniteDifferences) {
     const double h = 1e-5;
     EXPECT_NEAR(df(t), (f(t + h) - f(t - h)) / (2 * h), 1e-9);
   }
+}
+
+// The bounds the search uses, computed in one pass, against the closed-form bounds: |c0| + sum of
+// the magnitudes |(a_k, b_k)| = (0.5, 1.2) -> 1.3 and (0.6, 0.8) -> 1.0, each times |nu_k|^order
+// (plus |c1| for the first derivative), and the separate functions give the same numbers.
+TEST(SinusoidSum, ScaleAndDerivativeBoundsAreTheSumsOfTheTermsMagnitudes) {
+  const SinusoidSum f(-0.25, 0.125, {{2.0, 0.5, 1.2}, {-0.5, 0.6, 0.8}, {3.0, 0.0, 0.0}});
+  const std::array<double, 5> b = f.ScaleAndDerivativeBounds();
+  EXPECT_DOUBLE_EQ(b[0], 0.25 + 1.3 + 1.0);
+  EXPECT_DOUBLE_EQ(b[1], 0.125 + 1.3 * 2.0 + 1.0 * 0.5);
+  EXPECT_DOUBLE_EQ(b[2], 1.3 * 4.0 + 1.0 * 0.25);
+  EXPECT_DOUBLE_EQ(b[3], 1.3 * 8.0 + 1.0 * 0.125);
+  EXPECT_DOUBLE_EQ(b[4], 1.3 * 16.0 + 1.0 * 0.0625);
+  EXPECT_EQ(b[0], f.Scale());
+  for (int order = 1; order <= 4; ++order) EXPECT_EQ(b[order], f.DerivativeBound(order)) << order;
 }
 
 }  // namespace

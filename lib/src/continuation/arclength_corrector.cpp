@@ -12,11 +12,16 @@ ArclengthCorrector::ArclengthCorrector(const NonlinearSystem& problem, const Mon
     : problem_(problem), monitor_(monitor), options_(options),
       solver_(LinearSolver::Create(options.corrector.linear_solver)) {}
 
-bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, bool record, Sample* sample) {
-  Eigen::VectorXd f;
-  JacobianMatrix j;
-  problem_.Evaluate(sample->u, &f, &j);
-  if (!solver_->Factorize(AppendRow(j, reference))) return false;
+bool ArclengthCorrector::Complete(const Eigen::VectorXd& reference, bool record, Sample* sample,
+                                  const std::optional<JacobianMatrix>& bordered) {
+  if (bordered) {
+    if (!solver_->Factorize(*bordered)) return false;
+  } else {
+    Eigen::VectorXd f;
+    JacobianMatrix j;
+    problem_.Evaluate(sample->u, &f, &j);
+    if (!solver_->Factorize(AppendRow(j, reference))) return false;
+  }
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(sample->u.size());
   rhs(sample->u.size() - 1) = 1.0;
   sample->tangent = solver_->Solve(rhs);
@@ -75,7 +80,8 @@ std::optional<Sample> ArclengthCorrector::Corrected(const Sample& from, double s
   Sample sample;
   sample.u = std::move(r.solution);
   sample.iterations = r.summary.iterations;
-  if (!Complete(from.tangent, attempt != Attempt::kLocationTrial, &sample)) return std::nullopt;
+  // The corrector's Jacobian at the root is the bordered matrix with from.tangent as its border.
+  if (!Complete(from.tangent, attempt != Attempt::kLocationTrial, &sample, r.jacobian)) return std::nullopt;
   return sample;
 }
 

@@ -49,8 +49,10 @@ class ArclengthCorrector {
  private:
   // The unit tangent at u with the orientation of `reference`, with the determinant sign, the
   // test functions and, if `record`, the recorded values; false if the bordered matrix is
-  // singular.
-  bool Complete(const Eigen::VectorXd& reference, bool record, Sample* sample);
+  // singular. `bordered`, where given, is [J; reference^T] at u already evaluated (by the Newton
+  // run that corrected u with `reference` as its border).
+  bool Complete(const Eigen::VectorXd& reference, bool record, Sample* sample,
+                const std::optional<JacobianMatrix>& bordered = std::nullopt);
 
   const NonlinearSystem& problem_;
   const Monitor* monitor_;

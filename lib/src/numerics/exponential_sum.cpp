@@ -72,7 +72,7 @@ class IntervalBounds {
 // its search has the same guarantee and conventions. The undamped oscillators' events take it.
 std::optional<SinusoidSum> AsSinusoidSum(const ExponentialSum& f) {
   double constant = 0.0, slope = 0.0;
-  std::vector<Sinusoid> sinusoids;
+  SinusoidTerms sinusoids;
   for (const ExponentialTerm& e : f.terms()) {
     if (Vanishes(e)) continue;
     if (e.rate != 0.0) return std::nullopt;
@@ -97,7 +97,7 @@ ExponentialSum::ExponentialSum(std::vector<ExponentialTerm> terms) : terms_(std:
   }
 }
 
-ExponentialSum ExponentialSum::OfSinusoids(double constant, double slope, const std::vector<Sinusoid>& sinusoids) {
+ExponentialSum ExponentialSum::OfSinusoids(double constant, double slope, const SinusoidTerms& sinusoids) {
   std::vector<ExponentialTerm> terms = {{0, 0.0, {0.0, constant, 0.0}}, {1, 0.0, {0.0, slope, 0.0}}};
   for (const Sinusoid& s : sinusoids) terms.push_back({0, 0.0, s});
   return ExponentialSum(std::move(terms));

@@ -64,6 +64,7 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
       return finish(NewtonTermination::kDiverged, "the residual is not finite", nullptr);
     }
     if (norm <= options.residual_tolerance) {
+      result.jacobian = jacobian;
       return finish(NewtonTermination::kConverged, "", &jacobian);
     }
     if (summary.iterations >= options.max_iterations) {
@@ -80,13 +81,18 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
     double damping = 1.0;
     Eigen::VectorXd trial;
     Eigen::VectorXd trial_residual;
+    JacobianMatrix trial_jacobian;
+    bool trial_has_jacobian = false;
     double trial_norm = 0.0;
     std::optional<std::string> domain_error;
     while (true) {
       trial = result.solution + damping * step;
       domain_error = system.DomainError(trial);
       if (!domain_error) {
-        system.Evaluate(trial, &trial_residual, nullptr);
+        // The full step is nearly always taken: its Jacobian, evaluated with its residual, serves
+        // the next iteration or the caller at the root, and the residual is not evaluated twice.
+        trial_has_jacobian = damping == 1.0;
+        system.Evaluate(trial, &trial_residual, trial_has_jacobian ? &trial_jacobian : nullptr);
         trial_norm = MaxNorm(trial_residual);
         if (std::isfinite(trial_norm) && trial_norm < norm) break;
       }
@@ -112,14 +118,19 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
     const bool step_below_tolerance =
         MaxNorm(damping * step) <= options.step_tolerance * (1.0 + MaxNorm(result.solution)) &&
         norm <= options.stagnation_residual;
-    if (norm <= options.residual_tolerance || step_below_tolerance) {
-      // The Jacobian at the root is needed only for its condition number.
-      const bool condition = options.estimate_condition;
-      if (condition) system.Evaluate(result.solution, &residual, &jacobian);
-      return finish(NewtonTermination::kConverged, step_below_tolerance ? "step below tolerance" : "",
-                    condition ? &jacobian : nullptr);
+    if (trial_has_jacobian) {
+      jacobian = std::move(trial_jacobian);
     }
-    system.Evaluate(result.solution, &residual, &jacobian);
+    if (norm <= options.residual_tolerance || step_below_tolerance) {
+      // The full step brought its Jacobian at the root; a damped one did not, and it is evaluated
+      // only for the condition number.
+      const bool condition = options.estimate_condition;
+      if (condition && !trial_has_jacobian) system.Evaluate(result.solution, &residual, &jacobian);
+      if (condition || trial_has_jacobian) result.jacobian = jacobian;
+      return finish(NewtonTermination::kConverged, step_below_tolerance ? "step below tolerance" : "",
+                    condition || trial_has_jacobian ? &jacobian : nullptr);
+    }
+    if (!trial_has_jacobian) system.Evaluate(result.solution, &residual, &jacobian);
   }
 }
 

@@ -30,7 +30,7 @@ SinusoidSum::Jet SinusoidSum::JetAt(double t) const {
 }
 
 SinusoidSum SinusoidSum::Affine(double k, double c) const {
-  std::vector<Sinusoid> terms = terms_;
+  SinusoidTerms terms = terms_;
   for (Sinusoid& s : terms) {
     s.cos_coefficient *= k;
     s.sin_coefficient *= k;
@@ -39,8 +39,7 @@ SinusoidSum SinusoidSum::Affine(double k, double c) const {
 }
 
 SinusoidSum SinusoidSum::Derivative() const {
-  std::vector<Sinusoid> terms;
-  terms.reserve(terms_.size());
+  SinusoidTerms terms;
   for (const Sinusoid& s : terms_) {
     terms.push_back({s.frequency, s.frequency * s.sin_coefficient, -s.frequency * s.cos_coefficient});
   }
@@ -55,6 +54,21 @@ double SinusoidSum::DerivativeBound(int order) const {
     bound += std::hypot(s.cos_coefficient, s.sin_coefficient) * power;
   }
   return bound;
+}
+
+std::array<double, 5> SinusoidSum::ScaleAndDerivativeBounds() const {
+  // The sums of Scale() and DerivativeBound(order), term by term in the same order: the same numbers.
+  std::array<double, 5> bounds = {std::abs(constant_), std::abs(slope_), 0.0, 0.0, 0.0};
+  for (const Sinusoid& s : terms_) {
+    const double magnitude = std::hypot(s.cos_coefficient, s.sin_coefficient);
+    bounds[0] += magnitude;
+    double power = 1.0;
+    for (int order = 1; order <= 4; ++order) {
+      power *= std::abs(s.frequency);
+      bounds[order] += magnitude * power;
+    }
+  }
+  return bounds;
 }
 
 double SinusoidSum::Scale() const {
@@ -76,8 +90,10 @@ namespace {
 // sub-interval.
 class GlobalBounds {
  public:
-  explicit GlobalBounds(const SinusoidSum& f)
-      : bounds_{f.Scale(), f.DerivativeBound(1), f.DerivativeBound(2), f.DerivativeBound(3), f.DerivativeBound(4)} {}
+  explicit GlobalBounds(const SinusoidSum& f) {
+    const std::array<double, 5> b = f.ScaleAndDerivativeBounds();
+    bounds_ = {b[0], b[1], b[2], b[3], b[4]};
+  }
   detail::DerivativeBounds On(double /*l*/, double /*r*/) const { return bounds_; }
 
  private:

@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include <boost/container/small_vector.hpp>
 #include <boost/math/tools/roots.hpp>
 
 #include "stickslip/numerics/zero_search.hpp"
@@ -60,7 +61,8 @@ class ZeroFinder {
 
   // Zeros of f in [l, r] with f(l) != 0, appended to `out` in increasing order.
   ZeroSearchStatus Search(double l, double r, int max_count, std::vector<Zero>* out, int* examined) const {
-    std::vector<Interval> stack = {{{l, f_.JetAt(l)}, {r, f_.JetAt(r)}}};
+    // Depth-first: the stack holds one interval per level of halving, a few dozen at most in practice.
+    boost::container::small_vector<Interval, 32> stack = {{{l, f_.JetAt(l)}, {r, f_.JetAt(r)}}};
     while (!stack.empty() && static_cast<int>(out->size()) < max_count) {
       if (*examined >= options_.max_intervals) return ZeroSearchStatus::kTooManyIntervals;
       ++*examined;

@@ -44,7 +44,7 @@ class ExponentialSum {
   explicit ExponentialSum(std::vector<ExponentialTerm> terms);
   // c0 + c1 t + sum_k (a_k cos(nu_k t) + b_k sin(nu_k t)): the function SinusoidSum(constant,
   // slope, sinusoids) is.
-  static ExponentialSum OfSinusoids(double constant, double slope, const std::vector<Sinusoid>& sinusoids);
+  static ExponentialSum OfSinusoids(double constant, double slope, const SinusoidTerms& sinusoids);
 
   double operator()(double t) const;
   // f(t), f'(t), f''(t) (as for a SinusoidSum), at the cost of one exponential, sine and cosine

@@ -65,6 +65,9 @@ struct NewtonSummary {
 struct NewtonResult {
   Eigen::VectorXd solution;  // the last iterate (the root when converged)
   NewtonSummary summary;
+  // The Jacobian at `solution` where it was evaluated there (the full Newton step's is evaluated
+  // with its residual): what a caller would otherwise evaluate again at the root.
+  std::optional<JacobianMatrix> jacobian;
 };
 
 NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& guess,

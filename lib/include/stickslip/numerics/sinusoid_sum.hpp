@@ -5,8 +5,11 @@
 // sums of damped and growing terms include these; here its bounds hold on the whole line.)
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
+
+#include <boost/container/small_vector.hpp>
 
 #include "stickslip/numerics/zero_search.hpp"
 
@@ -18,10 +21,15 @@ struct Sinusoid {
   double sin_coefficient = 0.0;
 };
 
+// A coordinate of an oscillator of n degrees of freedom has at most n + 1 terms (its modes and the
+// forcing): held inline up to that for small n, so that the root finder's many short-lived sums
+// (derivatives, constraints) never allocate.
+using SinusoidTerms = boost::container::small_vector<Sinusoid, 4>;
+
 class SinusoidSum {
  public:
   SinusoidSum() = default;
-  SinusoidSum(double constant, double slope, std::vector<Sinusoid> terms)
+  SinusoidSum(double constant, double slope, SinusoidTerms terms)
       : constant_(constant), slope_(slope), terms_(std::move(terms)) {}
 
   double operator()(double t) const;
@@ -35,18 +43,20 @@ class SinusoidSum {
   SinusoidSum Derivative() const;
   // A bound on sup_t |f^(order)(t)|, for order >= 1.
   double DerivativeBound(int order) const;
+  // Scale() and DerivativeBound(1) ... DerivativeBound(4) at once (each term's magnitude once).
+  std::array<double, 5> ScaleAndDerivativeBounds() const;
   // |c0| + sum_k |(a_k, b_k)|: the size against which "zero" is judged.
   double Scale() const;
   // Every coefficient and frequency finite.
   bool IsFinite() const;
   double constant() const { return constant_; }
   double slope() const { return slope_; }
-  const std::vector<Sinusoid>& terms() const { return terms_; }
+  const SinusoidTerms& terms() const { return terms_; }
 
  private:
   double constant_ = 0.0;
   double slope_ = 0.0;
-  std::vector<Sinusoid> terms_;
+  SinusoidTerms terms_;
 };
 
 // The size against which "zero" is judged at t: Scale(), the same at every t (as SizeAt of an

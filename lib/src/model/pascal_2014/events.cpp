@@ -14,7 +14,7 @@ Mode ModeFromRest(const State& x, double phase, const Parameters& p) {
 SinusoidSum CoordinateAlong(const ModeMotion<double>& motion, int i) {
   const int position = i % 2;
   const bool velocity = i >= 2;
-  std::vector<Sinusoid> terms;
+  SinusoidTerms terms;
   for (int k = 0; k < motion.component_count; ++k) {
     const auto& c = motion.components[k];
     const double a = c.cos_coefficient(position);
@@ -32,7 +32,7 @@ SinusoidSum CoordinateAlong(const ModeMotion<double>& motion, int i) {
 
 SinusoidSum StickForceAlong(const ModeMotion<double>& motion, double phase, const Parameters& p) {
   const double k = p.chi * p.eta;
-  std::vector<Sinusoid> terms;
+  SinusoidTerms terms;
   for (int c = 0; c < motion.component_count; ++c) {
     const auto& m = motion.components[c];
     terms.push_back({m.frequency, k * (m.cos_coefficient(1) - m.cos_coefficient(0)),
