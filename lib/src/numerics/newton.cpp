@@ -40,7 +40,7 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
         "Newton needs a square system and a guess of its size: {} equations, {} unknowns, guess {}",
         system.EquationCount(), system.UnknownCount(), guess.size()));
   }
-  NewtonResult result{guess, {}};
+  NewtonResult result{guess, {}, std::nullopt};
   NewtonSummary& summary = result.summary;
   auto finish = [&](NewtonTermination t, std::string message, const JacobianMatrix* jacobian) {
     summary.termination = t;
@@ -105,6 +105,7 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
       // Near a singular Jacobian (a branch point) rounding stops the descent above the
       // tolerance; a residual this small is still a solution.
       if (norm <= options.stagnation_residual) {
+        result.jacobian = jacobian;  // the solution did not move
         return finish(NewtonTermination::kConverged, "at the rounding floor", &jacobian);
       }
       return finish(NewtonTermination::kLineSearchFailed,

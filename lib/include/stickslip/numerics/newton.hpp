@@ -19,7 +19,11 @@ class NonlinearSystem {
   virtual ~NonlinearSystem() = default;
   virtual int EquationCount() const = 0;
   virtual int UnknownCount() const = 0;
-  // F(u), and J(u) (EquationCount x UnknownCount) when `jacobian` is not null.
+  // F(u), and J(u) (EquationCount x UnknownCount) when `jacobian` is not null. F(u) must not
+  // depend on whether J is asked for: Newton takes a full step's residual from the evaluation
+  // with its Jacobian and a damped step's from one without. (The closed-form flows give the same
+  // numbers both ways; an integrator whose derivative path shares its error control does not
+  // quite: the benchmark's Odeint evaluator.)
   virtual void Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* residual,
                         JacobianMatrix* jacobian) const = 0;
   // Why u lies outside the domain where F is defined (an invalid physical parameter, ...). A
@@ -65,8 +69,9 @@ struct NewtonSummary {
 struct NewtonResult {
   Eigen::VectorXd solution;  // the last iterate (the root when converged)
   NewtonSummary summary;
-  // The Jacobian at `solution` where it was evaluated there (the full Newton step's is evaluated
-  // with its residual): what a caller would otherwise evaluate again at the root.
+  // Set only when converged, and only where the Jacobian at `solution` was evaluated anyway (at
+  // the guess, or with a full step's residual; not after a damped step without the condition
+  // number): what a caller would otherwise evaluate again at the root.
   std::optional<JacobianMatrix> jacobian;
 };
 

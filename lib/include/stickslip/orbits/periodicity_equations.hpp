@@ -79,6 +79,8 @@ struct Variational {
   double phase = 0.0;
   Eigen::RowVectorXd dphase;
   bool with_derivatives = false;
+  // The next segment's dx is built here and swapped in: no allocation per segment.
+  Eigen::Matrix<double, Model::kStateSize, Eigen::Dynamic> next_dx{};
 };
 
 // The rows of the residual and, with derivatives, of the Jacobian, filled in order.
@@ -172,10 +174,11 @@ class BasicPeriodicityEquations {
     if (w.with_derivatives) {
       const typename Model::FlowDerivatives f = flow_.derivatives ? flow_.derivatives(mode, w.x, w.phase, d, p)
                                                                   : model_.FlowWithDerivatives(mode, w.x, w.phase, d, p);
-      Eigen::Matrix<double, Model::kStateSize, Eigen::Dynamic> next = f.d_start * w.dx + f.d_phase * w.dphase;
-      next.col(duration_column) += f.d_elapsed;
-      next.middleCols(Parameter(0), kParameterCount) += f.d_parameters;
-      w.dx = next;
+      w.next_dx.resize(w.dx.rows(), w.dx.cols());
+      w.next_dx.noalias() = f.d_start * w.dx + f.d_phase * w.dphase;
+      w.next_dx.col(duration_column) += f.d_elapsed;
+      w.next_dx.middleCols(Parameter(0), kParameterCount) += f.d_parameters;
+      w.dx.swap(w.next_dx);
       w.x = f.state;
     } else {
       w.x = flow_.state ? flow_.state(mode, w.x, w.phase, d, p) : model_.Flow(mode, w.x, w.phase, d, p);
