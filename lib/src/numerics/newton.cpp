@@ -31,6 +31,39 @@ namespace {
 
 double MaxNorm(const Eigen::VectorXd& v) { return v.size() ? v.lpNorm<Eigen::Infinity>() : 0.0; }
 
+// A backtracking line search along a Newton step: its last trial, the largest fraction 1, 1/2, ...
+// of the step whose max|F| is below the current one, or damping below min_damping where none is.
+struct LineSearch {
+  double damping = 1.0;
+  Eigen::VectorXd trial;
+  Eigen::VectorXd residual;
+  double norm = 0.0;
+  // The full step's Jacobian, evaluated with its residual: the full step is nearly always taken,
+  // and its Jacobian serves the next iteration or the caller at the root, so that no residual is
+  // evaluated twice. Empty after a damped trial.
+  std::optional<JacobianMatrix> jacobian;
+  std::optional<std::string> domain_error;  // of the last trial
+};
+
+LineSearch SearchAlong(const NonlinearSystem& system, const Eigen::VectorXd& u, const Eigen::VectorXd& step,
+                       double norm, double min_damping) {
+  LineSearch s;
+  while (true) {
+    s.trial = u + s.damping * step;
+    s.domain_error = system.DomainError(s.trial);
+    if (!s.domain_error) {
+      const bool full = s.damping == 1.0;
+      JacobianMatrix j;
+      system.Evaluate(s.trial, &s.residual, full ? &j : nullptr);
+      s.jacobian = full ? std::optional<JacobianMatrix>(std::move(j)) : std::nullopt;
+      s.norm = MaxNorm(s.residual);
+      if (std::isfinite(s.norm) && s.norm < norm) return s;
+    }
+    s.damping *= 0.5;
+    if (s.damping < min_damping) return s;
+  }
+}
+
 }  // namespace
 
 NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& guess,
@@ -77,31 +110,10 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
                     "the Jacobian is singular to working precision", &jacobian);
     }
     const Eigen::VectorXd step = -solver->Solve(residual);
-    // Backtracking: the largest fraction 1, 1/2, ... that lowers max|F|.
-    double damping = 1.0;
-    Eigen::VectorXd trial;
-    Eigen::VectorXd trial_residual;
-    JacobianMatrix trial_jacobian;
-    bool trial_has_jacobian = false;
-    double trial_norm = 0.0;
-    std::optional<std::string> domain_error;
-    while (true) {
-      trial = result.solution + damping * step;
-      domain_error = system.DomainError(trial);
-      if (!domain_error) {
-        // The full step is nearly always taken: its Jacobian, evaluated with its residual, serves
-        // the next iteration or the caller at the root, and the residual is not evaluated twice.
-        trial_has_jacobian = damping == 1.0;
-        system.Evaluate(trial, &trial_residual, trial_has_jacobian ? &trial_jacobian : nullptr);
-        trial_norm = MaxNorm(trial_residual);
-        if (std::isfinite(trial_norm) && trial_norm < norm) break;
-      }
-      damping *= 0.5;
-      if (damping < options.min_damping) break;
-    }
+    LineSearch search = SearchAlong(system, result.solution, step, norm, options.min_damping);
     ++summary.iterations;
-    if (damping < options.min_damping) {
-      if (domain_error) return finish(NewtonTermination::kLeftDomain, *domain_error, &jacobian);
+    if (search.damping < options.min_damping) {
+      if (search.domain_error) return finish(NewtonTermination::kLeftDomain, *search.domain_error, &jacobian);
       // Near a singular Jacobian (a branch point) rounding stops the descent above the
       // tolerance; a residual this small is still a solution.
       if (norm <= options.stagnation_residual) {
@@ -112,26 +124,25 @@ NewtonResult SolveNewton(const NonlinearSystem& system, const Eigen::VectorXd& g
                     fmt::format("no step along the Newton direction lowers |F| = {:.3e}", norm),
                     &jacobian);
     }
-    result.solution = trial;
-    residual = trial_residual;
-    norm = trial_norm;
+    result.solution = std::move(search.trial);
+    residual = std::move(search.residual);
+    norm = search.norm;
     summary.residual_norms.push_back(norm);
     const bool step_below_tolerance =
-        MaxNorm(damping * step) <= options.step_tolerance * (1.0 + MaxNorm(result.solution)) &&
+        MaxNorm(search.damping * step) <= options.step_tolerance * (1.0 + MaxNorm(result.solution)) &&
         norm <= options.stagnation_residual;
-    if (trial_has_jacobian) {
-      jacobian = std::move(trial_jacobian);
-    }
+    const bool full_step = search.jacobian.has_value();
+    if (full_step) jacobian = std::move(*search.jacobian);
     if (norm <= options.residual_tolerance || step_below_tolerance) {
       // The full step brought its Jacobian at the root; a damped one did not, and it is evaluated
       // only for the condition number.
       const bool condition = options.estimate_condition;
-      if (condition && !trial_has_jacobian) system.Evaluate(result.solution, &residual, &jacobian);
-      if (condition || trial_has_jacobian) result.jacobian = jacobian;
+      if (condition && !full_step) system.Evaluate(result.solution, &residual, &jacobian);
+      if (condition || full_step) result.jacobian = jacobian;
       return finish(NewtonTermination::kConverged, step_below_tolerance ? "step below tolerance" : "",
-                    condition || trial_has_jacobian ? &jacobian : nullptr);
+                    condition || full_step ? &jacobian : nullptr);
     }
-    if (!trial_has_jacobian) system.Evaluate(result.solution, &residual, &jacobian);
+    if (!full_step) system.Evaluate(result.solution, &residual, &jacobian);
   }
 }
 
