@@ -12,6 +12,8 @@ namespace stickslip {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// The two ways a zero is polished (ZeroSearchOptions::Polish): every zero test holds for both.
+constexpr ZeroSearchOptions::Polish kPolishes[] = {ZeroSearchOptions::Polish::kBracket, ZeroSearchOptions::Polish::kJet};
 
 TEST(SinusoidSumZeros, FindsEveryZeroOfCosineInOrder) {
   const SinusoidSum f(0.0, 0.0, {{1.0, 1.0, 0.0}});  // cos t
@@ -21,6 +23,44 @@ TEST(SinusoidSumZeros, FindsEveryZeroOfCosineInOrder) {
     EXPECT_NEAR(zeros[k].t, kPi / 2 + k * kPi, 1e-13);
     EXPECT_EQ(zeros[k].kind, ZeroKind::kCrossing);
   }
+}
+
+TEST(SinusoidSumZeros, PolishesEachZeroToRoundingOfTheTime) {
+  // sin t - 0.5 + 0.4 sin 3t - 0.2 t: strongly curved between its zeros, where a polishing step
+  // that trusts the chord or a Newton step overshoots. Each zero found must be the nearest double
+  // to a zero of the closed form: f changes sign within a few ulps of it.
+  const SinusoidSum f(-0.5, -0.2, {{1.0, 0.0, 1.0}, {3.0, 0.0, 0.4}});
+  for (const auto polish : kPolishes) {
+    const std::vector<Zero> zeros = Zeros(f, 0.0, 20.0, 100, {.polish = polish}).zeros;
+    ASSERT_GE(zeros.size(), 2u);
+    for (const Zero& z : zeros) {
+      const double ulps = 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, z.t);
+      EXPECT_TRUE(f(z.t - ulps) * f(z.t + ulps) <= 0.0) << "t = " << z.t << ", polish " << static_cast<int>(polish);
+    }
+  }
+}
+
+TEST(SinusoidSumZeros, FindsAZeroWithinRoundingOfTheIntervalsEnd) {
+  // sin t - 1/2 on (0, b], b two doubles above pi/6, where f(b) = 1.1e-16 is rounding: the
+  // polishing starts at the end (the chord's zero rounds to it) and must still land within an
+  // ulp of pi/6.
+  const SinusoidSum f(-0.5, 0.0, {{1.0, 0.0, 1.0}});
+  const double b = std::nextafter(std::nextafter(kPi / 6.0, 1.0), 1.0);
+  for (const auto polish : kPolishes) {
+    const std::vector<Zero> zeros = Zeros(f, 0.0, b, 10, {.polish = polish}).zeros;
+    ASSERT_EQ(zeros.size(), 1u);
+    EXPECT_NEAR(zeros[0].t, kPi / 6.0, 2e-16) << "polish " << static_cast<int>(polish);
+  }
+}
+
+TEST(SinusoidSumZeros, FindsNoZeroDueAtOnceFromAMinimumAboveZeroWhateverTheSignOfItsRoundingSlope) {
+  // (1 + 5e-12) - cos t: its minimum 5e-12 at t = 0 is at the touch level, and it has no zero.
+  // From a = -1e-17 its slope sin a = -1e-17 heads down, at rounding level against its size 1:
+  // no crossing is due at once (a search from a touch searched past, as the simulator's stick).
+  const SinusoidSum f(1.0 + 5e-12, 0.0, {{1.0, -1.0, 0.0}});
+  const ZeroSearch search = Zeros(f, -1e-17, 3.0, 10);
+  ASSERT_TRUE(search.Complete());
+  for (const Zero& z : search.zeros) EXPECT_NE(z.kind, ZeroKind::kCrossing) << "t = " << z.t;
 }
 
 TEST(SinusoidSumZeros, SeparatesTwoZerosCloserThanAnySamplingStep) {

@@ -28,16 +28,59 @@ struct DerivativeBounds {
   double fourth = 0.0;
 };
 
-// The root of g in [l, r], given g(l) and g(r) of opposite signs (or one of them zero).
+// The root of g in [l, r], given g(l) and g(r) of opposite signs (neither zero), by TOMS 748
+// to the time tolerance: the midpoint of a bracket that narrow.
 template <class F>
-double Bracketed(const F& g, double l, double r, double gl, double gr, double time_tolerance) {
-  if (gl == 0.0) return l;
-  if (gr == 0.0) return r;
+double BracketedByToms748(const F& g, double l, double r, double gl, double gr, double time_tolerance) {
   std::uintmax_t max_iter = 200;
   auto tolerance = [time_tolerance](double x, double y) { return std::abs(y - x) <= time_tolerance; };
   const auto [lo, hi] = boost::math::tools::toms748_solve(
       [&g](double t) { return g(t); }, l, r, gl, gr, tolerance, max_iter);
   return 0.5 * (lo + hi);
+}
+
+// The same root by Halley's steps on g's jet (value, slope, curvature: one evaluation gives all
+// three) kept inside the bracket every evaluation shrinks; a step that leaves it, or fails to
+// halve the step before the last, bisects instead (the safeguard of Numerical Recipes' rtsafe).
+// At a simple root the steps converge cubically, and a last step below the tolerance leaves an
+// error far below it.
+template <class F>
+double BracketedByJet(const F& g, double l, double r, double gl, double gr, double time_tolerance) {
+  constexpr int kMaxSteps = 200;  // bisection alone halves any double interval below 1e-13 in fewer
+  const bool rising = gl < 0.0;
+  // The chord's zero, or where that rounds to an end (a root within rounding of it), that end.
+  double t = l + (r - l) * (gl / (gl - gr));
+  if (!(t > l && t < r)) t = std::abs(gl) < std::abs(gr) ? l : r;
+  double step = r - l, step_before = step;
+  for (int i = 0; i < kMaxSteps; ++i) {
+    const typename F::Jet jet = g.JetAt(t);
+    if (jet.value == 0.0) return t;
+    if (t > l && t < r) ((jet.value < 0.0) == rising ? l : r) = t;
+    // Halley's step from Newton's, in ratios that neither overflow nor underflow with g's size.
+    const double newton = jet.value / jet.slope;
+    double next = t - newton / (1.0 - 0.5 * newton * (jet.curvature / jet.slope));
+    // Converged: a step this small may land on the end just moved to t, or a rounding past it.
+    if (std::abs(next - t) <= time_tolerance) return next;
+    // Not inside (NaN included), or too slow: bisect.
+    if (!(next > l && next < r) || std::abs(next - t) > 0.5 * std::abs(step_before)) next = 0.5 * (l + r);
+    step_before = step;
+    step = next - t;
+    // Far from t = 0 adjacent doubles may lie further apart than the tolerance: a bracket that no
+    // longer splits is as narrow as it gets.
+    if (std::abs(step) <= time_tolerance || r - l <= time_tolerance || !(next > l && next < r)) return next;
+    t = next;
+  }
+  return 0.5 * (l + r);
+}
+
+// The root of g in [l, r], given g(l) and g(r) of opposite signs (or one of them zero), polished
+// as the options say.
+template <class F>
+double Bracketed(const F& g, double l, double r, double gl, double gr, const ZeroSearchOptions& options) {
+  if (gl == 0.0) return l;
+  if (gr == 0.0) return r;
+  if (options.polish == ZeroSearchOptions::Polish::kJet) return BracketedByJet(g, l, r, gl, gr, options.time_tolerance);
+  return BracketedByToms748(g, l, r, gl, gr, options.time_tolerance);
 }
 
 // Signs are compared, not multiplied: the product of two tiny values of one sign (a damped tail)
@@ -99,12 +142,12 @@ class ZeroFinder {
   // by the far end, so shorter windows [a, a + w] are tried too, each proving at most w.
   double ExclusionAfterZero(double a, double b) const {
     const typename F::Jet jet = f_.JetAt(a);
-    const double slope_scale = bounds_.On(a, a).first;
-    double length = ExclusionWithin(jet, slope_scale, bounds_.On(a, b));
+    const bool slope_is_rounding = SlopeIsRounding(a, jet.slope);
+    double length = ExclusionWithin(jet, slope_is_rounding, bounds_.On(a, b));
     double window = b - a;
     for (int i = 0; i < kMaxWindowHalvings && length < window; ++i) {
       window *= 0.5;
-      const double within = ExclusionWithin(jet, slope_scale, bounds_.On(a, a + window));
+      const double within = ExclusionWithin(jet, slope_is_rounding, bounds_.On(a, a + window));
       length = std::max(length, std::min(within, window));
       if (within >= window) break;
     }
@@ -116,6 +159,11 @@ class ZeroFinder {
     return std::abs(value) <= options_.touch_tolerance * std::max(bounds_.On(t, t).scale, 1e-300);
   }
   double ScaleAt(double t) const { return bounds_.On(t, t).scale; }
+  // Whether f'(t) = slope is at rounding level against the size of f' at t: an extremum, as far
+  // as doubles tell, whatever its sign.
+  bool SlopeIsRounding(double t, double slope) const {
+    return std::abs(slope) <= options_.touch_tolerance * bounds_.On(t, t).first;
+  }
 
  private:
   static constexpr int kMaxWindowHalvings = 64;
@@ -170,7 +218,7 @@ class ZeroFinder {
 
   template <class G>
   double Bracketed(const G& g, double l, double r, double gl, double gr) const {
-    return detail::Bracketed(g, l, r, gl, gr, options_.time_tolerance);
+    return detail::Bracketed(g, l, r, gl, gr, options_);
   }
   static void Push(double t, ZeroKind kind, std::vector<Zero>* out) {
     // A zero exactly at the end two sub-intervals share is found from both.
@@ -183,15 +231,14 @@ class ZeroFinder {
   //   |f(a+h)| >= |f' h + f'' h^2/2| - m3 h^3/6 and, when f' and f'' have the same sign,
   //            >= |f''| h^2/2 - m3 h^3/6                 > 0 for h <= |f''|/m3.
   // With opposite signs f returns to zero near 2|f'|/|f''|: only the first bound holds. An f'
-  // at rounding level (against slope_scale, the size of f' at a) counts as zero, so that a
+  // at rounding level (slope_is_rounding) counts as zero, so that a
   // rounding error cannot fake a zero at once.
-  double ExclusionWithin(const typename F::Jet& jet, double slope_scale, const DerivativeBounds& m) const {
+  double ExclusionWithin(const typename F::Jet& jet, bool slope_is_rounding, const DerivativeBounds& m) const {
     const double d1 = jet.slope;
     const double d2 = jet.curvature;
     const double inf = std::numeric_limits<double>::infinity();
     const double by_slope = m.second > 0.0 ? std::abs(d1) / m.second : inf;
     const double by_curvature = m.third > 0.0 ? std::abs(d2) / m.third : inf;
-    const bool slope_is_rounding = std::abs(d1) <= options_.touch_tolerance * slope_scale;
     double length = by_slope;
     if (slope_is_rounding) {
       length = by_curvature;
@@ -220,10 +267,12 @@ ZeroSearch FindZeros(const F& f, double a, double b, int max_count, const ZeroSe
   const ZeroFinder<F, Bounds> finder(f, options);
   double start = a;
   if (finder.AtZeroLevel(a)) {
-    // At the touch level but above rounding, and heading for zero (f f' < 0): the zero is due
-    // at once, not behind us (a state sampled a hair before a stop).
+    // At the touch level but above rounding, and heading for zero (f f' < 0, f' above rounding):
+    // the zero is due at once, not behind us (a state sampled a hair before a stop). At an
+    // extremum (a touch searched past) the sign of a rounding-level f' says nothing.
     const typename F::Jet jet = f.JetAt(a);
-    if (Opposite(jet.value, jet.slope) && std::abs(jet.value) > 1e-13 * finder.ScaleAt(a)) {
+    if (Opposite(jet.value, jet.slope) && std::abs(jet.value) > 1e-13 * finder.ScaleAt(a) &&
+        !finder.SlopeIsRounding(a, jet.slope)) {
       search.zeros.push_back({std::min(b, a - jet.value / jet.slope), ZeroKind::kCrossing});
       return search;
     }

@@ -21,6 +21,12 @@ struct ZeroSearchOptions {
   // |f| <= touch_tolerance * (the size of f: SinusoidSum::Scale(), or the size of an
   // ExponentialSum's terms at that time) at an interior extremum counts as touching zero.
   double touch_tolerance = 1e-11;
+  // How a zero is polished inside its bracket. kBracket: TOMS 748 to time_tolerance, the zero's
+  // time within half of it (the simulator's event times, the verification's stops). kJet:
+  // Halley's steps on f's jet to rounding, in about half the evaluations; for the zeros of f'
+  // searched for f's extrema, whose value is second-order in the time's error.
+  enum class Polish { kBracket, kJet };
+  Polish polish = Polish::kBracket;
   // The most sub-intervals one search examines, so that its cost is bounded whatever f and
   // [a, b] are: a few per oscillation of f, enough for ~1e5 oscillations.
   int max_intervals = 1 << 20;
