@@ -147,6 +147,25 @@ TEST(ExponentialSumZeros, EndsNotBoundedWhereTheExponentialOverflowsAfterTheZero
   }
 }
 
+TEST(ExponentialSumZeros, PolishesToTheRootWhereTheSlopeIsSmallAgainstTheCurvature) {
+  // t^2 - 1e-16 from t = 1e-17: its one zero is at 1e-8. Near the start g' is tiny against g'',
+  // where Halley's step is small however far the root is: it must not pass for convergence.
+  const ExponentialSum f({{2, 0.0, {0.0, 1.0, 0.0}}, {0, 0.0, {0.0, -1e-16, 0.0}}});
+  for (const auto polish : kPolishes) {
+    const ZeroSearch search = Zeros(f, 1e-17, 3.0, kAll, {.polish = polish});
+    ASSERT_EQ(search.zeros.size(), 1u) << static_cast<int>(polish);
+    EXPECT_NEAR(search.zeros[0].t, 1e-8, 1e-13) << static_cast<int>(polish);
+  }
+}
+
+TEST(ExponentialSumZeros, PolishesAcrossABracketOfAHundredDecades) {
+  // t^2 - 1 on (1e-10, 1e100]: one zero, at 1, polished from a bracket the bounds prove monotone.
+  const ExponentialSum f({{2, 0.0, {0.0, 1.0, 0.0}}, {0, 0.0, {0.0, -1.0, 0.0}}});
+  const ZeroSearch search = Zeros(f, 1e-10, 1e100, kAll, {.polish = ZeroSearchOptions::Polish::kJet});
+  ASSERT_EQ(search.zeros.size(), 1u);
+  EXPECT_NEAR(search.zeros[0].t, 1.0, 1e-13);
+}
+
 TEST(ExponentialSumZeros, EndsNotBoundedWhereEveryTermUnderflows) {
   // e^{-t} cos t on [0, 1e300]: below e^{-708} it cannot be told from zero.
   const ExponentialSum f({{0, -1.0, {1.0, 1.0, 0.0}}});

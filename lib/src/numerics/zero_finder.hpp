@@ -42,11 +42,13 @@ double BracketedByToms748(const F& g, double l, double r, double gl, double gr, 
 // The same root by Halley's steps on g's jet (value, slope, curvature: one evaluation gives all
 // three) kept inside the bracket every evaluation shrinks; a step that leaves it, or fails to
 // halve the step before the last, bisects instead (the safeguard of Numerical Recipes' rtsafe).
-// At a simple root the steps converge cubically, and a last step below the tolerance leaves an
-// error far below it.
+// At a simple root the steps converge cubically. Convergence is judged on Newton's step |g/g'|,
+// which is the distance to a simple root near it: Halley's step stays below ~2|g'/g''| however far
+// the root is, and would stop where g' is small against g''.
 template <class F>
 double BracketedByJet(const F& g, double l, double r, double gl, double gr, double time_tolerance) {
-  constexpr int kMaxSteps = 200;  // bisection alone halves any double interval below 1e-13 in fewer
+  // Bisection alone narrows any bracket of doubles (width < 2^1024) below 1e-13 (> 2^-44) in fewer.
+  constexpr int kMaxSteps = 1100;
   const bool rising = gl < 0.0;
   // The chord's zero, or where that rounds to an end (a root within rounding of it), that end.
   double t = l + (r - l) * (gl / (gl - gr));
@@ -55,19 +57,19 @@ double BracketedByJet(const F& g, double l, double r, double gl, double gr, doub
   for (int i = 0; i < kMaxSteps; ++i) {
     const typename F::Jet jet = g.JetAt(t);
     if (jet.value == 0.0) return t;
-    if (t > l && t < r) ((jet.value < 0.0) == rising ? l : r) = t;
+    if (t > l && t < r && !std::isnan(jet.value)) ((jet.value < 0.0) == rising ? l : r) = t;
     // Halley's step from Newton's, in ratios that neither overflow nor underflow with g's size.
     const double newton = jet.value / jet.slope;
     double next = t - newton / (1.0 - 0.5 * newton * (jet.curvature / jet.slope));
     // Converged: a step this small may land on the end just moved to t, or a rounding past it.
-    if (std::abs(next - t) <= time_tolerance) return next;
+    if (std::abs(newton) <= time_tolerance && std::isfinite(next)) return next;
     // Not inside (NaN included), or too slow: bisect.
     if (!(next > l && next < r) || std::abs(next - t) > 0.5 * std::abs(step_before)) next = 0.5 * (l + r);
     step_before = step;
     step = next - t;
     // Far from t = 0 adjacent doubles may lie further apart than the tolerance: a bracket that no
     // longer splits is as narrow as it gets.
-    if (std::abs(step) <= time_tolerance || r - l <= time_tolerance || !(next > l && next < r)) return next;
+    if (r - l <= time_tolerance || !(next > l && next < r)) return next;
     t = next;
   }
   return 0.5 * (l + r);
