@@ -1,9 +1,12 @@
 // stickslip run / continue / check: continuation runs described by run files (or by flags), the
 // bifurcation data files in results/, and regression checks against them.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,6 +107,63 @@ void CheckRunOutput(const RunFile& run, const std::filesystem::path& results) {
   }
 }
 
+// For each run, the run of the command whose output it restarts from (none for a restart from
+// earlier results, or from its own). A trace's output holds no labels of its own (its branches'
+// are under <output>/branch-<k>/), so a restart from a trace of the command could never start:
+// refused before anything runs.
+std::vector<std::optional<std::size_t>> SourcesOf(const std::vector<RunFile>& runs) {
+  std::vector<std::optional<std::size_t>> sources(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    for (std::size_t j = 0; j < runs.size(); ++j) {
+      if (j == i || runs[j].output != runs[i].restart_run) continue;
+      if (runs[j].trace) {
+        throw RunFileError(fmt::format("{}: key 'start.restart.run' = '{}' is invalid: valid a run that is no trace ({} "
+                                       "is one; restart from one of its branches with --results <results>/{})",
+                                       runs[i].Location("start.restart.run"), runs[i].restart_run, runs[j].path,
+                                       runs[j].output),
+                           "start.restart.run");
+      }
+      sources[i] = j;
+    }
+  }
+  return sources;
+}
+
+// Refuses runs that restart from one another in a cycle, naming one on the cycle and the cycle:
+// from any run left unordered, its sources are unordered too, and following them repeats a run
+// within as many steps as there are runs.
+[[noreturn]] void RefuseCycle(const std::vector<RunFile>& runs, const std::vector<std::optional<std::size_t>>& sources,
+                              std::size_t unordered) {
+  std::vector<bool> seen(runs.size(), false);
+  std::size_t i = unordered;
+  for (; !seen[i]; i = *sources[i]) seen[i] = true;
+  std::string cycle = runs[i].output;
+  for (std::size_t j = *sources[i]; j != i; j = *sources[j]) cycle += " restarts from " + runs[j].output + ", which";
+  throw RunFileError(fmt::format("{}: key 'start.restart.run' = '{}' is invalid: valid a run that does not restart "
+                                 "from this one through the command's other run files ({} restarts from {})",
+                                 runs[i].Location("start.restart.run"), runs[i].restart_run, cycle, runs[i].output),
+                     "start.restart.run");
+}
+
+// The runs in the order given, except that a run restarting from another run of the command comes
+// after it: `run continuation-scripts/*.toml` goes by name, and a restart read before its source
+// is written again would start from that source's earlier results. Runs that restart from one
+// another in a cycle are refused (their results would depend on which ran first).
+std::vector<RunFile> SourcesFirst(const std::vector<RunFile>& runs) {
+  const std::vector<std::optional<std::size_t>> sources = SourcesOf(runs);
+  std::vector<RunFile> ordered;
+  std::vector<bool> placed(runs.size(), false);
+  auto ready = [&](std::size_t i) { return !placed[i] && (!sources[i] || placed[*sources[i]]); };
+  while (ordered.size() < runs.size()) {  // each pass places one run
+    std::size_t i = 0;
+    while (i < runs.size() && !ready(i)) ++i;
+    if (i == runs.size()) RefuseCycle(runs, sources, std::find(placed.begin(), placed.end(), false) - placed.begin());
+    ordered.push_back(runs[i]);
+    placed[i] = true;
+  }
+  return ordered;
+}
+
 struct RunArgs {
   std::vector<std::string> files;
   std::string results = "results";
@@ -125,17 +185,30 @@ int RunRuns(const RunArgs& args) {
                          "output");
     }
   }
+  const std::vector<RunFile> ordered = SourcesFirst(runs);
   int code = kExitOk;
-  for (const RunFile& run : runs) {
+  // A run that restarts from one this command failed to write is not run: it would start from
+  // that run's earlier results.
+  std::set<std::string> unwritten;
+  for (const RunFile& run : ordered) {
+    if (unwritten.contains(run.restart_run)) {
+      fmt::print(stderr, "error: {}: not run: it restarts from '{}', which this command did not write\n", run.path,
+                 run.restart_run);
+      unwritten.insert(run.output);
+      code = kExitNoConvergence;
+      continue;
+    }
     if (run.trace) {
       int traced = kExitOk;
       std::optional<TraceRun> trace = ExecuteTrace(run, args.results, &traced);
       if (trace) traced = WriteAndReportTrace(trace->stored, trace->seconds, args.results);
+      if (!trace) unwritten.insert(run.output);
       if (code == kExitOk) code = traced;
       continue;
     }
     std::optional<Executed> e = Execute(run, args.results);
     if (!e) {
+      unwritten.insert(run.output);
       code = kExitNoConvergence;
       continue;
     }
@@ -268,7 +341,8 @@ Command AddRunCommand(CLI::App& app) {
       "run", "Run continuation run files (TOML, see continuation-scripts/) and write results/<output>/: "
              "branch.csv, special-points.csv, summary.json; or, for a run file with a [trace] table, the trace "
              "(branch-<k>/, trace.csv, trace.json; exit codes as trace's: 0 whatever the ends, 4 when the start is not "
-             "a motion and trace.allow_inadmissible is not set). The main job.");
+             "a motion and trace.allow_inadmissible is not set). The files run in the order given, except that one "
+             "whose start.restart names another's output runs after it. The main job.");
   cmd->add_option("files", args->files, "run files")->required();
   cmd->add_option("--results", args->results, "results directory")->capture_default_str();
   return {cmd, [args] { return RunRuns(*args); }};
