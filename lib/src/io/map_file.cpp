@@ -369,34 +369,41 @@ std::string KindOf(const ModelBruteForceMap& map) {
   return fmt::format("{} and {} (contact {}, state {})", map.first, map.second, map.contact, fmt::join(map.state_columns, ", "));
 }
 
+InvalidInput NoMerge(const std::string& what) {
+  return InvalidInput::WithMessage("merge", fmt::format("merge: {}: valid the shards of one map, every cell once", what));
+}
+
+// The first shard with cells, whose grid every shard with cells shares; all shards of one kind.
 template <typename Map>
-Map MergeMaps(const std::vector<Map>& shards, const std::vector<std::string>& names) {
-  auto refuse = [](const std::string& what) {
-    return InvalidInput::WithMessage("merge", fmt::format("merge: {}: valid the shards of one map, every cell once", what));
-  };
-  if (shards.empty()) throw refuse("no shard given");
-  const Map* grid = nullptr;  // the first shard with cells
-  std::size_t grid_shard = 0;
+std::size_t GridShard(const std::vector<Map>& shards, const std::vector<std::string>& names) {
+  if (shards.empty()) throw NoMerge("no shard given");
+  std::optional<std::size_t> grid;
   for (std::size_t s = 0; s < shards.size(); ++s) {
     const Map& m = shards[s];
     if (KindOf(m) != KindOf(shards[0])) {
-      throw refuse(fmt::format("'{}' maps {}, '{}' {}", names[s], KindOf(m), names[0], KindOf(shards[0])));
+      throw NoMerge(fmt::format("'{}' maps {}, '{}' {}", names[s], KindOf(m), names[0], KindOf(shards[0])));
     }
     if (m.cells.empty()) continue;
     if (!grid) {
-      grid = &m;
-      grid_shard = s;
+      grid = s;
       continue;
     }
-    if (m.first_count != grid->first_count || m.second_count != grid->second_count || m.section_phase != grid->section_phase) {
-      throw refuse(fmt::format("'{}' has a grid of {} x {} cells at section phase {}, '{}' {} x {} at {}", names[s],
-                               m.first_count, m.second_count, m.section_phase, names[grid_shard], grid->first_count,
-                               grid->second_count, grid->section_phase));
+    const Map& g = shards[*grid];
+    if (m.first_count != g.first_count || m.second_count != g.second_count || m.section_phase != g.section_phase) {
+      throw NoMerge(fmt::format("'{}' has a grid of {} x {} cells at section phase {}, '{}' {} x {} at {}", names[s],
+                                m.first_count, m.second_count, m.section_phase, names[*grid], g.first_count,
+                                g.second_count, g.section_phase));
     }
   }
-  if (!grid) throw refuse("no shard holds a cell");
-  // Each cell from one shard; each value of i (of j) the same in every shard.
-  std::map<std::pair<int, int>, std::pair<const typename decltype(grid->cells)::value_type*, std::size_t>> cells;
+  if (!grid) throw NoMerge("no shard holds a cell");
+  return *grid;
+}
+
+// Each cell by its (j, i), from the one shard that holds it; each value of i (of j) the same in
+// every shard.
+template <typename Map>
+auto CellsByPosition(const std::vector<Map>& shards, const std::vector<std::string>& names, const Map& grid) {
+  std::map<std::pair<int, int>, std::pair<const typename decltype(grid.cells)::value_type*, std::size_t>> cells;
   std::map<int, std::pair<double, std::size_t>> first_values, second_values;
   for (std::size_t s = 0; s < shards.size(); ++s) {
     for (const auto& cell : shards[s].cells) {
@@ -404,31 +411,39 @@ Map MergeMaps(const std::vector<Map>& shards, const std::vector<std::string>& na
            {std::tuple{&first_values, cell.i, cell.first, "i"}, std::tuple{&second_values, cell.j, cell.second, "j"}}) {
         const auto [v, added] = values->try_emplace(index, value, s);
         if (!added && v->second.first != value) {
-          throw refuse(fmt::format("'{}' has {} = {} at {} = {}, '{}' {}", names[s], axis, index,
-                                   axis == std::string_view("i") ? AxisName(grid->first) : AxisName(grid->second), value,
-                                   names[v->second.second], v->second.first));
+          throw NoMerge(fmt::format("'{}' has {} = {} at {} = {}, '{}' {}", names[s], axis, index,
+                                    axis == std::string_view("i") ? AxisName(grid.first) : AxisName(grid.second), value,
+                                    names[v->second.second], v->second.first));
         }
       }
       const auto [it, inserted] = cells.try_emplace({cell.j, cell.i}, &cell, s);
       if (!inserted) {
-        throw refuse(fmt::format("cell (i, j) = ({}, {}) is in '{}' and in '{}'", cell.i, cell.j, names[it->second.second], names[s]));
+        throw NoMerge(fmt::format("cell (i, j) = ({}, {}) is in '{}' and in '{}'", cell.i, cell.j, names[it->second.second], names[s]));
       }
     }
   }
+  return cells;
+}
+
+template <typename Map>
+Map MergeMaps(const std::vector<Map>& shards, const std::vector<std::string>& names) {
+  const std::size_t grid_shard = GridShard(shards, names);
+  const Map& grid = shards[grid_shard];
+  const auto cells = CellsByPosition(shards, names, grid);
   // Last, so that a grid of other values or a cell twice is named as such: the fingerprint holds the axes too.
   for (std::size_t s = 0; s < shards.size(); ++s) {
     const Map& m = shards[s];
-    if (!m.cells.empty() && m.run != grid->run) {
-      throw refuse(fmt::format("'{}' is of run {:016x}, '{}' of run {:016x} (other data, axes, starts or options)", names[s],
-                               m.run, names[grid_shard], grid->run));
+    if (!m.cells.empty() && m.run != grid.run) {
+      throw NoMerge(fmt::format("'{}' is of run {:016x}, '{}' of run {:016x} (other data, axes, starts or options)", names[s],
+                                m.run, names[grid_shard], grid.run));
     }
   }
-  Map merged = *grid;
+  Map merged = grid;
   merged.cells.clear();
   for (int j = 0; j < merged.second_count; ++j) {
     for (int i = 0; i < merged.first_count; ++i) {
       const auto it = cells.find({j, i});
-      if (it == cells.end()) throw refuse(fmt::format("cell (i, j) = ({}, {}) is in no shard", i, j));
+      if (it == cells.end()) throw NoMerge(fmt::format("cell (i, j) = ({}, {}) is in no shard", i, j));
       merged.cells.push_back(*it->second.first);
     }
   }

@@ -99,10 +99,9 @@ Json OrbitJson(const Model& model, const BasicMapOrbit<Model>& o) {
   return out;
 }
 
+// The raster, a row of region ids (or negative cell codes) per value of the second parameter.
 template <OscillatorModel Model>
-std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>& map, const std::string& trace,
-                              const MapComparison* comparison, const std::string& brute_force) {
-  const MapRectangle& r = map.rectangle;
+Json CellRows(const BasicOrbitTypeMap<Model>& map) {
   const int n = map.options.raster;
   Json rows = Json::array();
   for (int j = 0; j < n; ++j) {
@@ -113,6 +112,12 @@ std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>
     }
     rows.push_back(row);
   }
+  return rows;
+}
+
+template <OscillatorModel Model>
+Json RegionsJson(const Model& model, const BasicOrbitTypeMap<Model>& map) {
+  const MapRectangle& r = map.rectangle;
   Json regions = Json::array();
   for (const BasicMapRegion<Model>& region : map.regions) {
     Json orbits = Json::array();
@@ -129,6 +134,12 @@ std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>
                            {"differing", region.differing},
                            {"elsewhere", region.elsewhere}});
   }
+  return regions;
+}
+
+template <OscillatorModel Model>
+Json CurvesJson(const BasicOrbitTypeMap<Model>& map) {
+  const MapRectangle& r = map.rectangle;
   Json curves = Json::array();
   for (const BasicMapCurve<Model>& c : map.curves) {
     Json special = Json::array();
@@ -151,32 +162,41 @@ std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>
                           {"message", c.branch.branch.end_message},
                           {"special_points", special}});
   }
+  return curves;
+}
+
+// The comparison with a brute-force map, or null without one.
+Json ComparisonJson(const MapComparison* comparison, const std::string& brute_force) {
+  if (!comparison) return nullptr;
+  return Json{{"brute_force", brute_force},
+              {"cells", comparison->cells},
+              {"compared", comparison->compared},
+              {"agreeing", comparison->agreeing},
+              {"agreeing_stable", comparison->agreeing_stable},
+              {"agreement", comparison->Agreement()},
+              {"disagreements", comparison->disagreements.size()},
+              {"explained", comparison->Explained()}};
+}
+
+template <OscillatorModel Model>
+std::string FormatRegionsJson(const Model& model, const BasicOrbitTypeMap<Model>& map, const std::string& trace,
+                              const MapComparison* comparison, const std::string& brute_force) {
+  const MapRectangle& r = map.rectangle;
   Json skipped = Json::array();
   for (const MapSkippedStart& s : map.skipped) {
     skipped.push_back(Json{{"from", s.from}, {"condition", s.condition}, {"reason", s.reason}});
-  }
-  Json compared = nullptr;
-  if (comparison) {
-    compared = Json{{"brute_force", brute_force},
-                    {"cells", comparison->cells},
-                    {"compared", comparison->compared},
-                    {"agreeing", comparison->agreeing},
-                    {"agreeing_stable", comparison->agreeing_stable},
-                    {"agreement", comparison->Agreement()},
-                    {"disagreements", comparison->disagreements.size()},
-                    {"explained", comparison->Explained()}};
   }
   const Json root{{"trace", trace},
                   {"first", r.first},
                   {"second", r.second},
                   {"rectangle", {{"first_min", r.first_min}, {"first_max", r.first_max}, {"second_min", r.second_min}, {"second_max", r.second_max}}},
-                  {"raster", n},
+                  {"raster", map.options.raster},
                   {"min_region", map.options.min_region},
-                  {"regions", regions},
-                  {"curves", curves},
+                  {"regions", RegionsJson(model, map)},
+                  {"curves", CurvesJson(map)},
                   {"skipped", skipped},
-                  {"comparison", compared},
-                  {"cells", rows}};
+                  {"comparison", ComparisonJson(comparison, brute_force)},
+                  {"cells", CellRows(map)}};
   return root.dump(2) + "\n";
 }
 

@@ -489,9 +489,10 @@ RunFiles FormatRunFiles(const StoredRun& run) {
   return files;
 }
 
-StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
-  const fs::path summary_file = directory / kSummaryFile;
-  Summary summary = ParseSummary(files.summary_json, summary_file);
+namespace {
+
+// The summary's signature, and the check that its parameter is a variable of such an orbit.
+Signature SummarySignature(const Summary& summary, const fs::path& summary_file) {
   const Signature signature = [&] {
     try {
       return Signature::Parse(summary.fields.signature);
@@ -499,14 +500,49 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
       throw KeyError(summary_file, "signature", fmt::format("= '{}' is invalid: {}", summary.fields.signature, e.what()));
     }
   }();
-  const bool paper_model = summary.fields.model.empty();
-  if (paper_model && !ov::IndexOf(signature.size(), summary.fields.parameter)) {
+  if (summary.fields.model.empty() && !ov::IndexOf(signature.size(), summary.fields.parameter)) {
     std::vector<std::string> names;
     for (int i = 0; i < ov::Count(signature.size()); ++i) names.push_back(ov::Name(signature.size(), i));
     throw KeyError(summary_file, "parameter", fmt::format("= '{}' is invalid: valid a variable of the orbit, {}",
                                                           summary.fields.parameter, fmt::join(names, ", ")));
   }
+  return signature;
+}
 
+// special-points.csv, whose point columns are branch.csv's (those of `run`, read first).
+std::vector<StoredSpecialPoint> ParseSpecialPoints(const std::string& text, const fs::path& directory,
+                                                   const Signature& signature, const StoredRun& run) {
+  const bool paper_model = run.summary.model.empty();
+  const CsvTable special(text, directory / kSpecialPointsFile);
+  const ColumnIndices special_columns = FindColumns(special, signature, paper_model, true);
+  if (!paper_model) CheckModelVariables(special, special_columns, signature, run.summary.parameter, directory / kSummaryFile);
+  constexpr std::string_view kSameColumns = "the point columns differ from branch.csv's: valid the same, then type, "
+                                            "test_function, located";
+  if (AbsentMeasures(special_columns) != run.absent_measures) throw special.HeaderError(kSameColumns);
+  const std::vector<std::string> header = ColumnNames(run.branch.front());
+  std::vector<StoredSpecialPoint> points;
+  for (int row = 0; row < special.rows(); ++row) {
+    StoredPoint point = ParsePoint(special, row, special_columns, signature);
+    if (ColumnNames(point) != header) throw special.HeaderError(kSameColumns);
+    const auto same = [&point](const StoredSpecialPoint& s) { return s.point.label == point.label; };
+    if (std::any_of(points.begin(), points.end(), same)) {  // a restart would pick one
+      throw KeyError(directory / kSpecialPointsFile, "label",
+                     fmt::format("= '{}' (row {}) is invalid: an earlier row has it: valid each label once", point.label,
+                                 row + 2));
+    }
+    const std::array<int, 3>& c = special_columns.special;
+    points.push_back({std::move(point), special.Text(row, c[0]), special.Text(row, c[1]), special.Flag(row, c[2])});
+  }
+  return points;
+}
+
+}  // namespace
+
+StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
+  const fs::path summary_file = directory / kSummaryFile;
+  Summary summary = ParseSummary(files.summary_json, summary_file);
+  const Signature signature = SummarySignature(summary, summary_file);
+  const bool paper_model = summary.fields.model.empty();
   StoredRun run{std::move(summary.fields), {}, {}};
   const CsvTable branch(files.branch_csv, directory / kBranchFile);
   const ColumnIndices branch_columns = FindColumns(branch, signature, paper_model, false);
@@ -514,31 +550,7 @@ StoredRun ParseRunFiles(const RunFiles& files, const fs::path& directory) {
   for (int row = 0; row < branch.rows(); ++row) run.branch.push_back(ParsePoint(branch, row, branch_columns, signature));
   run.absent_measures = AbsentMeasures(branch_columns);
   if (run.branch.empty()) throw branch.HeaderError("has no point: valid at least the start of the branch");
-
-  const CsvTable special(files.special_points_csv, directory / kSpecialPointsFile);
-  const ColumnIndices special_columns = FindColumns(special, signature, paper_model, true);
-  if (!paper_model) CheckModelVariables(special, special_columns, signature, run.summary.parameter, summary_file);
-  if (AbsentMeasures(special_columns) != run.absent_measures) {
-    throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
-                              "test_function, located");
-  }
-  const std::vector<std::string> header = ColumnNames(run.branch.front());
-  for (int row = 0; row < special.rows(); ++row) {
-    StoredPoint point = ParsePoint(special, row, special_columns, signature);
-    if (ColumnNames(point) != header) {
-      throw special.HeaderError("the point columns differ from branch.csv's: valid the same, then type, "
-                                "test_function, located");
-    }
-    const auto same = [&point](const StoredSpecialPoint& s) { return s.point.label == point.label; };
-    if (std::any_of(run.special_points.begin(), run.special_points.end(), same)) {  // a restart would pick one
-      throw KeyError(directory / kSpecialPointsFile, "label",
-                     fmt::format("= '{}' (row {}) is invalid: an earlier row has it: valid each label once", point.label,
-                                 row + 2));
-    }
-    const std::array<int, 3>& c = special_columns.special;
-    run.special_points.push_back({std::move(point), special.Text(row, c[0]), special.Text(row, c[1]), special.Flag(row, c[2])});
-  }
-
+  run.special_points = ParseSpecialPoints(files.special_points_csv, directory, signature, run);
   if (summary.points != run.branch.size()) {
     throw KeyError(summary_file, kPointsKey,
                    fmt::format("= {} differs from the {} rows of {}", summary.points, run.branch.size(), kBranchFile));

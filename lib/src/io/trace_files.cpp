@@ -185,6 +185,90 @@ void ParseModelKeys(const Json& json, JsonObject& top, StoredTrace& t) {
   for (const Json& f : frequencies) t.natural_frequencies.push_back(f.get<double>());
 }
 
+StoredTraceDirection ParseDirection(const Json& json, const fs::path& file, std::size_t k) {
+  JsonObject d(json, file, fmt::format("directions[{}]", k));
+  StoredTraceDirection direction{.direction = d.Text("direction"), .end = d.Text("end"), .message = d.Text("message")};
+  if (direction.direction != (k == 0 ? "down" : "up")) {
+    throw KeyError(file, d.Name("direction"), fmt::format("= '{}' is invalid: valid '{}'", direction.direction, k == 0 ? "down" : "up"));
+  }
+  const Json& branches = d.Get("branches");
+  if (!branches.is_array()) throw KeyError(file, d.Name("branches"), "is invalid: valid an array of branch numbers");
+  for (const Json& b : branches) {
+    if (!b.is_number_unsigned()) throw KeyError(file, d.Name("branches"), "is invalid: valid an array of branch numbers");
+    direction.branches.push_back(b.get<std::size_t>());
+  }
+  d.Done();
+  return direction;
+}
+
+// The bifurcations a branch met; `lambda` holds the trace parameter's valid values.
+std::vector<StoredBifurcation> ParseBifurcations(JsonObject& b, const std::string& branch, const detail::ValidValues& lambda) {
+  const fs::path& file = b.file();
+  const Json& met = b.Get("bifurcations");
+  if (!met.is_array()) throw KeyError(file, b.Name("bifurcations"), "is invalid: valid an array");
+  std::vector<StoredBifurcation> bifurcations;
+  for (std::size_t i = 0; i < met.size(); ++i) {
+    JsonObject m(met[i], file, fmt::format("{}[{}]", b.Name("bifurcations"), i));
+    bifurcations.push_back({.label = m.Text("label"),
+                            .type = m.Text("type"),
+                            .lambda = m.Number("parameter", lambda),
+                            .signature = m.SignatureText("signature", true),
+                            .singularity = m.Number("singularity", detail::NonNegative()),
+                            .message = m.Text("message"),
+                            .followed = m.Text("followed")});
+    m.Done();
+    // Only the directory the writer names: a trace.json cannot point elsewhere.
+    const StoredBifurcation& read = bifurcations.back();
+    if (!read.followed.empty() && read.followed != fmt::format("{}-{}", branch, read.label)) {
+      throw KeyError(file, m.Name("followed"), fmt::format("= '{}' is invalid: valid '' or '{}-{}'", read.followed, branch, read.label));
+    }
+  }
+  return bifurcations;
+}
+
+StoredTraceBranch ParseBranch(const Json& json, const fs::path& file, std::size_t k, const detail::ValidValues& lambda) {
+  JsonObject b(json, file, fmt::format("branches[{}]", k));
+  StoredTraceBranch branch{.name = b.Text("name"),
+                           .chain = b.Text("chain"),
+                           .direction = b.Text("direction"),
+                           .signature = b.SignatureText("signature", false),
+                           .points = b.Count("points"),
+                           .start = b.Text("start"),
+                           .margin = b.Text("margin")};
+  if (branch.name != fmt::format("{}{}", kBranchPrefix, k + 1)) {
+    throw KeyError(file, b.Name("name"), fmt::format("= '{}' is invalid: valid '{}{}'", branch.name, kBranchPrefix, k + 1));
+  }
+  const Json& sw = b.Get("switch");
+  if (!sw.is_null()) {
+    JsonObject s(sw, file, b.Name("switch"));
+    branch.has_switch = true;
+    branch.type_switch = {.status = s.Text("status"),
+                          .bifurcation = s.Text("bifurcation"),
+                          .edit = s.Text("edit"),
+                          .adjacent = s.SignatureText("adjacent", true),
+                          .persists = s.Flag("persists"),
+                          .from_past = s.Flag("from_past")};
+    s.Done();
+  }
+  branch.end = b.Text("end");
+  branch.message = b.Text("message");
+  branch.bifurcations = ParseBifurcations(b, branch.name, lambda);
+  b.Done();
+  return branch;
+}
+
+// Every branch belongs to one direction, in the order the files number them.
+void CheckDirectionsListBranches(const StoredTrace& t, const fs::path& file) {
+  std::vector<std::size_t> listed;
+  for (const StoredTraceDirection& d : t.directions) listed.insert(listed.end(), d.branches.begin(), d.branches.end());
+  for (std::size_t k = 0; k < listed.size() || k < t.branches.size(); ++k) {
+    if (k >= listed.size() || k >= t.branches.size() || listed[k] != k + 1) {
+      throw KeyError(file, "directions", fmt::format("list branches {}: valid 1 to {} in order, the down chain first",
+                                                     fmt::join(listed, ", "), t.branches.size()));
+    }
+  }
+}
+
 StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   const Json json = detail::ParseJsonObject(text, file);
   JsonObject top(json, file, "");
@@ -199,84 +283,15 @@ StoredTrace ParseJson(const std::string& text, const fs::path& file) {
   if (!directions.is_array() || directions.size() != 2) {
     throw KeyError(file, "directions", "is invalid: valid an array of two directions, down and up");
   }
-  for (std::size_t k = 0; k < 2; ++k) {
-    JsonObject d(directions[k], file, fmt::format("directions[{}]", k));
-    StoredTraceDirection direction{.direction = d.Text("direction"), .end = d.Text("end"), .message = d.Text("message")};
-    if (direction.direction != (k == 0 ? "down" : "up")) {
-      throw KeyError(file, d.Name("direction"), fmt::format("= '{}' is invalid: valid '{}'", direction.direction, k == 0 ? "down" : "up"));
-    }
-    const Json& branches = d.Get("branches");
-    if (!branches.is_array()) throw KeyError(file, d.Name("branches"), "is invalid: valid an array of branch numbers");
-    for (const Json& b : branches) {
-      if (!b.is_number_unsigned()) throw KeyError(file, d.Name("branches"), "is invalid: valid an array of branch numbers");
-      direction.branches.push_back(b.get<std::size_t>());
-    }
-    d.Done();
-    t.directions.push_back(std::move(direction));
-  }
+  for (std::size_t k = 0; k < 2; ++k) t.directions.push_back(ParseDirection(directions[k], file, k));
   const Json& branches = top.Get("branches");
   if (!branches.is_array()) throw KeyError(file, "branches", "is invalid: valid an array of branches");
   // Another model's parameter has the range of its file, which the trace's files do not hold.
   const std::optional<ParameterId> parameter = t.model.empty() ? ParameterFromString(t.parameter) : std::nullopt;
   const detail::ValidValues lambda = parameter ? detail::BranchParameter(*parameter) : detail::Finite();
-  for (std::size_t k = 0; k < branches.size(); ++k) {
-    JsonObject b(branches[k], file, fmt::format("branches[{}]", k));
-    StoredTraceBranch branch{.name = b.Text("name"),
-                             .chain = b.Text("chain"),
-                             .direction = b.Text("direction"),
-                             .signature = b.SignatureText("signature", false),
-                             .points = b.Count("points"),
-                             .start = b.Text("start"),
-                             .margin = b.Text("margin")};
-    if (branch.name != fmt::format("{}{}", kBranchPrefix, k + 1)) {
-      throw KeyError(file, b.Name("name"), fmt::format("= '{}' is invalid: valid '{}{}'", branch.name, kBranchPrefix, k + 1));
-    }
-    const Json& sw = b.Get("switch");
-    if (!sw.is_null()) {
-      JsonObject s(sw, file, b.Name("switch"));
-      branch.has_switch = true;
-      branch.type_switch = {.status = s.Text("status"),
-                            .bifurcation = s.Text("bifurcation"),
-                            .edit = s.Text("edit"),
-                            .adjacent = s.SignatureText("adjacent", true),
-                            .persists = s.Flag("persists"),
-                            .from_past = s.Flag("from_past")};
-      s.Done();
-    }
-    branch.end = b.Text("end");
-    branch.message = b.Text("message");
-    const Json& met = b.Get("bifurcations");
-    if (!met.is_array()) throw KeyError(file, b.Name("bifurcations"), "is invalid: valid an array");
-    for (std::size_t i = 0; i < met.size(); ++i) {
-      JsonObject m(met[i], file, fmt::format("{}[{}]", b.Name("bifurcations"), i));
-      branch.bifurcations.push_back({.label = m.Text("label"),
-                                     .type = m.Text("type"),
-                                     .lambda = m.Number("parameter", lambda),
-                                     .signature = m.SignatureText("signature", true),
-                                     .singularity = m.Number("singularity", detail::NonNegative()),
-                                     .message = m.Text("message"),
-                                     .followed = m.Text("followed")});
-      m.Done();
-      // Only the directory the writer names: a trace.json cannot point elsewhere.
-      const StoredBifurcation& read = branch.bifurcations.back();
-      if (!read.followed.empty() && read.followed != fmt::format("{}-{}", branch.name, read.label)) {
-        throw KeyError(file, m.Name("followed"),
-                       fmt::format("= '{}' is invalid: valid '' or '{}-{}'", read.followed, branch.name, read.label));
-      }
-    }
-    b.Done();
-    t.branches.push_back(std::move(branch));
-  }
+  for (std::size_t k = 0; k < branches.size(); ++k) t.branches.push_back(ParseBranch(branches[k], file, k, lambda));
   top.Done();
-  // Every branch belongs to one direction, in the order the files number them.
-  std::vector<std::size_t> listed;
-  for (const StoredTraceDirection& d : t.directions) listed.insert(listed.end(), d.branches.begin(), d.branches.end());
-  for (std::size_t k = 0; k < listed.size() || k < t.branches.size(); ++k) {
-    if (k >= listed.size() || k >= t.branches.size() || listed[k] != k + 1) {
-      throw KeyError(file, "directions", fmt::format("list branches {}: valid 1 to {} in order, the down chain first",
-                                                     fmt::join(listed, ", "), t.branches.size()));
-    }
-  }
+  CheckDirectionsListBranches(t, file);
   return t;
 }
 
