@@ -4,6 +4,8 @@
 #include <tuple>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "cli_common.hpp"
 #include "number_text.hpp"
 #include "stickslip/io/command_options.hpp"
@@ -55,10 +57,50 @@ void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
   cmd.add_option("--detect-branch-points", args->detect_branch_points, "locate branch points (BP): true or false")
       ->type_name("true|false")
       ->capture_default_str();
+  cmd.add_flag("--switch-branch", args->run.restart_switch_branch,
+               "with --point at a PD or an SB: continue the branch that leaves it, on the side --direction names "
+               "(both: either side), not the branch the point lies on (the run file's start.restart.switch_branch)");
+  cmd.add_option("--boundary", args->run.restart_boundary,
+                 "with --point at a located change of type, LP, PD, SB or TR: continue its curve in the plane of "
+                 "--parameter and this second parameter (u_r, u_s, chi, eta; a [model]'s: any of its parameters; the "
+                 "run file's start.restart.boundary)")
+      ->type_name("NAME")
+      ->each([args](const std::string&) { args->boundary_given = true; });
   cmd.add_option("--output", args->run.output, "results/<output>/")->required();
   cmd.add_option("--results", args->start.results, "results directory: where --point is read and <output>/ written")
       ->capture_default_str();
 }
+
+namespace {
+
+// --switch-branch and --boundary: each with --point only, and not together (the run-file reader's
+// rules for the keys of start.restart).
+void CheckRestartKind(const ContinueArgs& args) {
+  const RunFile& run = args.run;
+  if (args.boundary_given && run.restart_boundary.empty()) {
+    throw InvalidInput::WithMessage("boundary", "boundary = '' is invalid: valid the name of a second parameter to release");
+  }
+  if (run.restart_run.empty() && run.restart_switch_branch) {
+    throw InvalidInput::WithMessage("switch-branch", "switch-branch is invalid without --point: valid with --point "
+                                                     "RUN:LABEL at a PD or an SB");
+  }
+  if (run.restart_run.empty() && args.boundary_given) {
+    throw InvalidInput::WithMessage("boundary", fmt::format("boundary = '{}' is invalid without --point: valid with --point "
+                                                            "RUN:LABEL at a located special point", run.restart_boundary));
+  }
+  if (args.boundary_given && run.continue_past_type_changes) {
+    throw InvalidInput::WithMessage("continue-past-type-changes",
+                                    "continue-past-type-changes is invalid with --boundary: valid without it (a curve "
+                                    "in two parameters ends at the codimension-two point where a second margin "
+                                    "reaches zero)");
+  }
+  if (run.restart_switch_branch && args.boundary_given) {
+    throw InvalidInput::WithMessage("boundary", fmt::format("boundary = '{}' is invalid with --switch-branch: valid one of "
+                                                            "them", run.restart_boundary));
+  }
+}
+
+}  // namespace
 
 void BuildOneOffRun(ContinueArgs* args) {
   RunFile& run = args->run;
@@ -75,6 +117,7 @@ void BuildOneOffRun(ContinueArgs* args) {
   run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX finite with MIN < MAX");
   run.range_max = ParseNumber("range", args->range.substr(comma + 1), "MIN,MAX finite with MIN < MAX");
   CheckOneOffRun(run, args->range);
+  CheckRestartKind(*args);
   CheckLinearSolverIsUsed(args->linear_solver_given ? run.linear_solver : "", run.shooting);
   for (const std::string& text : args->user_values) {
     const auto equals = text.find('=');

@@ -22,6 +22,7 @@ struct ContinueArgs {
   std::string detect_folds = "true";
   std::string detect_branch_points = "true";
   bool linear_solver_given = false;  // refused with --shooting single, where it would be ignored
+  bool boundary_given = false;       // --boundary '' is refused, not taken as none
 };
 
 // --ds, --ds-min, --ds-max and --max-points (a branch's steps, the run file's keys of those names)

@@ -316,18 +316,25 @@ int RunContinue(ContinueArgs args) {
   // Every output is checked before anything is computed.
   const std::vector<std::pair<int, std::string>> directions = Directions(args);
   for (const auto& [direction, output] : directions) CheckOutputDirectory(args.start.results, output);
-  int code = kExitOk;
+  // Both directions are computed before either is written: input refused on the second (a range
+  // that misses the first point of the branch leaving a PD on that side) leaves nothing written.
+  std::vector<std::pair<RunFile, std::optional<Executed>>> computed;
   for (const auto& [direction, output] : directions) {
     run.direction = direction;
     run.output = output;
-    std::optional<Executed> e;
     try {
-      e = Execute(run, args.start.results);
+      computed.emplace_back(run, Execute(run, args.start.results));
     } catch (const InvalidInput& error) {
       throw AsOption(error);
     }
-    if (!e) return kExitNoConvergence;
-    WriteAndReport(run, *e, args.start.results);
+  }
+  int code = kExitOk;
+  for (const auto& [one, e] : computed) {
+    if (!e) {
+      code = kExitNoConvergence;
+      continue;
+    }
+    WriteAndReport(one, *e, args.start.results);
     if (code == kExitOk) code = ExitCodeOf(e->branch);
   }
   return code;

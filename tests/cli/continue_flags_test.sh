@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # stickslip continue: the run file's keys as flags (user values, shooting, linear solver, fold
-# and branch-point detection, both directions in one command), --point restarts, a closed branch
+# and branch-point detection, both directions in one command, the restart's switch_branch and
+# boundary), --point restarts, a closed branch
 # reported as such, and bad values refused with exit 2 and nothing written.
 set -euo pipefail
 bin=${STICKSLIP:?set STICKSLIP to the stickslip program}
@@ -53,6 +54,20 @@ grep -q '"shooting": "multiple"' "$work/ms/summary.json"
 grep -q "^from-lp: 20 points" "$work/lp.txt"
 head -2 "$work/from-lp/branch.csv" | tail -1 | cut -d, -f5 | grep -q "^0.58681886"
 
+# The restart's kinds as flags give the run files' branches byte for byte: the fold's curve in
+# (omega, u_r) (paper-5.1-fold-curve.toml) and the period-2 branch that leaves PD2
+# (paper-5.2-period-2.toml), from copies of the runs they restart from.
+mkdir "$work/kinds"
+cp -r "$src/results/paper-5.1-omega-up" "$src/results/paper-5.2-omega-to-pd" "$work/kinds/"
+"$bin" continue --point paper-5.1-omega-up:LP4 --boundary u_r --parameter omega --direction down --range 0.555,0.65 \
+  --ds 0.002 --ds-max 0.01 --max-points 3000 --results "$work/kinds" --output fold-curve > /dev/null
+"$bin" continue --point paper-5.2-omega-to-pd:PD2 --switch-branch --parameter omega --range 0.6,0.8 --ds 0.005 \
+  --ds-max 0.02 --max-points 500 --results "$work/kinds" --output period-2 > /dev/null
+for f in branch.csv special-points.csv; do
+  cmp "$work/kinds/fold-curve/$f" "$src/results/paper-5.1-fold-curve/$f"
+  cmp "$work/kinds/period-2/$f" "$src/results/paper-5.2-period-2/$f"
+done
+
 # A closed branch: section 5.1 past its type changes is a loop; it ends where it began.
 "$bin" "${base[@]}" --continue-past-type-changes --max-points 100000 --output loop > "$work/loop.txt"
 grep -q "closed-loop: the branch came back to its start" "$work/loop.txt"
@@ -98,6 +113,27 @@ expect_rejected "user-value names 'chi'" "${base[@]}" --user-value chi=0.3 --out
 expect_rejected "--shooting" "${base[@]}" --shooting double --output bad
 expect_rejected "set" "${base[@]}" --set u_r=0.5 --set u_r=0.6 --output bad
 expect_rejected "guess" "${base[@]}" --guess d1=3 --guess d1=3.1 --output bad
+# The restart's kinds: with --point only, one at a time, at a point of their kind.
+lp=(continue --point p-up:LP4 --parameter omega --range 0.3,0.9 --results "$work")
+expect_rejected "switch-branch is invalid without --point" "${base[@]}" --switch-branch --output bad
+expect_rejected "boundary = 'u_r' is invalid without --point" "${base[@]}" --boundary u_r --output bad
+expect_rejected "boundary = '' is invalid" "${lp[@]}" --boundary '' --output bad
+expect_rejected "boundary = 'u_r' is invalid with --switch-branch" "${lp[@]}" --boundary u_r --switch-branch --output bad
+expect_rejected "switch-branch = true is invalid at 'LP4'" "${lp[@]}" --switch-branch --output bad
+expect_rejected "boundary = 'omega' is invalid at 'LP4'" "${lp[@]}" --boundary omega --output bad
+expect_rejected "boundary = 'u_r' is invalid at 'EP1'" continue --point p-up:EP1 --boundary u_r --parameter omega \
+  --range 0.3,0.9 --results "$work" --output bad
+expect_rejected "continue-past-type-changes is invalid with --boundary" "${lp[@]}" --boundary u_r \
+  --continue-past-type-changes --output bad
+# Both sides of PD2, where the range holds the first point of the branch that leaves it downwards
+# only: refused, and the down side is not written either.
+set +e
+"$bin" continue --point paper-5.2-omega-to-pd:PD2 --switch-branch --parameter omega --range 0.73548,0.73548861 \
+  --direction both --results "$work/kinds" --output bad > /dev/null 2> "$work/err"
+code=$?
+set -e
+[ "$code" -eq 2 ] && grep -q "excludes the first point of the branch that leaves 'PD2'" "$work/err" &&
+  [ ! -e "$work/kinds/bad-down" ] && [ ! -e "$work/kinds/bad-up" ] || { echo "exit $code"; cat "$work/err"; ls "$work/kinds"; exit 1; }
 for bad in 0 -1 nan inf 1e309; do expect_rejected "max-amplitude" "${base[@]}" --max-amplitude "$bad" --output bad; done
 
 # A resonance: the §4.1 orbit (never sticking) continued up in omega towards omega1 = 0.7012302

@@ -78,8 +78,8 @@ def test_bad_switches_raise_value_error(tmp_path):
         stickslip.continue_orbit("omega", (0.6, 0.739), switch_branch=True, **TO_PD)
     with pytest.raises(ValueError, match=r"^switch_branch = 1 is invalid: valid range True or False$"):
         stickslip.continue_orbit("omega", (0.6, 0.8), results=tmp_path, point="to-pd:PD2", switch_branch=1)
-    # At a label that is no PD or SB, as the run file's key says it.
-    with pytest.raises(ValueError, match=r"switch_branch' = true is invalid at 'EP1' \(type EP\): valid at a period "
+    # At a label that is no PD or SB, named as the command line's option (as max-points is).
+    with pytest.raises(ValueError, match=r"^switch-branch = true is invalid at 'EP1' \(type EP\): valid at a period "
                                          r"doubling \(PD\) or a symmetry breaking \(SB\)"):
         stickslip.continue_orbit("omega", (0.6, 0.8), results=tmp_path, point="to-pd:EP1", switch_branch=True)
 
@@ -122,7 +122,7 @@ def test_a_type_boundary_from_a_stored_label_gives_the_run_files_curve_byte_for_
 
 @pytest.mark.parametrize("keywords, message", [
     (dict(point=None), "boundary = 'u_r' is invalid: valid range a second parameter with point='RUN:LABEL'"),
-    (dict(point="paper-4.1-omega-down:EP1"), "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1'"),
+    (dict(point="paper-4.1-omega-down:EP1"), "boundary = 'u_r' is invalid at 'EP1'"),
 ])
 def test_a_type_boundary_needs_a_stored_change_of_type(keywords, message):
     with pytest.raises(ValueError) as error:

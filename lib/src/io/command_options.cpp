@@ -24,11 +24,13 @@ InvalidInput AsOption(const InvalidInput& error) {
   // its keys: "(command line): key 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r'
   // twice ...", and "(command line): key 'start' gives invalid data: d1 = 1e+308 is invalid: ..."
   // the value's own message.
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 12> kOptions = {{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 14> kOptions = {{
       {"start.set", "set"},
       {"start.guess", "guess"},
       {"start.preset", "preset"},
       {"start.signature", "signature"},
+      {"start.restart.switch_branch", "switch-branch"},
+      {"start.restart.boundary", "boundary"},
       {"start.restart", "point"},
       {"unknowns.free", "free"},
       {"unknowns.fix", "fix"},
