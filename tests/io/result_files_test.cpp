@@ -150,6 +150,8 @@ TEST(ResultFiles, ReaderGivesEachColumnItsMeaning) {
 TEST(ResultFiles, LabelledPointGivesTheOrbitVariablesOfTheSpecialPoint) {
   const LabelledPoint point = ReadLabelledPoint(kResults, "paper-5.1-omega-up", "LP4");
   EXPECT_EQ(point.signature, "slip- slip+ stick slip+");
+  EXPECT_EQ(point.type, "LP");
+  EXPECT_EQ(point.test_function, "tangent:lambda");
   ASSERT_EQ(point.variables.size(), 13u);  // 5 parameters, phi, x10, x20, v10, 4 durations
   EXPECT_EQ(point.variables[2], std::make_pair(std::string("omega"), 0.5868188660921189));
   EXPECT_EQ(point.variables.back().first, "d4");

@@ -230,7 +230,7 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   const bool curve = !run.restart_boundary.empty();
   if (curve) CheckCurveKeepsTheSurfaceFixed(run, model, at.orbit, k);
   BasicOrbitContinuationSetup<Model> setup = BranchOfRestart(run, model, ContinuableIn(std::move(at.orbit), k));
-  if (run.restart_switch_branch) setup = SwitchedAtLabel(run, setup);
+  if (run.restart_switch_branch) setup = SwitchedAtLabel(run, at.special.type, setup);
   if (curve) setup = CurveOfRestart(run, at.special.type, at.special.test_function, setup);
   // User values address the unknowns: the free variables in their order, then the parameter (of the
   // branch that leaves the point, where the switch changed its type).

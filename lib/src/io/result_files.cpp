@@ -667,7 +667,7 @@ LabelledPoint ReadLabelledPoint(const fs::path& results_root, const std::string&
                            (results_root / run).string(), stored.summary.model));
   }
   const StoredSpecialPoint& s = SpecialPointLabelled(stored, label, results_root / run);
-  return {stored.summary.signature, s.point.solution, s.test_function};
+  return {stored.summary.signature, s.point.solution, s.type, s.test_function};
 }
 
 }  // namespace stickslip

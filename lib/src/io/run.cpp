@@ -119,12 +119,11 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   ContinuationOptions& o = setup.options;
   SetContinuationOptions(run, &o);
   CheckOneRestartKind(run);
-  if (run.restart_switch_branch) setup = SwitchedAtLabel(run, setup);
-  if (!run.restart_boundary.empty()) {
-    // The label's type is its letters (LP2: LP).
-    const std::string& label = run.restart_label;
-    const std::string test = ReadLabelledPoint(results_root, run.restart_run, label).test_function;
-    setup = CurveOfRestart(run, label.substr(0, label.find_first_of("0123456789")), test, setup);
+  if (run.restart_switch_branch || !run.restart_boundary.empty()) {
+    // The label's type and test function, which the start (its orbit) does not carry.
+    const LabelledPoint at = ReadLabelledPoint(results_root, run.restart_run, run.restart_label);
+    setup = run.restart_switch_branch ? SwitchedAtLabel(run, at.type, setup)
+                                      : CurveOfRestart(run, at.type, at.test_function, setup);
   }
   // User values address unknowns: the free variables in their order, then the parameter (of the
   // branch that leaves the point, or of the boundary, where the start's type changed).

@@ -67,6 +67,7 @@ StoredSummary ReadRunSummary(const std::filesystem::path& run_directory);
 struct LabelledPoint {
   std::string signature;
   NamedValues variables;
+  std::string type;           // the special point's: LP, PD, SK, ... (its label's letters, as written)
   std::string test_function;  // the special point's: "margin:reversal:1", "floquet:det(M+I)", ...
 };
 LabelledPoint ReadLabelledPoint(const std::filesystem::path& results_root, const std::string& run,

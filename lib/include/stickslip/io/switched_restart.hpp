@@ -15,19 +15,19 @@
 
 namespace stickslip {
 
-// Throws the run file's error at start.restart.switch_branch where the label is no crossing of
+// `type` is the label's stored type (special-points.csv's column: PD, SB, ...). Throws the run
+// file's error at start.restart.switch_branch where the label is no crossing of
 // branches (a PD or SB whose new problem is singular there, relative to 1e-6), and at
 // continuation.shooting for multiple shooting (the new branch is solved by single shooting).
 template <OscillatorModel Model>
-BasicOrbitContinuationSetup<Model> SwitchedAtLabel(const RunFile& run, const BasicOrbitContinuationSetup<Model>& setup) {
+BasicOrbitContinuationSetup<Model> SwitchedAtLabel(const RunFile& run, const std::string& type,
+                                                   const BasicOrbitContinuationSetup<Model>& setup) {
   if (setup.shooting == ShootingChoice::kMultiple) {
     throw KeyError(run, "continuation.shooting",
                    "= \"multiple\" is invalid with start.restart.switch_branch: valid \"auto\" or \"single\" (the "
                    "branch that leaves a bifurcation is solved by single shooting)");
   }
-  // The label's letters are its type (PD2: PD).
   const std::string& label = run.restart_label;
-  const std::string type = label.substr(0, label.find_first_of("0123456789"));
   try {
     const BasicBifurcationBranchStart<Model> start = BranchFromBifurcation(type, setup, run.direction);
     // The tests see 1e-16 .. 1e-7 at located points; far above, the stored point is no crossing.
