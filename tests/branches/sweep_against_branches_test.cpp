@@ -33,7 +33,7 @@ double SettledDistance(const Orbit& o, double offset) {
   start(0) += offset;
   const std::vector<SweepPoint> points = Sweep(o.parameters, {start}, o.phi, options);
   double distance = 0.0;
-  for (const State& x : points.front().section) {
+  for (const auto& x : points.front().section) {
     distance = std::max(distance, (x - o.InitialState()).lpNorm<Eigen::Infinity>());
   }
   return distance;

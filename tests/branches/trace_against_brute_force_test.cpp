@@ -57,7 +57,9 @@ Checked CheckAgainstBruteForce(const std::string& run_file, const std::string& p
         ++checked.stable_points;
         const SettledMotion back = SimulateSettled(p, start + State::Constant(1e-6), orbit.phi, settle);
         EXPECT_FALSE(back.section.empty()) << where;
-        if (!back.section.empty()) EXPECT_LE(RelativeDistance(back.section.front(), start), 1e-7) << where;
+        if (!back.section.empty()) {
+          EXPECT_LE(RelativeDistance(back.section.front(), start), 1e-7) << where;
+        }
         const double forcing_period = 2.0 * std::numbers::pi / p.omega;
         for (const State& from : {State(State::Zero()), paper_start}) {
           const SettledMotion m = SimulateSettled(p, from, orbit.phi, settle);

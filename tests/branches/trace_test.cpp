@@ -213,7 +213,9 @@ TEST(Trace, Section51OverOmegaClosesItsLoopWithItsFoldAndTypeChanges) {
   }
   for (const OrbitBranch* b : traced) {
     for (const SpecialPoint& s : b->branch.special_points) {
-      if (s.test_function.starts_with("margin:")) EXPECT_LE(std::abs(s.test_value), 1e-12) << s.test_function;
+      if (s.test_function.starts_with("margin:")) {
+        EXPECT_LE(std::abs(s.test_value), 1e-12) << s.test_function;
+      }
     }
   }
   const auto count = [&](const std::string& name) {

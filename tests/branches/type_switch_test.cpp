@@ -144,8 +144,8 @@ INSTANTIATE_TEST_SUITE_P(
         ConfirmedCase{"paper-4.2-omega-down", "reversal:2", 0.56996423, "slip- slip- stick / antisymmetric"},
         ConfirmedCase{"paper-4.2-u_s-up", "reversal:2", 0.1745455071, "slip- slip- stick / antisymmetric"},
         ConfirmedCase{"paper-5.2-omega-down", "reversal:1", 0.6039832496, "slip- stick slip+ stick"}),
-    [](const auto& info) {
-      std::string name = std::string(info.param.run) + "_" + info.param.margin;
+    [](const auto& test) {
+      std::string name = std::string(test.param.run) + "_" + test.param.margin;
       for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
       return name;
     });
@@ -253,8 +253,8 @@ INSTANTIATE_TEST_SUITE_P(
         UnconfirmedCase{"paper-5.2-omega-down", "G:3", "stop-slope:4"},
         UnconfirmedCase{"paper-5.2-u_r-up", "G:3", "stop-slope:4"},
         UnconfirmedCase{"paper-6-omega-up", "G:2", "stop-slope:3"}),
-    [](const auto& info) {
-      std::string name = std::string(info.param.run) + "_" + info.param.margin;
+    [](const auto& test) {
+      std::string name = std::string(test.param.run) + "_" + test.param.margin;
       for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
       return name;
     });

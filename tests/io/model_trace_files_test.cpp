@@ -85,7 +85,7 @@ TEST_F(BeltTraceFiles, SummariesCarryTheModelsUnitsAndOlderOnesReadAsSi) {
   EXPECT_EQ(read.summary.units, (ModelUnits{"mm", "ms", "kN"}));
   EXPECT_NE(FormatRunFiles(read).summary_json.find("\"length\": \"mm\""), std::string::npos);
   EXPECT_EQ(FormatRunFiles(read).summary_json, FormatRunFiles(ParseRunFiles(FormatRunFiles(read), "belt")).summary_json);
-  for (const std::string& bad : {"  \"units\": {\"length\": \"\", \"time\": \"s\", \"force\": \"N\"},\n",
+  for (const char* bad : {"  \"units\": {\"length\": \"\", \"time\": \"s\", \"force\": \"N\"},\n",
                                  "  \"units\": {\"length\": \"m\", \"time\": \"s\"},\n", "  \"units\": \"SI\",\n"}) {
     try {
       ParseRunFiles(with_units(bad), "belt");

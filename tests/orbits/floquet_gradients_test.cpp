@@ -53,13 +53,15 @@ TEST_P(MonodromyGradients, AreCentralDifferencesOfTheMonodromy) {
     EXPECT_LE((g.d_listed[k] - listed).cwiseAbs().maxCoeff(), 1e-6 * scale) << ov::Name(o.signature.size(), k);
     // The transition matrices depend on chi and eta (eq. 55, 58); u_r enters no saltation matrix.
     const int chi = ov::Parameter(o.signature.size(), ParameterId::kChi);
-    if (k == chi || k == chi + 1) EXPECT_GT(g.d_period[k].cwiseAbs().maxCoeff(), 0.0);
+    if (k == chi || k == chi + 1) {
+      EXPECT_GT(g.d_period[k].cwiseAbs().maxCoeff(), 0.0);
+    }
   }
 }
 
 // §4.1 without sticks (antisymmetric), §5.1 and §6 with (§6 antisymmetric).
 INSTANTIATE_TEST_SUITE_P(PaperOrbits, MonodromyGradients, ::testing::Values("paper-4.1", "paper-5.1", "paper-6"),
-                         [](const auto& info) { return std::string(info.param).substr(6, 1) + "_" + std::to_string(info.index); });
+                         [](const auto& test) { return std::string(test.param).substr(6, 1) + "_" + std::to_string(test.index); });
 
 // A model sized at run time: the damped five-mass chain's stick-slip orbit (its motion settled at
 // omega = 0.6), every variable but the belt's speed, over the period and over the listed half

@@ -141,8 +141,8 @@ INSTANTIATE_TEST_SUITE_P(FivePaperOrbits, PaperOrbitMeasures,
                          ::testing::Values(std::pair{"paper-4.1", false}, std::pair{"paper-4.2", false},
                                            std::pair{"paper-5.1", false}, std::pair{"paper-5.2", true},
                                            std::pair{"paper-6", false}),
-                         [](const auto& info) {
-                           std::string name = info.param.first;
+                         [](const auto& test) {
+                           std::string name = test.param.first;
                            std::replace_if(name.begin(), name.end(), [](char c) { return c == '-' || c == '.'; }, '_');
                            return name;
                          });

@@ -74,9 +74,9 @@ INSTANTIATE_TEST_SUITE_P(Formulations, DenHartogPeriodicity,
                          testing::Values(Case{"slip- / antisymmetric", Shooting::kSingle},
                                          Case{"slip- slip+", Shooting::kSingle},
                                          Case{"slip- slip+", Shooting::kMultiple}),
-                         [](const testing::TestParamInfo<Case>& info) {
-                           return std::string(info.param.shooting == Shooting::kMultiple ? "Multiple" : "Single") +
-                                  (std::string(info.param.signature).find('/') != std::string::npos ? "HalfPeriod"
+                         [](const testing::TestParamInfo<Case>& test) {
+                           return std::string(test.param.shooting == Shooting::kMultiple ? "Multiple" : "Single") +
+                                  (std::string(test.param.signature).find('/') != std::string::npos ? "HalfPeriod"
                                                                                                    : "FullPeriod");
                          });
 

@@ -19,19 +19,19 @@ template <typename Model>
 Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> PeriodMapJacobian(const Model& model,
                                                                               const BasicOrbit<Model>& o,
                                                                               double fraction = 1.0) {
-  using State = typename Model::State;
+  using ModelState = typename Model::State;
   const double t = 0.5 * o.durations[0];
   const typename Model::Parameters& p = o.parameters;
   const double omega = model.ForcingFrequency(p);
-  const State x = model.Flow(o.signature.segments()[0], o.start, o.phi, t, p);
+  const ModelState x = model.Flow(o.signature.segments()[0], o.start, o.phi, t, p);
   const double phase = o.phi + omega * t;
-  BasicSimulationOptions<State> options;
+  BasicSimulationOptions<ModelState> options;
   options.duration = fraction * o.signature.period_multiple() * 2.0 * std::numbers::pi / omega;
-  auto map = [&](const State& start) { return SimulateExact(model, p, start, phase, options).segments.back().end; };
+  auto map = [&](const ModelState& start) { return SimulateExact(model, p, start, phase, options).segments.back().end; };
   Eigen::Matrix<double, Model::kStateSize, Model::kStateSize> j(model.StateSize(), model.StateSize());
   for (int k = 0; k < model.StateSize(); ++k) {
     const double h = 1e-6;
-    State plus = x, minus = x;
+    ModelState plus = x, minus = x;
     plus(k) += h;
     minus(k) -= h;
     j.col(k) = (map(plus) - map(minus)) / (2 * h);

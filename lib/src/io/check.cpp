@@ -50,7 +50,6 @@ bool MultipliersClearOfUnitCircle(const std::vector<std::complex<double>>& mu, d
 }
 
 std::string Text(double v) { return fmt::format("{}", v); }
-std::string Text(int count) { return std::to_string(count); }
 std::string Text(bool flag) { return flag ? "1" : "0"; }
 
 // Appends the differences of one point, `where` naming it (its label, or "row N").

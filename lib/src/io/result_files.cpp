@@ -87,7 +87,6 @@ std::map<std::string, std::size_t> CountsByType(const std::vector<StoredSpecialP
 // ---- Writing
 
 std::string Number(double v) { return fmt::format("{}", v); }
-std::string Number(int count) { return std::to_string(count); }
 const char* Flag(bool b) { return b ? "1" : "0"; }
 
 std::string Row(const StoredPoint& p) {

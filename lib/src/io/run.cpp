@@ -99,7 +99,6 @@ void CheckOneRestartKind(const RunFile& run) {
 }
 
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root) {
-  auto fail = [&](const std::string& key, const std::string& what) { return KeyError(run, key, what); };
   const StartProblem start = [&] {
     try {
       return BuildStartProblem(StartInputOf(run, results_root));

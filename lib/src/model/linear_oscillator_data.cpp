@@ -257,7 +257,7 @@ void LinearOscillatorData::AddTo(Fingerprint& hash) const {
   hash.AddText(name);
   // Units other than SI only: the fingerprints of runs made before units could be declared stand.
   if (units != SiUnits()) {
-    for (const auto& [name, unit] : ModelUnits::kNamed) hash.AddText(units.*unit);
+    for (const auto& [quantity, unit] : ModelUnits::kNamed) hash.AddText(units.*unit);
   }
 }
 
