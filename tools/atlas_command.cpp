@@ -103,8 +103,7 @@ int ComputeAndWrite(const RunFile& run, const std::filesystem::path& results, Co
 
 int RunAtlas(const AtlasArgs& args) {
   const ModelStart origin = BuildModelStart(ToStartInput(args.origin));
-  RunFile run;
-  run.path = kOneOffRunPath;
+  RunFile run = AsOneOffRun({});
   run.output = args.output;
   run.parameter = args.parameter;
   AtlasOptions options = AtlasOptionsOf(CommandOf(args), origin);

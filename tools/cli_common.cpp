@@ -45,22 +45,17 @@ CLI::Option* AddCountOption(CLI::App& cmd, const std::string& name, int* value, 
       ->default_str(fmt::format("{}", *value));
 }
 
-int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason) {
+ExitWithReason SolvedOrbitExitCode(const Margin& smallest, const Verification& verification) {
   if (std::isnan(smallest.value)) {
-    *reason = fmt::format("the solution's admissibility is not known: margin {} is not defined (its root search was cut short)",
-                          smallest.Name());
-    return kExitNotAMotion;
+    return {kExitNotAMotion, fmt::format("the solution's admissibility is not known: margin {} is not defined (its root "
+                                         "search was cut short)", smallest.Name())};
   }
   if (!(smallest.value > 0)) {
-    *reason = fmt::format("the solution is not a motion of the system: margin {} = {:.6g} <= 0", smallest.Name(),
-                          smallest.value);
-    return kExitNotAMotion;
+    return {kExitNotAMotion, fmt::format("the solution is not a motion of the system: margin {} = {:.6g} <= 0",
+                                         smallest.Name(), smallest.value)};
   }
-  if (!verification.Passed()) {
-    *reason = "the solution failed its verification by simulation";
-    return kExitNotAMotion;
-  }
-  return kExitOk;
+  if (!verification.Passed()) return {kExitNotAMotion, "the solution failed its verification by simulation"};
+  return {};
 }
 
 std::string SetKeysHelp() {

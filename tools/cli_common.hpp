@@ -36,9 +36,13 @@ inline constexpr int kExitNotPeriodic = 5;
 int FindExitCode(FindOrbitStatus status);
 
 // solve's exit code for a converged orbit with this smallest margin and verification:
-// kExitNotAMotion, with the reason in *reason, if the margin is not positive or the verification
-// failed; kExitOk otherwise.
-int SolvedOrbitExitCode(const Margin& smallest, const Verification& verification, std::string* reason);
+// kExitNotAMotion, with its reason, if the margin is not positive or the verification failed;
+// kExitOk (and no reason) otherwise.
+struct ExitWithReason {
+  int exit_code = kExitOk;
+  std::string reason;
+};
+ExitWithReason SolvedOrbitExitCode(const Margin& smallest, const Verification& verification);
 
 // Numeric options read by ParseNumber and ParseCount instead of CLI11's conversion, so that
 // "--max-points 2.5" gets the one-line form naming the option, the value and the valid range

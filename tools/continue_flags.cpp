@@ -73,30 +73,11 @@ void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
 
 namespace {
 
-// --switch-branch and --boundary: each with --point only, and not together (the run-file reader's
-// rules for the keys of start.restart).
-void CheckRestartKind(const ContinueArgs& args) {
-  const RunFile& run = args.run;
-  if (args.boundary_given && run.restart_boundary.empty()) {
+// --boundary given empty, which the run's fields cannot tell from not given (CheckRunValues has
+// the rules of --switch-branch and --boundary that a run file's start.restart has too).
+void RefuseEmptyBoundary(const ContinueArgs& args) {
+  if (args.boundary_given && args.run.restart_boundary.empty()) {
     throw InvalidInput::WithMessage("boundary", "boundary = '' is invalid: valid the name of a second parameter to release");
-  }
-  if (run.restart_run.empty() && run.restart_switch_branch) {
-    throw InvalidInput::WithMessage("switch-branch", "switch-branch is invalid without --point: valid with --point "
-                                                     "RUN:LABEL at a PD or an SB");
-  }
-  if (run.restart_run.empty() && args.boundary_given) {
-    throw InvalidInput::WithMessage("boundary", fmt::format("boundary = '{}' is invalid without --point: valid with --point "
-                                                            "RUN:LABEL at a located special point", run.restart_boundary));
-  }
-  if (args.boundary_given && run.continue_past_type_changes) {
-    throw InvalidInput::WithMessage("continue-past-type-changes",
-                                    "continue-past-type-changes is invalid with --boundary: valid without it (a curve "
-                                    "in two parameters ends at the codimension-two point where a second margin "
-                                    "reaches zero)");
-  }
-  if (run.restart_switch_branch && args.boundary_given) {
-    throw InvalidInput::WithMessage("boundary", fmt::format("boundary = '{}' is invalid with --switch-branch: valid one of "
-                                                            "them", run.restart_boundary));
   }
 }
 
@@ -104,20 +85,20 @@ void CheckRestartKind(const ContinueArgs& args) {
 
 void BuildOneOffRun(ContinueArgs* args) {
   RunFile& run = args->run;
-  run.path = kOneOffRunPath;
+  run = AsOneOffRun(std::move(run));
   // A [model]'s label: only its run and label here; the model and the orbit come with the run
   // (MakeModelSetup), which refuses the start options only the paper's oscillator takes.
   StartFlags start = args->start;
   const auto model_point = ModelPointOf(start.results, start.point);
   if (model_point) start.point.clear();
-  SetRunFileStart(ToStartInput(start), &run);
+  run = WithStart(std::move(run), ToStartInput(start));
   if (model_point) std::tie(run.restart_run, run.restart_label) = *model_point;
   const auto comma = args->range.find(',');
   if (comma == std::string::npos) throw InvalidInput("range", "'" + args->range + "'", "MIN,MAX");
-  run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX finite with MIN < MAX");
-  run.range_max = ParseNumber("range", args->range.substr(comma + 1), "MIN,MAX finite with MIN < MAX");
-  CheckOneOffRun(run, args->range);
-  CheckRestartKind(*args);
+  run.range_min = ParseNumber("range", args->range.substr(0, comma), "MIN,MAX with MIN < MAX, both finite");
+  run.range_max = ParseNumber("range", args->range.substr(comma + 1), "MIN,MAX with MIN < MAX, both finite");
+  RefuseEmptyBoundary(*args);
+  CheckRunValues(run);
   CheckLinearSolverIsUsed(args->linear_solver_given ? run.linear_solver : "", run.shooting);
   for (const std::string& text : args->user_values) {
     const auto equals = text.find('=');

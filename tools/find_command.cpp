@@ -150,9 +150,8 @@ int WriteAndTrace(const FindArgs& args, const FindOutputs& outputs, const StartI
   }
   if (!outputs.trace) return kExitOk;
   const RunFile run = FoundRun(solved, *outputs.trace, args.output, true, args.steps);
-  int code = kExitOk;
-  const std::optional<TraceRun> trace = ExecuteTrace(run, args.start.results, &code);
-  return trace ? WriteAndReportTrace(trace->stored, trace->seconds, args.start.results) : code;
+  const TraceRun trace = ExecuteTrace(run, args.start.results);
+  return trace.stored ? WriteAndReportTrace(*trace.stored, trace.seconds, args.start.results) : trace.exit_code;
 }
 
 // find's outcome as one JSON object, by the names of Python's Found: status, message, the section's

@@ -77,11 +77,10 @@ OmegaRange RangeAround(double omega) {
 }
 
 RunFile FoundRun(const StartInput& start, OmegaRange range, const std::string& output, bool trace, const BranchSteps& steps) {
-  RunFile run;
+  RunFile run = AsOneOffRun({});
   run.steps = steps;
-  run.path = kOneOffRunPath;
   run.output = output;
-  SetRunFileStart(start, &run);
+  run = WithStart(std::move(run), start);
   run.parameter = "omega";
   run.range_min = range.low;
   run.range_max = range.high;

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     if (rank == 0) fmt::print(stderr, "error: {}\n", e.what());
     code = kExitBadInput;
   } catch (const stickslip::InvalidInput& e) {  // the same on every rank: the options are the same
-    if (rank == 0) fmt::print(stderr, "error: {}\n", stickslip::AsOption(e).what());
+    if (rank == 0) fmt::print(stderr, "error: {}\n", stickslip::OnCommandLine(e).what());
     code = kExitBadInput;
   } catch (const std::exception& e) {  // this rank only: the others may wait for it
     fmt::print(stderr, "error: rank {}: {}\n", rank, e.what());

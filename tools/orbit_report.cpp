@@ -55,10 +55,9 @@ std::string OrbitReport(const OrbitSolution& solution, const std::vector<int>& f
 }
 
 int SolvedOrbitOutcome(const std::vector<Margin>& margins, const Verification& verification) {
-  std::string reason;
-  const int code = SolvedOrbitExitCode(SmallestMargin(margins), verification, &reason);
-  if (code != kExitOk) fmt::print(stderr, "error: {}\n", reason);
-  return code;
+  const ExitWithReason outcome = SolvedOrbitExitCode(SmallestMargin(margins), verification);
+  if (outcome.exit_code != kExitOk) fmt::print(stderr, "error: {}\n", outcome.reason);
+  return outcome.exit_code;
 }
 
 }  // namespace stickslip::cli

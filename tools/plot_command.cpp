@@ -63,27 +63,26 @@ fs::path DrawingScript(const char* name) {
 // The scripts' exit code when matplotlib cannot be imported.
 constexpr int kScriptNeedsMatplotlib = 3;
 
-// Runs `argv` without a shell and returns its exit status, or -1 with *why if it could not start.
-int RunProgram(const std::vector<std::string>& argv, std::string* why) {
+// How a program run ended: its exit status, or -1 with why where it could not start or was killed.
+struct ProgramEnd {
+  int status = -1;
+  std::string why;
+};
+
+// Runs `argv` without a shell.
+ProgramEnd RunProgram(const std::vector<std::string>& argv) {
   std::vector<char*> pointers;
   for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
   pointers.push_back(nullptr);
   pid_t pid = 0;
   const int started = posix_spawn(&pid, pointers[0], nullptr, nullptr, pointers.data(), environ);
-  if (started != 0) {
-    *why = std::strerror(started);
-    return -1;
-  }
+  if (started != 0) return {-1, std::strerror(started)};
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
-      *why = std::strerror(errno);
-      return -1;
-    }
+    if (errno != EINTR) return {-1, std::strerror(errno)};
   }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  *why = fmt::format("it ended by signal {}", WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  return -1;
+  if (WIFEXITED(status)) return {WEXITSTATUS(status), ""};
+  return {-1, fmt::format("it ended by signal {}", WIFSIGNALED(status) ? WTERMSIG(status) : 0)};
 }
 
 // What plot draws, for the messages of an input it cannot.
@@ -180,8 +179,7 @@ int RunPlot(const PlotArgs& args) {
   if (args.force) argv.push_back("--force");  // the script checks the output's marker (check_replaceable)
   argv.push_back("--");  // the inputs, whatever their names begin with
   for (const fs::path& input : inputs) argv.push_back(input.string());
-  std::string why;
-  const int status = RunProgram(argv, &why);
+  const auto [status, why] = RunProgram(argv);
   if (status == -1 || status == kScriptNeedsMatplotlib) {
     fmt::print(stderr, "error: plot needs {} with matplotlib (Debian: apt-get install python3 python3-matplotlib): {}\n",
                interpreter, status == -1 ? why : "matplotlib cannot be imported");

@@ -199,10 +199,9 @@ int RunRuns(const RunArgs& args) {
       continue;
     }
     if (run.trace) {
-      int traced = kExitOk;
-      std::optional<TraceRun> trace = ExecuteTrace(run, args.results, &traced);
-      if (trace) traced = WriteAndReportTrace(trace->stored, trace->seconds, args.results);
-      if (!trace) unwritten.insert(run.output);
+      const TraceRun trace = ExecuteTrace(run, args.results);
+      const int traced = trace.stored ? WriteAndReportTrace(*trace.stored, trace.seconds, args.results) : trace.exit_code;
+      if (!trace.stored) unwritten.insert(run.output);
       if (code == kExitOk) code = traced;
       continue;
     }
@@ -239,25 +238,25 @@ bool ReportDifferences(const std::string& name, const std::vector<Difference>& d
 
 // A trace against its stored files: the same chain (each branch's signature, start and end, each
 // direction's end), and every branch as `check` compares a run.
-bool CheckTrace(const RunFile& run, const StoredTrace& stored, const TraceRun& fresh) {
+bool CheckTrace(const RunFile& run, const StoredTrace& stored, const StoredTrace& fresh) {
   std::vector<Difference> chain;
   auto compare = [&](const std::string& row, const std::string& column, const std::string& a, const std::string& b) {
     if (a != b) chain.push_back({"trace.json", row, column, a, b});
   };
   for (std::size_t k = 0; k < 2; ++k) {
-    compare(stored.directions[k].direction, "end", stored.directions[k].end, fresh.stored.directions[k].end);
+    compare(stored.directions[k].direction, "end", stored.directions[k].end, fresh.directions[k].end);
   }
-  compare("trace", "branches", std::to_string(stored.branches.size()), std::to_string(fresh.stored.branches.size()));
+  compare("trace", "branches", std::to_string(stored.branches.size()), std::to_string(fresh.branches.size()));
   bool ok = true;
-  for (std::size_t k = 0; k < std::min(stored.branches.size(), fresh.stored.branches.size()); ++k) {
+  for (std::size_t k = 0; k < std::min(stored.branches.size(), fresh.branches.size()); ++k) {
     const StoredTraceBranch& a = stored.branches[k];
-    const StoredTraceBranch& b = fresh.stored.branches[k];
+    const StoredTraceBranch& b = fresh.branches[k];
     compare(a.name, "signature", a.signature, b.signature);
     compare(a.name, "start", a.start, b.start);
     compare(a.name, "end", a.end, b.end);
     if (a.signature != b.signature) continue;
-    ok = ReportDifferences(run.output + "/" + a.name, CompareWithStored(fresh.stored.runs[k], stored.runs[k]),
-                           fresh.stored.runs[k].special_points.size()) && ok;
+    ok = ReportDifferences(run.output + "/" + a.name, CompareWithStored(fresh.runs[k], stored.runs[k]),
+                           fresh.runs[k].special_points.size()) && ok;
   }
   return ReportDifferences(run.output + "/trace.json", chain, 0) && ok;
 }
@@ -284,10 +283,9 @@ int RunCheck(const CheckArgs& args) {
   int code = kExitOk;
   for (const Stored& c : checks) {
     if (c.trace) {
-      int failed = kExitOk;
-      std::optional<TraceRun> fresh = ExecuteTrace(c.run, args.results, &failed);
-      if (!fresh) return failed;
-      if (!CheckTrace(c.run, *c.trace, *fresh)) code = kExitFailure;
+      const TraceRun fresh = ExecuteTrace(c.run, args.results);
+      if (!fresh.stored) return fresh.exit_code;
+      if (!CheckTrace(c.run, *c.trace, *fresh.stored)) code = kExitFailure;
       continue;
     }
     std::optional<Executed> e = Execute(c.run, args.results);
@@ -322,11 +320,7 @@ int RunContinue(ContinueArgs args) {
   for (const auto& [direction, output] : directions) {
     run.direction = direction;
     run.output = output;
-    try {
-      computed.emplace_back(run, Execute(run, args.start.results));
-    } catch (const InvalidInput& error) {
-      throw AsOption(error);
-    }
+    computed.emplace_back(run, Execute(run, args.start.results));
   }
   int code = kExitOk;
   for (const auto& [one, e] : computed) {

@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const stickslip::InvalidInput& e) {  // a number option read by ParseNumber or ParseCount
-    fmt::print(stderr, "error: {}\n", stickslip::AsOption(e).what());
+    fmt::print(stderr, "error: {}\n", stickslip::OnCommandLine(e).what());
     return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
       if (command.subcommand->parsed()) return command.run();
     }
   } catch (const stickslip::InvalidInput& e) {
-    fmt::print(stderr, "error: {}\n", stickslip::AsOption(e).what());
+    fmt::print(stderr, "error: {}\n", stickslip::OnCommandLine(e).what());
     return kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());

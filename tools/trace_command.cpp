@@ -1,7 +1,6 @@
 // stickslip trace: the chain of branches through the changes of orbit type, both ways from one
 // start (branches/trace.hpp), from flags as `continue` takes them; written to results/<output>/
 // (io/trace_files.hpp).
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -16,6 +15,7 @@
 #include "stickslip/io/command_options.hpp"
 #include "stickslip/io/model_restart.hpp"
 #include "stickslip/io/run.hpp"
+#include "stickslip/io/run_fields.hpp"
 #include "trace_run.hpp"
 
 namespace stickslip::cli {
@@ -24,7 +24,7 @@ namespace {
 
 // Traces `setup` (either model's) with a progress line and records the trace (`record`).
 template <typename Setup, typename Record>
-std::optional<TraceRun> TraceAndRecord(const RunFile& run, const Setup& setup, const Record& record, int* exit_code) {
+TraceRun TraceAndRecord(const RunFile& run, const Setup& setup, const Record& record) {
   TraceOptions options = *run.trace;
   ProgressLineOptions line_options;
   line_options.value_name = run.parameter;
@@ -36,23 +36,21 @@ std::optional<TraceRun> TraceAndRecord(const RunFile& run, const Setup& setup, c
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!result.HasBranches()) {
     fmt::print(stderr, "error: {}: {}\n", run.path, result.down.message);
-    *exit_code = result.NotAMotion() ? kExitNotAMotion : kExitNoConvergence;
-    return std::nullopt;
+    return TraceRun{.exit_code = result.NotAMotion() ? kExitNotAMotion : kExitNoConvergence};
   }
-  return TraceRun{record(result), seconds};
+  return TraceRun{.stored = record(result), .seconds = seconds};
 }
 
 }  // namespace
 
-std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code) {
+TraceRun ExecuteTrace(const RunFile& run, const std::filesystem::path& results) {
   if (const std::optional<ModelRunSetup> model = MakeModelSetup(run, results)) {
     return TraceAndRecord(
         run, model->setup,
-        [&](const BasicTraceResult<DynamicLinearOscillator>& trace) { return model->Recorded(run, trace); },
-        exit_code);
+        [&](const BasicTraceResult<DynamicLinearOscillator>& trace) { return model->Recorded(run, trace); });
   }
   return TraceAndRecord(
-      run, MakeSetup(run, results), [&](const TraceResult& trace) { return RecordTrace(run, trace); }, exit_code);
+      run, MakeSetup(run, results), [&](const TraceResult& trace) { return RecordTrace(run, trace); });
 }
 
 int WriteAndReportTrace(const StoredTrace& trace, double seconds, const std::filesystem::path& results) {
@@ -91,22 +89,14 @@ int RunTrace(TraceArgs args) {
   RunFile& run = args.continuation.run;
   try {
     args.options.Validate();
-  } catch (const InvalidInput& e) {  // named as the options are: max_amplitude is --max-amplitude
-    std::string option = e.field();
-    std::replace(option.begin(), option.end(), '_', '-');
-    throw e.Renamed(option);
+  } catch (const InvalidInput& e) {  // named as the options are: trace.max_amplitude is --max-amplitude
+    throw e.Renamed(OptionOfKey("trace." + e.field()));
   }
   run.trace = args.options;
   CheckTraceOutputDirectory(args.continuation.start.results, run.output);
-  std::optional<TraceRun> trace;
-  int code = kExitOk;
-  try {
-    trace = ExecuteTrace(run, args.continuation.start.results, &code);
-  } catch (const InvalidInput& error) {
-    throw AsOption(error);
-  }
-  if (!trace) return code;
-  return WriteAndReportTrace(trace->stored, trace->seconds, args.continuation.start.results);
+  const TraceRun trace = ExecuteTrace(run, args.continuation.start.results);
+  if (!trace.stored) return trace.exit_code;
+  return WriteAndReportTrace(*trace.stored, trace.seconds, args.continuation.start.results);
 }
 
 }  // namespace

@@ -8,18 +8,22 @@
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/io/trace_files.hpp"
 
+#include "cli_common.hpp"
+
 namespace stickslip::cli {
 
+// A trace computed in memory, or the exit code of one that traced nothing (nothing to write then):
+// kExitNotAMotion when the start is not a motion (and the trace does not allow it),
+// kExitNoConvergence when no branch started.
 struct TraceRun {
-  StoredTrace stored;
-  double seconds = 0.0;  // wall time, reported on stdout (not in the files)
+  std::optional<StoredTrace> stored;  // nullopt: nothing traced
+  double seconds = 0.0;               // wall time, reported on stdout (not in the files)
+  int exit_code = kExitOk;            // of a trace that traced nothing
 };
 
 // The trace of `run` (run.trace set), from a [model]'s label (MakeModelSetup) or of the paper's
-// oscillator. nullopt, with the reason on stderr and *exit_code set, when
-// nothing was traced: kExitNotAMotion when the start is not a motion (and the trace does not allow
-// it), kExitNoConvergence when no branch started. Nothing to write then.
-std::optional<TraceRun> ExecuteTrace(const RunFile& run, const std::filesystem::path& results, int* exit_code);
+// oscillator; when nothing was traced, with the reason on stderr.
+TraceRun ExecuteTrace(const RunFile& run, const std::filesystem::path& results);
 
 // Writes the trace's files (any model's, io/trace_files.hpp) and reports it on stdout, `seconds`
 // its wall time. Returns kExitOk when both directions ran to their ends, whatever those were (a

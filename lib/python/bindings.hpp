@@ -45,7 +45,7 @@ int KeywordWholeNumber(const py::handle& value, const std::string& field, std::s
 bool KeywordTrueOrFalse(const py::handle& value, const std::string& field);
 
 // `steps` with those given in `o` (its keys ds, ds_min, ds_max and max_points, where not None), not
-// yet checked (CheckSteps, or CheckOneOffRun with the rest of a run).
+// yet checked (CheckSteps, or CheckRunValues with the rest of a run).
 BranchSteps StepsOf(const py::dict& o, BranchSteps steps);
 
 // Raises stickslip.ConvergenceError(message) with its `summary` attribute set (a dict).

@@ -47,14 +47,14 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   RunInput input;
   RunFile& run = input.run;
   input.results = o["results"].cast<std::string>();
-  run.path = kOneOffRunPath;
+  run = AsOneOffRun(std::move(run));
   // A [model]'s label: only its run and label here, as on the command line (ModelPointOf).
   py::dict paper_start(start);
   const auto model_point = ModelPointOf(input.results, start.contains("point") && !start["point"].is_none()
                                                             ? start["point"].cast<std::string>()
                                                             : std::string());
   if (model_point) paper_start.attr("pop")("point");
-  SetRunFileStart(ToStartInput(paper_start), &run);
+  run = WithStart(std::move(run), ToStartInput(paper_start));
   if (model_point) std::tie(run.restart_run, run.restart_label) = *model_point;
   run.restart_switch_branch = KeywordTrueOrFalse(o["switch_branch"], "switch_branch");
   if (run.restart_switch_branch && run.restart_label.empty()) {
@@ -74,7 +74,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.steps = StepsOf(o, run.steps);
   run.max_amplitude = o["max_amplitude"].cast<double>();
   run.resonance_approach = o["resonance_approach"].cast<double>();
-  CheckOneOffRun(run, fmt::format("{},{}", range.first, range.second));
+  CheckRunValues(run);
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
   run.linear_solver = o["linear_solver"].cast<std::string>();
@@ -187,7 +187,7 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
   }
   RunInput next = from.input;
   RunFile& run = next.run;
-  run.path = kOneOffRunPath;
+  run = AsOneOffRun(std::move(run));
   run.restart_run = from.stored.summary.output;
   run.restart_label = label;
   run.restart_switch_branch = true;
@@ -197,12 +197,12 @@ ComputedRun Switch(const ComputedRun& from, const std::string& label, int side, 
   if (given("output")) run.output = o["output"].cast<std::string>();
   if (given("range")) std::tie(run.range_min, run.range_max) = o["range"].cast<std::pair<double, double>>();
   run.steps = StepsOf(o, run.steps);
-  CheckOneOffRun(run, fmt::format("{},{}", run.range_min, run.range_max));
+  CheckRunValues(run);
   OrbitContinuationSetup setup = [&] {
     const py::gil_scoped_release release;
     return BranchFromBifurcation(from.special_points[row - rows.begin()], *from.setup, side).setup;
   }();
-  SetContinuationOptions(run, &setup.options);  // the direction is the side, as MakeSetup has it
+  setup.options = WithContinuationKeys(std::move(setup.options), run);  // the direction is the side, as MakeSetup has it
   setup.options.user_values.clear();
   return ContinueSetup(next, std::move(setup));
 }

@@ -661,7 +661,7 @@ void BindErrors(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InvalidInput& e) {
-      PyErr_SetString(PyExc_ValueError, AsOption(e).what());
+      PyErr_SetString(PyExc_ValueError, OnCommandLine(e).what());
     }
   });
 }

@@ -115,15 +115,15 @@ expect_rejected "set" "${base[@]}" --set u_r=0.5 --set u_r=0.6 --output bad
 expect_rejected "guess" "${base[@]}" --guess d1=3 --guess d1=3.1 --output bad
 # The restart's kinds: with --point only, one at a time, at a point of their kind.
 lp=(continue --point p-up:LP4 --parameter omega --range 0.3,0.9 --results "$work")
-expect_rejected "switch-branch is invalid without --point" "${base[@]}" --switch-branch --output bad
-expect_rejected "boundary = 'u_r' is invalid without --point" "${base[@]}" --boundary u_r --output bad
+expect_rejected "switch-branch = true is invalid without point: valid with point RUN:LABEL" "${base[@]}" --switch-branch --output bad
+expect_rejected "boundary = 'u_r' is invalid without point: valid with point RUN:LABEL" "${base[@]}" --boundary u_r --output bad
 expect_rejected "boundary = '' is invalid" "${lp[@]}" --boundary '' --output bad
-expect_rejected "boundary = 'u_r' is invalid with --switch-branch" "${lp[@]}" --boundary u_r --switch-branch --output bad
+expect_rejected "boundary cannot go with switch-branch: give one of them" "${lp[@]}" --boundary u_r --switch-branch --output bad
 expect_rejected "switch-branch = true is invalid at 'LP4'" "${lp[@]}" --switch-branch --output bad
 expect_rejected "boundary = 'omega' is invalid at 'LP4'" "${lp[@]}" --boundary omega --output bad
 expect_rejected "boundary = 'u_r' is invalid at 'EP1'" continue --point p-up:EP1 --boundary u_r --parameter omega \
   --range 0.3,0.9 --results "$work" --output bad
-expect_rejected "continue-past-type-changes is invalid with --boundary" "${lp[@]}" --boundary u_r \
+expect_rejected "continue-past-type-changes = true is invalid with boundary: valid false" "${lp[@]}" --boundary u_r \
   --continue-past-type-changes --output bad
 # Both sides of PD2, where the range holds the first point of the branch that leaves it downwards
 # only: refused, and the down side is not written either.

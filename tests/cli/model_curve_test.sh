@@ -35,7 +35,7 @@ refused "key 'start.restart.boundary' = 'F_s' is invalid at 'EP3' (EP): conditio
 refused "key 'start.restart.boundary' = '' is invalid" 's/boundary = "F_s"/boundary = ""/'
 refused "key 'continuation.continue_past_type_changes' = true is invalid with start.restart.boundary" \
   's/^max_points = 400$/max_points = 400\ncontinue_past_type_changes = true/'
-refused "key 'start.restart.boundary' cannot go with switch_branch" 's/boundary = "F_s"/boundary = "F_s", switch_branch = true/'
+refused "key 'start.restart.boundary' cannot go with start.restart.switch_branch" 's/boundary = "F_s"/boundary = "F_s", switch_branch = true/'
 [ "$(md5sum "$tm"/two-masses-sk-boundary/*)" = "$sums" ] && [ "$(ls -A "$tm")" = "$entries" ] && pass ||
   fail "a refused curve changed the results: $(ls "$tm")"
 finish

@@ -59,7 +59,7 @@ expect 2 "nest at most two levels" "$good
 x = [[[1]]]"
 expect 2 "r.toml:1:" 'output = "t'
 for bad in 0 -1; do
-  expect 2 "r.toml:8:17: key 'continuation.max_amplitude' = $bad is invalid: valid a finite max_amplitude > 0" "$good
+  expect 2 "r.toml:8:17: key 'continuation.max_amplitude' = $bad is invalid: valid range a finite continuation.max_amplitude > 0" "$good
 max_amplitude = $bad"
 done
 for bad in nan inf; do
@@ -67,7 +67,7 @@ for bad in nan inf; do
 max_amplitude = $bad"
 done
 for bad in -0.1 1 2; do
-  expect 2 "r.toml:8:22: key 'continuation.resonance_approach' = $bad is invalid: valid 0 <= resonance_approach < 1 (0: never)" "$good
+  expect 2 "r.toml:8:22: key 'continuation.resonance_approach' = $bad is invalid: valid range 0 <= continuation.resonance_approach < 1 (0: never)" "$good
 resonance_approach = $bad"
 done
 expect 2 "key 'continuation.max_amplitude' is invalid with a \[trace\] table" "${good/direction = \"up\"/}
@@ -130,7 +130,7 @@ direction = "down"
 range = [0.3, 0.69]'
 expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (EP): condition = EP is invalid: valid range" "${bounded/SK2/EP1}"
 expect 2 "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): second = omega is invalid" "${bounded/boundary = \"u_r\"/boundary = \"omega\"}"
-expect 2 "key 'start.restart.boundary' cannot go with switch_branch" "${bounded/boundary = \"u_r\"/boundary = \"u_r\", switch_branch = true}"
+expect 2 "key 'start.restart.boundary' cannot go with start.restart.switch_branch" "${bounded/boundary = \"u_r\"/boundary = \"u_r\", switch_branch = true}"
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

@@ -21,32 +21,33 @@ Verification Passing() {
 }
 
 TEST(SolvedOrbitExitCode, AdmissibleVerifiedOrbitIsSuccess) {
-  std::string reason;
   ASSERT_TRUE(Passing().Passed());
-  EXPECT_EQ(SolvedOrbitExitCode(MarginOf(0.01), Passing(), &reason), kExitOk);
-  EXPECT_EQ(reason, "");
+  const ExitWithReason outcome = SolvedOrbitExitCode(MarginOf(0.01), Passing());
+  EXPECT_EQ(outcome.exit_code, kExitOk);
+  EXPECT_EQ(outcome.reason, "");
 }
 
 TEST(SolvedOrbitExitCode, NonPositiveMarginIsNotAMotionEvenWhenVerified) {
   for (double value : {0.0, -0.0072388}) {
-    std::string reason;
-    EXPECT_EQ(SolvedOrbitExitCode(MarginOf(value), Passing(), &reason), kExitNotAMotion);
-    EXPECT_NE(reason.find("not a motion of the system: margin G:3 = "), std::string::npos) << reason;
+    const ExitWithReason outcome = SolvedOrbitExitCode(MarginOf(value), Passing());
+    EXPECT_EQ(outcome.exit_code, kExitNotAMotion);
+    EXPECT_NE(outcome.reason.find("not a motion of the system: margin G:3 = "), std::string::npos) << outcome.reason;
   }
 }
 
 TEST(SolvedOrbitExitCode, FailedVerificationOfAnAdmissibleOrbitIsNotAMotion) {
   Verification v = Passing();
   v.exact.sequence_matches = false;
-  std::string reason;
-  EXPECT_EQ(SolvedOrbitExitCode(MarginOf(0.01), v, &reason), kExitNotAMotion);
-  EXPECT_EQ(reason, "the solution failed its verification by simulation");
+  const ExitWithReason outcome = SolvedOrbitExitCode(MarginOf(0.01), v);
+  EXPECT_EQ(outcome.exit_code, kExitNotAMotion);
+  EXPECT_EQ(outcome.reason, "the solution failed its verification by simulation");
 }
 
 TEST(SolvedOrbitExitCode, NanMarginIsAnUnknownAdmissibilityNotAComparisonWithZero) {
-  std::string reason;
-  EXPECT_EQ(SolvedOrbitExitCode(MarginOf(std::numeric_limits<double>::quiet_NaN()), Passing(), &reason), kExitNotAMotion);
-  EXPECT_EQ(reason, "the solution's admissibility is not known: margin G:3 is not defined (its root search was cut short)");
+  const ExitWithReason outcome = SolvedOrbitExitCode(MarginOf(std::numeric_limits<double>::quiet_NaN()), Passing());
+  EXPECT_EQ(outcome.exit_code, kExitNotAMotion);
+  EXPECT_EQ(outcome.reason,
+            "the solution's admissibility is not known: margin G:3 is not defined (its root search was cut short)");
 }
 
 }  // namespace

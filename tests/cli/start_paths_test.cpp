@@ -67,13 +67,12 @@ Seen SolvePath(const PathCase& c) {
 
 Seen ContinuePath(const PathCase& c) {
   const cli::StartFlags flags = ParseFlags(c.flags, cli::StartOptions::kOrbit);
-  RunFile run;
-  run.path = "(command line)";
+  RunFile run = AsOneOffRun({});
   run.output = "t";
   run.parameter = c.parameter;
   run.range_min = -1e9;
   run.range_max = 1e9;
-  SetRunFileStart(cli::ToStartInput(flags), &run);
+  run = WithStart(std::move(run), cli::ToStartInput(flags));
   return FromSetup(MakeSetup(run, flags.results));
 }
 

@@ -193,7 +193,7 @@ def test_a_models_type_boundary_is_the_run_files_curve_byte_for_byte():
     with pytest.raises(ValueError) as error:  # as the command line's --range
         stickslip.two_parameter("omega", "F_s", (30.0, float("inf")), point="branch-1:SK2",
                                 results=RESULTS / "models" / "two-masses-omega-trace")
-    assert "MIN,MAX finite with MIN < MAX" in str(error.value)
+    assert "MIN < MAX, both finite" in str(error.value)
 
 
 def test_sweep_is_the_command_lines_file(tmp_path):

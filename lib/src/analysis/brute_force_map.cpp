@@ -37,14 +37,11 @@ const char* ToString(AttractorStatus status) {
   return "incomplete";
 }
 
-bool FromString(std::string_view text, AttractorStatus* status) {
+std::optional<AttractorStatus> AttractorStatusFromString(std::string_view text) {
   for (AttractorStatus s : {AttractorStatus::kPeriodic, AttractorStatus::kNotSettled, AttractorStatus::kIncomplete}) {
-    if (text == ToString(s)) {
-      *status = s;
-      return true;
-    }
+    if (text == ToString(s)) return s;
   }
-  return false;
+  return std::nullopt;
 }
 
 bool RowInShard(int j, int shard, int shards) { return j % shards == shard - 1; }

@@ -36,8 +36,8 @@ class ArclengthCorrector {
   // `guess` corrected at its lambda, with the tangent towards options.direction in lambda (at a
   // fold, across the lambda axis, either way); with options.start_direction, the point at
   // arclength options.step.ds from `guess` along it;
-  // nullopt with the reason in *failure if Newton fails or the bordered Jacobian is singular.
-  std::optional<Sample> Start(const Eigen::VectorXd& guess, std::string* failure);
+  // nullopt if Newton fails or the bordered Jacobian is singular (why: last_failure()).
+  std::optional<Sample> Start(const Eigen::VectorXd& guess);
   // The point at arclength s from `from` along its tangent; nullopt if the corrector fails
   // (why: last_failure()).
   std::optional<Sample> Corrected(const Sample& from, double s, Attempt attempt);
@@ -47,12 +47,12 @@ class ArclengthCorrector {
   const std::string& last_failure() const { return last_failure_; }
 
  private:
-  // The unit tangent at u with the orientation of `reference`, with the determinant sign, the
-  // test functions and, if `record`, the recorded values; false if the bordered matrix is
-  // singular. `bordered`, where given, is [J; reference^T] at u already evaluated (by the Newton
-  // run that corrected u with `reference` as its border).
-  bool Complete(const Eigen::VectorXd& reference, bool record, Sample* sample,
-                const std::optional<JacobianMatrix>& bordered = std::nullopt);
+  // `sample` (its u and iterations) with the unit tangent at u, oriented as `reference`, the
+  // determinant sign, the test functions and, if `record`, the recorded values; nullopt if the
+  // bordered matrix is singular. `bordered`, where given, is [J; reference^T] at u already
+  // evaluated (by the Newton run that corrected u with `reference` as its border).
+  std::optional<Sample> Completed(Sample sample, const Eigen::VectorXd& reference, bool record,
+                                  const std::optional<JacobianMatrix>& bordered = std::nullopt);
 
   const NonlinearSystem& problem_;
   const Monitor* monitor_;

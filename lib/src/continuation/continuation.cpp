@@ -211,9 +211,8 @@ bool Continuation::Start() {
   State& st = *state_;
   const ContinuationOptions& o = st.options;
   st.started = true;
-  std::string failure;
-  std::optional<detail::Sample> start = st.corrector.Start(st.start, &failure);
-  if (!start) return End(BranchEnd::kStartFailed, failure);
+  std::optional<detail::Sample> start = st.corrector.Start(st.start);
+  if (!start) return End(BranchEnd::kStartFailed, st.corrector.last_failure());
   st.last = std::move(*start);
   st.ds = st.step_size->Initial();
   branch_.points.push_back(MakePoint(st.last, st.Lambda(st.last.u), 0.0, "EP"));

@@ -18,45 +18,10 @@
 
 namespace stickslip {
 
-InvalidInput AsOption(const InvalidInput& error) {
-  if (error.field() == "restart") return error.Renamed("point");
-  // A one-off run goes through MakeSetup as a run file "(command line)", whose complaints name
-  // its keys: "(command line): key 'start.set' gives 'u_r' twice ..." becomes "set gives 'u_r'
-  // twice ...", and "(command line): key 'start' gives invalid data: d1 = 1e+308 is invalid: ..."
-  // the value's own message.
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 14> kOptions = {{
-      {"start.set", "set"},
-      {"start.guess", "guess"},
-      {"start.preset", "preset"},
-      {"start.signature", "signature"},
-      {"start.restart.switch_branch", "switch-branch"},
-      {"start.restart.boundary", "boundary"},
-      {"start.restart", "point"},
-      {"unknowns.free", "free"},
-      {"unknowns.fix", "fix"},
-      {"unknowns.tie_u_r", "tie-u_r"},
-      {"unknowns", "unknowns"},  // --free and --fix together: "unknowns is invalid: the system is not square ..."
-      {"continuation.range", "range"},
-      {"continuation.parameter", "parameter"},
-      {"continuation.user_values_of", "user-value"},
-  }};
-  const std::string_view what = error.what();
-  if (!what.starts_with(kOneOffRunPath)) return error;  // a run file's own: its keys name the fields
-  for (const auto& [key, option] : kOptions) {
-    if (error.field() != key) continue;
-    const std::string quoted = fmt::format("key '{}' ", key);
-    const auto at = what.find(quoted);
-    return InvalidInput::WithMessage(std::string(option),
-                                     fmt::format("{} {}", option, at == std::string_view::npos ? what : what.substr(at + quoted.size())));
-  }
-  constexpr std::string_view kInvalidData = "key 'start' gives invalid data: ";
-  if (const auto at = what.find(kInvalidData); error.field() == "start" && at != std::string_view::npos) {
-    const std::string_view message = what.substr(at + kInvalidData.size());
-    const auto equals = message.find(" = ");
-    return InvalidInput::WithMessage(std::string(message.substr(0, equals == std::string_view::npos ? 0 : equals)),
-                                     std::string(message));
-  }
-  return error;
+RunFile AsOneOffRun(RunFile run) {
+  run.path = kOneOffRunPath;
+  run.naming = RunNaming::kOptions;
+  return run;
 }
 
 std::pair<std::string, std::string> RunAndLabel(std::string_view run_and_label) {
@@ -77,21 +42,22 @@ SimulationOptions SimulationOver(const Parameters& p, double periods, double sam
   return SimulationOver<State>(2.0 * std::numbers::pi / p.omega, periods, samples_per_period, sampled);
 }
 
-void SetRunFileStart(const StartInput& input, RunFile* run) {
-  run->preset = input.preset;
-  run->signature = input.signature;
+RunFile WithStart(RunFile run, const StartInput& input) {
+  run.preset = input.preset;
+  run.signature = input.signature;
   if (input.restart) {
-    run->restart_run = input.restart->run;
-    run->restart_label = input.restart->label;
+    run.restart_run = input.restart->run;
+    run.restart_label = input.restart->label;
   }
-  run->set = input.set;
-  run->guess = input.guess;
-  run->free = input.free;
+  run.set = input.set;
+  run.guess = input.guess;
+  run.free = input.free;
   for (const FixedVariable& f : input.fix) {
-    run->fix.push_back(f.name);
-    if (f.value) run->guess.emplace_back(f.name, *f.value);
+    run.fix.push_back(f.name);
+    if (f.value) run.guess.emplace_back(f.name, *f.value);
   }
-  run->tie_u_r = input.tie_u_r;
+  run.tie_u_r = input.tie_u_r;
+  return run;
 }
 
 int ContinuationDirection(std::string_view direction) {
@@ -101,29 +67,9 @@ int ContinuationDirection(std::string_view direction) {
 }
 
 void CheckSteps(const BranchSteps& steps) {
-  // The bound that is wrong whatever ds is, by its own name; then ds between them.
-  if (!(steps.ds_min > 0)) throw InvalidInput("ds-min", steps.ds_min, "ds-min > 0");
-  if (!(steps.ds_max >= steps.ds_min)) {
-    throw InvalidInput("ds-max", steps.ds_max, fmt::format("ds-max >= ds-min ({})", steps.ds_min));
-  }
-  if (!(steps.ds_min <= steps.ds && steps.ds <= steps.ds_max)) {
-    throw InvalidInput("ds", steps.ds, fmt::format("0 < ds-min ({}) <= ds <= ds-max ({})", steps.ds_min, steps.ds_max));
-  }
-  WholeNumber("max-points", steps.max_points, 1, kMaxRunPoints);
-}
-
-void CheckOneOffRun(const RunFile& run, std::string_view range_text) {
-  if (!(std::isfinite(run.range_min) && std::isfinite(run.range_max) && run.range_min < run.range_max)) {
-    throw InvalidInput("range", fmt::format("'{}'", range_text), "MIN,MAX finite with MIN < MAX");
-  }
-  CheckSteps(run.steps);
-  if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
-    throw InvalidInput("max-amplitude", run.max_amplitude, "a finite max-amplitude > 0");
-  }
-  if (!(run.resonance_approach >= 0.0 && run.resonance_approach < 1.0)) {
-    throw InvalidInput("resonance-approach", run.resonance_approach, "0 <= resonance-approach < 1 (0: never)");
-  }
-  if (!IsRunName(run.output)) throw InvalidInput("output", "'" + run.output + "'", std::string(kRunNameRule));
+  RunFile run = AsOneOffRun({});
+  run.steps = steps;
+  CheckStepValues(run);
 }
 
 void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view shooting) {

@@ -240,7 +240,9 @@ void ReadOwn(const CsvTable& t, int row, const MapColumns& c, ModelAttractor& a)
 template <typename Attractor>
 Attractor ReadAttractor(const CsvTable& t, int row, const MapColumns& c) {
   Attractor a;
-  if (!FromString(t.Text(row, c.status), &a.status)) throw t.Error(row, c.status, "is invalid: valid periodic, not-settled, incomplete");
+  const std::optional<AttractorStatus> status = AttractorStatusFromString(t.Text(row, c.status));
+  if (!status) throw t.Error(row, c.status, "is invalid: valid periodic, not-settled, incomplete");
+  a.status = *status;
   const bool periodic = a.status == AttractorStatus::kPeriodic;
   a.period = t.Integer(row, c.period);
   if (periodic ? a.period < 1 : a.period != 0) {

@@ -213,7 +213,7 @@ BasicOrbitContinuationSetup<Model> BranchOfRestart(const RunFile& run, const Mod
                                            *ShootingChoiceFromString(run.shooting),  // checked by the reader
                                            *LinearSolverFromString(run.linear_solver), {}, {}, {}, {},
                                            run.max_amplitude, run.resonance_approach, model};
-  SetContinuationOptions(run, &setup.options);
+  setup.options = WithContinuationKeys(std::move(setup.options), run);
   return setup;
 }
 
@@ -226,7 +226,6 @@ std::optional<ModelRunSetup> MakeModelSetup(const RunFile& run, const std::files
   const int k = VariedParameterOf(run, model, "continuation.parameter", run.parameter);
   CheckRangeHoldsStart(run, Model::ParameterAt(at.orbit.parameters, k));
   if (run.restart_switch_branch) RefuseSwitchInBeltSpeed(run, model, k);
-  CheckOneRestartKind(run);
   const bool curve = !run.restart_boundary.empty();
   if (curve) CheckCurveKeepsTheSurfaceFixed(run, model, at.orbit, k);
   BasicOrbitContinuationSetup<Model> setup = BranchOfRestart(run, model, ContinuableIn(std::move(at.orbit), k));

@@ -237,7 +237,7 @@ template <OscillatorModel Model, typename OrbitOf, typename UnknownsOf>
 void AddTrace(const StoredTrace& trace, const RunFile* run, const OrbitOf& orbit_of, const UnknownsOf& unknowns_of,
               BasicMapTrace<Model>& map) {
   map.parameter = trace.parameter;
-  if (run) SetContinuationOptions(*run, &map.options);
+  if (run) map.options = WithContinuationKeys(std::move(map.options), *run);
   if (run && run->trace) map.max_amplitude = run->trace->max_amplitude;
   for (std::size_t k = 0; k < trace.branches.size(); ++k) {
     const StoredRun& stored = trace.runs[k];

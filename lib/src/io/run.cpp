@@ -22,8 +22,7 @@ ContinuationOptions WithSteps(ContinuationOptions options, const BranchSteps& st
   return options;
 }
 
-void SetContinuationOptions(const RunFile& run, ContinuationOptions* options) {
-  ContinuationOptions& o = *options;
+ContinuationOptions WithContinuationKeys(ContinuationOptions o, const RunFile& run) {
   o.direction = run.direction;
   o.lambda_min = run.range_min;
   o.lambda_max = run.range_max;
@@ -31,10 +30,7 @@ void SetContinuationOptions(const RunFile& run, ContinuationOptions* options) {
   o.detect_folds = run.detect_folds;
   o.detect_branch_points = run.detect_branch_points;
   o.continue_past_terminal = run.continue_past_type_changes;
-}
-
-RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what) {
-  return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
+  return o;
 }
 
 namespace {
@@ -84,26 +80,16 @@ std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& 
   return values;
 }
 
-void CheckOneRestartKind(const RunFile& run) {
-  if (run.restart_boundary.empty()) return;
-  if (run.restart_switch_branch) {
-    throw KeyError(run, "start.restart.boundary", "cannot go with switch_branch: give one of them");
-  }
-  // A curve ends where a second margin reaches zero: a codimension-two point, not a change of type
-  // to continue past.
-  if (run.continue_past_type_changes) {
-    throw KeyError(run, "continuation.continue_past_type_changes",
-                   "= true is invalid with start.restart.boundary: valid false (a curve in two parameters ends at the "
-                   "codimension-two point where a second margin reaches zero)");
-  }
-}
-
 OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path& results_root) {
-  const StartProblem start = [&] {
+  // The restart point read once: its orbit starts the run, its type and test function say how a
+  // restart leaves its branch.
+  const auto [input, start] = [&] {
     try {
-      return BuildStartProblem(StartInputOf(run, results_root));
+      StartInput read = StartInputOf(run, results_root);
+      StartProblem built = BuildStartProblem(read);
+      return std::pair{std::move(read), std::move(built)};
     } catch (const InvalidInput& e) {
-      throw AtRunFileKey(run, e);
+      throw AtRunField(run, e);
     }
   }();
   const UnknownChoice& unknowns = start.unknowns;
@@ -116,11 +102,9 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   setup.max_amplitude = run.max_amplitude;
   setup.resonance_approach = run.resonance_approach;
   ContinuationOptions& o = setup.options;
-  SetContinuationOptions(run, &o);
-  CheckOneRestartKind(run);
+  o = WithContinuationKeys(std::move(o), run);
   if (run.restart_switch_branch || !run.restart_boundary.empty()) {
-    // The label's type and test function, which the start (its orbit) does not carry.
-    const LabelledPoint at = ReadLabelledPoint(results_root, run.restart_run, run.restart_label);
+    const RestartPoint& at = *input.restart;
     setup = run.restart_switch_branch ? SwitchedAtLabel(run, at.type, setup)
                                       : CurveOfRestart(run, at.type, at.test_function, setup);
   }

@@ -121,9 +121,7 @@ void ReadParameterAndRange(TableReader& c, bool trace, RunFile* run) {
   std::vector<double> range;
   c.Numbers("range", &range);
   if (!c.Get("range")) c.Missing("range", "give [min, max]");
-  if (range.size() != 2 || !(range[0] < range[1])) {
-    c.Fail(*c.Get("range"), "range", "must be [min, max] with min < max");
-  }
+  if (range.size() != 2) c.Fail(*c.Get("range"), "range", "must be [min, max] with min < max");
   run->range_min = range[0];
   run->range_max = range[1];
 }
@@ -153,31 +151,11 @@ void ReadContinuationKeys(TableReader& c, std::string_view path, RunFile* run) {
   }
 }
 
-void CheckBounds(TableReader& c, bool trace, const RunFile& run) {
-  if (c.Get("max_amplitude") && !(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
-    c.Fail(*c.Get("max_amplitude"), "max_amplitude",
-           fmt::format("= {} is invalid: valid a finite max_amplitude > 0", run.max_amplitude));
-  }
-  if (c.Get("resonance_approach") && !(run.resonance_approach >= 0.0 && run.resonance_approach < 1.0)) {
-    c.Fail(*c.Get("resonance_approach"), "resonance_approach",
-           fmt::format("= {} is invalid: valid 0 <= resonance_approach < 1 (0: never)", run.resonance_approach));
-  }
+// A trace's bound on the amplitude is its own (trace.max_amplitude).
+void RefuseBranchBoundInTrace(TableReader& c, bool trace) {
   if (trace && c.Get("max_amplitude")) {
     c.Fail(*c.Get("max_amplitude"), "max_amplitude",
            "is invalid with a [trace] table: valid left out (a trace's bound is trace.max_amplitude)");
-  }
-}
-
-void CheckSteps(TableReader& c, const toml::table& continuation, std::string_view path, const RunFile& run) {
-  auto check_positive = [&](std::string_view key, double v) {
-    if (!(v > 0.0)) c.Fail(*c.Get(key), key, fmt::format("= {} is invalid: valid range > 0", v));
-  };
-  if (c.Get("ds")) check_positive("ds", run.steps.ds);
-  if (c.Get("ds_min")) check_positive("ds_min", run.steps.ds_min);
-  if (c.Get("ds_max")) check_positive("ds_max", run.steps.ds_max);
-  if (!(run.steps.ds_min <= run.steps.ds && run.steps.ds <= run.steps.ds_max)) {
-    throw RunFileError(fmt::format("{}: keys 'continuation.ds_min' <= 'continuation.ds' <= 'continuation.ds_max' "
-                                   "must hold: got {} <= {} <= {}", Where(path, continuation), run.steps.ds_min, run.steps.ds, run.steps.ds_max));
   }
 }
 
@@ -205,8 +183,7 @@ void ReadContinuation(const toml::table& continuation, bool trace, std::string_v
   TableReader c(continuation, "continuation.", path, &run->locations);
   ReadParameterAndRange(c, trace, run);
   ReadContinuationKeys(c, path, run);
-  CheckBounds(c, trace, *run);
-  CheckSteps(c, continuation, path, *run);
+  RefuseBranchBoundInTrace(c, trace);
   CheckSolverChoices(c, trace, *run);
   c.RejectUnknown();
 }
@@ -242,6 +219,96 @@ TraceOptions ReadTrace(const toml::table& trace, std::string_view path, RunFile*
 
 }  // namespace
 
+RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what) {
+  if (run.naming == RunNaming::kOptions) {
+    const std::string option = OptionOfKey(key);
+    return RunFileError(fmt::format("{} {}", option, what), option);
+  }
+  return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
+}
+
+namespace {
+
+// A key's name inside a message about another key: continuation.ds_min in a run file, ds-min on
+// the command line.
+std::string NameIn(const RunFile& run, std::string_view key) {
+  return run.naming == RunNaming::kOptions ? OptionOfKey(key) : std::string(key);
+}
+
+// A restart continues one thing from its label (so it has a label): the branch leaving it or a
+// boundary's curve; and a curve ends at the codimension-two point where a second margin reaches zero.
+void CheckOneRestartKind(const RunFile& run) {
+  const std::string restart = NameIn(run, "start.restart");
+  if (run.restart_run.empty() && run.restart_switch_branch) {
+    throw KeyError(run, "start.restart.switch_branch",
+                   fmt::format("= true is invalid without {}: valid with {} RUN:LABEL at a PD or an SB", restart, restart));
+  }
+  if (run.restart_run.empty() && !run.restart_boundary.empty()) {
+    throw KeyError(run, "start.restart.boundary",
+                   fmt::format("= '{}' is invalid without {}: valid with {} RUN:LABEL at a located special point",
+                               run.restart_boundary, restart, restart));
+  }
+  if (run.restart_boundary.empty()) return;
+  if (run.restart_switch_branch) {
+    throw KeyError(run, "start.restart.boundary",
+                   fmt::format("cannot go with {}: give one of them", NameIn(run, "start.restart.switch_branch")));
+  }
+  if (run.continue_past_type_changes) {
+    throw KeyError(run, "continuation.continue_past_type_changes",
+                   fmt::format("= true is invalid with {}: valid false (a curve in two parameters ends at the "
+                               "codimension-two point where a second margin reaches zero)",
+                               NameIn(run, "start.restart.boundary")));
+  }
+}
+
+}  // namespace
+
+void CheckStepValues(const RunFile& run) {
+  const BranchSteps& s = run.steps;
+  const std::string ds = NameIn(run, "continuation.ds");
+  const std::string ds_min = NameIn(run, "continuation.ds_min");
+  const std::string ds_max = NameIn(run, "continuation.ds_max");
+  // The bound that is wrong whatever ds is, by its own name; then ds between them.
+  if (!(s.ds_min > 0)) {
+    throw KeyError(run, "continuation.ds_min", fmt::format("= {} is invalid: valid range {} > 0", s.ds_min, ds_min));
+  }
+  if (!(s.ds_max >= s.ds_min)) {
+    throw KeyError(run, "continuation.ds_max",
+                   fmt::format("= {} is invalid: valid range {} >= {} ({})", s.ds_max, ds_max, ds_min, s.ds_min));
+  }
+  if (!(s.ds_min <= s.ds && s.ds <= s.ds_max)) {
+    throw KeyError(run, "continuation.ds", fmt::format("= {} is invalid: valid range 0 < {} ({}) <= {} <= {} ({})", s.ds,
+                                                       ds_min, s.ds_min, ds, ds_max, s.ds_max));
+  }
+  if (s.max_points < 1 || s.max_points > kMaxRunPoints) {
+    throw KeyError(run, "continuation.max_points",
+                   fmt::format("= {} is invalid: valid range {}", s.max_points,
+                               WholeNumberRange(NameIn(run, "continuation.max_points"), 1, kMaxRunPoints)));
+  }
+}
+
+void CheckRunValues(const RunFile& run) {
+  if (!IsRunName(run.output)) {
+    throw KeyError(run, "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));
+  }
+  if (!(std::isfinite(run.range_min) && std::isfinite(run.range_max) && run.range_min < run.range_max)) {
+    throw KeyError(run, "continuation.range",
+                   fmt::format("= [{}, {}] is invalid: valid range MIN < MAX, both finite", run.range_min, run.range_max));
+  }
+  CheckStepValues(run);
+  CheckOneRestartKind(run);
+  const std::string max_amplitude = NameIn(run, "continuation.max_amplitude");
+  if (!(run.max_amplitude > 0.0 && std::isfinite(run.max_amplitude))) {
+    throw KeyError(run, "continuation.max_amplitude",
+                   fmt::format("= {} is invalid: valid range a finite {} > 0", run.max_amplitude, max_amplitude));
+  }
+  if (!(run.resonance_approach >= 0.0 && run.resonance_approach < 1.0)) {
+    throw KeyError(run, "continuation.resonance_approach",
+                   fmt::format("= {} is invalid: valid range 0 <= {} < 1 (0: never)", run.resonance_approach,
+                               NameIn(run, "continuation.resonance_approach")));
+  }
+}
+
 RunFile ParseRunFile(std::string_view content, std::string_view path) {
   const toml::table root = ParseToml(content, path);
   RunFile run;
@@ -254,9 +321,6 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
              "`stickslip describe` and `stickslip find --model` take a [model]");
   }
   top.String("output", &run.output, true);
-  if (!IsRunName(run.output)) {
-    top.Fail(*top.Get("output"), "output", fmt::format("= '{}' is invalid: valid {}", run.output, kRunNameRule));
-  }
   const toml::table* start = top.Table("start", true);
   const toml::table* unknowns = top.Table("unknowns", false);
   const toml::table* continuation = top.Table("continuation", true);
@@ -266,6 +330,7 @@ RunFile ParseRunFile(std::string_view content, std::string_view path) {
   if (unknowns != nullptr) ReadUnknowns(*unknowns, path, &run);
   ReadContinuation(*continuation, trace != nullptr, path, &run);
   if (trace != nullptr) run.trace = ReadTrace(*trace, path, &run);
+  CheckRunValues(run);
   return run;
 }
 

@@ -1,6 +1,7 @@
 #include "stickslip/io/start_input.hpp"
 
-#include <array>
+#include <optional>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
@@ -11,7 +12,7 @@ namespace stickslip {
 
 RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, const std::string& run,
                               const std::string& label) {
-  RestartPoint point{run, label, {}, {}};
+  RestartPoint point{.run = run, .label = label};
   auto fail = [&](const std::string& why) {
     return InvalidInput::WithMessage("restart", fmt::format("restart = '{}:{}' cannot be used: {}", run, label, why));
   };
@@ -23,6 +24,8 @@ RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, const s
   }
   point.signature = labelled.signature;
   point.values = labelled.variables;
+  point.type = labelled.type;
+  point.test_function = labelled.test_function;
   return point;
 }
 
@@ -40,29 +43,15 @@ StartInput StartInputOf(const RunFile& run, const std::filesystem::path& results
   return input;
 }
 
-RunFileError AtRunFileKey(const RunFile& run, const InvalidInput& error) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kKeys = {{
-      {"preset", "start.preset"},
-      {"signature", "start.signature"},
-      {"restart", "start.restart"},
-      {"set", "start.set"},
-      {"guess", "start.guess"},
-      {"free", "unknowns.free"},
-      {"fix", "unknowns.fix"},
-      {"tie_u_r", "unknowns.tie_u_r"},
-      {"unknowns", "unknowns"},
-      {"parameter", "continuation.parameter"},
-  }};
-  for (const auto& [field, key] : kKeys) {
-    if (field != error.field()) continue;
-    const std::string predicate = error.Predicate();
-    const bool leading = predicate.size() != std::string_view(error.what()).size();
-    return RunFileError(fmt::format("{}: key '{}' {}{}", run.Location(std::string(key)), key,
-                                    leading ? "" : "is invalid: ", predicate),
-                        std::string(key));
+InvalidInput AtRunField(const RunFile& run, const InvalidInput& error) {
+  const std::optional<std::string_view> key = KeyOfStartField(error.field());
+  if (!key) {  // a value out of range (a parameter, a duration), wherever it came from
+    if (run.naming == RunNaming::kOptions) return error;
+    return RunFileError(fmt::format("{}: key 'start' gives invalid data: {}", run.Location("start"), error.what()), "start");
   }
-  // A value out of range (a parameter, a duration), wherever it came from.
-  return RunFileError(fmt::format("{}: key 'start' gives invalid data: {}", run.Location("start"), error.what()), "start");
+  const std::string predicate = error.Predicate();
+  const bool leading = predicate.size() != std::string_view(error.what()).size();
+  return KeyError(run, std::string(*key), fmt::format("{}{}", leading ? "" : "is invalid: ", predicate));
 }
 
 }  // namespace stickslip

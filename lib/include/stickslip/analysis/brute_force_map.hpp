@@ -29,6 +29,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -107,7 +108,7 @@ enum class AttractorStatus {
   kIncomplete,  // a simulation stopped early (max events, the event search's bound)
 };
 const char* ToString(AttractorStatus status);  // "periodic", "not-settled", "incomplete"
-bool FromString(std::string_view text, AttractorStatus* status);
+std::optional<AttractorStatus> AttractorStatusFromString(std::string_view text);  // nullopt: none
 
 struct Attractor {
   AttractorStatus status = AttractorStatus::kNotSettled;

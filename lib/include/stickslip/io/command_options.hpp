@@ -2,11 +2,10 @@
 // line's simulate and continue and the Python module (lib/python/) call these, so that the same
 // input gives the same one-line message (InvalidInput) whichever way it arrives.
 //
-//   RunFile run;
-//   run.path = kOneOffRunPath;
-//   SetRunFileStart(input, &run);
+//   RunFile run = AsOneOffRun({});
+//   run = WithStart(std::move(run), input);
 //   run.direction = ContinuationDirection("up");
-//   CheckOneOffRun(run, "0.3,0.9");
+//   CheckRunValues(run);
 //   OrbitContinuationSetup setup = MakeSetup(run, "results");
 #pragma once
 
@@ -30,12 +29,11 @@
 
 namespace stickslip {
 
-// The start builder's and a one-off run's errors with their field named as the front ends'
-// options name it: the restart point is `point` (--point, point=); a one-off run's run-file keys
-// are their options ("start.set" is set); the other fields are the options' names already.
-InvalidInput AsOption(const InvalidInput& error);
-// The path of a one-off run's RunFile, which its messages start with.
+// The path of a one-off run's RunFile, which its summary stores as its run file.
 inline constexpr std::string_view kOneOffRunPath = "(command line)";
+// `run` as a run given by its options (continue, trace, atlas, find --trace, Python): the path
+// kOneOffRunPath, its fields named as the options (RunNaming::kOptions).
+RunFile AsOneOffRun(RunFile run);
 
 // "RUN:LABEL" split at its first colon. Throws InvalidInput naming "restart" when the text is not
 // RUN:LABEL.
@@ -67,21 +65,14 @@ SimulationOptions SimulationOver(const Parameters& p, double periods, double sam
 // continue_orbit): the start of `input` as the run file's [start] and [unknowns]. A value given
 // with a fix becomes the last guess of that variable, which is what a fix's value means to the
 // builder; MakeSetup reads the restart point again, by run and label.
-void SetRunFileStart(const StartInput& input, RunFile* run);
+RunFile WithStart(RunFile run, const StartInput& input);
 
 // "up" -> +1, "down" -> -1. Throws InvalidInput naming "direction".
 int ContinuationDirection(std::string_view direction);
 
-// A branch's steps given as options (continue's, trace's and find --trace's --ds, --ds-min, --ds-max
-// and --max-points; Python's keywords): 0 < ds_min <= ds <= ds_max and 1 <= max_points <= 1e6.
-// Throws InvalidInput naming "ds-min" (not > 0), "ds-max" (below ds-min), "ds" or "max-points".
+// A branch's steps given as options without a run (find --trace's, Python's trace keywords):
+// CheckStepValues in the options' words, naming ds-min, ds-max, ds or max-points.
 void CheckSteps(const BranchSteps& steps);
-
-// What the run-file reader checks at its keys, for a run given by its keys: range_min <
-// range_max (`range_text` is the range as the user wrote it, "MIN,MAX"), 0 < ds_min <= ds <=
-// ds_max, 1 <= max_points <= 1e6, and output a run name (IsRunName). Throws InvalidInput naming
-// "range", "ds", "max-points" or "output".
-void CheckOneOffRun(const RunFile& run, std::string_view range_text);
 
 // A linear solver given (non-empty `linear_solver`) with shooting "single" would be ignored: single
 // shooting solves its dense system directly. Throws InvalidInput naming "linear-solver"; the

@@ -23,10 +23,7 @@ ContinuationOptions WithSteps(ContinuationOptions options, const BranchSteps& st
 // The run file's [continuation] keys as the engine's options: direction, range, steps, max_points,
 // the detections and continue_past_type_changes (user values are MakeSetup's: they address the
 // unknowns).
-void SetContinuationOptions(const RunFile& run, ContinuationOptions* options);
-
-// A complaint about one of the run's keys: "<file>:<line>:<column>: key '<key>' <what>".
-RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what);
+ContinuationOptions WithContinuationKeys(ContinuationOptions options, const RunFile& run);
 
 // Throws KeyError at continuation.range where the run's range does not hold the start's `value` of
 // the continued parameter.
@@ -45,9 +42,6 @@ void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch);
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
                                     const std::function<std::optional<int>(const std::string&)>& index_of);
 
-// Throws KeyError at start.restart.boundary where the restart asks for both a curve and a switch,
-// and at continuation.continue_past_type_changes where a curve is asked to continue past one.
-void CheckOneRestartKind(const RunFile& run);
 
 // The curve in two parameters the restart asks for (start.restart.boundary) through its label, a
 // special point of `type` whose test function is `test_function`, from `setup` (the branch's at

@@ -42,12 +42,14 @@
 #include "stickslip/branches/trace.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/invalid_input.hpp"
+#include "stickslip/io/run_fields.hpp"
 #include "stickslip/named_values.hpp"
 
 namespace stickslip {
 
-// Bad input in a run file: the message starts with "<path>:<line>:<column>:" and names the key,
-// which is the field (or "run file" for what concerns the whole file).
+// Bad input at a run's key: a run file's message starts with "<path>:<line>:<column>:" and names
+// the key, which is the field (or "run file" for what concerns the whole file); a run given by
+// options (RunNaming::kOptions) names the option, which is the field.
 class RunFileError : public InvalidInput {
  public:
   explicit RunFileError(std::string message, std::string key = "run file")
@@ -67,6 +69,9 @@ struct BranchSteps {
 
 struct RunFile {
   std::string path;
+  // How its messages name its fields: a run file's keys, or the options of a run given by them
+  // (continue, trace, atlas, Python).
+  RunNaming naming = RunNaming::kRunFileKeys;
   // "path:line:column" of every key present, by its dotted name ("start.preset").
   std::map<std::string, std::string> locations;
   std::string Location(const std::string& key) const {
@@ -109,6 +114,10 @@ struct RunFile {
   std::optional<TraceOptions> trace;
 };
 
+// A complaint about one of the run's keys in the words of the run's front end (RunNaming): a run
+// file's "<file>:<line>:<column>: key '<key>' <what>", a run given by options' "<option> <what>".
+RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what);
+
 // A run's name is the folder of its results under the results root: one path component, so
 // not empty, not ".", without '/' and without ".."; without ':', which --point RUN:LABEL takes as
 // the end of the name, so a run named "a:b" could never be restarted from; valid UTF-8, which
@@ -127,6 +136,16 @@ inline constexpr int kMaxRunPoints = 1000000;
 
 // Largest run file accepted (a guard against feeding the parser arbitrary data).
 inline constexpr std::size_t kMaxRunFileBytes = 64 * 1024;
+
+// The values of a run, whichever front end gave them, each checked against its valid range, the
+// faults in the words of that front end (KeyError): output a run name (IsRunName), the range
+// finite with min < max, the steps (CheckStepValues), 0 < max_amplitude < inf and 0 <=
+// resonance_approach < 1. The run-file reader calls it; so do the command line and Python for a
+// run given by its options.
+void CheckRunValues(const RunFile& run);
+// 0 < ds_min <= ds <= ds_max and 1 <= max_points <= kMaxRunPoints, naming ds_min (not > 0), ds_max
+// (below ds_min), ds or max_points.
+void CheckStepValues(const RunFile& run);
 
 // Throws RunFileError "<path>:<line>:<column>: <what>" on any problem.
 RunFile ParseRunFile(std::string_view content, std::string_view path);

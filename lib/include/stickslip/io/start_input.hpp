@@ -21,8 +21,10 @@ RestartPoint ReadRestartPoint(const std::filesystem::path& results_root, const s
 // results_root. Throws InvalidInput (ReadRestartPoint).
 StartInput StartInputOf(const RunFile& run, const std::filesystem::path& results_root);
 
-// A StartInput field's error at the run file's key: "<file>:<line>:<column>: key 'start.preset'
-// = 'paper-9' is unknown: ...". A variable out of range is placed at key 'start'.
-RunFileError AtRunFileKey(const RunFile& run, const InvalidInput& error);
+// A StartInput field's error at the run's field, in its front end's words (KeyError): a run file's
+// "<file>:<line>:<column>: key 'start.preset' = 'paper-9' is unknown: ...", the command line's
+// "preset = 'paper-9' is unknown: ...". A variable out of range is a run file's key 'start' and
+// the command line's variable.
+InvalidInput AtRunField(const RunFile& run, const InvalidInput& error);
 
 }  // namespace stickslip

@@ -54,6 +54,11 @@ struct RestartPoint {
   std::string label;
   std::string signature;
   NamedValues values;
+  // What a restart that leaves the point's branch needs: the special point's type (LP, PD, SK, ...)
+  // and test function ("margin:reversal:1"), for the branch leaving a PD or an SB and for the curve
+  // of a change of type in two parameters.
+  std::string type;
+  std::string test_function;
 };
 
 // A variable held fixed: at its start value, or at `value`.
