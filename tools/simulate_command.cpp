@@ -33,13 +33,13 @@ namespace {
 
 struct SimulateArgs {
   StartFlags start;
-  std::string periods = "2";
-  std::string transients = "0";
-  std::string method = "exact";
+  std::string periods = fmt::format("{}", SimulateCommand{}.periods);
+  std::string transients = fmt::format("{}", SimulateCommand{}.transients);
+  std::string method = SimulateCommand{}.method;
   std::string csv_path;
   bool csv_given = false;  // --csv "" is refused, not taken as no --csv
-  std::string samples_per_period = "200";
-  std::string max_events = "10000000";
+  std::string samples_per_period = fmt::format("{}", SimulateCommand{}.samples_per_period);
+  std::string max_events = fmt::format("{}", SimulateCommand{}.max_events);
   bool json = false;
   bool force = false;
   std::string model;  // --model FILE: a user's oscillator (io/model_find.hpp)

@@ -612,6 +612,23 @@ void BindOrbits(py::module_& m) {
         return ModelFindJson(solved->model, found);
       },
       py::arg("results"), py::arg("point"), py::arg("shooting"), py::arg("linear_solver"));
+  m.def("_simulate_defaults", [] {
+    const SimulateCommand c;
+    py::dict d;
+    d["periods"] = c.periods;
+    d["method"] = c.method;
+    d["samples_per_period"] = static_cast<int>(c.samples_per_period);
+    return d;
+  });
+  m.def("_find_defaults", [] {
+    const FindCommand c;
+    py::dict d;
+    d["transients"] = static_cast<int>(c.transients);
+    d["max_multiple"] = static_cast<int>(c.max_multiple);
+    d["tolerance"] = c.tolerance;
+    d["confirmations"] = static_cast<int>(c.confirmations);
+    return d;
+  });
   m.def(
       "_find",
       [](const py::dict& start, double transients, double max_multiple, double tolerance, double confirmations) {

@@ -149,7 +149,11 @@ class Simulation:
                 f"end {self.end}>")
 
 
-def simulate(parameters=None, state=None, phi=None, *, periods=2.0, method="exact", samples_per_period=200,
+_SIMULATE_DEFAULTS = _core._simulate_defaults()
+
+
+def simulate(parameters=None, state=None, phi=None, *, periods=_SIMULATE_DEFAULTS["periods"],
+             method=_SIMULATE_DEFAULTS["method"], samples_per_period=_SIMULATE_DEFAULTS["samples_per_period"],
              preset=None, point=None, results="results", set=None, model=None):
     """Simulate the oscillator under Coulomb's law, as `stickslip simulate`.
 
@@ -337,8 +341,12 @@ class ModelTrace(dict):
         return self._stored.save(_checked(directory, "directory", "path"))
 
 
-def find(parameters=None, state=None, phi=None, *, transients=1000, max_multiple=8, tolerance=1e-6,
-         confirmations=3, preset=None, point=None, results="results", set=None, model=None):
+_FIND_DEFAULTS = _core._find_defaults()
+
+
+def find(parameters=None, state=None, phi=None, *, transients=_FIND_DEFAULTS["transients"],
+         max_multiple=_FIND_DEFAULTS["max_multiple"], tolerance=_FIND_DEFAULTS["tolerance"],
+         confirmations=_FIND_DEFAULTS["confirmations"], preset=None, point=None, results="results", set=None, model=None):
     """From a simulated motion to its exact periodic orbit, as `stickslip find`.
 
     model: a run file with a [model] table (an oscillator of your own, as `stickslip find --model`):

@@ -42,10 +42,10 @@ struct SweepOptions {
   int parameter = kForcingFrequency;
   double from = 0.0;           // first value of the up (or only) pass
   double to = 0.0;             // last value of the up (or only) pass
-  int steps = 50;              // intervals between from and to (>= 1)
+  int steps = 40;              // intervals between from and to (>= 1)
   // Forcing periods simulated and discarded at each point (0 to kMaxTransientPeriods), in chunks
   // (SimulateTransient, model/transient.hpp), each a simulation of its own from the last one's end.
-  int transient_periods = 200;
+  int transient_periods = 500;
   int recorded_periods = 20;    // forcing periods recorded at each point (>= 1)
   double periodicity_tolerance = 1e-6;  // section points this close repeat
   // ... times the largest |component| of a point's section states (a model in physical units), else

@@ -61,6 +61,16 @@ BasicSimulationOptions<StateType> SimulationOver(double period, double periods, 
 // The paper's model's, over forcing periods 2 pi/omega.
 SimulationOptions SimulationOver(const Parameters& p, double periods, double samples_per_period, bool sampled);
 
+// simulate: the defaults of its options, which the command line and Python show and take: two
+// periods shown, 200 samples a period, by the exact flows, no transient before them.
+struct SimulateCommand {
+  double periods = 2;
+  double samples_per_period = 200;
+  std::string method = "exact";  // or "odeint"
+  double transients = 0;
+  double max_events = 10000000;  // per simulation: the guard against chattering
+};
+
 // A continuation run given by its keys instead of a run file (`stickslip continue`, Python's
 // continue_orbit): the start of `input` as the run file's [start] and [unknowns]. A value given
 // with a fix becomes the last guess of that variable, which is what a fix's value means to the
@@ -85,19 +95,19 @@ void CheckLinearSolverIsUsed(std::string_view linear_solver, std::string_view sh
 OrbitSolverOptions SolverOptionsOf(std::string_view shooting, std::string_view linear_solver);
 
 // sweep: the options as given, numbers not yet checked to be whole or in range. The defaults are
-// the command line's and Python's.
+// the library's (SweepOptions), which the command line and Python show and take.
 struct SweepCommand {
-  std::string parameter = "omega";  // chi, eta, omega, u_s or u_r
+  std::string parameter = "omega";  // a parameter of the model's description
   double from = 0.0;
   double to = 0.0;
-  double steps = 40;        // whole numbers, each in the range SweepOptionRange gives
-  double transients = 500;
-  double periods = 20;
-  std::string start = "chained";  // or "fixed"
+  double steps = SweepOptions{}.steps;  // whole numbers, each in the range SweepOptionRange gives
+  double transients = SweepOptions{}.transient_periods;
+  double periods = SweepOptions{}.recorded_periods;
+  std::string start = SweepOptions{}.start == SweepStart::kChained ? "chained" : "fixed";
   double chains = 4;
   double scatter = 1.0;  // 0 <= scatter <= 1e6
   double seed = 1;
-  double threads = 0;
+  double threads = SweepOptions{}.threads;
 };
 // The valid range of a sweep option ("1 <= steps <= 100000"), for help texts and messages.
 std::string SweepOptionRange(std::string_view field);
