@@ -49,7 +49,7 @@ std::optional<Executed> ContinueAndRecord(const RunFile& run, Setup setup, const
   line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (branch.branch.end == BranchEnd::kStartFailed) {
-    fmt::print(stderr, "error: {}: {}\n", run.path, branch.branch.end_message);
+    fmt::print(stderr, "error: {}: {}\n", RunInMessages(run), branch.branch.end_message);
     return std::nullopt;
   }
   CheckRangeHoldsFirstPoint(run, branch.branch);

@@ -35,7 +35,7 @@ TraceRun TraceAndRecord(const RunFile& run, const Setup& setup, const Record& re
   line.Clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!result.HasBranches()) {
-    fmt::print(stderr, "error: {}: {}\n", run.path, result.down.message);
+    fmt::print(stderr, "error: {}: {}\n", RunInMessages(run), result.down.message);
     return TraceRun{.exit_code = result.NotAMotion() ? kExitNotAMotion : kExitNoConvergence};
   }
   return TraceRun{.stored = record(result), .seconds = seconds};
@@ -85,14 +85,14 @@ struct TraceArgs {
 };
 
 int RunTrace(TraceArgs args) {
-  BuildOneOffRun(&args.continuation);
-  RunFile& run = args.continuation.run;
   try {
     args.options.Validate();
   } catch (const InvalidInput& e) {  // named as the options are: trace.max_amplitude is --max-amplitude
     throw e.Renamed(OptionOfKey("trace." + e.field()));
   }
-  run.trace = args.options;
+  args.continuation.run.trace = args.options;  // first: the run's checks know it is a trace
+  BuildOneOffRun(&args.continuation);
+  const RunFile& run = args.continuation.run;
   CheckTraceOutputDirectory(args.continuation.start.results, run.output);
   const TraceRun trace = ExecuteTrace(run, args.continuation.start.results);
   if (!trace.stored) return trace.exit_code;

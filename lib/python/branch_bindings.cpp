@@ -74,7 +74,6 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.steps = StepsOf(o, run.steps);
   run.max_amplitude = o["max_amplitude"].cast<double>();
   run.resonance_approach = o["resonance_approach"].cast<double>();
-  CheckRunValues(run);
   run.shooting = o["shooting"].cast<std::string>();
   if (!ShootingChoiceFromString(run.shooting)) throw InvalidInput("shooting", "'" + run.shooting + "'", "auto, single, multiple");
   run.linear_solver = o["linear_solver"].cast<std::string>();
@@ -90,6 +89,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
     const std::string key = name.cast<std::string>();
     for (double v : FiniteNumbers(values, "user_values_of")) run.user_values.emplace_back(key, v);
   }
+  CheckRunValues(run);  // every field set: the rules join several
   return input;
 }
 
@@ -118,7 +118,7 @@ void RaiseUnlessStarted(const RunInput& input, const Branch& branch) {
   py::dict summary;
   summary["termination"] = ToString(branch.end);
   summary["message"] = branch.end_message;
-  RaiseConvergenceError(fmt::format("{}: {}", input.run.path, branch.end_message), summary);
+  RaiseConvergenceError(fmt::format("{}: {}", RunInMessages(input.run), branch.end_message), summary);
 }
 
 // A branch computed in this process: its stored form, and what the engine knew of it, so that the

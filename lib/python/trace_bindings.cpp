@@ -74,12 +74,12 @@ auto Traced(const RunInput& input, const Setup& setup) {
     };
     result = TraceOrbits(setup, trace);
   }
-  if (result.NotAMotion()) throw py::value_error(fmt::format("{}: {}", input.run.path, result.down.message));
+  if (result.NotAMotion()) throw py::value_error(fmt::format("{}: {}", RunInMessages(input.run), result.down.message));
   if (!result.HasBranches()) {
     py::dict summary;
     summary["termination"] = ToString(result.down.end);
     summary["message"] = result.down.message;
-    RaiseConvergenceError(fmt::format("{}: {}", input.run.path, result.down.message), summary);
+    RaiseConvergenceError(fmt::format("{}: {}", RunInMessages(input.run), result.down.message), summary);
   }
   return result;
 }

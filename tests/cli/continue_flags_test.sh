@@ -125,6 +125,20 @@ expect_rejected "boundary = 'u_r' is invalid at 'EP1'" continue --point p-up:EP1
   --range 0.3,0.9 --results "$work" --output bad
 expect_rejected "continue-past-type-changes = true is invalid with boundary: valid false" "${lp[@]}" --boundary u_r \
   --continue-past-type-changes --output bad
+# A trace has no side to switch to and follows no boundary's curve: refused, not traced (a trace
+# with --switch-branch once traced the same up-going branch as both its chains).
+pd=(trace --point paper-5.2-omega-to-pd:PD2 --parameter omega --range 0.7,0.74 --results "$work/kinds")
+expect_rejected "switch-branch = true is invalid with trace: valid false" "${pd[@]}" --switch-branch --output bad
+expect_rejected "boundary = 'u_r' is invalid with trace: valid left out" "${pd[@]}" --boundary u_r --output bad
+[ ! -e "$work/kinds/bad" ]
+# A start that does not converge is named by the run's output, not as a run file "(command line)".
+set +e
+"$bin" continue --preset paper-4.1 --free u_r --fix phi --parameter omega --range 0.3,0.9 --results "$work" \
+  --output nostart > /dev/null 2> "$work/err"
+code=$?
+set -e
+[ "$code" -eq 3 ] && grep -q "^error: nostart: the start point does not converge" "$work/err" && [ ! -e "$work/nostart" ] ||
+  { echo "exit $code"; cat "$work/err"; exit 1; }
 # Both sides of PD2, where the range holds the first point of the branch that leaves it downwards
 # only: refused, and the down side is not written either.
 set +e

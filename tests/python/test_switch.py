@@ -144,3 +144,12 @@ def test_a_switch_whose_first_point_leaves_the_range_raises_naming_the_range_and
                                      switch_branch=True, direction="up", ds=0.005, ds_max=0.02)
     with pytest.raises(ValueError, match=r"excludes the first point of the branch that leaves 'PD2'"):
         stepped.step()
+
+
+def test_a_type_boundary_does_not_continue_past_the_changes_of_type():
+    # Checked once every keyword is read: the rule joins two of them (boundary was once taken
+    # with continue_past_type_changes=True, which the command line and a run file refuse).
+    with pytest.raises(ValueError) as error:
+        stickslip.continue_orbit("omega", (0.3, 0.69), point="paper-4.1-omega-down:SK2", boundary="u_r",
+                                 continue_past_type_changes=True, results=RESULTS, output="never")
+    assert str(error.value).startswith("continue-past-type-changes = true is invalid with boundary: valid false")

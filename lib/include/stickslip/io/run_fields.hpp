@@ -1,6 +1,6 @@
 // The fields of a run specification as each front end names them: a run file by its dotted keys
-// ("continuation.ds_min", placed at their line), the command line and Python by their options
-// (ds-min). A message is composed once, in the words of the front end the run came from, from the
+// ("continuation.ds_min", placed at their line), the command line by its options (ds-min). Python
+// takes the command line's words for now (its keywords spell '-' as '_': ds_min). A message is composed once, in the words of the front end the run came from, from the
 // field and what is wrong with it; none is made by rewriting another.
 //
 //   KeyError(run, "continuation.range", "= [0.3, 0.9] excludes ...")
@@ -17,8 +17,8 @@
 namespace stickslip {
 
 // How a run's fields are named in its messages: by a run file's keys, or by the command line's
-// options (continue, trace and atlas given by their flags; Python's keywords, which are those
-// options' names).
+// options (continue, trace, atlas and find --trace given by their flags; Python's continue and
+// trace).
 enum class RunNaming { kRunFileKeys, kOptions };
 
 // The command line's name of a run-file key: the last part with '_' as '-' ("continuation.ds_min"

@@ -117,6 +117,9 @@ struct RunFile {
 // A complaint about one of the run's keys in the words of the run's front end (RunNaming): a run
 // file's "<file>:<line>:<column>: key '<key>' <what>", a run given by options' "<option> <what>".
 RunFileError KeyError(const RunFile& run, const std::string& key, const std::string& what);
+// The run as messages about its outcome name it: a run file by its path, a run given by options
+// by its output ("error: x: the start point does not converge ...").
+std::string RunInMessages(const RunFile& run);
 
 // A run's name is the folder of its results under the results root: one path component, so
 // not empty, not ".", without '/' and without ".."; without ':', which --point RUN:LABEL takes as
