@@ -28,10 +28,10 @@ tm="$work/tm"
 sums=$(md5sum "$tm"/two-masses-sk-boundary/*) entries=$(ls -A "$tm")
 # refused TEXT EDIT: the curve's run file edited by the sed expression EDIT is refused with TEXT.
 refused() { expect 2 "$1" "$bin" run --results "$tm" <(sed "$2" "$curve"); }
-refused "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): second = omega is invalid: valid range a parameter the model varies, not the continued omega nor one released already: F_k, F_s, v_b" \
+refused "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): valid a parameter the model varies, not the continued omega nor one released already: F_k, F_s, v_b" \
   's/boundary = "F_s"/boundary = "omega"/'
-refused "key 'start.restart.boundary' = 'chi' is invalid: valid range omega, F_k, F_s, v_b" 's/boundary = "F_s"/boundary = "chi"/'
-refused "key 'start.restart.boundary' = 'F_s' is invalid at 'EP3' (EP): condition = EP is invalid" 's/label = "SK2"/label = "EP3"/'
+refused "key 'start.restart.boundary' = 'chi' is invalid: valid range F_k, F_s, v_b" 's/boundary = "F_s"/boundary = "chi"/'
+refused "key 'start.restart.boundary' = 'F_s' is invalid at 'EP3' (EP): valid LP, SB or TR for an antisymmetric orbit" 's/label = "SK2"/label = "EP3"/'
 refused "key 'start.restart.boundary' = '' is invalid" 's/boundary = "F_s"/boundary = ""/'
 refused "key 'continuation.continue_past_type_changes' = true is invalid with start.restart.boundary" \
   's/^max_points = 400$/max_points = 400\ncontinue_past_type_changes = true/'

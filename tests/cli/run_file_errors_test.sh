@@ -128,8 +128,8 @@ restart = { run = "paper-4.1-omega-down", label = "SK2", boundary = "u_r" }
 parameter = "omega"
 direction = "down"
 range = [0.3, 0.69]'
-expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (EP): condition = EP is invalid: valid range" "${bounded/SK2/EP1}"
-expect 2 "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): second = omega is invalid" "${bounded/boundary = \"u_r\"/boundary = \"omega\"}"
+expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (EP): valid LP, SB or TR for an antisymmetric orbit" "${bounded/SK2/EP1}"
+expect 2 "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): valid a parameter the model varies, not the continued omega" "${bounded/boundary = \"u_r\"/boundary = \"omega\"}"
 expect 2 "key 'start.restart.boundary' cannot go with start.restart.switch_branch" "${bounded/boundary = \"u_r\"/boundary = \"u_r\", switch_branch = true}"
 
 echo "$failures failure(s)"

@@ -145,11 +145,13 @@ StoredTrace ModelRunSetup::Recorded(const RunFile& run, const BasicTraceResult<D
 namespace {
 
 // The index of the model's parameter `name` given at `key` (the continued one, or a curve's
-// second): one the model varies. Throws KeyError at `key` with the valid names.
+// second): one the model varies. Throws KeyError at `key` with the valid names (a curve's second:
+// without the continued parameter).
 int VariedParameterOf(const RunFile& run, const DynamicLinearOscillator& model, const std::string& key,
                       const std::string& name) {
   try {
-    return model.Description().VariedParameter(key, name, model.Autonomous());
+    const std::string_view varied_already = key == "start.restart.boundary" ? run.parameter : std::string_view();
+    return model.Description().VariedParameter(key, name, model.Autonomous(), varied_already);
   } catch (const InvalidInput& e) {
     throw KeyError(run, key, e.Predicate());
   }

@@ -16,11 +16,14 @@ std::optional<int> ModelDescription::ParameterIndex(std::string_view wanted) con
   return std::nullopt;
 }
 
-int ModelDescription::VariedParameter(std::string_view field, const std::string& parameter, bool autonomous) const {
+int ModelDescription::VariedParameter(std::string_view field, const std::string& parameter, bool autonomous,
+                                      std::string_view varied_already) const {
   const std::optional<int> k = ParameterIndex(parameter);
   if (k && !(*k == 0 && autonomous)) return *k;
   std::string names;
-  for (int i = autonomous ? 1 : 0; i < ParameterCount(); ++i) names += (names.empty() ? "" : ", ") + parameters[i].name;
+  for (int i = autonomous ? 1 : 0; i < ParameterCount(); ++i) {
+    if (parameters[i].name != varied_already) names += (names.empty() ? "" : ", ") + parameters[i].name;
+  }
   throw InvalidInput(std::string(field), "'" + parameter + "'",
                      autonomous ? names + fmt::format(" ({} plays no part without forcing)", parameters[0].name) : names);
 }

@@ -56,8 +56,14 @@ BasicOrbitContinuationSetup<Model> CurveOfRestart(const RunFile& run, const std:
     return BoundaryCurve(BasicCurveStart<Model>{setup.start, condition, run.parameter, setup.unknowns}, setup,
                          run.restart_boundary);
   } catch (const InvalidInput& e) {
-    throw KeyError(run, "start.restart.boundary", fmt::format("= '{}' is invalid at '{}' ({}): {} {}", run.restart_boundary,
-                                                              run.restart_label, condition, e.field(), e.Predicate()));
+    // The curve's own fields are the run's: its second parameter is the boundary given, its
+    // condition the label's type; what is wrong is said in the valid range.
+    const bool own = e.field() == "second" || e.value() == condition;  // the value shown already
+    const std::string why = e.valid_range().empty() ? std::string(e.what())
+                            : own                    ? "valid " + e.valid_range()
+                                                     : fmt::format("{} is invalid: valid {}", e.value(), e.valid_range());
+    throw KeyError(run, "start.restart.boundary",
+                   fmt::format("= '{}' is invalid at '{}' ({}): {}", run.restart_boundary, run.restart_label, condition, why));
   }
 }
 

@@ -86,8 +86,10 @@ struct ModelDescription {
   std::optional<int> ParameterIndex(std::string_view name) const;
   // The index of a parameter a run varies (a sweep's, a map's axis, a trace's), by name: one of
   // the parameters, but the forcing frequency (index 0) of a model without forcing (`autonomous`),
-  // which plays no part. Throws InvalidInput naming `field`, valid the names it may take.
-  int VariedParameter(std::string_view field, const std::string& parameter, bool autonomous) const;
+  // which plays no part. Throws InvalidInput naming `field`, valid the names it may take (without
+  // `varied_already`, a parameter the run varies already: a curve's second is another).
+  int VariedParameter(std::string_view field, const std::string& parameter, bool autonomous,
+                      std::string_view varied_already = {}) const;
   int StateSize() const { return static_cast<int>(state_components.size()); }
 };
 
