@@ -164,6 +164,16 @@ std::vector<RunFile> SourcesFirst(const std::vector<RunFile>& runs) {
   return ordered;
 }
 
+// Each run's setup built once before any run is computed, so that its input (a label that is not
+// there, a range that misses the start, a start fault) is refused before anything is written. A run
+// that restarts from a run of this command can be set up only once that run is written.
+void CheckSetups(const std::vector<RunFile>& runs, const std::filesystem::path& results) {
+  const std::vector<std::optional<std::size_t>> sources = SourcesOf(runs);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!sources[i] && !MakeModelSetup(runs[i], results)) MakeSetup(runs[i], results);
+  }
+}
+
 struct RunArgs {
   std::vector<std::string> files;
   std::string results = "results";
@@ -186,6 +196,7 @@ int RunRuns(const RunArgs& args) {
     }
   }
   const std::vector<RunFile> ordered = SourcesFirst(runs);
+  CheckSetups(runs, args.results);
   int code = kExitOk;
   // A run that restarts from one this command failed to write is not run: it would start from
   // that run's earlier results.

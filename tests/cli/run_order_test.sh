@@ -45,6 +45,13 @@ write_run after-tr after-tr 'restart = { run = "tr", label = "EP1" }'
 expect 2 "key 'start.restart.run' = 'tr' is invalid: valid a run that is no trace" \
   "$bin" run --results "$o" "$work/after-tr.toml" "$work/tr.toml"
 
+# A run whose input the setup refuses (a label its source does not have) fails the command before
+# any run is computed: the good run given first is not written either.
+write_run good good 'preset = "paper-4.1"'
+write_run no-label no-label 'restart = { run = "z-source", label = "LP99" }'
+expect 2 "no-label.toml:3:11: key 'start.restart' = 'z-source:LP99' cannot be used" \
+  "$bin" run --results "$o" "$work/good.toml" "$work/no-label.toml"
+
 # A source that does not converge: its dependant is not run, and neither writes.
 write_run far far $'preset = "paper-4.1"\n[start.guess]\nx10 = 40.0\nd1 = 0.01'
 write_run after-far after-far 'restart = { run = "far", label = "EP1" }'
