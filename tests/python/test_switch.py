@@ -153,3 +153,9 @@ def test_a_type_boundary_does_not_continue_past_the_changes_of_type():
         stickslip.continue_orbit("omega", (0.3, 0.69), point="paper-4.1-omega-down:SK2", boundary="u_r",
                                  continue_past_type_changes=True, results=RESULTS, output="never")
     assert str(error.value).startswith("continue-past-type-changes = true is invalid with boundary: valid false")
+
+
+def test_an_empty_boundary_is_refused_not_taken_as_none():
+    with pytest.raises(ValueError, match=r"^boundary = '' is invalid: valid the name of a second parameter"):
+        stickslip.continue_orbit("omega", (0.3, 0.69), point="paper-4.1-omega-down:SK2", boundary="",
+                                 results=RESULTS, output="never")

@@ -63,6 +63,15 @@ def _optional_text(value, field, valid=None):
     return "" if value is None else _checked(value, field, "text", valid)
 
 
+def _boundary(value):
+    """A curve's second parameter: a name, or None for no curve. An empty name is refused (as
+    --boundary ''), not taken as no curve."""
+    name = _optional_text(value, "boundary")
+    if value is not None and not name:
+        raise ValueError("boundary = '' is invalid: valid the name of a second parameter to release, or None")
+    return name
+
+
 def _numbers_of(values, field, valid="a sequence of numbers (int or float, not bool) of magnitude below 1.8e308"):
     """A sequence of numbers (not a str), named whole in a message."""
     try:
@@ -189,7 +198,7 @@ def _one_off_run(parameter, range, *, direction="up", output="python", start=Non
         "direction": _checked(direction, "direction", "text"), "output": _checked(output, "output", "text"),
         "results": _checked(results, "results", "path"), "linear_solver_given": linear_solver is not None,
         "switch_branch": _checked(switch_branch, "switch_branch", "flag"),
-        "boundary": _optional_text(boundary, "boundary"),
+        "boundary": _boundary(boundary),
         "user_values": _numbers_of(user_values, "user_values"),
         "user_values_of": {_checked(k, "user_values_of", "text", "a dict of name: numbers"): _numbers_of(vs, "user_values_of")
                            for k, vs in _dict(user_values_of, "user_values_of", "a dict of name: numbers").items()},
