@@ -1,6 +1,7 @@
 #include "stickslip/io/run.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -104,6 +105,7 @@ OrbitContinuationSetup MakeSetup(const RunFile& run, const std::filesystem::path
   ContinuationOptions& o = setup.options;
   o = WithContinuationKeys(std::move(o), run);
   if (run.restart_switch_branch || !run.restart_boundary.empty()) {
+    if (!input.restart) throw std::logic_error("a switch or a boundary without a restart point (CheckRunValues refuses it)");
     const RestartPoint& at = *input.restart;
     setup = run.restart_switch_branch ? SwitchedAtLabel(run, at.type, setup)
                                       : CurveOfRestart(run, at.type, at.test_function, setup);
