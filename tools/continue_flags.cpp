@@ -57,6 +57,12 @@ void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
   cmd.add_option("--detect-branch-points", args->detect_branch_points, "locate branch points (BP): true or false")
       ->type_name("true|false")
       ->capture_default_str();
+  cmd.add_option("--output", args->run.output, "results/<output>/")->required();
+  cmd.add_option("--results", args->start.results, "results directory: where --point is read and <output>/ written")
+      ->capture_default_str();
+}
+
+void AddRestartKindFlags(CLI::App& cmd, ContinueArgs* args) {
   cmd.add_flag("--switch-branch", args->run.restart_switch_branch,
                "with --point at a PD or an SB: continue the branch that leaves it, on the side --direction names "
                "(both: either side), not the branch the point lies on (the run file's start.restart.switch_branch)");
@@ -66,9 +72,6 @@ void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args) {
                  "run file's start.restart.boundary)")
       ->type_name("NAME")
       ->each([args](const std::string&) { args->boundary_given = true; });
-  cmd.add_option("--output", args->run.output, "results/<output>/")->required();
-  cmd.add_option("--results", args->start.results, "results directory: where --point is read and <output>/ written")
-      ->capture_default_str();
 }
 
 namespace {

@@ -33,6 +33,9 @@ void AddStepFlags(CLI::App& cmd, BranchSteps* steps, const std::string& scope);
 // The start options, --parameter, --range, --ds, --ds-min, --ds-max, --max-points, --user-value,
 // --shooting, --linear-solver, --detect-folds, --detect-branch-points, --output and --results.
 void AddContinuationFlags(CLI::App& cmd, ContinueArgs* args);
+// continue's --switch-branch and --boundary: what a restart continues from its label (a trace,
+// which goes both ways along branches in one parameter, takes neither).
+void AddRestartKindFlags(CLI::App& cmd, ContinueArgs* args);
 
 // args->run completed from the flags (start, range, user values, switches) and checked as a run
 // file is; throws InvalidInput naming the option.

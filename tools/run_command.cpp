@@ -376,6 +376,7 @@ Command AddContinueCommand(CLI::App& app) {
   auto args = std::make_shared<ContinueArgs>();
   CLI::App* cmd = app.add_subcommand("continue", "A one-off continuation run from flags (the keys of a run file).");
   AddContinuationFlags(*cmd, args.get());
+  AddRestartKindFlags(*cmd, args.get());
   cmd->add_option("--direction", args->direction,
                   "up, down, or both: two runs from the one start, written to results/<output>-down and "
                   "results/<output>-up (each a run of its own, to restart from, check and export)")

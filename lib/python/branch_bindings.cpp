@@ -63,7 +63,7 @@ RunInput OneOffRun(const py::dict& start, const py::dict& o) {
   run.restart_boundary = o["boundary"].cast<std::string>();
   if (!run.restart_boundary.empty() && run.restart_label.empty()) {
     throw InvalidInput("boundary", "'" + run.restart_boundary + "'",
-                       "a second parameter with point='RUN:LABEL' at an SK or a T0; None");
+                       "a second parameter with point='RUN:LABEL' at a located special point; None");
   }
   run.output = o["output"].cast<std::string>();
   run.parameter = o["parameter"].cast<std::string>();

@@ -128,9 +128,11 @@ expect_rejected "continue-past-type-changes = true is invalid with boundary: val
 # A trace has no side to switch to and follows no boundary's curve: refused, not traced (a trace
 # with --switch-branch once traced the same up-going branch as both its chains).
 pd=(trace --point paper-5.2-omega-to-pd:PD2 --parameter omega --range 0.7,0.74 --results "$work/kinds")
-expect_rejected "switch-branch = true is invalid with trace: valid false" "${pd[@]}" --switch-branch --output bad
-expect_rejected "boundary = 'u_r' is invalid with trace: valid left out" "${pd[@]}" --boundary u_r --output bad
+# trace takes neither flag (its --help does not offer them); a [trace] run file is refused at the keys.
+expect_rejected "The following argument was not expected: --switch-branch" "${pd[@]}" --switch-branch --output bad
+expect_rejected "The following arguments were not expected: u_r --boundary" "${pd[@]}" --boundary u_r --output bad
 [ ! -e "$work/kinds/bad" ]
+! "$bin" trace --help | grep -q -e "--switch-branch" -e "--boundary"
 # A start that does not converge is named by the run's output, not as a run file "(command line)".
 set +e
 "$bin" continue --preset paper-4.1 --free u_r --fix phi --parameter omega --range 0.3,0.9 --results "$work" \

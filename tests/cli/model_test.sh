@@ -472,7 +472,7 @@ for bad in "--set omega=0.5:set is invalid with a [model]'s label ('branch-1:EP1
 done
 expect 2 "parameter = 'chi' is invalid: valid range omega, F_k, F_s, v_b" "$bin" "${restart[@]}" --point branch-1:EP1 \
   --parameter chi --range 0.3,0.8
-expect 2 "range = [0.45, 0.6] excludes the start, F_s = 0.4" "$bin" "${restart[@]}" --point branch-1:EP1 --parameter F_s \
+expect 2 "range = '0.45,0.6' excludes the start, F_s = 0.4" "$bin" "${restart[@]}" --point branch-1:EP1 --parameter F_s \
   --range 0.45,0.6
 expect 2 "label 'XX1' is not in" "$bin" "${restart[@]}" --point branch-1:XX1 --parameter F_s --range 0.3,0.8
 [ ! -e "$work/traces/chain/z" ] && pass || fail "a refused restart wrote its output"

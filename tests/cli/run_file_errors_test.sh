@@ -131,6 +131,9 @@ range = [0.3, 0.69]'
 expect 2 "key 'start.restart.boundary' = 'u_r' is invalid at 'EP1' (EP): valid LP, SB or TR for an antisymmetric orbit" "${bounded/SK2/EP1}"
 expect 2 "key 'start.restart.boundary' = 'omega' is invalid at 'SK2' (margin:reversal:1): valid a parameter the model varies, not the continued omega" "${bounded/boundary = \"u_r\"/boundary = \"omega\"}"
 expect 2 "key 'start.restart.boundary' cannot go with start.restart.switch_branch" "${bounded/boundary = \"u_r\"/boundary = \"u_r\", switch_branch = true}"
+# With a [trace]: a trace follows branches in one parameter, not a curve in two.
+expect 2 "key 'start.restart.boundary' = 'u_r' is invalid with a .trace. table: valid left out" "${bounded/direction = \"down\"/}
+[trace]"
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

@@ -135,7 +135,7 @@ def test_a_switch_whose_first_point_leaves_the_range_raises_naming_the_range_and
     # but not the new branch's first point. Nothing is continued from outside the range.
     to_pd = stickslip.continue_orbit("omega", (0.6, 0.739), max_points=12, **TO_PD)
     pd = to_pd.special_point("PD2")["omega"]
-    with pytest.raises(ValueError, match=r"^range = \[0.6, .*\] excludes the first point of the branch that leaves "
+    with pytest.raises(ValueError, match=r"^range = '0.6,.*' excludes the first point of the branch that leaves "
                                          r"'PD2' \(direction = \"up\"\), omega = 0\.73"):
         to_pd.switch("PD2", side=1, range=(0.6, pd), ds=0.005, ds_max=0.02)
     # The same from the stored label, stepped by hand: the first step raises.

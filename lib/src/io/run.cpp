@@ -38,8 +38,7 @@ namespace {
 
 void CheckRangeHolds(const RunFile& run, double value, const std::string& what) {
   if (run.range_min <= value && value <= run.range_max) return;
-  throw KeyError(run, "continuation.range", fmt::format("= [{}, {}] excludes {}, {} = {}", run.range_min,
-                                                        run.range_max, what, run.parameter, value));
+  throw KeyError(run, "continuation.range", fmt::format("= {} excludes {}, {} = {}", RangeIn(run), what, run.parameter, value));
 }
 
 }  // namespace

@@ -57,6 +57,11 @@ RunFileError KeyError(const RunFile& run, const std::string& key, const std::str
   return RunFileError(fmt::format("{}: key '{}' {}", run.Location(key), key, what), key);
 }
 
+std::string RangeIn(const RunFile& run) {
+  return run.naming == RunNaming::kOptions ? fmt::format("'{},{}'", run.range_min, run.range_max)
+                                           : fmt::format("[{}, {}]", run.range_min, run.range_max);
+}
+
 std::string RunInMessages(const RunFile& run) { return run.naming == RunNaming::kOptions ? run.output : run.path; }
 
 namespace {
@@ -70,6 +75,23 @@ std::string NameIn(const RunFile& run, std::string_view key) {
 // A restart continues one thing from its label (so it has a label): the branch leaving it or a
 // boundary's curve; and a curve ends at the codimension-two point where a second margin reaches zero.
 void CheckOneRestartKind(const RunFile& run) {
+  // The branch that leaves a bifurcation leaves it on the side `direction` names; a trace has
+  // none (both ways from its start would go out along one side and back along the other). A
+  // trace follows branches in one parameter, not a boundary's curve in two.
+  const std::string_view trace = run.naming == RunNaming::kOptions ? "trace" : "a [trace] table";
+  if (run.trace && run.restart_switch_branch) {
+    throw KeyError(run, "start.restart.switch_branch",
+                   fmt::format("= true is invalid with {}: valid false (a trace goes both ways from its start, the "
+                               "branch that leaves a bifurcation one way: continue that branch, then trace from a "
+                               "point of it)",
+                               trace));
+  }
+  if (run.trace && !run.restart_boundary.empty()) {
+    throw KeyError(run, "start.restart.boundary",
+                   fmt::format("= '{}' is invalid with {}: valid left out (a trace follows branches in one parameter; "
+                               "continue a boundary's curve with a run of one branch)",
+                               run.restart_boundary, trace));
+  }
   const std::string restart = NameIn(run, "start.restart");
   if (run.restart_run.empty() && run.restart_switch_branch) {
     throw KeyError(run, "start.restart.switch_branch",
@@ -79,22 +101,6 @@ void CheckOneRestartKind(const RunFile& run) {
     throw KeyError(run, "start.restart.boundary",
                    fmt::format("= '{}' is invalid without {}: valid with {} RUN:LABEL at a located special point",
                                run.restart_boundary, restart, restart));
-  }
-  // The branch that leaves a bifurcation leaves it on the side `direction` names; a trace has
-  // none (both ways from its start would go out along one side and back along the other). A
-  // trace follows branches in one parameter, not a boundary's curve in two.
-  const std::string_view trace = run.naming == RunNaming::kOptions ? "trace" : "a [trace] table";
-  if (run.trace && run.restart_switch_branch) {
-    throw KeyError(run, "start.restart.switch_branch",
-                   fmt::format("= true is invalid with {}: valid false (the branch that leaves a bifurcation leaves it "
-                               "on one side, {}; a trace can start from a point of that run)",
-                               trace, NameIn(run, "continuation.direction")));
-  }
-  if (run.trace && !run.restart_boundary.empty()) {
-    throw KeyError(run, "start.restart.boundary",
-                   fmt::format("= '{}' is invalid with {}: valid left out (a trace follows branches in one parameter; "
-                               "continue a boundary's curve with a run of one branch)",
-                               run.restart_boundary, trace));
   }
   if (run.restart_boundary.empty()) return;
   if (run.restart_switch_branch) {
@@ -141,7 +147,7 @@ void CheckRunValues(const RunFile& run) {
   }
   if (!(std::isfinite(run.range_min) && std::isfinite(run.range_max) && run.range_min < run.range_max)) {
     throw KeyError(run, "continuation.range",
-                   fmt::format("= [{}, {}] is invalid: valid range MIN < MAX, both finite", run.range_min, run.range_max));
+                   fmt::format("= {} is invalid: valid range MIN < MAX, both finite", RangeIn(run)));
   }
   CheckStepValues(run);
   CheckOneRestartKind(run);

@@ -120,6 +120,8 @@ RunFileError KeyError(const RunFile& run, const std::string& key, const std::str
 // The run as messages about its outcome name it: a run file by its path, a run given by options
 // by its output ("error: x: the start point does not converge ...").
 std::string RunInMessages(const RunFile& run);
+// The run's range as its front end writes it: a run file's [0.3, 0.9], the command line's '0.3,0.9'.
+std::string RangeIn(const RunFile& run);
 
 // A run's name is the folder of its results under the results root: one path component, so
 // not empty, not ".", without '/' and without ".."; without ':', which --point RUN:LABEL takes as
