@@ -145,12 +145,11 @@ StoredTrace ModelRunSetup::Recorded(const RunFile& run, const BasicTraceResult<D
 namespace {
 
 // The index of the model's parameter `name` given at `key` (the continued one, or a curve's
-// second): one the model varies. Throws KeyError at `key` with the valid names (a curve's second:
-// without the continued parameter).
+// second): one the model varies. Throws KeyError at `key` with the valid names, without
+// `varied_already` (a curve's second: not the continued parameter).
 int VariedParameterOf(const RunFile& run, const DynamicLinearOscillator& model, const std::string& key,
-                      const std::string& name) {
+                      const std::string& name, std::string_view varied_already = {}) {
   try {
-    const std::string_view varied_already = key == "start.restart.boundary" ? run.parameter : std::string_view();
     return model.Description().VariedParameter(key, name, model.Autonomous(), varied_already);
   } catch (const InvalidInput& e) {
     throw KeyError(run, key, e.Predicate());
@@ -177,7 +176,7 @@ void RefuseSwitchInBeltSpeed(const RunFile& run, const DynamicLinearOscillator& 
 // at the start) the curve's condition does not hold. Throws KeyError at start.restart.boundary.
 void CheckCurveKeepsTheSurfaceFixed(const RunFile& run, const DynamicLinearOscillator& model,
                                     const BasicOrbit<Model>& orbit, int k) {
-  const int second = VariedParameterOf(run, model, "start.restart.boundary", run.restart_boundary);
+  const int second = VariedParameterOf(run, model, "start.restart.boundary", run.restart_boundary, run.parameter);
   const int speed = Model::kRestVelocityParameter;
   if (!orbit.signature.antisymmetric() || (k != speed && second != speed)) return;
   throw KeyError(run, "start.restart.boundary",

@@ -42,7 +42,6 @@ void CheckRangeHoldsFirstPoint(const RunFile& run, const Branch& branch);
 std::vector<UserValue> UserValuesOf(const RunFile& run, const std::vector<int>& order,
                                     const std::function<std::optional<int>(const std::string&)>& index_of);
 
-
 // The curve in two parameters the restart asks for (start.restart.boundary) through its label, a
 // special point of `type` whose test function is `test_function`, from `setup` (the branch's at
 // the label): the run's parameter continued, the boundary released (BoundaryCurve). Throws

@@ -1,11 +1,12 @@
 // The fields of a run specification as each front end names them: a run file by its dotted keys
 // ("continuation.ds_min", placed at their line), the command line by its options (ds-min). Python
-// takes the command line's words for now (its keywords spell '-' as '_': ds_min). A message is composed once, in the words of the front end the run came from, from the
-// field and what is wrong with it; none is made by rewriting another.
+// takes the command line's words for now (its keywords spell '-' as '_': ds_min). A message is
+// composed once, in the words of the front end the run came from, from the field and what is
+// wrong with it; none is made by rewriting another.
 //
-//   KeyError(run, "continuation.range", "= [0.3, 0.9] excludes ...")
+//   KeyError(run, "continuation.range", fmt::format("= {} excludes ...", RangeIn(run)))
 //     run file:     "a.toml:12:1: key 'continuation.range' = [0.3, 0.9] excludes ..."
-//     command line: "range = [0.3, 0.9] excludes ..."
+//     command line: "range = '0.3,0.9' excludes ..."
 #pragma once
 
 #include <optional>
